@@ -1,0 +1,128 @@
+"""The ``stepdeck-emulator`` command: an emulated device behind a pseudo-terminal.
+
+With it the station (or any serial terminal) can be tested over a real serial
+device path, through the same serial transport and line discipline a USB or
+SPP adapter would use, with no board attached::
+
+    python -m protocol.emulator --profile xy-stage --pty
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import select
+import signal
+import sys
+import threading
+import tty
+from collections.abc import Callable, Sequence
+from types import FrameType
+
+from protocol.clock import Clock, MonotonicClock
+from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+
+PROFILES: dict[str, Callable[[], StageConfig]] = {"xy-stage": StageConfig}
+
+#: How long one loop iteration waits for host bytes: well inside a 5 ms control
+#: cycle, so echoes leave within the 20 ms the contract allows.
+POLL_SECONDS = 0.002
+
+
+def open_pty() -> tuple[int, int, str]:
+    """A raw pseudo-terminal: ``(master_fd, slave_fd, slave_path)``.
+
+    The slave stays open here so that a client closing and reopening the path
+    neither loses the raw settings nor makes reads on the master fail with EIO.
+    The master is non-blocking so that a host that stops reading can never stall
+    the firmware's loop.
+    """
+    master, slave = os.openpty()
+    tty.setraw(slave)
+    os.set_blocking(master, False)
+    return master, slave, os.ttyname(slave)
+
+
+def pump(firmware: StageFirmware, fd: int, clock: Clock, outbox: bytearray, timeout: float) -> None:
+    """One loop iteration: host bytes in, control cycles up to now, replies out."""
+    readable, _, _ = select.select([fd], [], [], timeout)
+    if readable:
+        try:
+            data = os.read(fd, 4096)
+        except BlockingIOError:
+            data = b""
+        firmware.receive(data)
+    firmware.run_until(clock.now())
+    _flush(fd, outbox)
+
+
+def _flush(fd: int, outbox: bytearray) -> None:
+    while outbox:
+        try:
+            written = os.write(fd, outbox)
+        except BlockingIOError:
+            # Nobody reads the terminal: stale echoes are worth nothing, drop them.
+            outbox.clear()
+            return
+        del outbox[:written]
+
+
+def serve(
+    firmware: StageFirmware,
+    fd: int,
+    clock: Clock,
+    should_stop: Callable[[], bool],
+    poll: float = POLL_SECONDS,
+) -> None:
+    """Run ``firmware`` against the terminal ``fd`` until ``should_stop()``."""
+    outbox = bytearray()
+    firmware.set_output(outbox.extend)
+    try:
+        while not should_stop():
+            pump(firmware, fd, clock, outbox, poll)
+    finally:
+        firmware.set_output(None)
+
+
+def run_on_pty(config: StageConfig) -> int:
+    stop = threading.Event()
+
+    def request_stop(signum: int, frame: FrameType | None) -> None:
+        stop.set()
+
+    signal.signal(signal.SIGTERM, request_stop)
+    signal.signal(signal.SIGINT, request_stop)
+    master, slave, path = open_pty()
+    try:
+        print(path, flush=True)
+        print(f"stage emulator on {path}; Ctrl+C stops it", file=sys.stderr, flush=True)
+        clock = MonotonicClock()
+        serve(StageFirmware(clock, config), master, clock, stop.is_set)
+    finally:
+        os.close(master)
+        os.close(slave)
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="stepdeck-emulator",
+        description="Emulate a StepDeck machine's firmware on a pseudo-terminal.",
+    )
+    parser.add_argument("--profile", choices=sorted(PROFILES), default="xy-stage")
+    parser.add_argument(
+        "--pty", action="store_true", help="serve the device on a new pseudo-terminal"
+    )
+    args = parser.parse_args(argv)
+    if not args.pty:
+        parser.print_usage(sys.stderr)
+        print(
+            "stepdeck-emulator: nothing to serve on; try --pty and open the printed path",
+            file=sys.stderr,
+        )
+        return 2
+    return run_on_pty(PROFILES[args.profile]())
+
+
+if __name__ == "__main__":
+    sys.exit(main())

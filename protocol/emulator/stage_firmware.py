@@ -1,0 +1,730 @@
+"""Firmware of the battery XY stage, emulated (PROTOCOLS.md section 1).
+
+It is the device side of the ``stage`` dialect written from the contract alone,
+so the station can be developed and tested against it with no board attached,
+and so a test can provoke every state the real board can show: blocked by the
+charger, USB or a flat battery, asleep, a driver fault, a FRAM that fails
+read-back, an end switch.
+
+Time only moves in :meth:`StageFirmware.run_until`, in whole control cycles,
+like the real firmware's main loop: frames that arrived since the previous
+cycle are handled at its start, the axes and the environment advance by one
+cycle, and each accepted frame is answered by one echo at its end.  On a
+:class:`~protocol.clock.ManualClock` that makes every timing exact.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import deque
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+from protocol.clock import Clock
+from protocol.emulator.fram import Fram
+from protocol.emulator.mechanism import Axis, AxisLimits, AxisState, SwitchName
+from protocol.stage.codec import (
+    DATA_MAX,
+    DATA_MIN,
+    AxisStatus,
+    CommandFrame,
+    CommandId,
+    CommandPacket,
+    DeviceFlag,
+    EchoFrame,
+    EchoPacket,
+    EchoType,
+    StageDecoder,
+    Subscriber,
+    encode_echo,
+    written_parameter,
+)
+
+#: Table 1.4 defaults of the XY stage.
+XY_STAGE_PARAMETERS: Mapping[EchoType, int] = MappingProxyType(
+    {
+        EchoType.FAST_SPEED: 10_000,
+        EchoType.SLOW_SPEED: 2_000,
+        EchoType.ACCELERATION: 20_000,
+        EchoType.START_SPEED: 500,
+        EchoType.IRUN: 16,
+        EchoType.IHOLD: 8,
+        EchoType.MICROSTEPS: 16,
+        EchoType.LEAD: 1_000,
+        EchoType.STEPS_PER_REV: 200,
+        EchoType.TRAVEL: 50_000,
+    }
+)
+
+#: Table 1.4 ranges; microsteps are further restricted to powers of two.
+PARAMETER_RANGES: Mapping[EchoType, tuple[int, int]] = MappingProxyType(
+    {
+        EchoType.FAST_SPEED: (1, 999_999),
+        EchoType.SLOW_SPEED: (1, 999_999),
+        EchoType.ACCELERATION: (1, 999_999),
+        EchoType.START_SPEED: (0, 99_999),
+        EchoType.IRUN: (0, 31),
+        EchoType.IHOLD: (0, 31),
+        EchoType.MICROSTEPS: (1, 256),
+        EchoType.LEAD: (1, 99_999),
+        EchoType.STEPS_PER_REV: (1, 9_999),
+        EchoType.TRAVEL: (1, 999_999),
+    }
+)
+
+#: Commands kept for inspection: enough for a test or the developer pane, bounded
+#: so that an emulator left running for days does not grow.
+COMMAND_LOG_LENGTH = 1000
+#: Tolerance for comparing cycle times built from float sums.
+_EPS = 1e-9
+
+
+def parameter_in_range(parameter: EchoType, value: int) -> bool:
+    """Whether the device accepts ``value`` for ``parameter`` (table 1.4)."""
+    low, high = PARAMETER_RANGES[parameter]
+    if not low <= value <= high:
+        return False
+    return parameter != EchoType.MICROSTEPS or value & (value - 1) == 0
+
+
+@dataclass(frozen=True)
+class StageConfig:
+    """What differs between stage boards; the defaults describe the XY stage."""
+
+    axes: int = 2
+    #: Power-on parameters of every axis (table 1.4); any left out take the XY-stage value.
+    parameters: Mapping[EchoType, int] = field(default_factory=lambda: dict(XY_STAGE_PARAMETERS))
+    control_cycle: float = 0.005
+    jog_watchdog: float = 0.5
+    #: The data-session flag drops after this long without a command frame.
+    session_timeout: float = 2.0
+    #: 1.2.0, sent as ``010200``.
+    firmware_version: int = 10200
+    battery_capacity_mah: float = 2000.0
+    battery_charge: float = 80.0
+    low_battery_percent: float = 15.0
+    critical_battery_percent: float = 5.0
+    empty_voltage_mv: float = 3300.0
+    full_voltage_mv: float = 4200.0
+    #: Drawn at all times (MCU, BLE module, IMU) unless asleep.
+    base_current_ma: float = 40.0
+    sleep_current_ma: float = 5.0
+    #: Per axis while its driver is enabled, and extra per axis while it moves.
+    holding_current_ma: float = 120.0
+    moving_current_ma: float = 350.0
+    charging_current_ma: float = 800.0
+    #: Above this charge the charger tapers its current linearly down to 0 at 100 %.
+    charge_taper_percent: float = 90.0
+    board_temperature_c: float = 25.0
+
+
+@dataclass(frozen=True, slots=True)
+class ExecutedCommand:
+    """One command packet the firmware handled (NOPs are not recorded)."""
+
+    time: float
+    axis: int
+    command: int
+    data: int
+    accepted: bool
+
+
+class Battery:
+    """A coulomb-counting cell: charge in %, voltage linear in charge.
+
+    Crude on purpose; what matters to the station is that the gauge moves the
+    right way (down faster while driving, up on the charger) and that the
+    critical level can be reached.
+    """
+
+    def __init__(self, config: StageConfig) -> None:
+        self._config = config
+        self.charge = config.battery_charge
+        self.charger_connected = False
+
+    @property
+    def charging_current_ma(self) -> float:
+        config = self._config
+        if not self.charger_connected or self.charge >= 100.0:
+            return 0.0
+        if self.charge <= config.charge_taper_percent:
+            return config.charging_current_ma
+        span = 100.0 - config.charge_taper_percent
+        return config.charging_current_ma * (100.0 - self.charge) / span
+
+    @property
+    def voltage_mv(self) -> float:
+        config = self._config
+        span = config.full_voltage_mv - config.empty_voltage_mv
+        return config.empty_voltage_mv + span * self.charge / 100.0
+
+    def step(self, dt: float, load_ma: float) -> None:
+        net_mah = (self.charging_current_ma - load_ma) * dt / 3600.0
+        percent = self.charge + 100.0 * net_mah / self._config.battery_capacity_mah
+        self.charge = min(100.0, max(0.0, percent))
+
+
+class Imu:
+    """Yaw integrated from a rotation rate the developer sets."""
+
+    def __init__(self) -> None:
+        self.yaw_deg = 0.0
+        self.rate_dps = 0.0
+
+    def step(self, dt: float) -> None:
+        self.yaw_deg = _wrap_degrees(self.yaw_deg + self.rate_dps * dt)
+
+
+def _wrap_degrees(angle: float) -> float:
+    """Into [-180, 180), the range the IMU reports."""
+    return (angle + 180.0) % 360.0 - 180.0
+
+
+def _fit(value: float) -> int:
+    """Round and saturate into what six DATA characters can carry."""
+    return max(DATA_MIN, min(DATA_MAX, round(value)))
+
+
+@dataclass
+class _AxisControl:
+    """Firmware-side state of one axis besides the mechanism itself."""
+
+    fast: bool = False
+    #: Direction of a jog in progress (0: not jogging), for the dead-man watchdog.
+    jog_direction: int = 0
+    last_jog: float = 0.0
+    driver_fault: bool = False
+    #: Set by HOME until the next motion command: a finished homing run reads as
+    #: idle at the new zero, not as a target reached.
+    homed: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class _Reply:
+    """What one echo packet will say; None fields are filled in at the end of the cycle."""
+
+    type: int = EchoType.POSITION
+    status: int | None = None
+    data: int | None = None
+    #: False when the command was refused (unknown, out of range, motion while disabled).
+    accepted: bool = True
+
+
+_DEFAULT_REPLY = _Reply()
+_REFUSED = _Reply(accepted=False)
+_UNKNOWN = _Reply(status=AxisStatus.UNKNOWN_COMMAND, accepted=False)
+
+
+@dataclass(frozen=True, slots=True)
+class _PendingEcho:
+    subscriber: int
+    replies: tuple[_Reply, ...]
+
+
+_Handler = Callable[[int, int, float], _Reply]
+
+
+class StageFirmware:
+    """The stage's control loop over emulated axes, FRAM, battery and IMU.
+
+    Thread-safe: the loopback's ticker thread runs cycles while the GUI thread
+    flips the environment controls, so every public method and property takes
+    the same re-entrant lock.
+    """
+
+    def __init__(self, clock: Clock, config: StageConfig | None = None) -> None:
+        self.config = config if config is not None else StageConfig()
+        self._lock = threading.RLock()
+        self._sink: Callable[[bytes], None] | None = None
+        self._decoder = StageDecoder(self.config.axes)
+        self._queue: deque[CommandFrame] = deque()
+        self._host_echoes = 0
+        self._start = clock.now()
+        self._cycles = 0
+        self._last_frame: float | None = None
+        self._sleeping = False
+        self._usb_connected = False
+        self._battery = Battery(self.config)
+        self._imu = Imu()
+        self._board_temperature_c = self.config.board_temperature_c
+        self.fram = Fram(self.config.axes)
+        self._controls = [_AxisControl() for _ in range(self.config.axes)]
+        self._store_defaults()
+        self._axes = tuple(self._make_axis(i) for i in range(self.config.axes))
+        self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
+        self._handlers: dict[int, _Handler] = {
+            CommandId.NOP: self._nop,
+            CommandId.STOP: self._stop,
+            CommandId.JOG: self._jog,
+            CommandId.MOVE_ABS: self._move_abs,
+            CommandId.MOVE_REL: self._move_rel,
+            CommandId.HOME: self._home,
+            CommandId.SET_POS: self._set_pos,
+            CommandId.SPEED: self._speed,
+            CommandId.ESTOP: self._estop,
+            CommandId.SLEEP: self._sleep,
+            CommandId.READ: self._read,
+        }
+
+    # -- EmulatedDevice --------------------------------------------------------
+
+    def set_output(self, sink: Callable[[bytes], None] | None) -> None:
+        with self._lock:
+            self._sink = sink
+
+    def receive(self, data: bytes) -> None:
+        with self._lock:
+            for frame in self._decoder.feed(data):
+                if isinstance(frame, CommandFrame):
+                    self._queue.append(frame)
+                elif isinstance(frame, EchoFrame):
+                    # A well-formed echo coming *from* the host is still not a command.
+                    self._host_echoes += 1
+
+    def run_until(self, t: float) -> None:
+        with self._lock:
+            while self._cycle_time(self._cycles + 1) <= t + _EPS:
+                self._run_cycle()
+
+    # -- introspection -----------------------------------------------------------
+
+    @property
+    def axes(self) -> tuple[Axis, ...]:
+        with self._lock:
+            return self._axes
+
+    @property
+    def time(self) -> float:
+        """Clock time at the end of the last control cycle run."""
+        with self._lock:
+            return self._cycle_time(self._cycles)
+
+    @property
+    def sleeping(self) -> bool:
+        with self._lock:
+            return self._sleeping
+
+    @property
+    def rejected_frames(self) -> int:
+        with self._lock:
+            return self._rejected_frames()
+
+    @property
+    def motors_enabled(self) -> bool:
+        """False while blocked or asleep (a faulted driver disables only its own axis)."""
+        with self._lock:
+            return self._block_status() is None and not self._sleeping
+
+    @property
+    def session_open(self) -> bool:
+        with self._lock:
+            return self._session_open()
+
+    @property
+    def command_log(self) -> tuple[ExecutedCommand, ...]:
+        """The latest commands handled, oldest first (a snapshot, safe from any thread)."""
+        with self._lock:
+            return tuple(self._command_log)
+
+    def parameter(self, axis: int, parameter: int) -> int:
+        """A parameter as a READ would answer it (encoder included)."""
+        with self._lock:
+            return self._parameter(axis, parameter)
+
+    def speed_is_fast(self, axis: int) -> bool:
+        with self._lock:
+            return self._controls[axis].fast
+
+    # -- environment and fault controls -----------------------------------------
+
+    @property
+    def charger_connected(self) -> bool:
+        with self._lock:
+            return self._battery.charger_connected
+
+    @charger_connected.setter
+    def charger_connected(self, connected: bool) -> None:
+        with self._lock:
+            self._battery.charger_connected = connected
+            self._enforce_interlocks()
+
+    @property
+    def usb_connected(self) -> bool:
+        with self._lock:
+            return self._usb_connected
+
+    @usb_connected.setter
+    def usb_connected(self, connected: bool) -> None:
+        with self._lock:
+            self._usb_connected = connected
+            self._enforce_interlocks()
+
+    @property
+    def battery_charge(self) -> float:
+        """State of charge in %."""
+        with self._lock:
+            return self._battery.charge
+
+    @battery_charge.setter
+    def battery_charge(self, percent: float) -> None:
+        with self._lock:
+            self._battery.charge = min(100.0, max(0.0, percent))
+            self._enforce_interlocks()
+
+    @property
+    def board_temperature_c(self) -> float:
+        with self._lock:
+            return self._board_temperature_c
+
+    @board_temperature_c.setter
+    def board_temperature_c(self, celsius: float) -> None:
+        with self._lock:
+            self._board_temperature_c = celsius
+
+    @property
+    def rotation_rate_dps(self) -> float:
+        with self._lock:
+            return self._imu.rate_dps
+
+    @rotation_rate_dps.setter
+    def rotation_rate_dps(self, rate: float) -> None:
+        with self._lock:
+            self._imu.rate_dps = rate
+
+    @property
+    def yaw_deg(self) -> float:
+        with self._lock:
+            return self._imu.yaw_deg
+
+    @yaw_deg.setter
+    def yaw_deg(self, angle: float) -> None:
+        with self._lock:
+            self._imu.yaw_deg = _wrap_degrees(angle)
+
+    @property
+    def verification_fault(self) -> bool:
+        with self._lock:
+            return self.fram.verification_fault
+
+    @verification_fault.setter
+    def verification_fault(self, fault: bool) -> None:
+        with self._lock:
+            self.fram.verification_fault = fault
+
+    def driver_fault(self, axis: int) -> bool:
+        with self._lock:
+            return self._controls[axis].driver_fault
+
+    def set_driver_fault(self, axis: int, fault: bool) -> None:
+        """Over-temperature or stall on one driver: that axis stops dead and shows C."""
+        with self._lock:
+            self._controls[axis].driver_fault = fault
+            self._enforce_interlocks()
+
+    def press_end_switch(self, axis: int, which: SwitchName) -> None:
+        """Trip an end switch where the axis is, as a crash or a stuck lever would."""
+        with self._lock:
+            self._axes[axis].trigger_end_switch(which)
+
+    # -- the control cycle ---------------------------------------------------------
+
+    def _cycle_time(self, cycles: int) -> float:
+        return self._start + cycles * self.config.control_cycle
+
+    def _run_cycle(self) -> None:
+        now = self._cycle_time(self._cycles)
+        dt = self.config.control_cycle
+        self._enforce_interlocks()
+        pending = [self._handle_frame(frame, now) for frame in self._queue]
+        self._queue.clear()
+        self._check_jog_watchdogs(now)
+        for axis in self._axes:
+            axis.advance(dt)
+        self._battery.step(dt, self._load_ma())
+        self._imu.step(dt)
+        self._cycles += 1
+        self._enforce_interlocks()
+        for echo in pending:
+            self._emit(echo)
+
+    def _handle_frame(self, frame: CommandFrame, now: float) -> _PendingEcho:
+        self._last_frame = now
+        replies = tuple(
+            self._handle_packet(index, packet, now) for index, packet in enumerate(frame.packets)
+        )
+        return _PendingEcho(frame.subscriber, replies)
+
+    def _handle_packet(self, index: int, packet: CommandPacket, now: float) -> _Reply:
+        parameter = written_parameter(packet.command)
+        if parameter is not None:
+            reply = self._write(index, parameter, packet.data)
+        else:
+            handler = self._handlers.get(packet.command)
+            reply = _UNKNOWN if handler is None else handler(index, packet.data, now)
+        if packet.command != CommandId.NOP:
+            self._command_log.append(
+                ExecutedCommand(now, index, packet.command, packet.data, reply.accepted)
+            )
+        return reply
+
+    def _check_jog_watchdogs(self, now: float) -> None:
+        for axis, control in zip(self._axes, self._controls, strict=True):
+            if control.jog_direction and now - control.last_jog >= self.config.jog_watchdog - _EPS:
+                control.jog_direction = 0
+                axis.stop()
+
+    def _enforce_interlocks(self) -> None:
+        """Stop dead every axis whose motor must be disabled (block, sleep, fault)."""
+        for index, axis in enumerate(self._axes):
+            if not self._may_move(index):
+                self._controls[index].jog_direction = 0
+                if axis.moving:
+                    axis.estop()
+
+    def _emit(self, echo: _PendingEcho) -> None:
+        packets = tuple(self._echo_packet(i, reply) for i, reply in enumerate(echo.replies))
+        subscriber, sdata = self._subscriber(echo.subscriber)
+        frame = encode_echo(EchoFrame(packets, subscriber, sdata))
+        if self._sink is not None:
+            self._sink(frame)
+
+    def _echo_packet(self, index: int, reply: _Reply) -> EchoPacket:
+        status = reply.status if reply.status is not None else self._axis_status(index)
+        data = reply.data if reply.data is not None else self._axes[index].position_quantised_um
+        return EchoPacket(reply.type, status, _fit(data))
+
+    # -- device state ----------------------------------------------------------------
+
+    def _block_status(self) -> AxisStatus | None:
+        if self._battery.charge < self.config.critical_battery_percent:
+            return AxisStatus.BLOCKED_BATTERY
+        if self._battery.charger_connected:
+            return AxisStatus.BLOCKED_CHARGER
+        if self._usb_connected:
+            return AxisStatus.BLOCKED_USB
+        return None
+
+    def _may_move(self, index: int) -> bool:
+        return (
+            self._block_status() is None
+            and not self._sleeping
+            and not self._controls[index].driver_fault
+        )
+
+    def _axis_status(self, index: int) -> int:
+        block = self._block_status()
+        if block is not None:
+            return block
+        if self._sleeping:
+            return AxisStatus.SLEEPING
+        if self._controls[index].driver_fault:
+            return AxisStatus.DRIVER_FAULT
+        state = self._axes[index].state
+        if self._controls[index].homed and state is AxisState.TARGET_REACHED:
+            return AxisStatus.IDLE
+        return int(state.value)
+
+    def _rejected_frames(self) -> int:
+        return self._decoder.rejected + self._host_echoes
+
+    def _session_open(self) -> bool:
+        if self._last_frame is None:
+            return False
+        return self._cycle_time(self._cycles) - self._last_frame < self.config.session_timeout
+
+    def _load_ma(self) -> float:
+        config = self.config
+        if self._sleeping:
+            return config.sleep_current_ma
+        load = config.base_current_ma
+        for index, axis in enumerate(self._axes):
+            if self._may_move(index):
+                load += config.holding_current_ma
+                if axis.moving:
+                    load += config.moving_current_ma
+        return load
+
+    def _device_flags(self) -> DeviceFlag:
+        flags = DeviceFlag(0)
+        if self._battery.charger_connected:
+            flags |= DeviceFlag.CHARGER
+        if self._usb_connected:
+            flags |= DeviceFlag.USB
+        if self._battery.charge < self.config.low_battery_percent:
+            flags |= DeviceFlag.LOW_BATTERY
+        if self._sleeping:
+            flags |= DeviceFlag.SLEEPING
+        if self._session_open():
+            flags |= DeviceFlag.DATA_SESSION
+        return flags
+
+    def _subscriber(self, ss: int) -> tuple[int, int]:
+        value = self._subscriber_value(ss)
+        if value is None:
+            return Subscriber.UNKNOWN, ss
+        return ss, _fit(value)
+
+    def _subscriber_value(self, ss: int) -> float | None:
+        match ss:
+            case Subscriber.NONE:
+                return 0
+            case Subscriber.BATTERY_VOLTAGE:
+                return self._battery.voltage_mv
+            case Subscriber.BATTERY_CHARGE:
+                return self._battery.charge
+            case Subscriber.CHARGING_CURRENT:
+                return self._battery.charging_current_ma
+            case Subscriber.BOARD_TEMPERATURE:
+                return 100.0 * self._board_temperature_c
+            case Subscriber.ROTATION:
+                return 100.0 * self._imu.yaw_deg
+            case Subscriber.YAW_RATE:
+                return 100.0 * self._imu.rate_dps
+            case Subscriber.DEVICE_FLAGS:
+                return int(self._device_flags())
+            case Subscriber.X_ENCODER | Subscriber.Y_ENCODER:
+                return self._encoder(ss - Subscriber.X_ENCODER)
+            case Subscriber.FIRMWARE_VERSION:
+                return self.config.firmware_version
+            case Subscriber.REJECTED_FRAMES:
+                return self._rejected_frames()
+        return None
+
+    def _encoder(self, index: int) -> float | None:
+        """The physical position, which a lost step would make differ from the counted one."""
+        return self._axes[index].position_um if index < len(self._axes) else None
+
+    # -- parameters --------------------------------------------------------------------
+
+    def _store_defaults(self) -> None:
+        # A profile names only the parameters in which its board differs from the XY stage.
+        defaults = {**XY_STAGE_PARAMETERS, **self.config.parameters}
+        for index in range(self.config.axes):
+            for parameter, value in defaults.items():
+                if not parameter_in_range(parameter, value):
+                    raise ValueError(f"default {parameter.name} = {value} is out of range")
+                self.fram.write(index, parameter, value)
+
+    def _make_axis(self, index: int) -> Axis:
+        return Axis(
+            self._limits(index),
+            acceleration=self.fram.read(index, EchoType.ACCELERATION),
+            start_speed=self.fram.read(index, EchoType.START_SPEED),
+        )
+
+    def _limits(self, index: int) -> AxisLimits:
+        read = self.fram.read
+        microsteps_per_rev = read(index, EchoType.STEPS_PER_REV) * read(index, EchoType.MICROSTEPS)
+        return AxisLimits(
+            travel_um=read(index, EchoType.TRAVEL),
+            microstep_um=read(index, EchoType.LEAD) / microsteps_per_rev,
+        )
+
+    def _parameter(self, index: int, parameter: int) -> int:
+        if parameter == EchoType.ENCODER:
+            return round(self._axes[index].position_um)
+        return self.fram.read(index, parameter)
+
+    def _apply_parameter(self, index: int, parameter: EchoType) -> None:
+        """Make a stored parameter take effect on the mechanism (speeds are read per move)."""
+        axis = self._axes[index]
+        if parameter == EchoType.ACCELERATION:
+            axis.acceleration = self.fram.read(index, parameter)
+        elif parameter == EchoType.START_SPEED:
+            axis.start_speed = self.fram.read(index, parameter)
+        elif parameter in (
+            EchoType.MICROSTEPS,
+            EchoType.LEAD,
+            EchoType.STEPS_PER_REV,
+            EchoType.TRAVEL,
+        ):
+            axis.limits = self._limits(index)
+
+    def _write(self, index: int, parameter: EchoType, value: int) -> _Reply:
+        if parameter_in_range(parameter, value) and self.fram.write(index, parameter, value):
+            self._apply_parameter(index, parameter)
+            return _Reply(type=parameter, data=value)
+        kept = self.fram.read(index, parameter)
+        return _Reply(parameter, AxisStatus.PARAMETER_REJECTED, kept, accepted=False)
+
+    def _read(self, index: int, data: int, now: float) -> _Reply:
+        if not EchoType.FAST_SPEED <= data <= EchoType.ENCODER:
+            return _UNKNOWN
+        return _Reply(type=data, data=self._parameter(index, data))
+
+    # -- command handlers ------------------------------------------------------------------
+
+    def _speed_of(self, index: int) -> float:
+        fast = self._controls[index].fast
+        return self.fram.read(index, EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED)
+
+    def _take_over(self, index: int) -> Axis:
+        """The axis, with whatever the previous command left pending forgotten."""
+        control = self._controls[index]
+        control.jog_direction = 0
+        control.homed = False
+        return self._axes[index]
+
+    def _nop(self, index: int, data: int, now: float) -> _Reply:
+        return _DEFAULT_REPLY
+
+    def _stop(self, index: int, data: int, now: float) -> _Reply:
+        self._take_over(index).stop()
+        return _DEFAULT_REPLY
+
+    def _estop(self, index: int, data: int, now: float) -> _Reply:
+        self._take_over(index).estop()
+        return _DEFAULT_REPLY
+
+    def _jog(self, index: int, data: int, now: float) -> _Reply:
+        if data not in (-1, 0, 1):
+            return _UNKNOWN
+        if not self._may_move(index):
+            return _REFUSED
+        control = self._controls[index]
+        if data == 0:
+            # Key released: that ends a jog, but a move in progress carries on.
+            if control.jog_direction:
+                self._take_over(index).stop()
+            return _DEFAULT_REPLY
+        self._take_over(index).jog(data, self._speed_of(index))
+        control.jog_direction = data
+        control.last_jog = now
+        return _DEFAULT_REPLY
+
+    def _move_abs(self, index: int, data: int, now: float) -> _Reply:
+        if not self._may_move(index):
+            return _REFUSED
+        self._take_over(index).move_to(data, self._speed_of(index))
+        return _DEFAULT_REPLY
+
+    def _move_rel(self, index: int, data: int, now: float) -> _Reply:
+        if not self._may_move(index):
+            return _REFUSED
+        self._take_over(index).move_by(data, self._speed_of(index))
+        return _DEFAULT_REPLY
+
+    def _home(self, index: int, data: int, now: float) -> _Reply:
+        if not self._may_move(index):
+            return _REFUSED
+        self._take_over(index).home(self.fram.read(index, EchoType.SLOW_SPEED))
+        self._controls[index].homed = True
+        return _DEFAULT_REPLY
+
+    def _set_pos(self, index: int, data: int, now: float) -> _Reply:
+        self._axes[index].set_position(data)
+        return _DEFAULT_REPLY
+
+    def _speed(self, index: int, data: int, now: float) -> _Reply:
+        if data not in (0, 1):
+            return _UNKNOWN
+        self._controls[index].fast = data == 1
+        return _DEFAULT_REPLY
+
+    def _sleep(self, index: int, data: int, now: float) -> _Reply:
+        if data not in (0, 1):
+            return _UNKNOWN
+        self._sleeping = data == 1
+        self._enforce_interlocks()
+        return _DEFAULT_REPLY

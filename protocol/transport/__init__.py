@@ -1,0 +1,1 @@
+"""Links between the station and a device: serial, BLE and the in-process loopback."""
