@@ -1,0 +1,56 @@
+"""A transport wrapped in a QObject so its events arrive as Qt signals.
+
+Transports call their listener from their own threads (serial reader,
+BLE loop, emulator ticker); emitting signals from there lets Qt queue the
+events onto the GUI thread, where sessions and widgets live.  When the
+transport runs on the GUI thread (tests on a manual clock) the same signals
+are delivered directly, so tests stay synchronous and deterministic.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject, Signal
+
+from protocol.transport.base import Transport
+
+
+class Link(QObject):
+    connected = Signal()
+    disconnected = Signal(object)  # str reason, or None for an orderly close
+    dataReceived = Signal(bytes)
+    dataSent = Signal(bytes)  # exactly what was handed to the transport (for the TX log)
+
+    def __init__(self, transport: Transport, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.transport = transport
+        transport.set_listener(self)
+
+    # TransportListener, possibly on a foreign thread: only emit here.
+    def connection_made(self) -> None:
+        self.connected.emit()
+
+    def data_received(self, data: bytes) -> None:
+        self.dataReceived.emit(data)
+
+    def connection_lost(self, reason: str | None) -> None:
+        self.disconnected.emit(reason)
+
+    # Used from the GUI thread.
+    def open(self) -> None:
+        self.transport.open()
+
+    def close(self) -> None:
+        self.transport.close()
+
+    def write(self, data: bytes) -> None:
+        if not self.transport.is_open:
+            return
+        self.transport.write(data)
+        self.dataSent.emit(data)
+
+    @property
+    def is_open(self) -> bool:
+        return self.transport.is_open
+
+    def describe(self) -> str:
+        return self.transport.describe()

@@ -1,0 +1,157 @@
+"""The machine model: the one place widgets read machine state from.
+
+Sessions write into it from decoded replies; widgets connect to its change
+signals.  Keeping it dialect-neutral (positions in profile units, status as
+text plus a few flags) lets every panel serve every machine family.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+from PySide6.QtCore import QObject, Signal
+
+from app.profiles import MachineProfile
+
+
+class LinkState(enum.Enum):
+    DISCONNECTED = "disconnected"
+    CONNECTING = "connecting"
+    CONNECTED = "connected"
+    STALE = "stale"
+    LOST = "lost"
+
+
+class ParameterState(enum.Enum):
+    UNKNOWN = "unknown"
+    PENDING = "pending"
+    READ = "read"
+    CONFIRMED = "confirmed"
+    REFUSED = "refused"
+
+
+@dataclass
+class ParameterValue:
+    value: int | None = None
+    state: ParameterState = ParameterState.UNKNOWN
+    requested: int | None = None
+
+
+@dataclass
+class AxisState:
+    name: str
+    unit: str
+    position: float = 0.0
+    velocity: float = 0.0
+    status_code: int | None = None
+    status_text: str = "unknown"
+    moving: bool = False
+    parameters: dict[int, ParameterValue] = field(default_factory=dict)
+
+
+class MachineModel(QObject):
+    linkStateChanged = Signal(object)  # LinkState
+    axisChanged = Signal(int)
+    parameterChanged = Signal(int, int)  # axis, parameter type
+    telemetryChanged = Signal(str)  # telemetry key
+    lockChanged = Signal()
+    message = Signal(str)  # one-line news for the status bar
+
+    def __init__(self, profile: MachineProfile, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.profile = profile
+        self.axes = [AxisState(a.name, a.unit) for a in profile.axes]
+        self.link_state = LinkState.DISCONNECTED
+        self.link_detail = ""
+        self.telemetry: dict[str, float] = {}
+        self.block_reason: str | None = None
+        self.sleeping = False
+        self.rejected_frames = 0
+
+    # --- written by sessions -------------------------------------------------
+
+    def set_link_state(self, state: LinkState, detail: str = "") -> None:
+        if state == self.link_state and detail == self.link_detail:
+            return
+        self.link_state = state
+        self.link_detail = detail
+        self.linkStateChanged.emit(state)
+        self.lockChanged.emit()
+
+    def update_axis(
+        self,
+        index: int,
+        *,
+        position: float | None = None,
+        velocity: float | None = None,
+        status_code: int | None = None,
+        status_text: str | None = None,
+        moving: bool | None = None,
+    ) -> None:
+        axis = self.axes[index]
+        before = (axis.position, axis.velocity, axis.status_code, axis.status_text, axis.moving)
+        if position is not None:
+            axis.position = position
+        if velocity is not None:
+            axis.velocity = velocity
+        if status_code is not None:
+            axis.status_code = status_code
+        if status_text is not None:
+            axis.status_text = status_text
+        if moving is not None:
+            axis.moving = moving
+        if before != (
+            axis.position,
+            axis.velocity,
+            axis.status_code,
+            axis.status_text,
+            axis.moving,
+        ):
+            self.axisChanged.emit(index)
+
+    def set_parameter(
+        self, axis: int, parameter: int, value: int | None, state: ParameterState
+    ) -> None:
+        entry = self.axes[axis].parameters.setdefault(parameter, ParameterValue())
+        entry.value = value if value is not None else entry.value
+        entry.state = state
+        self.parameterChanged.emit(axis, parameter)
+
+    def mark_parameter_pending(self, axis: int, parameter: int, requested: int) -> None:
+        entry = self.axes[axis].parameters.setdefault(parameter, ParameterValue())
+        entry.requested = requested
+        entry.state = ParameterState.PENDING
+        self.parameterChanged.emit(axis, parameter)
+
+    def parameter(self, axis: int, parameter: int) -> ParameterValue:
+        return self.axes[axis].parameters.get(parameter, ParameterValue())
+
+    def set_telemetry(self, key: str, value: float) -> None:
+        if self.telemetry.get(key) == value:
+            return
+        self.telemetry[key] = value
+        self.telemetryChanged.emit(key)
+
+    def set_block(self, reason: str | None, *, sleeping: bool) -> None:
+        if reason == self.block_reason and sleeping == self.sleeping:
+            return
+        self.block_reason = reason
+        self.sleeping = sleeping
+        self.lockChanged.emit()
+
+    # --- read by widgets -----------------------------------------------------
+
+    def motion_lock_reason(self) -> str | None:
+        """Why motion controls are disabled right now, or None when they are live."""
+        if self.link_state in (LinkState.DISCONNECTED, LinkState.CONNECTING):
+            return "not connected"
+        if self.link_state is LinkState.LOST:
+            return "link lost"
+        if self.sleeping:
+            return "sleeping — press Wake"
+        return self.block_reason
+
+    @property
+    def any_moving(self) -> bool:
+        return any(a.moving for a in self.axes)

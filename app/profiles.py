@@ -1,0 +1,141 @@
+"""Machine profiles: what the station knows about a machine before it talks to it.
+
+A profile is a TOML file in ``resources/machines``; the station reads the
+dialect, link defaults, axes and capabilities from it, so supporting another
+machine of a known family is a file, not code.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+RESOURCES = Path(__file__).resolve().parent.parent / "resources"
+MACHINES_DIR = RESOURCES / "machines"
+DEFAULT_PROFILE = "xy-stage"
+DIALECTS = ("stage", "usb3", "drill", "gcode")
+TRANSPORTS = ("emulator", "serial", "ble")
+
+
+class ProfileError(ValueError):
+    """A profile file that cannot be used, with the file and the reason."""
+
+
+@dataclass(frozen=True)
+class AxisProfile:
+    name: str
+    kind: str = "linear"
+    unit: str = "mm"
+    travel: float = 50.0
+    steps_per_rev: int = 200
+    microsteps: int = 16
+    lead: float = 1.0
+    max_speed: float = 100.0
+    max_acceleration: float = 1000.0
+
+
+@dataclass(frozen=True)
+class LinkDefaults:
+    transport: str = "emulator"
+    baud: int = 115200
+    ble_service_uuid: str = ""
+    ble_write_uuid: str = ""
+    ble_notify_uuid: str = ""
+    ble_name_prefix: str = ""
+
+
+@dataclass(frozen=True)
+class Capabilities:
+    home: bool = False
+    sleep: bool = False
+    subscribers: bool = False
+    stop_command: bool = False
+    pen: bool = False
+    drill: bool = False
+
+
+@dataclass(frozen=True)
+class MachineProfile:
+    name: str
+    title: str
+    dialect: str
+    axes: tuple[AxisProfile, ...]
+    link: LinkDefaults = field(default_factory=LinkDefaults)
+    capabilities: Capabilities = field(default_factory=Capabilities)
+    period_ms: int = 100
+    source: Path | None = None
+
+    def axis_index(self, name: str) -> int:
+        for i, axis in enumerate(self.axes):
+            if axis.name == name:
+                return i
+        raise KeyError(name)
+
+
+def available_profiles(directory: Path = MACHINES_DIR) -> list[str]:
+    return sorted(p.stem for p in directory.glob("*.toml"))
+
+
+def load_profile(name_or_path: str | Path, directory: Path = MACHINES_DIR) -> MachineProfile:
+    """Load a shipped profile by name, or any profile file by path."""
+    path = Path(name_or_path)
+    if path.suffix != ".toml":
+        path = directory / f"{name_or_path}.toml"
+    if not path.is_file():
+        known = ", ".join(available_profiles(directory)) or "none"
+        raise ProfileError(f"no machine profile {name_or_path!r} (known: {known})")
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise ProfileError(f"{path}: {exc}") from exc
+    return _profile_from(data, path)
+
+
+def _section(data: dict[str, Any], key: str, path: Path) -> dict[str, Any]:
+    value = data.get(key, {})
+    if not isinstance(value, dict):
+        raise ProfileError(f"{path}: [{key}] must be a table")
+    return value
+
+
+def _build(cls: type[Any], values: dict[str, Any], path: Path, where: str) -> Any:
+    try:
+        return cls(**values)
+    except TypeError as exc:
+        raise ProfileError(f"{path}: {where}: {exc}") from exc
+
+
+def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
+    dialect = data.get("dialect")
+    if dialect not in DIALECTS:
+        raise ProfileError(f"{path}: dialect must be one of {', '.join(DIALECTS)}, not {dialect!r}")
+    raw_axes = data.get("axes")
+    if not isinstance(raw_axes, list) or not raw_axes:
+        raise ProfileError(f"{path}: at least one [[axes]] entry is required")
+    axes = tuple(
+        _build(AxisProfile, dict(a), path, f"axis {i + 1}") for i, a in enumerate(raw_axes)
+    )
+    for axis in axes:
+        if axis.travel <= 0:
+            raise ProfileError(f"{path}: axis {axis.name}: travel must be positive")
+    link = _build(LinkDefaults, _section(data, "link", path), path, "[link]")
+    if link.transport not in TRANSPORTS:
+        raise ProfileError(f"{path}: [link] transport must be one of {', '.join(TRANSPORTS)}")
+    capabilities = _build(
+        Capabilities, _section(data, "capabilities", path), path, "[capabilities]"
+    )
+    period = int(data.get("period_ms", 100))
+    if not 20 <= period <= 1000:
+        raise ProfileError(f"{path}: period_ms must be within 20…1000")
+    return MachineProfile(
+        name=str(data.get("name", path.stem)),
+        title=str(data.get("title", path.stem)),
+        dialect=dialect,
+        axes=axes,
+        link=link,
+        capabilities=capabilities,
+        period_ms=period,
+        source=path,
+    )

@@ -1,0 +1,51 @@
+"""Test configuration shared by every test.
+
+Qt runs offscreen; a test that leaves a thread running or a transport open
+fails, because in the station either one is a link or a motor left behind.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Iterator
+from pathlib import Path
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+import pytest
+
+from protocol.transport.base import open_transports
+
+ROOT = Path(__file__).resolve().parent.parent
+SHARED = ROOT.parent / "shared"
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        if {"qapp", "qtbot"} & set(getattr(item, "fixturenames", ())):
+            item.add_marker(pytest.mark.gui)
+
+
+@pytest.fixture(autouse=True)
+def no_leftover_threads_or_transports() -> Iterator[None]:
+    before = set(threading.enumerate())
+    yield
+    leaked_transports = open_transports()
+    for transport in leaked_transports:
+        transport.close()
+    deadline = threading.Event()
+    for _ in range(50):  # threads may still be finishing their last iteration
+        extra = [t for t in threading.enumerate() if t not in before]
+        if not extra:
+            break
+        deadline.wait(0.02)
+    assert not leaked_transports, f"test left transports open: {leaked_transports}"
+    assert not extra, f"test left threads running: {[t.name for t in extra]}"
+
+
+@pytest.fixture
+def shared_dir() -> Path:
+    """The shared job files, beside the repo as CI has it."""
+    assert SHARED.is_dir(), f"{SHARED} is missing: clone the repo beside shared/"
+    return SHARED

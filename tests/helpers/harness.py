@@ -1,0 +1,77 @@
+"""A station wired to the emulator on a manual clock, driven step by step.
+
+Tests move time with :meth:`StationHarness.run`: each control step advances
+the clock, fires the session's periodic tick when a period has elapsed, runs
+the emulator up to the present and lets Qt deliver what that produced.  No
+sleeps, no real timers: the outcome depends only on the steps taken.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtWidgets import QApplication
+
+from app.profiles import MachineProfile, load_profile
+from app.stage_session import StageSession
+from app.station import Station
+from protocol.clock import ManualClock
+from protocol.emulator.stage_firmware import StageFirmware
+from protocol.transport.loopback import LoopbackTransport
+
+STEP_S = 0.005
+
+
+class StationHarness:
+    def __init__(self, profile: MachineProfile | None = None) -> None:
+        self.clock = ManualClock()
+        self.station = Station(profile or load_profile("xy-stage"), self.clock, realtime=False)
+        self.written: list[bytes] = []
+        self._next_tick = 0.0
+
+    def connect(self) -> None:
+        self.station.connect_emulator()
+        assert self.station.link is not None
+        self.station.link.dataSent.connect(self.written.append)
+        self._next_tick = self.clock.now() + self.session.period_ms / 1000
+
+    @property
+    def session(self) -> StageSession:
+        assert self.station.session is not None
+        return self.station.session
+
+    @property
+    def emulator(self) -> StageFirmware:
+        assert self.station.emulator is not None
+        return self.station.emulator
+
+    @property
+    def loopback(self) -> LoopbackTransport:
+        transport = self.station.loopback
+        assert transport is not None
+        return transport
+
+    def step(self, seconds: float = STEP_S) -> None:
+        self.clock.advance(seconds)
+        if self.station.session is not None and self.clock.now() >= self._next_tick - 1e-9:
+            self._next_tick += self.session.period_ms / 1000
+            self.session.tick()
+        if self.station.loopback is not None:
+            self.station.loopback.pump()
+        QApplication.processEvents()
+
+    def run(self, seconds: float) -> None:
+        for _ in range(round(seconds / STEP_S)):
+            self.step()
+
+    def run_until(self, condition: Callable[[], bool], timeout: float = 30.0) -> float:
+        """Step until ``condition`` holds; returns the emulated time it took."""
+        start = self.clock.now()
+        while not condition():
+            if self.clock.now() - start > timeout:
+                raise AssertionError(f"condition not met within {timeout} emulated seconds")
+            self.step()
+        return self.clock.now() - start
+
+    def close(self) -> None:
+        self.station.shutdown()
