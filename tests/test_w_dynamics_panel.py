@@ -1,0 +1,155 @@
+"""Dynamics panel: parameters read into fields, edited values written and confirmed or refused."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDoubleSpinBox, QLabel
+from pytestqt.qtbot import QtBot
+
+from app.machine import ParameterState
+from app.stage_parameters import STAGE_PARAMETERS
+from protocol.stage.codec import CommandFrame, CommandId, EchoType, decode
+from tests.helpers.harness import StationHarness
+from widgets.dynamics_panel import DynamicsPanel
+
+# The offscreen platform warns whenever a shown window's layout sets its size limits.
+
+X, Y = 0, 1
+ACCELERATION = int(EchoType.ACCELERATION)
+
+
+@pytest.fixture
+def harness(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness()
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def panel(qtbot: QtBot, harness: StationHarness) -> DynamicsPanel:
+    panel = DynamicsPanel(harness.station)
+    qtbot.addWidget(panel)
+    panel.show()
+    harness.connect()
+    harness.run(2.5)  # the session reads every parameter after connecting
+    return panel
+
+
+def field(panel: DynamicsPanel, axis: int, parameter: EchoType) -> QDoubleSpinBox:
+    return panel.fields[(axis, int(parameter))]
+
+
+def state(panel: DynamicsPanel, axis: int, parameter: EchoType) -> QLabel:
+    return panel.states[(axis, int(parameter))]
+
+
+def apply(qtbot: QtBot, panel: DynamicsPanel) -> None:
+    qtbot.mouseClick(panel.apply_button, Qt.MouseButton.LeftButton)
+
+
+def written_commands(harness: StationHarness, since: int) -> list[int]:
+    commands = []
+    for raw in harness.written[since:]:
+        _, frame = decode(raw)
+        assert isinstance(frame, CommandFrame)
+        commands += [packet.command for packet in frame.packets]
+    return commands
+
+
+def test_every_parameter_of_every_axis_has_a_field(panel: DynamicsPanel) -> None:
+    assert len(panel.fields) == 2 * len(STAGE_PARAMETERS)
+
+
+def test_fields_show_the_device_values_in_display_units(panel: DynamicsPanel) -> None:
+    assert field(panel, X, EchoType.FAST_SPEED).value() == pytest.approx(10.0)
+    assert field(panel, Y, EchoType.ACCELERATION).value() == pytest.approx(20.0)
+    assert field(panel, X, EchoType.MICROSTEPS).value() == 16
+    assert field(panel, X, EchoType.TRAVEL).value() == pytest.approx(50.0)
+    assert field(panel, X, EchoType.ENCODER).isReadOnly()
+
+
+def test_acceleration_applied_is_stored_and_confirmed(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    # 20 mm/s² is the stage's default, so go to 30 first and then back to 20.
+    for shown, wire in ((30.0, 30_000), (20.0, 20_000)):
+        field(panel, X, EchoType.ACCELERATION).setValue(shown)
+        assert state(panel, X, EchoType.ACCELERATION).text() == "• edited"
+        apply(qtbot, panel)
+        harness.run_until(
+            lambda: state(panel, X, EchoType.ACCELERATION).text() == "✓ confirmed", timeout=1
+        )
+        assert harness.emulator.parameter(X, EchoType.ACCELERATION) == wire
+        assert harness.emulator.fram.read(X, EchoType.ACCELERATION) == wire
+        assert harness.emulator.parameter(Y, EchoType.ACCELERATION) == 20_000  # untouched
+    assert "#2e9e44" in state(panel, X, EchoType.ACCELERATION).styleSheet()  # green
+
+
+def test_apply_writes_only_edited_values(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    field(panel, Y, EchoType.SLOW_SPEED).setValue(3.5)
+    since = len(harness.written)
+    apply(qtbot, panel)
+    writes = [c for c in written_commands(harness, since) if c >= CommandId.WRITE_FAST_SPEED]
+    assert writes == [CommandId.WRITE_SLOW_SPEED]
+    harness.run(0.5)
+    assert harness.emulator.parameter(Y, EchoType.SLOW_SPEED) == 3_500
+    assert harness.emulator.parameter(X, EchoType.SLOW_SPEED) == 2_000
+
+    since = len(harness.written)
+    apply(qtbot, panel)  # nothing edited since
+    assert panel.summary.text() == "Nothing changed"
+    assert not [c for c in written_commands(harness, since) if c >= CommandId.WRITE_FAST_SPEED]
+
+
+def test_a_refused_write_shows_the_value_the_device_kept(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    harness.emulator.verification_fault = True
+    field(panel, X, EchoType.ACCELERATION).setValue(25.0)
+    apply(qtbot, panel)
+    label = state(panel, X, EchoType.ACCELERATION)
+    harness.run_until(lambda: label.text().startswith("✗"), timeout=1)
+    assert label.text() == "✗ refused, kept 20.000"
+    assert "#d03030" in label.styleSheet()
+    assert field(panel, X, EchoType.ACCELERATION).value() == pytest.approx(20.0)
+    entry = harness.station.model.parameter(X, ACCELERATION)
+    assert entry.state is ParameterState.REFUSED
+    assert harness.emulator.parameter(X, EchoType.ACCELERATION) == 20_000
+
+
+def test_locally_invalid_values_are_not_sent(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    field(panel, X, EchoType.MICROSTEPS).setValue(12)
+    since = len(harness.written)
+    apply(qtbot, panel)
+    assert CommandId.WRITE_MICROSTEPS not in written_commands(harness, since)
+    assert state(panel, X, EchoType.MICROSTEPS).text() == "✗ not sent"
+    assert "power of two" in state(panel, X, EchoType.MICROSTEPS).toolTip()
+    assert "power of two" in panel.summary.text()
+    harness.run(0.3)
+    assert harness.emulator.parameter(X, EchoType.MICROSTEPS) == 16
+
+
+def test_read_fills_the_fields_from_the_device(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    harness.emulator.fram.write(Y, EchoType.FAST_SPEED, 12_345)
+    field(panel, Y, EchoType.FAST_SPEED).setValue(99.0)  # an edit that Read throws away
+    qtbot.mouseClick(panel.read_button, Qt.MouseButton.LeftButton)
+    harness.run(2.5)
+    assert field(panel, Y, EchoType.FAST_SPEED).value() == pytest.approx(12.345)
+    assert state(panel, Y, EchoType.FAST_SPEED).text() == ""
+
+
+def test_read_and_apply_need_a_link(qtbot: QtBot, harness: StationHarness) -> None:
+    panel = DynamicsPanel(harness.station)
+    qtbot.addWidget(panel)
+    assert not panel.apply_button.isEnabled()
+    harness.connect()
+    assert panel.apply_button.isEnabled() and panel.read_button.isEnabled()

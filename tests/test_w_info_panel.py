@@ -1,0 +1,79 @@
+"""Info panel: link lamp colours, battery gauge, temperature and the power note."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.machine import LinkState
+from tests.helpers.harness import StationHarness
+from widgets.info_panel import LINK_COLOURS, InfoPanel
+
+
+@pytest.fixture
+def harness(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness()
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def info(qtbot: QtBot, harness: StationHarness) -> InfoPanel:
+    panel = InfoPanel(harness.station.model)
+    qtbot.addWidget(panel)
+    return panel
+
+
+def lamp_colour(info: InfoPanel) -> str:
+    return next(c for c in LINK_COLOURS.values() if c in info.link_lamp.styleSheet())
+
+
+def test_link_lamp_follows_the_link_state(harness: StationHarness, info: InfoPanel) -> None:
+    assert lamp_colour(info) == LINK_COLOURS[LinkState.DISCONNECTED]
+    assert info.link_text.text().startswith("disconnected")
+    harness.connect()
+    assert lamp_colour(info) == LINK_COLOURS[LinkState.CONNECTED]
+    assert info.link_text.text() == "connected — built-in emulator"
+
+    harness.loopback.set_manipulator(lambda _direction, _data: b"")  # the device goes silent
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.STALE, timeout=1)
+    assert lamp_colour(info) == LINK_COLOURS[LinkState.STALE]
+    assert info.link_text.text().startswith("stale")
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.LOST, timeout=3)
+    assert lamp_colour(info) == LINK_COLOURS[LinkState.LOST]
+    assert LINK_COLOURS[LinkState.LOST] != LINK_COLOURS[LinkState.STALE]
+
+
+def test_battery_and_temperature(harness: StationHarness, info: InfoPanel) -> None:
+    assert info.battery.format() == "battery —"
+    harness.connect()
+    harness.emulator.board_temperature_c = 31.25
+    harness.run(1.5)
+    assert info.battery.value() == 80
+    assert info.battery.format() == "battery 80 % · 4.02 V"
+    assert info.temperature.text() == "board 31.2 °C"
+
+
+def test_power_note_names_the_charger_and_usb(harness: StationHarness, info: InfoPanel) -> None:
+    harness.connect()
+    harness.run(1.5)
+    assert info.power_note.text() == ""
+    harness.emulator.charger_connected = True
+    harness.emulator.usb_connected = True
+    harness.run(1.5)
+    assert "charger connected (800 mA)" in info.power_note.text()
+    assert "USB connected" in info.power_note.text()
+    assert info.statuses[0].text() == "blocked: charger connected"
+    harness.emulator.charger_connected = False
+    harness.emulator.usb_connected = False
+    harness.run(1.5)
+    assert info.power_note.text() == ""
+
+
+def test_positions_have_three_decimals(harness: StationHarness, info: InfoPanel) -> None:
+    harness.connect()
+    harness.session.move_absolute(1, 12.3456)
+    harness.run_until(lambda: info.statuses[1].text() == "target reached", timeout=5)
+    assert info.positions[1].text() == "12.346 mm"

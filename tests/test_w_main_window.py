@@ -1,0 +1,368 @@
+"""The operator window: application-wide keys, the runaway-jog guard and the motion lock.
+
+Everything runs against the emulated stage on a manual clock: time moves only
+through the harness, and the assertions read what the operator would see.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QEvent, QSettings, Qt
+from PySide6.QtGui import QFocusEvent, QKeyEvent
+from PySide6.QtWidgets import QApplication, QWidget
+from pytestqt.qtbot import QtBot
+
+from protocol.stage.codec import CommandFrame, CommandId, CommandPacket, decode
+from tests.helpers.harness import StationHarness
+from widgets.main_window import MainWindow
+
+# The offscreen platform warns whenever a shown window's layout sets its size limits.
+
+
+@pytest.fixture
+def harness(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness()
+    yield harness
+    harness.close()
+
+
+def _open_window(
+    qtbot: QtBot, harness: StationHarness, settings: QSettings | None = None
+) -> MainWindow:
+    window = MainWindow(harness.station, settings)
+    qtbot.addWidget(window)
+    window.show()
+    window.activateWindow()
+    qtbot.waitUntil(window.isActiveWindow)
+    return window
+
+
+@pytest.fixture
+def window(qtbot: QtBot, harness: StationHarness) -> MainWindow:
+    window = _open_window(qtbot, harness)
+    harness.connect()
+    # Let the parameter reads of the connection finish: while the session reads, the
+    # echoes carry parameters instead of positions.
+    harness.run(1.5)
+    return window
+
+
+def x_position(harness: StationHarness) -> float:
+    return harness.station.model.axes[0].position
+
+
+def status(window: MainWindow, axis: int) -> str:
+    return window.info_panel.statuses[axis].text()
+
+
+def position(window: MainWindow, axis: int) -> str:
+    return window.info_panel.positions[axis].text()
+
+
+def test_title_names_the_profile(window: MainWindow) -> None:
+    assert window.windowTitle() == "StepDeck — XY positioning stage"
+
+
+def test_holding_right_jogs_x_through_its_ramp(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    qtbot.keyPress(window, Qt.Key.Key_Right)
+    harness.run_until(lambda: status(window, 0) == "accelerating", timeout=1)
+    harness.run_until(lambda: status(window, 0) == "constant speed", timeout=2)
+    assert x_position(harness) > 0
+    assert status(window, 1) != "accelerating"  # Y is left alone
+
+    qtbot.keyRelease(window, Qt.Key.Key_Right)
+    harness.run_until(lambda: status(window, 0) == "decelerating", timeout=1)
+    harness.run_until(lambda: not harness.station.model.axes[0].moving, timeout=2)
+    assert status(window, 0) == "stopped"
+    stopped_at = position(window, 0)
+    harness.run(0.5)
+    assert position(window, 0) == stopped_at
+
+
+def test_right_and_up_jog_diagonally(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    qtbot.keyPress(window, Qt.Key.Key_Right)
+    qtbot.keyPress(window, Qt.Key.Key_Up)
+    harness.run(1.0)
+    x, y = (axis.position for axis in harness.station.model.axes)
+    assert x > 1 and y > 1
+    qtbot.keyRelease(window, Qt.Key.Key_Up)
+    harness.run_until(lambda: not harness.station.model.axes[1].moving, timeout=2)
+    assert harness.station.model.axes[0].moving  # Right is still held
+    qtbot.keyRelease(window, Qt.Key.Key_Right)
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+
+
+def test_a_jog_key_reaches_the_wire_before_any_tick(qtbot: QtBot, harness: StationHarness) -> None:
+    window = _open_window(qtbot, harness)
+    harness.connect()  # no stepping from here on: no periodic frame can be sent
+    sent_before = len(harness.written)
+    qtbot.keyPress(window, Qt.Key.Key_Right)
+    assert len(harness.written) > sent_before
+    used, frame = decode(harness.written[-1])
+    assert used == len(harness.written[-1])
+    assert isinstance(frame, CommandFrame)
+    assert frame.packets[0] == CommandPacket(CommandId.JOG, 1)
+    qtbot.keyRelease(window, Qt.Key.Key_Right)
+    _, frame = decode(harness.written[-1])
+    assert isinstance(frame, CommandFrame)
+    assert frame.packets[0] == CommandPacket(CommandId.JOG, 0)
+
+
+def _jog_right_until_moving(qtbot: QtBot, harness: StationHarness, window: MainWindow) -> None:
+    qtbot.keyPress(window, Qt.Key.Key_Right)
+    harness.run_until(lambda: status(window, 0) == "constant speed", timeout=2)
+
+
+def _assert_comes_to_rest(harness: StationHarness) -> None:
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    rest = harness.emulator.axes[0].position_um
+    harness.run(1.0)
+    assert harness.emulator.axes[0].position_um == rest
+    assert harness.session.jog_vector == (0, 0)
+
+
+def test_window_deactivation_stops_a_held_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _jog_right_until_moving(qtbot, harness, window)
+    QApplication.sendEvent(window, QEvent(QEvent.Type.WindowDeactivate))
+    # The key-up went to another window and never arrives here.
+    _assert_comes_to_rest(harness)
+
+
+def test_focus_leaving_the_window_stops_a_held_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _jog_right_until_moving(qtbot, harness, window)
+    focus_out = QFocusEvent(QEvent.Type.FocusOut, Qt.FocusReason.ActiveWindowFocusReason)
+    QApplication.sendEvent(window, focus_out)
+    _assert_comes_to_rest(harness)
+
+
+def test_another_window_taking_focus_stops_a_held_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _jog_right_until_moving(qtbot, harness, window)
+    other = QWidget()
+    qtbot.addWidget(other)
+    other.show()
+    other.activateWindow()
+    qtbot.waitUntil(other.isActiveWindow)
+    _assert_comes_to_rest(harness)
+
+
+def test_application_going_inactive_stops_a_held_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _jog_right_until_moving(qtbot, harness, window)
+    app = QApplication.instance()
+    assert isinstance(app, QApplication)
+    app.applicationStateChanged.emit(Qt.ApplicationState.ApplicationInactive)
+    _assert_comes_to_rest(harness)
+
+
+def test_focus_moving_inside_the_window_keeps_the_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    window.menu_panel.set_page(1)
+    _jog_right_until_moving(qtbot, harness, window)
+    window.absolute_panel.targets[1].setFocus()
+    qtbot.waitUntil(window.absolute_panel.targets[1].hasFocus)
+    harness.run(0.6)  # longer than the device's jog watchdog
+    assert status(window, 0) == "constant speed"
+    qtbot.keyRelease(window.absolute_panel.targets[1], Qt.Key.Key_Right)
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+
+
+def test_arrows_edit_inside_a_spin_box_instead_of_jogging(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    window.menu_panel.set_page(1)
+    target = window.absolute_panel.targets[0]
+    target.setFocus()
+    qtbot.waitUntil(target.hasFocus)
+    qtbot.keyClick(target, Qt.Key.Key_Up)
+    harness.run(0.5)
+    assert target.value() == pytest.approx(1.0)
+    assert not harness.station.model.any_moving
+    assert harness.session.jog_vector == (0, 0)
+
+
+def test_escape_in_a_spin_box_stops_every_axis(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    window.menu_panel.set_page(1)
+    absolute = window.absolute_panel
+    absolute.targets[0].setValue(40.0)
+    absolute.targets[1].setValue(40.0)
+    qtbot.mouseClick(absolute.go_all_button, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: all(a.moving for a in harness.station.model.axes), timeout=1)
+    absolute.targets[1].setFocus()
+    qtbot.waitUntil(absolute.targets[1].hasFocus)
+
+    qtbot.keyClick(absolute.targets[1], Qt.Key.Key_Escape)
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    assert [status(window, axis) for axis in (0, 1)] == ["stopped", "stopped"]
+    assert x_position(harness) < 30
+    assert absolute.targets[1].value() == pytest.approx(40.0)
+
+
+def test_escape_stops_a_button_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    button = window.manual_panel.jog_buttons[(0, 1)]
+    qtbot.mousePress(button, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: harness.station.model.axes[1].moving, timeout=1)
+    qtbot.keyClick(window, Qt.Key.Key_Escape)
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    qtbot.mouseRelease(button, Qt.MouseButton.LeftButton)
+    assert harness.session.jog_vector == (0, 0)
+
+
+def test_auto_repeat_does_not_restart_a_stopped_jog(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _jog_right_until_moving(qtbot, harness, window)
+    qtbot.keyClick(window, Qt.Key.Key_Escape)
+    harness.run(0.05)
+    # The key is still down: the OS keeps sending auto-repeated presses.
+    repeat = QKeyEvent(
+        QEvent.Type.KeyPress, Qt.Key.Key_Right, Qt.KeyboardModifier.NoModifier, "", True
+    )
+    QApplication.sendEvent(window, repeat)
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    assert harness.session.jog_vector == (0, 0)
+
+
+def _motion_controls(window: MainWindow) -> list[QWidget]:
+    manual, absolute, relative = window.manual_panel, window.absolute_panel, window.relative_panel
+    return [
+        *manual.jog_buttons.values(),
+        *manual.home_buttons,
+        *absolute.go_buttons,
+        absolute.go_all_button,
+        *relative.minus_buttons,
+        *relative.plus_buttons,
+    ]
+
+
+def test_charger_locks_motion_and_says_why(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    assert all(w.isEnabled() for w in _motion_controls(window))
+    assert window.lock_label.isHidden()
+
+    harness.emulator.charger_connected = True
+    harness.run_until(lambda: window.lock_label.isVisible(), timeout=1)
+    assert not any(w.isEnabled() for w in _motion_controls(window))
+    assert "charger" in window.lock_label.text()
+    assert window.lock_label.text().startswith("Motion locked:")
+    assert window.static_panel.stop_button.isEnabled()
+    qtbot.keyPress(window, Qt.Key.Key_Right)
+    harness.run(0.5)
+    assert harness.station.emulator is not None
+    assert harness.emulator.axes[0].position_um == 0
+    qtbot.keyRelease(window, Qt.Key.Key_Right)
+
+    harness.emulator.charger_connected = False
+    harness.run_until(lambda: window.lock_label.isHidden(), timeout=1)
+    assert all(w.isEnabled() for w in _motion_controls(window))
+
+
+def test_sleep_locks_motion_until_wake(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    sleep = window.static_panel.sleep_button
+    assert sleep.text() == "Sleep"
+    qtbot.mouseClick(sleep, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: window.lock_label.isVisible(), timeout=1)
+    assert harness.emulator.sleeping
+    assert "sleeping" in window.lock_label.text()
+    assert not any(w.isEnabled() for w in _motion_controls(window))
+    assert sleep.text() == "Wake" and sleep.isEnabled()
+
+    qtbot.mouseClick(sleep, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: window.lock_label.isHidden(), timeout=1)
+    assert not harness.emulator.sleeping
+    assert sleep.text() == "Sleep"
+    assert all(w.isEnabled() for w in _motion_controls(window))
+
+
+def test_disconnected_window_is_locked(qtbot: QtBot, harness: StationHarness) -> None:
+    window = _open_window(qtbot, harness)
+    assert window.lock_label.text() == "Motion locked: not connected"
+    assert not any(w.isEnabled() for w in _motion_controls(window))
+    assert "disconnected" in window.link_status.text()
+
+
+def test_status_bar_shows_link_messages_and_rejects(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    assert "connected" in window.link_status.text()
+    assert window.rejected_label.text() == "rejected frames: 0"
+    harness.station.model.message.emit("hello operator")
+    assert window.message_label.text() == "hello operator"
+    assert harness.station.link is not None
+    harness.station.link.dataReceived.emit(b"<garbage\n")
+    assert window.rejected_label.text() == "rejected frames: 1"
+
+
+def test_geometry_and_page_survive_a_restart(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    first = _open_window(qtbot, harness, settings=settings)
+    first.resize(first.minimumWidth() + 21, first.minimumHeight() + 13)
+    size = first.size()
+    first.menu_panel.set_page(2)
+    first.close()
+
+    again = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    second = _open_window(qtbot, harness, settings=again)
+    assert second.size() == size
+    assert second.stack.currentWidget() is second.relative_panel
+
+
+def test_closing_removes_the_key_filter_and_stops_the_station(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    qtbot.keyPress(window.manual_panel, Qt.Key.Key_Right)
+    assert window.jog.is_held(Qt.Key.Key_Right)
+    window.close()
+    assert not window.jog.is_held(Qt.Key.Key_Right)
+    assert harness.station.session is None
+
+    QApplication.sendEvent(
+        window.manual_panel,
+        QKeyEvent(QEvent.Type.KeyPress, Qt.Key.Key_Left, Qt.KeyboardModifier.NoModifier),
+    )
+    assert not window.jog.is_held(Qt.Key.Key_Left)
+
+
+def test_f1_lists_the_keys(qtbot: QtBot, window: MainWindow) -> None:
+    dialog = window.show_shortcuts()
+    qtbot.waitExposed(dialog)
+    text = " ".join(label.text() for label in dialog.findChildren(type(window.lock_label)))
+    assert "Esc" in text and "Shift" in text
+    dialog.close()
+
+
+def test_shift_held_jogs_at_the_other_speed(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    qtbot.keyPress(window, Qt.Key.Key_Shift)
+    qtbot.keyPress(window, Qt.Key.Key_Right, Qt.KeyboardModifier.ShiftModifier)
+    harness.run(0.2)
+    assert not harness.emulator.speed_is_fast(0)
+    assert window.static_panel.shift_note.text() == "Shift held: slow"
+    qtbot.keyRelease(window, Qt.Key.Key_Right, Qt.KeyboardModifier.ShiftModifier)
+    qtbot.keyRelease(window, Qt.Key.Key_Shift)
+    harness.run(0.2)
+    assert harness.emulator.speed_is_fast(0)

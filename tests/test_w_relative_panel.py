@@ -1,0 +1,75 @@
+"""Relative panel: stepping an axis by its increment, forward and back."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import NamedTuple
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QVBoxLayout, QWidget
+from pytestqt.qtbot import QtBot
+
+from tests.helpers.harness import StationHarness
+from widgets.info_panel import InfoPanel
+from widgets.relative_panel import RelativePanel
+
+
+class Panels(NamedTuple):
+    panel: RelativePanel
+    info: InfoPanel
+    host: QWidget  # keeps the panels alive
+
+
+# The offscreen platform warns whenever a shown window's layout sets its size limits.
+
+
+@pytest.fixture
+def harness(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness()
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def panels(qtbot: QtBot, harness: StationHarness) -> Panels:
+    info = InfoPanel(harness.station.model)
+    panel = RelativePanel(harness.station)
+    host = QWidget()
+    layout = QVBoxLayout(host)
+    layout.addWidget(info)
+    layout.addWidget(panel)
+    qtbot.addWidget(host)
+    host.show()
+    harness.connect()
+    harness.run(1.5)
+    return Panels(panel, info, host)
+
+
+def _step_and_settle(
+    qtbot: QtBot, harness: StationHarness, info: InfoPanel, button: QWidget
+) -> None:
+    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: harness.station.model.axes[0].moving, timeout=1)
+    harness.run_until(lambda: info.statuses[0].text() == "target reached", timeout=5)
+
+
+def test_plus_one_and_a_half_twice_gives_three(
+    qtbot: QtBot, harness: StationHarness, panels: Panels
+) -> None:
+    panel, info, _ = panels
+    panel.increments[0].setValue(1.5)
+    _step_and_settle(qtbot, harness, info, panel.plus_buttons[0])
+    assert info.positions[0].text() == "1.500 mm"
+    _step_and_settle(qtbot, harness, info, panel.plus_buttons[0])
+    assert info.positions[0].text() == "3.000 mm"
+    assert info.positions[1].text() == "0.000 mm"
+
+
+def test_minus_moves_back(qtbot: QtBot, harness: StationHarness, panels: Panels) -> None:
+    panel, info, _ = panels
+    panel.increments[0].setValue(4.0)
+    _step_and_settle(qtbot, harness, info, panel.plus_buttons[0])
+    panel.increments[0].setValue(1.25)
+    _step_and_settle(qtbot, harness, info, panel.minus_buttons[0])
+    assert info.positions[0].text() == "2.750 mm"

@@ -1,0 +1,66 @@
+"""Absolute panel: a target per axis and Go, the way the stage's own tool positions it.
+
+Spin boxes are limited to the axis travel from the profile, so the operator
+cannot type a target the device would only clamp; the device still has the
+last word on its soft limits.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import QDoubleSpinBox, QGridLayout, QLabel, QPushButton, QWidget
+
+from app.station import Station
+from widgets.style import monospace_font
+
+
+class AbsolutePanel(QWidget):
+    """Target per axis in the axis unit, Go per axis and Go all."""
+
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self.targets: list[QDoubleSpinBox] = []
+        self.go_buttons: list[QPushButton] = []
+
+        grid = QGridLayout(self)
+        grid.setHorizontalSpacing(10)
+        grid.setVerticalSpacing(8)
+        grid.addWidget(QLabel("<b>Move to</b>"), 0, 0, 1, 3)
+        for index, axis in enumerate(station.profile.axes):
+            target = QDoubleSpinBox()
+            target.setObjectName(f"target_{axis.name}")
+            target.setRange(0.0, axis.travel)
+            target.setDecimals(3)
+            target.setSingleStep(1.0)
+            target.setSuffix(f" {axis.unit}")
+            target.setFont(monospace_font())
+            target.setMinimumWidth(130)
+            target.setToolTip(f"{axis.name} target, 0…{axis.travel:g} {axis.unit} (Esc stops)")
+            go = QPushButton(f"Go {axis.name}")
+            go.setToolTip(f"Move {axis.name} to the target")
+            go.clicked.connect(lambda _=False, i=index: self.go(i))
+            grid.addWidget(QLabel(axis.name), index + 1, 0)
+            grid.addWidget(target, index + 1, 1)
+            grid.addWidget(go, index + 1, 2)
+            self.targets.append(target)
+            self.go_buttons.append(go)
+        self.go_all_button = QPushButton("Go all")
+        self.go_all_button.setToolTip("Move every axis to its target at once")
+        self.go_all_button.clicked.connect(self.go_all)
+        grid.addWidget(self.go_all_button, len(self.targets) + 1, 2)
+        grid.setColumnStretch(3, 1)
+        grid.setRowStretch(len(self.targets) + 2, 1)
+
+    def go(self, axis: int) -> bool:
+        """Send axis ``axis`` to its target; False when the session refused (locked)."""
+        session = self._station.session
+        return session is not None and session.move_absolute(axis, self.targets[axis].value())
+
+    def go_all(self) -> None:
+        for axis in range(len(self.targets)):
+            if not self.go(axis):
+                break
+
+    def set_motion_enabled(self, enabled: bool) -> None:
+        for button in (*self.go_buttons, self.go_all_button):
+            button.setEnabled(enabled)

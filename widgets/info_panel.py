@@ -1,0 +1,172 @@
+"""The always-visible info panel: where the machine is and whether it can be trusted.
+
+Everything here is read from the machine model on its change signals, so the
+panel shows exactly what the device last reported: positions and statuses
+per axis, the link state as a coloured lamp, the battery, the board
+temperature, and why the machine may refuse to move (charger, USB).
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QFrame,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QProgressBar,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.machine import LinkState, MachineModel
+from protocol.stage.codec import DeviceFlag
+from widgets.style import monospace_font
+
+LINK_COLOURS: dict[LinkState, str] = {
+    LinkState.CONNECTED: "#2e9e44",
+    LinkState.CONNECTING: "#e0a000",
+    LinkState.STALE: "#e0a000",
+    LinkState.LOST: "#d03030",
+    LinkState.DISCONNECTED: "#8a8a8a",
+}
+
+#: Status texts worth a colour; the rest stay in the normal text colour.
+_STATUS_COLOURS: dict[str, str] = {
+    "accelerating": "#1f6fc0",
+    "constant speed": "#1f6fc0",
+    "decelerating": "#1f6fc0",
+    "homing": "#1f6fc0",
+    "target reached": "#2e9e44",
+    "end switch hit": "#c06000",
+    "driver fault": "#d03030",
+}
+
+
+class InfoPanel(QFrame):
+    """Positions, statuses, link lamp, battery gauge and temperature, from the model."""
+
+    def __init__(self, model: MachineModel, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._model = model
+        self.setFrameShape(QFrame.Shape.StyledPanel)
+        self.positions: list[QLabel] = []
+        self.statuses: list[QLabel] = []
+
+        layout = QHBoxLayout(self)
+        layout.setContentsMargins(12, 8, 12, 8)
+        layout.setSpacing(24)
+        layout.addLayout(self._build_axes())
+        layout.addStretch(1)
+        layout.addLayout(self._build_device())
+
+        model.axisChanged.connect(self._show_axis)
+        model.linkStateChanged.connect(self._show_link)
+        model.telemetryChanged.connect(self._show_telemetry)
+        for index in range(len(model.axes)):
+            self._show_axis(index)
+        self._show_link()
+        self._show_telemetry()
+
+    # --- building ------------------------------------------------------------
+
+    def _build_axes(self) -> QGridLayout:
+        grid = QGridLayout()
+        grid.setHorizontalSpacing(14)
+        grid.setVerticalSpacing(4)
+        for row, axis in enumerate(self._model.axes):
+            name = QLabel(axis.name)
+            name.setFont(monospace_font(4, bold=True))
+            position = QLabel()
+            position.setObjectName(f"position_{axis.name}")
+            position.setFont(monospace_font(4, bold=True))
+            position.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+            position.setMinimumWidth(position.fontMetrics().horizontalAdvance("-0000.000 mm"))
+            status = QLabel()
+            status.setObjectName(f"status_{axis.name}")
+            status.setMinimumWidth(status.fontMetrics().horizontalAdvance("blocked: charger conn"))
+            grid.addWidget(name, row, 0)
+            grid.addWidget(position, row, 1)
+            grid.addWidget(status, row, 2)
+            self.positions.append(position)
+            self.statuses.append(status)
+        return grid
+
+    def _build_device(self) -> QVBoxLayout:
+        column = QVBoxLayout()
+        column.setSpacing(4)
+
+        link_row = QHBoxLayout()
+        self.link_lamp = QLabel()
+        self.link_lamp.setFixedSize(14, 14)
+        self.link_text = QLabel()
+        link_row.addWidget(self.link_lamp)
+        link_row.addWidget(self.link_text, 1)
+        column.addLayout(link_row)
+
+        self.battery = QProgressBar()
+        self.battery.setRange(0, 100)
+        self.battery.setMinimumWidth(200)
+        self.battery.setToolTip("Battery charge and voltage")
+        column.addWidget(self.battery)
+
+        self.temperature = QLabel()
+        self.power_note = QLabel()
+        self.power_note.setStyleSheet("color: #c06000;")
+        column.addWidget(self.temperature)
+        column.addWidget(self.power_note)
+        return column
+
+    # --- showing -------------------------------------------------------------
+
+    def _show_axis(self, index: int) -> None:
+        axis = self._model.axes[index]
+        self.positions[index].setText(f"{axis.position:.3f} {axis.unit}")
+        status = self.statuses[index]
+        status.setText(axis.status_text)
+        colour = _STATUS_COLOURS.get(axis.status_text)
+        if axis.status_text.startswith("blocked") or axis.status_text == "sleeping":
+            colour = "#c06000"
+        status.setStyleSheet(f"color: {colour};" if colour else "")
+
+    def _show_link(self, _state: object = None) -> None:
+        state = self._model.link_state
+        colour = LINK_COLOURS[state]
+        self.link_lamp.setStyleSheet(
+            f"background: {colour}; border-radius: 7px; border: 1px solid #00000040;"
+        )
+        detail = f" — {self._model.link_detail}" if self._model.link_detail else ""
+        self.link_text.setText(f"{state.value}{detail}")
+        self.link_lamp.setToolTip(f"Link {state.value}")
+
+    def _show_telemetry(self, _key: str = "") -> None:
+        telemetry = self._model.telemetry
+        charge = telemetry.get("battery_charge")
+        voltage = telemetry.get("battery_voltage")
+        if charge is None:
+            self.battery.setValue(0)
+            self.battery.setFormat("battery —")
+        else:
+            self.battery.setValue(round(charge))
+            volts = f" · {voltage:.2f} V" if voltage is not None else ""
+            self.battery.setFormat(f"battery {charge:.0f} %{volts}")
+        temperature = telemetry.get("board_temperature")
+        self.temperature.setText(
+            "board —" if temperature is None else f"board {temperature:.1f} °C"
+        )
+        self.power_note.setText(self._power_note())
+
+    def _power_note(self) -> str:
+        """Charger, USB and low battery: the device's reasons to refuse motion."""
+        flags = DeviceFlag(int(self._model.telemetry.get("device_flags", 0)))
+        notes = []
+        if DeviceFlag.CHARGER in flags:
+            current = self._model.telemetry.get("charging_current")
+            notes.append(
+                "charger connected" + (f" ({current:.0f} mA)" if current is not None else "")
+            )
+        if DeviceFlag.USB in flags:
+            notes.append("USB connected")
+        if DeviceFlag.LOW_BATTERY in flags:
+            notes.append("battery low")
+        return "⚡ " + ", ".join(notes) if notes else ""

@@ -1,0 +1,167 @@
+"""The operator's jog input: held arrow keys and held buttons, merged into one jog vector.
+
+The stage is level-triggered, so what matters is the set of things the
+operator is holding *right now*.  Keys and on-screen buttons are tracked here
+together, so releasing a button cannot cancel a key that is still held (and
+the other way round), and every change reaches the session at once instead
+of waiting for the next periodic frame.  ``release_all`` is the one way out
+for every "the operator let go without us seeing it" case (focus lost,
+window deactivated, motion locked).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Hashable, Sequence
+
+from PySide6.QtCore import QObject, Qt, Signal
+
+from app.station import Station
+
+#: Key → (axis index, direction).  PageUp/PageDown only act on a machine with a Z axis.
+JOG_KEYS: dict[int, tuple[int, int]] = {
+    Qt.Key.Key_Right: (0, +1),
+    Qt.Key.Key_Left: (0, -1),
+    Qt.Key.Key_Up: (1, +1),
+    Qt.Key.Key_Down: (1, -1),
+    Qt.Key.Key_PageUp: (2, +1),
+    Qt.Key.Key_PageDown: (2, -1),
+}
+
+
+class JogInput(QObject):
+    """Tracks what is held and keeps ``session.set_jog`` in step with it."""
+
+    #: The jog vector (one -1/0/+1 per axis) after every change.
+    vectorChanged = Signal(tuple)
+    shiftChanged = Signal(bool)
+
+    def __init__(self, station: Station, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._axes = len(station.model.axes)
+        self._keys: set[int] = set()
+        self._buttons: dict[Hashable, tuple[int, ...]] = {}
+        self._shift = False
+        self._enabled = True
+        self._sent: tuple[int, ...] = (0,) * self._axes
+        # A new session starts with no jog; forget what the old one was told.
+        station.sessionChanged.connect(self._forget)
+
+    # --- queries -------------------------------------------------------------
+
+    @property
+    def vector(self) -> tuple[int, ...]:
+        """The jog vector as last handed to the session."""
+        return self._sent
+
+    @property
+    def enabled(self) -> bool:
+        return self._enabled
+
+    def is_jog_key(self, key: int) -> bool:
+        """Whether ``key`` jogs an axis this machine has."""
+        return key in JOG_KEYS and JOG_KEYS[key][0] < self._axes
+
+    def is_held(self, key: int) -> bool:
+        return key in self._keys
+
+    # --- input ---------------------------------------------------------------
+
+    def key_press(self, key: int) -> bool:
+        """A jog key went down; returns whether the key is a jog key at all."""
+        if not self.is_jog_key(key):
+            return False
+        if self._enabled and key not in self._keys:
+            self._keys.add(key)
+            self._push()
+        return True
+
+    def key_release(self, key: int) -> bool:
+        """A key came up; returns whether it was a held jog key."""
+        if key not in self._keys:
+            return False
+        self._keys.discard(key)
+        self._push()
+        return True
+
+    def button_press(self, source: Hashable, directions: Sequence[int]) -> None:
+        """An on-screen jog button went down with its own direction per axis."""
+        if not self._enabled:
+            return
+        padded = (*directions, *(0,) * self._axes)[: self._axes]
+        self._buttons[source] = tuple(padded)
+        self._push()
+
+    def button_release(self, source: Hashable) -> None:
+        if self._buttons.pop(source, None) is not None:
+            self._push()
+
+    def set_shift(self, held: bool) -> None:
+        """Shift held jogs at the other speed; the session switches at once."""
+        if held == self._shift:
+            return
+        self._shift = held
+        session = self._station.session
+        if session is not None:
+            session.set_shift(held)
+        self.shiftChanged.emit(held)
+
+    # --- letting go ----------------------------------------------------------
+
+    def release_all(self) -> None:
+        """Forget everything held and stop every jog (the runaway-jog guard)."""
+        self._keys.clear()
+        self._buttons.clear()
+        self.set_shift(False)
+        session = self._station.session
+        if session is not None:
+            # Always told, even if we think nothing is held: the session ignores a no-op.
+            session.set_jog((0,) * self._axes)
+        self._set_sent((0,) * self._axes)
+
+    def stop_all(self) -> None:
+        """The Stop button and Esc: forget held input and STOP every axis, moves included."""
+        self._keys.clear()
+        self._buttons.clear()
+        self._set_sent((0,) * self._axes)
+        session = self._station.session
+        if session is not None:
+            session.stop_all()
+
+    def set_enabled(self, enabled: bool) -> None:
+        """Motion lock: while disabled nothing new is held and what was held is let go."""
+        self._enabled = enabled
+        if not enabled:
+            self.release_all()
+
+    # --- internals -----------------------------------------------------------
+
+    def _compute(self) -> tuple[int, ...]:
+        totals = [0] * self._axes
+        for key in self._keys:
+            axis, direction = JOG_KEYS[key]
+            totals[axis] += direction
+        for directions in self._buttons.values():
+            for axis, direction in enumerate(directions):
+                totals[axis] += direction
+        return tuple(max(-1, min(1, t)) for t in totals)
+
+    def _push(self) -> None:
+        wanted = self._compute()
+        if wanted == self._sent:
+            return
+        session = self._station.session
+        if session is not None:
+            session.set_jog(wanted)
+        self._set_sent(wanted)
+
+    def _set_sent(self, vector: tuple[int, ...]) -> None:
+        if vector != self._sent:
+            self._sent = vector
+            self.vectorChanged.emit(vector)
+
+    def _forget(self) -> None:
+        self._keys.clear()
+        self._buttons.clear()
+        self._shift = False
+        self._set_sent((0,) * self._axes)

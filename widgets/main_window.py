@@ -1,0 +1,351 @@
+"""The operator window, laid out like the stage's original tool.
+
+Info panel on top (always visible), a column of page buttons beside the
+dynamic panel, the static panel (speed, Sleep, Stop) on the right and a
+status bar.  Besides layout, the window owns the two safety rules that no
+single panel can enforce:
+
+* keys are routed application-wide, so arrows jog and Esc stops whatever
+  widget has focus — except that arrows keep editing inside text fields;
+* whenever the window may stop seeing key releases (deactivated, focus gone,
+  application inactive) every jog is released, so a jog can never run away
+  because its key-up went to another window.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, Qt
+from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
+from PySide6.QtWidgets import (
+    QAbstractSpinBox,
+    QApplication,
+    QDialog,
+    QDialogButtonBox,
+    QFrame,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QMainWindow,
+    QPlainTextEdit,
+    QScrollArea,
+    QStackedWidget,
+    QTextEdit,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.machine import LinkState
+from app.station import Station
+from widgets.absolute_panel import AbsolutePanel
+from widgets.dynamics_panel import DynamicsPanel
+from widgets.info_panel import InfoPanel
+from widgets.jog_input import JogInput
+from widgets.manual_panel import ManualPanel
+from widgets.menu_panel import MenuPanel
+from widgets.relative_panel import RelativePanel
+from widgets.static_panel import StaticPanel
+
+#: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
+TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
+
+SHORTCUTS: tuple[tuple[str, str], ...] = (
+    ("← →", "Jog X while held"),
+    ("↑ ↓", "Jog Y while held (two arrows at once = diagonal)"),
+    ("PageUp / PageDown", "Jog Z while held, on machines with a Z axis"),
+    ("Shift (held)", "Jog and move at the other speed"),
+    ("Esc", "Stop everything, from anywhere in the window"),
+    ("Alt+M / A / R / D", "Manual / Absolute / Relative / Dynamics page"),
+    ("F1", "This list"),
+)
+
+_SETTINGS_GROUP = "main_window"
+
+
+def _is_text_editing(widget: QWidget | None) -> bool:
+    """Whether ``widget`` or one of its ancestors edits text (a spin box's line edit…)."""
+    while widget is not None:
+        if isinstance(widget, TEXT_EDITING):
+            return True
+        widget = widget.parentWidget()
+    return False
+
+
+class MainWindow(QMainWindow):
+    """The operator window over one :class:`Station`.
+
+    ``settings`` (optional) keeps the window geometry and the page shown between runs.
+    """
+
+    def __init__(
+        self,
+        station: Station,
+        settings: QSettings | None = None,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.station = station
+        self.model = station.model
+        self._settings = settings
+        self._filtering = False
+        self.setWindowTitle(f"StepDeck — {station.profile.title}")
+
+        self.jog = JogInput(station, self)
+        self.info_panel = InfoPanel(self.model)
+        self.lock_label = QLabel()
+        self.lock_label.setObjectName("motion_lock")
+        self.lock_label.setStyleSheet(
+            "background: #fff3cd; color: #7a5200; border: 1px solid #e0c060;"
+            " border-radius: 4px; padding: 4px 8px; font-weight: bold;"
+        )
+        self.stack = QStackedWidget()
+        self.stack.setFrameShape(QFrame.Shape.StyledPanel)
+        self.menu_panel = MenuPanel(self.stack)
+        self.manual_panel = ManualPanel(station, self.jog)
+        self.absolute_panel = AbsolutePanel(station)
+        self.relative_panel = RelativePanel(station)
+        self.dynamics_panel = DynamicsPanel(station)
+        self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
+        self.menu_panel.add_page("&Absolute", self.absolute_panel, "Move to a target (Alt+A)")
+        self.menu_panel.add_page("&Relative", self.relative_panel, "Move by an increment (Alt+R)")
+        # The widest page scrolls rather than forcing its width on the whole window.
+        dynamics_page = QScrollArea()
+        dynamics_page.setWidget(self.dynamics_panel)
+        dynamics_page.setWidgetResizable(True)
+        dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
+        self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
+        self.static_panel = StaticPanel(station, self.jog)
+        self._build_layout()
+        self._build_status_bar()
+        self._build_menus()
+
+        self.model.lockChanged.connect(self._update_lock)
+        self.model.linkStateChanged.connect(self._show_link_status)
+        self.model.message.connect(self._show_message)
+        station.sessionChanged.connect(self._attach_session)
+        self._attach_session()
+        self._update_lock()
+        self._show_link_status()
+        self._restore_settings()
+        self._install_filter()
+
+    # --- building ------------------------------------------------------------
+
+    def _build_layout(self) -> None:
+        middle = QHBoxLayout()
+        middle.setSpacing(10)
+        middle.addWidget(self.menu_panel)
+        middle.addWidget(self.stack, 1)
+        middle.addWidget(self.static_panel)
+        central = QWidget()
+        layout = QVBoxLayout(central)
+        layout.setContentsMargins(10, 10, 10, 6)
+        layout.setSpacing(8)
+        layout.addWidget(self.info_panel)
+        layout.addWidget(self.lock_label)
+        layout.addLayout(middle, 1)
+        self.setCentralWidget(central)
+
+    def _build_status_bar(self) -> None:
+        self.link_status = QLabel()
+        self.message_label = QLabel()
+        self.rejected_label = QLabel()
+        self.rejected_label.setToolTip("Frames from the device that failed to decode")
+        bar = self.statusBar()
+        bar.addWidget(self.link_status)
+        bar.addWidget(self.message_label, 1)
+        bar.addPermanentWidget(self.rejected_label)
+        self._show_rejected()
+
+    def _build_menus(self) -> None:
+        help_menu = self.menuBar().addMenu("&Help")
+        self.shortcuts_action = QAction("&Keyboard shortcuts", self)
+        self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
+        self.shortcuts_action.triggered.connect(self.show_shortcuts)
+        help_menu.addAction(self.shortcuts_action)
+        self.addAction(self.shortcuts_action)
+        self._help: QDialog | None = None
+
+    # --- public --------------------------------------------------------------
+
+    def show_shortcuts(self) -> QDialog:
+        """Show (non-modal) the list of keys; returns the dialog."""
+        if self._help is None:
+            rows = "".join(
+                f"<tr><td style='padding-right:16px'><b>{keys}</b></td><td>{what}</td></tr>"
+                for keys, what in SHORTCUTS
+            )
+            text = QLabel(
+                f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
+                "has focus: there they keep editing. Esc always stops.</p>"
+            )
+            text.setWordWrap(True)
+            buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+            self._help = QDialog(self)
+            self._help.setWindowTitle("StepDeck — keyboard shortcuts")
+            buttons.rejected.connect(self._help.close)
+            layout = QVBoxLayout(self._help)
+            layout.addWidget(text)
+            layout.addWidget(buttons)
+        self._help.show()
+        self._help.activateWindow()
+        return self._help
+
+    def stop_all(self) -> None:
+        """What Esc and the Stop buttons do: forget held input and stop every axis."""
+        self.jog.stop_all()
+
+    # --- key routing and the runaway-jog guard -------------------------------
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        kind = event.type()
+        if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease):
+            if isinstance(event, QKeyEvent) and self._owns(watched):
+                assert isinstance(watched, QWidget)
+                return self._route_key(watched, event)
+        elif kind == QEvent.Type.WindowDeactivate:
+            if watched is self:
+                self.jog.release_all()
+        elif kind == QEvent.Type.FocusOut:
+            if isinstance(event, QFocusEvent) and self._owns(watched) and self._focus_left(event):
+                self.jog.release_all()
+        elif kind == QEvent.Type.ApplicationDeactivate:
+            self.jog.release_all()
+        return False
+
+    def _owns(self, watched: QObject) -> bool:
+        return isinstance(watched, QWidget) and watched.window() is self
+
+    def _focus_left(self, event: QFocusEvent) -> bool:
+        """Whether keyboard focus left this window (not just moved inside it)."""
+        if event.reason() in (
+            Qt.FocusReason.ActiveWindowFocusReason,
+            Qt.FocusReason.PopupFocusReason,
+        ):
+            return True
+        now = QApplication.focusWidget()
+        return now is None or now.window() is not self
+
+    def _route_key(self, receiver: QWidget, event: QKeyEvent) -> bool:
+        """Handle jog keys and Esc; returns True when the event is consumed."""
+        key = event.key()
+        press = event.type() == QEvent.Type.KeyPress
+        if key == Qt.Key.Key_Escape:
+            if press and not event.isAutoRepeat():
+                self.jog.stop_all()
+            return True
+        if key == Qt.Key.Key_Shift:
+            if not event.isAutoRepeat():
+                self.jog.set_shift(press)
+            return False
+        if not self.jog.is_jog_key(key):
+            return False
+        if event.isAutoRepeat():
+            # The key is already held: swallow the repeats so they do not reach a widget.
+            return self.jog.is_held(key)
+        if not press:
+            return self.jog.key_release(key)
+        if _is_text_editing(receiver) or _is_text_editing(QApplication.focusWidget()):
+            return False
+        self.jog.set_shift(bool(event.modifiers() & Qt.KeyboardModifier.ShiftModifier))
+        self.jog.key_press(key)
+        return True
+
+    def _on_application_state(self, state: Qt.ApplicationState) -> None:
+        if state != Qt.ApplicationState.ApplicationActive:
+            self.jog.release_all()
+
+    def _install_filter(self) -> None:
+        app = QApplication.instance()
+        if self._filtering or not isinstance(app, QApplication):
+            return
+        app.installEventFilter(self)
+        app.applicationStateChanged.connect(self._on_application_state)
+        self._filtering = True
+
+    def _remove_filter(self) -> None:
+        app = QApplication.instance()
+        if not self._filtering or not isinstance(app, QApplication):
+            return
+        app.removeEventFilter(self)
+        app.applicationStateChanged.disconnect(self._on_application_state)
+        self._filtering = False
+
+    # --- model → window ------------------------------------------------------
+
+    def _update_lock(self) -> None:
+        """Disable every motion control while the model says motion is refused, and say why."""
+        reason = self.model.motion_lock_reason()
+        enabled = reason is None
+        self.jog.set_enabled(enabled)
+        for panel in (self.manual_panel, self.absolute_panel, self.relative_panel):
+            panel.set_motion_enabled(enabled)
+        self.lock_label.setText(f"Motion locked: {reason}")
+        self.lock_label.setVisible(not enabled)
+
+    def _show_link_status(self, _state: object = None) -> None:
+        state = self.model.link_state
+        detail = f" — {self.model.link_detail}" if self.model.link_detail else ""
+        session = self.station.session
+        period = (
+            f" · {session.period_ms} ms"
+            if session is not None and state in (LinkState.CONNECTED, LinkState.STALE)
+            else ""
+        )
+        self.link_status.setText(f"Link {state.value}{detail}{period}")
+
+    def _show_message(self, text: str) -> None:
+        self.message_label.setText(text)
+        self.message_label.setToolTip(text)
+
+    def _show_rejected(self, *_args: object) -> None:
+        self.rejected_label.setText(f"rejected frames: {self.model.rejected_frames}")
+
+    def _attach_session(self) -> None:
+        # MachineModel.rejected_frames has no change signal: refresh on every received frame.
+        session = self.station.session
+        if session is not None:
+            session.frameReceived.connect(self._show_rejected)
+        self._show_rejected()
+        self._show_link_status()
+
+    # --- window lifecycle ----------------------------------------------------
+
+    def _restore_settings(self) -> None:
+        if self._settings is None:
+            self.resize(980, 640)
+            return
+        self._settings.beginGroup(_SETTINGS_GROUP)
+        geometry = self._settings.value("geometry")
+        state = self._settings.value("state")
+        page = self._settings.value("page", 0, type=int)
+        self._settings.endGroup()
+        if not (isinstance(geometry, QByteArray) and self.restoreGeometry(geometry)):
+            self.resize(980, 640)
+        if isinstance(state, QByteArray):
+            self.restoreState(state)
+        self.menu_panel.set_page(page if isinstance(page, int) else 0)
+
+    def save_settings(self) -> None:
+        """Store geometry, window state and the page shown (also done on close)."""
+        if self._settings is None:
+            return
+        self._settings.beginGroup(_SETTINGS_GROUP)
+        self._settings.setValue("geometry", self.saveGeometry())
+        self._settings.setValue("state", self.saveState())
+        self._settings.setValue("page", self.menu_panel.current)
+        self._settings.endGroup()
+        self._settings.sync()
+
+    def showEvent(self, event: QShowEvent) -> None:
+        self._install_filter()
+        super().showEvent(event)
+
+    def closeEvent(self, event: QCloseEvent) -> None:
+        """Closing the operator window stops the machine and closes the link."""
+        self.save_settings()
+        self._remove_filter()
+        self.jog.release_all()
+        if self._help is not None:
+            self._help.close()
+        self.station.shutdown()
+        super().closeEvent(event)

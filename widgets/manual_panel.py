@@ -1,0 +1,111 @@
+"""Manual panel: press-and-hold jog buttons in a 3x3 cross, Stop in the middle, Home per axis.
+
+A jog lasts exactly as long as the button is held: press hands the button's
+direction to the shared :class:`JogInput`, release (or Qt's cancel, e.g.
+dragging off the button) takes it back.  Going through the shared input keeps
+buttons and arrow keys from cancelling each other.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QSize, Qt
+from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QPushButton, QVBoxLayout, QWidget
+
+from app.station import Station
+from widgets.jog_input import JogInput
+from widgets.style import MINUS
+
+#: (row, column) in the cross → (dx, dy, label, key hint)
+_CROSS: dict[tuple[int, int], tuple[int, int, str, str]] = {
+    (0, 0): (-1, +1, "↖", "← + ↑"),
+    (0, 1): (0, +1, "Y+ ↑", "↑"),
+    (0, 2): (+1, +1, "↗", "→ + ↑"),
+    (1, 0): (-1, 0, f"← X{MINUS}", "←"),
+    (1, 2): (+1, 0, "X+ →", "→"),
+    (2, 0): (-1, -1, "↙", "← + ↓"),
+    (2, 1): (0, -1, f"Y{MINUS} ↓", "↓"),
+    (2, 2): (+1, -1, "↘", "→ + ↓"),
+}
+
+
+_BUTTON_SIZE = QSize(96, 64)
+
+
+def _describe(dx: int, dy: int) -> str:
+    parts = [f"{'+' if d > 0 else MINUS}{name}" for name, d in (("X", dx), ("Y", dy)) if d]
+    return " ".join(parts)
+
+
+class ManualPanel(QWidget):
+    """Hold-to-jog buttons and Home; all motion goes through ``jog`` or the session."""
+
+    def __init__(self, station: Station, jog: JogInput, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._jog = jog
+        self.jog_buttons: dict[tuple[int, int], QPushButton] = {}
+        self.home_buttons: list[QPushButton] = []
+
+        grid = QGridLayout()
+        grid.setSpacing(6)
+        for (row, column), (dx, dy, label, keys) in _CROSS.items():
+            button = self._jog_button(label, (dx, dy))
+            button.setToolTip(
+                f"Hold to jog {_describe(dx, dy)}  (keys: {keys}; Shift = other speed)"
+            )
+            grid.addWidget(button, row, column)
+            self.jog_buttons[(dx, dy)] = button
+
+        self.stop_button = QPushButton("■ Stop")
+        self.stop_button.setToolTip("Stop every axis (Esc)")
+        self.stop_button.setFixedSize(_BUTTON_SIZE)
+        self.stop_button.setStyleSheet("font-weight: bold; color: #b02020;")
+        self.stop_button.clicked.connect(jog.stop_all)
+        grid.addWidget(self.stop_button, 1, 1)
+
+        homes = QHBoxLayout()
+        homes.setSpacing(6)
+        if station.profile.capabilities.home:
+            for index, axis in enumerate(station.profile.axes):
+                button = QPushButton(f"Home {axis.name}")
+                button.setToolTip(f"Seek the {axis.name} home switch and set {axis.name} = 0")
+                button.clicked.connect(lambda _=False, i=index: self._home(i))
+                homes.addWidget(button)
+                self.home_buttons.append(button)
+        homes.addStretch(1)
+
+        cross = QHBoxLayout()
+        cross.addLayout(grid)
+        cross.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(12, 12, 12, 12)
+        layout.addLayout(cross)
+        layout.addSpacing(12)
+        layout.addLayout(homes)
+        layout.addStretch(1)
+
+    def _jog_button(self, label: str, directions: tuple[int, int]) -> QPushButton:
+        button = QPushButton(label)
+        button.setFixedSize(_BUTTON_SIZE)
+        font = button.font()
+        font.setPointSizeF(font.pointSizeF() * 1.25)
+        button.setFont(font)
+        # A hold-to-move button must not take keyboard focus: Space would "hold" it
+        # and arrows pressed afterwards would land on it instead of jogging.
+        button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        button.setAutoRepeat(False)
+        # pressed/released also fire when the pointer leaves and re-enters while held,
+        # and released fires when the button is disabled while down.
+        button.pressed.connect(lambda: self._jog.button_press(button, directions))
+        button.released.connect(lambda: self._jog.button_release(button))
+        return button
+
+    def _home(self, axis: int) -> None:
+        session = self._station.session
+        if session is not None:
+            session.home(axis)
+
+    def set_motion_enabled(self, enabled: bool) -> None:
+        """Jog and Home follow the motion lock; Stop never does."""
+        for button in (*self.jog_buttons.values(), *self.home_buttons):
+            button.setEnabled(enabled)
