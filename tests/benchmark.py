@@ -1,0 +1,157 @@
+"""StepDeck's performance figures: ``python tests/benchmark.py`` prints them.
+
+Not part of the test run (pytest does not collect it): timings depend on the
+machine, so they are measured and printed here, never asserted in tests.
+Each later capability adds its figures as another function in ``BENCHMARKS``.
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+from protocol.clock import ManualClock  # noqa: E402
+from protocol.stage.codec import (  # noqa: E402
+    AxisStatus,
+    CommandFrame,
+    CommandId,
+    CommandPacket,
+    EchoFrame,
+    EchoPacket,
+    StageDecoder,
+    encode_command,
+    encode_echo,
+)
+
+
+def _percentile(samples: list[float], q: float) -> float:
+    ordered = sorted(samples)
+    return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))]
+
+
+def bench_decode() -> list[str]:
+    echo = encode_echo(
+        EchoFrame((EchoPacket(0, AxisStatus.CONSTANT_SPEED, 12345), EchoPacket(0, 0, -42)), 5, 1234)
+    )
+    stream = echo * 20_000
+    chunks = [stream[i : i + 20] for i in range(0, len(stream), 20)]  # BLE-sized pieces
+    decoder = StageDecoder()
+    start = time.perf_counter()
+    for chunk in chunks:
+        decoder.feed(chunk)
+    elapsed = time.perf_counter() - start
+    assert decoder.frames == 20_000 and decoder.rejected == 0
+    return [f"stage frames decoded per second (20-byte chunks): {decoder.frames / elapsed:,.0f}"]
+
+
+def bench_emulated_move() -> list[str]:
+    from protocol.emulator.stage_firmware import StageFirmware
+
+    clock = ManualClock()
+    firmware = StageFirmware(clock)
+    replies: list[bytes] = []
+    firmware.set_output(replies.append)
+    move = CommandFrame(
+        (CommandPacket(CommandId.MOVE_ABS, 20_000), CommandPacket(CommandId.MOVE_ABS, 20_000))
+    )
+    nop = encode_command(CommandFrame((CommandPacket(CommandId.NOP),) * 2))
+    firmware.receive(encode_command(move))
+    start = time.perf_counter()
+    emulated = 0.0
+    while emulated < 1.0 or any(axis.moving for axis in firmware.axes):
+        firmware.receive(nop)  # the host's 100 ms frames keep the data session alive
+        clock.advance(0.1)
+        firmware.run_until(clock.now())
+        emulated += 0.1
+    elapsed = time.perf_counter() - start
+    return [
+        f"two-axis 20 mm move: {emulated:.1f} emulated s in {elapsed * 1000:.1f} ms wall "
+        f"= {emulated / elapsed:,.0f} emulated s per wall s"
+    ]
+
+
+def bench_key_to_frame() -> list[str]:
+    from PySide6.QtCore import QEvent, Qt
+    from PySide6.QtGui import QKeyEvent
+    from PySide6.QtWidgets import QApplication
+
+    from tests.helpers.harness import StationHarness
+    from widgets.main_window import MainWindow
+
+    app = QApplication.instance() or QApplication([])
+    harness = StationHarness()
+    harness.connect()
+    window = MainWindow(harness.station)
+    window.show()
+    harness.run(1.0)
+    sent_at: list[float] = []
+    assert harness.station.link is not None
+    harness.station.link.dataSent.connect(lambda _data: sent_at.append(time.perf_counter()))
+    latencies: list[float] = []
+    for i in range(1000):
+        key = Qt.Key.Key_Right if i % 2 == 0 else Qt.Key.Key_Left
+        for kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease):
+            sent_at.clear()
+            start = time.perf_counter()
+            QApplication.sendEvent(window, QKeyEvent(kind, key, Qt.KeyboardModifier.NoModifier))
+            if kind is QEvent.Type.KeyPress:
+                assert sent_at, "key press did not reach the transport"
+                latencies.append(sent_at[0] - start)
+        harness.run(0.01)
+    window.close()
+    harness.close()
+    app.processEvents()
+    p50 = statistics.median(latencies) * 1000
+    p99 = _percentile(latencies, 0.99) * 1000
+    return [f"key press -> frame handed to the transport: p50 {p50:.3f} ms, p99 {p99:.3f} ms"]
+
+
+def bench_launch() -> list[str]:
+    import subprocess
+
+    code = (
+        "import time,sys; t=time.perf_counter();"
+        "from PySide6.QtWidgets import QApplication; app=QApplication([]);"
+        "from app.profiles import load_profile; from app.station import Station;"
+        "from widgets.main_window import MainWindow;"
+        "s=Station(load_profile('xy-stage')); w=MainWindow(s); w.show(); app.processEvents();"
+        "print(time.perf_counter()-t); s.shutdown()"
+    )
+    env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
+    start = time.perf_counter()
+    result = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, check=True
+    )
+    total = time.perf_counter() - start
+    inside = float(result.stdout.strip().splitlines()[-1])
+    return [
+        f"launch to window shown: {total * 1000:.0f} ms from process start "
+        f"({inside * 1000:.0f} ms after the interpreter was up)"
+    ]
+
+
+BENCHMARKS: list[Callable[[], list[str]]] = [
+    bench_decode,
+    bench_emulated_move,
+    bench_key_to_frame,
+    bench_launch,
+]
+
+
+def main() -> None:
+    for bench in BENCHMARKS:
+        for line in bench():
+            print(line, flush=True)
+
+
+if __name__ == "__main__":
+    main()
