@@ -50,9 +50,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         profile = load_profile("xy-stage")  # a stale setting must not stop the launch
     settings.profile = profile.name
     station = Station(profile)
-    period = args.period or settings.period_ms
-    if period:
-        station.set_period_ms(max(20, min(1000, period)))
+    if args.period:
+        settings.period_ms = max(20, min(1000, args.period))
+    if settings.period_ms:
+        station.set_period_ms(settings.period_ms)
     from widgets.main_window import MainWindow
 
     window = MainWindow(station, settings.store)
