@@ -10,9 +10,16 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from PySide6.QtWidgets import QApplication, QMessageBox
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
 
-from app.profiles import ProfileError, available_profiles, load_profile
+from app.profiles import (
+    DEFAULT_PROFILE,
+    MachineProfile,
+    ProfileError,
+    available_profiles,
+    load_profile,
+)
 from app.settings import StationSettings, default_settings
 from app.station import Station
 
@@ -28,10 +35,76 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         "--period", type=int, metavar="MS", help="command frame period, 20…1000 ms (default 100)"
     )
-    parser.add_argument(
-        "--emulator", action="store_true", help="connect to the built-in emulator (default)"
+    link = parser.add_mutually_exclusive_group()
+    link.add_argument(
+        "--emulator", action="store_true", help="connect to the built-in emulator (the default)"
     )
+    link.add_argument("--port", metavar="DEVICE", help="connect over this serial port")
+    link.add_argument(
+        "--ble",
+        nargs="?",
+        const="",
+        metavar="ADDRESS",
+        help="connect over Bluetooth LE (to ADDRESS, or the strongest stage found)",
+    )
+    parser.add_argument("--baud", type=int, help="serial baud rate (default: the profile's)")
     return parser
+
+
+def connect_as_asked(station: Station, args: argparse.Namespace, settings: StationSettings) -> None:
+    """Open the link the command line names; bare, the built-in emulator."""
+    if args.port:
+        settings.transport, settings.device = "serial", args.port
+        if args.baud:
+            settings.baud = args.baud
+        station.connect_serial(args.port, args.baud)
+    elif args.ble is not None:
+        settings.transport = "ble"
+        if args.ble:
+            settings.device = args.ble
+        station.connect_ble(args.ble or None)
+    else:
+        station.connect_emulator()
+
+
+class Launcher:
+    """Builds the station and its window, and rebuilds both when the operator switches machine."""
+
+    def __init__(self, store: QSettings, period_ms: int | None) -> None:
+        self.store = store
+        self.settings = StationSettings(store)
+        self.period_ms = period_ms
+        self.station: Station | None = None
+        self.window: QMainWindow | None = None
+
+    def open(self, profile: MachineProfile) -> Station:
+        from widgets.main_window import MainWindow
+
+        self.settings.profile = profile.name
+        station = Station(profile)
+        if self.period_ms:
+            station.set_period_ms(self.period_ms)
+        window = MainWindow(station, self.store)
+        window.profileRequested.connect(self.switch)
+        window.show()
+        self.station, self.window = station, window
+        return station
+
+    def switch(self, name: str) -> None:
+        try:
+            profile = load_profile(name)
+        except ProfileError as exc:
+            QMessageBox.warning(self.window, "StepDeck", str(exc))
+            return
+        if self.window is not None:
+            self.window.close()  # stops the machine and closes its link
+        station = self.open(profile)
+        station.connect_emulator()
+
+    def shutdown(self) -> None:
+        if self.station is not None:
+            self.station.shutdown()
+        self.settings.sync()
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -40,31 +113,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     assert isinstance(app, QApplication)
     app.setApplicationName("StepDeck")
     app.setOrganizationName("StepDeck")
-    settings = StationSettings(default_settings())
+    store = default_settings()
+    settings = StationSettings(store)
     try:
         profile = load_profile(args.profile or settings.profile)
     except ProfileError as exc:
         if args.profile:
             print(f"stepdeck: {exc}", file=sys.stderr)
             return 2
-        profile = load_profile("xy-stage")  # a stale setting must not stop the launch
-    settings.profile = profile.name
-    station = Station(profile)
+        profile = load_profile(DEFAULT_PROFILE)  # a stale setting must not stop the launch
     if args.period:
         settings.period_ms = max(20, min(1000, args.period))
-    if settings.period_ms:
-        station.set_period_ms(settings.period_ms)
-    from widgets.main_window import MainWindow
-
-    window = MainWindow(station, settings.store)
-    window.show()
+    launcher = Launcher(store, settings.period_ms)
+    station = launcher.open(profile)
     try:
-        station.connect_emulator()
-    except Exception as exc:  # a broken emulator must still leave a usable window
-        QMessageBox.critical(window, "StepDeck", f"Could not start the emulator: {exc}")
+        connect_as_asked(station, args, settings)
+    except Exception as exc:  # whatever the link does, the window stays usable
+        QMessageBox.critical(launcher.window, "StepDeck", f"Could not connect: {exc}")
     code = app.exec()
-    station.shutdown()
-    settings.sync()
+    launcher.shutdown()
     return code
 
 

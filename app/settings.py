@@ -17,13 +17,36 @@ def default_settings() -> QSettings:
     return QSettings(ORGANISATION, APPLICATION)
 
 
+class _MemoryStore:
+    """Stands in for QSettings when a window is built without one (tests, benchmarks)."""
+
+    def __init__(self) -> None:
+        self._values: dict[str, object] = {}
+
+    def value(self, key: str, default: object = None) -> object:
+        return self._values.get(key, default)
+
+    def setValue(self, key: str, value: object) -> None:
+        self._values[key] = value
+
+    def sync(self) -> None:
+        pass
+
+
 class StationSettings:
-    def __init__(self, store: QSettings) -> None:
-        self.store = store
+    def __init__(self, store: QSettings | None) -> None:
+        self.store: QSettings | _MemoryStore = store if store is not None else _MemoryStore()
 
     def _text(self, key: str, default: str) -> str:
         value = self.store.value(key, default)
         return str(value) if value is not None else default
+
+    def _int(self, key: str) -> int | None:
+        value = self.store.value(key)
+        try:
+            return int(str(value)) if value is not None else None
+        except ValueError:
+            return None
 
     @property
     def profile(self) -> str:
@@ -35,11 +58,7 @@ class StationSettings:
 
     @property
     def period_ms(self) -> int | None:
-        value = self.store.value("station/period_ms")
-        try:
-            return int(str(value)) if value is not None else None
-        except ValueError:
-            return None
+        return self._int("station/period_ms")
 
     @period_ms.setter
     def period_ms(self, value: int) -> None:
@@ -61,6 +80,14 @@ class StationSettings:
     @device.setter
     def device(self, value: str) -> None:
         self.store.setValue("link/device", value)
+
+    @property
+    def baud(self) -> int | None:
+        return self._int("link/baud")
+
+    @baud.setter
+    def baud(self, value: int) -> None:
+        self.store.setValue("link/baud", int(value))
 
     def sync(self) -> None:
         self.store.sync()

@@ -4,12 +4,18 @@ Widgets get a Station and talk to ``station.session`` for intents and to
 ``station.model`` for state; they never see a transport.  The built-in
 emulator is created here, behind the loopback transport, so the rest of the
 app is the same whether the device is real or emulated.
+
+The station also owns reconnection: when a link is lost (the transport
+reports an error, or the device falls silent for 2 s) it closes the
+transport and opens it again with back-off, on its own clock, so the
+operator never has to, and the session re-reads the device when it is back.
 """
 
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QObject, QTimer, Signal
 
+from app.discovery import ble_uuids_for
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.profiles import MachineProfile
@@ -17,7 +23,12 @@ from app.stage_session import StageSession
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.stage_firmware import StageConfig, StageFirmware
 from protocol.transport.base import Transport
+from protocol.transport.ble import BleLoop, BleTransport
 from protocol.transport.loopback import LoopbackTransport
+from protocol.transport.serial_link import SerialTransport
+
+RECONNECT_DELAYS = (0.5, 1.0, 2.0, 4.0)
+POLL_MS = 100
 
 
 def stage_config_for(profile: MachineProfile) -> StageConfig:
@@ -47,16 +58,63 @@ class Station(QObject):
         self.session: StageSession | None = None
         self.emulator: StageFirmware | None = None
         self.period_ms = profile.period_ms
+        self.reconnect_delays: tuple[float, ...] = RECONNECT_DELAYS
+        self._attempt = 0
+        self._reconnect_at: float | None = None
+        self._closing = False
+        self._ble_loop: BleLoop | None = None
+        self._poll = QTimer(self)
+        self._poll.setInterval(POLL_MS)
+        self._poll.timeout.connect(self.poll)
 
     @property
     def loopback(self) -> LoopbackTransport | None:
         transport = self.link.transport if self.link else None
         return transport if isinstance(transport, LoopbackTransport) else None
 
+    @property
+    def device_id(self) -> str | None:
+        """What to remember as "the last used device": port path or BLE address."""
+        transport = self.link.transport if self.link else None
+        if isinstance(transport, BleTransport):
+            return transport.device.address if transport.device else transport.address
+        if isinstance(transport, SerialTransport):
+            return transport.port
+        return None
+
+    @property
+    def reconnect_due(self) -> float | None:
+        """Clock time of the next reconnection attempt, None when none is planned."""
+        return self._reconnect_at
+
+    # --- choosing a link -----------------------------------------------------
+
     def connect_emulator(self) -> None:
         """Connect to a fresh in-process emulated device on this station's clock."""
         self.emulator = StageFirmware(self.clock, stage_config_for(self.profile))
         self.connect_transport(LoopbackTransport(self.emulator, self.clock, realtime=self.realtime))
+
+    def connect_serial(self, port: str, baudrate: int | None = None) -> None:
+        self.emulator = None
+        self.connect_transport(SerialTransport(port, baudrate or self.profile.link.baud))
+
+    def connect_ble(self, address: str | None) -> None:
+        """Connect to the stage at ``address`` (the last used one), or the strongest found."""
+        self.emulator = None
+        self.connect_transport(
+            BleTransport(
+                address,
+                ble_uuids_for(self.profile),
+                name_prefix=self.profile.link.ble_name_prefix,
+                loop=self.ble_loop(),
+            )
+        )
+
+    def ble_loop(self) -> BleLoop:
+        """The asyncio loop thread BLE runs on, started on first use and stopped at shutdown."""
+        if self._ble_loop is None:
+            self._ble_loop = BleLoop()
+        return self._ble_loop
 
     def connect_transport(self, transport: Transport) -> None:
         self.close_link()
@@ -65,15 +123,28 @@ class Station(QObject):
             self.model, self.link, self.clock, period_ms=self.period_ms, autotick=self.realtime
         )
         self.session.setParent(self)
+        self.link.disconnected.connect(self._on_disconnected)
+        self.link.connected.connect(self._on_connected)
+        self.session.linkLost.connect(self._on_silence)
         self.sessionChanged.emit()
         self.model.set_link_state(LinkState.CONNECTING, transport.describe())
+        if self.realtime:
+            self._poll.start()
         self.link.open()
 
     def close_link(self) -> None:
+        """Close on the operator's word: no reconnection follows."""
+        self._reconnect_at = None
+        self._attempt = 0
+        self._poll.stop()
         if self.session is not None:
             self.session.shutdown()
         if self.link is not None:
-            self.link.close()
+            self._closing = True
+            try:
+                self.link.close()
+            finally:
+                self._closing = False
             self.link.deleteLater()
         if self.session is not None:
             self.session.deleteLater()
@@ -87,7 +158,50 @@ class Station(QObject):
             self.session.set_period_ms(period_ms)
 
     def shutdown(self) -> None:
-        """Stop motion and close the link; called when the window closes."""
+        """Stop motion, close the link and end the BLE thread; called when the window closes."""
         if self.session is not None and self.link is not None and self.link.is_open:
             self.session.stop_all()
         self.close_link()
+        if self._ble_loop is not None:
+            self._ble_loop.stop()
+            self._ble_loop = None
+
+    # --- losing and regaining the link ---------------------------------------
+
+    def poll(self) -> None:
+        """Start a due reconnection attempt (a timer in real time, the test clock otherwise)."""
+        if self._reconnect_at is None or self.link is None:
+            return
+        if self.clock.now() < self._reconnect_at:
+            return
+        self._reconnect_at = None
+        self.model.set_link_state(LinkState.LOST, f"reconnecting to {self.link.describe()}…")
+        self.link.open()
+
+    def _on_connected(self) -> None:
+        self._attempt = 0
+        self._reconnect_at = None
+
+    def _on_disconnected(self, reason: object) -> None:
+        if self._closing or reason is None:
+            return
+        self._schedule_reconnect(str(reason))
+
+    def _on_silence(self) -> None:
+        """The device stopped answering: reopen the transport rather than wait on it."""
+        if self.link is None:
+            return
+        detail = self.model.link_detail
+        self._closing = True
+        try:
+            self.link.close()
+        finally:
+            self._closing = False
+        self.model.set_link_state(LinkState.LOST, detail)
+        self._schedule_reconnect(detail)
+
+    def _schedule_reconnect(self, reason: str) -> None:
+        delay = self.reconnect_delays[min(self._attempt, len(self.reconnect_delays) - 1)]
+        self._attempt += 1
+        self._reconnect_at = self.clock.now() + delay
+        self.model.set_link_state(LinkState.LOST, f"{reason} — retrying in {delay:g} s")

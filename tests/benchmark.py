@@ -139,11 +139,150 @@ def bench_launch() -> list[str]:
     ]
 
 
+def _drain_frames(fd: int, frames: int, timeout: float = 1.0) -> None:
+    """Read from ``fd`` until ``frames`` whole lines have come, so each sample starts clean."""
+    import select
+
+    seen = 0
+    while seen < frames and select.select([fd], [], [], timeout)[0]:
+        seen += os.read(fd, 4096).count(b"\n")
+
+
+def _drain_quiet(fd: int, quiet: float = 0.3) -> None:
+    """Read from ``fd`` until it has been silent for ``quiet`` seconds."""
+    import select
+
+    while select.select([fd], [], [], quiet)[0]:
+        os.read(fd, 4096)
+
+
+def bench_key_to_pty() -> list[str]:
+    """A jog intent through the session and the serial transport to the device's side of a pty.
+
+    Station-less: a Link and a StageSession over a SerialTransport on the pty's
+    slave; the "device" is this function, watching the master with select().
+    """
+    import select
+    import tty
+
+    from PySide6.QtWidgets import QApplication
+
+    from app.link import Link
+    from app.machine import LinkState, MachineModel
+    from app.profiles import load_profile
+    from app.stage_session import StageSession
+    from protocol.clock import MonotonicClock
+    from protocol.transport.serial_link import SerialTransport
+
+    app = QApplication.instance() or QApplication([])
+    master, slave = os.openpty()
+    tty.setraw(slave)
+    transport = SerialTransport(os.ttyname(slave))
+    model = MachineModel(load_profile("xy-stage"))
+    link = Link(transport)
+    session = StageSession(model, link, MonotonicClock(), autotick=False)
+    try:
+        link.open()
+        deadline = time.monotonic() + 5.0
+        while model.link_state is not LinkState.CONNECTED and time.monotonic() < deadline:
+            app.processEvents()
+        assert model.link_state is LinkState.CONNECTED, model.link_detail
+        _drain_quiet(master)  # the connect burst: speed select and the first reads
+        latencies: list[float] = []
+        for i in range(1000):
+            start = time.perf_counter()
+            session.set_jog([1 if i % 2 == 0 else -1, 0])
+            readable = select.select([master], [], [], 1.0)[0]
+            latencies.append(time.perf_counter() - start)
+            assert readable, "the frame never reached the pty"
+            _drain_frames(master, 1)
+            session.set_jog([0, 0])
+            _drain_frames(master, 1)
+    finally:
+        session.shutdown()
+        transport.close()
+        app.processEvents()
+        os.close(master)
+        os.close(slave)
+    p50 = statistics.median(latencies) * 1000
+    p99 = _percentile(latencies, 0.99) * 1000
+    return [
+        "key press -> bytes readable on the device side of a pty "
+        f"(session.set_jog -> SerialTransport -> select on the master): "
+        f"p50 {p50:.3f} ms, p99 {p99:.3f} ms"
+    ]
+
+
+def bench_echo_round_trip() -> list[str]:
+    """A command frame to the emulator process over a pty and its echo decoded back.
+
+    No Qt: the transport's listener decodes on the reader thread, so the figure
+    is the link and the emulator's control cycle (5 ms), not the GUI's event loop.
+    """
+    import selectors
+    import subprocess
+    import threading
+
+    from protocol.transport.serial_link import SerialTransport
+
+    class EchoWaiter:
+        def __init__(self) -> None:
+            self.decoder = StageDecoder(2)
+            self.made = threading.Event()
+            self.echo = threading.Event()
+
+        def connection_made(self) -> None:
+            self.made.set()
+
+        def data_received(self, data: bytes) -> None:
+            if any(isinstance(frame, EchoFrame) for frame in self.decoder.feed(data)):
+                self.echo.set()
+
+        def connection_lost(self, reason: str | None) -> None:
+            if reason is not None:
+                print(f"echo round-trip: link lost: {reason}", file=sys.stderr)
+
+    command = [sys.executable, "-m", "protocol.emulator", "--profile", "xy-stage", "--pty"]
+    nop = encode_command(CommandFrame((CommandPacket(CommandId.NOP),) * 2))
+    with subprocess.Popen(
+        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL
+    ) as emulator:
+        assert emulator.stdout is not None
+        with selectors.DefaultSelector() as selector:
+            selector.register(emulator.stdout, selectors.EVENT_READ)
+            assert selector.select(15.0), "the emulator printed no device path"
+        transport = SerialTransport(emulator.stdout.readline().decode().strip())
+        waiter = EchoWaiter()
+        transport.set_listener(waiter)
+        round_trips: list[float] = []
+        try:
+            transport.open()
+            assert waiter.made.wait(5.0), "could not open the emulator's pty"
+            for _ in range(500):
+                waiter.echo.clear()
+                start = time.perf_counter()
+                transport.write(nop)
+                assert waiter.echo.wait(1.0), "no echo within 1 s"
+                round_trips.append(time.perf_counter() - start)
+        finally:
+            transport.close()
+            emulator.terminate()
+            emulator.wait(timeout=5)
+    p50 = statistics.median(round_trips) * 1000
+    p99 = _percentile(round_trips, 0.99) * 1000
+    return [
+        "echo round-trip over a pty to the emulator process (NOP frame written -> echo decoded, "
+        f"5 ms control cycle): p50 {p50:.2f} ms, p99 {p99:.2f} ms over 500"
+    ]
+
+
 BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_decode,
     bench_emulated_move,
     bench_key_to_frame,
     bench_launch,
+    bench_key_to_pty,
+    bench_echo_round_trip,
 ]
 
 

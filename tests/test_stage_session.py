@@ -137,7 +137,9 @@ def test_telemetry_reaches_the_model_in_display_units(harness: StationHarness) -
     model = harness.station.model
     assert model.telemetry["board_temperature"] == pytest.approx(31.25)
     assert 3.3 <= model.telemetry["battery_voltage"] <= 4.2
-    assert model.telemetry["battery_charge"] == pytest.approx(harness.emulator.battery_charge, abs=1)
+    assert model.telemetry["battery_charge"] == pytest.approx(
+        harness.emulator.battery_charge, abs=1
+    )
 
 
 def test_silence_makes_the_link_stale_then_lost_and_replies_restore_it(
@@ -151,8 +153,10 @@ def test_silence_makes_the_link_stale_then_lost_and_replies_restore_it(
     lost_after = harness.run_until(lambda: model.link_state is LinkState.LOST, timeout=3)
     assert 2.0 <= stale_after + lost_after <= 2.15
     assert model.motion_lock_reason() == "link lost"
+    # The station reopens the link with back-off; once replies flow again it stays up.
     harness.loopback.set_manipulator(None)
-    harness.run(0.3)
+    harness.run_until(lambda: model.link_state is LinkState.CONNECTED, timeout=5)
+    harness.run(3.0)
     assert model.link_state is LinkState.CONNECTED
 
 
@@ -215,5 +219,7 @@ def test_motion_is_refused_by_the_station_while_blocked(harness: StationHarness)
     before = len(harness.written)
     assert harness.session.move_absolute(0, 10.0) is False
     assert all(
-        p.command != CommandId.MOVE_ABS for f in _frames(harness.written[before:]) for p in f.packets
+        p.command != CommandId.MOVE_ABS
+        for f in _frames(harness.written[before:])
+        for p in f.packets
     )

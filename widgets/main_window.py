@@ -14,7 +14,7 @@ single panel can enforce:
 
 from __future__ import annotations
 
-from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, Qt
+from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, Qt, Signal
 from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -35,8 +35,10 @@ from PySide6.QtWidgets import (
 )
 
 from app.machine import LinkState
+from app.settings import StationSettings
 from app.station import Station
 from widgets.absolute_panel import AbsolutePanel
+from widgets.connection_panel import ConnectionPanel
 from widgets.dynamics_panel import DynamicsPanel
 from widgets.info_panel import InfoPanel
 from widgets.jog_input import JogInput
@@ -54,7 +56,7 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("PageUp / PageDown", "Jog Z while held, on machines with a Z axis"),
     ("Shift (held)", "Jog and move at the other speed"),
     ("Esc", "Stop everything, from anywhere in the window"),
-    ("Alt+M / A / R / D", "Manual / Absolute / Relative / Dynamics page"),
+    ("Alt+M / A / R / D / L", "Manual / Absolute / Relative / Dynamics / Link page"),
     ("F1", "This list"),
 )
 
@@ -75,6 +77,9 @@ class MainWindow(QMainWindow):
 
     ``settings`` (optional) keeps the window geometry and the page shown between runs.
     """
+
+    #: The operator chose another machine profile; the launcher rebuilds station and window.
+    profileRequested = Signal(str)
 
     def __init__(
         self,
@@ -113,6 +118,11 @@ class MainWindow(QMainWindow):
         dynamics_page.setWidgetResizable(True)
         dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
         self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
+        self.connection_panel = ConnectionPanel(station, StationSettings(settings))
+        self.connection_panel.profileRequested.connect(self.profileRequested)
+        self.menu_panel.add_page(
+            "&Link", self.connection_panel, "Connect: emulator, serial port or BLE (Alt+L)"
+        )
         self.static_panel = StaticPanel(station, self.jog)
         self._build_layout()
         self._build_status_bar()

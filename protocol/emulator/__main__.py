@@ -5,6 +5,11 @@ device path, through the same serial transport and line discipline a USB or
 SPP adapter would use, with no board attached::
 
     python -m protocol.emulator --profile xy-stage --pty
+
+A pty gets a new number every time, so ``--link PATH`` also puts a symlink at
+a fixed path (as socat's ``link=`` does): an emulator restarted on the same
+link looks to the station like a cable plugged back in, and the station's
+reconnection finds it there.
 """
 
 from __future__ import annotations
@@ -17,6 +22,7 @@ import sys
 import threading
 import tty
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from types import FrameType
 
 from protocol.clock import Clock, MonotonicClock
@@ -84,7 +90,40 @@ def serve(
         firmware.set_output(None)
 
 
-def run_on_pty(config: StageConfig) -> int:
+class LinkError(Exception):
+    """The ``--link`` path cannot be used; the message says why."""
+
+
+def make_link(link: Path, device: str) -> None:
+    """Point ``link`` at ``device``.
+
+    A symlink already there is taken to be left by an emulator that died
+    (SIGKILL leaves no chance to remove it) and is replaced; anything else is
+    somebody's file and is never overwritten.  The new link is renamed into
+    place, so a station retrying the path never catches it missing.
+    """
+    if link.exists() and not link.is_symlink():
+        raise LinkError(f"{link} exists and is not a symlink; not replacing it")
+    staging = link.with_name(f".{link.name}.{os.getpid()}.new")
+    try:
+        staging.unlink(missing_ok=True)
+        staging.symlink_to(device)
+        staging.replace(link)
+    except OSError as exc:
+        staging.unlink(missing_ok=True)
+        raise LinkError(f"cannot create the link {link}: {exc.strerror or exc}") from exc
+
+
+def remove_link(link: Path, device: str) -> None:
+    """Remove ``link`` if it still points at ``device`` (a newer emulator may own it now)."""
+    try:
+        if link.is_symlink() and os.readlink(link) == device:
+            link.unlink()
+    except OSError:
+        pass
+
+
+def run_on_pty(config: StageConfig, link: Path | None = None) -> int:
     stop = threading.Event()
 
     def request_stop(signum: int, frame: FrameType | None) -> None:
@@ -94,14 +133,28 @@ def run_on_pty(config: StageConfig) -> int:
     signal.signal(signal.SIGINT, request_stop)
     master, slave, path = open_pty()
     try:
+        if link is not None:
+            make_link(link, path)
+    except LinkError as exc:
+        _close_all(master, slave)
+        print(f"stepdeck-emulator: {exc}", file=sys.stderr)
+        return 2
+    try:
         print(path, flush=True)
-        print(f"stage emulator on {path}; Ctrl+C stops it", file=sys.stderr, flush=True)
+        where = f"{path} (linked from {link})" if link is not None else path
+        print(f"stage emulator on {where}; Ctrl+C stops it", file=sys.stderr, flush=True)
         clock = MonotonicClock()
         serve(StageFirmware(clock, config), master, clock, stop.is_set)
     finally:
-        os.close(master)
-        os.close(slave)
+        if link is not None:
+            remove_link(link, path)
+        _close_all(master, slave)
     return 0
+
+
+def _close_all(*fds: int) -> None:
+    for fd in fds:
+        os.close(fd)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -113,15 +166,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument(
         "--pty", action="store_true", help="serve the device on a new pseudo-terminal"
     )
+    parser.add_argument(
+        "--link",
+        type=Path,
+        metavar="PATH",
+        help=(
+            "also make PATH a symlink to the pty (implies --pty) and remove it on exit, "
+            "so a restarted emulator keeps the same device path; a symlink left at PATH "
+            "is replaced, a regular file never"
+        ),
+    )
     args = parser.parse_args(argv)
-    if not args.pty:
+    if not args.pty and args.link is None:
         parser.print_usage(sys.stderr)
         print(
             "stepdeck-emulator: nothing to serve on; try --pty and open the printed path",
             file=sys.stderr,
         )
         return 2
-    return run_on_pty(PROFILES[args.profile]())
+    return run_on_pty(PROFILES[args.profile](), args.link)
 
 
 if __name__ == "__main__":

@@ -56,6 +56,7 @@ class StationHarness:
         if self.station.session is not None and self.clock.now() >= self._next_tick - 1e-9:
             self._next_tick += self.session.period_ms / 1000
             self.session.tick()
+        self.station.poll()
         if self.station.loopback is not None:
             self.station.loopback.pump()
         QApplication.processEvents()

@@ -1,0 +1,238 @@
+"""Connection panel: which machine, over which link, and the link's state.
+
+It remembers the last choice (transport, port, baud, BLE address) so the
+next start offers the same device first, and it never blocks: listing ports
+is instant, and a BLE scan reports back through a signal.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtWidgets import (
+    QButtonGroup,
+    QComboBox,
+    QFormLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QRadioButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.discovery import BAUD_RATES, BleDevice, BleScan, serial_ports
+from app.machine import LinkState
+from app.profiles import available_profiles
+from app.settings import StationSettings
+from app.station import Station
+
+TRANSPORTS = (("emulator", "Built-in emulator"), ("serial", "Serial port"), ("ble", "Bluetooth LE"))
+
+
+class ConnectionPanel(QWidget):
+    profileRequested = Signal(str)
+
+    def __init__(
+        self, station: Station, settings: StationSettings, parent: QWidget | None = None
+    ) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._settings = settings
+        self._scan: BleScan | None = None
+
+        self.profile_combo = QComboBox()
+        for name in available_profiles():
+            self.profile_combo.addItem(name, name)
+        self.profile_combo.setCurrentIndex(self.profile_combo.findData(station.profile.name))
+        self.profile_combo.setToolTip("Switching machine closes this link and opens the new one")
+        self.profile_combo.activated.connect(self._profile_chosen)
+        self.transport_buttons: dict[str, QRadioButton] = {}
+        self._transport_group = QButtonGroup(self)
+        transport_row = QHBoxLayout()
+        for key, title in TRANSPORTS:
+            button = QRadioButton(title)
+            self.transport_buttons[key] = button
+            self._transport_group.addButton(button)
+            transport_row.addWidget(button)
+            button.toggled.connect(self._show_transport)
+        transport_row.addStretch(1)
+
+        self.port_combo = QComboBox()
+        self.port_combo.setEditable(True)  # a port that is not plugged in yet can be typed
+        self.port_combo.setMinimumWidth(280)
+        self.refresh_button = QPushButton("Refresh")
+        self.refresh_button.clicked.connect(self.refresh_ports)
+        self.baud_combo = QComboBox()
+        for baud in BAUD_RATES:
+            self.baud_combo.addItem(str(baud), baud)
+        port_row = QHBoxLayout()
+        port_row.addWidget(self.port_combo, 1)
+        port_row.addWidget(self.refresh_button)
+        self.serial_box = QGroupBox("Serial")
+        serial_form = QFormLayout(self.serial_box)
+        serial_form.addRow("Port", port_row)
+        serial_form.addRow("Baud rate", self.baud_combo)
+
+        self.scan_button = QPushButton("Scan")
+        self.scan_button.clicked.connect(self.start_scan)
+        self.ble_list = QListWidget()
+        self.ble_list.setMinimumHeight(90)
+        self.ble_note = QLabel("")
+        self.ble_note.setWordWrap(True)
+        self.ble_box = QGroupBox("Bluetooth LE")
+        ble_layout = QVBoxLayout(self.ble_box)
+        scan_row = QHBoxLayout()
+        scan_row.addWidget(self.scan_button)
+        scan_row.addWidget(self.ble_note, 1)
+        ble_layout.addLayout(scan_row)
+        ble_layout.addWidget(self.ble_list)
+
+        self.connect_button = QPushButton("Connect")
+        self.connect_button.clicked.connect(self.connect_selected)
+        self.disconnect_button = QPushButton("Disconnect")
+        self.disconnect_button.clicked.connect(self._station.close_link)
+        buttons = QHBoxLayout()
+        buttons.addWidget(self.connect_button)
+        buttons.addWidget(self.disconnect_button)
+        buttons.addStretch(1)
+        self.state_label = QLabel()
+        self.state_label.setWordWrap(True)
+        self.state_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+
+        layout = QVBoxLayout(self)
+        form = QFormLayout()
+        form.addRow("Machine", self.profile_combo)
+        form.addRow("Link", transport_row)
+        layout.addLayout(form)
+        layout.addWidget(self.serial_box)
+        layout.addWidget(self.ble_box)
+        layout.addLayout(buttons)
+        layout.addWidget(self.state_label)
+        layout.addStretch(1)
+
+        station.model.linkStateChanged.connect(self._show_state)
+        self._restore()
+        self._show_state()
+
+    # --- choices -------------------------------------------------------------
+
+    def _profile_chosen(self, _index: int) -> None:
+        name = str(self.profile_combo.currentData())
+        if name != self._station.profile.name:
+            self.profileRequested.emit(name)
+
+    @property
+    def transport(self) -> str:
+        for key, button in self.transport_buttons.items():
+            if button.isChecked():
+                return key
+        return "emulator"
+
+    def select_transport(self, key: str) -> None:
+        self.transport_buttons.get(key, self.transport_buttons["emulator"]).setChecked(True)
+
+    def refresh_ports(self) -> None:
+        current = self.port_combo.currentText()
+        self.port_combo.clear()
+        for port in serial_ports():
+            self.port_combo.addItem(f"{port.device} — {port.description}", port.device)
+        self._select_port(current or self._settings.device)
+
+    def _select_port(self, device: str) -> None:
+        index = self.port_combo.findData(device)
+        if index >= 0:
+            self.port_combo.setCurrentIndex(index)
+        elif device:
+            self.port_combo.setEditText(device)
+
+    def selected_port(self) -> str:
+        index = self.port_combo.currentIndex()
+        if index >= 0 and self.port_combo.itemText(index) == self.port_combo.currentText():
+            return str(self.port_combo.itemData(index))
+        return self.port_combo.currentText().split(" — ")[0].strip()
+
+    def start_scan(self) -> None:
+        if self._scan is None:
+            self._scan = BleScan(self._station.ble_loop(), self._station.profile, self)
+            self._scan.finished.connect(self.show_devices)
+            self._scan.failed.connect(self._scan_failed)
+        self.scan_button.setEnabled(False)
+        self.ble_note.setText("Scanning…")
+        self._scan.start()
+
+    def show_devices(self, devices: list[BleDevice]) -> None:
+        self.scan_button.setEnabled(True)
+        self.ble_list.clear()
+        last = self._settings.device
+        for device in devices:
+            rssi = f"{device.rssi} dBm" if device.rssi is not None else "—"
+            item = QListWidgetItem(f"{device.name or '(no name)'}   {device.address}   {rssi}")
+            item.setData(Qt.ItemDataRole.UserRole, device.address)
+            self.ble_list.addItem(item)
+            if device.address == last:
+                self.ble_list.setCurrentItem(item)
+        if self.ble_list.currentItem() is None and self.ble_list.count():
+            self.ble_list.setCurrentRow(0)
+        self.ble_note.setText(f"{len(devices)} found" if devices else "No stage found")
+
+    def _scan_failed(self, message: str) -> None:
+        self.scan_button.setEnabled(True)
+        self.ble_note.setText(message)
+
+    def selected_ble_address(self) -> str | None:
+        item = self.ble_list.currentItem()
+        if item is not None:
+            return str(item.data(Qt.ItemDataRole.UserRole))
+        return self._settings.device or None  # the last used stage, found again by the transport
+
+    # --- connecting ----------------------------------------------------------
+
+    def connect_selected(self) -> None:
+        transport = self.transport
+        self._settings.transport = transport
+        if transport == "serial":
+            port = self.selected_port()
+            if not port:
+                self.state_label.setText("Choose a serial port first (Refresh lists them).")
+                return
+            baud = int(self.baud_combo.currentData())
+            self._settings.device = port
+            self._settings.baud = baud
+            self._station.connect_serial(port, baud)
+        elif transport == "ble":
+            address = self.selected_ble_address()
+            if address:
+                self._settings.device = address
+            self._station.connect_ble(address)
+        else:
+            self._station.connect_emulator()
+        self._settings.sync()
+
+    def _restore(self) -> None:
+        self.refresh_ports()
+        baud = self._settings.baud or self._station.profile.link.baud
+        index = self.baud_combo.findData(baud)
+        self.baud_combo.setCurrentIndex(index if index >= 0 else self.baud_combo.count() - 4)
+        self.select_transport(self._settings.transport)
+        self._show_transport()
+
+    def _show_transport(self) -> None:
+        self.serial_box.setVisible(self.transport == "serial")
+        self.ble_box.setVisible(self.transport == "ble")
+
+    def _show_state(self, _state: object = None) -> None:
+        model = self._station.model
+        text = model.link_state.value
+        if model.link_detail:
+            text += f" — {model.link_detail}"
+        self.state_label.setText(text)
+        linked = model.link_state is not LinkState.DISCONNECTED
+        self.disconnect_button.setEnabled(linked)
+        device = self._station.device_id
+        if model.link_state is LinkState.CONNECTED and device and device != self._settings.device:
+            # A scan-found stage becomes "the last used" one, tried first next time.
+            self._settings.device = device
+            self._settings.sync()
