@@ -16,18 +16,16 @@ from collections.abc import Sequence
 from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.link import Link
-from app.machine import LinkState, MachineModel, ParameterState
-from app.stage_parameters import BY_TYPE
+from app.machine import LinkState, MachineModel
+from app.stage_echoes import STATUS_TEXT as STATUS_TEXT  # re-exported for callers
+from app.stage_echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
+from app.stage_echoes import StageEchoes
 from protocol.clock import Clock
 from protocol.stage.codec import (
-    BLOCKED_STATUSES,
-    MOVING_STATUSES,
     PARAMETERS,
-    AxisStatus,
     CommandFrame,
     CommandId,
     CommandPacket,
-    DeviceFlag,
     EchoFrame,
     EchoType,
     Rejected,
@@ -37,39 +35,6 @@ from protocol.stage.codec import (
     encode_echo,
     write_command,
 )
-
-STATUS_TEXT: dict[int, str] = {
-    AxisStatus.IDLE: "idle",
-    AxisStatus.ACCELERATING: "accelerating",
-    AxisStatus.CONSTANT_SPEED: "constant speed",
-    AxisStatus.DECELERATING: "decelerating",
-    AxisStatus.TARGET_REACHED: "target reached",
-    AxisStatus.STOPPED: "stopped",
-    AxisStatus.HOMING: "homing",
-    AxisStatus.END_SWITCH: "end switch hit",
-    AxisStatus.BLOCKED_BATTERY: "blocked: battery low",
-    AxisStatus.BLOCKED_CHARGER: "blocked: charger connected",
-    AxisStatus.BLOCKED_USB: "blocked: USB connected",
-    AxisStatus.SLEEPING: "sleeping",
-    AxisStatus.DRIVER_FAULT: "driver fault",
-    AxisStatus.PARAMETER_REJECTED: "parameter rejected",
-    AxisStatus.UNKNOWN_COMMAND: "unknown command",
-}
-
-#: Telemetry keys and the factor from wire units to displayed units.
-SUBSCRIBER_TELEMETRY: dict[int, tuple[str, float]] = {
-    Subscriber.BATTERY_VOLTAGE: ("battery_voltage", 0.001),  # V
-    Subscriber.BATTERY_CHARGE: ("battery_charge", 1.0),  # %
-    Subscriber.CHARGING_CURRENT: ("charging_current", 1.0),  # mA
-    Subscriber.BOARD_TEMPERATURE: ("board_temperature", 0.01),  # °C
-    Subscriber.ROTATION: ("rotation", 0.01),  # °
-    Subscriber.YAW_RATE: ("yaw_rate", 0.01),  # °/s
-    Subscriber.DEVICE_FLAGS: ("device_flags", 1.0),
-    Subscriber.X_ENCODER: ("x_encoder", 0.001),  # mm
-    Subscriber.Y_ENCODER: ("y_encoder", 0.001),  # mm
-    Subscriber.FIRMWARE_VERSION: ("firmware_version", 1.0),
-    Subscriber.REJECTED_FRAMES: ("rejected_frames", 1.0),
-}
 
 #: What the info panel shows; each is asked for at least once a second.
 INFO_SUBSCRIBERS: tuple[Subscriber, ...] = (
@@ -134,13 +99,11 @@ class StageSession(QObject):
         self._urgent: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._background: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._read_in_last_frame = [False] * self.axis_count
-        self._pending_writes: dict[tuple[int, int], int] = {}
+        self.echoes = StageEchoes(model, clock)
         self._fast_selected = True
         self._shift_held = False
         self._device_fast: bool | None = None
         self._last_echo: float | None = None
-        self._device_sleeping = False
-        self._last_position: list[tuple[float, float] | None] = [None] * self.axis_count
         self._timer = QTimer(self)
         self._timer.setInterval(self._period_ms)
         self._timer.timeout.connect(self.tick)
@@ -232,8 +195,7 @@ class StageSession(QObject):
         self._send_now()
 
     def write_parameter(self, axis: int, parameter: EchoType, value: int) -> None:
-        self._pending_writes[(axis, parameter)] = value
-        self.model.mark_parameter_pending(axis, parameter, value)
+        self.echoes.expect_write(axis, parameter, value)
         self._urgent[axis].append(CommandPacket(write_command(parameter), value))
         self._send_now()
 
@@ -330,7 +292,7 @@ class StageSession(QObject):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         self._jog = [0] * self.axis_count
-        self._pending_writes.clear()
+        self.echoes.forget_writes()
         for queue in (*self._urgent, *self._background):
             queue.clear()
         if reason is None:
@@ -371,75 +333,11 @@ class StageSession(QObject):
     # --- echoes into the model -----------------------------------------------
 
     def apply_echo(self, echo: EchoFrame) -> None:
-        """Fold one echo into the model (also used by the developer pane's injector)."""
-        now = self.clock.now()
-        self._last_echo = now
+        """Fold one echo into the model; any echo proves the link is alive."""
+        self._last_echo = self.clock.now()
         if self.model.link_state in (LinkState.STALE, LinkState.LOST):
             self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
-        block: str | None = None
-        sleeping = False
-        for axis, packet in enumerate(echo.packets[: self.axis_count]):
-            status = packet.status
-            if status in BLOCKED_STATUSES or status == AxisStatus.DRIVER_FAULT:
-                block = block or STATUS_TEXT[status]
-            if status == AxisStatus.SLEEPING:
-                sleeping = True
-            self._apply_packet(axis, packet.type, status, packet.data, now)
-        if echo.subscriber in SUBSCRIBER_TELEMETRY:
-            key, scale = SUBSCRIBER_TELEMETRY[echo.subscriber]
-            self.model.set_telemetry(key, echo.sdata * scale)
-        if echo.subscriber == Subscriber.DEVICE_FLAGS:
-            self._device_sleeping = bool(echo.sdata & DeviceFlag.SLEEPING)
-        elif sleeping:
-            self._device_sleeping = True
-        elif block is None:
-            # Statuses show "sleeping" unless a block outranks it; with no block the
-            # statuses alone tell.
-            self._device_sleeping = False
-        self.model.set_block(block, sleeping=sleeping or self._device_sleeping)
-
-    def _apply_packet(self, axis: int, type_: int, status: int, data: int, now: float) -> None:
-        if status == AxisStatus.UNKNOWN_COMMAND:
-            self.model.message.emit(f"Axis {self.model.axes[axis].name}: device refused a command")
-        if type_ in BY_TYPE:
-            # A parameter answer replaces this echo's position; its status is left for the
-            # next position packet so the panel never shows a new state beside an old position.
-            self._apply_parameter(axis, EchoType(type_), status, data)
-            return
-        if status not in (AxisStatus.PARAMETER_REJECTED, AxisStatus.UNKNOWN_COMMAND):
-            self.model.update_axis(
-                axis,
-                status_code=status,
-                status_text=STATUS_TEXT.get(status, f"status {status:X}"),
-                moving=status in MOVING_STATUSES,
-            )
-        if type_ == EchoType.POSITION:
-            self._apply_position(axis, data / 1000, now)
-        elif type_ == EchoType.VELOCITY:
-            self.model.update_axis(axis, velocity=data / 1000)
-
-    def _apply_position(self, axis: int, position: float, now: float) -> None:
-        previous = self._last_position[axis]
-        velocity: float | None = None
-        if previous is not None and now > previous[1]:
-            velocity = (position - previous[0]) / (now - previous[1])
-        self._last_position[axis] = (position, now)
-        self.model.update_axis(axis, position=position, velocity=velocity)
-
-    def _apply_parameter(self, axis: int, parameter: EchoType, status: int, value: int) -> None:
-        requested = self._pending_writes.pop((axis, parameter), None)
-        if requested is None:
-            self.model.set_parameter(axis, parameter, value, ParameterState.READ)
-            return
-        meta = BY_TYPE[parameter]
-        if status == AxisStatus.PARAMETER_REJECTED or value != requested:
-            self.model.set_parameter(axis, parameter, value, ParameterState.REFUSED)
-            kept = f"{meta.to_shown(value):.{meta.decimals}f} {meta.unit}".rstrip()
-            self.model.message.emit(
-                f"{self.model.axes[axis].name} {meta.label}: refused, the device keeps {kept}"
-            )
-        else:
-            self.model.set_parameter(axis, parameter, value, ParameterState.CONFIRMED)
+        self.echoes.apply(echo)
 
     def shutdown(self) -> None:
         self._timer.stop()

@@ -19,9 +19,11 @@ from app.discovery import ble_uuids_for
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.profiles import MachineProfile
+from app.stage_echoes import StageEchoes
 from app.stage_session import StageSession
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.stage.codec import EchoFrame
 from protocol.transport.base import Transport
 from protocol.transport.ble import BleLoop, BleTransport
 from protocol.transport.loopback import LoopbackTransport
@@ -38,6 +40,7 @@ def stage_config_for(profile: MachineProfile) -> StageConfig:
 
 class Station(QObject):
     sessionChanged = Signal()
+    echoInjected = Signal(object)  # EchoFrame, for the frame log
 
     def __init__(
         self,
@@ -63,6 +66,7 @@ class Station(QObject):
         self._reconnect_at: float | None = None
         self._closing = False
         self._ble_loop: BleLoop | None = None
+        self._detached_echoes = StageEchoes(self.model, self.clock)
         self._poll = QTimer(self)
         self._poll.setInterval(POLL_MS)
         self._poll.timeout.connect(self.poll)
@@ -86,6 +90,19 @@ class Station(QObject):
     def reconnect_due(self) -> float | None:
         """Clock time of the next reconnection attempt, None when none is planned."""
         return self._reconnect_at
+
+    def inject_echo(self, echo: EchoFrame) -> None:
+        """Fold an echo into the model as if the device had sent it (developer pane).
+
+        With a session it goes through the session (and counts as a sign of
+        life); without a link it still reaches the model, so the panels can be
+        exercised with nothing connected.
+        """
+        if self.session is not None:
+            self.session.apply_echo(echo)
+        else:
+            self._detached_echoes.apply(echo)
+        self.echoInjected.emit(echo)
 
     # --- choosing a link -----------------------------------------------------
 
