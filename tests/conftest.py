@@ -16,6 +16,7 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 import pytest
 
 from protocol.transport.base import open_transports
+from tests.helpers.harness import StationHarness
 
 ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared"
@@ -42,6 +43,14 @@ def no_leftover_threads_or_transports() -> Iterator[None]:
         deadline.wait(0.02)
     assert not leaked_transports, f"test left transports open: {leaked_transports}"
     assert not extra, f"test left threads running: {[t.name for t in extra]}"
+
+
+@pytest.fixture
+def harness(qapp: object) -> Iterator[StationHarness]:
+    """A station with the emulator on a test clock, not yet connected; closed afterwards."""
+    h = StationHarness()
+    yield h
+    h.close()
 
 
 @pytest.fixture

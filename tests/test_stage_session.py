@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pytest
 
 from app.machine import LinkState, ParameterState
@@ -21,11 +19,10 @@ from tests.helpers.harness import StationHarness
 
 
 @pytest.fixture
-def harness(qapp: object) -> Iterator[StationHarness]:
-    h = StationHarness()
-    h.connect()
-    yield h
-    h.close()
+def harness(harness: StationHarness) -> StationHarness:
+    """The shared harness, connected."""
+    harness.connect()
+    return harness
 
 
 def _frames(raw: list[bytes]) -> list[CommandFrame]:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterator
 
 import pytest
 
@@ -14,11 +13,10 @@ from tests.helpers.harness import StationHarness
 
 
 @pytest.fixture
-def harness(qapp: object) -> Iterator[StationHarness]:
-    h = StationHarness()
-    h.connect()
-    yield h
-    h.close()
+def harness(harness: StationHarness) -> StationHarness:
+    """The shared harness, connected."""
+    harness.connect()
+    return harness
 
 
 def _commands_since(harness: StationHarness, start: int) -> list[tuple[int, int]]:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import NamedTuple
 
 import pytest
@@ -22,13 +21,6 @@ class Panels(NamedTuple):
 
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
-
-
-@pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
-    yield harness
-    harness.close()
 
 
 @pytest.fixture

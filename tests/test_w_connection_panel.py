@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -24,13 +24,6 @@ PORTS = [
     PortInfo("/dev/ttyACM0", "XY stage (CDC)", "USB VID:PID=0483:5740"),
     PortInfo("/dev/ttyUSB0", "FT232R USB UART", "USB VID:PID=0403:6001"),
 ]
-
-
-@pytest.fixture
-def harness(qapp: object) -> Iterator[StationHarness]:
-    h = StationHarness()
-    yield h
-    h.close()
 
 
 @pytest.fixture

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDoubleSpinBox, QLabel
@@ -19,13 +17,6 @@ from widgets.dynamics_panel import DynamicsPanel
 
 X, Y = 0, 1
 ACCELERATION = int(EchoType.ACCELERATION)
-
-
-@pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
-    yield harness
-    harness.close()
 
 
 @pytest.fixture

@@ -2,21 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pytest
 from pytestqt.qtbot import QtBot
 
 from app.machine import LinkState
 from tests.helpers.harness import StationHarness
 from widgets.info_panel import LINK_COLOURS, InfoPanel
-
-
-@pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
-    yield harness
-    harness.close()
 
 
 @pytest.fixture

@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pytest
 from PySide6.QtCore import Qt
-from pytestqt.qtbot import QtBot
 
 from tests.helpers.harness import StationHarness
 from widgets.jog_input import JogInput
@@ -15,12 +12,11 @@ RIGHT, LEFT, UP, DOWN = Qt.Key.Key_Right, Qt.Key.Key_Left, Qt.Key.Key_Up, Qt.Key
 
 
 @pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
+def harness(harness: StationHarness) -> StationHarness:
+    """The shared harness, connected."""
     harness.connect()
     harness.run(1.5)
-    yield harness
-    harness.close()
+    return harness
 
 
 @pytest.fixture

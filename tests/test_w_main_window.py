@@ -6,7 +6,6 @@ through the harness, and the assertions read what the operator would see.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -20,13 +19,6 @@ from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
-
-
-@pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
-    yield harness
-    harness.close()
 
 
 def _open_window(

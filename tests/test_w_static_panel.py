@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 import pytest
 from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
@@ -15,13 +13,6 @@ from widgets.static_panel import StaticPanel
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
 
 LEFT = Qt.MouseButton.LeftButton
-
-
-@pytest.fixture
-def harness(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness()
-    yield harness
-    harness.close()
 
 
 @pytest.fixture

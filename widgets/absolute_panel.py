@@ -10,7 +10,7 @@ from __future__ import annotations
 from PySide6.QtWidgets import QDoubleSpinBox, QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
-from widgets.style import monospace_font
+from widgets.style import distance_box
 
 
 class AbsolutePanel(QWidget):
@@ -27,15 +27,13 @@ class AbsolutePanel(QWidget):
         grid.setVerticalSpacing(8)
         grid.addWidget(QLabel("<b>Move to</b>"), 0, 0, 1, 3)
         for index, axis in enumerate(station.profile.axes):
-            target = QDoubleSpinBox()
-            target.setObjectName(f"target_{axis.name}")
-            target.setRange(0.0, axis.travel)
-            target.setDecimals(3)
-            target.setSingleStep(1.0)
-            target.setSuffix(f" {axis.unit}")
-            target.setFont(monospace_font())
-            target.setMinimumWidth(130)
-            target.setToolTip(f"{axis.name} target, 0…{axis.travel:g} {axis.unit} (Esc stops)")
+            target = distance_box(
+                f"target_{axis.name}",
+                axis.unit,
+                0.0,
+                axis.travel,
+                f"{axis.name} target, 0…{axis.travel:g} {axis.unit} (Esc stops)",
+            )
             go = QPushButton(f"Go {axis.name}")
             go.setToolTip(f"Move {axis.name} to the target")
             go.clicked.connect(lambda _=False, i=index: self.go(i))

@@ -9,7 +9,7 @@ from __future__ import annotations
 from PySide6.QtWidgets import QDoubleSpinBox, QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
-from widgets.style import MINUS, monospace_font
+from widgets.style import MINUS, distance_box
 
 
 class RelativePanel(QWidget):
@@ -27,15 +27,14 @@ class RelativePanel(QWidget):
         grid.setVerticalSpacing(8)
         grid.addWidget(QLabel("<b>Move by</b>"), 0, 0, 1, 4)
         for index, axis in enumerate(station.profile.axes):
-            increment = QDoubleSpinBox()
-            increment.setObjectName(f"increment_{axis.name}")
-            increment.setRange(0.001, axis.travel)
-            increment.setDecimals(3)
+            increment = distance_box(
+                f"increment_{axis.name}",
+                axis.unit,
+                0.001,
+                axis.travel,
+                f"{axis.name} increment (Esc stops)",
+            )
             increment.setValue(1.0)
-            increment.setSuffix(f" {axis.unit}")
-            increment.setFont(monospace_font())
-            increment.setMinimumWidth(130)
-            increment.setToolTip(f"{axis.name} increment (Esc stops)")
             minus = QPushButton(f"{MINUS} {axis.name}")
             minus.setToolTip(f"Move {axis.name} back by the increment")
             minus.clicked.connect(lambda _=False, i=index: self.step(i, -1))
