@@ -26,6 +26,15 @@ from protocol.stage.codec import (
     Subscriber,
     encode_command,
 )
+from protocol.usb3.codec import (
+    GetSettings,
+    ReplyDecoder,
+    StepSize,
+    StepSizes,
+    Thread,
+    Threads,
+    encode,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 STARTUP_TIMEOUT = 10.0
@@ -87,10 +96,11 @@ EMULATOR = [sys.executable, "-m", "protocol.emulator", "--profile", "xy-stage"]
 
 
 @contextmanager
-def running_emulator(*options: str) -> Iterator[Emulator]:
+def running_emulator(*options: str, profile: str = "xy-stage") -> Iterator[Emulator]:
     """The emulator process and the device path it printed; always ended on the way out."""
+    command = [sys.executable, "-m", "protocol.emulator", "--profile", profile, *options]
     with subprocess.Popen(
-        [*EMULATOR, *options], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE
     ) as process:
         try:
             assert process.stdout is not None
@@ -135,6 +145,24 @@ def test_emulator_process_answers_over_a_serial_port_and_exits_cleanly(
     assert process.wait(timeout=5) == 0
     assert process.stderr is not None
     assert b"Traceback" not in process.stderr.read()
+
+
+def test_usb3_emulator_process_answers_get_settings_over_a_serial_port(tmp_path: Path) -> None:
+    link = tmp_path / "usb3"
+    with running_emulator("--link", str(link), profile="usb3") as (process, path):
+        assert path.startswith("/dev/") and os.readlink(link) == path
+        with serial.Serial(str(link), 19200, timeout=REPLY_TIMEOUT) as port:
+            port.write(encode(GetSettings()))
+            reply = port.read_until(b";") + port.read_until(b";")
+        assert ReplyDecoder().feed(reply) == [
+            StepSizes((StepSize.EIGHTH,) * 3),
+            Threads((Thread.M6,) * 3),
+        ]
+        assert reply == b"M333;T444;"
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=5) == 0
+        assert process.stderr is not None
+        assert b"usb3 emulator on" in process.stderr.read()
 
 
 # --- --link: a fixed path for a pty that changes with every start -------------------

@@ -5,6 +5,10 @@ device path, through the same serial transport and line discipline a USB or
 SPP adapter would use, with no board attached::
 
     python -m protocol.emulator --profile xy-stage --pty
+    python -m protocol.emulator --profile usb3 --pty
+
+The profile picks the firmware; the pty ignores baud rates, so the usb3
+unit's 19200 and the stage's 115200 need no setting here.
 
 A pty gets a new number every time, so ``--link PATH`` also puts a symlink at
 a fixed path (as socat's ``link=`` does): an emulator restarted on the same
@@ -26,9 +30,15 @@ from pathlib import Path
 from types import FrameType
 
 from protocol.clock import Clock, MonotonicClock
-from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.stage_firmware import StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
 
-PROFILES: dict[str, Callable[[], StageConfig]] = {"xy-stage": StageConfig}
+DeviceFactory = Callable[[Clock], EmulatedDevice]
+
+#: The firmware each machine profile runs, built on the clock it is served on.
+PROFILES: dict[str, DeviceFactory] = {"xy-stage": StageFirmware, "usb3": Usb3Firmware}
+DEFAULT_PROFILE = "xy-stage"
 
 #: How long one loop iteration waits for host bytes: well inside a 5 ms control
 #: cycle, so echoes leave within the 20 ms the contract allows.
@@ -49,7 +59,9 @@ def open_pty() -> tuple[int, int, str]:
     return master, slave, os.ttyname(slave)
 
 
-def pump(firmware: StageFirmware, fd: int, clock: Clock, outbox: bytearray, timeout: float) -> None:
+def pump(
+    firmware: EmulatedDevice, fd: int, clock: Clock, outbox: bytearray, timeout: float
+) -> None:
     """One loop iteration: host bytes in, control cycles up to now, replies out."""
     readable, _, _ = select.select([fd], [], [], timeout)
     if readable:
@@ -74,7 +86,7 @@ def _flush(fd: int, outbox: bytearray) -> None:
 
 
 def serve(
-    firmware: StageFirmware,
+    firmware: EmulatedDevice,
     fd: int,
     clock: Clock,
     should_stop: Callable[[], bool],
@@ -123,7 +135,8 @@ def remove_link(link: Path, device: str) -> None:
         pass
 
 
-def run_on_pty(config: StageConfig, link: Path | None = None) -> int:
+def run_on_pty(profile: str = DEFAULT_PROFILE, link: Path | None = None) -> int:
+    """Serve ``profile``'s firmware on a new pty until SIGTERM or SIGINT; the exit status."""
     stop = threading.Event()
 
     def request_stop(signum: int, frame: FrameType | None) -> None:
@@ -142,9 +155,9 @@ def run_on_pty(config: StageConfig, link: Path | None = None) -> int:
     try:
         print(path, flush=True)
         where = f"{path} (linked from {link})" if link is not None else path
-        print(f"stage emulator on {where}; Ctrl+C stops it", file=sys.stderr, flush=True)
+        print(f"{profile} emulator on {where}; Ctrl+C stops it", file=sys.stderr, flush=True)
         clock = MonotonicClock()
-        serve(StageFirmware(clock, config), master, clock, stop.is_set)
+        serve(PROFILES[profile](clock), master, clock, stop.is_set)
     finally:
         if link is not None:
             remove_link(link, path)
@@ -162,7 +175,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         prog="stepdeck-emulator",
         description="Emulate a StepDeck machine's firmware on a pseudo-terminal.",
     )
-    parser.add_argument("--profile", choices=sorted(PROFILES), default="xy-stage")
+    parser.add_argument("--profile", choices=sorted(PROFILES), default=DEFAULT_PROFILE)
     parser.add_argument(
         "--pty", action="store_true", help="serve the device on a new pseudo-terminal"
     )
@@ -184,7 +197,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-    return run_on_pty(PROFILES[args.profile](), args.link)
+    return run_on_pty(args.profile, args.link)
 
 
 if __name__ == "__main__":
