@@ -163,11 +163,14 @@ class Station(QObject):
             finally:
                 self._closing = False
             self.link.deleteLater()
+        had_session = self.session is not None
         if self.session is not None:
             self.session.deleteLater()
         self.link = None
         self.session = None
         self.model.set_link_state(LinkState.DISCONNECTED)
+        if had_session:
+            self.sessionChanged.emit()
 
     def set_period_ms(self, period_ms: int) -> None:
         self.period_ms = period_ms

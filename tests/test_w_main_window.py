@@ -358,3 +358,37 @@ def test_shift_held_jogs_at_the_other_speed(
     qtbot.keyRelease(window, Qt.Key.Key_Shift)
     harness.run(0.2)
     assert harness.emulator.speed_is_fast(0)
+
+
+@pytest.mark.parametrize("focus", ["window", "spin box", "dynamics field"])
+def test_shift_v_toggles_the_developer_pane_from_any_focus(
+    qtbot: QtBot, harness: StationHarness, focus: str
+) -> None:
+    window = _open_window(qtbot, harness)
+    targets = {
+        "window": window.manual_panel,
+        "spin box": window.absolute_panel.targets[0],
+        "dynamics field": window.dynamics_panel,
+    }
+    target = targets[focus]
+    if focus == "spin box":
+        window.menu_panel.set_page(1)
+    target.setFocus()
+    assert not window.developer_pane.isVisible()
+    qtbot.keyClick(target, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
+    assert window.developer_pane.isVisible()
+    qtbot.keyClick(target, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
+    assert not window.developer_pane.isVisible()
+
+
+def test_shift_v_in_a_free_text_field_types_a_capital_v(
+    qtbot: QtBot, harness: StationHarness
+) -> None:
+    window = _open_window(qtbot, harness)
+    window.developer_pane.show()
+    field = window.developer_pane.filter_edit
+    field.setFocus()
+    qtbot.keyClick(field, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
+    # QTest gives the key event the text "v"; what matters is that the field got it.
+    assert field.text().lower() == "v"
+    assert window.developer_pane.isVisible()

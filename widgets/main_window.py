@@ -39,6 +39,7 @@ from app.settings import StationSettings
 from app.station import Station
 from widgets.absolute_panel import AbsolutePanel
 from widgets.connection_panel import ConnectionPanel
+from widgets.developer_pane import DeveloperPane
 from widgets.dynamics_panel import DynamicsPanel
 from widgets.info_panel import InfoPanel
 from widgets.jog_input import JogInput
@@ -57,6 +58,7 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("Shift (held)", "Jog and move at the other speed"),
     ("Esc", "Stop everything, from anywhere in the window"),
     ("Alt+M / A / R / D / L", "Manual / Absolute / Relative / Dynamics / Link page"),
+    ("Shift+V", "Show or hide the developer pane"),
     ("F1", "This list"),
 )
 
@@ -70,6 +72,16 @@ def _is_text_editing(widget: QWidget | None) -> bool:
             return True
         widget = widget.parentWidget()
     return False
+
+
+def _is_free_text(widget: QWidget | None) -> bool:
+    """A field where any character is input (not a number field, whose keys we may take)."""
+    if isinstance(widget, (QTextEdit, QPlainTextEdit)):
+        return True
+    if not isinstance(widget, QLineEdit):
+        return False
+    parent = widget.parentWidget()
+    return not isinstance(parent, QAbstractSpinBox)
 
 
 class MainWindow(QMainWindow):
@@ -135,6 +147,7 @@ class MainWindow(QMainWindow):
         self._attach_session()
         self._update_lock()
         self._show_link_status()
+        self._build_developer_pane()
         self._restore_settings()
         self._install_filter()
 
@@ -155,6 +168,17 @@ class MainWindow(QMainWindow):
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
 
+    def _build_developer_pane(self) -> None:
+        """Shift+V shows and hides it, from any focus, like the original tool's extension."""
+        self.developer_pane = DeveloperPane(self.station, self)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.developer_pane)
+        self.developer_pane.hide()
+        self.developer_action = self.developer_pane.toggleViewAction()
+        self.developer_action.setShortcut(QKeySequence("Shift+V"))
+        self.developer_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
+        self.addAction(self.developer_action)
+        self.view_menu.addAction(self.developer_action)
+
     def _build_status_bar(self) -> None:
         self.link_status = QLabel()
         self.message_label = QLabel()
@@ -167,6 +191,7 @@ class MainWindow(QMainWindow):
         self._show_rejected()
 
     def _build_menus(self) -> None:
+        self.view_menu = self.menuBar().addMenu("&View")
         help_menu = self.menuBar().addMenu("&Help")
         self.shortcuts_action = QAction("&Keyboard shortcuts", self)
         self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
@@ -223,7 +248,13 @@ class MainWindow(QMainWindow):
         return False
 
     def _owns(self, watched: QObject) -> bool:
-        return isinstance(watched, QWidget) and watched.window() is self
+        """Whether ``watched`` belongs to this window, floating docks included."""
+        widget = watched if isinstance(watched, QWidget) else None
+        while widget is not None:
+            if widget is self:
+                return True
+            widget = widget.parentWidget()
+        return False
 
     def _focus_left(self, event: QFocusEvent) -> bool:
         """Whether keyboard focus left this window (not just moved inside it)."""
@@ -247,6 +278,13 @@ class MainWindow(QMainWindow):
             if not event.isAutoRepeat():
                 self.jog.set_shift(press)
             return False
+        if key == Qt.Key.Key_V and event.modifiers() == Qt.KeyboardModifier.ShiftModifier:
+            # The action's shortcut handles most of the window; number fields swallow the
+            # keystroke first, so it is routed here. Free text keeps its capital V.
+            if not press or event.isAutoRepeat() or _is_free_text(QApplication.focusWidget()):
+                return False
+            self.developer_action.trigger()
+            return True
         if not self.jog.is_jog_key(key):
             return False
         if event.isAutoRepeat():

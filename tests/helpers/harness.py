@@ -30,10 +30,14 @@ class StationHarness:
         self._next_tick = 0.0
 
     def connect(self) -> None:
+        # Hook the new link before it opens, so the frames sent at connect are recorded too.
+        self.station.sessionChanged.connect(self._record_link)
         self.station.connect_emulator()
-        assert self.station.link is not None
-        self.station.link.dataSent.connect(self.written.append)
         self._next_tick = self.clock.now() + self.session.period_ms / 1000
+
+    def _record_link(self) -> None:
+        if self.station.link is not None:
+            self.station.link.dataSent.connect(self.written.append)
 
     @property
     def session(self) -> StageSession:
