@@ -276,6 +276,114 @@ def bench_echo_round_trip() -> list[str]:
     ]
 
 
+def _telemetry_run(throttle_ms: int | None, seconds: float = 5.0) -> tuple[float, float, int]:
+    """Feed a shown telemetry dock 4 curves at 1 kHz over a full 10-minute window.
+
+    Returns (frames painted per second, share of one core, samples per curve held).
+    ``throttle_ms`` None keeps the recorder's default.
+    """
+    import math
+
+    import numpy as np
+    from PySide6.QtCore import QEvent, QEventLoop, QObject, Qt, QTimer
+    from PySide6.QtWidgets import QApplication
+
+    from app.profiles import load_profile
+    from app.station import Station
+    from app.telemetry import MAX_WINDOW_S, TelemetryRecorder
+    from widgets.telemetry_dock import TelemetryDock
+
+    class PaintCounter(QObject):
+        def __init__(self) -> None:
+            super().__init__()
+            self.paints = 0
+
+        def eventFilter(self, _watched: QObject, event: QEvent) -> bool:
+            if event.type() == QEvent.Type.Paint:
+                self.paints += 1
+            return False
+
+    def waves(t: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
+        """Position and velocity of a sine sweep, a different period per axis."""
+        omega = 2 * math.pi / (7.0 + 4 * axis)
+        return 20.0 + 15.0 * np.sin(omega * t), 15.0 * omega * np.cos(omega * t)
+
+    app = QApplication.instance() or QApplication([])
+    clock = ManualClock()  # advanced sample by sample, in step with the wall clock
+    station = Station(load_profile("xy-stage"), clock, realtime=False)
+    model = station.model
+    options = {} if throttle_ms is None else {"throttle_ms": throttle_ms}
+    recorder = TelemetryRecorder(station, **options)
+    dock = TelemetryDock(recorder)
+    dock.resize(1200, 700)
+    dock.show()
+    dock.window_combo.setCurrentIndex(dock.window_combo.findData(MAX_WINDOW_S))
+    rate = 1000
+    t = np.arange(int(MAX_WINDOW_S * rate)) / rate
+    for axis, name in enumerate(("X", "Y")):
+        position, velocity = waves(t, axis)
+        recorder.extend(f"{name} position", t, position)
+        recorder.extend(f"{name} velocity", t, velocity)
+    clock.advance(MAX_WINDOW_S)
+    app.processEvents()
+
+    counter = PaintCounter()
+    dock.graphics.viewport().installEventFilter(counter)
+    fed = 0
+    wall_start = time.perf_counter()
+
+    def feed() -> None:
+        """Every sample due by the wall clock, each at its own millisecond."""
+        nonlocal fed
+        due = int((time.perf_counter() - wall_start) * rate)
+        while fed < due:
+            clock.advance(1 / rate)
+            now = np.array(clock.now())
+            for axis in range(2):
+                position, velocity = waves(now, axis)
+                model.update_axis(axis, position=float(position), velocity=float(velocity))
+            fed += 1
+
+    feeder = QTimer()
+    feeder.setTimerType(Qt.TimerType.PreciseTimer)
+    feeder.timeout.connect(feed)
+    loop = QEventLoop()
+    cpu_start = time.process_time()
+    wall_start = time.perf_counter()
+    feeder.start(2)
+    QTimer.singleShot(round(seconds * 1000), loop.quit)
+    loop.exec()
+    feeder.stop()
+    wall = time.perf_counter() - wall_start
+    cpu = time.process_time() - cpu_start
+    held = len(recorder.recorded("X position")[0])
+    dock.close()
+    dock.deleteLater()
+    recorder.deleteLater()
+    station.shutdown()
+    app.processEvents()
+    return counter.paints / wall, cpu / wall, held
+
+
+def bench_telemetry_plots() -> list[str]:
+    """Four curves at 1 kHz each in a 10-minute window, drawn by the telemetry dock.
+
+    The window is pre-filled with 10 minutes of samples (600 000 per curve),
+    then both axes' position and velocity are fed through the machine model
+    at 1 kHz for about 5 s of wall time, with the dock shown offscreen.  With
+    the recorder's default throttle the frame rate is the throttle's (about
+    30 Hz); a second run with a 10 ms throttle shows the headroom left.
+    """
+    lines = []
+    for throttle_ms, what in ((None, "default throttle"), (10, "10 ms throttle")):
+        fps, core, held = _telemetry_run(throttle_ms)
+        lines.append(
+            f"telemetry dock, 4 curves x 1 kHz, 10-minute window ({held:,} samples per curve), "
+            f"{what}: {fps:.1f} frames/s drawn, {100 * core:.0f} % of one core"
+        )
+    return lines
+
+
 BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_decode,
     bench_emulated_move,
@@ -283,6 +391,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_launch,
     bench_key_to_pty,
     bench_echo_round_trip,
+    bench_telemetry_plots,
 ]
 
 

@@ -1,0 +1,201 @@
+"""Telemetry dock: variable selection reaches the wire, curves, Zero, exports, Pause, window."""
+
+from __future__ import annotations
+
+import csv
+from collections.abc import Iterator
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QImage
+from PySide6.QtWidgets import QFileDialog
+from pytestqt.qtbot import QtBot
+
+from app.profiles import load_profile
+from app.telemetry import TelemetryRecorder
+from protocol.stage.codec import CommandFrame, Subscriber, decode
+from tests.helpers.harness import StationHarness
+from widgets.telemetry_dock import TelemetryDock
+
+LEFT = Qt.MouseButton.LeftButton
+
+
+@pytest.fixture
+def dock(qtbot: QtBot, harness: StationHarness) -> Iterator[TelemetryDock]:
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=0)
+    dock = TelemetryDock(recorder)
+    qtbot.addWidget(dock)
+    dock.resize(900, 520)
+    dock.show()
+    yield dock
+    recorder.deleteLater()
+
+
+def choose(dock: TelemetryDock, subscriber: int | None) -> None:
+    dock.variable_combo.setCurrentIndex(dock.variable_combo.findData(subscriber))
+
+
+def sent_subscribers(harness: StationHarness, since: int = 0) -> list[int]:
+    out = []
+    for raw in harness.written[since:]:
+        _, frame = decode(raw)
+        assert isinstance(frame, CommandFrame)
+        out.append(frame.subscriber)
+    return out
+
+
+def curve_data(curve: object) -> tuple[np.ndarray, np.ndarray]:
+    t, y = curve.getOriginalDataset()  # type: ignore[attr-defined]
+    return (np.empty(0), np.empty(0)) if t is None else (t.copy(), y.copy())
+
+
+def test_choosing_rotation_subscribes_on_the_wire(
+    harness: StationHarness, dock: TelemetryDock
+) -> None:
+    harness.connect()
+    harness.run(2.0)
+    assert Subscriber.ROTATION not in sent_subscribers(harness)
+    start = len(harness.written)
+    choose(dock, Subscriber.ROTATION)
+    assert dock.recorder.variable is not None
+    assert dock.recorder.variable.subscriber == Subscriber.ROTATION
+    harness.run(2.0)
+    asked = sent_subscribers(harness, start)
+    # Every frame the info panel does not need carries SS 05: about half at 100 ms.
+    assert asked.count(Subscriber.ROTATION) >= len(asked) // 3
+    choose(dock, None)
+    start = len(harness.written)
+    harness.run(2.0)
+    assert Subscriber.ROTATION not in sent_subscribers(harness, start)
+
+
+def test_curves_receive_the_recorded_data(harness: StationHarness, dock: TelemetryDock) -> None:
+    choose(dock, Subscriber.ROTATION)
+    harness.connect()
+    harness.emulator.rotation_rate_dps = 10.0
+    harness.session.move_absolute(0, 2.0)
+    harness.run(3.0)
+    for name, curve in dock._curves.items():
+        t, y = curve_data(curve)
+        expected_t, expected_y = dock.recorder.data(name)
+        np.testing.assert_array_equal(t, expected_t)
+        np.testing.assert_array_equal(y, expected_y)
+    _, x = curve_data(dock._curves["X position"])
+    assert x[-1] == 2.0
+    t, y = curve_data(dock.variable_curve)
+    assert len(t) >= 10 and y[-1] > y[0]
+    left, right = dock.variable_plot.viewRange()[0]
+    assert right == pytest.approx(dock.recorder.view_end())
+    assert right - left == pytest.approx(10.0)
+    assert dock.variable_plot.getAxis("left").labelText == "rotation (°)"
+
+
+def test_zero_button_resets_the_cross(
+    qtbot: QtBot, harness: StationHarness, dock: TelemetryDock
+) -> None:
+    assert dock.cross.angle is None and not dock.zero_button.isEnabled()
+    choose(dock, Subscriber.ROTATION)
+    harness.connect()
+    harness.emulator.rotation_rate_dps = 10.0
+    harness.run(3.0)
+    assert dock.cross.angle is not None and dock.cross.angle > 15.0
+    qtbot.mouseClick(dock.zero_button, LEFT)
+    assert dock.cross.angle == 0.0
+    assert dock.angle_label.text() == "+0.00°"
+    harness.run(1.0)
+    assert 5.0 < dock.cross.angle < 15.0
+    choose(dock, Subscriber.BATTERY_VOLTAGE)
+    assert dock.cross.angle is None and not dock.zero_button.isEnabled()
+
+
+def test_export_buttons_write_files(
+    qtbot: QtBot,
+    harness: StationHarness,
+    dock: TelemetryDock,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    choose(dock, Subscriber.BATTERY_VOLTAGE)
+    harness.connect()
+    harness.run(3.0)
+    target = tmp_path / "out.csv"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(target), ""))
+    qtbot.mouseClick(dock.csv_button, LEFT)
+    with target.open(newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0][0] == "time (s)" and rows[0][-1] == "battery voltage (V)"
+    voltages = [float(row[-1]) for row in rows[1:] if row[-1]]
+    assert voltages and all(v == pytest.approx(4.02, abs=0.01) for v in voltages)
+    assert len(rows) - 1 == len(np.unique(dock.recorder.data("X position")[0]))
+
+    image = tmp_path / "out.png"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(image), ""))
+    qtbot.mouseClick(dock.png_button, LEFT)
+    loaded = QImage(str(image))
+    assert not loaded.isNull() and loaded.width() > 300
+
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: ("", ""))
+    target.unlink()
+    qtbot.mouseClick(dock.csv_button, LEFT)  # cancelled: nothing written
+    assert not target.exists()
+
+
+def test_pause_freezes_curves_while_recording_goes_on(
+    qtbot: QtBot, harness: StationHarness, dock: TelemetryDock
+) -> None:
+    choose(dock, Subscriber.ROTATION)
+    harness.connect()
+    harness.emulator.rotation_rate_dps = 10.0
+    harness.run(2.0)
+    qtbot.mouseClick(dock.pause_button, LEFT)
+    assert dock.recorder.paused and dock.paused_label.isVisibleTo(dock)
+    frozen = curve_data(dock.variable_curve)
+    frozen_range = dock.variable_plot.viewRange()[0]
+    frozen_angle = dock.cross.angle
+    recorded = len(dock.recorder.recorded("rotation")[0])
+    harness.run(3.0)
+    now = curve_data(dock.variable_curve)
+    np.testing.assert_array_equal(now[0], frozen[0])
+    np.testing.assert_array_equal(now[1], frozen[1])
+    assert dock.variable_plot.viewRange()[0] == pytest.approx(frozen_range)
+    assert dock.cross.angle == frozen_angle
+    assert len(dock.recorder.recorded("rotation")[0]) > recorded + 5  # still recording
+    qtbot.mouseClick(dock.pause_button, LEFT)
+    assert not dock.recorder.paused and not dock.paused_label.isVisibleTo(dock)
+    t, _ = curve_data(dock.variable_curve)
+    assert t[-1] > frozen[0][-1] + 2.5  # what came in meanwhile is shown at once
+
+
+def test_window_selector_sets_the_time_span(harness: StationHarness, dock: TelemetryDock) -> None:
+    harness.connect()
+    harness.run(1.0)
+    dock.window_combo.setCurrentIndex(dock.window_combo.findText("1 min"))
+    assert dock.recorder.window_s == 60.0
+    left, right = dock.variable_plot.viewRange()[0]
+    assert right - left == pytest.approx(60.0)
+    assert dock.position_plot.viewRange()[0] == pytest.approx([left, right])  # linked
+
+
+def test_autoscale_toggles_the_vertical_fit(qtbot: QtBot, dock: TelemetryDock) -> None:
+    view = dock.position_plot.getViewBox()
+    assert dock.autoscale_button.isChecked() and view.autoRangeEnabled()[1]
+    qtbot.mouseClick(dock.autoscale_button, LEFT)
+    assert not view.autoRangeEnabled()[1]
+    qtbot.mouseClick(dock.autoscale_button, LEFT)
+    assert view.autoRangeEnabled()[1]
+
+
+def test_a_machine_without_subscribers_offers_no_variable(qtbot: QtBot) -> None:
+    profile = load_profile("xy-stage")
+    bare = replace(profile, capabilities=replace(profile.capabilities, subscribers=False))
+    harness = StationHarness(bare)
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=0)
+    dock = TelemetryDock(recorder)
+    qtbot.addWidget(dock)
+    assert not dock.variable_combo.isEnabled()
+    assert dock.variable_combo.currentData() is None
+    harness.close()
+    recorder.deleteLater()

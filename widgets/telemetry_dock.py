@@ -1,0 +1,470 @@
+"""The telemetry dock: live plots of positions, velocities and one subscriber variable.
+
+A view over :class:`app.telemetry.TelemetryRecorder`, which does the
+recording, windowing, pausing, zeroing and CSV writing; the dock only draws
+what the recorder says is shown, and only when the recorder's throttled
+``updated`` fires, so a 1 kHz stream costs at most ~30 redraws a second.
+
+Long windows stay cheap: a 10-minute window at 1 kHz is 600 000 samples a
+curve, but the recorder hands over its min/max envelope (one pair per pixel
+of plot width, every peak kept, reduced incrementally), so each frame draws
+a few thousand points.  pyqtgraph's own guards stay on behind it
+(``setDownsampling(auto=True, mode="peak")``, ``setClipToView(True)``), and
+``skipFiniteCheck`` with ``connect="all"`` spare it a NaN scan per frame (the
+recorder never stores one).  A curve whose shown samples did not change is
+not handed data again; the time axis still scrolls.  Each redraw settles the
+plots' ranges before the paint, or pyqtgraph would paint every frame twice.
+
+Beside the plots, a turning coordinate cross shows the platform's rotation
+(relative to the last Zero) while rotation is the plotted variable.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import QPointF, QRectF, QSize, Qt
+from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen, QPolygonF, QShowEvent
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDockWidget,
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QSizePolicy,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.telemetry import ROTATION_KEY, VARIABLES, WINDOW_CHOICES_S, TelemetryRecorder
+from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
+
+#: Curve colours per axis (X, Y, Z, then whatever else a profile has).
+AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b")
+VARIABLE_COLOUR = "#6a3d9a"
+_AXIS_TEXT = "#404040"
+
+
+def _window_label(seconds: float) -> str:
+    return f"{seconds:g} s" if seconds < 60 else f"{seconds / 60:g} min"
+
+
+def _common_unit(units: list[str]) -> str:
+    """The unit shared by all axes, or "" when they differ (a rotary axis beside linear ones)."""
+    return units[0] if units and all(u == units[0] for u in units) else ""
+
+
+class RotationCross(QWidget):
+    """A coordinate cross turned by the platform's angle (counter-clockwise positive).
+
+    A faint fixed cross marks the zero direction, so the turn reads at a
+    glance; ``angle`` is None while no rotation is being plotted.
+    """
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._angle: float | None = None
+        self.setMinimumSize(120, 120)
+        self.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
+        self.setToolTip("Platform rotation relative to the last Zero (counter-clockwise positive)")
+
+    @property
+    def angle(self) -> float | None:
+        return self._angle
+
+    def set_angle(self, degrees: float | None) -> None:
+        if degrees == self._angle:
+            return
+        self._angle = degrees
+        self.update()
+
+    def sizeHint(self) -> QSize:
+        return QSize(150, 150)
+
+    def heightForWidth(self, width: int) -> int:
+        return width
+
+    def paintEvent(self, _event: QPaintEvent) -> None:
+        painter = QPainter(self)
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        side = min(self.width(), self.height())
+        radius = side / 2 - 6
+        painter.translate(self.width() / 2, self.height() / 2)
+
+        painter.setPen(QPen(QColor("#c8c8c8"), 1))
+        painter.setBrush(QColor("#fafafa"))
+        painter.drawEllipse(QPointF(0, 0), radius, radius)
+        reference = QPen(QColor("#b0b0b0"), 1, Qt.PenStyle.DashLine)
+        painter.setPen(reference)
+        painter.drawLine(QPointF(-radius, 0), QPointF(radius, 0))
+        painter.drawLine(QPointF(0, -radius), QPointF(0, radius))
+
+        if self._angle is None:
+            painter.setPen(QColor("#909090"))
+            painter.drawText(
+                QRectF(-radius, -radius, 2 * radius, 2 * radius),
+                Qt.AlignmentFlag.AlignCenter,
+                "rotation\nnot plotted",
+            )
+            painter.end()
+            return
+
+        painter.rotate(-self._angle)  # screen y points down: negate for counter-clockwise
+        arm = radius * 0.85
+        self._draw_arm(painter, arm, 0, QColor(AXIS_COLOURS[0]), "x")
+        self._draw_arm(painter, 0, -arm, QColor(AXIS_COLOURS[1]), "y")
+        painter.setPen(QPen(QColor("#606060"), 1.5))
+        painter.drawLine(QPointF(-arm, 0), QPointF(0, 0))
+        painter.drawLine(QPointF(0, arm), QPointF(0, 0))
+        painter.setBrush(QColor("#404040"))
+        painter.drawEllipse(QPointF(0, 0), 3, 3)
+        painter.end()
+
+    @staticmethod
+    def _draw_arm(painter: QPainter, x: float, y: float, colour: QColor, label: str) -> None:
+        painter.setPen(QPen(colour, 2.5))
+        painter.setBrush(colour)
+        tip = QPointF(x, y)
+        painter.drawLine(QPointF(0, 0), tip)
+        length = math.hypot(x, y)
+        ux, uy = x / length, y / length  # along the arm
+        px, py = -uy, ux  # across it
+        head = 9.0
+        painter.drawPolygon(
+            QPolygonF(
+                [
+                    tip,
+                    QPointF(x - head * ux + head / 2 * px, y - head * uy + head / 2 * py),
+                    QPointF(x - head * ux - head / 2 * px, y - head * uy - head / 2 * py),
+                ]
+            )
+        )
+        font = QFont(painter.font())
+        font.setBold(True)
+        painter.setFont(font)
+        painter.drawText(QPointF(x - 14 * ux + 8 * px - 4, y - 14 * uy + 8 * py + 4), label)
+
+
+class TelemetryDock(QDockWidget):
+    """Plots, variable selector, rotation cross with Zero, Pause, window, Autoscale, exports."""
+
+    def __init__(self, recorder: TelemetryRecorder, parent: QWidget | None = None) -> None:
+        super().__init__("Telemetry", parent)
+        self.setObjectName("telemetry_dock")
+        self.recorder = recorder
+        self._drawn: dict[str, tuple[tuple[int, int, int], int]] = {}
+        self._curves: dict[str, pg.PlotDataItem] = {}
+
+        content = QWidget()
+        layout = QVBoxLayout(content)
+        layout.setContentsMargins(6, 4, 6, 6)
+        layout.setSpacing(4)
+        layout.addLayout(self._build_toolbar())
+        self.body = QWidget()
+        body_layout = QHBoxLayout(self.body)
+        body_layout.setContentsMargins(0, 0, 0, 0)
+        body_layout.setSpacing(6)
+        body_layout.addWidget(self._build_plots(), 1)
+        body_layout.addLayout(self._build_rotation_column())
+        layout.addWidget(self.body, 1)
+        self.setWidget(content)
+
+        recorder.updated.connect(self.redraw)
+        recorder.variableChanged.connect(self._show_variable)
+        self._show_variable()
+        self._show_window()
+        self.set_autoscale(True)
+        self.redraw()
+
+    # --- building ------------------------------------------------------------
+
+    def _build_toolbar(self) -> QHBoxLayout:
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        bar.addWidget(QLabel("Variable"))
+        self.variable_combo = QComboBox()
+        self.variable_combo.setObjectName("telemetry_variable")
+        self.variable_combo.setToolTip(
+            "Subscriber variable to plot; the station asks for it in every frame"
+            " the info panel does not need"
+        )
+        self.variable_combo.addItem("none", None)
+        for variable in VARIABLES:
+            self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
+        self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
+        bar.addWidget(self.variable_combo)
+
+        bar.addSpacing(10)
+        bar.addWidget(QLabel("Window"))
+        self.window_combo = QComboBox()
+        self.window_combo.setObjectName("telemetry_window")
+        for seconds in WINDOW_CHOICES_S:
+            self.window_combo.addItem(_window_label(seconds), seconds)
+        self.window_combo.currentIndexChanged.connect(self._window_chosen)
+        bar.addWidget(self.window_combo)
+
+        self.pause_button = QPushButton("Pause")
+        self.pause_button.setObjectName("telemetry_pause")
+        self.pause_button.setCheckable(True)
+        self.pause_button.setStyleSheet(CHECKED_BUTTON_STYLE)
+        self.pause_button.setToolTip("Freeze the plots; recording goes on")
+        self.pause_button.toggled.connect(self.set_paused)
+        self.autoscale_button = QPushButton("Autoscale")
+        self.autoscale_button.setObjectName("telemetry_autoscale")
+        self.autoscale_button.setCheckable(True)
+        self.autoscale_button.setStyleSheet(CHECKED_BUTTON_STYLE)
+        self.autoscale_button.setToolTip(
+            "Fit each plot's vertical range to what is shown (dragging a plot turns it off)"
+        )
+        self.autoscale_button.toggled.connect(self.set_autoscale)
+        self.csv_button = QPushButton("Export CSV…")
+        self.csv_button.setToolTip("Save the samples shown, with units, as CSV")
+        self.csv_button.clicked.connect(self._ask_csv)
+        self.png_button = QPushButton("Export PNG…")
+        self.png_button.setToolTip("Save the plots as an image")
+        self.png_button.clicked.connect(self._ask_png)
+        self.paused_label = QLabel("paused — recording goes on")
+        self.paused_label.setStyleSheet("color: #7a5200;")
+        self.paused_label.hide()
+        for widget in (self.pause_button, self.autoscale_button):
+            bar.addWidget(widget)
+        bar.addWidget(self.paused_label)
+        bar.addStretch(1)
+        bar.addWidget(self.csv_button)
+        bar.addWidget(self.png_button)
+        return bar
+
+    def _build_plots(self) -> pg.GraphicsLayoutWidget:
+        self.graphics = pg.GraphicsLayoutWidget()
+        self.graphics.setBackground("w")
+        self.graphics.setMinimumSize(360, 240)
+        self.graphics.ci.layout.setSpacing(2)
+        axes = self.recorder.model.axes
+        units = _common_unit([a.unit for a in axes])
+        self.position_plot = self._add_plot(0, "position", units)
+        self.velocity_plot = self._add_plot(1, "velocity", f"{units}/s" if units else "")
+        self.variable_plot = self._add_plot(2, "variable", "")
+        self.plots = (self.position_plot, self.velocity_plot, self.variable_plot)
+        for plot in self.plots[:-1]:
+            plot.setXLink(self.variable_plot)
+            plot.getAxis("bottom").setStyle(showValues=False)
+        self.variable_plot.setLabel("bottom", "time", units="s", color=_AXIS_TEXT)
+        for index, (position, velocity) in enumerate(
+            zip(self.recorder.position_names(), self.recorder.velocity_names(), strict=True)
+        ):
+            colour = AXIS_COLOURS[index % len(AXIS_COLOURS)]
+            name = axes[index].name
+            self._curves[position] = self._add_curve(self.position_plot, colour, name)
+            self._curves[velocity] = self._add_curve(self.velocity_plot, colour, name)
+        self.variable_curve = self._add_curve(self.variable_plot, VARIABLE_COLOUR, None)
+        return self.graphics
+
+    def _add_plot(self, row: int, title: str, unit: str) -> pg.PlotItem:
+        plot = self.graphics.addPlot(row=row, col=0)
+        plot.setDownsampling(auto=True, mode="peak")
+        plot.setClipToView(True)
+        plot.showGrid(x=True, y=True, alpha=0.25)
+        plot.hideButtons()
+        plot.setMenuEnabled(False)
+        plot.setMouseEnabled(x=False, y=True)
+        plot.enableAutoRange(x=False)
+        plot.getViewBox().sigRangeChangedManually.connect(self._range_dragged)
+        for side in ("left", "bottom"):
+            axis = plot.getAxis(side)
+            axis.setPen(pg.mkPen("#909090"))
+            axis.setTextPen(pg.mkPen(_AXIS_TEXT))
+            # Grid lines at the labelled ticks only: the finer levels' lines cost several
+            # milliseconds per plot per frame to draw, as the time axis moves every frame.
+            axis.setStyle(maxTickLevel=0)
+        plot.getAxis("left").setWidth(62)
+        label = f"{title} ({unit})" if unit else title
+        plot.setLabel("left", label, color=_AXIS_TEXT)
+        if row < 2:
+            plot.addLegend(
+                offset=(6, 2),
+                brush=pg.mkBrush(255, 255, 255, 210),
+                pen=pg.mkPen("#d0d0d0"),
+                labelTextColor=_AXIS_TEXT,
+                colCount=len(self.recorder.model.axes),
+            )
+        return plot
+
+    @staticmethod
+    def _add_curve(plot: pg.PlotItem, colour: str, name: str | None) -> pg.PlotDataItem:
+        # connect="all" as well: with the default "auto", pyqtgraph scans for NaNs anyway.
+        # Width 1: wider pens make pyqtgraph draw line segments one by one, several times
+        # slower than a 1-pixel polyline.
+        return plot.plot(
+            pen=pg.mkPen(colour, width=1),
+            name=name,
+            skipFiniteCheck=True,
+            connect="all",
+        )
+
+    def _build_rotation_column(self) -> QVBoxLayout:
+        column = QVBoxLayout()
+        column.setSpacing(4)
+        title = QLabel("Rotation")
+        title.setAlignment(Qt.AlignmentFlag.AlignHCenter)
+        self.cross = RotationCross()
+        self.cross.setObjectName("rotation_cross")
+        self.angle_label = QLabel("—")
+        self.angle_label.setObjectName("rotation_angle")
+        self.angle_label.setFont(monospace_font(2, bold=True))
+        self.angle_label.setAlignment(Qt.AlignmentFlag.AlignHCenter)
+        self.zero_button = QPushButton("Zero")
+        self.zero_button.setObjectName("rotation_zero")
+        self.zero_button.setToolTip("Make the present angle read 0°")
+        self.zero_button.clicked.connect(self.zero)
+        column.addWidget(title)
+        column.addWidget(self.cross)
+        column.addWidget(self.angle_label)
+        column.addWidget(self.zero_button)
+        column.addStretch(1)
+        return column
+
+    # --- operator actions ----------------------------------------------------
+
+    def set_paused(self, paused: bool) -> None:
+        if self.pause_button.isChecked() != paused:
+            self.pause_button.setChecked(paused)  # comes back here through toggled
+            return
+        self.recorder.set_paused(paused)
+        self.pause_button.setText("Paused" if paused else "Pause")
+        self.paused_label.setVisible(paused)
+
+    def set_autoscale(self, enabled: bool) -> None:
+        """Fit the vertical ranges to the shown data (on), or leave them where they are."""
+        if self.autoscale_button.isChecked() != enabled:
+            self.autoscale_button.setChecked(enabled)
+            return
+        for plot in self.plots:
+            view = plot.getViewBox()
+            if enabled:
+                view.setAutoVisible(y=True)
+                view.enableAutoRange(axis=pg.ViewBox.YAxis, enable=True)
+            else:
+                view.disableAutoRange(axis=pg.ViewBox.YAxis)
+
+    def zero(self) -> None:
+        self.recorder.zero()
+        self.redraw()
+
+    def export_csv(self, path: str | Path) -> int:
+        """Write the samples shown to ``path``; returns the number of rows."""
+        return self.recorder.export_csv(path)
+
+    def export_png(self, path: str | Path) -> None:
+        """Save the plots and the rotation cross as they are drawn now."""
+        self.redraw()
+        if not self.body.grab().save(str(path), "PNG"):
+            raise OSError(f"could not write {path}")
+
+    def _ask_csv(self) -> None:
+        path, _ = QFileDialog.getSaveFileName(
+            self, "Export telemetry as CSV", "telemetry.csv", "CSV files (*.csv)"
+        )
+        if path:
+            self.export_csv(path)
+
+    def _ask_png(self) -> None:
+        path, _ = QFileDialog.getSaveFileName(
+            self, "Export telemetry plots as PNG", "telemetry.png", "PNG images (*.png)"
+        )
+        if path:
+            self.export_png(path)
+
+    def _variable_chosen(self, index: int) -> None:
+        self.recorder.set_variable(self.variable_combo.itemData(index))
+
+    def _window_chosen(self, index: int) -> None:
+        self.recorder.set_window_s(float(self.window_combo.itemData(index)))
+
+    def _range_dragged(self, _changed: object) -> None:
+        """Dragging or zooming a plot by hand ends autoscaling, visibly."""
+        if self.autoscale_button.isChecked():
+            self.autoscale_button.blockSignals(True)
+            self.autoscale_button.setChecked(False)
+            self.autoscale_button.blockSignals(False)
+            for plot in self.plots:
+                plot.getViewBox().disableAutoRange(axis=pg.ViewBox.YAxis)
+
+    # --- recorder → view -----------------------------------------------------
+
+    def _show_variable(self, _subscriber: object = None) -> None:
+        variable = self.recorder.variable
+        index = self.variable_combo.findData(variable.subscriber if variable else None)
+        self.variable_combo.blockSignals(True)
+        self.variable_combo.setCurrentIndex(max(0, index))
+        self.variable_combo.blockSignals(False)
+        if variable is None:
+            self.variable_plot.setLabel("left", "variable (none)", color=_AXIS_TEXT)
+        else:
+            self.variable_plot.setLabel(
+                "left", f"{variable.name} ({variable.unit})", color=_AXIS_TEXT
+            )
+        rotation = variable is not None and variable.key == ROTATION_KEY
+        self.zero_button.setEnabled(rotation)
+        if not self.recorder.has_variables:
+            self.variable_combo.setEnabled(False)
+            self.variable_combo.setToolTip("This machine reports no subscriber variables")
+        self._drawn.pop("variable", None)
+        self.variable_curve.setData(np.empty(0), np.empty(0))
+        self.redraw()
+
+    def _show_window(self) -> None:
+        index = self.window_combo.findData(self.recorder.window_s)
+        self.window_combo.blockSignals(True)
+        self.window_combo.setCurrentIndex(max(0, index))
+        self.window_combo.blockSignals(False)
+
+    def redraw(self) -> None:
+        """Scroll the time axis and hand changed series to their curves."""
+        if not self.isVisible():
+            return  # a hidden dock costs nothing; showEvent catches up
+        recorder = self.recorder
+        end = recorder.view_end()
+        self.variable_plot.setXRange(end - recorder.window_s, end, padding=0)
+        for name, curve in self._curves.items():
+            self._update_curve(name, name, curve)
+        variable = recorder.variable_name
+        if variable is not None:
+            self._update_curve("variable", variable, self.variable_curve)
+        self._show_angle()
+        # Settle auto-ranges and view transforms now: left to the paint, they change the
+        # scene during it and every frame gets painted twice.
+        self.graphics.scene().prepareForPaint()
+
+    def _update_curve(self, slot: str, name: str, curve: pg.PlotDataItem) -> None:
+        points = self._max_points()
+        drawn = (self.recorder.revision(name), points)
+        if self._drawn.get(slot) == drawn:
+            return
+        self._drawn[slot] = drawn
+        t, y = self.recorder.envelope(name, points)
+        if len(t):
+            curve.setData(t, y)
+        else:
+            curve.setData(np.empty(0), np.empty(0))
+
+    def _max_points(self) -> int:
+        """One min/max pair per pixel of plot width: all a screen can show."""
+        width = int(self.variable_plot.getViewBox().width())
+        return 2 * max(200, width)
+
+    def _show_angle(self) -> None:
+        variable = self.recorder.variable
+        angle: float | None = None
+        if variable is not None and variable.key == ROTATION_KEY:
+            angle = self.recorder.latest(variable.name)
+        self.cross.set_angle(angle)
+        self.angle_label.setText("—" if angle is None else f"{angle:+.2f}°")
+
+    def showEvent(self, event: QShowEvent) -> None:
+        super().showEvent(event)
+        self._drawn.clear()
+        self.redraw()
