@@ -19,16 +19,17 @@ import re
 import threading
 from collections import deque
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, is_dataclass
 from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
 from app.machine import LinkState
+from app.session import MachineSession
 from app.stage_echoes import STATUS_TEXT
 from app.stage_parameters import BY_TYPE
-from app.stage_session import StageSession
 from app.station import Station
+from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.mechanism import SwitchName
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.stage.codec import (
@@ -47,6 +48,7 @@ from protocol.stage.codec import (
     encode_echo,
 )
 from protocol.transport.loopback import Direction, LoopbackTransport
+from protocol.usb3.codec import Rejected as Usb3Rejected
 
 # --- words for the wire's numbers ---------------------------------------------------
 
@@ -259,6 +261,22 @@ def _mm(value_um: int, unit: str, *, signed: bool = False) -> str:
     return f"{value_um / 1000:{'+' if signed else ''}.3f} {unit}"
 
 
+def describe_message(message: object) -> str:
+    """Other dialects' messages are small dataclasses: their fields read well enough."""
+    if is_dataclass(message) and not isinstance(message, type):
+        values = ", ".join(f"{f.name}={_plain(getattr(message, f.name))}" for f in fields(message))
+        return f"{type(message).__name__}({values})"
+    return repr(message)
+
+
+def _plain(value: object) -> str:
+    if isinstance(value, enum.Enum):
+        return value.name
+    if isinstance(value, tuple):
+        return "(" + ", ".join(_plain(v) for v in value) + ")"
+    return str(value)
+
+
 def describe_command(frame: CommandFrame, axis_names: Sequence[str], units: Sequence[str]) -> str:
     """A command frame in words: ``X JOG +1 | Y NOP | SS battery voltage``."""
     parts = [
@@ -427,7 +445,7 @@ class FrameLog(QObject):
         self._seq = 0
         self._paused = False
         self._held = False
-        self._session: StageSession | None = None
+        self._session: MachineSession | None = None
         self._axis_names = [axis.name for axis in station.model.axes]
         self._units = [axis.unit for axis in station.model.axes]
         self._raw_width = echo_frame_length(len(self._axis_names)) + 1
@@ -548,13 +566,17 @@ class FrameLog(QObject):
     def _on_sent(self, frame: object, raw: bytes) -> None:
         if isinstance(frame, CommandFrame):
             words = describe_command(frame, self._axis_names, self._units)
-            self._add(LogDirection.TX, raw, words)
+        else:
+            words = describe_message(frame)
+        self._add(LogDirection.TX, raw, words)
 
     def _on_received(self, frame: object, raw: bytes) -> None:
         if isinstance(frame, EchoFrame):
             self._add(LogDirection.RX, raw, describe_echo(frame, self._axis_names, self._units))
-        elif isinstance(frame, Rejected):
+        elif isinstance(frame, Rejected | Usb3Rejected):
             self._add(LogDirection.BAD, raw, f"rejected: {frame.reason}")
+        else:
+            self._add(LogDirection.RX, raw, describe_message(frame))
 
     def _on_injected(self, echo: object) -> None:
         if isinstance(echo, EchoFrame):
@@ -792,9 +814,9 @@ class EmulatorControls(QObject):
 
     def _emulator(self) -> StageFirmware | None:
         """The emulator to act on, or None: setters are ignored without one."""
-        return self._station.emulator if self.available else None
+        return self._station.stage_emulator if self.available else None
 
-    def _identity(self) -> tuple[bool, StageFirmware | None]:
+    def _identity(self) -> tuple[bool, EmulatedDevice | None]:
         available = self.available
         return available, self._station.emulator if available else None
 

@@ -67,7 +67,6 @@ class MachineModel(QObject):
         self.telemetry: dict[str, float] = {}
         self.block_reason: str | None = None
         self.sleeping = False
-        self.rejected_frames = 0
 
     # --- written by sessions -------------------------------------------------
 

@@ -52,6 +52,8 @@ class Capabilities:
     sleep: bool = False
     subscribers: bool = False
     stop_command: bool = False
+    speed_select: bool = False  # a fast/slow pair the operator switches between
+    parameters: bool = False  # device-stored dynamics the Dynamics page reads and writes
     pen: bool = False
     drill: bool = False
 

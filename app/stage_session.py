@@ -13,10 +13,11 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Sequence
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QObject, QTimer
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.session import MachineSession
 from app.stage_echoes import STATUS_TEXT as STATUS_TEXT  # re-exported for callers
 from app.stage_echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
 from app.stage_echoes import StageEchoes
@@ -71,10 +72,8 @@ class SubscriberScheduler:
         return choice
 
 
-class StageSession(QObject):
-    frameSent = Signal(object, bytes)  # CommandFrame, raw bytes
-    frameReceived = Signal(object, bytes)  # EchoFrame or Rejected, raw bytes
-    linkLost = Signal()
+class StageSession(MachineSession):
+    """frameSent carries CommandFrames; frameReceived EchoFrames or Rejected lines."""
 
     def __init__(
         self,
@@ -86,21 +85,15 @@ class StageSession(QObject):
         autotick: bool = True,
         parent: QObject | None = None,
     ) -> None:
-        super().__init__(parent)
-        self.model = model
-        self.link = link
-        self.clock = clock
-        self.axis_count = len(model.axes)
+        super().__init__(model, link, clock, parent)
         self.decoder = StageDecoder(self.axis_count)
         self._period_ms = period_ms or model.profile.period_ms
         self.subscribers = SubscriberScheduler(self._period_ms / 1000)
-        self._jog = [0] * self.axis_count
         self._release_repeats = [0] * self.axis_count
         self._urgent: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._background: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._read_in_last_frame = [False] * self.axis_count
         self.echoes = StageEchoes(model, clock)
-        self._fast_selected = True
         self._shift_held = False
         self._device_fast: bool | None = None
         self._last_echo: float | None = None
@@ -127,12 +120,8 @@ class StageSession(QObject):
         self.subscribers.plotted = subscriber
 
     @property
-    def fast_selected(self) -> bool:
-        return self._fast_selected
-
-    @property
-    def jog_vector(self) -> tuple[int, ...]:
-        return tuple(self._jog)
+    def rejected(self) -> int:
+        return self.decoder.rejected
 
     # --- operator intents ----------------------------------------------------
 
@@ -260,13 +249,6 @@ class StageSession(QObject):
         self._send_now()
         return True
 
-    def _refuse_motion(self) -> bool:
-        reason = self.model.motion_lock_reason()
-        if reason is not None:
-            self.model.message.emit(f"Motion refused: {reason}")
-            return True
-        return False
-
     def _sync_speed(self) -> None:
         fast = self._fast_selected != self._shift_held
         if fast == self._device_fast:
@@ -318,7 +300,6 @@ class StageSession(QObject):
     def _on_data(self, data: bytes) -> None:
         for result in self.decoder.feed(data):
             if isinstance(result, Rejected):
-                self.model.rejected_frames = self.decoder.rejected
                 self.frameReceived.emit(result, result.raw)
             elif isinstance(result, EchoFrame):
                 # The codec is canonical, so re-encoding gives back the bytes received.
@@ -328,7 +309,6 @@ class StageSession(QObject):
                 # A command frame arriving here is an echo of our own bytes (a looped
                 # cable, a misbehaving bridge): noise on this side, counted as such.
                 self.decoder.rejected += 1
-                self.model.rejected_frames = self.decoder.rejected
 
     # --- echoes into the model -----------------------------------------------
 

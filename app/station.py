@@ -15,14 +15,19 @@ from __future__ import annotations
 
 from PySide6.QtCore import QObject, QTimer, Signal
 
+from app.dialects import dialect_for
 from app.discovery import ble_uuids_for
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.profiles import MachineProfile
+from app.session import MachineSession
 from app.stage_echoes import StageEchoes
 from app.stage_session import StageSession
+from app.usb3_session import Usb3Session
 from protocol.clock import Clock, MonotonicClock
-from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.stage_firmware import StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.stage.codec import EchoFrame
 from protocol.transport.base import Transport
 from protocol.transport.ble import BleLoop, BleTransport
@@ -31,11 +36,6 @@ from protocol.transport.serial_link import SerialTransport
 
 RECONNECT_DELAYS = (0.5, 1.0, 2.0, 4.0)
 POLL_MS = 100
-
-
-def stage_config_for(profile: MachineProfile) -> StageConfig:
-    """The emulated stage built to the profile's axis count."""
-    return StageConfig(axes=len(profile.axes))
 
 
 class Station(QObject):
@@ -51,15 +51,14 @@ class Station(QObject):
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
-        if profile.dialect != "stage":
-            raise ValueError(f"the {profile.dialect!r} dialect is not supported yet")
+        self.dialect = dialect_for(profile)
         self.profile = profile
         self.clock: Clock = clock or MonotonicClock()
         self.realtime = realtime
         self.model = MachineModel(profile, self)
         self.link: Link | None = None
-        self.session: StageSession | None = None
-        self.emulator: StageFirmware | None = None
+        self.session: MachineSession | None = None
+        self.emulator: EmulatedDevice | None = None
         self.period_ms = profile.period_ms
         self.reconnect_delays: tuple[float, ...] = RECONNECT_DELAYS
         self._attempt = 0
@@ -75,6 +74,23 @@ class Station(QObject):
     def loopback(self) -> LoopbackTransport | None:
         transport = self.link.transport if self.link else None
         return transport if isinstance(transport, LoopbackTransport) else None
+
+    @property
+    def stage_session(self) -> StageSession | None:
+        """The session when it speaks the stage dialect (dynamics, subscribers, sleep)."""
+        return self.session if isinstance(self.session, StageSession) else None
+
+    @property
+    def usb3_session(self) -> Usb3Session | None:
+        return self.session if isinstance(self.session, Usb3Session) else None
+
+    @property
+    def stage_emulator(self) -> StageFirmware | None:
+        return self.emulator if isinstance(self.emulator, StageFirmware) else None
+
+    @property
+    def usb3_emulator(self) -> Usb3Firmware | None:
+        return self.emulator if isinstance(self.emulator, Usb3Firmware) else None
 
     @property
     def device_id(self) -> str | None:
@@ -98,8 +114,8 @@ class Station(QObject):
         life); without a link it still reaches the model, so the panels can be
         exercised with nothing connected.
         """
-        if self.session is not None:
-            self.session.apply_echo(echo)
+        if self.stage_session is not None:
+            self.stage_session.apply_echo(echo)
         else:
             self._detached_echoes.apply(echo)
         self.echoInjected.emit(echo)
@@ -108,7 +124,7 @@ class Station(QObject):
 
     def connect_emulator(self) -> None:
         """Connect to a fresh in-process emulated device on this station's clock."""
-        self.emulator = StageFirmware(self.clock, stage_config_for(self.profile))
+        self.emulator = self.dialect.emulator(self.clock, self.profile)
         self.connect_transport(LoopbackTransport(self.emulator, self.clock, realtime=self.realtime))
 
     def connect_serial(self, port: str, baudrate: int | None = None) -> None:
@@ -136,8 +152,8 @@ class Station(QObject):
     def connect_transport(self, transport: Transport) -> None:
         self.close_link()
         self.link = Link(transport, self)
-        self.session = StageSession(
-            self.model, self.link, self.clock, period_ms=self.period_ms, autotick=self.realtime
+        self.session = self.dialect.session(
+            self.model, self.link, self.clock, self.profile, self.period_ms, self.realtime
         )
         self.session.setParent(self)
         self.link.disconnected.connect(self._on_disconnected)

@@ -386,7 +386,7 @@ def test_shift_v_in_a_free_text_field_types_a_capital_v(
 ) -> None:
     window = _open_window(qtbot, harness)
     window.developer_pane.show()
-    field = window.developer_pane.filter_edit
+    field = window.developer_pane.log_view.filter_edit
     field.setFocus()
     qtbot.keyClick(field, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
     # QTest gives the key event the text "v"; what matters is that the field got it.

@@ -109,7 +109,7 @@ class DynamicsPanel(QWidget):
 
     def read(self) -> None:
         """Ask the device for every parameter; the answers replace the fields."""
-        session = self._station.session
+        session = self._station.stage_session
         if session is None:
             return
         self._edited.clear()
@@ -118,7 +118,7 @@ class DynamicsPanel(QWidget):
 
     def apply(self) -> int:
         """Write every edited, locally valid value; returns how many were sent."""
-        session = self._station.session
+        session = self._station.stage_session
         if session is None:
             return 0
         sent = 0

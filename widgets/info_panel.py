@@ -115,6 +115,11 @@ class InfoPanel(QFrame):
         self.power_note.setStyleSheet("color: #c06000;")
         column.addWidget(self.temperature)
         column.addWidget(self.power_note)
+        # Battery and temperature come from subscriber variables; machines without
+        # them (mains-powered units) do not show empty gauges.
+        has_telemetry = self._model.profile.capabilities.subscribers
+        for widget in (self.battery, self.temperature, self.power_note):
+            widget.setVisible(has_telemetry)
         return column
 
     # --- showing -------------------------------------------------------------

@@ -37,6 +37,7 @@ from PySide6.QtWidgets import (
 from app.machine import LinkState
 from app.settings import StationSettings
 from app.station import Station
+from app.telemetry import TelemetryRecorder
 from widgets.absolute_panel import AbsolutePanel
 from widgets.connection_panel import ConnectionPanel
 from widgets.developer_pane import DeveloperPane
@@ -47,6 +48,8 @@ from widgets.manual_panel import ManualPanel
 from widgets.menu_panel import MenuPanel
 from widgets.relative_panel import RelativePanel
 from widgets.static_panel import StaticPanel
+from widgets.telemetry_dock import TelemetryDock
+from widgets.usb3_panel import Usb3Panel
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
@@ -58,6 +61,7 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("Shift (held)", "Jog and move at the other speed"),
     ("Esc", "Stop everything, from anywhere in the window"),
     ("Alt+M / A / R / D / L", "Manual / Absolute / Relative / Dynamics / Link page"),
+    ("Ctrl+T", "Show or hide the telemetry plots"),
     ("Shift+V", "Show or hide the developer pane"),
     ("F1", "This list"),
 )
@@ -118,18 +122,33 @@ class MainWindow(QMainWindow):
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
-        self.absolute_panel = AbsolutePanel(station)
-        self.relative_panel = RelativePanel(station)
-        self.dynamics_panel = DynamicsPanel(station)
         self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
-        self.menu_panel.add_page("&Absolute", self.absolute_panel, "Move to a target (Alt+A)")
-        self.menu_panel.add_page("&Relative", self.relative_panel, "Move by an increment (Alt+R)")
-        # The widest page scrolls rather than forcing its width on the whole window.
-        dynamics_page = QScrollArea()
-        dynamics_page.setWidget(self.dynamics_panel)
-        dynamics_page.setWidgetResizable(True)
-        dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
-        self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
+        #: Every page with motion controls, for the motion lock.
+        self.motion_panels: list[ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel] = [
+            self.manual_panel
+        ]
+        if station.profile.dialect == "usb3":
+            self.usb3_panel = Usb3Panel(station)
+            self.menu_panel.add_page(
+                "A&xes", self.usb3_panel, "Move by mm, step size, thread (Alt+X)"
+            )
+            self.motion_panels.append(self.usb3_panel)
+        else:
+            self.absolute_panel = AbsolutePanel(station)
+            self.relative_panel = RelativePanel(station)
+            self.menu_panel.add_page("&Absolute", self.absolute_panel, "Move to a target (Alt+A)")
+            self.menu_panel.add_page(
+                "&Relative", self.relative_panel, "Move by an increment (Alt+R)"
+            )
+            self.motion_panels += [self.absolute_panel, self.relative_panel]
+        if station.profile.capabilities.parameters:
+            self.dynamics_panel = DynamicsPanel(station)
+            # The widest page scrolls rather than forcing its width on the whole window.
+            dynamics_page = QScrollArea()
+            dynamics_page.setWidget(self.dynamics_panel)
+            dynamics_page.setWidgetResizable(True)
+            dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
+            self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
         self.connection_panel = ConnectionPanel(station, StationSettings(settings))
         self.connection_panel.profileRequested.connect(self.profileRequested)
         self.menu_panel.add_page(
@@ -147,6 +166,7 @@ class MainWindow(QMainWindow):
         self._attach_session()
         self._update_lock()
         self._show_link_status()
+        self._build_telemetry_dock()
         self._build_developer_pane()
         self._restore_settings()
         self._install_filter()
@@ -167,6 +187,15 @@ class MainWindow(QMainWindow):
         layout.addWidget(self.lock_label)
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
+
+    def _build_telemetry_dock(self) -> None:
+        self.telemetry = TelemetryRecorder(self.station, parent=self)
+        self.telemetry_dock = TelemetryDock(self.telemetry, self)
+        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.telemetry_dock)
+        self.telemetry_dock.hide()
+        action = self.telemetry_dock.toggleViewAction()
+        action.setShortcut(QKeySequence("Ctrl+T"))
+        self.view_menu.addAction(action)
 
     def _build_developer_pane(self) -> None:
         """Shift+V shows and hides it, from any focus, like the original tool's extension."""
@@ -325,7 +354,7 @@ class MainWindow(QMainWindow):
         reason = self.model.motion_lock_reason()
         enabled = reason is None
         self.jog.set_enabled(enabled)
-        for panel in (self.manual_panel, self.absolute_panel, self.relative_panel):
+        for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
         self.lock_label.setText(f"Motion locked: {reason}")
         self.lock_label.setVisible(not enabled)
@@ -346,10 +375,12 @@ class MainWindow(QMainWindow):
         self.message_label.setToolTip(text)
 
     def _show_rejected(self, *_args: object) -> None:
-        self.rejected_label.setText(f"rejected frames: {self.model.rejected_frames}")
+        session = self.station.session
+        count = session.rejected if session is not None else 0
+        self.rejected_label.setText(f"rejected frames: {count}")
 
     def _attach_session(self) -> None:
-        # MachineModel.rejected_frames has no change signal: refresh on every received frame.
+        # The count changes with what arrives: refresh on every received frame.
         session = self.station.session
         if session is not None:
             session.frameReceived.connect(self._show_rejected)

@@ -43,7 +43,7 @@ class ManualPanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._jog = jog
-        self.jog_buttons: dict[tuple[int, int], QPushButton] = {}
+        self.jog_buttons: dict[tuple[int, ...], QPushButton] = {}
         self.home_buttons: list[QPushButton] = []
 
         grid = QGridLayout()
@@ -76,6 +76,9 @@ class ManualPanel(QWidget):
 
         cross = QHBoxLayout()
         cross.addLayout(grid)
+        if len(station.profile.axes) >= 3:
+            cross.addSpacing(18)
+            cross.addLayout(self._z_column(station.profile.axes[2].name))
         cross.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(12, 12, 12, 12)
@@ -84,7 +87,20 @@ class ManualPanel(QWidget):
         layout.addLayout(homes)
         layout.addStretch(1)
 
-    def _jog_button(self, label: str, directions: tuple[int, int]) -> QPushButton:
+    def _z_column(self, name: str) -> QVBoxLayout:
+        """Up and down for the third axis, beside the cross (PageUp / PageDown)."""
+        column = QVBoxLayout()
+        column.setSpacing(6)
+        for sign, direction, key in (("+", +1, "PageUp"), (MINUS, -1, "PageDown")):
+            button = self._jog_button(f"{name}{sign}", (0, 0, direction))
+            way = "up" if direction > 0 else "down"
+            button.setToolTip(f"Hold to jog {name} {way}  (key: {key})")
+            column.addWidget(button)
+            self.jog_buttons[(0, 0, direction)] = button
+        column.addStretch(1)
+        return column
+
+    def _jog_button(self, label: str, directions: tuple[int, ...]) -> QPushButton:
         button = QPushButton(label)
         button.setFixedSize(_BUTTON_SIZE)
         font = button.font()

@@ -28,10 +28,10 @@ class StationHarness:
         self.station = Station(profile or load_profile("xy-stage"), self.clock, realtime=False)
         self.written: list[bytes] = []
         self._next_tick = 0.0
+        # Hook each new link before it opens, so the frames sent at connect are recorded too.
+        self.station.sessionChanged.connect(self._record_link)
 
     def connect(self) -> None:
-        # Hook the new link before it opens, so the frames sent at connect are recorded too.
-        self.station.sessionChanged.connect(self._record_link)
         self.station.connect_emulator()
         self._next_tick = self.clock.now() + self.session.period_ms / 1000
 

@@ -1,0 +1,75 @@
+"""Which session and which emulated device serve each dialect.
+
+The station looks the profile's dialect up here, so a machine family is
+added by registering its session and emulator, not by editing the station.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from app.link import Link
+from app.machine import MachineModel
+from app.profiles import MachineProfile
+from app.session import MachineSession
+from app.stage_session import StageSession
+from app.usb3_session import Usb3Session
+from protocol.clock import Clock
+from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
+
+SessionFactory = Callable[[MachineModel, Link, Clock, MachineProfile, int, bool], MachineSession]
+EmulatorFactory = Callable[[Clock, MachineProfile], EmulatedDevice]
+
+
+@dataclass(frozen=True)
+class Dialect:
+    session: SessionFactory
+    emulator: EmulatorFactory
+
+
+def _stage_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return StageSession(model, link, clock, period_ms=period_ms, autotick=autotick)
+
+
+def _usb3_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return Usb3Session(
+        model, link, clock, autotick=autotick, stop_command=profile.capabilities.stop_command
+    )
+
+
+def _stage_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    return StageFirmware(clock, StageConfig(axes=len(profile.axes)))
+
+
+def _usb3_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    return Usb3Firmware(clock)
+
+
+DIALECTS: dict[str, Dialect] = {
+    "stage": Dialect(_stage_session, _stage_emulator),
+    "usb3": Dialect(_usb3_session, _usb3_emulator),
+}
+
+
+def dialect_for(profile: MachineProfile) -> Dialect:
+    try:
+        return DIALECTS[profile.dialect]
+    except KeyError:
+        raise ValueError(f"the {profile.dialect!r} dialect is not supported yet") from None

@@ -1,0 +1,99 @@
+"""What every dialect's session offers the widgets: operator intents and trace signals.
+
+Widgets hold a :class:`MachineSession` and never need to know the dialect;
+an intent a machine cannot carry out (absolute moves on the usb3 unit, sleep
+on a plotter) is refused with a message rather than silently ignored.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from PySide6.QtCore import QObject, Signal
+
+from app.link import Link
+from app.machine import MachineModel
+from protocol.clock import Clock
+
+
+class MachineSession(QObject):
+    frameSent = Signal(object, bytes)  # decoded message, raw bytes
+    frameReceived = Signal(object, bytes)  # decoded message or a rejected one, raw bytes
+    linkLost = Signal()  # the device fell silent: the station reopens the link
+
+    def __init__(
+        self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
+    ) -> None:
+        super().__init__(parent)
+        self.model = model
+        self.link = link
+        self.clock = clock
+        self.axis_count = len(model.axes)
+        self._jog = [0] * self.axis_count
+        self._fast_selected = True
+
+    # --- state the widgets read ------------------------------------------------
+
+    @property
+    def jog_vector(self) -> tuple[int, ...]:
+        return tuple(self._jog)
+
+    @property
+    def fast_selected(self) -> bool:
+        return self._fast_selected
+
+    @property
+    def period_ms(self) -> int:
+        return 100
+
+    @property
+    def rejected(self) -> int:
+        """Malformed replies dropped so far (shown in the status bar)."""
+        return 0
+
+    # --- intents: what a dialect cannot do is refused with a message ------------
+
+    def set_jog(self, directions: Sequence[int]) -> None:
+        if any(directions):
+            self._unsupported("jogging")
+
+    def stop_all(self) -> None:
+        self._unsupported("stop command")
+
+    def move_relative(self, axis: int, delta: float) -> bool:
+        return self._unsupported("relative moves")
+
+    def set_shift(self, held: bool) -> None:
+        """Shift selects the other jog speed where the machine has two."""
+
+    def select_speed(self, fast: bool) -> None:
+        self._fast_selected = fast
+
+    def move_absolute(self, axis: int, position: float) -> bool:
+        return self._unsupported("absolute moves")
+
+    def home(self, axis: int) -> bool:
+        return self._unsupported("homing")
+
+    def set_sleep(self, sleep: bool) -> None:
+        self._unsupported("sleep")
+
+    def set_period_ms(self, period_ms: int) -> None:
+        """Only periodic dialects have a period."""
+
+    def tick(self) -> None:
+        """One period of a periodic dialect (the harness calls it on the test clock)."""
+
+    def shutdown(self) -> None:
+        """Stop timers; the link is closed by the station."""
+
+    def _unsupported(self, what: str) -> bool:
+        self.model.message.emit(f"{self.model.profile.title} has no {what}")
+        return False
+
+    def _refuse_motion(self) -> bool:
+        reason = self.model.motion_lock_reason()
+        if reason is not None:
+            self.model.message.emit(f"Motion refused: {reason}")
+            return True
+        return False
