@@ -15,8 +15,10 @@ from PySide6.QtWidgets import QApplication
 from app.profiles import MachineProfile, load_profile
 from app.stage_session import StageSession
 from app.station import Station
+from app.usb3_session import Usb3Session
 from protocol.clock import ManualClock
 from protocol.emulator.stage_firmware import StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.transport.loopback import LoopbackTransport
 
 STEP_S = 0.005
@@ -33,7 +35,8 @@ class StationHarness:
 
     def connect(self) -> None:
         self.station.connect_emulator()
-        self._next_tick = self.clock.now() + self.session.period_ms / 1000
+        assert self.station.session is not None
+        self._next_tick = self.clock.now() + self.station.session.period_ms / 1000
 
     def _record_link(self) -> None:
         if self.station.link is not None:
@@ -41,13 +44,27 @@ class StationHarness:
 
     @property
     def session(self) -> StageSession:
-        assert self.station.session is not None
-        return self.station.session
+        session = self.station.stage_session
+        assert session is not None, "not connected to a stage"
+        return session
+
+    @property
+    def usb3_session(self) -> Usb3Session:
+        session = self.station.usb3_session
+        assert session is not None, "not connected to a usb3 unit"
+        return session
 
     @property
     def emulator(self) -> StageFirmware:
-        assert self.station.emulator is not None
-        return self.station.emulator
+        emulator = self.station.stage_emulator
+        assert emulator is not None, "no emulated stage"
+        return emulator
+
+    @property
+    def usb3_emulator(self) -> Usb3Firmware:
+        emulator = self.station.usb3_emulator
+        assert emulator is not None, "no emulated usb3 unit"
+        return emulator
 
     @property
     def loopback(self) -> LoopbackTransport:
@@ -57,9 +74,10 @@ class StationHarness:
 
     def step(self, seconds: float = STEP_S) -> None:
         self.clock.advance(seconds)
-        if self.station.session is not None and self.clock.now() >= self._next_tick - 1e-9:
-            self._next_tick += self.session.period_ms / 1000
-            self.session.tick()
+        session = self.station.session
+        if session is not None and self.clock.now() >= self._next_tick - 1e-9:
+            self._next_tick += session.period_ms / 1000
+            session.tick()
         self.station.poll()
         if self.station.loopback is not None:
             self.station.loopback.pump()
