@@ -48,6 +48,7 @@ from protocol.stage.codec import (
     encode_echo,
 )
 from protocol.transport.loopback import Direction, LoopbackTransport
+from protocol.usb3.codec import AxisId
 from protocol.usb3.codec import Rejected as Usb3Rejected
 
 # --- words for the wire's numbers ---------------------------------------------------
@@ -770,6 +771,12 @@ class EmulatorControls(QObject):
     def set_rotation_rate(self, dps: float) -> None:
         if (emulator := self._emulator()) is not None:
             emulator.rotation_rate_dps = dps
+
+    def set_joystick(self, axis: int, adc: int) -> None:
+        """The usb3 unit's joystick: ADC 0…1023 per axis, 500…524 is the dead zone."""
+        emulator = self._station.usb3_emulator
+        if emulator is not None and self.available:
+            emulator.set_joystick(AxisId(axis), max(0, min(1023, int(adc))))
 
     # --- faults ----------------------------------------------------------------------------
 

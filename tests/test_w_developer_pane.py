@@ -15,6 +15,7 @@ from pytestqt.qtbot import QtBot
 
 from app.developer import AxisFields, EchoFields, inject_echo
 from app.machine import LinkState
+from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus
 from tests.helpers.harness import StationHarness
 from tests.test_developer import RealDevice
@@ -395,3 +396,26 @@ def test_the_checkbox_follows_a_connection_made_elsewhere(
     assert pane.simulation.isChecked()
     harness.station.close_link()
     assert not pane.simulation.isChecked()
+
+
+def test_usb3_joystick_sliders_drive_the_unit_and_spring_back(qtbot: QtBot) -> None:
+    usb3 = StationHarness(load_profile("usb3"))
+    try:
+        usb3.connect()
+        pane = DeveloperPane(usb3.station)
+        qtbot.addWidget(pane)
+        pane.show()
+        assert pane.joystick_box.isVisible() and not pane.composer.isVisible()
+        assert pane.joystick_box.isEnabled()
+        x = pane.joystick_box.sliders[0]
+        x.setValue(1023)  # full deflection: the X motor runs forwards
+        usb3.run(1.0)
+        assert usb3.usb3_emulator.moving(0)
+        assert usb3.station.model.axes[0].position > 0
+        x.sliderReleased.emit()  # the operator lets go: the stick centres
+        assert x.value() == 512
+        usb3.run(1.0)
+        assert not usb3.usb3_emulator.moving(0)
+        assert not usb3.usb3_emulator.moving(1)
+    finally:
+        usb3.close()

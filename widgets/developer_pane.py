@@ -35,6 +35,7 @@ from PySide6.QtWidgets import (
     QPushButton,
     QScrollArea,
     QSizePolicy,
+    QSlider,
     QSpinBox,
     QSplitter,
     QVBoxLayout,
@@ -283,6 +284,31 @@ class EmulatorBox(QGroupBox):
         self._controls.corrupt_next(self.corrupt_count.value())
 
 
+JOYSTICK_CENTRE = 512
+
+
+class JoystickBox(QGroupBox):
+    """The usb3 unit's joystick as three sliders that spring back to the centre like the stick."""
+
+    def __init__(self, controls: EmulatorControls, axis_names: list[str]) -> None:
+        super().__init__("Joystick (usb3 unit)")
+        self._controls = controls
+        self.sliders: list[QSlider] = []
+        grid = QGridLayout(self)
+        for index, name in enumerate(axis_names):
+            slider = QSlider(Qt.Orientation.Horizontal)
+            slider.setRange(0, 1023)
+            slider.setValue(JOYSTICK_CENTRE)
+            slider.setToolTip(f"{name} stick: 500…524 is the dead zone; let go to centre it")
+            slider.valueChanged.connect(lambda value, a=index: controls.set_joystick(a, value))
+            slider.sliderReleased.connect(lambda s=slider: s.setValue(JOYSTICK_CENTRE))
+            grid.addWidget(QLabel(name), index, 0)
+            grid.addWidget(slider, index, 1)
+            self.sliders.append(slider)
+        controls.availabilityChanged.connect(self.setEnabled)
+        self.setEnabled(controls.available)
+
+
 class FrameLogView(QWidget):
     """The TX/RX log: filter, Pause, Clear, Save…, and a view redrawn in batches."""
 
@@ -451,10 +477,16 @@ class DeveloperPane(QDockWidget):
         self.simulation_note.setWordWrap(True)
         self.simulation_note.setStyleSheet(_ERROR_STYLE)
         self.simulation_note.hide()
+        axis_names = [axis.name for axis in station.model.axes]
+        stage = station.profile.dialect == "stage"
+        # The echo composer and the stage's environment only mean something on a stage;
+        # the usb3 unit's developer controls are its joystick.
         self.composer = EchoComposer(station)
-        self.emulator_box = EmulatorBox(
-            self.emulator_controls, [axis.name for axis in station.model.axes]
-        )
+        self.emulator_box = EmulatorBox(self.emulator_controls, axis_names)
+        self.joystick_box = JoystickBox(self.emulator_controls, axis_names)
+        self.composer.setVisible(stage)
+        self.emulator_box.setVisible(stage)
+        self.joystick_box.setVisible(station.profile.dialect == "usb3")
         self.log_view = FrameLogView(self.frame_log)
 
         self.setWidget(self._build(self._controls_column()))
@@ -469,6 +501,7 @@ class DeveloperPane(QDockWidget):
         layout.addWidget(self.simulation_note)
         layout.addWidget(self.composer)
         layout.addWidget(self.emulator_box)
+        layout.addWidget(self.joystick_box)
         layout.addStretch(1)
         scroll = QScrollArea()
         scroll.setWidget(column)
