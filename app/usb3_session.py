@@ -74,6 +74,8 @@ class Usb3Session(MachineSession):
         self.threads: list[Thread] = [DEFAULT_THREAD] * self.axis_count
         self._counts = [0] * self.axis_count
         self._last_report: list[float | None] = [None] * self.axis_count
+        #: ``C;`` was sent and the axis has not reported since: its next report is a new zero.
+        self._zeroing = [False] * self.axis_count
         self._stop_command = stop_command
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -121,12 +123,20 @@ class Usb3Session(MachineSession):
             wanted = [0] * self.axis_count
         if wanted == self._jog:
             return
-        released = any(old and not new for old, new in zip(self._jog, wanted, strict=True))
-        self._jog = wanted
-        if released and self._stop_command:
+        previous, self._jog = self._jog, wanted
+        released = any(old and not new for old, new in zip(previous, wanted, strict=True))
+        stopped_all = released and self._stop_command
+        if stopped_all:
             # S; stops every axis, so axes still held are started again right after.
             self._send(StopAll())
-        self._send_jog_lead(JOG_LEAD_S)
+        # Only axes that start (or were just stopped) get a lead: the others already have one,
+        # and a second would only lengthen the run-out on a unit without S;.
+        starting = [
+            axis
+            for axis, direction in enumerate(wanted)
+            if direction and (stopped_all or direction != previous[axis])
+        ]
+        self._send_jog_lead(JOG_LEAD_S, starting)
 
     def stop_all(self) -> None:
         self._jog = [0] * self.axis_count
@@ -136,6 +146,8 @@ class Usb3Session(MachineSession):
             self.model.message.emit("This unit has no stop command: it finishes its move")
 
     def zero_all(self) -> None:
+        if self.link.is_open:
+            self._zeroing = [True] * self.axis_count
         self._send(ZeroAll())
 
     def request_settings(self) -> None:
@@ -169,10 +181,10 @@ class Usb3Session(MachineSession):
 
     # --- the wire ---------------------------------------------------------------
 
-    def _send_jog_lead(self, seconds: float) -> None:
+    def _send_jog_lead(self, seconds: float, axes: Sequence[int] | None = None) -> None:
         counts = [0] * 3
         for axis, direction in enumerate(self._jog):
-            if direction:
+            if direction and (axes is None or axis in axes):
                 pulses = max(1, round(TOP_PULSE_RATE * seconds))
                 counts[axis] = direction * pulses * self.step_sizes[axis].counts_per_pulse
         self._send(*move_commands(counts))
@@ -196,6 +208,7 @@ class Usb3Session(MachineSession):
     def _on_connected(self) -> None:
         self.decoder.reset()
         self._jog = [0] * self.axis_count
+        self._zeroing = [False] * self.axis_count
         self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
         if self._autotick:
             self._timer.start()
@@ -213,6 +226,10 @@ class Usb3Session(MachineSession):
     def _on_data(self, data: bytes) -> None:
         for reply in self.decoder.feed(data):
             raw = reply.raw if isinstance(reply, Rejected) else encode(reply)
+            if isinstance(reply, NotUnderstood):
+                # Counted before the frame is announced, so a listener reading
+                # ``rejected`` (the status bar) sees this one too, as it does a Rejected.
+                self.not_understood += 1
             self.frameReceived.emit(reply, raw)
             if isinstance(reply, Rejected):
                 self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
@@ -226,7 +243,6 @@ class Usb3Session(MachineSession):
                 self._refresh_positions()
                 self.settingsChanged.emit()
             elif isinstance(reply, NotUnderstood):
-                self.not_understood += 1
                 self.model.message.emit("The unit did not understand a command (?;)")
 
     def _apply_position(self, axis: AxisId, count: int) -> None:
@@ -238,8 +254,19 @@ class Usb3Session(MachineSession):
         delta_mm = count_to_mm(count - self._counts[axis], self.threads[axis])
         self._counts[axis] = count
         position = count_to_mm(count, self.threads[axis])
+        if self._zeroing[axis]:
+            # The report C; asks for: the axis got a new origin, it did not move there.
+            self._zeroing[axis] = False
+            if last is None:
+                self.model.update_axis(
+                    axis, position=position, velocity=0.0, status_text="idle", moving=False
+                )
+            else:  # zeroed on the way: still moving, its speed measured from here on
+                self._last_report[axis] = now
+                self.model.update_axis(axis, position=position)
+            return
         if not moved:
-            # The report a stop (or C;) sends: the axis is standing still.
+            # A report that repeats the last count: the axis is standing still.
             self._last_report[axis] = None
             self.model.update_axis(
                 axis, position=position, velocity=0.0, status_text="idle", moving=False

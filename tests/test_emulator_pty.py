@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import os
 import selectors
 import signal
@@ -15,18 +16,30 @@ import pytest
 import serial
 
 from protocol.clock import ManualClock
-from protocol.emulator.__main__ import LinkError, main, make_link, open_pty, pump, remove_link
+from protocol.emulator.__main__ import (
+    ControlChannel,
+    LinkError,
+    ScaledClock,
+    main,
+    make_link,
+    open_pty,
+    pump,
+    remove_link,
+)
 from protocol.emulator.stage_firmware import StageFirmware
+from protocol.emulator.usb3_firmware import ADC_CENTRE, Usb3Firmware
 from protocol.stage.codec import (
     CommandFrame,
     CommandId,
     CommandPacket,
+    DeviceFlag,
     EchoFrame,
     StageDecoder,
     Subscriber,
     encode_command,
 )
 from protocol.usb3.codec import (
+    AxisId,
     GetSettings,
     ReplyDecoder,
     StepSize,
@@ -97,10 +110,14 @@ EMULATOR = [sys.executable, "-m", "protocol.emulator", "--profile", "xy-stage"]
 
 @contextmanager
 def running_emulator(*options: str, profile: str = "xy-stage") -> Iterator[Emulator]:
-    """The emulator process and the device path it printed; always ended on the way out."""
+    """The emulator process and the device path it printed; always ended on the way out.
+
+    With ``--controls`` its standard input is a pipe the test writes control lines to.
+    """
     command = [sys.executable, "-m", "protocol.emulator", "--profile", profile, *options]
+    stdin = subprocess.PIPE if "--controls" in options else subprocess.DEVNULL
     with subprocess.Popen(
-        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+        command, cwd=ROOT, stdin=stdin, stdout=subprocess.PIPE, stderr=subprocess.PIPE
     ) as process:
         try:
             assert process.stdout is not None
@@ -244,3 +261,330 @@ def test_the_emulator_refuses_to_replace_a_regular_file(tmp_path: Path) -> None:
     assert b"Traceback" not in result.stderr
     assert result.stdout == b""
     assert precious.read_text() == "notes"
+
+
+# --- --controls: the device's own controls on standard input ----------------------------
+
+
+@contextmanager
+def control_pipe() -> Iterator[tuple[int, int]]:
+    """``(read_end, write_end)`` of a pipe standing in for the emulator's standard input."""
+    read_end, write_end = os.pipe()
+    try:
+        yield read_end, write_end
+    finally:
+        for fd in (read_end, write_end):
+            try:
+                os.close(fd)
+            except OSError:
+                pass  # the test closed it already (end of input)
+
+
+def _feed(controls: ControlChannel, write_end: int, data: bytes) -> None:
+    """Write ``data`` to the control input and let the channel take it (it is readable now)."""
+    os.write(write_end, data)
+    controls.read()
+
+
+def _lines(errors: io.StringIO) -> list[str]:
+    return errors.getvalue().splitlines()
+
+
+def test_a_menu_line_reaches_the_host_as_the_units_own_report() -> None:
+    master, slave, _ = open_pty()
+    try:
+        with control_pipe() as (read_end, write_end):
+            clock = ManualClock()
+            unit = Usb3Firmware(clock)
+            outbox = bytearray()
+            unit.set_output(outbox.extend)
+            errors = io.StringIO()
+            controls = ControlChannel(unit, read_end, errors)
+            os.write(write_end, b"menu M5 3 3\n")
+
+            pump(unit, master, clock, outbox, REPLY_TIMEOUT, controls)  # the line is read
+            clock.advance(0.005)
+            pump(unit, master, clock, outbox, 0.0, controls)  # a cycle sends the report
+
+            assert unit.step_sizes == (StepSize.THIRTY_SECOND, StepSize.EIGHTH, StepSize.EIGHTH)
+            with selectors.DefaultSelector() as selector:
+                selector.register(slave, selectors.EVENT_READ)
+                assert selector.select(REPLY_TIMEOUT), "no report on the terminal"
+            assert os.read(slave, 4096) == b"M533;T444;"
+            assert errors.getvalue() == ""
+            assert (controls.applied, controls.refused) == (1, 0)
+    finally:
+        os.close(master)
+        os.close(slave)
+
+
+@pytest.mark.parametrize(
+    ("line", "sizes", "threads"),
+    [
+        ("menu M533", (5, 3, 3), (4, 4, 4)),
+        ("MENU m0 1 2", (0, 1, 2), (4, 4, 4)),
+        ("menu T6 5 0", (3, 3, 3), (6, 5, 0)),
+        ("menu M111 T222", (1, 1, 1), (2, 2, 2)),
+        ("  menu   M 4 4 4  ", (4, 4, 4), (4, 4, 4)),
+    ],
+)
+def test_menu_lines_set_step_sizes_and_threads_as_the_wire_digits(
+    line: str, sizes: tuple[int, int, int], threads: tuple[int, int, int]
+) -> None:
+    unit = Usb3Firmware(ManualClock())
+    errors = io.StringIO()
+    controls = ControlChannel(unit, -1, errors)
+    assert controls.execute(line)
+    assert unit.step_sizes == tuple(StepSize(v) for v in sizes)
+    assert unit.threads == tuple(Thread(v) for v in threads)
+    assert errors.getvalue() == ""
+
+
+def test_control_lines_split_across_reads_act_once_whole() -> None:
+    clock = ManualClock()
+    unit = Usb3Firmware(clock)
+    with control_pipe() as (read_end, write_end):
+        controls = ControlChannel(unit, read_end, io.StringIO())
+        _feed(controls, write_end, b"joy")
+        _feed(controls, write_end, b"stick X 10")
+        assert unit.joystick(AxisId.X) == ADC_CENTRE  # not a whole line yet
+        _feed(controls, write_end, b"23\nmenu T5")
+        assert unit.joystick(AxisId.X) == 1023
+        assert unit.threads == (Thread.M6,) * 3
+        _feed(controls, write_end, b"55\r\n")  # a terminal's CR LF is fine too
+        assert unit.threads == (Thread.M8,) * 3
+        assert (controls.applied, controls.refused) == (2, 0)
+    clock.advance(1.0)
+    unit.run_until(clock.now())
+    assert unit.moving(AxisId.X) and unit.positions[0] > 0  # the joystick drives the motor
+
+
+USB3_BAD_LINES = [
+    "bogus",
+    "menu",
+    "menu M6 3 3",  # step digits are 0…5
+    "menu T7 0 0",  # thread digits are 0…6
+    "menu M53",
+    "menu X533",
+    "menu M533 junk",
+    "joystick",
+    "joystick X",
+    "joystick Q 600",
+    "joystick X 2000",
+    "joystick X -1",
+    "joystick X fast",
+    "charger on",  # the stage's, not the unit's
+]
+
+
+@pytest.mark.parametrize("line", USB3_BAD_LINES)
+def test_a_line_that_is_no_usb3_control_is_reported_in_one_line_and_changes_nothing(
+    line: str,
+) -> None:
+    clock = ManualClock()
+    unit = Usb3Firmware(clock)
+    out = bytearray()
+    unit.set_output(out.extend)
+    errors = io.StringIO()
+    controls = ControlChannel(unit, -1, errors)
+
+    assert not controls.execute(line)
+
+    said = _lines(errors)
+    assert len(said) == 1 and said[0].startswith("stepdeck-emulator: "), said
+    assert (controls.applied, controls.refused) == (0, 1)
+    assert unit.step_sizes == (StepSize.EIGHTH,) * 3
+    assert unit.threads == (Thread.M6,) * 3
+    assert all(unit.joystick(axis) == ADC_CENTRE for axis in AxisId)
+    clock.advance(0.1)
+    unit.run_until(clock.now())
+    assert out == b""  # nothing reached the host
+
+
+def test_stage_controls_set_the_firmwares_attributes() -> None:
+    stage = StageFirmware(ManualClock())
+    errors = io.StringIO()
+    controls = ControlChannel(stage, -1, errors)
+    for line in ("charger on", "usb ON", "battery 12.5", "temperature 41.5", "rotation -3"):
+        assert controls.execute(line), line
+    assert stage.charger_connected and stage.usb_connected
+    assert stage.battery_charge == 12.5
+    assert stage.board_temperature_c == 41.5
+    assert stage.rotation_rate_dps == -3.0
+    assert controls.execute("charger off") and controls.execute("usb off")
+    assert not stage.charger_connected and not stage.usb_connected
+    assert errors.getvalue() == ""
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "charger maybe",
+        "charger",
+        "usb on off",
+        "battery 150",
+        "battery nan",
+        "temperature hot",
+        "rotation",
+        "menu M533",
+        "joystick X 1023",
+        "reboot",
+    ],
+)
+def test_a_line_that_is_no_stage_control_is_reported_and_changes_nothing(line: str) -> None:
+    stage = StageFirmware(ManualClock())
+    before = (stage.charger_connected, stage.usb_connected, stage.battery_charge)
+    errors = io.StringIO()
+    assert not ControlChannel(stage, -1, errors).execute(line)
+    assert len(_lines(errors)) == 1
+    assert (stage.charger_connected, stage.usb_connected, stage.battery_charge) == before
+
+
+def test_help_blank_lines_and_comments() -> None:
+    errors = io.StringIO()
+    controls = ControlChannel(Usb3Firmware(ManualClock()), -1, errors)
+    assert controls.execute("")
+    assert controls.execute("   ")
+    assert controls.execute("# the operator sets X to 1/32")
+    assert errors.getvalue() == ""
+    assert controls.execute("help")
+    (said,) = _lines(errors)
+    assert "menu [M<mx><my><mz>] [T<tx><ty><tz>]" in said and "joystick X|Y|Z" in said
+    assert (controls.applied, controls.refused) == (0, 0)
+
+
+def test_the_end_of_the_control_input_applies_a_last_unfinished_line_and_stops_watching() -> None:
+    master, slave, _ = open_pty()
+    try:
+        with control_pipe() as (read_end, write_end):
+            clock = ManualClock()
+            unit = Usb3Firmware(clock)
+            outbox = bytearray()
+            unit.set_output(outbox.extend)
+            errors = io.StringIO()
+            controls = ControlChannel(unit, read_end, errors)
+            os.write(write_end, b"menu M000")  # no newline: the input ends here
+            os.close(write_end)
+
+            pump(unit, master, clock, outbox, REPLY_TIMEOUT, controls)
+            pump(unit, master, clock, outbox, REPLY_TIMEOUT, controls)
+
+            assert not controls.open
+            assert unit.step_sizes == (StepSize.FULL,) * 3
+            assert _lines(errors) == [
+                "stepdeck-emulator: end of the control input; the device is still served"
+            ]
+            # The loop goes on serving the terminal without the (ever readable) input.
+            clock.advance(0.005)
+            pump(unit, master, clock, outbox, 0.0, controls)
+            assert os.read(slave, 4096) == b"M000;T444;"
+    finally:
+        os.close(master)
+        os.close(slave)
+
+
+def test_an_over_long_control_line_is_dropped_whole_once() -> None:
+    unit = Usb3Firmware(ManualClock())
+    with control_pipe() as (read_end, write_end):
+        errors = io.StringIO()
+        controls = ControlChannel(unit, read_end, errors)
+        _feed(controls, write_end, b"menu M" + b"5" * 2000)
+        _feed(controls, write_end, b"5" * 2000)
+        _feed(controls, write_end, b"55\nmenu M111\n")
+        assert unit.step_sizes == (StepSize.HALF,) * 3  # the next line acts
+        said = _lines(errors)
+        assert len(said) == 1 and "longer than 1024 bytes" in said[0]
+        assert (controls.applied, controls.refused) == (1, 1)
+
+
+def test_scaled_clock_runs_faster_than_its_base() -> None:
+    base = ManualClock(start=100.0)
+    clock = ScaledClock(20, base)
+    assert clock.now() == 100.0
+    base.advance(0.5)
+    assert clock.now() == pytest.approx(110.0)
+    for factor in (0.0, -1.0, float("inf"), float("nan")):
+        with pytest.raises(ValueError):
+            ScaledClock(factor, base)
+
+
+@pytest.mark.parametrize("factor", ["0", "-2", "fast", "inf"])
+def test_a_time_scale_that_is_not_a_positive_number_is_refused(
+    factor: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    with pytest.raises(SystemExit) as exit_info:
+        main(["--pty", "--time-scale", factor])
+    assert exit_info.value.code == 2
+    assert "must be a positive number" in capsys.readouterr().err
+
+
+def test_controls_and_time_scale_are_in_the_help(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    text = capsys.readouterr().out
+    for expected in (
+        "--controls",
+        "--time-scale F",
+        "menu [M<mx><my><mz>] [T<tx><ty><tz>]",
+        "joystick X|Y|Z <0…1023>",
+        "charger on|off",
+        "usb on|off",
+    ):
+        assert expected in text, expected
+
+
+def _control(process: subprocess.Popen[bytes], line: str) -> None:
+    assert process.stdin is not None
+    process.stdin.write(line.encode() + b"\n")
+    process.stdin.flush()
+
+
+def test_usb3_emulator_process_takes_control_lines_on_its_standard_input() -> None:
+    with running_emulator("--pty", "--controls", profile="usb3") as (process, path):
+        with serial.Serial(path, 19200, timeout=REPLY_TIMEOUT) as port:
+            _control(process, "menu M5 3 3")
+            assert port.read_until(b";") + port.read_until(b";") == b"M533;T444;"
+
+            _control(process, "nonsense")  # reported, ignored: the next line still acts
+            _control(process, "joystick X 1023")
+            reports = ReplyDecoder().feed(port.read_until(b";") + port.read_until(b";"))
+            assert [type(r).__name__ for r in reports] == ["Position", "Position"]
+            _control(process, "joystick X 512")  # centred: the motor stops
+
+            port.write(encode(GetSettings()))  # and the wire is served all along
+            replies = port.read_until(b"M533;T444;")
+            assert replies.endswith(b"M533;T444;")
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=5) == 0
+        assert process.stderr is not None
+        errors = process.stderr.read().decode()
+    assert "Traceback" not in errors
+    assert errors.count("unknown control") == 1
+    assert "stepdeck-emulator: unknown control 'nonsense' (try help)" in errors.splitlines()
+
+
+DEVICE_FLAGS_QUERY = encode_command(
+    CommandFrame(
+        (CommandPacket(CommandId.NOP), CommandPacket(CommandId.NOP)), Subscriber.DEVICE_FLAGS
+    )
+)
+
+
+def test_stage_emulator_process_plugs_the_charger_in_from_its_standard_input() -> None:
+    with running_emulator("--pty", "--controls") as (process, path):
+        with serial.Serial(path, 115200, timeout=REPLY_TIMEOUT) as port:
+            port.write(DEVICE_FLAGS_QUERY)
+            assert not _decode_one(port.read_until(b"\n")).sdata & DeviceFlag.CHARGER
+            _control(process, "charger on")
+            # The control line and the query travel different pipes: ask until it shows,
+            # a bounded number of times.
+            for _ in range(20):
+                port.write(DEVICE_FLAGS_QUERY)
+                echo = _decode_one(port.read_until(b"\n"))
+                assert echo.subscriber == Subscriber.DEVICE_FLAGS
+                if echo.sdata & DeviceFlag.CHARGER:
+                    break
+            else:
+                pytest.fail("the charger never showed in the device flags")
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=5) == 0

@@ -8,7 +8,14 @@ distance that will really be moved next to the one typed.
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QComboBox, QGridLayout, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDoubleSpinBox,
+    QGridLayout,
+    QLabel,
+    QPushButton,
+    QWidget,
+)
 
 from app.station import Station
 from app.usb3_session import Usb3Session
@@ -21,7 +28,7 @@ class Usb3Panel(QWidget):
         super().__init__(parent)
         self._station = station
         self._watched: Usb3Session | None = None
-        self.distances = []
+        self.distances: list[QDoubleSpinBox] = []
         self.reachable: list[QLabel] = []
         self.step_combos: list[QComboBox] = []
         self.thread_combos: list[QComboBox] = []

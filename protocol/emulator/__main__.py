@@ -14,25 +14,46 @@ A pty gets a new number every time, so ``--link PATH`` also puts a symlink at
 a fixed path (as socat's ``link=`` does): an emulator restarted on the same
 link looks to the station like a cable plugged back in, and the station's
 reconnection finds it there.
+
+``--controls`` also reads control lines on standard input, in the same loop
+as the terminal, so a test or a developer can act on the device's own
+controls (the usb3 unit's menu and joystick, the stage's charger and USB)
+that the station only ever sees as what the device then reports::
+
+    menu M533 T444        usb3: the unit's menu sets step sizes and/or threads
+    joystick X 1023       usb3: the X joystick reads 1023 (centred 500…524)
+    charger on            xy-stage: plug the charger in (off unplugs it)
+
+``help`` lists the controls of the running profile; a line that is not a
+control gets a one-line error on standard error and changes nothing.
+
+``--time-scale F`` runs the firmware's clock F times faster than real time,
+for tests and dry runs that would otherwise wait out the unit's slow moves.
 """
 
 from __future__ import annotations
 
 import argparse
+import functools
+import math
 import os
+import re
 import select
 import signal
 import sys
 import threading
 import tty
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from types import FrameType
+from typing import Generic, TextIO, TypeVar
 
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.stage_firmware import StageFirmware
-from protocol.emulator.usb3_firmware import Usb3Firmware
+from protocol.emulator.usb3_firmware import ADC_MAX, Usb3Firmware
+from protocol.usb3.codec import AxisId, StepSize, Thread
 
 DeviceFactory = Callable[[Clock], EmulatedDevice]
 
@@ -43,6 +64,274 @@ DEFAULT_PROFILE = "xy-stage"
 #: How long one loop iteration waits for host bytes: well inside a 5 ms control
 #: cycle, so echoes leave within the 20 ms the contract allows.
 POLL_SECONDS = 0.002
+
+#: A control line longer than this is nobody's command: it is dropped whole.
+MAX_CONTROL_LINE = 1024
+
+
+class ScaledClock:
+    """Real time run ``factor`` times faster from the moment it was made (``--time-scale``)."""
+
+    def __init__(self, factor: float, base: Clock | None = None) -> None:
+        if not (math.isfinite(factor) and factor > 0):
+            raise ValueError(f"the time scale must be a positive number, got {factor!r}")
+        self.factor = factor
+        self._base: Clock = base if base is not None else MonotonicClock()
+        self._origin = self._base.now()
+
+    def now(self) -> float:
+        return self._origin + (self._base.now() - self._origin) * self.factor
+
+
+# --- the device's own controls, on standard input (--controls) -------------------------
+
+
+class ControlError(ValueError):
+    """A control line that cannot be applied; the message says why."""
+
+
+_D = TypeVar("_D")
+
+
+@dataclass(frozen=True)
+class Control(Generic[_D]):
+    """One control of a device: how to write it, what it does, and doing it."""
+
+    usage: str
+    summary: str
+    apply: Callable[[_D, Sequence[str]], None]
+
+
+def _one(args: Sequence[str], what: str) -> str:
+    if len(args) != 1:
+        raise ControlError(f"expected {what}")
+    return args[0]
+
+
+def _on_off(args: Sequence[str]) -> bool:
+    word = _one(args, "on or off").lower()
+    if word not in ("on", "off"):
+        raise ControlError(f"expected on or off, got {word!r}")
+    return word == "on"
+
+
+def _number(args: Sequence[str], what: str) -> float:
+    text = _one(args, what)
+    try:
+        value = float(text)
+    except ValueError:
+        raise ControlError(f"expected {what}, got {text!r}") from None
+    if not math.isfinite(value):
+        raise ControlError(f"expected {what}, got {text!r}")
+    return value
+
+
+_MENU_FIELD = re.compile(r"([MT])([0-9]{3})")
+
+
+def _usb3_menu(unit: Usb3Firmware, args: Sequence[str]) -> None:
+    """``menu M533``, ``menu M5 3 3``, ``menu T444`` or both: the digits of the wire."""
+    spec = "".join(args).upper()
+    if not spec or _MENU_FIELD.sub("", spec):
+        raise ControlError("expected M<mx><my><mz> and/or T<tx><ty><tz>, e.g. M533 or M5 3 3")
+    sizes: list[StepSize] | None = None
+    threads: list[Thread] | None = None
+    for kind, digits in _MENU_FIELD.findall(spec):
+        values = [int(d) for d in digits]
+        if kind == "M":
+            if max(values) > max(StepSize):
+                raise ControlError(f"step size digits are 0…{max(StepSize):d} (1/2^m step)")
+            sizes = [StepSize(v) for v in values]
+        else:
+            if max(values) > max(Thread):
+                raise ControlError(f"thread digits are 0…{max(Thread):d} (M2 … M10)")
+            threads = [Thread(v) for v in values]
+    unit.menu_set(step_sizes=sizes, threads=threads)
+
+
+def _usb3_joystick(unit: Usb3Firmware, args: Sequence[str]) -> None:
+    if len(args) != 2:
+        raise ControlError("expected an axis and a reading")
+    name, reading = args
+    try:
+        axis = AxisId[name.upper()]
+    except KeyError:
+        raise ControlError(f"no axis {name!r}: X, Y or Z") from None
+    try:
+        adc = int(reading)
+    except ValueError:
+        raise ControlError(f"the reading must be a whole number, got {reading!r}") from None
+    unit.set_joystick(axis, adc)
+
+
+def _stage_charger(stage: StageFirmware, args: Sequence[str]) -> None:
+    stage.charger_connected = _on_off(args)
+
+
+def _stage_usb(stage: StageFirmware, args: Sequence[str]) -> None:
+    stage.usb_connected = _on_off(args)
+
+
+def _stage_battery(stage: StageFirmware, args: Sequence[str]) -> None:
+    percent = _number(args, "a charge in %")
+    if not 0 <= percent <= 100:
+        raise ControlError(f"the charge must be 0…100 %, got {percent:g}")
+    stage.battery_charge = percent
+
+
+def _stage_temperature(stage: StageFirmware, args: Sequence[str]) -> None:
+    stage.board_temperature_c = _number(args, "a temperature in °C")
+
+
+def _stage_rotation(stage: StageFirmware, args: Sequence[str]) -> None:
+    stage.rotation_rate_dps = _number(args, "a rotation rate in °/s")
+
+
+USB3_CONTROLS: dict[str, Control[Usb3Firmware]] = {
+    "menu": Control(
+        "menu [M<mx><my><mz>] [T<tx><ty><tz>]",
+        "the unit's menu sets step sizes (0…5: 1/2^m) and/or threads (0…6: M2…M10)",
+        _usb3_menu,
+    ),
+    "joystick": Control(
+        f"joystick X|Y|Z <0…{ADC_MAX}>",
+        "that axis's joystick now reads this (centred 500…524)",
+        _usb3_joystick,
+    ),
+}
+
+STAGE_CONTROLS: dict[str, Control[StageFirmware]] = {
+    "charger": Control("charger on|off", "plug the charger in or pull it", _stage_charger),
+    "usb": Control("usb on|off", "plug the USB cable in or pull it", _stage_usb),
+    "battery": Control("battery <0…100>", "set the battery's charge in %", _stage_battery),
+    "temperature": Control("temperature <°C>", "set the board temperature", _stage_temperature),
+    "rotation": Control("rotation <°/s>", "set the IMU's rotation rate", _stage_rotation),
+}
+
+#: The controls of each profile's device, for --help.
+PROFILE_CONTROLS: Mapping[str, Mapping[str, Control[Usb3Firmware] | Control[StageFirmware]]] = {
+    "usb3": USB3_CONTROLS,
+    "xy-stage": STAGE_CONTROLS,
+}
+
+
+@dataclass(frozen=True)
+class BoundControl:
+    """A control of one particular device: ``apply(args)`` acts on it."""
+
+    usage: str
+    apply: Callable[[Sequence[str]], None]
+
+
+def controls_for(device: EmulatedDevice) -> dict[str, BoundControl]:
+    """The controls ``device`` has, each bound to it; none for an unknown device."""
+    if isinstance(device, Usb3Firmware):
+        return {
+            name: BoundControl(c.usage, functools.partial(c.apply, device))
+            for name, c in USB3_CONTROLS.items()
+        }
+    if isinstance(device, StageFirmware):
+        return {
+            name: BoundControl(c.usage, functools.partial(c.apply, device))
+            for name, c in STAGE_CONTROLS.items()
+        }
+    return {}
+
+
+def _controls_help() -> str:
+    lines = ["controls, with --controls: one per line on standard input (help lists them)"]
+    for profile, controls in PROFILE_CONTROLS.items():
+        lines.append(f"  {profile}:")
+        for control in controls.values():
+            lines += [f"    {control.usage}", f"        {control.summary}"]
+    lines.append("  every profile: help")
+    return "\n".join(lines)
+
+
+class ControlChannel:
+    """Control lines from ``fd`` (standard input), applied to the device line by line.
+
+    The loop's ``select`` says when the descriptor is readable; :meth:`read`
+    then takes what is there with one ``read``, which returns at once.  The
+    descriptor itself is left blocking: it may be the developer's terminal,
+    shared with the shell, which must not find it non-blocking afterwards.
+    Nothing read here ever raises: a line that is not a control is reported
+    on ``errors`` (standard error) in one line and ignored.
+    """
+
+    def __init__(self, device: EmulatedDevice, fd: int, errors: TextIO | None = None) -> None:
+        self.fd = fd
+        #: False once the input has ended; the device goes on being served.
+        self.open = True
+        self.applied = 0
+        self.refused = 0
+        self._controls = controls_for(device)
+        self._errors = errors
+        self._buffer = bytearray()
+        self._discarding = False
+
+    def read(self) -> None:
+        """Take the bytes waiting on the descriptor and apply every complete line."""
+        try:
+            data = os.read(self.fd, 4096)
+        except BlockingIOError:
+            return
+        except OSError as exc:
+            self._say(f"controls closed: {exc.strerror or exc}")
+            self.open = False
+            return
+        if not data:
+            self.open = False
+            if self._buffer and not self._discarding:
+                self.execute(self._buffer.decode(errors="replace"))
+            self._buffer.clear()
+            self._say("end of the control input; the device is still served")
+            return
+        self._buffer += data
+        while (end := self._buffer.find(b"\n")) >= 0:
+            line = bytes(self._buffer[:end])
+            del self._buffer[: end + 1]
+            if self._discarding:
+                self._discarding = False
+            else:
+                self.execute(line.decode(errors="replace"))
+        if len(self._buffer) > MAX_CONTROL_LINE:
+            self._buffer.clear()
+            if not self._discarding:
+                self._discarding = True
+                self.refused += 1
+                self._say(f"control line longer than {MAX_CONTROL_LINE} bytes dropped")
+
+    def execute(self, line: str) -> bool:
+        """Apply one control line; False, with a one-line error, when it is not one."""
+        words = line.split()
+        if not words or words[0].startswith("#"):
+            return True
+        name, args = words[0].lower(), words[1:]
+        if name == "help":
+            self._say(self.help())
+            return True
+        bound = self._controls.get(name)
+        if bound is None:
+            self.refused += 1
+            self._say(f"unknown control {line.strip()!r} (try help)")
+            return False
+        try:
+            bound.apply(args)
+        except ValueError as exc:  # ControlError, or a value the firmware refuses
+            self.refused += 1
+            self._say(f"{name}: {exc} (usage: {bound.usage})")
+            return False
+        self.applied += 1
+        return True
+
+    def help(self) -> str:
+        if not self._controls:
+            return "this device has no controls"
+        return "controls: " + "; ".join(c.usage for c in self._controls.values()) + "; help"
+
+    def _say(self, text: str) -> None:
+        print(f"stepdeck-emulator: {text}", file=self._errors or sys.stderr, flush=True)
 
 
 def open_pty() -> tuple[int, int, str]:
@@ -60,16 +349,26 @@ def open_pty() -> tuple[int, int, str]:
 
 
 def pump(
-    firmware: EmulatedDevice, fd: int, clock: Clock, outbox: bytearray, timeout: float
+    firmware: EmulatedDevice,
+    fd: int,
+    clock: Clock,
+    outbox: bytearray,
+    timeout: float,
+    controls: ControlChannel | None = None,
 ) -> None:
-    """One loop iteration: host bytes in, control cycles up to now, replies out."""
-    readable, _, _ = select.select([fd], [], [], timeout)
-    if readable:
+    """One loop iteration: host bytes and control lines in, cycles up to now, replies out."""
+    watched = [fd]
+    if controls is not None and controls.open:
+        watched.append(controls.fd)
+    readable, _, _ = select.select(watched, [], [], timeout)
+    if fd in readable:
         try:
             data = os.read(fd, 4096)
         except BlockingIOError:
             data = b""
         firmware.receive(data)
+    if controls is not None and controls.fd in readable:
+        controls.read()
     firmware.run_until(clock.now())
     _flush(fd, outbox)
 
@@ -91,13 +390,14 @@ def serve(
     clock: Clock,
     should_stop: Callable[[], bool],
     poll: float = POLL_SECONDS,
+    controls: ControlChannel | None = None,
 ) -> None:
     """Run ``firmware`` against the terminal ``fd`` until ``should_stop()``."""
     outbox = bytearray()
     firmware.set_output(outbox.extend)
     try:
         while not should_stop():
-            pump(firmware, fd, clock, outbox, poll)
+            pump(firmware, fd, clock, outbox, poll, controls)
     finally:
         firmware.set_output(None)
 
@@ -135,13 +435,30 @@ def remove_link(link: Path, device: str) -> None:
         pass
 
 
-def run_on_pty(profile: str = DEFAULT_PROFILE, link: Path | None = None) -> int:
-    """Serve ``profile``'s firmware on a new pty until SIGTERM or SIGINT; the exit status."""
+def run_on_pty(
+    profile: str = DEFAULT_PROFILE,
+    link: Path | None = None,
+    *,
+    controls: bool = False,
+    time_scale: float = 1.0,
+) -> int:
+    """Serve ``profile``'s firmware on a new pty until SIGTERM or SIGINT; the exit status.
+
+    With ``controls`` standard input carries control lines (see :class:`ControlChannel`);
+    ``time_scale`` runs the firmware's clock that many times faster than real time.
+    """
     stop = threading.Event()
 
     def request_stop(signum: int, frame: FrameType | None) -> None:
         stop.set()
 
+    control_fd: int | None = None
+    if controls:
+        try:
+            control_fd = sys.stdin.fileno()
+        except (AttributeError, ValueError, OSError):
+            print("stepdeck-emulator: --controls needs a standard input", file=sys.stderr)
+            return 2
     signal.signal(signal.SIGTERM, request_stop)
     signal.signal(signal.SIGINT, request_stop)
     master, slave, path = open_pty()
@@ -155,9 +472,19 @@ def run_on_pty(profile: str = DEFAULT_PROFILE, link: Path | None = None) -> int:
     try:
         print(path, flush=True)
         where = f"{path} (linked from {link})" if link is not None else path
-        print(f"{profile} emulator on {where}; Ctrl+C stops it", file=sys.stderr, flush=True)
-        clock = MonotonicClock()
-        serve(PROFILES[profile](clock), master, clock, stop.is_set)
+        extras = "".join(
+            (
+                "; control lines on stdin (help lists them)" if controls else "",
+                f"; time runs x{time_scale:g}" if time_scale != 1.0 else "",
+            )
+        )
+        print(
+            f"{profile} emulator on {where}{extras}; Ctrl+C stops it", file=sys.stderr, flush=True
+        )
+        clock: Clock = ScaledClock(time_scale) if time_scale != 1.0 else MonotonicClock()
+        firmware = PROFILES[profile](clock)
+        channel = ControlChannel(firmware, control_fd) if control_fd is not None else None
+        serve(firmware, master, clock, stop.is_set, controls=channel)
     finally:
         if link is not None:
             remove_link(link, path)
@@ -174,6 +501,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
         prog="stepdeck-emulator",
         description="Emulate a StepDeck machine's firmware on a pseudo-terminal.",
+        epilog=_controls_help(),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("--profile", choices=sorted(PROFILES), default=DEFAULT_PROFILE)
     parser.add_argument(
@@ -189,6 +518,21 @@ def main(argv: Sequence[str] | None = None) -> int:
             "is replaced, a regular file never"
         ),
     )
+    parser.add_argument(
+        "--controls",
+        action="store_true",
+        help=(
+            "also read control lines on standard input and act on the device's own "
+            "controls (listed below); a line that is not one is reported on stderr and ignored"
+        ),
+    )
+    parser.add_argument(
+        "--time-scale",
+        type=_time_scale,
+        default=1.0,
+        metavar="F",
+        help="run the firmware's clock F times faster than real time (default 1)",
+    )
     args = parser.parse_args(argv)
     if not args.pty and args.link is None:
         parser.print_usage(sys.stderr)
@@ -197,7 +541,17 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-    return run_on_pty(args.profile, args.link)
+    return run_on_pty(args.profile, args.link, controls=args.controls, time_scale=args.time_scale)
+
+
+def _time_scale(text: str) -> float:
+    try:
+        factor = float(text)
+    except ValueError:
+        factor = math.nan
+    if not (math.isfinite(factor) and factor > 0):
+        raise argparse.ArgumentTypeError(f"must be a positive number, got {text!r}")
+    return factor
 
 
 if __name__ == "__main__":
