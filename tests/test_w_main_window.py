@@ -14,7 +14,7 @@ from PySide6.QtGui import QFocusEvent, QKeyEvent
 from PySide6.QtWidgets import QApplication, QWidget
 from pytestqt.qtbot import QtBot
 
-from protocol.stage.codec import CommandFrame, CommandId, CommandPacket, decode
+from protocol.stage.codec import AxisStatus, CommandFrame, CommandId, CommandPacket, decode
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 
@@ -392,3 +392,22 @@ def test_shift_v_in_a_free_text_field_types_a_capital_v(
     # QTest gives the key event the text "v"; what matters is that the field got it.
     assert field.text().lower() == "v"
     assert window.developer_pane.isVisible()
+
+
+def test_an_injected_charger_echo_reaches_the_info_panel(
+    qtbot: QtBot, harness: StationHarness
+) -> None:
+    window = _open_window(qtbot, harness)
+    qtbot.keyClick(window.manual_panel, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
+    composer = window.developer_pane.composer
+    charger = composer.status_combos[0].findData(AxisStatus.BLOCKED_CHARGER)
+    assert charger >= 0
+    composer.status_combos[0].setCurrentIndex(charger)
+    composer.data_edits[0].setText("12345")
+    qtbot.mouseClick(composer.inject_button, Qt.MouseButton.LeftButton)
+    assert window.info_panel.positions[0].text() == "12.345 mm"
+    assert window.info_panel.statuses[0].text() == "blocked: charger connected"
+    composer.data_edits[0].setText("12.5")  # malformed: refused, nothing changes
+    qtbot.mouseClick(composer.inject_button, Qt.MouseButton.LeftButton)
+    assert "whole number" in composer.result_label.text()
+    assert window.info_panel.positions[0].text() == "12.345 mm"
