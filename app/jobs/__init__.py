@@ -1,0 +1,1 @@
+"""Jobs: files turned into machine-independent programs, previewed and run."""

@@ -1,0 +1,181 @@
+"""A job as the station runs it: an ordered list of machine-independent operations.
+
+Every loader (point lists now; Excellon drill files, string-art files and
+G-code later) produces the same :class:`Program`, so the preview, the
+soft-limit check, the dry run and the runner exist once.  Each operation
+keeps the file and line it came from, so every message about it can point
+the operator at the source.
+"""
+
+from __future__ import annotations
+
+import enum
+import hashlib
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import MappingProxyType
+
+
+class OpKind(enum.Enum):
+    MOVE = "move"  # to absolute axis positions (mm or degrees), travel unless the pen is down
+    DRILL = "drill"  # one drill cycle where the tool is
+    PEN_UP = "pen up"
+    PEN_DOWN = "pen down"
+    WAIT = "wait"  # for the operator to confirm (a message says what to do)
+    COMMENT = "comment"  # shown while running, no motion
+
+
+@dataclass(frozen=True)
+class SourceRef:
+    file: str
+    line: int
+
+    def __str__(self) -> str:
+        return f"{self.file}:{self.line}"
+
+
+@dataclass(frozen=True)
+class Operation:
+    kind: OpKind
+    source: SourceRef
+    target: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
+    message: str = ""
+
+    def describe(self) -> str:
+        if self.kind is OpKind.MOVE:
+            where = " ".join(f"{axis}{value:.3f}" for axis, value in self.target.items())
+            return f"move to {where}"
+        if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
+            return f"{self.kind.value}: {self.message}"
+        return str(self.kind.value)
+
+
+def move(source: SourceRef, **target: float) -> Operation:
+    return Operation(OpKind.MOVE, source, MappingProxyType(dict(target)))
+
+
+@dataclass(frozen=True)
+class Program:
+    name: str
+    operations: tuple[Operation, ...]
+    source: Path | None = None
+
+    def __len__(self) -> int:
+        return len(self.operations)
+
+    def __iter__(self) -> Iterator[Operation]:
+        return iter(self.operations)
+
+    def __getitem__(self, index: int) -> Operation:
+        return self.operations[index]
+
+    @property
+    def axes(self) -> tuple[str, ...]:
+        """Axis names the program moves, in order of first use."""
+        seen: dict[str, None] = {}
+        for op in self.operations:
+            for axis in op.target:
+                seen.setdefault(axis)
+        return tuple(seen)
+
+    def fingerprint(self) -> str:
+        """Identifies the program in a checkpoint: a resumed job must be the same job."""
+        digest = hashlib.sha256()
+        for op in self.operations:
+            digest.update(repr((op.kind.value, sorted(op.target.items()), op.message)).encode())
+        return digest.hexdigest()[:16]
+
+    def positions(self) -> Iterator[tuple[int, Mapping[str, float], bool]]:
+        """(operation index, position after it, pen down) for every MOVE, tracking the pen."""
+        where: dict[str, float] = {}
+        pen_down = False
+        for index, op in enumerate(self.operations):
+            if op.kind is OpKind.PEN_DOWN:
+                pen_down = True
+            elif op.kind is OpKind.PEN_UP:
+                pen_down = False
+            elif op.kind is OpKind.MOVE:
+                where.update(op.target)
+                yield index, dict(where), pen_down
+
+
+@dataclass(frozen=True)
+class LimitViolation:
+    index: int
+    operation: Operation
+    axis: str
+    value: float
+    low: float
+    high: float
+
+    def __str__(self) -> str:
+        return (
+            f"{self.operation.source}: {self.operation.describe()} — {self.axis} {self.value:g} "
+            f"is outside {self.low:g}…{self.high:g}"
+        )
+
+
+def check_limits(
+    program: Program, limits: Mapping[str, tuple[float, float]]
+) -> list[LimitViolation]:
+    """Every move that would leave the machine's travel (or names an axis it lacks)."""
+    found: list[LimitViolation] = []
+    for index, op in enumerate(program.operations):
+        for axis, value in op.target.items():
+            low, high = limits.get(axis, (float("nan"), float("nan")))
+            if not low <= value <= high:  # NaN limits (unknown axis) always fail
+                found.append(LimitViolation(index, op, axis, value, low, high))
+    return found
+
+
+class JobFileError(ValueError):
+    """A job file the station refuses, with the file, the line and the reason."""
+
+    def __init__(self, file: str, line: int, reason: str) -> None:
+        super().__init__(f"{file}:{line}: {reason}")
+        self.file = file
+        self.line = line
+        self.reason = reason
+
+
+def load_point_list(path: Path, axis_names: Sequence[str] = ("X", "Y")) -> Program:
+    """A list of positions to visit, one per line: ``x, y`` (mm), optional ``# comment`` lines.
+
+    The plainest job an XY stage runs (a scan, an inspection route); a line
+    ``wait: <message>`` makes the runner stop for the operator there.
+    """
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise JobFileError(str(path), 0, f"cannot read: {exc}") from exc
+    ops: list[Operation] = []
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.strip()
+        where = SourceRef(path.name, number)
+        if not line:
+            continue
+        if line.startswith("#"):
+            ops.append(Operation(OpKind.COMMENT, where, message=line.lstrip("# ")))
+            continue
+        if line.lower().startswith("wait"):
+            message = line.partition(":")[2].strip() or "continue when ready"
+            ops.append(Operation(OpKind.WAIT, where, message=message))
+            continue
+        fields = [f.strip() for f in line.replace(";", ",").split(",")]
+        if len(fields) != len(axis_names):
+            raise JobFileError(
+                path.name, number, f"expected {len(axis_names)} numbers, found {len(fields)}"
+            )
+        try:
+            values = [float(f) for f in fields]
+        except ValueError:
+            raise JobFileError(path.name, number, f"not a number in {line!r}") from None
+        ops.append(
+            Operation(
+                OpKind.MOVE, where, MappingProxyType(dict(zip(axis_names, values, strict=True)))
+            )
+        )
+    if not any(op.kind is OpKind.MOVE for op in ops):
+        raise JobFileError(path.name, 0, "no positions in the file")
+    return Program(path.stem, tuple(ops), path)
