@@ -13,6 +13,7 @@ import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parent.parent
@@ -20,6 +21,9 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from protocol.clock import ManualClock  # noqa: E402
+
+if TYPE_CHECKING:
+    from app.jobs.program import Program
 from protocol.stage.codec import (  # noqa: E402
     AxisStatus,
     CommandFrame,
@@ -384,6 +388,99 @@ def bench_telemetry_plots() -> list[str]:
     return lines
 
 
+def _large_program(operations: int) -> Program:
+    """A plotter-like program: pen-up travel, a pen-down stroke of 8 moves, a drill, repeated."""
+    import math
+
+    from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+
+    ops: list[Operation] = []
+    line = 0
+    while len(ops) < operations:
+        line += 1
+        k = len(ops)
+        cx, cy = 5 + (k * 0.37) % 40, 5 + (k * 0.11) % 40
+        ops.append(move(SourceRef("big.job", line), X=cx, Y=cy))
+        ops.append(Operation(OpKind.PEN_DOWN, SourceRef("big.job", line)))
+        for s in range(8):
+            angle = 2 * math.pi * s / 8
+            ops.append(
+                move(SourceRef("big.job", line), X=cx + math.cos(angle), Y=cy + math.sin(angle))
+            )
+        ops.append(Operation(OpKind.PEN_UP, SourceRef("big.job", line)))
+        ops.append(Operation(OpKind.DRILL, SourceRef("big.job", line)))
+    return Program("big", tuple(ops[:operations]))
+
+
+def bench_job_preview() -> list[str]:
+    """Build time of the jobs preview for a 100 000-operation program, shown offscreen.
+
+    ``build_seconds`` is what ``set_program`` takes (the path arrays and the
+    curves' data); the first paint after it is timed separately, as the
+    operator waits for both.
+    """
+    from PySide6.QtWidgets import QApplication
+
+    from app.profiles import load_profile
+    from app.station import Station
+    from widgets.job_preview import JobPreview
+
+    app = QApplication.instance() or QApplication([])
+    program = _large_program(100_000)
+    station = Station(load_profile("xy-stage"), ManualClock(), realtime=False)
+    preview = JobPreview(station, confirm=lambda _text: False)
+    preview.resize(900, 700)
+    preview.show()
+    app.processEvents()
+    builds = []
+    paints = []
+    for _ in range(3):
+        preview.set_program(None)
+        app.processEvents()
+        preview.set_program(program)
+        builds.append(preview.build_seconds)
+        start = time.perf_counter()
+        preview.plot_widget.viewport().repaint()
+        paints.append(time.perf_counter() - start)
+    preview.close()
+    preview.deleteLater()
+    station.shutdown()
+    app.processEvents()
+    return [
+        f"job preview, 100,000-operation program: build {min(builds):.3f} s "
+        f"(median {statistics.median(builds):.3f} s), first paint {min(paints):.3f} s"
+    ]
+
+
+def bench_dry_run() -> list[str]:
+    """Emulated seconds per wall second of the dry run on a 10,000-move, two-axis program."""
+    import random
+
+    from app.jobs.dry_run import estimate
+    from app.jobs.program import Program, SourceRef, move
+    from app.profiles import load_profile
+
+    rng = random.Random(1)
+    program = Program(
+        "bench",
+        tuple(
+            move(SourceRef("bench.txt", i + 1), X=rng.uniform(0, 50), Y=rng.uniform(0, 50))
+            for i in range(10_000)
+        ),
+    )
+    profile = load_profile("xy-stage")
+    runs: list[tuple[float, float]] = []
+    for _ in range(3):
+        start = time.perf_counter()
+        result = estimate(program, profile, {}, 0.1)
+        runs.append((time.perf_counter() - start, result.total_s))
+    wall, emulated = min(runs)
+    return [
+        f"dry run, 10,000 two-axis moves: {emulated:,.0f} emulated s in {wall:.3f} s wall "
+        f"= {emulated / wall:,.0f}x real time (goal >= 500x)"
+    ]
+
+
 BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_decode,
     bench_emulated_move,
@@ -392,6 +489,8 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_key_to_pty,
     bench_echo_round_trip,
     bench_telemetry_plots,
+    bench_job_preview,
+    bench_dry_run,
 ]
 
 

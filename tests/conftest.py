@@ -14,9 +14,13 @@ from pathlib import Path
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
 import pytest
+from PySide6.QtCore import QStandardPaths
 
 from protocol.transport.base import open_transports
 from tests.helpers.harness import StationHarness
+
+# Checkpoints and other app data go to Qt's test locations, never the operator's.
+QStandardPaths.setTestModeEnabled(True)
 
 ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared"

@@ -411,3 +411,24 @@ def test_an_injected_charger_echo_reaches_the_info_panel(
     qtbot.mouseClick(composer.inject_button, Qt.MouseButton.LeftButton)
     assert "whole number" in composer.result_label.text()
     assert window.info_panel.positions[0].text() == "12.345 mm"
+
+
+def test_ctrl_j_shows_the_jobs_dock_whose_checkpoints_go_where_asked(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    window = MainWindow(harness.station, checkpoint_dir=tmp_path / "checkpoints")
+    qtbot.addWidget(window)
+    window.show()
+    window.activateWindow()
+    qtbot.waitUntil(window.isActiveWindow)
+    assert not window.jobs_dock.isVisible()
+    qtbot.keyClick(window.manual_panel, Qt.Key.Key_J, Qt.KeyboardModifier.ControlModifier)
+    assert window.jobs_dock.isVisible()
+    job = tmp_path / "route.csv"
+    job.write_text("1, 1\n2, 2\n")
+    harness.connect()
+    harness.run(3.0)
+    assert window.jobs_dock.open_path(job)
+    window.job_runner.start()
+    harness.run_until(lambda: window.job_runner.done == 1)
+    assert list((tmp_path / "checkpoints").iterdir()), "no checkpoint written after an operation"

@@ -14,7 +14,9 @@ single panel can enforce:
 
 from __future__ import annotations
 
-from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, Qt, Signal
+from pathlib import Path
+
+from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, QStandardPaths, Qt, Signal
 from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -34,6 +36,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.jobs.runner import JobRunner
 from app.machine import LinkState
 from app.settings import StationSettings
 from app.station import Station
@@ -43,6 +46,7 @@ from widgets.connection_panel import ConnectionPanel
 from widgets.developer_pane import DeveloperPane
 from widgets.dynamics_panel import DynamicsPanel
 from widgets.info_panel import InfoPanel
+from widgets.jobs_dock import JobsDock
 from widgets.jog_input import JogInput
 from widgets.manual_panel import ManualPanel
 from widgets.menu_panel import MenuPanel
@@ -61,6 +65,7 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("Shift (held)", "Jog and move at the other speed"),
     ("Esc", "Stop everything, from anywhere in the window"),
     ("Alt+M / A / R / D / L", "Manual / Absolute / Relative / Dynamics / Link page"),
+    ("Ctrl+J", "Show or hide the jobs dock"),
     ("Ctrl+T", "Show or hide the telemetry plots"),
     ("Shift+V", "Show or hide the developer pane"),
     ("F1", "This list"),
@@ -102,6 +107,8 @@ class MainWindow(QMainWindow):
         station: Station,
         settings: QSettings | None = None,
         parent: QWidget | None = None,
+        *,
+        checkpoint_dir: Path | None = None,
     ) -> None:
         super().__init__(parent)
         self.station = station
@@ -166,6 +173,7 @@ class MainWindow(QMainWindow):
         self._attach_session()
         self._update_lock()
         self._show_link_status()
+        self._build_jobs_dock(checkpoint_dir)
         self._build_telemetry_dock()
         self._build_developer_pane()
         self._restore_settings()
@@ -187,6 +195,18 @@ class MainWindow(QMainWindow):
         layout.addWidget(self.lock_label)
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
+
+    def _build_jobs_dock(self, checkpoint_dir: Path | None) -> None:
+        if checkpoint_dir is None:
+            data = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppDataLocation)
+            checkpoint_dir = Path(data) / "checkpoints"
+        self.job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
+        self.jobs_dock = JobsDock(self.station, self.job_runner, self)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
+        self.jobs_dock.hide()
+        action = self.jobs_dock.toggleViewAction()
+        action.setShortcut(QKeySequence("Ctrl+J"))
+        self.view_menu.addAction(action)
 
     def _build_telemetry_dock(self) -> None:
         self.telemetry = TelemetryRecorder(self.station, parent=self)

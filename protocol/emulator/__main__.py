@@ -29,6 +29,12 @@ control gets a one-line error on standard error and changes nothing.
 
 ``--time-scale F`` runs the firmware's clock F times faster than real time,
 for tests and dry runs that would otherwise wait out the unit's slow moves.
+
+``--log PATH`` appends one line per command the firmware executed (its
+command log: time, axis, command, data, accepted), so a test can check what
+the machine really did across station restarts::
+
+    12.345000 0 MOVE_ABS 20000 1
 """
 
 from __future__ import annotations
@@ -51,8 +57,10 @@ from typing import Generic, TextIO, TypeVar
 
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.stage_firmware import ExecutedCommand as StageCommand
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import ADC_MAX, Usb3Firmware
+from protocol.stage.codec import CommandId
 from protocol.usb3.codec import AxisId, StepSize, Thread
 
 DeviceFactory = Callable[[Clock], EmulatedDevice]
@@ -334,6 +342,51 @@ class ControlChannel:
         print(f"stepdeck-emulator: {text}", file=self._errors or sys.stderr, flush=True)
 
 
+class CommandLogFile:
+    """Appends the firmware's newly executed commands to a file (``--log``).
+
+    The firmware keeps only its latest commands in memory; polling that log
+    after every loop iteration (a few commands at most) and remembering the
+    last entry written turns it into a complete record on disk.  Each batch
+    is flushed at once, so whoever reads the file sees what the device did
+    even while it keeps running.
+    """
+
+    def __init__(self, firmware: EmulatedDevice, path: Path) -> None:
+        self._firmware = firmware
+        self._handle = path.open("a", encoding="utf-8")
+        self._last: object | None = None
+
+    def write_new(self) -> None:
+        entries: Sequence[object] = getattr(self._firmware, "command_log", ())
+        start = 0
+        if self._last is not None:
+            for index in range(len(entries) - 1, -1, -1):
+                if entries[index] is self._last:
+                    start = index + 1
+                    break
+        new = entries[start:]
+        if not new:
+            return
+        self._handle.writelines(_log_line(entry) for entry in new)
+        self._handle.flush()
+        self._last = new[-1]
+
+    def close(self) -> None:
+        self.write_new()
+        self._handle.close()
+
+
+def _log_line(entry: object) -> str:
+    if isinstance(entry, StageCommand):
+        try:
+            name = CommandId(entry.command).name
+        except ValueError:
+            name = f"{entry.command:02X}"
+        return f"{entry.time:.6f} {entry.axis} {name} {entry.data} {int(entry.accepted)}\n"
+    return f"{getattr(entry, 'time', 0.0):.6f} {getattr(entry, 'command', entry)}\n"
+
+
 def open_pty() -> tuple[int, int, str]:
     """A raw pseudo-terminal: ``(master_fd, slave_fd, slave_path)``.
 
@@ -391,6 +444,7 @@ def serve(
     should_stop: Callable[[], bool],
     poll: float = POLL_SECONDS,
     controls: ControlChannel | None = None,
+    log: CommandLogFile | None = None,
 ) -> None:
     """Run ``firmware`` against the terminal ``fd`` until ``should_stop()``."""
     outbox = bytearray()
@@ -398,6 +452,8 @@ def serve(
     try:
         while not should_stop():
             pump(firmware, fd, clock, outbox, poll, controls)
+            if log is not None:
+                log.write_new()
     finally:
         firmware.set_output(None)
 
@@ -441,11 +497,13 @@ def run_on_pty(
     *,
     controls: bool = False,
     time_scale: float = 1.0,
+    log_path: Path | None = None,
 ) -> int:
     """Serve ``profile``'s firmware on a new pty until SIGTERM or SIGINT; the exit status.
 
     With ``controls`` standard input carries control lines (see :class:`ControlChannel`);
-    ``time_scale`` runs the firmware's clock that many times faster than real time.
+    ``time_scale`` runs the firmware's clock that many times faster than real time;
+    ``log_path`` gets a line per executed command (see :class:`CommandLogFile`).
     """
     stop = threading.Event()
 
@@ -484,7 +542,12 @@ def run_on_pty(
         clock: Clock = ScaledClock(time_scale) if time_scale != 1.0 else MonotonicClock()
         firmware = PROFILES[profile](clock)
         channel = ControlChannel(firmware, control_fd) if control_fd is not None else None
-        serve(firmware, master, clock, stop.is_set, controls=channel)
+        log = CommandLogFile(firmware, log_path) if log_path is not None else None
+        try:
+            serve(firmware, master, clock, stop.is_set, controls=channel, log=log)
+        finally:
+            if log is not None:
+                log.close()
     finally:
         if link is not None:
             remove_link(link, path)
@@ -533,6 +596,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         metavar="F",
         help="run the firmware's clock F times faster than real time (default 1)",
     )
+    parser.add_argument(
+        "--log",
+        type=Path,
+        metavar="PATH",
+        help="append one line per command the firmware executes to PATH",
+    )
     args = parser.parse_args(argv)
     if not args.pty and args.link is None:
         parser.print_usage(sys.stderr)
@@ -541,7 +610,13 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-    return run_on_pty(args.profile, args.link, controls=args.controls, time_scale=args.time_scale)
+    return run_on_pty(
+        args.profile,
+        args.link,
+        controls=args.controls,
+        time_scale=args.time_scale,
+        log_path=args.log,
+    )
 
 
 def _time_scale(text: str) -> float:

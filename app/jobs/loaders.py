@@ -1,0 +1,143 @@
+"""Which loader turns a job file into a :class:`~app.jobs.program.Program`.
+
+The jobs dock opens whatever the operator picks; this registry decides how
+to read it, so adding a job type (Excellon, string art, G-code) is one
+``register_loader`` call in the new loader's module and no change to the
+dock.  The extension decides first, because it is what the operator chose
+the file by.  When several types share an extension (``.txt`` is a point
+list, a string-art ``param.txt`` and many a drill export) their sniffers
+choose among them; when the extension is unknown (an extension-less export)
+every sniffer is asked, and the first to recognise the text wins.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from app.jobs.program import JobFileError, Program, load_point_list
+
+#: Reads ``path`` for a machine with these axis names; raises JobFileError with file:line.
+JobLoader = Callable[[Path, Sequence[str]], Program]
+#: Whether the first few kilobytes of a file look like this loader's job type.
+Sniffer = Callable[[str], bool]
+
+SNIFF_CHARS = 4096
+
+
+@dataclass(frozen=True)
+class JobType:
+    """One kind of job file: what the file dialog calls it, its extensions, how to read it."""
+
+    description: str
+    extensions: tuple[str, ...]
+    load: JobLoader
+    sniff: Sniffer | None = None
+
+
+#: Lower-case extension (with the dot) → loader; the dock's first choice.
+JOB_LOADERS: dict[str, JobLoader] = {}
+#: Every registered job type in registration order: file-dialog filters and sniffing.
+JOB_TYPES: list[JobType] = []
+
+
+def register_loader(
+    description: str,
+    extensions: Sequence[str],
+    load: JobLoader,
+    sniff: Sniffer | None = None,
+) -> JobType:
+    """Make ``load`` the reader for ``extensions`` (".csv"…) and, with ``sniff``, for content."""
+    job_type = JobType(description, tuple(e.lower() for e in extensions), load, sniff)
+    JOB_TYPES.append(job_type)
+    for extension in job_type.extensions:
+        JOB_LOADERS.setdefault(extension, load)  # the first registered keeps a shared extension
+    return job_type
+
+
+def loader_for(path: Path) -> JobLoader:
+    """The loader by extension (sniffing among types that share it), else by content alone."""
+    extension = path.suffix.lower()
+    candidates = [t for t in JOB_TYPES if extension in t.extensions]
+    if len(candidates) == 1:
+        return candidates[0].load
+    try:
+        with path.open(encoding="utf-8", errors="replace") as handle:
+            head = handle.read(SNIFF_CHARS)
+    except OSError as exc:
+        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+    for job_type in candidates or JOB_TYPES:
+        if job_type.sniff is not None and job_type.sniff(head):
+            return job_type.load
+    if candidates:
+        return JOB_LOADERS[extension]  # its own errors name the line that is wrong
+    raise JobFileError(path.name, 0, "not a job file this station knows (unknown type)")
+
+
+def load_job(path: Path, axis_names: Sequence[str]) -> Program:
+    """Read any known job file for a machine with ``axis_names``; JobFileError says why not."""
+    return loader_for(path)(path, axis_names)
+
+
+def file_dialog_filter() -> str:
+    """The Open dialog's filter list: every job type, then all files (sniffed)."""
+    patterns = " ".join(f"*{e}" for t in JOB_TYPES for e in t.extensions)
+    parts = [f"Job files ({patterns})"] if patterns else []
+    parts += [f"{t.description} ({' '.join('*' + e for e in t.extensions)})" for t in JOB_TYPES]
+    parts.append("All files (*)")
+    return ";;".join(parts)
+
+
+# --- point lists ---------------------------------------------------------------
+
+
+def _data_lines(text: str) -> list[str]:
+    """Lines that are neither blank, comments nor operator waits: the positions."""
+    lines = (line.strip() for line in text.splitlines())
+    return [line for line in lines if line and not line.startswith("#") and not _is_wait(line)]
+
+
+def _is_wait(line: str) -> bool:
+    return line.lower().startswith("wait")
+
+
+def _fields(line: str) -> list[str]:
+    return [f.strip() for f in line.replace(";", ",").split(",")]
+
+
+def _numbers(line: str) -> bool:
+    try:
+        [float(f) for f in _fields(line)]
+    except ValueError:
+        return False
+    return True
+
+
+def sniff_point_list(head: str) -> bool:
+    """Two or three comma/semicolon-separated numbers per line, the first few lines agreeing."""
+    lines = _data_lines(head)[:5]
+    if not lines:
+        return False
+    counts = {len(_fields(line)) for line in lines}
+    return len(counts) == 1 and counts <= {2, 3} and all(_numbers(line) for line in lines)
+
+
+def load_points(path: Path, axis_names: Sequence[str]) -> Program:
+    """A point list for this machine: as many axes as the first position line has numbers.
+
+    A 2-column list on a 3-axis machine moves X and Y only; a column count
+    the machine cannot take falls through to ``load_point_list``, which names
+    the line.
+    """
+    try:
+        head = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+    lines = _data_lines(head)
+    columns = len(_fields(lines[0])) if lines else len(axis_names)
+    axes = tuple(axis_names[:columns]) if columns <= len(axis_names) else tuple(axis_names)
+    return load_point_list(path, axes)
+
+
+POINT_LIST = register_loader("Point lists", (".csv", ".txt"), load_points, sniff_point_list)

@@ -1,0 +1,137 @@
+"""A station process killed in the middle of a job and started again finishes it, no repeats.
+
+Both ends are real processes: the emulator on a pseudo-terminal (time run 10x
+faster so the job stays short, every executed command appended to ``--log``)
+and the station (``tests/helpers/run_job.py``) over the serial transport.  The
+station is SIGKILLed — no clean-up, no last checkpoint write — while the job
+runs; a new station process finds the checkpoint, resumes, and finishes.  The
+emulator's log is the judge: every target exactly once, in order.
+
+Every wait is bounded and every process is killed in the fixture's finaliser.
+"""
+
+from __future__ import annotations
+
+import random
+import selectors
+import signal
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+TIMEOUT_S = 20.0
+OPERATIONS = 24
+
+
+class Processes:
+    def __init__(self) -> None:
+        self.started: list[subprocess.Popen[bytes]] = []
+
+    def start(self, *args: str) -> subprocess.Popen[bytes]:
+        process = subprocess.Popen(
+            [sys.executable, *args],
+            cwd=ROOT,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+        )
+        self.started.append(process)
+        return process
+
+    def stop_all(self) -> None:
+        for process in self.started:
+            if process.poll() is None:
+                process.terminate()
+            try:
+                process.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+            if process.stdout is not None:
+                process.stdout.close()
+
+
+@pytest.fixture
+def processes() -> Iterator[Processes]:
+    started = Processes()
+    yield started
+    started.stop_all()
+
+
+def read_line(process: subprocess.Popen[bytes], deadline: float) -> str:
+    """The next line the process prints, waiting no later than ``deadline`` (monotonic)."""
+    assert process.stdout is not None
+    with selectors.DefaultSelector() as selector:
+        selector.register(process.stdout, selectors.EVENT_READ)
+        left = deadline - time.monotonic()
+        assert left > 0 and selector.select(left), "the process went silent"
+    line = process.stdout.readline().decode().strip()
+    assert line, f"the process ended (status {process.poll()})"
+    return line
+
+
+def wait_for(process: subprocess.Popen[bytes], wanted: str, deadline: float) -> list[str]:
+    seen: list[str] = []
+    while not seen or not seen[-1].startswith(wanted):
+        seen.append(read_line(process, deadline))
+    return seen
+
+
+def test_a_killed_station_resumes_the_job_and_the_stage_did_each_move_once(
+    processes: Processes, tmp_path: Path
+) -> None:
+    rng = random.Random(42)
+    targets = [
+        (round(rng.uniform(0, 50), 3), round(rng.uniform(0, 50), 3)) for _ in range(OPERATIONS)
+    ]
+    job = tmp_path / "route.txt"
+    job.write_text("".join(f"{x}, {y}\n" for x, y in targets), encoding="utf-8")
+    link, log = tmp_path / "stage", tmp_path / "executed.log"
+    deadline = time.monotonic() + TIMEOUT_S
+
+    emulator = processes.start(
+        "-m", "protocol.emulator", "--profile", "xy-stage", "--link", str(link),
+        "--time-scale", "10", "--log", str(log),
+    )  # fmt: skip
+    read_line(emulator, deadline)  # the device path: it is serving
+    station_args = (
+        "-m", "tests.helpers.run_job", "--link", str(link), "--job", str(job),
+        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(TIMEOUT_S),
+    )  # fmt: skip
+
+    first = processes.start(*station_args)
+    assert wait_for(first, "start", deadline)[-1] == "start"
+    wait_for(first, "done 9/", deadline)
+    # Kill while operation 9 is under way: the stage has taken its move and is driving it.
+    poll = threading.Event()
+    while len(executed_moves(log)) < 2 * 10:
+        assert time.monotonic() < deadline, "operation 9 was never sent"
+        poll.wait(0.005)
+    first.send_signal(signal.SIGKILL)
+    first.wait(timeout=5)
+
+    second = processes.start(*station_args)
+    lines = wait_for(second, "DONE", deadline)
+    assert [line for line in lines if line.startswith("resume ")] == ["resume 9"], lines
+    assert second.wait(timeout=5) == 0
+
+    emulator.send_signal(signal.SIGTERM)  # it flushes and closes its log
+    emulator.wait(timeout=5)
+    expected = [(axis, round(v * 1000)) for x, y in targets for axis, v in enumerate((x, y))]
+    assert executed_moves(log) == expected
+
+
+def executed_moves(log: Path) -> list[tuple[int, int]]:
+    """(axis, µm) of every MOVE_ABS the emulator accepted, from its ``--log`` file."""
+    if not log.exists():
+        return []
+    return [
+        (int(fields[1]), int(fields[3]))
+        for fields in (line.split() for line in log.read_text(encoding="utf-8").splitlines())
+        if len(fields) == 5 and fields[2] == "MOVE_ABS" and fields[4] == "1"
+    ]

@@ -1,0 +1,285 @@
+"""Jobs dock: opening, refusals, Run / Pause / Resume / Step / Abort, ETA, WAIT, resume offer."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QFileDialog
+from pytestqt.qtbot import QtBot
+
+from app.jobs.loaders import JOB_LOADERS, load_job, sniff_point_list
+from app.jobs.program import JobFileError, OpKind
+from app.jobs.runner import JobRunner, JobState
+from tests.helpers.harness import StationHarness
+from widgets.jobs_dock import JobsDock, clock_text
+
+LEFT = Qt.MouseButton.LeftButton
+
+
+@pytest.fixture
+def runner(harness: StationHarness, tmp_path: Path) -> Iterator[JobRunner]:
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    yield runner
+    runner.deleteLater()
+
+
+@pytest.fixture
+def dock(qtbot: QtBot, harness: StationHarness, runner: JobRunner) -> Iterator[JobsDock]:
+    dock = JobsDock(harness.station, runner, confirm=lambda _text: False, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.resize(820, 640)
+    dock.show()
+    yield dock
+
+
+def write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def square(tmp_path: Path, name: str = "square.csv", extra: str = "") -> Path:
+    """Twelve stops round a square, 5 mm apart, after a comment: 13 operations."""
+    points = [(5 + 5 * k, 5) for k in range(4)] + [(20, 5 + 5 * k) for k in range(1, 4)]
+    points += [(20 - 5 * k, 20) for k in range(1, 4)] + [(5, 15), (5, 10)]
+    lines = ["# a square of stops"] + [f"{x}, {y}" for x, y in points]
+    return write(tmp_path, name, "\n".join(lines) + "\n" + extra)
+
+
+def buttons(dock: JobsDock) -> dict[str, bool]:
+    return {
+        "run": dock.run_button.isEnabled(),
+        "pause": dock.pause_button.isEnabled(),
+        "resume": dock.resume_button.isEnabled(),
+        "step": dock.step_button.isEnabled(),
+        "abort": dock.abort_button.isEnabled(),
+    }
+
+
+def messages(dock: JobsDock) -> str:
+    return dock.messages.toPlainText()
+
+
+def connected(harness: StationHarness) -> None:
+    harness.connect()
+    harness.run(1.0)
+
+
+def test_loader_registry_chooses_by_extension_then_content(tmp_path: Path) -> None:
+    assert {".csv", ".txt"} <= set(JOB_LOADERS)
+    odd = write(tmp_path, "route.points", "1, 2\n3; 4\n")
+    program = load_job(odd, ["X", "Y"])
+    assert [dict(op.target) for op in program] == [{"X": 1, "Y": 2}, {"X": 3, "Y": 4}]
+    three = write(tmp_path, "xyz.csv", "1, 2\n")
+    assert dict(load_job(three, ["X", "Y", "Z"])[0].target) == {"X": 1, "Y": 2}
+    assert not sniff_point_list("M48\nMETRIC\nT01C0.8\n%\n")
+    with pytest.raises(JobFileError, match=r"unknown\.bin:0: .*unknown type"):
+        load_job(write(tmp_path, "unknown.bin", "M48\n%\n"), ["X", "Y"])
+
+
+def test_opening_a_point_list_shows_it_and_enables_run(
+    harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    assert not any(buttons(dock).values())
+    assert dock.open_path(square(tmp_path))
+    assert dock.runner.state is JobState.READY
+    assert dock.preview.program is dock.runner.program
+    assert "square" in dock.file_label.text() and "13 operations" in dock.file_label.text()
+    assert len(dock.preview.work_markers.getData()[0]) == 12  # every stop, as a marker
+    assert buttons(dock) == {
+        "run": True,
+        "pause": False,
+        "resume": False,
+        "step": True,
+        "abort": False,
+    }
+    assert dock.progress.maximum() == 13 and dock.progress.value() == 0
+    assert dock.eta_label.text() != "left --:--"  # the dry run's estimate
+
+
+def test_run_waits_for_a_link(harness: StationHarness, dock: JobsDock, tmp_path: Path) -> None:
+    assert dock.open_path(square(tmp_path))
+    assert not dock.run_button.isEnabled() and "not connected" in dock.run_button.toolTip()
+    connected(harness)
+    assert dock.run_button.isEnabled()
+
+
+def test_open_button_uses_the_file_dialog(
+    qtbot: QtBot, dock: JobsDock, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = square(tmp_path)
+    asked: list[str] = []
+
+    def fake_dialog(*args: object) -> tuple[str, str]:
+        asked.append(str(args[-1]))
+        return str(path), ""
+
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", fake_dialog)
+    qtbot.mouseClick(dock.open_button, LEFT)
+    assert "*.csv" in asked[0]
+    assert dock.runner.program is not None and dock.runner.program.name == "square"
+
+
+def test_a_malformed_file_names_its_line_and_loads_nothing(dock: JobsDock, tmp_path: Path) -> None:
+    bad = write(tmp_path, "bad.csv", "1, 2\n3, 4\n5, five\n")
+    assert not dock.open_path(bad)
+    assert "bad.csv:3: not a number" in messages(dock)
+    assert dock.runner.program is None and dock.runner.state is JobState.IDLE
+    assert dock.preview.program is None and not dock.run_button.isEnabled()
+    # A good job stays loaded when the next file is broken.
+    assert dock.open_path(square(tmp_path))
+    assert not dock.open_path(bad)
+    assert dock.runner.program is not None and dock.runner.program.name == "square"
+
+
+def test_a_program_outside_the_travel_is_refused_naming_the_line(
+    harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    far = write(tmp_path, "far.csv", "10, 10\n20, 20\n# too far\n60, 5\n30, -1\n")
+    assert not dock.open_path(far)
+    text = messages(dock)
+    assert "far.csv:4" in text and "X 60 is outside 0…50" in text
+    assert "far.csv:5" in text and "Y -1 is outside 0…50" in text
+    assert "far.csv:1" not in text
+    assert dock.runner.program is None and not dock.run_button.isEnabled()
+    harness.run(0.5)
+    assert [a.position_um for a in harness.emulator.axes] == [0.0, 0.0]
+
+
+def test_run_shows_progress_eta_and_the_current_operation(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    dock.open_path(square(tmp_path))
+    eta_before = dock.eta_label.text()
+    qtbot.mouseClick(dock.run_button, LEFT)
+    assert dock.runner.state is JobState.RUNNING
+    assert buttons(dock) == {
+        "run": False,
+        "pause": True,
+        "resume": False,
+        "step": False,
+        "abort": True,
+    }
+    assert not dock.open_button.isEnabled()
+    harness.run_until(lambda: dock.runner.done >= 5)
+    assert dock.progress.value() == dock.runner.done
+    assert dock.count_label.text() == f"{dock.runner.done} / 13 ops"
+    assert dock.eta_label.text() != eta_before
+    assert dock.elapsed_label.text() != "elapsed 00:00" or dock.runner.elapsed_s < 0.5
+    assert dock.operation_label.text().startswith("square.csv:")
+    assert "move to X" in dock.operation_label.text()
+    done_x = dock.preview.done_travel_curve.getData()[0]
+    assert done_x is not None and np.isfinite(done_x).sum() >= 4  # the done path grows
+    harness.run_until(lambda: dock.runner.state is JobState.DONE, timeout=60)
+    assert dock.progress.value() == dock.progress.maximum() == 13
+    assert dock.eta_label.text() == "left 00:00"
+    assert dock.operation_label.text() == "square.csv:13  move to X5.000 Y10.000"
+    assert dock.run_button.isEnabled() and not dock.abort_button.isEnabled()
+
+
+def test_pause_resume_step_and_abort_act_on_the_runner(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    dock.open_path(square(tmp_path))
+    runner = dock.runner
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: runner.done >= 3)
+    qtbot.mouseClick(dock.pause_button, LEFT)
+    assert runner.state in (JobState.PAUSING, JobState.PAUSED)
+    harness.run_until(lambda: runner.state is JobState.PAUSED)
+    paused_at = runner.done
+    harness.run(2.0)
+    assert runner.done == paused_at  # nothing moves on while paused
+    assert buttons(dock) == {
+        "run": False,
+        "pause": False,
+        "resume": True,
+        "step": True,
+        "abort": True,
+    }
+
+    qtbot.mouseClick(dock.step_button, LEFT)
+    harness.run_until(lambda: runner.state is JobState.PAUSED and runner.done == paused_at + 1)
+    harness.run(1.0)
+    assert runner.done == paused_at + 1  # one operation, then paused again
+
+    qtbot.mouseClick(dock.resume_button, LEFT)
+    assert runner.state is JobState.RUNNING
+    harness.run_until(lambda: runner.done >= paused_at + 3)
+
+    qtbot.mouseClick(dock.abort_button, LEFT)
+    assert runner.state is JobState.ABORTED
+    stopped_at = runner.done
+    harness.run(1.0)
+    assert runner.done == stopped_at
+    assert not any(a.moving for a in harness.emulator.axes)
+    assert "aborted" in messages(dock)
+    # The checkpoint stays: the dock offers to resume after the last completed operation.
+    assert dock.resume_offer.isVisible()
+    assert dock.resume_checkpoint_button.text() == f"Resume from op {stopped_at + 1}"
+    assert not dock.run_button.isEnabled()  # choose Resume or Discard first
+
+
+def test_resume_offer_continues_without_repeating(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    dock.open_path(square(tmp_path))
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: dock.runner.done >= 6)
+    qtbot.mouseClick(dock.abort_button, LEFT)
+    stopped_at = dock.runner.done
+    assert dock.resume_offer.isVisible()
+    qtbot.mouseClick(dock.resume_checkpoint_button, LEFT)
+    assert dock.runner.state is JobState.RUNNING and not dock.resume_offer.isVisible()
+    harness.run_until(lambda: dock.runner.state is JobState.DONE, timeout=60)
+    assert dock.runner.done == 13 and stopped_at < 13
+
+
+def test_discard_offers_a_fresh_start(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    dock.open_path(square(tmp_path))
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: dock.runner.done >= 4)
+    qtbot.mouseClick(dock.abort_button, LEFT)
+    qtbot.mouseClick(dock.discard_checkpoint_button, LEFT)
+    assert not dock.resume_offer.isVisible()
+    assert dock.run_button.isEnabled()
+
+
+def test_wait_shows_the_prompt_and_continue_resumes(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    connected(harness)
+    path = square(tmp_path, "pause.csv", "wait: swap the probe\n40, 40\n")
+    dock.open_path(path)
+    runner = dock.runner
+    assert runner.program is not None and runner.program[13].kind is OpKind.WAIT
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: runner.state is JobState.WAITING, timeout=60)
+    assert dock.prompt.isVisible()
+    assert "swap the probe" in dock.prompt_label.text()
+    assert dock.operation_label.text() == "pause.csv:14  wait: swap the probe"
+    harness.run(2.0)
+    assert runner.state is JobState.WAITING and runner.done == 13  # it waits, however long
+    qtbot.mouseClick(dock.continue_button, LEFT)
+    assert not dock.prompt.isVisible()
+    harness.run_until(lambda: runner.state is JobState.DONE, timeout=60)
+    assert [a.position_um for a in harness.emulator.axes] == [40_000.0, 40_000.0]
+
+
+def test_clock_text() -> None:
+    assert clock_text(0) == "00:00"
+    assert clock_text(75.4) == "01:15"
+    assert clock_text(3725) == "1:02:05"
+    assert clock_text(None) == "--:--" and clock_text(float("nan")) == "--:--"

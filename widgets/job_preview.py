@@ -1,0 +1,458 @@
+"""The job preview: a program's path over the machine's travel, progress, and click-to-move.
+
+What it draws, and why:
+
+* travel (moves with the pen up, and plain moves between the points of a
+  point list) thin, dashed and grey, because nothing is made there;
+* work (moves with the pen down; drill holes — and a point list's points —
+  as markers) in a strong colour, because that is the job;
+* what is done, drawn again over it in green as the runner reports progress,
+  so "where is it" reads at a glance;
+* the machine's position as a cross-hair marker, and the soft-limit
+  rectangle (0…travel per axis), the only area click-to-move accepts.
+
+Speed: a 100 000-operation program must open without a pause, so the path is
+built once with numpy into one array per kind, runs of the same kind joined
+and NaN between runs (``connect="finite"``), never one item per segment.
+Progress only slices those arrays (the done prefix), and progress and
+position redraws are throttled (``throttle_ms``, 0 in tests) so a fast job
+or a 1 kHz position stream costs at most ~30 redraws a second.
+
+Click-to-move is a click, not a drag (drags pan, the wheel zooms), asks
+first (``confirm``, injectable so tests need no modal dialog) and sends one
+absolute move per axis through the session; outside the travel, while a job
+is under way or while motion is locked it refuses with a message and sends
+nothing.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+
+import numpy as np
+import pyqtgraph as pg
+from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
+from PySide6.QtCore import QPointF, Qt, QTimer, Signal
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
+
+from app.jobs.program import OpKind, Program
+from app.jobs.runner import JobRunner, JobState
+from app.station import Station
+
+TRAVEL_COLOUR = "#9a9a9a"
+WORK_COLOUR = "#1f4fb4"
+DONE_COLOUR = "#2ca02c"
+POSITION_COLOUR = "#d62728"
+LIMIT_COLOUR = "#e08a00"
+DEFAULT_THROTTLE_MS = 33.0
+
+#: Runner states in which a job is under way: the machine is the job's, not the mouse's.
+ACTIVE_STATES = frozenset({JobState.RUNNING, JobState.PAUSING, JobState.PAUSED, JobState.WAITING})
+
+_EMPTY = np.empty(0)
+
+#: The key to the colours, in the row above the plot (a legend inside would hide the path).
+LEGEND_HTML = (
+    f"<span style='color:{WORK_COLOUR}'>&#9679; work</span>&nbsp;&nbsp;"
+    f"<span style='color:{TRAVEL_COLOUR}'>- - travel</span>&nbsp;&nbsp;"
+    f"<span style='color:{DONE_COLOUR}'>&#9679; done</span>&nbsp;&nbsp;"
+    f"<span style='color:{POSITION_COLOUR}'><b>+</b> machine</span>&nbsp;&nbsp;"
+    f"<span style='color:{LIMIT_COLOUR}'>&#9633; travel limits</span>"
+)
+
+
+def ask_operator(parent: QWidget) -> Callable[[str], bool]:
+    """The default confirmation: a Yes/No box, No by default (a stray click must not move)."""
+
+    def confirm(text: str) -> bool:
+        answer = QMessageBox.question(
+            parent,
+            "Move the machine?",
+            text,
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No,
+        )
+        return answer == QMessageBox.StandardButton.Yes
+
+    return confirm
+
+
+class PathArrays:
+    """One kind of path (travel or work) as plot-ready arrays plus each point's operation.
+
+    ``ops`` is non-decreasing, so the part done after ``n`` operations is the
+    prefix up to ``searchsorted(ops, n)`` — a slice, not a rebuild.
+    """
+
+    def __init__(self, x: np.ndarray, y: np.ndarray, ops: np.ndarray) -> None:
+        self.x = x
+        self.y = y
+        self.ops = ops
+
+    def done_count(self, done: int) -> int:
+        return int(np.searchsorted(self.ops, done, side="left"))
+
+
+def _runs(
+    x: np.ndarray, y: np.ndarray, ops: np.ndarray, kind: np.ndarray, wanted: bool
+) -> PathArrays:
+    """The vertices of segments whose ``kind`` is ``wanted``, consecutive ones joined.
+
+    Vertex ``j`` ends segment ``j`` (``kind[j]``; vertex 0 ends none) and starts
+    segment ``j + 1``.  It belongs to the curve when either touches a wanted
+    segment; a NaN follows every vertex that ends a wanted run.
+    """
+    ends = kind == wanted  # segment j (ending at vertex j) is wanted
+    if len(ends):
+        ends[0] = False  # the first move's segment starts where the machine happens to be
+    starts = np.append(ends[1:], False)  # segment j + 1 (starting at j) is wanted
+    keep = ends | starts
+    run_end = ends & ~starts
+    index = np.flatnonzero(keep)
+    breaks = np.flatnonzero(run_end[index])  # positions within the kept points
+    out_x = np.insert(x[index], breaks + 1, np.nan)
+    out_y = np.insert(y[index], breaks + 1, np.nan)
+    out_ops = np.insert(ops[index], breaks + 1, ops[index][breaks])
+    return PathArrays(out_x, out_y, out_ops)
+
+
+class ProgramGeometry:
+    """The plottable shape of a program on two axes, computed once per program."""
+
+    def __init__(self, program: Program, x_axis: str, y_axis: str | None) -> None:
+        count = sum(1 for op in program if op.kind is OpKind.MOVE)
+        xs = np.full(count, np.nan)
+        ys = np.full(count, np.nan if y_axis else 0.0)
+        ops = np.zeros(count, dtype=np.int64)
+        pen = np.zeros(count, dtype=bool)
+        for k, (index, where, pen_down) in enumerate(program.positions()):
+            xs[k] = where.get(x_axis, math.nan)
+            if y_axis:
+                ys[k] = where.get(y_axis, math.nan)
+            ops[k] = index
+            pen[k] = pen_down
+        self.travel = _runs(xs, ys, ops, pen, wanted=False)
+        self.work = _runs(xs, ys, ops, pen, wanted=True)
+        self.markers = self._markers(program, xs, ys, ops, pen)
+
+    @staticmethod
+    def _markers(
+        program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray, pen: np.ndarray
+    ) -> PathArrays:
+        """Drill holes where they are drilled; a plain point list's points are its work."""
+        drills = np.array(
+            [i for i, op in enumerate(program.operations) if op.kind is OpKind.DRILL],
+            dtype=np.int64,
+        )
+        if len(drills):
+            # Where the tool is at each drill: the last move before it.
+            at = np.searchsorted(ops, drills, side="right") - 1
+            valid = at >= 0
+            at, drills = at[valid], drills[valid]
+            return PathArrays(xs[at], ys[at], drills)
+        uses_pen = any(op.kind in (OpKind.PEN_DOWN, OpKind.PEN_UP) for op in program)
+        if uses_pen or not len(xs):
+            return PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
+        return PathArrays(xs, ys, ops)
+
+
+class JobPreview(QWidget):
+    """The path of a program, what is done of it and where the machine is; click to move.
+
+    ``runner`` (optional) supplies progress and whether a job is under way;
+    without one, :meth:`set_done` drives the done part by hand.
+    """
+
+    #: A refusal or news about click-to-move, for the dock's message area.
+    message = Signal(str)
+
+    def __init__(
+        self,
+        station: Station,
+        runner: JobRunner | None = None,
+        *,
+        confirm: Callable[[str], bool] | None = None,
+        throttle_ms: float = DEFAULT_THROTTLE_MS,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.station = station
+        self.model = station.model
+        self.runner = runner
+        self.confirm = confirm or ask_operator(self)
+        self.program: Program | None = None
+        self.path_geometry: ProgramGeometry | None = None
+        #: Wall seconds the last :meth:`set_program` took to build the curves.
+        self.build_seconds = 0.0
+        self.done = 0
+        self.last_message = ""
+        axes = station.profile.axes
+        self.axis_indices: tuple[int, ...] = tuple(range(min(2, len(axes))))
+        self.axis_names: tuple[str, ...] = tuple(axes[i].name for i in self.axis_indices)
+        self.travel_limits: tuple[tuple[float, float], ...] = tuple(
+            (0.0, axes[i].travel) for i in self.axis_indices
+        )
+        self._dirty: set[str] = set()
+        self._throttle = QTimer(self)
+        self._throttle.setSingleShot(True)
+        self._throttle.setInterval(max(0, round(throttle_ms)))
+        self._throttle.timeout.connect(self._flush)
+        self._throttle_ms = throttle_ms
+
+        self._build(axes[0].unit if axes else "mm")
+        self.model.axisChanged.connect(self._axis_changed)
+        self.model.lockChanged.connect(self._update_enabled)
+        if runner is not None:
+            runner.progressChanged.connect(self._progress)
+            runner.stateChanged.connect(self._update_enabled)
+        self._draw_position()
+        self._update_enabled()
+        self.fit()
+
+    # --- building ------------------------------------------------------------
+
+    def _build(self, unit: str) -> None:
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(2)
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        self.hint_label = QLabel(LEGEND_HTML)
+        self.hint_label.setObjectName("preview_hint")
+        self.hint_label.setToolTip(
+            "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside the"
+            " travel limits moves the machine there after you confirm"
+        )
+        self.fit_button = QPushButton("Fit")
+        self.fit_button.setObjectName("preview_fit")
+        self.fit_button.setToolTip("Show the whole job and the machine's travel")
+        self.fit_button.clicked.connect(self.fit)
+        bar.addWidget(self.hint_label, 1)
+        bar.addWidget(self.fit_button)
+        layout.addLayout(bar)
+
+        self.plot_widget = pg.PlotWidget(background="w")
+        self.plot_widget.setObjectName("job_preview_plot")
+        self.plot_widget.setMinimumSize(260, 200)
+        self.plot = self.plot_widget.getPlotItem()
+        self.plot.setAspectLocked(True, ratio=1.0)
+        self.plot.showGrid(x=True, y=True, alpha=0.2)
+        self.plot.hideButtons()
+        self.plot.setMenuEnabled(False)
+        names = self.axis_names if self.axis_names else ("X",)
+        self.plot.setLabel("bottom", names[0], units=unit)
+        self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
+        for side in ("left", "bottom"):
+            axis = self.plot.getAxis(side)
+            axis.setPen(pg.mkPen("#909090"))
+            axis.setTextPen(pg.mkPen("#404040"))
+            # pyqtgraph would otherwise show "(kmm)" or "(µmm)": these are machine millimetres.
+            axis.enableAutoSIPrefix(False)
+        layout.addWidget(self.plot_widget, 1)
+
+        (x0, x1), (y0, y1) = self._limits_2d()
+        self.limits_curve = self.plot.plot(
+            [x0, x1, x1, x0, x0],
+            [y0, y0, y1, y1, y0],
+            pen=pg.mkPen(LIMIT_COLOUR, width=1, style=Qt.PenStyle.DashDotLine),
+        )
+        # Width-1 pens: wider ones make Qt stroke segment by segment, far slower on big paths.
+        self.travel_curve = self._curve(
+            pg.mkPen(TRAVEL_COLOUR, width=1, style=Qt.PenStyle.DashLine)
+        )
+        self.work_curve = self._curve(pg.mkPen(WORK_COLOUR, width=1))
+        self.done_travel_curve = self._curve(
+            pg.mkPen(DONE_COLOUR, width=1, style=Qt.PenStyle.DashLine)
+        )
+        self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
+        self.work_markers = self._markers(WORK_COLOUR, 6)
+        self.done_markers = self._markers(DONE_COLOUR, 6)
+        self.position_marker = pg.ScatterPlotItem(
+            size=16,
+            symbol="+",
+            pen=pg.mkPen(POSITION_COLOUR, width=2),
+            brush=pg.mkBrush(POSITION_COLOUR),
+        )
+        self.position_marker.setZValue(10)
+        self.plot.addItem(self.position_marker)
+        self.plot.scene().sigMouseClicked.connect(self._clicked)
+
+    def _curve(self, pen: object) -> pg.PlotDataItem:
+        return self.plot.plot(pen=pen, connect="finite")
+
+    def _markers(self, colour: str, size: int) -> pg.ScatterPlotItem:
+        markers = pg.ScatterPlotItem(
+            size=size, symbol="o", pen=pg.mkPen(colour), brush=pg.mkBrush(colour)
+        )
+        self.plot.addItem(markers)
+        return markers
+
+    def _limits_2d(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        limits = self.travel_limits
+        x = limits[0] if limits else (0.0, 0.0)
+        y = limits[1] if len(limits) > 1 else (0.0, 0.0)
+        return x, y
+
+    # --- public --------------------------------------------------------------
+
+    def set_program(self, program: Program | None) -> None:
+        """Draw ``program`` (None clears); times the build in ``build_seconds``."""
+        start = time.perf_counter()
+        self.program = program
+        self.done = 0
+        if program is None or not self.axis_names:
+            self.path_geometry = None
+            for curve in (self.travel_curve, self.work_curve):
+                curve.setData(_EMPTY, _EMPTY)
+            self.work_markers.setData(x=_EMPTY, y=_EMPTY)
+        else:
+            y_axis = self.axis_names[1] if len(self.axis_names) > 1 else None
+            geometry = ProgramGeometry(program, self.axis_names[0], y_axis)
+            self.path_geometry = geometry
+            self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
+            self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
+            self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
+        self._draw_done()
+        self.fit()
+        self.build_seconds = time.perf_counter() - start
+
+    def set_done(self, done: int) -> None:
+        """Operations ``0 … done - 1`` are done (throttled redraw)."""
+        if done == self.done:
+            return
+        self.done = done
+        self._request("done")
+
+    def fit(self) -> None:
+        """Show the whole job and the soft-limit rectangle."""
+        (x0, x1), (y0, y1) = self._limits_2d()
+        geometry = self.path_geometry
+        if geometry is not None:
+            xs = np.concatenate((geometry.travel.x, geometry.work.x, geometry.markers.x))
+            ys = np.concatenate((geometry.travel.y, geometry.work.y, geometry.markers.y))
+            if np.isfinite(xs).any():
+                x0, x1 = min(x0, float(np.nanmin(xs))), max(x1, float(np.nanmax(xs)))
+            if np.isfinite(ys).any():
+                y0, y1 = min(y0, float(np.nanmin(ys))), max(y1, float(np.nanmax(ys)))
+        self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
+
+    @property
+    def click_refusal(self) -> str | None:
+        """Why a click would not move the machine now, or None when it would."""
+        if self.runner is not None and self.runner.state in ACTIVE_STATES:
+            return "a job is under way"
+        reason = self.model.motion_lock_reason()
+        if reason is not None:
+            return f"motion is locked: {reason}"
+        if self.station.session is None:
+            return "not connected"
+        return None
+
+    def request_move(self, x: float, y: float) -> bool:
+        """What a click at (x, y) does: refuse, or ask and move.  True when moves were sent."""
+        target = (x, y)[: len(self.axis_names)]
+        described = ", ".join(
+            f"{name} {value:.3f}" for name, value in zip(self.axis_names, target, strict=True)
+        )
+        refusal = self.click_refusal
+        if refusal is not None:
+            return self._say(f"Click-to-move refused ({described}): {refusal}")
+        outside = [
+            f"{name} {value:.3f} is outside {low:g}…{high:g}"
+            for name, value, (low, high) in zip(
+                self.axis_names, target, self.travel_limits, strict=True
+            )
+            if not low <= value <= high
+        ]
+        if outside:
+            return self._say(f"Click-to-move refused: {'; '.join(outside)} (soft limits)")
+        unit = self.station.profile.axes[0].unit
+        if not self.confirm(f"Move to {described} {unit}?"):
+            return self._say("Click-to-move cancelled")
+        session = self.station.session
+        assert session is not None  # click_refusal said so
+        for axis, value in zip(self.axis_indices, target, strict=True):
+            if not session.move_absolute(axis, value):
+                return self._say(f"The machine refused the move to {described}")
+        self._say(f"Moving to {described}")
+        return True
+
+    # --- events --------------------------------------------------------------
+
+    def _clicked(self, event: object) -> None:
+        """A left click (pyqtgraph sends none for a drag) in the plot area is a move request."""
+        if not isinstance(event, MouseClickEvent):
+            return
+        if event.button() != Qt.MouseButton.LeftButton or event.double():
+            return
+        view = self.plot.getViewBox()
+        scene_pos = event.scenePos()
+        if not view.sceneBoundingRect().contains(scene_pos):
+            return  # on an axis or the margin, not on the plate
+        event.accept()
+        point: QPointF = view.mapSceneToView(scene_pos)
+        self.request_move(point.x(), point.y())
+
+    def _say(self, text: str) -> bool:
+        self.last_message = text
+        self.message.emit(text)
+        return False
+
+    def _progress(self, done: int, _total: int) -> None:
+        self.set_done(done)
+
+    def _axis_changed(self, index: int) -> None:
+        if index in self.axis_indices:
+            self._request("position")
+
+    def _update_enabled(self, *_args: object) -> None:
+        refusal = self.click_refusal
+        self.plot_widget.setToolTip(
+            "Click a point inside the travel to move there (after confirming)"
+            if refusal is None
+            else f"Click-to-move is off: {refusal}"
+        )
+
+    # --- throttled drawing ---------------------------------------------------
+
+    def _request(self, what: str) -> None:
+        self._dirty.add(what)
+        if self._throttle_ms <= 0:
+            self._flush()
+        elif not self._throttle.isActive():
+            self._flush()  # draw at once, then at most once per interval
+            self._throttle.start()
+
+    def _flush(self) -> None:
+        dirty, self._dirty = self._dirty, set()
+        if "done" in dirty:
+            self._draw_done()
+        if "position" in dirty:
+            self._draw_position()
+        if dirty and self._throttle_ms > 0 and not self._throttle.isActive():
+            self._throttle.start()  # a beat with work: keep the pace for what comes next
+
+    def _draw_done(self) -> None:
+        geometry = self.path_geometry
+        if geometry is None:
+            for curve in (self.done_travel_curve, self.done_work_curve):
+                curve.setData(_EMPTY, _EMPTY)
+            self.done_markers.setData(x=_EMPTY, y=_EMPTY)
+            return
+        for curve, path in (
+            (self.done_travel_curve, geometry.travel),
+            (self.done_work_curve, geometry.work),
+        ):
+            n = path.done_count(self.done)
+            curve.setData(path.x[:n], path.y[:n], connect="finite")
+        n = geometry.markers.done_count(self.done)
+        self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
+
+    def _draw_position(self) -> None:
+        axes = self.model.axes
+        values: Sequence[float] = [axes[i].position for i in self.axis_indices]
+        x = values[0] if values else 0.0
+        y = values[1] if len(values) > 1 else 0.0
+        self.position_marker.setData(x=[x], y=[y])

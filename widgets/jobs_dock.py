@@ -1,0 +1,386 @@
+"""The jobs dock: open a job, see it, run it, and know at every moment where it is.
+
+A view over :class:`app.jobs.runner.JobRunner`, which owns the program, the
+state machine, the dry-run estimate and the checkpoint; the dock only asks
+it (Run, Pause, Resume, Step, Abort, Continue) and shows what it says.
+Buttons are enabled from the runner's state alone, so a button the operator
+can press is one the runner will honour.
+
+Opening goes through :mod:`app.jobs.loaders` (the extension or the content
+chooses the reader) and then ``runner.load``.  A malformed file shows
+``file:line: reason`` and loads nothing: the runner is not even asked, so a
+job loaded before stays as it was.  A program that leaves the machine's
+travel (or needs a tool the machine lacks) is refused by the runner, which
+unloads and lists every offending operation with its file and line; the
+dock shows that list as it comes, in the message area.
+
+Two things ask for the operator: an interrupted run of the loaded job
+(``resume_available``) offers to resume from the operation after the last
+completed one or to discard the checkpoint, and a WAIT operation shows its
+message with a Continue button.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QFileDialog,
+    QFrame,
+    QHBoxLayout,
+    QLabel,
+    QPlainTextEdit,
+    QProgressBar,
+    QPushButton,
+    QSizePolicy,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.jobs.loaders import file_dialog_filter, load_job
+from app.jobs.program import JobFileError, Program
+from app.jobs.runner import JobRunner, JobState
+from app.station import Station
+from widgets.job_preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
+from widgets.style import monospace_font
+
+MESSAGE_LINES = 200
+
+
+def _banner_style(name: str, background: str, border: str) -> str:
+    """A coloured band for one named frame only (its labels and buttons keep their looks)."""
+    return (
+        f"QFrame#{name} {{ background: {background}; border: 1px solid {border};"
+        " border-radius: 4px; }"
+    )
+
+
+def clock_text(seconds: float | None) -> str:
+    """mm:ss (h:mm:ss past an hour); "--:--" when unknown."""
+    if seconds is None or seconds != seconds or seconds < 0:  # None, NaN or nonsense
+        return "--:--"
+    whole = round(seconds)
+    hours, rest = divmod(whole, 3600)
+    minutes, secs = divmod(rest, 60)
+    return f"{hours}:{minutes:02d}:{secs:02d}" if hours else f"{minutes:02d}:{secs:02d}"
+
+
+class JobsDock(QDockWidget):
+    """Open…, preview, Run / Pause / Resume / Step / Abort, progress, ETA, operator prompts."""
+
+    def __init__(
+        self,
+        station: Station,
+        runner: JobRunner,
+        parent: QWidget | None = None,
+        *,
+        confirm: Callable[[str], bool] | None = None,
+        throttle_ms: float | None = None,
+    ) -> None:
+        super().__init__("Jobs", parent)
+        self.setObjectName("jobs_dock")
+        self.station = station
+        self.runner = runner
+        self.preview = JobPreview(
+            station,
+            runner,
+            confirm=confirm,
+            throttle_ms=DEFAULT_THROTTLE_MS if throttle_ms is None else throttle_ms,
+        )
+        self.preview.setObjectName("job_preview")
+
+        content = QWidget()
+        layout = QVBoxLayout(content)
+        layout.setContentsMargins(6, 4, 6, 6)
+        layout.setSpacing(4)
+        layout.addLayout(self._build_toolbar())
+        layout.addWidget(self._build_resume_offer())
+        layout.addWidget(self._build_prompt())
+        layout.addWidget(self.preview, 1)
+        layout.addLayout(self._build_progress())
+        self.operation_label = QLabel("—")
+        self.operation_label.setObjectName("job_operation")
+        self.operation_label.setFont(monospace_font())
+        self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.operation_label.setToolTip("The operation being executed and the line it came from")
+        layout.addWidget(self.operation_label)
+        self.messages = QPlainTextEdit()
+        self.messages.setObjectName("job_messages")
+        self.messages.setReadOnly(True)
+        self.messages.setMaximumBlockCount(MESSAGE_LINES)
+        self.messages.setFont(monospace_font(-1))
+        self.messages.setPlaceholderText("Messages about the job appear here")
+        self.messages.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Preferred)
+        self.messages.setFixedHeight(self.messages.fontMetrics().lineSpacing() * 5 + 12)
+        layout.addWidget(self.messages)
+        self.setWidget(content)
+
+        runner.stateChanged.connect(self._state_changed)
+        runner.progressChanged.connect(self._show_progress)
+        runner.etaChanged.connect(self._show_eta)
+        runner.operationStarted.connect(self._show_operation)
+        runner.waitingForOperator.connect(self._show_prompt)
+        runner.message.connect(self._runner_message)
+        runner.programChanged.connect(self._program_changed)
+        station.model.lockChanged.connect(self._update_buttons)
+        self.preview.message.connect(self.say)
+        self._program_changed()
+
+    # --- building ------------------------------------------------------------
+
+    def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
+        button = QPushButton(text)
+        button.setObjectName(name)
+        button.setToolTip(tip)
+        button.clicked.connect(lambda _=False: slot())
+        return button
+
+    def _build_toolbar(self) -> QHBoxLayout:
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        self.open_button = self._button(
+            "Open…",
+            "job_open",
+            "Open a job file (point list; the type is told by its content)",
+            self.ask_open,
+        )
+        self.file_label = QLabel("no job loaded")
+        self.file_label.setObjectName("job_file")
+        self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.run_button = self._button(
+            "Run", "job_run", "Run the job from the start", self.runner.start
+        )
+        self.pause_button = self._button(
+            "Pause", "job_pause", "Pause after the operation under way finishes", self.runner.pause
+        )
+        self.resume_button = self._button(
+            "Resume", "job_resume", "Go on from where the job paused", self.runner.resume
+        )
+        self.step_button = self._button(
+            "Step", "job_step", "Execute the next operation only, then pause", self.runner.step
+        )
+        self.abort_button = self._button(
+            "Abort", "job_abort", "Stop the machine now and end the job", self.runner.abort
+        )
+        self.abort_button.setStyleSheet(
+            "QPushButton:enabled { color: #b00020; font-weight: bold; }"
+        )
+        bar.addWidget(self.open_button)
+        bar.addWidget(self.file_label, 1)
+        for button in (
+            self.run_button,
+            self.pause_button,
+            self.resume_button,
+            self.step_button,
+            self.abort_button,
+        ):
+            bar.addWidget(button)
+        return bar
+
+    def _build_resume_offer(self) -> QFrame:
+        self.resume_offer = QFrame()
+        self.resume_offer.setObjectName("job_resume_offer")
+        self.resume_offer.setStyleSheet(_banner_style("job_resume_offer", "#e8f0fe", "#8ab4f8"))
+        row = QHBoxLayout(self.resume_offer)
+        row.setContentsMargins(6, 4, 6, 4)
+        self.resume_offer_label = QLabel()
+        self.resume_offer_label.setWordWrap(True)
+        self.resume_checkpoint_button = self._button(
+            "Resume",
+            "job_resume_checkpoint",
+            "Go on after the last operation the machine completed; none is repeated",
+            self.runner.resume_from_checkpoint,
+        )
+        self.discard_checkpoint_button = self._button(
+            "Discard",
+            "job_discard_checkpoint",
+            "Forget the interrupted run; Run then starts from the first operation",
+            self.runner.discard_checkpoint,
+        )
+        row.addWidget(self.resume_offer_label, 1)
+        row.addWidget(self.resume_checkpoint_button)
+        row.addWidget(self.discard_checkpoint_button)
+        self.resume_offer.hide()
+        return self.resume_offer
+
+    def _build_prompt(self) -> QFrame:
+        self.prompt = QFrame()
+        self.prompt.setObjectName("job_prompt")
+        self.prompt.setStyleSheet(_banner_style("job_prompt", "#fff3cd", "#e0c060"))
+        row = QHBoxLayout(self.prompt)
+        row.setContentsMargins(6, 4, 6, 4)
+        self.prompt_label = QLabel()
+        self.prompt_label.setObjectName("job_prompt_text")
+        self.prompt_label.setWordWrap(True)
+        font = self.prompt_label.font()
+        font.setBold(True)
+        self.prompt_label.setFont(font)
+        self.continue_button = self._button(
+            "Continue", "job_continue", "Done: let the job go on", self.runner.confirm
+        )
+        row.addWidget(self.prompt_label, 1)
+        row.addWidget(self.continue_button)
+        self.prompt.hide()
+        return self.prompt
+
+    def _build_progress(self) -> QHBoxLayout:
+        row = QHBoxLayout()
+        row.setSpacing(8)
+        self.progress = QProgressBar()
+        self.progress.setObjectName("job_progress")
+        self.progress.setRange(0, 1)
+        self.progress.setValue(0)
+        # The count beside the bar, not on it: text over the bar's edge is half unreadable.
+        self.progress.setTextVisible(False)
+        self.count_label = QLabel()
+        self.count_label.setObjectName("job_count")
+        self.count_label.setFont(monospace_font())
+        self.elapsed_label = QLabel()
+        self.elapsed_label.setObjectName("job_elapsed")
+        self.elapsed_label.setFont(monospace_font())
+        self.eta_label = QLabel()
+        self.eta_label.setObjectName("job_eta")
+        self.eta_label.setFont(monospace_font())
+        self.eta_label.setToolTip("Time left, from the dry run of the job on the machine's model")
+        row.addWidget(self.progress, 1)
+        row.addWidget(self.count_label)
+        row.addWidget(self.elapsed_label)
+        row.addWidget(self.eta_label)
+        self._set_times(None, None)
+        return row
+
+    # --- operator actions ----------------------------------------------------
+
+    def ask_open(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, "Open a job", "", file_dialog_filter())
+        if path:
+            self.open_path(Path(path))
+
+    def open_path(self, path: Path) -> bool:
+        """Load the job in ``path`` into the runner; False (and says why) when it is not loaded."""
+        if self.runner.state in ACTIVE_STATES:
+            self.say(f"{path.name}: not opened — a job is under way (abort it first)")
+            return False
+        axis_names = [axis.name for axis in self.station.profile.axes]
+        try:
+            program = load_job(path, axis_names)
+        except JobFileError as exc:
+            self.say(f"{exc} — not loaded")
+            return False
+        if self.runner.load(program):
+            return False  # the runner said which operations, line by line (its message)
+        self.say(f"{path.name}: {len(program)} operations loaded")
+        self._program_changed()
+        return True
+
+    def say(self, text: str) -> None:
+        self.messages.appendPlainText(text)
+        self.messages.ensureCursorVisible()
+
+    # --- runner → view -------------------------------------------------------
+
+    def _runner_message(self, text: str) -> None:
+        """Show it, and look at the runner again: it offers a checkpoint (abort, failure,
+        discard) after its state change, with no signal of its own, but always says so."""
+        self.say(text)
+        self._state_changed()
+
+    def _program_changed(self) -> None:
+        program = self.runner.program
+        if program is not self.preview.program:
+            self.preview.set_program(program)
+        self._show_file(program)
+        total = len(program) if program is not None else 0
+        self._show_progress(self.runner.done if program is not None else 0, total)
+        estimate = self.runner.estimate if program is not None else None
+        self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
+        self.operation_label.setText("—")
+        self._state_changed()
+
+    def _show_file(self, program: Program | None) -> None:
+        if program is None:
+            self.file_label.setText("no job loaded")
+            self.file_label.setToolTip("")
+            return
+        source = str(program.source) if program.source else program.name
+        self.file_label.setText(f"<b>{program.name}</b> — {len(program)} operations")
+        self.file_label.setToolTip(source)
+
+    def _state_changed(self, *_args: object) -> None:
+        state = self.runner.state
+        if state is not JobState.WAITING:
+            self.prompt.hide()
+        self._show_resume_offer()
+        self._update_buttons()
+
+    def _show_resume_offer(self) -> None:
+        index = self.runner.resume_available
+        program = self.runner.program
+        if index is None or program is None or self.runner.state in ACTIVE_STATES:
+            self.resume_offer.hide()
+            return
+        if 0 <= index < len(program):
+            where = f"{program[index].source}  {program[index].describe()}"
+        else:
+            where = "the end"
+        self.resume_offer_label.setText(
+            f"An interrupted run of <b>{program.name}</b> completed {index} of "
+            f"{len(program)} operations. Resume from operation {index + 1} ({where})?"
+        )
+        self.resume_checkpoint_button.setText(f"Resume from op {index + 1}")
+        self.resume_offer.show()
+
+    def _update_buttons(self, *_args: object) -> None:
+        state = self.runner.state
+        loaded = self.runner.program is not None
+        lock = self.station.model.motion_lock_reason()
+        can_move = lock is None
+        offer = self.runner.resume_available is not None
+        self.open_button.setEnabled(state not in ACTIVE_STATES)
+        # With an interrupted run on offer, Run from the start would repeat operations:
+        # the operator chooses Resume or Discard first.
+        self.run_button.setEnabled(
+            loaded
+            and can_move
+            and not offer
+            and state in (JobState.READY, JobState.DONE, JobState.ABORTED, JobState.FAILED)
+        )
+        self.pause_button.setEnabled(state in (JobState.RUNNING, JobState.WAITING))
+        self.resume_button.setEnabled(can_move and state in (JobState.PAUSED, JobState.PAUSING))
+        self.step_button.setEnabled(
+            loaded and can_move and not offer and state in (JobState.READY, JobState.PAUSED)
+        )
+        self.abort_button.setEnabled(state in ACTIVE_STATES)
+        self.resume_checkpoint_button.setEnabled(can_move)
+        self.continue_button.setEnabled(state is JobState.WAITING)
+        why = f" — motion locked: {lock}" if lock else ""
+        self.run_button.setToolTip(f"Run the job from the start{why}")
+
+    def _show_progress(self, done: int, total: int) -> None:
+        self.progress.setRange(0, max(1, total))
+        self.progress.setValue(min(done, max(1, total)))
+        self.count_label.setText(f"{done} / {total} ops")
+
+    def _show_eta(self, elapsed_s: float, remaining_s: float) -> None:
+        self._set_times(elapsed_s, remaining_s)
+
+    def _set_times(self, elapsed_s: float | None, remaining_s: float | None) -> None:
+        self.elapsed_label.setText(f"elapsed {clock_text(elapsed_s)}")
+        self.eta_label.setText(f"left {clock_text(remaining_s)}")
+
+    def _show_operation(self, index: int) -> None:
+        program = self.runner.program
+        if program is None or not 0 <= index < len(program):
+            return
+        op = program[index]
+        self.operation_label.setText(f"{op.source}  {op.describe()}")
+
+    def _show_prompt(self, text: str) -> None:
+        self.prompt_label.setText(f"Operator: {text}")
+        self.prompt.show()
+        self.continue_button.setEnabled(True)
+        self.continue_button.setFocus()
+        self.say(f"waiting for the operator: {text}")
