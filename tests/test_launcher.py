@@ -1,0 +1,76 @@
+"""The entry point: command-line links, and switching machine from the Link page."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QSettings
+from pytestqt.qtbot import QtBot
+
+from app.__main__ import Launcher, build_parser, connect_as_asked
+from app.machine import LinkState
+from app.profiles import load_profile
+from app.settings import StationSettings
+
+
+@pytest.fixture
+def store(tmp_path: Path) -> QSettings:
+    return QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+
+
+def test_switching_machine_rebuilds_station_and_window(qtbot: QtBot, store: QSettings) -> None:
+    launcher = Launcher(store, period_ms=None)
+    try:
+        first = launcher.open(load_profile("xy-stage"))
+        first.connect_emulator()
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        launcher.window.connection_panel.profileRequested.emit("usb3")  # as the combo does
+        assert launcher.station is not first
+        assert first.link is None  # the old machine was stopped and its link closed
+        assert launcher.station is not None and launcher.station.profile.name == "usb3"
+        assert launcher.window.windowTitle() == "StepDeck — Three-axis USB unit"
+        assert launcher.station.model.link_state is LinkState.CONNECTED
+        assert StationSettings(store).profile == "usb3"
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()
+
+
+def test_an_unknown_machine_is_refused_and_the_old_one_kept(
+    qtbot: QtBot, store: QSettings, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    launcher = Launcher(store, period_ms=None)
+    warnings: list[str] = []
+    monkeypatch.setattr(
+        "app.__main__.QMessageBox.warning", lambda _parent, _title, text: warnings.append(text)
+    )
+    try:
+        station = launcher.open(load_profile("xy-stage"))
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        launcher.switch("no-such-machine")
+        assert launcher.station is station
+        assert warnings and "no-such-machine" in warnings[0]
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()
+
+
+def test_command_line_port_is_connected_and_remembered(
+    store: QSettings, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    settings = StationSettings(store)
+    calls: list[tuple[str, int | None]] = []
+
+    class FakeStation:
+        def connect_serial(self, port: str, baud: int | None = None) -> None:
+            calls.append((port, baud))
+
+    args = build_parser().parse_args(["--port", "/dev/ttyUSB7", "--baud", "19200"])
+    connect_as_asked(FakeStation(), args, settings)  # type: ignore[arg-type]
+    assert calls == [("/dev/ttyUSB7", 19200)]
+    assert (settings.transport, settings.device, settings.baud) == ("serial", "/dev/ttyUSB7", 19200)
