@@ -37,7 +37,7 @@ from protocol.stage.codec import (
     Subscriber,
     encode_echo,
 )
-from protocol.transport.base import Transport
+from tests.helpers.fake_transport import SilentPort
 from tests.helpers.harness import StationHarness
 
 NAMES, UNITS = ("X", "Y"), ("mm", "mm")
@@ -475,39 +475,10 @@ def test_simulation_connects_the_emulator_which_answers_a_jog(
     assert not controls.simulating and model.link_state is LinkState.DISCONNECTED
 
 
-class RealDevice(Transport):
-    """Stands in for a serial port with a real stage behind it."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self._open = False
-
-    def describe(self) -> str:
-        return "/dev/ttyUSB0 @ 115200"
-
-    @property
-    def is_open(self) -> bool:
-        return self._open
-
-    def open(self) -> None:
-        self._open = True
-        self._mark_open()
-        self.listener.connection_made()
-
-    def close(self) -> None:
-        was_open, self._open = self._open, False
-        self._mark_closed()
-        if was_open:
-            self.listener.connection_lost(None)
-
-    def write(self, data: bytes) -> None:
-        pass
-
-
 def test_simulation_never_replaces_a_real_device(
     harness: StationHarness, controls: EmulatorControls
 ) -> None:
-    harness.station.connect_transport(RealDevice())
+    harness.station.connect_transport(SilentPort())
     with pytest.raises(SimulationRefused, match="ttyUSB0 @ 115200 is connected"):
         controls.set_simulation(True)
     controls.set_simulation(False)

@@ -8,7 +8,7 @@ import pytest
 
 from app.machine import LinkState, ParameterState
 from protocol.stage.codec import PARAMETERS, CommandFrame, CommandId, decode
-from protocol.transport.base import Transport
+from tests.helpers.fake_transport import SilentPort
 from tests.helpers.harness import StationHarness
 
 
@@ -64,44 +64,9 @@ def test_a_jog_held_before_the_loss_is_not_resent(harness: StationHarness) -> No
     assert not harness.emulator.axes[0].moving
 
 
-class RefusingTransport(Transport):
-    """Fails to open ``failures`` times, then connects: a port that comes back."""
-
-    def __init__(self, failures: int) -> None:
-        super().__init__()
-        self.failures = failures
-        self.opens = 0
-        self._open = False
-
-    def describe(self) -> str:
-        return "flaky port"
-
-    @property
-    def is_open(self) -> bool:
-        return self._open
-
-    def open(self) -> None:
-        self.opens += 1
-        if self.opens <= self.failures:
-            self.listener.connection_lost("port not found")
-            return
-        self._open = True
-        self._mark_open()
-        self.listener.connection_made()
-
-    def close(self) -> None:
-        was_open, self._open = self._open, False
-        self._mark_closed()
-        if was_open:
-            self.listener.connection_lost(None)
-
-    def write(self, data: bytes) -> None:
-        pass
-
-
 def test_failed_reopens_back_off_longer_each_time(harness: StationHarness) -> None:
     harness.station.close_link()
-    transport = RefusingTransport(failures=3)
+    transport = SilentPort("flaky port", failures=3)
     harness.station.connect_transport(transport)
     model = harness.station.model
     times = []

@@ -17,8 +17,8 @@ from app.developer import AxisFields, EchoFields, inject_echo
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus
+from tests.helpers.fake_transport import SilentPort
 from tests.helpers.harness import StationHarness
-from tests.test_developer import RealDevice
 from widgets.developer_pane import DeveloperPane
 
 LEFT = Qt.MouseButton.LeftButton
@@ -376,7 +376,7 @@ def test_simulation_answers_a_held_jog(
 def test_simulation_is_refused_while_a_real_device_is_connected(
     qtbot: QtBot, harness: StationHarness, pane: DeveloperPane
 ) -> None:
-    harness.station.connect_transport(RealDevice())
+    harness.station.connect_transport(SilentPort())
     _tick(qtbot, pane.simulation)
     assert not pane.simulation.isChecked()
     assert pane.simulation_note.isVisible()
