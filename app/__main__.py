@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Sequence
+import traceback
+from collections.abc import Callable, Sequence
+from types import TracebackType
 
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
@@ -107,6 +109,26 @@ class Launcher:
         self.settings.sync()
 
 
+def report_unexpected(launcher: Launcher) -> Callable[..., None]:
+    """An error no code path expected: keep the station running, stop the machine, say so.
+
+    The full traceback still goes to stderr for the bug report; the operator
+    gets one line in the status bar instead of a window that silently stopped
+    reacting.
+    """
+
+    def hook(kind: type[BaseException], error: BaseException, tb: TracebackType | None) -> None:
+        traceback.print_exception(kind, error, tb, file=sys.stderr)
+        station = launcher.station
+        if station is None:
+            return
+        if station.session is not None:
+            station.session.stop_all()
+        station.model.message.emit(f"Internal error ({kind.__name__}: {error}); machine stopped")
+
+    return hook
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     app = QApplication.instance() or QApplication(sys.argv[:1])
@@ -125,6 +147,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.period:
         settings.period_ms = max(20, min(1000, args.period))
     launcher = Launcher(store, settings.period_ms)
+    sys.excepthook = report_unexpected(launcher)
     station = launcher.open(profile)
     try:
         connect_as_asked(station, args, settings)

@@ -8,7 +8,7 @@ import pytest
 from PySide6.QtCore import QSettings
 from pytestqt.qtbot import QtBot
 
-from app.__main__ import Launcher, build_parser, connect_as_asked
+from app.__main__ import Launcher, build_parser, connect_as_asked, report_unexpected
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.settings import StationSettings
@@ -74,3 +74,30 @@ def test_command_line_port_is_connected_and_remembered(
     connect_as_asked(FakeStation(), args, settings)  # type: ignore[arg-type]
     assert calls == [("/dev/ttyUSB7", 19200)]
     assert (settings.transport, settings.device, settings.baud) == ("serial", "/dev/ttyUSB7", 19200)
+
+
+def test_an_unexpected_error_stops_the_machine_and_says_so(
+    qtbot: QtBot, store: QSettings, capsys: pytest.CaptureFixture[str]
+) -> None:
+    launcher = Launcher(store, period_ms=None)
+    try:
+        station = launcher.open(load_profile("xy-stage"))
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        station.connect_emulator()
+        qtbot.waitUntil(lambda: station.model.link_state is LinkState.CONNECTED)
+        assert station.session is not None
+        station.session.set_jog([1, 0])
+        messages: list[str] = []
+        station.model.message.connect(messages.append)
+        try:
+            raise RuntimeError("boom")
+        except RuntimeError as exc:
+            report_unexpected(launcher)(RuntimeError, exc, exc.__traceback__)
+        assert station.session.jog_vector == (0, 0)
+        assert messages[-1] == "Internal error (RuntimeError: boom); machine stopped"
+        assert "Traceback" in capsys.readouterr().err
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()
