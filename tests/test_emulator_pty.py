@@ -16,6 +16,8 @@ import pytest
 import serial
 
 from protocol.clock import ManualClock
+from protocol.drill.codec import HOME as DRILL_HOME
+from protocol.drill.codec import encode_command as encode_drill_command
 from protocol.emulator.__main__ import (
     ControlChannel,
     LinkError,
@@ -180,6 +182,23 @@ def test_usb3_emulator_process_answers_get_settings_over_a_serial_port(tmp_path:
         assert process.wait(timeout=5) == 0
         assert process.stderr is not None
         assert b"usb3 emulator on" in process.stderr.read()
+
+
+def test_drill_emulator_process_homes_with_receipt_then_done_and_logs_it(tmp_path: Path) -> None:
+    log = tmp_path / "drill.log"
+    # Homing from power-on takes 3.0378 s of machine time: 0.3 s at ten times real time.
+    options = ("--pty", "--time-scale", "10", "--log", str(log))
+    with running_emulator(*options, profile="pcb-drill") as (process, path):
+        with serial.Serial(path, 19200, timeout=REPLY_TIMEOUT) as port:
+            port.write(encode_drill_command(DRILL_HOME))
+            assert port.read_until(b"\n") == b"RN\r\n"
+            assert port.read_until(b"\n") == b"DN\r\n"
+        process.send_signal(signal.SIGTERM)
+        assert process.wait(timeout=5) == 0
+        assert process.stderr is not None
+        assert b"pcb-drill emulator on" in process.stderr.read()
+    words = [line.split()[1:] for line in log.read_text().splitlines()]
+    assert words == [["received", "N"], ["done", "N"]]
 
 
 # --- --link: a fixed path for a pty that changes with every start -------------------

@@ -6,9 +6,10 @@ SPP adapter would use, with no board attached::
 
     python -m protocol.emulator --profile xy-stage --pty
     python -m protocol.emulator --profile usb3 --pty
+    python -m protocol.emulator --profile pcb-drill --pty
 
 The profile picks the firmware; the pty ignores baud rates, so the usb3
-unit's 19200 and the stage's 115200 need no setting here.
+unit's and the drill's 19200 and the stage's 115200 need no setting here.
 
 A pty gets a new number every time, so ``--link PATH`` also puts a symlink at
 a fixed path (as socat's ``link=`` does): an emulator restarted on the same
@@ -35,6 +36,14 @@ command log: time, axis, command, data, accepted), so a test can check what
 the machine really did across station restarts::
 
     12.345000 0 MOVE_ABS 20000 1
+
+The pcb-drill firmware logs its events instead: every line received (or
+refused), every procedure done, every hole drilled and every pen movement,
+positions in microsteps, so a job's holes can be checked against the file::
+
+    4.000000 received X1234
+    5.604200 done X1234
+    7.484700 hole X1234 Y567
 """
 
 from __future__ import annotations
@@ -57,6 +66,14 @@ from typing import Generic, TextIO, TypeVar
 
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.drill_firmware import (
+    CommandDone,
+    DrilledHole,
+    DrillFirmware,
+    ExecutedCommand,
+    PenEvent,
+    event_log_line,
+)
 from protocol.emulator.stage_firmware import ExecutedCommand as StageCommand
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import ADC_MAX, Usb3Firmware
@@ -66,7 +83,11 @@ from protocol.usb3.codec import AxisId, StepSize, Thread
 DeviceFactory = Callable[[Clock], EmulatedDevice]
 
 #: The firmware each machine profile runs, built on the clock it is served on.
-PROFILES: dict[str, DeviceFactory] = {"xy-stage": StageFirmware, "usb3": Usb3Firmware}
+PROFILES: dict[str, DeviceFactory] = {
+    "xy-stage": StageFirmware,
+    "usb3": Usb3Firmware,
+    "pcb-drill": DrillFirmware,
+}
 DEFAULT_PROFILE = "xy-stage"
 
 #: How long one loop iteration waits for host bytes: well inside a 5 ms control
@@ -349,16 +370,19 @@ class CommandLogFile:
     after every loop iteration (a few commands at most) and remembering the
     last entry written turns it into a complete record on disk.  Each batch
     is flushed at once, so whoever reads the file sees what the device did
-    even while it keeps running.
+    even while it keeps running.  A firmware with an ``event_log`` (the
+    drill's: commands, holes, pen) is logged from that instead, since what
+    it did matters more than what it was told.
     """
 
     def __init__(self, firmware: EmulatedDevice, path: Path) -> None:
         self._firmware = firmware
+        self._attribute = "event_log" if hasattr(firmware, "event_log") else "command_log"
         self._handle = path.open("a", encoding="utf-8")
         self._last: object | None = None
 
     def write_new(self) -> None:
-        entries: Sequence[object] = getattr(self._firmware, "command_log", ())
+        entries: Sequence[object] = getattr(self._firmware, self._attribute, ())
         start = 0
         if self._last is not None:
             for index in range(len(entries) - 1, -1, -1):
@@ -378,6 +402,8 @@ class CommandLogFile:
 
 
 def _log_line(entry: object) -> str:
+    if isinstance(entry, ExecutedCommand | CommandDone | DrilledHole | PenEvent):
+        return event_log_line(entry) + "\n"
     if isinstance(entry, StageCommand):
         try:
             name = CommandId(entry.command).name

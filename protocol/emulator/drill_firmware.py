@@ -1,0 +1,502 @@
+"""Firmware of the PCB drilling/drawing plotter, emulated (PROTOCOLS.md section 3).
+
+It is the device side of the ``drill`` dialect written from the contract
+alone, so the station's drill session and the Excellon jobs can be run and
+tested with no machine attached, and so a test can check which holes were
+really drilled where (:attr:`DrillFirmware.drill_log`).
+
+The axes are the mechanism :class:`~protocol.emulator.mechanism.Axis` run in
+*microstep* units instead of micrometres.  The reference machine steps every
+axis at one constant period per microstep (no ramps), so each Axis gets its
+speed as its start speed: it jumps to full speed and stops dead, and a move of
+``n`` microsteps takes exactly ``n`` periods.
+
+Decisions the contract leaves open, made here:
+
+- One procedure at a time.  ``R<letter>`` goes out at the end of the control
+  cycle in which the line arrived, even while another procedure runs; the
+  command is then *queued* and its procedure starts the moment the previous
+  one is done, so ``D`` replies come in command order.  The host is supposed
+  to wait for ``D``; queueing (rather than refusing) is what a firmware with
+  a receive buffer does when it is not.
+- A malformed line is answered ``E<its first letter, or ?>`` at once and
+  changes nothing; it does not disturb a procedure in progress.  Empty lines
+  (and an LF after the CR) are ignored.
+- ``X``/``Y`` move one axis at a time.  A target beyond the travel is clamped
+  to it (the reference firmware has no soft limits, and its carriage would
+  stop at the switch there anyway).
+- ``N`` homes X, then Y: run to the end switch at 0, back off until it opens
+  (one microstep, the switches' hysteresis), then step the zero offset and
+  call that 0.  So the zero lies ``offset + 1`` microsteps off the switch
+  edge and the high end of the travel sits exactly at the other switch.
+- Before the first ``N`` the step counters count from wherever the carriage
+  stood at power-on (:attr:`DrillConfig.power_on`); :attr:`DrillFirmware.homed`
+  says whether they count from the machine's zero yet.
+- ``V``: Z goes down one microstep per period until the optical sensor
+  (:attr:`DrillConfig.sensor_depth`), 12 microsteps more, dwells, and comes
+  back up to 0 in full steps, i.e. ``z_microsteps_per_step`` microsteps per
+  period.  The hole is logged at the bottom of the stroke, at the X/Y
+  position it was drilled at.
+- ``K``/``Z`` (pen down/up) take a fixed time, the pen's solenoid settling.
+- ``P`` runs X to 0, then Y to the back (its travel), then switches the motors
+  off.  Any later motion switches them on again; the counters are kept (an
+  idle stepper does not lose its position unless pushed).
+
+Time only moves in :meth:`DrillFirmware.run_until`, in whole control cycles:
+commands that arrived since the previous cycle are answered and queued at its
+start, the procedure advances through the cycle (one procedure step ending
+mid-cycle lets the next one start at once, so durations are exact, not
+rounded to cycles), and the replies go out at the cycle's end.  On a
+:class:`~protocol.clock.ManualClock` a procedure of duration ``d`` started at
+a cycle boundary says ``D`` at the end of the cycle in which ``d`` elapses.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import deque
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from protocol.clock import Clock
+from protocol.drill.codec import (
+    Command,
+    CommandDecoder,
+    Rejected,
+    Reply,
+    ReplyKind,
+    encode_reply,
+    error_reply,
+)
+from protocol.emulator.mechanism import Axis, AxisLimits
+
+#: Microsteps the drill goes on after the optical sensor sees the board.
+DRILL_OVERTRAVEL = 12
+#: Tolerance for comparing times built from float sums.
+_EPS = 1e-9
+#: Seconds added to a motion's computed duration.  Advancing an axis by exactly
+#: its ``time_to_idle`` can leave it a rounding error short of the event that
+#: ends the motion (homing's switch opening), still moving; the next step would
+#: then re-plan it and homing would never set its zero.  Far below a step
+#: period and below ``_EPS``, so it never shifts a reply into another cycle.
+_SLOP = 1e-10
+#: Entries kept in each log, bounded for an emulator left running for days.
+LOG_LENGTH = 10_000
+#: An acceleration high enough never to matter: speeds are jumped to anyway.
+_NO_RAMP = 1e12
+
+
+@dataclass(frozen=True)
+class DrillConfig:
+    """What differs between machines; the defaults describe the reference plotter.
+
+    Lengths are microsteps, times seconds.  ``travel`` is the range of
+    positions reachable from the machine's zero (X 4000 and Y 3000 are about
+    200 by 150 mm at 19.8 and 19.7 microsteps per mm).
+    """
+
+    travel: tuple[int, int] = (4000, 3000)
+    #: Seconds per microstep of X, Y and Z.
+    step_periods: tuple[float, float, float] = (0.0013, 0.0015, 0.0025)
+    #: Microsteps from where each end switch opens to the zero, X and Y.
+    zero_offsets: tuple[int, int] = (50, 40)
+    #: Where the carriage stands at power-on, microsteps from the X/Y switch edges.
+    power_on: tuple[int, int] = (1200, 900)
+    #: Z microsteps from the top to where the optical sensor sees the board.
+    sensor_depth: int = 400
+    #: Microsteps in one full step of Z: the return stroke goes that many per period.
+    z_microsteps_per_step: int = 8
+    #: Seconds the drill stays at the bottom of the stroke.
+    dwell: float = 0.2
+    #: Seconds the pen takes to go down or up.
+    pen_time: float = 0.15
+    control_cycle: float = 0.005
+
+    def __post_init__(self) -> None:
+        if any(t <= 0 for t in self.travel):
+            raise ValueError(f"travel must be positive, got {self.travel!r}")
+        if any(not p > 0 for p in self.step_periods):
+            raise ValueError(f"step periods must be positive, got {self.step_periods!r}")
+        if any(o < 0 for o in self.zero_offsets):
+            raise ValueError(f"zero offsets must be >= 0, got {self.zero_offsets!r}")
+        for start, travel, offset in zip(
+            self.power_on, self.travel, self.zero_offsets, strict=True
+        ):
+            if not 0 <= start <= travel + offset + 1:
+                raise ValueError(f"power-on position {start} is outside the switches")
+        if self.sensor_depth <= 0 or self.z_microsteps_per_step <= 0:
+            raise ValueError("the sensor depth and the Z full step must be positive")
+        if self.dwell < 0 or self.pen_time < 0 or not self.control_cycle > 0:
+            raise ValueError("times must be >= 0 and the control cycle positive")
+
+    @property
+    def drill_depth(self) -> int:
+        """Z microsteps from the top to the bottom of a drilling stroke."""
+        return self.sensor_depth + DRILL_OVERTRAVEL
+
+
+@dataclass(frozen=True, slots=True)
+class ExecutedCommand:
+    """One line the device received, when: accepted ones were answered ``R``, the rest ``E``."""
+
+    time: float
+    command: Command | Rejected
+    accepted: bool
+
+
+@dataclass(frozen=True, slots=True)
+class CommandDone:
+    """A procedure finished and was answered ``D``, at ``time``."""
+
+    time: float
+    command: Command
+
+
+@dataclass(frozen=True, slots=True)
+class DrilledHole:
+    """A hole the drill actually made: at the bottom of its stroke, at (x, y) microsteps."""
+
+    time: float
+    x: int
+    y: int
+
+    @property
+    def position(self) -> tuple[int, int]:
+        return self.x, self.y
+
+
+@dataclass(frozen=True, slots=True)
+class PenEvent:
+    """The pen finished going down (``down``) or up, at (x, y) microsteps."""
+
+    time: float
+    down: bool
+    x: int
+    y: int
+
+
+DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent
+"""Everything :attr:`DrillFirmware.event_log` records, in the order it happened."""
+
+
+def event_log_line(event: DrillEvent) -> str:
+    """One line of text for the emulator's ``--log`` file, time first."""
+    match event:
+        case ExecutedCommand(time, Rejected(raw), _):
+            return f"{time:.6f} refused {raw!r}"
+        case ExecutedCommand(time, Command(letter, value), _):
+            return f"{time:.6f} received {letter}{'' if value is None else value}"
+        case CommandDone(time, Command(letter, value)):
+            return f"{time:.6f} done {letter}{'' if value is None else value}"
+        case DrilledHole(time, x, y):
+            return f"{time:.6f} hole X{x} Y{y}"
+        case PenEvent(time, down, x, y):
+            return f"{time:.6f} pen {'down' if down else 'up'} X{x} Y{y}"
+    raise TypeError(f"not a drill event: {event!r}")
+
+
+#: A procedure: a generator that starts each step and yields how long it takes.
+_Procedure = Iterator[float]
+
+
+class DrillFirmware:
+    """The plotter's control loop: X, Y and the drill's Z, a pen, one procedure at a time.
+
+    Thread-safe: the loopback's ticker thread runs cycles while the GUI thread
+    reads positions and logs, so every public method and property takes the
+    same re-entrant lock.
+    """
+
+    def __init__(self, clock: Clock, config: DrillConfig | None = None) -> None:
+        self.config = config if config is not None else DrillConfig()
+        cfg = self.config
+        self._lock = threading.RLock()
+        self._sink: Callable[[bytes], None] | None = None
+        self._decoder = CommandDecoder()
+        self._inbox: deque[Command | Rejected] = deque()
+        self._pending: deque[Command] = deque()
+        self._outbox: list[bytes] = []
+        self._start = clock.now()
+        self._cycles = 0
+        #: The procedure running, its command, and the time left in its present step.
+        self._procedure: _Procedure | None = None
+        self._current: Command | None = None
+        self._step_left = 0.0
+        #: Time already run into the present cycle (procedure steps end mid-cycle).
+        self._into_cycle = 0.0
+        x = self._make_axis(cfg.travel[0] + cfg.zero_offsets[0] + 1, cfg.power_on[0])
+        y = self._make_axis(cfg.travel[1] + cfg.zero_offsets[1] + 1, cfg.power_on[1])
+        z = self._make_axis(2 * cfg.drill_depth, 0)
+        self._axes = (x, y, z)
+        self._speeds = tuple(1.0 / p for p in cfg.step_periods)
+        self._homed = False
+        self._motors_on = False
+        self._pen_down = False
+        self._command_log: deque[ExecutedCommand] = deque(maxlen=LOG_LENGTH)
+        self._drill_log: deque[DrilledHole] = deque(maxlen=LOG_LENGTH)
+        self._pen_log: deque[PenEvent] = deque(maxlen=LOG_LENGTH)
+        self._event_log: deque[DrillEvent] = deque(maxlen=LOG_LENGTH)
+
+    @staticmethod
+    def _make_axis(switch_span: int, physical: int) -> Axis:
+        """An axis in microsteps whose counter reads 0 where it stands at power-on."""
+        axis = Axis(
+            AxisLimits(travel_um=float(switch_span), microstep_um=1.0),
+            acceleration=_NO_RAMP,
+            start_speed=0.0,
+            position_um=float(physical),
+        )
+        axis.set_position(0.0)
+        return axis
+
+    # -- EmulatedDevice --------------------------------------------------------
+
+    def set_output(self, sink: Callable[[bytes], None] | None) -> None:
+        with self._lock:
+            self._sink = sink
+
+    def receive(self, data: bytes) -> None:
+        with self._lock:
+            self._inbox.extend(self._decoder.feed(data))
+
+    def run_until(self, t: float) -> None:
+        with self._lock:
+            while self._cycle_time(self._cycles + 1) <= t + _EPS:
+                self._run_cycle()
+
+    # -- introspection -----------------------------------------------------------
+
+    @property
+    def time(self) -> float:
+        """Clock time at the end of the last control cycle run."""
+        with self._lock:
+            return self._cycle_time(self._cycles)
+
+    @property
+    def positions(self) -> tuple[int, int, int]:
+        """X, Y and Z step counters in microsteps (Z: 0 at the top, positive down)."""
+        with self._lock:
+            x, y, z = (axis.microsteps for axis in self._axes)
+            return x, y, z
+
+    @property
+    def axes(self) -> tuple[Axis, ...]:
+        """The X, Y and Z mechanisms, in microsteps."""
+        with self._lock:
+            return self._axes
+
+    @property
+    def homed(self) -> bool:
+        """True once ``N`` has run: the counters count from the machine's zero."""
+        with self._lock:
+            return self._homed
+
+    @property
+    def motors_on(self) -> bool:
+        """The stepper drivers are enabled: off at power-on and after ``P``."""
+        with self._lock:
+            return self._motors_on
+
+    @property
+    def pen_down(self) -> bool:
+        with self._lock:
+            return self._pen_down
+
+    @property
+    def busy(self) -> bool:
+        """A ``D`` is still to come: a procedure runs or is queued, or its line is unread."""
+        with self._lock:
+            return (
+                self._procedure is not None
+                or bool(self._pending)
+                or any(isinstance(line, Command) for line in self._inbox)
+            )
+
+    @property
+    def rejected(self) -> int:
+        """Lines answered with ``E`` since power-on."""
+        with self._lock:
+            return self._decoder.rejected
+
+    @property
+    def command_log(self) -> tuple[ExecutedCommand, ...]:
+        """The latest lines received, oldest first (a snapshot, safe from any thread)."""
+        with self._lock:
+            return tuple(self._command_log)
+
+    @property
+    def drill_log(self) -> tuple[DrilledHole, ...]:
+        """The holes drilled, oldest first."""
+        with self._lock:
+            return tuple(self._drill_log)
+
+    @property
+    def pen_log(self) -> tuple[PenEvent, ...]:
+        """Pen movements, oldest first."""
+        with self._lock:
+            return tuple(self._pen_log)
+
+    @property
+    def event_log(self) -> tuple[DrillEvent, ...]:
+        """Commands received and done, holes and pen movements, in order (for ``--log``)."""
+        with self._lock:
+            return tuple(self._event_log)
+
+    # -- the control cycle ---------------------------------------------------------
+
+    def _cycle_time(self, cycles: int) -> float:
+        return self._start + cycles * self.config.control_cycle
+
+    def _now(self) -> float:
+        return self._cycle_time(self._cycles) + self._into_cycle
+
+    def _run_cycle(self) -> None:
+        self._into_cycle = 0.0
+        while self._inbox:
+            self._accept(self._inbox.popleft())
+        budget = self.config.control_cycle
+        while True:
+            if self._procedure is None and not self._start_next():
+                break
+            if self._step_left > budget + _EPS:
+                self._advance(budget)
+                self._step_left -= budget
+                budget = 0.0
+                break
+            # The step ends inside this cycle: run exactly to its end, then go on.
+            used = self._step_left
+            self._advance(used)
+            budget = max(budget - used, 0.0)
+            self._next_step()
+        if budget > 0:
+            self._advance(budget)
+        self._cycles += 1
+        self._into_cycle = 0.0
+        self._flush()
+
+    def _advance(self, dt: float) -> None:
+        for axis in self._axes:
+            axis.advance(dt)
+        self._into_cycle += dt
+
+    def _accept(self, line: Command | Rejected) -> None:
+        accepted = isinstance(line, Command)
+        self._log(ExecutedCommand(self._now(), line, accepted))
+        if isinstance(line, Rejected):
+            self._reply(error_reply(line))
+            return
+        self._reply(Reply(ReplyKind.RECEIVED, line.letter))
+        self._pending.append(line)
+
+    def _start_next(self) -> bool:
+        """Start the first queued procedure; False if none is waiting."""
+        if not self._pending:
+            return False
+        self._current = self._pending.popleft()
+        self._procedure = self._procedure_for(self._current)
+        self._next_step()
+        return True
+
+    def _next_step(self) -> None:
+        """Start the running procedure's next step, or finish it with ``D``."""
+        assert self._procedure is not None and self._current is not None
+        try:
+            self._step_left = next(self._procedure)
+        except StopIteration:
+            self._log(CommandDone(self._now(), self._current))
+            self._reply(Reply(ReplyKind.DONE, self._current.letter))
+            self._procedure = None
+            self._current = None
+            self._step_left = 0.0
+
+    def _reply(self, reply: Reply) -> None:
+        self._outbox.append(encode_reply(reply))
+
+    def _flush(self) -> None:
+        if not self._outbox:
+            return
+        data = b"".join(self._outbox)
+        self._outbox.clear()
+        if self._sink is not None:
+            self._sink(data)
+
+    def _log(self, event: DrillEvent) -> None:
+        self._event_log.append(event)
+        match event:
+            case ExecutedCommand():
+                self._command_log.append(event)
+            case DrilledHole():
+                self._drill_log.append(event)
+            case PenEvent():
+                self._pen_log.append(event)
+
+    # -- procedures ----------------------------------------------------------------
+
+    def _procedure_for(self, command: Command) -> _Procedure:
+        match command.letter:
+            case "N":
+                return self._home()
+            case "X" | "Y":
+                assert command.value is not None
+                return self._move("XY".index(command.letter), command.value)
+            case "V":
+                return self._drill()
+            case "K":
+                return self._pen(down=True)
+            case "Z":
+                return self._pen(down=False)
+            case "P":
+                return self._park()
+        raise AssertionError(f"no procedure for {command!r}")
+
+    def _until_idle(self, index: int) -> float:
+        """Seconds until the axis has surely stopped (its moves are never open-ended)."""
+        left = self._axes[index].time_to_idle()
+        assert left is not None
+        return left + _SLOP if left > 0 else 0.0
+
+    def _move(self, index: int, target: int) -> _Procedure:
+        self._motors_on = True
+        axis = self._axes[index]
+        axis.start_speed = self._speeds[index]
+        axis.move_to(float(min(target, self.config.travel[index])), self._speeds[index])
+        yield self._until_idle(index)
+
+    def _home(self) -> _Procedure:
+        self._motors_on = True
+        for index in (0, 1):
+            axis = self._axes[index]
+            axis.start_speed = self._speeds[index]
+            axis.home(self._speeds[index])  # to the switch, and off it until it opens
+            yield self._until_idle(index)
+            axis.move_to(float(self.config.zero_offsets[index]), self._speeds[index])
+            yield self._until_idle(index)
+            axis.set_position(0.0)
+        self._homed = True
+
+    def _drill(self) -> _Procedure:
+        self._motors_on = True
+        cfg = self.config
+        z = self._axes[2]
+        down = 1.0 / cfg.step_periods[2]
+        z.start_speed = down
+        z.move_to(float(cfg.drill_depth), down)  # to the sensor, then the overtravel
+        yield self._until_idle(2)
+        x, y, _ = self.positions
+        self._log(DrilledHole(self._now(), x, y))
+        yield cfg.dwell
+        up = down * cfg.z_microsteps_per_step
+        z.start_speed = up
+        z.move_to(0.0, up)
+        yield self._until_idle(2)
+
+    def _pen(self, *, down: bool) -> _Procedure:
+        yield self.config.pen_time
+        self._pen_down = down
+        x, y, _ = self.positions
+        self._log(PenEvent(self._now(), down, x, y))
+
+    def _park(self) -> _Procedure:
+        yield from self._move(0, 0)
+        yield from self._move(1, self.config.travel[1])
+        self._motors_on = False
