@@ -16,6 +16,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from app.jobs.excellon import load_excellon, sniff_dri, sniff_excellon
 from app.jobs.program import JobFileError, Program, load_point_list
 
 #: Reads ``path`` for a machine with these axis names; raises JobFileError with file:line.
@@ -141,3 +142,13 @@ def load_points(path: Path, axis_names: Sequence[str]) -> Program:
 
 
 POINT_LIST = register_loader("Point lists", (".csv", ".txt"), load_points, sniff_point_list)
+
+
+# --- Excellon drill files ------------------------------------------------------------
+# After the point lists, so a ``.txt`` is a point list unless it sniffs as a drill file;
+# extension-less EAGLE drill files are found by the sniffer alone.
+
+EXCELLON = register_loader(
+    "Excellon drill files", (".drl", ".drd", ".txt", ".xln"), load_excellon, sniff_excellon
+)
+EAGLE_DRILL_INFO = register_loader("EAGLE drill info (.dri)", (".dri",), load_excellon, sniff_dri)
