@@ -27,7 +27,7 @@ def test_travel_length_from_start() -> None:
     assert travel_length([]) == 0.0
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(point_sets, st.tuples(coordinate, coordinate))
 def test_optimised_never_longer_than_file_order(
     points: list[tuple[float, float]], start: tuple[float, float]

@@ -74,7 +74,10 @@ def _grid(pts: npt.NDArray[np.float64], per_cell: float) -> tuple[float, npt.NDA
     """A cell size holding about ``per_cell`` points on average, and every point's (col, row)."""
     low = pts.min(axis=0)
     extent = np.maximum(pts.max(axis=0) - low, 1e-9)
-    cell = float(math.sqrt(extent[0] * extent[1] * per_cell / len(pts))) or float(extent.max())
+    # Holes all on one line (a connector row) have no area: size the cells from the length,
+    # or the grid degenerates into thousands of empty cells that the ring search must walk.
+    area = max(float(extent[0] * extent[1]), float(extent.max()) ** 2 / len(pts))
+    cell = math.sqrt(area * per_cell / len(pts)) or float(extent.max())
     cell = max(cell, float(extent.max()) / 4096, 1e-9)  # never more than 4096 cells a side
     return cell, np.floor((pts - low) / cell).astype(np.int64)
 
