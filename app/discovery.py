@@ -7,13 +7,11 @@ thread never waits for it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
-from protocol.transport.ble import BleDevice, BleLoop, BleUuids, scan
-from protocol.transport.serial_link import PortInfo, list_ports
 from PySide6.QtCore import QObject, Signal
 
 from app.profiles import MachineProfile
+from protocol.transport.ble import BleDevice, BleLoop, BleUuids, scan
+from protocol.transport.serial_link import PortInfo, list_ports
 
 __all__ = ["BleDevice", "BleScan", "PortInfo", "ble_uuids_for", "serial_ports"]
 
@@ -27,11 +25,6 @@ def serial_ports() -> list[PortInfo]:
 def ble_uuids_for(profile: MachineProfile) -> BleUuids:
     link = profile.link
     return BleUuids(link.ble_service_uuid, link.ble_write_uuid, link.ble_notify_uuid)
-
-
-@dataclass(frozen=True)
-class ScanRequest:
-    timeout: float = 5.0
 
 
 class BleScan(QObject):
