@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from app.drill_session import DrillSession
 from app.link import Link
 from app.machine import MachineModel
 from app.profiles import MachineProfile
@@ -17,6 +18,7 @@ from app.stage_session import StageSession
 from app.usb3_session import Usb3Session
 from protocol.clock import Clock
 from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.drill_firmware import DrillConfig, DrillFirmware
 from protocol.emulator.stage_firmware import StageConfig, StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 
@@ -54,6 +56,17 @@ def _usb3_session(
     )
 
 
+def _drill_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return DrillSession(model, link, clock)
+
+
 def _stage_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
     return StageFirmware(clock, StageConfig(axes=len(profile.axes)))
 
@@ -62,9 +75,17 @@ def _usb3_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
     return Usb3Firmware(clock)
 
 
+def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    """The plotter with the profile's X/Y travel in microsteps (the host's own conversion)."""
+    x, y = profile.axes[0], profile.axes[1]
+    travel = tuple(round(a.travel * a.steps_per_rev * a.microsteps / a.lead) for a in (x, y))
+    return DrillFirmware(clock, DrillConfig(travel=(travel[0], travel[1])))
+
+
 DIALECTS: dict[str, Dialect] = {
     "stage": Dialect(_stage_session, _stage_emulator),
     "usb3": Dialect(_usb3_session, _usb3_emulator),
+    "drill": Dialect(_drill_session, _drill_emulator),
 }
 
 

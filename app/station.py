@@ -17,6 +17,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.dialects import dialect_for
 from app.discovery import ble_uuids_for
+from app.drill_session import DrillSession
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.profiles import MachineProfile
@@ -26,6 +27,7 @@ from app.stage_session import StageSession
 from app.usb3_session import Usb3Session
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.drill_firmware import DrillFirmware
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.stage.codec import EchoFrame
@@ -85,12 +87,20 @@ class Station(QObject):
         return self.session if isinstance(self.session, Usb3Session) else None
 
     @property
+    def drill_session(self) -> DrillSession | None:
+        return self.session if isinstance(self.session, DrillSession) else None
+
+    @property
     def stage_emulator(self) -> StageFirmware | None:
         return self.emulator if isinstance(self.emulator, StageFirmware) else None
 
     @property
     def usb3_emulator(self) -> Usb3Firmware | None:
         return self.emulator if isinstance(self.emulator, Usb3Firmware) else None
+
+    @property
+    def drill_emulator(self) -> DrillFirmware | None:
+        return self.emulator if isinstance(self.emulator, DrillFirmware) else None
 
     @property
     def device_id(self) -> str | None:

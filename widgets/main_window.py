@@ -44,6 +44,7 @@ from app.telemetry import TelemetryRecorder
 from widgets.absolute_panel import AbsolutePanel
 from widgets.connection_panel import ConnectionPanel
 from widgets.developer_pane import DeveloperPane
+from widgets.drill_panel import DrillPanel
 from widgets.dynamics_panel import DynamicsPanel
 from widgets.info_panel import InfoPanel
 from widgets.jobs_dock import JobsDock
@@ -131,10 +132,17 @@ class MainWindow(QMainWindow):
         self.manual_panel = ManualPanel(station, self.jog)
         self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
         #: Every page with motion controls, for the motion lock.
-        self.motion_panels: list[ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel] = [
-            self.manual_panel
-        ]
-        if station.profile.dialect == "usb3":
+        self.motion_panels: list[
+            ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel
+        ] = [self.manual_panel]
+        if station.profile.dialect == "drill":
+            # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
+            self.drill_panel = DrillPanel(station)
+            self.menu_panel.add_page(
+                "D&rill", self.drill_panel, "Command buttons, X/Y, terminal (Alt+R)"
+            )
+            self.motion_panels.append(self.drill_panel)
+        elif station.profile.dialect == "usb3":
             self.usb3_panel = Usb3Panel(station)
             self.menu_panel.add_page(
                 "A&xes", self.usb3_panel, "Move by mm, step size, thread (Alt+X)"

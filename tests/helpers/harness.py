@@ -12,11 +12,13 @@ from collections.abc import Callable
 
 from PySide6.QtWidgets import QApplication
 
+from app.drill_session import DrillSession
 from app.profiles import MachineProfile, load_profile
 from app.stage_session import StageSession
 from app.station import Station
 from app.usb3_session import Usb3Session
 from protocol.clock import ManualClock
+from protocol.emulator.drill_firmware import DrillFirmware
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.transport.loopback import LoopbackTransport
@@ -55,6 +57,12 @@ class StationHarness:
         return session
 
     @property
+    def drill_session(self) -> DrillSession:
+        session = self.station.drill_session
+        assert session is not None, "not connected to a drill"
+        return session
+
+    @property
     def emulator(self) -> StageFirmware:
         emulator = self.station.stage_emulator
         assert emulator is not None, "no emulated stage"
@@ -64,6 +72,12 @@ class StationHarness:
     def usb3_emulator(self) -> Usb3Firmware:
         emulator = self.station.usb3_emulator
         assert emulator is not None, "no emulated usb3 unit"
+        return emulator
+
+    @property
+    def drill_emulator(self) -> DrillFirmware:
+        emulator = self.station.drill_emulator
+        assert emulator is not None, "no emulated drill"
         return emulator
 
     @property
