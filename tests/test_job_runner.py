@@ -16,6 +16,7 @@ import pytest
 from app.jobs.program import Operation, OpKind, Program, SourceRef, load_point_list, move
 from app.jobs.runner import JobRunner, JobState
 from app.machine import LinkState
+from app.profiles import load_profile
 from protocol.stage.codec import CommandId, StageDecoder
 from protocol.transport.loopback import Direction
 from tests.helpers.harness import StationHarness
@@ -380,3 +381,26 @@ def test_a_changed_program_does_not_pick_up_another_programs_checkpoint(
     runner.discard_checkpoint()
     assert runner.resume_available is None
     assert not list((tmp_path / "checkpoints").glob("*.json"))
+
+
+def test_a_machine_the_runner_cannot_judge_refuses_jobs_instead_of_hanging(
+    tmp_path: Path,
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    try:
+        drill.connect()
+        runner = JobRunner(drill.station, tmp_path)
+        program = Program(
+            "holes",
+            (
+                Operation(OpKind.COMMENT, SourceRef("holes.drl", 1), message="board"),
+                move(SourceRef("holes.drl", 2), X=10.0, Y=10.0),
+                Operation(OpKind.DRILL, SourceRef("holes.drl", 2)),
+            ),
+        )
+        refused = runner.load(program)
+        assert [v.operation.source.line for v in refused] == [2]
+        assert "preview only" in str(refused[0])
+        assert runner.state is JobState.IDLE and runner.program is None
+    finally:
+        drill.close()

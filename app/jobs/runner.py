@@ -44,6 +44,8 @@ from app.station import Station
 from protocol.stage.codec import AxisStatus, EchoFrame, EchoType, Rejected
 
 ETA_INTERVAL_MS = 1000
+#: Dialects whose completion reports the runner understands.
+RUNNABLE_DIALECTS = frozenset({"stage"})
 
 #: Position echoes per moved axis, counted from a resume, before the machine's state is believed:
 #: more than a killed station can leave unread in a serial buffer.
@@ -189,6 +191,12 @@ class JobRunner(QObject):
         refused: list[LimitViolation] = check_limits(program, limits)
         capabilities = profile.capabilities
         for index, op in enumerate(program):
+            if profile.dialect not in RUNNABLE_DIALECTS and op.kind is not OpKind.COMMENT:
+                # Completion is judged from the stage's echoes; other dialects report done
+                # their own way, and a job that could never see an operation end must not start.
+                reason = f"jobs do not run on the {profile.title} yet (preview only)"
+                refused.append(UnsupportedOperation.of(index, op, reason))
+                break
             if op.kind is OpKind.DRILL and not capabilities.drill:
                 refused.append(UnsupportedOperation.of(index, op, f"{profile.title} cannot drill"))
             elif op.kind in (OpKind.PEN_UP, OpKind.PEN_DOWN) and not capabilities.pen:
