@@ -283,3 +283,21 @@ def test_clock_text() -> None:
     assert clock_text(75.4) == "01:15"
     assert clock_text(3725) == "1:02:05"
     assert clock_text(None) == "--:--" and clock_text(float("nan")) == "--:--"
+
+
+def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path, shared_dir: Path
+) -> None:
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    dock = JobsDock(harness.station, runner)
+    qtbot.addWidget(dock)
+    drill_file = shared_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
+    assert dock.open_path(drill_file) is False  # the XY stage cannot drill: refused, listed
+    dock.draw_check.setChecked(True)  # the same file as pen work: still refused (no pen) …
+    assert "has no pen" in dock.messages.toPlainText()
+    options = dock.options
+    assert options.draw and options.excellon_step_inch == 1e-4
+    # … but the loader built pen crosses, which a machine with a pen would run.
+    program = load_job(drill_file, ["X", "Y"], options)
+    kinds = {op.kind for op in program}
+    assert OpKind.PEN_DOWN in kinds and OpKind.DRILL not in kinds

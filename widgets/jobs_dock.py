@@ -27,6 +27,8 @@ from pathlib import Path
 
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
     QDockWidget,
     QFileDialog,
     QFrame,
@@ -40,7 +42,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.jobs.loaders import file_dialog_filter, load_job
+from app.jobs.loaders import JobOptions, file_dialog_filter, load_job
 from app.jobs.program import JobFileError, Program
 from app.jobs.runner import JobRunner, JobState
 from app.station import Station
@@ -84,6 +86,7 @@ class JobsDock(QDockWidget):
         self.setObjectName("jobs_dock")
         self.station = station
         self.runner = runner
+        self._path: Path | None = None
         self.preview = JobPreview(
             station,
             runner,
@@ -97,6 +100,7 @@ class JobsDock(QDockWidget):
         layout.setContentsMargins(6, 4, 6, 6)
         layout.setSpacing(4)
         layout.addLayout(self._build_toolbar())
+        layout.addLayout(self._build_options())
         layout.addWidget(self._build_resume_offer())
         layout.addWidget(self._build_prompt())
         layout.addWidget(self.preview, 1)
@@ -130,6 +134,39 @@ class JobsDock(QDockWidget):
         self._program_changed()
 
     # --- building ------------------------------------------------------------
+
+    def _build_options(self) -> QHBoxLayout:
+        """How drill files are read: drill or draw (the original tool's two run modes), and
+        the Excellon step for files whose integer coordinates carry no format."""
+        row = QHBoxLayout()
+        row.setSpacing(8)
+        self.draw_check = QCheckBox("Draw holes with the pen instead of drilling")
+        self.draw_check.setObjectName("job_draw")
+        self.draw_check.setToolTip("Drill files: a pen cross the size of each hole (K / Z)")
+        self.step_combo = QComboBox()
+        self.step_combo.setObjectName("job_excellon_step")
+        for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
+            self.step_combo.addItem(label, inch)
+        self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
+        row.addWidget(self.draw_check)
+        row.addStretch(1)
+        row.addWidget(QLabel("Excellon step"))
+        row.addWidget(self.step_combo)
+        self.draw_check.toggled.connect(self._options_changed)
+        self.step_combo.activated.connect(self._options_changed)
+        return row
+
+    @property
+    def options(self) -> JobOptions:
+        return JobOptions(
+            draw=self.draw_check.isChecked(),
+            excellon_step_inch=float(self.step_combo.currentData()),
+        )
+
+    def _options_changed(self, *_args: object) -> None:
+        """Re-read the open file with the new choice (not while it runs)."""
+        if self._path is not None and self.runner.state not in ACTIVE_STATES:
+            self.open_path(self._path)
 
     def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
         button = QPushButton(text)
@@ -265,8 +302,9 @@ class JobsDock(QDockWidget):
             self.say(f"{path.name}: not opened — a job is under way (abort it first)")
             return False
         axis_names = [axis.name for axis in self.station.profile.axes]
+        self._path = path
         try:
-            program = load_job(path, axis_names)
+            program = load_job(path, axis_names, self.options)
         except JobFileError as exc:
             self.say(f"{exc} — not loaded")
             return False

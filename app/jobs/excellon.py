@@ -578,11 +578,3 @@ def build_drill_program(
                 Operation(OpKind.PEN_UP, where),
             ]
     return Program(job.name, tuple(ops), job.path)
-
-
-def load_excellon(path: Path, axis_names: Sequence[str]) -> Program:
-    """The job loader: a drill file (or ``.dri`` pair) as a drill program on the first two axes."""
-    if len(axis_names) < 2:
-        raise JobFileError(path.name, 0, "a drill job needs a machine with X and Y axes")
-    job = read_drill_file(path)
-    return build_drill_program(job, axes=(axis_names[0], axis_names[1]))

@@ -16,11 +16,20 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.jobs.excellon import load_excellon, sniff_dri, sniff_excellon
+from app.jobs.excellon import build_drill_program, read_drill_file, sniff_dri, sniff_excellon
 from app.jobs.program import JobFileError, Program, load_point_list
 
+
+@dataclass(frozen=True)
+class JobOptions:
+    """The operator's choices that change how a file becomes a program."""
+
+    draw: bool = False  # drill files: draw each hole with the pen instead of drilling it
+    excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
+
+
 #: Reads ``path`` for a machine with these axis names; raises JobFileError with file:line.
-JobLoader = Callable[[Path, Sequence[str]], Program]
+JobLoader = Callable[[Path, Sequence[str], JobOptions], Program]
 #: Whether the first few kilobytes of a file look like this loader's job type.
 Sniffer = Callable[[str], bool]
 
@@ -76,9 +85,9 @@ def loader_for(path: Path) -> JobLoader:
     raise JobFileError(path.name, 0, "not a job file this station knows (unknown type)")
 
 
-def load_job(path: Path, axis_names: Sequence[str]) -> Program:
+def load_job(path: Path, axis_names: Sequence[str], options: JobOptions | None = None) -> Program:
     """Read any known job file for a machine with ``axis_names``; JobFileError says why not."""
-    return loader_for(path)(path, axis_names)
+    return loader_for(path)(path, axis_names, options or JobOptions())
 
 
 def file_dialog_filter() -> str:
@@ -124,7 +133,7 @@ def sniff_point_list(head: str) -> bool:
     return len(counts) == 1 and counts <= {2, 3} and all(_numbers(line) for line in lines)
 
 
-def load_points(path: Path, axis_names: Sequence[str]) -> Program:
+def load_points(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
     """A point list for this machine: as many axes as the first position line has numbers.
 
     A 2-column list on a 3-axis machine moves X and Y only; a column count
@@ -148,7 +157,19 @@ POINT_LIST = register_loader("Point lists", (".csv", ".txt"), load_points, sniff
 # After the point lists, so a ``.txt`` is a point list unless it sniffs as a drill file;
 # extension-less EAGLE drill files are found by the sniffer alone.
 
+
+def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
+    """A drill file (or ``.dri`` pair) as a drill or draw program on the first two axes."""
+    if len(axis_names) < 2:
+        raise JobFileError(path.name, 0, "a drill job needs a machine with X and Y axes")
+    job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
+    axes = (axis_names[0], axis_names[1])
+    if options.draw:
+        return build_drill_program(job, mode="draw", axes=axes)
+    return build_drill_program(job, mode="drill", axes=axes)
+
+
 EXCELLON = register_loader(
-    "Excellon drill files", (".drl", ".drd", ".txt", ".xln"), load_excellon, sniff_excellon
+    "Excellon drill files", (".drl", ".drd", ".txt", ".xln"), load_drill_job, sniff_excellon
 )
-EAGLE_DRILL_INFO = register_loader("EAGLE drill info (.dri)", (".dri",), load_excellon, sniff_dri)
+EAGLE_DRILL_INFO = register_loader("EAGLE drill info (.dri)", (".dri",), load_drill_job, sniff_dri)
