@@ -180,7 +180,11 @@ def test_run_shows_progress_eta_and_the_current_operation(
     harness.run_until(lambda: dock.runner.state is JobState.DONE, timeout=60)
     assert dock.progress.value() == dock.progress.maximum() == 13
     assert dock.eta_label.text() == "left 00:00"
-    assert dock.operation_label.text() == "square.csv:13  move to X5.000 Y10.000"
+    # The operation, then its source line as written in the file.
+    assert dock.operation_label.text().splitlines() == [
+        "square.csv:13  move to X5.000 Y10.000",
+        "    file: 5, 10",
+    ]
     assert dock.run_button.isEnabled() and not dock.abort_button.isEnabled()
 
 
@@ -269,7 +273,7 @@ def test_wait_shows_the_prompt_and_continue_resumes(
     harness.run_until(lambda: runner.state is JobState.WAITING, timeout=60)
     assert dock.prompt.isVisible()
     assert "swap the probe" in dock.prompt_label.text()
-    assert dock.operation_label.text() == "pause.csv:14  wait: swap the probe"
+    assert dock.operation_label.text().splitlines()[0] == "pause.csv:14  wait: swap the probe"
     harness.run(2.0)
     assert runner.state is JobState.WAITING and runner.done == 13  # it waits, however long
     qtbot.mouseClick(dock.continue_button, LEFT)

@@ -87,6 +87,7 @@ class JobsDock(QDockWidget):
         self.station = station
         self.runner = runner
         self._path: Path | None = None
+        self._source_lines: list[str] = []
         self.preview = JobPreview(
             station,
             runner,
@@ -336,6 +337,7 @@ class JobsDock(QDockWidget):
         estimate = self.runner.estimate if program is not None else None
         self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
         self.operation_label.setText("—")
+        self._source_lines = _read_lines(program.source if program is not None else None)
         self._state_changed()
 
     def _show_file(self, program: Program | None) -> None:
@@ -351,6 +353,9 @@ class JobsDock(QDockWidget):
         state = self.runner.state
         if state is not JobState.WAITING:
             self.prompt.hide()
+        if state in (JobState.READY, JobState.PAUSED) and self.runner.program is not None:
+            # Stepping through: show what the next Step will send before it is sent.
+            self._show_operation(self.runner.done)
         self._show_resume_offer()
         self._update_buttons()
 
@@ -410,11 +415,31 @@ class JobsDock(QDockWidget):
         self.eta_label.setText(f"left {clock_text(remaining_s)}")
 
     def _show_operation(self, index: int) -> None:
+        """The operation with its source line as written in the file and, on a machine that
+        counts microsteps, what will go on the wire — what stepping through a file needs."""
         program = self.runner.program
         if program is None or not 0 <= index < len(program):
             return
         op = program[index]
-        self.operation_label.setText(f"{op.source}  {op.describe()}")
+        text = f"{op.source}  {op.describe()}"
+        raw = self._source_line(op.source.line)
+        if raw:
+            text += f"\n    file: {raw}"
+        session = self.station.drill_session
+        if session is not None and op.target:
+            names = [axis.name for axis in self.station.profile.axes]
+            steps = [
+                f"{axis}{session.to_microsteps(names.index(axis), value)}"
+                for axis, value in op.target.items()
+                if axis in names
+            ]
+            text += f"    machine: {' '.join(steps)} microsteps"
+        self.operation_label.setText(text)
+
+    def _source_line(self, number: int) -> str:
+        if number < 1 or number > len(self._source_lines):
+            return ""
+        return self._source_lines[number - 1].strip()
 
     def _show_prompt(self, text: str) -> None:
         self.prompt_label.setText(f"Operator: {text}")
@@ -422,3 +447,13 @@ class JobsDock(QDockWidget):
         self.continue_button.setEnabled(True)
         self.continue_button.setFocus()
         self.say(f"waiting for the operator: {text}")
+
+
+def _read_lines(path: Path | None) -> list[str]:
+    """The job file's lines, for showing an operation's source as written (empty if unreadable)."""
+    if path is None:
+        return []
+    try:
+        return path.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        return []
