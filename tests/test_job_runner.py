@@ -386,16 +386,15 @@ def test_a_changed_program_does_not_pick_up_another_programs_checkpoint(
 def test_a_machine_the_runner_cannot_judge_refuses_jobs_instead_of_hanging(
     tmp_path: Path,
 ) -> None:
-    drill = StationHarness(load_profile("pcb-drill"))
+    unit = StationHarness(load_profile("usb3"))
     try:
-        drill.connect()
-        runner = JobRunner(drill.station, tmp_path)
+        unit.connect()
+        runner = JobRunner(unit.station, tmp_path)
         program = Program(
-            "holes",
+            "route",
             (
-                Operation(OpKind.COMMENT, SourceRef("holes.drl", 1), message="board"),
-                move(SourceRef("holes.drl", 2), X=10.0, Y=10.0),
-                Operation(OpKind.DRILL, SourceRef("holes.drl", 2)),
+                Operation(OpKind.COMMENT, SourceRef("route.csv", 1), message="board"),
+                move(SourceRef("route.csv", 2), X=10.0, Y=10.0),
             ),
         )
         refused = runner.load(program)
@@ -403,4 +402,4 @@ def test_a_machine_the_runner_cannot_judge_refuses_jobs_instead_of_hanging(
         assert "preview only" in str(refused[0])
         assert runner.state is JobState.IDLE and runner.program is None
     finally:
-        drill.close()
+        unit.close()

@@ -18,8 +18,24 @@ Replies are judged only once enough fresh echoes have come in, because an
 echo already on its way when a move was sent (or one left in a serial buffer
 by a killed station) still describes the machine before the move.
 
-The runner speaks the stage dialect (absolute moves); drill and pen
-operations are refused at :meth:`JobRunner.load` on machines without them.
+The runner speaks two dialects, chosen by the profile:
+
+* **stage** — absolute moves, completion judged from the echoes as above;
+  drill and pen operations are refused at :meth:`JobRunner.load`.
+* **drill** — the PCB drill/plotter's one-letter procedures through
+  :class:`~app.drill_session.DrillSession`, one at a time.  A MOVE becomes
+  ``X`` then ``Y`` (one per axis of its target), a DRILL ``V``, PEN_DOWN/UP
+  ``K``/``Z``.  The device reports every procedure itself (``R`` received,
+  ``D`` done), so an operation is complete when the session goes idle after
+  the ``D`` of each of its commands; an ``E`` fails the job at the
+  operation's line.  When the link goes, the operation in flight is held as
+  not done and re-examined on resume: a MOVE is simply sent again (absolute
+  microsteps, harmless whether or not it was finished); a DRILL whose ``V``
+  had been received (``RV`` seen) counts as done, because the machine runs a
+  procedure it has accepted to its end on its own (as the stage finishes a
+  MOVE_ABS) and drilling the hole again would enlarge it; a DRILL whose
+  ``RV`` never arrived is sent again.  After a station restart nothing is
+  known of the last ``RV``, so the checkpoint's next DRILL is sent again.
 """
 
 from __future__ import annotations
@@ -29,13 +45,16 @@ import json
 import math
 import os
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import UTC, datetime
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 from PySide6.QtCore import QObject, Qt, QTimer, Signal
 
+from app.drill_session import DrillSession
 from app.jobs.dry_run import Estimate, estimate, parameters_from_model
 from app.jobs.program import LimitViolation, Operation, OpKind, Program, check_limits
 from app.machine import LinkState
@@ -45,7 +64,7 @@ from protocol.stage.codec import AxisStatus, EchoFrame, EchoType, Rejected
 
 ETA_INTERVAL_MS = 1000
 #: Dialects whose completion reports the runner understands.
-RUNNABLE_DIALECTS = frozenset({"stage"})
+RUNNABLE_DIALECTS = frozenset({"stage", "drill"})
 
 #: Position echoes per moved axis, counted from a resume, before the machine's state is believed:
 #: more than a killed station can leave unread in a serial buffer.
@@ -116,6 +135,10 @@ class JobRunner(QObject):
         self._verify = False  # re-examine before sending (after a resume)
         self._gate = 0  # position echoes per moved axis before the state is believed
         self._seen: dict[int, int] = {}  # position echoes per moved axis since the reference
+        # Drill dialect: letters of the in-flight operation's commands not yet done (``D``),
+        # and whether the device acknowledged (``R``) the drill cycle of a DRILL.
+        self._drill_pending: list[str] = []
+        self._drill_received = False
         self._single_step = False
         self._pause_requested = False
         self._elapsed_before = 0.0
@@ -382,6 +405,9 @@ class JobRunner(QObject):
             self._set_state(JobState.WAITING)
             self.waitingForOperator.emit(op.message)
             return
+        if self._drill_dialect():
+            self._dispatch_drill(index)
+            return
         if op.kind is not OpKind.MOVE:
             self._fail(index, f"{op.describe()} is not supported on {self.station.profile.title}")
             return
@@ -408,6 +434,9 @@ class JobRunner(QObject):
         """Look before sending again: the machine may have finished the operation on its own."""
         assert self._program is not None
         op = self._program[index]
+        if self._drill_dialect():
+            self._verify_drill(index)
+            return
         if op.kind is not OpKind.MOVE:
             self._verify = False
             self._dispatch(index)
@@ -457,6 +486,89 @@ class JobRunner(QObject):
                 )
                 return
 
+    # --- the drill dialect ---------------------------------------------------
+
+    def _drill_dialect(self) -> bool:
+        return self.station.profile.dialect == "drill"
+
+    def _dispatch_drill(self, index: int) -> None:
+        """Queue the drill commands of operation ``index``; the session's ``idle`` ends it."""
+        assert self._program is not None
+        op = self._program[index]
+        session = self.station.drill_session
+        if session is None or self.station.model.link_state in _LINK_DOWN:
+            self._link_pause()
+            return
+        if session.busy:
+            # Commands of somebody else (the terminal) still run: ours would finish among them.
+            self._fail(index, "the drill is busy with another command")
+            return
+        profile = self.station.profile
+        sends: list[tuple[str, Callable[[], bool]]] = []
+        if op.kind is OpKind.MOVE:
+            for name, target in op.target.items():
+                axis = profile.axis_index(name)
+                sends.append((name, partial(session.move_absolute, axis, target)))
+        elif op.kind is OpKind.DRILL:
+            sends.append(("V", session.drill))
+        elif op.kind in (OpKind.PEN_DOWN, OpKind.PEN_UP):
+            down = op.kind is OpKind.PEN_DOWN
+            sends.append(("K" if down else "Z", partial(session.pen, down)))
+        if not sends:
+            self._fail(index, f"{op.describe()} is not supported on {profile.title}")
+            return
+        self._drill_pending = [letter for letter, _ in sends]
+        self._drill_received = False
+        for _, send in sends:
+            if not send():
+                self._drill_pending = []
+                if self.station.model.link_state in _LINK_DOWN:
+                    self._link_pause()
+                else:
+                    reason = self.station.model.motion_lock_reason() or "the drill refused it"
+                    self._fail(index, reason)
+                return
+
+    def _verify_drill(self, index: int) -> None:
+        """After a lost link: a DRILL the device had received is done; anything else goes again."""
+        assert self._program is not None
+        op = self._program[index]
+        self._verify = False
+        if op.kind is OpKind.DRILL and self._drill_received:
+            self.message.emit(
+                f"Drill cycle at {op.source} was received by the machine, which finishes it "
+                "on its own: counted as done"
+            )
+            self._complete(index)
+            return
+        self._dispatch(index)
+
+    def _on_drill_received(self, text: str) -> None:
+        if self._in_flight is not None and self._drill_pending and text == "V":
+            self._drill_received = True
+
+    def _on_drill_done(self, text: str) -> None:
+        if self._in_flight is None or not self._drill_pending:
+            return
+        if text[:1] == self._drill_pending[0]:
+            self._drill_pending.pop(0)
+
+    def _on_drill_idle(self) -> None:
+        index = self._in_flight
+        if index is None or self._verify or self._state not in _CLOCK_RUNS:
+            return
+        if self._program is None or self._program[index].kind in (OpKind.WAIT, OpKind.COMMENT):
+            return
+        if self._drill_pending:
+            return
+        self._complete(index)
+
+    def _on_drill_failed(self, text: str) -> None:
+        if self._in_flight is None or self._state not in _ACTIVE:
+            return
+        self._drill_pending = []
+        self._fail(self._in_flight, f"the drill refused {text}")
+
     def _complete(self, index: int) -> None:
         self._mark_done(index)
         if self._carry_on():
@@ -467,6 +579,8 @@ class JobRunner(QObject):
         self._in_flight = None
         self._verify = False
         self._targets = {}
+        self._drill_pending = []
+        self._drill_received = False
         self._done = index + 1
         self._write_checkpoint(self._program, index)  # before anything else is sent
         self.operationDone.emit(index)
@@ -547,14 +661,26 @@ class JobRunner(QObject):
         if session is self._session:
             return
         if self._session is not None:
+            old = self._session
             try:
-                self._session.frameReceived.disconnect(self._on_frame)
+                old.frameReceived.disconnect(self._on_frame)
+                if isinstance(old, DrillSession):
+                    old.commandReceived.disconnect(self._on_drill_received)
+                    old.commandDone.disconnect(self._on_drill_done)
+                    old.commandFailed.disconnect(self._on_drill_failed)
+                    old.idle.disconnect(self._on_drill_idle)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
         self._session = session
         if session is not None:
             # Queued: the session folds the echo into the model right after announcing it.
             session.frameReceived.connect(self._on_frame, Qt.ConnectionType.QueuedConnection)
+        if isinstance(session, DrillSession):
+            # Direct: each reply is judged as it is decoded, before the next one can arrive.
+            session.commandReceived.connect(self._on_drill_received)
+            session.commandDone.connect(self._on_drill_done)
+            session.commandFailed.connect(self._on_drill_failed)
+            session.idle.connect(self._on_drill_idle)
 
     def _on_frame(self, frame: object, raw: bytes) -> None:
         if self._in_flight is None:
@@ -600,6 +726,8 @@ class JobRunner(QObject):
         self._verify = False
         self._targets = {}
         self._seen = {}
+        self._drill_pending = []
+        self._drill_received = False
         self._resume_available = None
         self._single_step = False
         self._pause_requested = False

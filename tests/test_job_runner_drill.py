@@ -1,0 +1,279 @@
+"""Excellon jobs on the emulated PCB drill: every hole once, where the file says, in time.
+
+The station runs on the harness's manual clock against the drill firmware
+emulator, so the emulator's logs are the judge: each hole of the sample EAGLE
+board drilled exactly once at the microsteps the host computes (mm x 19.8 / 19.7,
+half away from zero), also when the link is cut in the middle of the job.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.jobs.dry_run import DRILL_CYCLE_S, estimate_drill
+from app.jobs.excellon import build_drill_program, read_drill_file
+from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.runner import JobRunner, JobState
+from app.machine import LinkState
+from app.profiles import load_profile
+from protocol.drill.codec import Command
+from protocol.transport.loopback import Direction
+from tests.helpers.harness import StationHarness
+
+X, Y = 0, 1
+SAMPLE_HOLES = 36  # the sample EAGLE board: T01 20 holes, then the larger tools
+
+
+@pytest.fixture
+def drill(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness(load_profile("pcb-drill"))
+    harness.connect()
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.CONNECTED)
+    # Home first, so the step counters count from the machine's zero as the model does.
+    assert harness.drill_session.home(X)
+    harness.run_until(lambda: not harness.drill_session.busy, timeout=60)
+    assert harness.drill_emulator.positions[:2] == (0, 0)
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def runner(drill: StationHarness, tmp_path: Path) -> Iterator[JobRunner]:
+    built = JobRunner(drill.station, tmp_path / "checkpoints")
+    yield built
+    built.deleteLater()
+
+
+def sample_program(shared_dir: Path, mode: str = "drill") -> Program:
+    job = read_drill_file(shared_dir / "samples/pcb-driver/driver")
+    return build_drill_program(job, mode="draw" if mode == "draw" else "drill")
+
+
+def expected_holes(drill: StationHarness, program: Program) -> Counter[tuple[int, int]]:
+    """Microsteps of the MOVE before each DRILL, as the host rounds them."""
+    session = drill.drill_session
+    holes: Counter[tuple[int, int]] = Counter()
+    for before, op in zip(program.operations, program.operations[1:], strict=False):
+        if op.kind is OpKind.DRILL:
+            assert before.kind is OpKind.MOVE
+            holes[
+                (
+                    session.to_microsteps(X, before.target["X"]),
+                    session.to_microsteps(Y, before.target["Y"]),
+                )
+            ] += 1
+    return holes
+
+
+def drilled(drill: StationHarness) -> Counter[tuple[int, int]]:
+    return Counter((hole.x, hole.y) for hole in drill.drill_emulator.drill_log)
+
+
+def auto_confirm(runner: JobRunner) -> list[str]:
+    """Record every WAIT message; the test confirms it at its next step."""
+    asked: list[str] = []
+    runner.waitingForOperator.connect(asked.append)
+    return asked
+
+
+def run_to_end(drill: StationHarness, runner: JobRunner, timeout: float = 400.0) -> None:
+    def over() -> bool:
+        if runner.state is JobState.WAITING:
+            runner.confirm()
+        return runner.state in (JobState.DONE, JobState.FAILED, JobState.ABORTED, JobState.PAUSED)
+
+    drill.run_until(over, timeout=timeout)
+
+
+def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_the_eta(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir)
+    assert runner.load(program) == []
+    assert runner.estimate is not None
+    eta = runner.estimate.total_s
+    asked = auto_confirm(runner)
+    runner.start()
+    run_to_end(drill, runner)
+
+    assert runner.state is JobState.DONE
+    assert runner.done == len(program)
+    waits = [op.message for op in program if op.kind is OpKind.WAIT]
+    assert asked == waits and asked[0].startswith("insert T01, 0.80 mm")
+    expected = expected_holes(drill, program)
+    assert sum(expected.values()) == SAMPLE_HOLES
+    assert drilled(drill) == expected
+    assert all(count == 1 for count in drilled(drill).values())
+    # The first hole of the file: X 25.654 mm, Y 11.684 mm.
+    assert (round(25.654 * 19.8), round(11.684 * 19.7)) in expected
+    # At least the drill cycles themselves, and the model's time within 5 % of the run's.
+    assert eta > SAMPLE_HOLES * DRILL_CYCLE_S
+    print(f"drill: ETA {eta:.2f} s, emulated {runner.elapsed_s:.2f} s")
+    assert runner.elapsed_s == pytest.approx(eta, rel=0.05)
+
+
+def test_draw_mode_puts_the_pen_down_at_both_arms_of_every_cross(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir, "draw")
+    assert runner.load(program) == []
+    assert runner.estimate is not None
+    eta = runner.estimate.total_s
+    auto_confirm(runner)
+    runner.start()
+    run_to_end(drill, runner)
+
+    assert runner.state is JobState.DONE
+    session = drill.drill_session
+    expected = Counter(
+        (session.to_microsteps(X, before.target["X"]), session.to_microsteps(Y, before.target["Y"]))
+        for before, op in zip(program.operations, program.operations[1:], strict=False)
+        if op.kind is OpKind.PEN_DOWN
+    )
+    downs = Counter((e.x, e.y) for e in drill.drill_emulator.pen_log if e.down)
+    ups = [e for e in drill.drill_emulator.pen_log if not e.down]
+    assert sum(downs.values()) == 2 * SAMPLE_HOLES and len(ups) == 2 * SAMPLE_HOLES
+    assert downs == expected
+    assert drill.drill_emulator.drill_log == ()
+    assert not drill.drill_emulator.pen_down
+    print(f"draw: ETA {eta:.2f} s, emulated {runner.elapsed_s:.2f} s")
+    assert runner.elapsed_s == pytest.approx(eta, rel=0.05)
+
+
+def test_the_dry_run_times_moves_axis_after_axis_at_the_step_periods() -> None:
+    profile = load_profile("pcb-drill")
+    where = SourceRef("t.drl", 1)
+    program = Program(
+        "t",
+        (
+            move(where, X=10.0, Y=20.0),  # 198 X microsteps, 394 Y microsteps
+            Operation(OpKind.DRILL, where),
+            Operation(OpKind.PEN_DOWN, where),
+            Operation(OpKind.WAIT, where, message="tool"),
+        ),
+    )
+    estimate = estimate_drill(program, profile, overhead_s=0.0)
+    assert estimate.cumulative_s[0] == pytest.approx(198 * 0.0013 + 394 * 0.0015)
+    assert estimate.cumulative_s[1] - estimate.cumulative_s[0] == pytest.approx(1.35875)
+    assert estimate.cumulative_s[2] - estimate.cumulative_s[1] == pytest.approx(0.15)
+    assert estimate.total_s == estimate.cumulative_s[2]
+
+
+def state_of(runner: JobRunner) -> JobState:
+    """The state now (a call, so a type checker does not keep an earlier assertion's value)."""
+    return runner.state
+
+
+def reconnect(drill: StationHarness) -> None:
+    drill.loopback.set_manipulator(None)
+    drill.run_until(lambda: drill.station.model.link_state is LinkState.CONNECTED, timeout=60)
+
+
+def test_a_link_cut_during_a_received_drill_cycle_resumes_without_drilling_it_again(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    assert runner.load(program) == []
+    runner.start()
+
+    fifth_drill = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL][4]
+
+    def in_fifth_drill() -> bool:
+        if runner.state is JobState.WAITING:
+            runner.confirm()
+        return (
+            runner.current_index == fifth_drill
+            and len(drill.drill_emulator.drill_log) == 4
+            and drill.drill_emulator.positions[2] > 0  # Z is on its way down: RV is out
+        )
+
+    drill.run_until(in_fifth_drill, timeout=200)
+    index = fifth_drill
+    drill.run(0.01)  # the RV reaches the station
+    drill.loopback.sever("cable pulled")
+    drill.run_until(lambda: runner.state is JobState.PAUSED)
+    assert runner.done == index and runner.current_index == index
+    reconnect(drill)
+    drill.run(2.0)  # the machine finishes the cycle it had received on its own
+    assert len(drill.drill_emulator.drill_log) == 5
+    assert runner.state is JobState.PAUSED  # nothing resumes without the operator
+
+    runner.resume()
+    run_to_end(drill, runner)
+    assert state_of(runner) is JobState.DONE
+    assert any("counted as done" in m for m in messages)
+    assert drilled(drill) == expected_holes(drill, program)
+    assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
+
+
+def test_a_drill_command_lost_with_the_link_is_sent_again_and_a_move_is_repeated_harmlessly(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir)
+    drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
+    moves = [i for i, op in enumerate(program) if op.kind is OpKind.MOVE]
+    cut_at = {drills[3], moves[10]}  # a V that never arrives, then an X/Y that may not
+
+    def cable_gone(direction: Direction, data: bytes) -> bytes:
+        return b""
+
+    def cut(index: int) -> None:
+        if index in cut_at:
+            cut_at.discard(index)
+            drill.loopback.set_manipulator(cable_gone)
+
+    runner.operationStarted.connect(cut)
+    assert runner.load(program) == []
+    runner.start()
+    paused: list[int] = []
+    for _ in range(2):
+
+        def cut_made() -> bool:
+            if runner.state is JobState.WAITING:
+                runner.confirm()
+            return drill.loopback._manipulator is not None
+
+        drill.run_until(cut_made, timeout=200)
+        drill.run(0.05)
+        drill.loopback.sever("cable pulled")
+        drill.run_until(lambda: runner.state is JobState.PAUSED)
+        paused_at = runner.current_index
+        assert paused_at is not None and runner.done == paused_at
+        paused.append(paused_at)
+        reconnect(drill)
+        runner.resume()
+    run_to_end(drill, runner)
+    assert paused == [drills[3], moves[10]]
+    assert runner.state is JobState.DONE
+    assert drilled(drill) == expected_holes(drill, program)
+    assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
+    sent_v = [c for c in drill.drill_emulator.command_log if c.command == Command("V")]
+    assert len(sent_v) == SAMPLE_HOLES  # the lost V never reached the machine
+
+
+def test_a_refused_command_fails_the_job_at_its_line(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    first_drill = next(i for i, op in enumerate(program) if op.kind is OpKind.DRILL)
+
+    def spoil(direction: Direction, data: bytes) -> bytes:
+        return b"Q\r" if direction is Direction.TO_DEVICE and data == b"V\r" else data
+
+    drill.loopback.set_manipulator(spoil)
+    assert runner.load(program) == []
+    runner.start()
+    run_to_end(drill, runner)
+    assert runner.state is JobState.FAILED
+    assert runner.done == first_drill
+    assert any(f"Job failed at {program[first_drill].source}" in m for m in messages)
+    assert drill.drill_emulator.drill_log == ()
