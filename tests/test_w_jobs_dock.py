@@ -14,6 +14,7 @@ from pytestqt.qtbot import QtBot
 from app.jobs.loaders import JOB_LOADERS, load_job, sniff_point_list
 from app.jobs.program import JobFileError, OpKind
 from app.jobs.runner import JobRunner, JobState
+from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.jobs_dock import JobsDock, clock_text
 
@@ -305,3 +306,31 @@ def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
     program = load_job(drill_file, ["X", "Y"], options)
     kinds = {op.kind for op in program}
     assert OpKind.PEN_DOWN in kinds and OpKind.DRILL not in kinds
+
+
+def test_a_drill_job_on_the_drill_shows_its_travel_saving_and_microsteps(
+    qtbot: QtBot, tmp_path: Path, shared_dir: Path
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    try:
+        drill.connect()
+        runner = JobRunner(drill.station, tmp_path / "checkpoints")
+        dock = JobsDock(drill.station, runner)
+        qtbot.addWidget(dock)
+        assert dock.open_path(shared_dir / "samples/pcb-driver/driver")
+        log = dock.messages.toPlainText()
+        assert "mm in file order" in log and "mm optimised" in log
+        runner.step()  # the first tool's WAIT
+        runner.confirm()
+        drill.run_until(lambda: runner.state is JobState.PAUSED)
+        # The next Step sends the first hole: its file line as written and its microsteps.
+        first, line = dock.operation_label.text().splitlines()
+        assert first.startswith("driver:") and "move to X" in first
+        assert line.lstrip().startswith("file: X")
+        session = drill.drill_session
+        op = runner.program[runner.done] if runner.program else None
+        assert op is not None
+        x, y = session.to_microsteps(0, op.target["X"]), session.to_microsteps(1, op.target["Y"])
+        assert line.endswith(f"machine: X{x} Y{y} microsteps")
+    finally:
+        drill.close()

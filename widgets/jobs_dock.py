@@ -312,6 +312,8 @@ class JobsDock(QDockWidget):
         if self.runner.load(program):
             return False  # the runner said which operations, line by line (its message)
         self.say(f"{path.name}: {len(program)} operations loaded")
+        for note in program.notes:
+            self.say(f"{path.name}: {note}")
         self._program_changed()
         return True
 

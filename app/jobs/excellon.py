@@ -577,4 +577,9 @@ def build_drill_program(
                 goto(where, hole.x_mm, hole.y_mm + r),
                 Operation(OpKind.PEN_UP, where),
             ]
-    return Program(job.name, tuple(ops), job.path)
+    saved = plan.file_travel_mm - plan.travel_mm
+    note = (
+        f"travel between holes: {plan.file_travel_mm:.1f} mm in file order, "
+        f"{plan.travel_mm:.1f} mm optimised ({saved:.1f} mm saved)"
+    )
+    return Program(job.name, tuple(ops), job.path, notes=(note,))

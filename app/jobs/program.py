@@ -60,6 +60,8 @@ class Program:
     name: str
     operations: tuple[Operation, ...]
     source: Path | None = None
+    #: What the loader wants the operator to know (e.g. the travel its ordering saved).
+    notes: tuple[str, ...] = ()
 
     def __len__(self) -> int:
         return len(self.operations)
