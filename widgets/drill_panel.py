@@ -90,6 +90,7 @@ class DrillPanel(QWidget):
         self.entry.setObjectName("terminal_entry")
         self.entry.setFont(monospace_font())
         self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
+        self.entry.setMinimumWidth(160)
         self.entry.returnPressed.connect(self.send_line)
         self.entry.installEventFilter(self)
         self.send_button = QPushButton("Send")
@@ -108,6 +109,10 @@ class DrillPanel(QWidget):
         self.received_list.setObjectName("command_received")
         self.done_list = QListWidget()
         self.done_list.setObjectName("command_done")
+        for listing in (self.received_list, self.done_list):
+            # Commands are a few characters: narrow columns leave the terminal its width.
+            listing.setMaximumWidth(150)
+            listing.setFont(monospace_font())
         columns = QGridLayout()
         columns.addWidget(QLabel("<b>command received</b>"), 0, 0)
         columns.addWidget(QLabel("<b>command done</b>"), 0, 1)
@@ -203,8 +208,8 @@ class DrillPanel(QWidget):
             return
         self._watched = session
         if session is not None:
-            session.commandReceived.connect(self.received_list.addItem)
-            session.commandDone.connect(self.done_list.addItem)
+            session.commandReceived.connect(lambda text: _append(self.received_list, text))
+            session.commandDone.connect(lambda text: _append(self.done_list, text))
             session.frameSent.connect(self._show_sent)
             session.frameReceived.connect(self._show_received)
             session.commandFailed.connect(self._show_failed)
@@ -223,3 +228,14 @@ class DrillPanel(QWidget):
         profile_axis = self._station.profile.axes[axis]
         per_mm = profile_axis.steps_per_rev * profile_axis.microsteps / profile_axis.lead
         label.setText(f"{self.targets[axis].value() / per_mm:8.3f} {profile_axis.unit}")
+
+
+COLUMN_ROWS = 1000
+
+
+def _append(column: QListWidget, text: str) -> None:
+    """Newest at the bottom and in view, like the original tool's lists; old rows drop off."""
+    column.addItem(text)
+    while column.count() > COLUMN_ROWS:
+        column.takeItem(0)
+    column.scrollToBottom()
