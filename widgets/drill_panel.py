@@ -208,11 +208,19 @@ class DrillPanel(QWidget):
             return
         self._watched = session
         if session is not None:
-            session.commandReceived.connect(lambda text: _append(self.received_list, text))
-            session.commandDone.connect(lambda text: _append(self.done_list, text))
+            # Bound methods, not lambdas: Qt drops a bound slot when the panel is destroyed,
+            # while a lambda would keep calling into deleted list widgets.
+            session.commandReceived.connect(self._show_received_command)
+            session.commandDone.connect(self._show_done_command)
             session.frameSent.connect(self._show_sent)
             session.frameReceived.connect(self._show_received)
             session.commandFailed.connect(self._show_failed)
+
+    def _show_received_command(self, text: str) -> None:
+        _append(self.received_list, text)
+
+    def _show_done_command(self, text: str) -> None:
+        _append(self.done_list, text)
 
     def _show_sent(self, _command: object, raw: bytes) -> None:
         self.output.appendPlainText("> " + raw.decode("ascii", "replace").rstrip("\r\n"))
