@@ -49,7 +49,6 @@ from protocol.stage.codec import (
 )
 from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId
-from protocol.usb3.codec import Rejected as Usb3Rejected
 
 # --- words for the wire's numbers ---------------------------------------------------
 
@@ -574,7 +573,7 @@ class FrameLog(QObject):
     def _on_received(self, frame: object, raw: bytes) -> None:
         if isinstance(frame, EchoFrame):
             self._add(LogDirection.RX, raw, describe_echo(frame, self._axis_names, self._units))
-        elif isinstance(frame, Rejected | Usb3Rejected):
+        elif isinstance(frame, Rejected):  # every dialect shares one Rejected
             self._add(LogDirection.BAD, raw, f"rejected: {frame.reason}")
         else:
             self._add(LogDirection.RX, raw, describe_message(frame))

@@ -24,7 +24,10 @@ from __future__ import annotations
 import enum
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Generic, TypeVar
+from typing import TypeVar
+
+from protocol.framing import DecodeResult, LineDecoder
+from protocol.framing import Rejected as Rejected  # re-exported for this dialect's readers
 
 COMMAND_TERMINATOR = b"\r"
 REPLY_TERMINATOR = b"\r\n"
@@ -121,14 +124,6 @@ class Reply:
             )
 
 
-@dataclass(frozen=True, slots=True)
-class Rejected:
-    """Bytes that did not form a message, with the reason (for counters and the log)."""
-
-    raw: bytes
-    reason: str
-
-
 # -- helpers -------------------------------------------------------------------------------
 
 
@@ -184,7 +179,6 @@ def encode_reply(reply: Reply) -> bytes:
 # -- decoding ----------------------------------------------------------------------------
 
 _M = TypeVar("_M")
-DecodeResult = tuple[int, _M | Rejected | None]
 
 _REPLY_KINDS = {ord(kind.value): kind for kind in ReplyKind}
 
@@ -271,70 +265,14 @@ def decode_reply(buffer: bytes | bytearray) -> DecodeResult[Reply]:
     return _decode_line(buffer, REPLY_TERMINATOR[-1], MAX_REPLY, _reply_body)
 
 
-class _Decoder(Generic[_M]):
-    """Stateful reader for a byte stream: buffers, resynchronises on the line end, counts.
-
-    A run of garbage too long to be a message is rejected once and then
-    discarded up to and including its line end, so however long it is, it
-    costs one reject (and the device one ``E``), like any other bad line.
-    """
-
-    def __init__(
-        self, decode: Callable[[bytes | bytearray], DecodeResult[_M]], terminator: bytes
-    ) -> None:
-        self._decode = decode
-        self._terminator = terminator
-        self._buffer = bytearray()
-        self._discarding = False
-        self.messages = 0
-        self.rejected = 0
-        self.last_rejected: Rejected | None = None
-
-    def feed(self, data: bytes) -> list[_M | Rejected]:
-        """Decode everything complete in ``data``; rejected lines are returned too."""
-        self._buffer += data
-        results: list[_M | Rejected] = []
-        while self._buffer:
-            if self._discarding and not self._discard():
-                break
-            used, result = self._decode(self._buffer)
-            if used == 0:
-                break
-            del self._buffer[:used]
-            if isinstance(result, Rejected):
-                self.rejected += 1
-                self.last_rejected = result
-                self._discarding = result.raw[-1:] != self._terminator
-            elif result is not None:
-                self.messages += 1
-            if result is not None:
-                results.append(result)
-        return results
-
-    def _discard(self) -> bool:
-        """Drop the rest of an over-long run; True once its line end has gone too."""
-        end = self._buffer.find(self._terminator)
-        if end < 0:
-            self._buffer.clear()
-            return False
-        del self._buffer[: end + 1]
-        self._discarding = False
-        return True
-
-    def reset(self) -> None:
-        """Forget a partial line, e.g. after the link was reopened."""
-        self._buffer.clear()
-        self._discarding = False
-
-
-class CommandDecoder(_Decoder[Command]):
+class CommandDecoder(LineDecoder[Command]):
     """Host commands from a byte stream (the emulator's reader)."""
 
     def __init__(self) -> None:
         super().__init__(decode_command, COMMAND_TERMINATOR)
 
 
-class ReplyDecoder(_Decoder[Reply]):
+class ReplyDecoder(LineDecoder[Reply]):
     """Device replies from a byte stream (the station's reader)."""
 
     def __init__(self) -> None:

@@ -12,6 +12,11 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
+# Rejected is re-exported: readers of this dialect import it from here.
+from protocol.framing import (
+    Rejected as Rejected,
+)
+
 TERMINATOR = b"\n"
 COMMAND_START = ord(">")
 ECHO_START = ord("<")
@@ -181,14 +186,6 @@ class EchoFrame:
 
 
 Frame = CommandFrame | EchoFrame
-
-
-@dataclass(frozen=True, slots=True)
-class Rejected:
-    """Bytes that did not form a frame, with the reason (for counters and the log)."""
-
-    raw: bytes
-    reason: str
 
 
 def command_frame_length(axes: int) -> int:

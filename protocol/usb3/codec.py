@@ -18,7 +18,10 @@ import enum
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Generic, TypeVar
+from typing import TypeVar
+
+from protocol.framing import DecodeResult, LineDecoder
+from protocol.framing import Rejected as Rejected  # re-exported for this dialect's readers
 
 TERMINATOR = b";"
 TERMINATOR_BYTE = ord(";")
@@ -217,14 +220,6 @@ Reply = Position | StepSizes | Threads | NotUnderstood
 Message = Command | Reply
 
 
-@dataclass(frozen=True, slots=True)
-class Rejected:
-    """Bytes that did not form a message, with the reason (for counters and the log)."""
-
-    raw: bytes
-    reason: str
-
-
 # -- encoding ----------------------------------------------------------------------------
 
 _SIGN_CHARS = {1: b"+", -1: b"-"}
@@ -357,7 +352,6 @@ def _parse_reply_body(body: bytes) -> Reply | str:
 
 
 _M = TypeVar("_M")
-DecodeResult = tuple[int, _M | Rejected | None]
 
 
 def _decode(buffer: bytes | bytearray, parse: Callable[[bytes], _M | str]) -> DecodeResult[_M]:
@@ -393,68 +387,15 @@ def decode_reply(buffer: bytes | bytearray) -> DecodeResult[Reply]:
     return _decode(buffer, _parse_reply_body)
 
 
-class _Decoder(Generic[_M]):
-    """Stateful reader for a byte stream: buffers, resynchronises on ``;``, counts.
-
-    A run of garbage too long to be a message is rejected once and then
-    discarded up to and including its ``;``, so however long it is, it costs
-    one reject (and the unit one ``?;``), like any other garbage.
-    """
-
-    def __init__(self, decode: Callable[[bytes | bytearray], DecodeResult[_M]]) -> None:
-        self._decode = decode
-        self._buffer = bytearray()
-        self._discarding = False
-        self.messages = 0
-        self.rejected = 0
-        self.last_rejected: Rejected | None = None
-
-    def feed(self, data: bytes) -> list[_M | Rejected]:
-        """Decode everything complete in ``data``; rejected bytes are returned too."""
-        self._buffer += data
-        results: list[_M | Rejected] = []
-        while self._buffer:
-            if self._discarding and not self._discard():
-                break
-            used, result = self._decode(self._buffer)
-            if used == 0:
-                break
-            del self._buffer[:used]
-            if isinstance(result, Rejected):
-                self.rejected += 1
-                self.last_rejected = result
-                self._discarding = result.raw[-1:] != TERMINATOR
-            elif result is not None:
-                self.messages += 1
-            if result is not None:
-                results.append(result)
-        return results
-
-    def _discard(self) -> bool:
-        """Drop the rest of an over-long run; True once its ``;`` has gone too."""
-        end = self._buffer.find(TERMINATOR)
-        if end < 0:
-            self._buffer.clear()
-            return False
-        del self._buffer[: end + 1]
-        self._discarding = False
-        return True
-
-    def reset(self) -> None:
-        """Forget a partial message, e.g. after the link was reopened."""
-        self._buffer.clear()
-        self._discarding = False
-
-
-class CommandDecoder(_Decoder[Command]):
+class CommandDecoder(LineDecoder[Command]):
     """Host commands from a byte stream (the emulator's reader)."""
 
     def __init__(self) -> None:
-        super().__init__(decode_command)
+        super().__init__(decode_command, TERMINATOR)
 
 
-class ReplyDecoder(_Decoder[Reply]):
+class ReplyDecoder(LineDecoder[Reply]):
     """Unit replies from a byte stream (the station's reader)."""
 
     def __init__(self) -> None:
-        super().__init__(decode_reply)
+        super().__init__(decode_reply, TERMINATOR)
