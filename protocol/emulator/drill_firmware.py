@@ -53,9 +53,8 @@ a cycle boundary says ``D`` at the end of the cycle in which ``d`` elapses.
 
 from __future__ import annotations
 
-import threading
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from protocol.clock import Clock
@@ -68,6 +67,7 @@ from protocol.drill.codec import (
     encode_reply,
     error_reply,
 )
+from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.mechanism import Axis, AxisLimits
 
 #: Microsteps the drill goes on after the optical sensor sees the board.
@@ -199,7 +199,7 @@ def event_log_line(event: DrillEvent) -> str:
 _Procedure = Iterator[float]
 
 
-class DrillFirmware:
+class DrillFirmware(ControlCycles):
     """The plotter's control loop: X, Y and the drill's Z, a pen, one procedure at a time.
 
     Thread-safe: the loopback's ticker thread runs cycles while the GUI thread
@@ -209,15 +209,12 @@ class DrillFirmware:
 
     def __init__(self, clock: Clock, config: DrillConfig | None = None) -> None:
         self.config = config if config is not None else DrillConfig()
+        super().__init__(clock, self.config.control_cycle)
         cfg = self.config
-        self._lock = threading.RLock()
-        self._sink: Callable[[bytes], None] | None = None
         self._decoder = CommandDecoder()
         self._inbox: deque[Command | Rejected] = deque()
         self._pending: deque[Command] = deque()
         self._outbox: list[bytes] = []
-        self._start = clock.now()
-        self._cycles = 0
         #: The procedure running, its command, and the time left in its present step.
         self._procedure: _Procedure | None = None
         self._current: Command | None = None
@@ -251,26 +248,11 @@ class DrillFirmware:
 
     # -- EmulatedDevice --------------------------------------------------------
 
-    def set_output(self, sink: Callable[[bytes], None] | None) -> None:
-        with self._lock:
-            self._sink = sink
-
     def receive(self, data: bytes) -> None:
         with self._lock:
             self._inbox.extend(self._decoder.feed(data))
 
-    def run_until(self, t: float) -> None:
-        with self._lock:
-            while self._cycle_time(self._cycles + 1) <= t + _EPS:
-                self._run_cycle()
-
     # -- introspection -----------------------------------------------------------
-
-    @property
-    def time(self) -> float:
-        """Clock time at the end of the last control cycle run."""
-        with self._lock:
-            return self._cycle_time(self._cycles)
 
     @property
     def positions(self) -> tuple[int, int, int]:
@@ -344,9 +326,6 @@ class DrillFirmware:
 
     # -- the control cycle ---------------------------------------------------------
 
-    def _cycle_time(self, cycles: int) -> float:
-        return self._start + cycles * self.config.control_cycle
-
     def _now(self) -> float:
         return self._cycle_time(self._cycles) + self._into_cycle
 
@@ -417,8 +396,7 @@ class DrillFirmware:
             return
         data = b"".join(self._outbox)
         self._outbox.clear()
-        if self._sink is not None:
-            self._sink(data)
+        self._send_to_host(data)
 
     def _log(self, event: DrillEvent) -> None:
         self._event_log.append(event)

@@ -15,13 +15,13 @@ cycle, and each accepted frame is answered by one echo at its end.  On a
 
 from __future__ import annotations
 
-import threading
 from collections import deque
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from protocol.clock import Clock
+from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.fram import Fram
 from protocol.emulator.mechanism import Axis, AxisLimits, AxisState, SwitchName
 from protocol.stage.codec import (
@@ -225,7 +225,7 @@ class _PendingEcho:
 _Handler = Callable[[int, int, float], _Reply]
 
 
-class StageFirmware:
+class StageFirmware(ControlCycles):
     """The stage's control loop over emulated axes, FRAM, battery and IMU.
 
     Thread-safe: the loopback's ticker thread runs cycles while the GUI thread
@@ -235,13 +235,10 @@ class StageFirmware:
 
     def __init__(self, clock: Clock, config: StageConfig | None = None) -> None:
         self.config = config if config is not None else StageConfig()
-        self._lock = threading.RLock()
-        self._sink: Callable[[bytes], None] | None = None
+        super().__init__(clock, self.config.control_cycle)
         self._decoder = StageDecoder(self.config.axes)
         self._queue: deque[CommandFrame] = deque()
         self._host_echoes = 0
-        self._start = clock.now()
-        self._cycles = 0
         self._last_frame: float | None = None
         self._sleeping = False
         self._usb_connected = False
@@ -269,10 +266,6 @@ class StageFirmware:
 
     # -- EmulatedDevice --------------------------------------------------------
 
-    def set_output(self, sink: Callable[[bytes], None] | None) -> None:
-        with self._lock:
-            self._sink = sink
-
     def receive(self, data: bytes) -> None:
         with self._lock:
             for frame in self._decoder.feed(data):
@@ -282,23 +275,12 @@ class StageFirmware:
                     # A well-formed echo coming *from* the host is still not a command.
                     self._host_echoes += 1
 
-    def run_until(self, t: float) -> None:
-        with self._lock:
-            while self._cycle_time(self._cycles + 1) <= t + _EPS:
-                self._run_cycle()
-
     # -- introspection -----------------------------------------------------------
 
     @property
     def axes(self) -> tuple[Axis, ...]:
         with self._lock:
             return self._axes
-
-    @property
-    def time(self) -> float:
-        """Clock time at the end of the last control cycle run."""
-        with self._lock:
-            return self._cycle_time(self._cycles)
 
     @property
     def sleeping(self) -> bool:
@@ -429,9 +411,6 @@ class StageFirmware:
 
     # -- the control cycle ---------------------------------------------------------
 
-    def _cycle_time(self, cycles: int) -> float:
-        return self._start + cycles * self.config.control_cycle
-
     def _run_cycle(self) -> None:
         now = self._cycle_time(self._cycles)
         dt = self.config.control_cycle
@@ -486,8 +465,7 @@ class StageFirmware:
         packets = tuple(self._echo_packet(i, reply) for i, reply in enumerate(echo.replies))
         subscriber, sdata = self._subscriber(echo.subscriber)
         frame = encode_echo(EchoFrame(packets, subscriber, sdata))
-        if self._sink is not None:
-            self._sink(frame)
+        self._send_to_host(frame)
 
     def _echo_packet(self, index: int, reply: _Reply) -> EchoPacket:
         status = reply.status if reply.status is not None else self._axis_status(index)

@@ -44,13 +44,13 @@ motors advance one cycle, and the replies and reports go out at its end.  On a
 from __future__ import annotations
 
 import math
-import threading
 from collections import deque
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import pairwise
 
 from protocol.clock import Clock
+from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.mechanism import Axis, AxisLimits
 from protocol.usb3.codec import (
     AxisId,
@@ -173,7 +173,7 @@ class _Motor:
     adc: int = ADC_CENTRE
 
 
-class Usb3Firmware:
+class Usb3Firmware(ControlCycles):
     """The unit's control loop over three emulated lead-screw axes.
 
     Thread-safe: the loopback's ticker thread runs cycles while the GUI thread
@@ -183,13 +183,10 @@ class Usb3Firmware:
 
     def __init__(self, clock: Clock, config: Usb3Config | None = None) -> None:
         self.config = config if config is not None else Usb3Config()
-        self._lock = threading.RLock()
-        self._sink: Callable[[bytes], None] | None = None
+        super().__init__(clock, self.config.control_cycle)
         self._decoder = CommandDecoder()
         self._queue: deque[Command | Rejected] = deque()
         self._outbox: list[bytes] = []
-        self._start = clock.now()
-        self._cycles = 0
         self._report_every = round(self.config.report_interval / self.config.control_cycle)
         self._motors = tuple(self._make_motor(axis) for axis in AxisId)
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
@@ -205,26 +202,11 @@ class Usb3Firmware:
 
     # -- EmulatedDevice --------------------------------------------------------
 
-    def set_output(self, sink: Callable[[bytes], None] | None) -> None:
-        with self._lock:
-            self._sink = sink
-
     def receive(self, data: bytes) -> None:
         with self._lock:
             self._queue.extend(self._decoder.feed(data))
 
-    def run_until(self, t: float) -> None:
-        with self._lock:
-            while self._cycle_time(self._cycles + 1) <= t + _EPS:
-                self._run_cycle()
-
     # -- introspection -----------------------------------------------------------
-
-    @property
-    def time(self) -> float:
-        """Clock time at the end of the last control cycle run."""
-        with self._lock:
-            return self._cycle_time(self._cycles)
 
     @property
     def positions(self) -> Triple[int]:
@@ -325,9 +307,6 @@ class Usb3Firmware:
 
     # -- the control cycle ---------------------------------------------------------
 
-    def _cycle_time(self, cycles: int) -> float:
-        return self._start + cycles * self.config.control_cycle
-
     def _run_cycle(self) -> None:
         now = self._cycle_time(self._cycles)
         while self._queue:
@@ -354,8 +333,7 @@ class Usb3Firmware:
             return
         data = b"".join(self._outbox)
         self._outbox.clear()
-        if self._sink is not None:
-            self._sink(data)
+        self._send_to_host(data)
 
     def _settings(self) -> bytes:
         sizes = self.step_sizes
