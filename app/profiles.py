@@ -7,6 +7,7 @@ machine of a known family is a file, not code.
 
 from __future__ import annotations
 
+import math
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -58,6 +59,35 @@ class Capabilities:
     drill: bool = False
 
 
+#: What a GRBL-compatible board executes (PROTOCOLS.md §4 plus the usual GRBL extras).
+GRBL_WORDS = (
+    "G0", "G1", "G2", "G3", "G4", "G17", "G20", "G21", "G28", "G90", "G91", "G92",
+    "M0", "M1", "M2", "M3", "M4", "M5", "M30", "$H", "$X",
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class GcodeSettings:
+    """How a G-code machine is fed and what it executes ([gcode] in the profile).
+
+    ``words`` is the firmware's repertoire: a job line using anything else is
+    refused before the job runs, with its line number.  The pen commands are
+    the machine's own (the CoreXY plotter lifts with M3 and lowers with M4;
+    GRBL servo plotters lower with ``M3 S<n>`` and lift with M5).
+    """
+
+    streaming: str = (
+        "counting"  # "counting" (at most rx_buffer - 1 bytes unacknowledged) or "ping-pong"
+    )
+    rx_buffer: int = 128
+    words: tuple[str, ...] = GRBL_WORDS
+    pen_up: str = "M5"
+    pen_down: str = "M3 S1000"
+    z_is_pen: bool = False  # files' Z heights mean pen up (> 0) / down (≤ 0) on this machine
+    kinematics: str = "cartesian"  # "cartesian", "corexy" or "cylindrical"
+    status_ms: int = 200  # how often the station asks "?"
+
+
 @dataclass(frozen=True)
 class MachineProfile:
     name: str
@@ -68,6 +98,14 @@ class MachineProfile:
     capabilities: Capabilities = field(default_factory=Capabilities)
     period_ms: int = 100
     source: Path | None = None
+    gcode: GcodeSettings | None = None
+
+    def travel_limits(self) -> dict[str, tuple[float, float]]:
+        """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
+        return {
+            axis.name: (-math.inf, math.inf) if axis.kind == "rotary" else (0.0, axis.travel)
+            for axis in self.axes
+        }
 
     def axis_index(self, name: str) -> int:
         for i, axis in enumerate(self.axes):
@@ -128,6 +166,18 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
     capabilities = _build(
         Capabilities, _section(data, "capabilities", path), path, "[capabilities]"
     )
+    gcode: GcodeSettings | None = None
+    if dialect == "gcode" or "gcode" in data:
+        values = dict(_section(data, "gcode", path))
+        if "words" in values:
+            values["words"] = tuple(str(w).upper() for w in values["words"])
+        gcode = _build(GcodeSettings, values, path, "[gcode]")
+        if gcode.streaming not in ("counting", "ping-pong"):
+            raise ProfileError(f"{path}: [gcode] streaming must be 'counting' or 'ping-pong'")
+        if gcode.kinematics not in ("cartesian", "corexy", "cylindrical"):
+            raise ProfileError(
+                f"{path}: [gcode] kinematics must be cartesian, corexy or cylindrical"
+            )
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -140,4 +190,5 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         capabilities=capabilities,
         period_ms=period,
         source=path,
+        gcode=gcode,
     )

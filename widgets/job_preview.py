@@ -27,7 +27,6 @@ nothing.
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable, Sequence
 
@@ -122,37 +121,25 @@ class ProgramGeometry:
     """The plottable shape of a program on two axes, computed once per program."""
 
     def __init__(self, program: Program, x_axis: str, y_axis: str | None) -> None:
-        count = sum(1 for op in program if op.kind is OpKind.MOVE)
-        xs = np.full(count, np.nan)
-        ys = np.full(count, np.nan if y_axis else 0.0)
-        ops = np.zeros(count, dtype=np.int64)
-        pen = np.zeros(count, dtype=bool)
-        for k, (index, where, pen_down) in enumerate(program.positions()):
-            xs[k] = where.get(x_axis, math.nan)
-            if y_axis:
-                ys[k] = where.get(y_axis, math.nan)
-            ops[k] = index
-            pen[k] = pen_down
-        self.travel = _runs(xs, ys, ops, pen, wanted=False)
-        self.work = _runs(xs, ys, ops, pen, wanted=True)
-        self.markers = self._markers(program, xs, ys, ops, pen)
+        path = program.preview_path(x_axis, y_axis)
+        xs = np.ascontiguousarray(path.coords[:, 0])
+        ys = np.ascontiguousarray(path.coords[:, 1])
+        self.travel = _runs(xs, ys, path.ops, path.pen, wanted=False)
+        self.work = _runs(xs, ys, path.ops, path.pen, wanted=True)
+        self.markers = self._markers(program, xs, ys, path.ops)
 
     @staticmethod
-    def _markers(
-        program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray, pen: np.ndarray
-    ) -> PathArrays:
+    def _markers(program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray) -> PathArrays:
         """Drill holes where they are drilled; a plain point list's points are its work."""
-        drills = np.array(
-            [i for i, op in enumerate(program.operations) if op.kind is OpKind.DRILL],
-            dtype=np.int64,
-        )
-        if len(drills):
+        kinds = program.kinds()
+        if OpKind.DRILL in kinds:
+            drills = program.indices_of(OpKind.DRILL)
             # Where the tool is at each drill: the last move before it.
             at = np.searchsorted(ops, drills, side="right") - 1
             valid = at >= 0
             at, drills = at[valid], drills[valid]
             return PathArrays(xs[at], ys[at], drills)
-        uses_pen = any(op.kind in (OpKind.PEN_DOWN, OpKind.PEN_UP) for op in program)
+        uses_pen = bool(kinds & {OpKind.PEN_DOWN, OpKind.PEN_UP})
         if uses_pen or not len(xs):
             return PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
         return PathArrays(xs, ys, ops)

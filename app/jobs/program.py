@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 
+import numpy as np
+
 
 class OpKind(enum.Enum):
     MOVE = "move"  # to absolute axis positions (mm or degrees), travel unless the pen is down
@@ -24,6 +26,7 @@ class OpKind(enum.Enum):
     PEN_DOWN = "pen down"
     WAIT = "wait"  # for the operator to confirm (a message says what to do)
     COMMENT = "comment"  # shown while running, no motion
+    GCODE = "gcode"  # a G-code line with no modelled motion (dwell, modal words), sent as written
 
 
 @dataclass(frozen=True)
@@ -41,6 +44,9 @@ class Operation:
     source: SourceRef
     target: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
     message: str = ""
+    #: G-code text a G-code machine is sent as written (G-code files); empty: the dialect
+    #: renders the operation from its kind and target.
+    line: str = ""
 
     def describe(self) -> str:
         if self.kind is OpKind.MOVE:
@@ -48,6 +54,8 @@ class Operation:
             return f"move to {where}"
         if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
             return f"{self.kind.value}: {self.message}"
+        if self.kind is OpKind.GCODE and self.line:
+            return self.line
         return str(self.kind.value)
 
 
@@ -56,9 +64,34 @@ def move(source: SourceRef, **target: float) -> Operation:
 
 
 @dataclass(frozen=True)
+class ProgramPath:
+    """The vertices a program's moves pass through, as arrays (preview, estimate, limits).
+
+    ``coords[k]`` is the position (one column per requested axis, NaN where
+    the axis was never set) after vertex ``k``; ``ops[k]`` the operation that
+    reaches it (non-decreasing; an arc contributes several vertices with the
+    same index) and ``pen[k]`` whether the pen was down on the way there.
+    """
+
+    coords: np.ndarray  # float64, shape (n, len(axes))
+    ops: np.ndarray  # int64, shape (n,)
+    pen: np.ndarray  # bool, shape (n,)
+
+    def __len__(self) -> int:
+        return len(self.ops)
+
+
+@dataclass(frozen=True)
 class Program:
+    """Operations in order, plus the array views large programs override to stay fast.
+
+    A G-code file of a million lines is not kept as a million Operation
+    objects: its subclass serves ``operations`` lazily and answers
+    :meth:`path`, :meth:`kinds` and :meth:`limit_violations` from arrays.
+    """
+
     name: str
-    operations: tuple[Operation, ...]
+    operations: Sequence[Operation]
     source: Path | None = None
     #: What the loader wants the operator to know (e.g. the travel its ordering saved).
     notes: tuple[str, ...] = ()
@@ -101,6 +134,45 @@ class Program:
                 where.update(op.target)
                 yield index, dict(where), pen_down
 
+    def path(self, axes: Sequence[str]) -> ProgramPath:
+        """Every MOVE's end position on ``axes`` (NaN until an axis is first set)."""
+        rows: list[list[float]] = []
+        ops: list[int] = []
+        pen: list[bool] = []
+        for index, where, pen_down in self.positions():
+            rows.append([where.get(axis, np.nan) for axis in axes])
+            ops.append(index)
+            pen.append(pen_down)
+        coords = np.array(rows, dtype=np.float64).reshape(len(rows), len(axes))
+        return ProgramPath(coords, np.array(ops, dtype=np.int64), np.array(pen, dtype=bool))
+
+    def preview_path(self, x_axis: str, y_axis: str | None) -> ProgramPath:
+        """What the preview draws in the plane: the two axes as they are (polar jobs project)."""
+        if y_axis is None:
+            flat = self.path((x_axis,))
+            zeros = np.zeros((len(flat), 1))
+            return ProgramPath(np.hstack([flat.coords, zeros]), flat.ops, flat.pen)
+        return self.path((x_axis, y_axis))
+
+    def kinds(self) -> frozenset[OpKind]:
+        """The operation kinds the program uses (capability checks without a full scan)."""
+        return frozenset(op.kind for op in self.operations)
+
+    def indices_of(self, kind: OpKind) -> np.ndarray:
+        """Indices of the operations of ``kind``, ascending."""
+        found = [i for i, op in enumerate(self.operations) if op.kind is kind]
+        return np.array(found, dtype=np.int64)
+
+    def limit_violations(self, limits: Mapping[str, tuple[float, float]]) -> list[LimitViolation]:
+        """Every move that would leave the machine's travel (or names an axis it lacks)."""
+        found: list[LimitViolation] = []
+        for index, op in enumerate(self.operations):
+            for axis, value in op.target.items():
+                low, high = limits.get(axis, (float("nan"), float("nan")))
+                if not low <= value <= high:  # NaN limits (unknown axis) always fail
+                    found.append(LimitViolation(index, op, axis, value, low, high))
+        return found
+
 
 @dataclass(frozen=True)
 class LimitViolation:
@@ -122,13 +194,7 @@ def check_limits(
     program: Program, limits: Mapping[str, tuple[float, float]]
 ) -> list[LimitViolation]:
     """Every move that would leave the machine's travel (or names an axis it lacks)."""
-    found: list[LimitViolation] = []
-    for index, op in enumerate(program.operations):
-        for axis, value in op.target.items():
-            low, high = limits.get(axis, (float("nan"), float("nan")))
-            if not low <= value <= high:  # NaN limits (unknown axis) always fail
-                found.append(LimitViolation(index, op, axis, value, low, high))
-    return found
+    return program.limit_violations(limits)
 
 
 class JobFileError(ValueError):

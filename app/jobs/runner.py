@@ -63,6 +63,8 @@ from app.station import Station
 from protocol.stage.codec import AxisStatus, EchoFrame, EchoType, Rejected
 
 ETA_INTERVAL_MS = 1000
+#: Refused operations listed in the message (the dock's list holds them all).
+REFUSALS_SHOWN = 20
 #: Dialects whose completion reports the runner understands.
 RUNNABLE_DIALECTS = frozenset({"stage", "drill"})
 
@@ -210,26 +212,16 @@ class JobRunner(QObject):
             self.message.emit("Stop the running job before loading another")
             return []
         profile = self.station.profile
-        limits = {axis.name: (0.0, axis.travel) for axis in profile.axes}
-        refused: list[LimitViolation] = check_limits(program, limits)
-        capabilities = profile.capabilities
-        for index, op in enumerate(program):
-            if profile.dialect not in RUNNABLE_DIALECTS and op.kind is not OpKind.COMMENT:
-                # Completion is judged from the stage's echoes; other dialects report done
-                # their own way, and a job that could never see an operation end must not start.
-                reason = f"jobs do not run on the {profile.title} yet (preview only)"
-                refused.append(UnsupportedOperation.of(index, op, reason))
-                break
-            if op.kind is OpKind.DRILL and not capabilities.drill:
-                refused.append(UnsupportedOperation.of(index, op, f"{profile.title} cannot drill"))
-            elif op.kind in (OpKind.PEN_UP, OpKind.PEN_DOWN) and not capabilities.pen:
-                refused.append(UnsupportedOperation.of(index, op, f"{profile.title} has no pen"))
+        refused: list[LimitViolation] = check_limits(program, profile.travel_limits())
+        refused += self._unsupported(program)
         refused.sort(key=lambda v: v.index)
         self._reset()
         if refused:
             self._program = None
             self._estimate = None
-            lines = "\n".join(f"  {v}" for v in refused)
+            lines = "\n".join(f"  {v}" for v in refused[:REFUSALS_SHOWN])
+            if len(refused) > REFUSALS_SHOWN:
+                lines += f"\n  … and {len(refused) - REFUSALS_SHOWN} more"
             count = len({v.index for v in refused})
             self.message.emit(
                 f"Job {program.name!r} refused, {count} operation(s) cannot be run:\n{lines}"
@@ -251,6 +243,31 @@ class JobRunner(QObject):
                 f"operations done; resume from {op.source} or discard the checkpoint"
             )
         return []
+
+    def _unsupported(self, program: Program) -> list[LimitViolation]:
+        """Operations this machine cannot do at all; scans only when such a kind is used."""
+        profile = self.station.profile
+        capabilities = profile.capabilities
+        kinds = program.kinds()
+        refused: list[LimitViolation] = []
+        if profile.dialect not in RUNNABLE_DIALECTS and kinds - {OpKind.COMMENT}:
+            # A job that could never see an operation end must not start.
+            for index, op in enumerate(program):
+                if op.kind is not OpKind.COMMENT:
+                    reason = f"jobs do not run on the {profile.title} yet (preview only)"
+                    return [UnsupportedOperation.of(index, op, reason)]
+        problems: dict[OpKind, str] = {}
+        if not capabilities.drill:
+            problems[OpKind.DRILL] = f"{profile.title} cannot drill"
+        if not capabilities.pen:
+            problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
+        if profile.dialect != "gcode":
+            problems[OpKind.GCODE] = f"{profile.title} does not take G-code"
+        for kind in sorted(kinds & problems.keys(), key=lambda k: k.value):
+            for index in program.indices_of(kind):
+                op = program[int(index)]
+                refused.append(UnsupportedOperation.of(int(index), op, problems[kind]))
+        return refused
 
     # --- operator commands ---------------------------------------------------
 
