@@ -76,9 +76,8 @@ class GcodeSettings:
     GRBL servo plotters lower with ``M3 S<n>`` and lift with M5).
     """
 
-    streaming: str = (
-        "counting"  # "counting" (at most rx_buffer - 1 bytes unacknowledged) or "ping-pong"
-    )
+    #: "counting" (at most rx_buffer - 1 bytes unacknowledged) or "ping-pong"
+    streaming: str = "counting"
     rx_buffer: int = 128
     words: tuple[str, ...] = GRBL_WORDS
     pen_up: str = "M5"
