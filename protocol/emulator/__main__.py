@@ -7,9 +7,12 @@ SPP adapter would use, with no board attached::
     python -m protocol.emulator --profile xy-stage --pty
     python -m protocol.emulator --profile usb3 --pty
     python -m protocol.emulator --profile pcb-drill --pty
+    python -m protocol.emulator --profile corexy-plotter --pty
 
 The profile picks the firmware; the pty ignores baud rates, so the usb3
 unit's and the drill's 19200 and the stage's 115200 need no setting here.
+The G-code profiles (``corexy-plotter``, ``grbl-plotter``, ``string-art``)
+run one GRBL-like firmware with each machine's kinematics, replies and pen.
 
 A pty gets a new number every time, so ``--link PATH`` also puts a symlink at
 a fixed path (as socat's ``link=`` does): an emulator restarted on the same
@@ -24,6 +27,7 @@ that the station only ever sees as what the device then reports::
     menu M533 T444        usb3: the unit's menu sets step sizes and/or threads
     joystick X 1023       usb3: the X joystick reads 1023 (centred 500…524)
     charger on            xy-stage: plug the charger in (off unplugs it)
+    alarm 1               G-code profiles: a limit switch trips (ALARM:1)
 
 ``help`` lists the controls of the running profile; a line that is not a
 control gets a one-line error on standard error and changes nothing.
@@ -44,6 +48,14 @@ positions in microsteps, so a job's holes can be checked against the file::
     4.000000 received X1234
     5.604200 done X1234
     7.484700 hole X1234 Y567
+
+The G-code firmwares log one JSON object per line: lines received (with the
+bytes then unacknowledged), replies, moves ended, pen changes, dwells, holds,
+resets::
+
+    {"t":1.005,"event":"line","text":"G1 X10 F600","unacknowledged":12}
+    {"t":1.005,"event":"reply","text":"ok","line":"G1 X10 F600"}
+    {"t":2.04,"event":"move","kind":"G1","pos":{"X":10.0,"Y":0.0,"Z":0.0},"pen":false}
 """
 
 from __future__ import annotations
@@ -74,6 +86,13 @@ from protocol.emulator.drill_firmware import (
     PenEvent,
     event_log_line,
 )
+from protocol.emulator.gcode_firmware import (
+    GcodeFirmware,
+    corexy_plotter_config,
+    grbl_plotter_config,
+    string_art_config,
+)
+from protocol.emulator.gcode_firmware import event_log_line as gcode_log_line
 from protocol.emulator.stage_firmware import ExecutedCommand as StageCommand
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import ADC_MAX, Usb3Firmware
@@ -87,6 +106,9 @@ PROFILES: dict[str, DeviceFactory] = {
     "xy-stage": StageFirmware,
     "usb3": Usb3Firmware,
     "pcb-drill": DrillFirmware,
+    "corexy-plotter": functools.partial(GcodeFirmware, config=corexy_plotter_config()),
+    "grbl-plotter": functools.partial(GcodeFirmware, config=grbl_plotter_config()),
+    "string-art": functools.partial(GcodeFirmware, config=string_art_config()),
 }
 DEFAULT_PROFILE = "xy-stage"
 
@@ -193,6 +215,27 @@ def _usb3_joystick(unit: Usb3Firmware, args: Sequence[str]) -> None:
     unit.set_joystick(axis, adc)
 
 
+def _gcode_alarm(board: GcodeFirmware, args: Sequence[str]) -> None:
+    if len(args) > 1:
+        raise ControlError("expected at most an alarm code")
+    code = _number(args, "an alarm code") if args else 1.0
+    if not (code.is_integer() and 1 <= code <= 99):
+        raise ControlError(f"alarm codes are whole numbers 1…99, got {code:g}")
+    board.trigger_alarm(int(code))
+
+
+def _gcode_hold(board: GcodeFirmware, args: Sequence[str]) -> None:
+    if args:
+        raise ControlError("hold takes nothing")
+    board.feed_hold()
+
+
+def _gcode_resume(board: GcodeFirmware, args: Sequence[str]) -> None:
+    if args:
+        raise ControlError("resume takes nothing")
+    board.cycle_start()
+
+
 def _stage_charger(stage: StageFirmware, args: Sequence[str]) -> None:
     stage.charger_connected = _on_off(args)
 
@@ -237,10 +280,24 @@ STAGE_CONTROLS: dict[str, Control[StageFirmware]] = {
     "rotation": Control("rotation <°/s>", "set the IMU's rotation rate", _stage_rotation),
 }
 
+GCODE_CONTROLS: dict[str, Control[GcodeFirmware]] = {
+    "alarm": Control(
+        "alarm [<code>]", "a limit switch trips: ALARM:<code> (default 1)", _gcode_alarm
+    ),
+    "hold": Control("hold", "the board's feed-hold button (as '!')", _gcode_hold),
+    "resume": Control("resume", "the board's cycle-start button (as '~')", _gcode_resume),
+}
+
 #: The controls of each profile's device, for --help.
-PROFILE_CONTROLS: Mapping[str, Mapping[str, Control[Usb3Firmware] | Control[StageFirmware]]] = {
+PROFILE_CONTROLS: Mapping[
+    str,
+    Mapping[str, Control[Usb3Firmware] | Control[StageFirmware] | Control[GcodeFirmware]],
+] = {
     "usb3": USB3_CONTROLS,
     "xy-stage": STAGE_CONTROLS,
+    "corexy-plotter": GCODE_CONTROLS,
+    "grbl-plotter": GCODE_CONTROLS,
+    "string-art": GCODE_CONTROLS,
 }
 
 
@@ -264,13 +321,23 @@ def controls_for(device: EmulatedDevice) -> dict[str, BoundControl]:
             name: BoundControl(c.usage, functools.partial(c.apply, device))
             for name, c in STAGE_CONTROLS.items()
         }
+    if isinstance(device, GcodeFirmware):
+        return {
+            name: BoundControl(c.usage, functools.partial(c.apply, device))
+            for name, c in GCODE_CONTROLS.items()
+        }
     return {}
 
 
 def _controls_help() -> str:
     lines = ["controls, with --controls: one per line on standard input (help lists them)"]
+    # Profiles that share their controls (the G-code machines) are listed together.
+    shared: dict[int, list[str]] = {}
     for profile, controls in PROFILE_CONTROLS.items():
-        lines.append(f"  {profile}:")
+        shared.setdefault(id(controls), []).append(profile)
+    for names in shared.values():
+        controls = PROFILE_CONTROLS[names[0]]
+        lines.append(f"  {', '.join(names)}:")
         for control in controls.values():
             lines += [f"    {control.usage}", f"        {control.summary}"]
     lines.append("  every profile: help")
@@ -404,6 +471,8 @@ class CommandLogFile:
 def _log_line(entry: object) -> str:
     if isinstance(entry, ExecutedCommand | CommandDone | DrilledHole | PenEvent):
         return event_log_line(entry) + "\n"
+    if isinstance(entry, dict):  # the G-code firmwares' events
+        return gcode_log_line(entry) + "\n"
     if isinstance(entry, StageCommand):
         try:
             name = CommandId(entry.command).name

@@ -1,0 +1,500 @@
+"""Firmware of the G-code machines (plotters, the string-art winder), emulated (PROTOCOLS.md 4).
+
+It is the device side of the ``gcode`` dialect written from the contract and
+GRBL 1.1's documented behaviour, so the station's streaming can be tested
+against what makes character counting necessary: a receive buffer that
+drops what does not fit, and a parser that takes a line out of it only
+while the planner has room.  The event log (:attr:`GcodeFirmware.event_log`)
+lets a test check what was drawn where, and that the host never had more
+than ``rx_buffer - 1`` bytes unacknowledged.
+
+The board powers up in its first control cycle, which ends with the banner;
+bytes that arrive before it are lost, as on a board that resets when its
+port is opened, so the banner always comes before any reply and a host may
+take it as "the board has just (re)started, nothing it had is left".
+
+How a byte travels:
+
+- Real-time bytes (``?``, ``!``, ``~``, 0x18) are acted on the moment they
+  arrive and never enter the receive buffer.  The status report goes out at
+  the end of the next control cycle (several ``?`` before it make one
+  report); hold, resume and reset take effect at once.
+- Other bytes enter the ``rx_buffer``-byte receive buffer, which holds one
+  byte less than its size (GRBL's ring buffer); bytes that do not fit are
+  dropped and counted in :attr:`GcodeFirmware.overflows`.
+- At the start of each control cycle the parser takes complete lines out of
+  the buffer while the planner has a free block, and answers each at once:
+  ``ok`` when its blocks are queued (a line that makes more blocks than
+  there is room for, an arc, is answered when its last block is queued),
+  ``error:<n>`` when refused.  So a full planner withholds the replies, and
+  a host that counts characters sees its window close.
+- A line longer than ``max_line`` bytes is answered ``error:11`` (GRBL's
+  line overflow) once its end arrives; its bytes leave the buffer as they
+  come, so it cannot block the buffer.  A ``\\r`` is whitespace, not a line
+  end, so ``\\r\\n`` is one line.
+- :attr:`GcodeFirmware.unacknowledged` counts the bytes received and kept
+  whose line has not been answered yet; its maximum is kept.
+
+Decisions the contract leaves open, made here:
+
+- A soft reset stops at once where the tool is (no alarm: the position is
+  kept), empties the planner and the receive buffer, resets the modes as
+  GRBL does, lifts the pen and sends the banner.  An alarm survives it.
+- An alarm (only the ``alarm`` control raises one) stops at once, lifts the
+  pen and locks G-code out (``error:9``) until ``$X`` or ``$H``.
+- ``$H`` goes to 0 on every axis at the rapid rate (state ``Home``) and is
+  answered when queued; like ``$I`` and ``$$`` it needs the machine idle
+  (``error:8``).  Unknown ``$`` commands are ``error:3``; settings cannot be
+  written.
+- Status reports always carry ``MPos``, ``FS`` and ``Bf`` (free planner
+  blocks, free receive-buffer bytes, as GRBL counts them).
+"""
+
+from __future__ import annotations
+
+import json
+from collections import deque
+from typing import Any
+
+from protocol.clock import Clock
+from protocol.emulator.cycles import ControlCycles
+from protocol.emulator.gcode_interpreter import Interpreter
+from protocol.emulator.gcode_machine import (
+    GcodeConfig,
+    PenMapping,
+    corexy_plotter_config,
+    grbl_plotter_config,
+    string_art_config,
+)
+from protocol.emulator.gcode_planner import (
+    Block,
+    Dwell,
+    HoldState,
+    Move,
+    Pause,
+    PenChange,
+    Planner,
+    SetPosition,
+)
+from protocol.gcode.codec import CYCLE_START, FEED_HOLD, SOFT_RESET, STATUS_QUERY
+from protocol.gcode.words import WordError, split_words, strip_comments
+
+__all__ = [
+    "LOG_LENGTH",
+    "GcodeConfig",
+    "GcodeEvent",
+    "GcodeFirmware",
+    "PenMapping",
+    "corexy_plotter_config",
+    "event_log_line",
+    "grbl_plotter_config",
+    "string_art_config",
+]
+
+#: Entries kept in the event log, bounded for an emulator left running for days.
+LOG_LENGTH = 20_000
+
+#: One event: ``{"t": seconds, "event": kind, ...}``, JSON-serialisable as it is.
+GcodeEvent = dict[str, Any]
+
+# GRBL's error codes the firmware itself gives (the parser's are in the interpreter).
+INVALID_STATEMENT = 3
+NOT_IDLE = 8
+GCODE_LOCKED = 9
+LINE_OVERFLOW = 11
+
+_LINE_END = 0x0A
+_HELP = "[HLP:$$ $G $I $H $X ~ ! ? ctrl-x]"
+
+
+def event_log_line(event: GcodeEvent) -> str:
+    """One line of the emulator's ``--log`` file: the event as compact JSON."""
+    return json.dumps(event, separators=(",", ":"))
+
+
+class GcodeFirmware(ControlCycles):
+    """A GRBL-like board: receive buffer, parser, planner, pen, on fixed control cycles.
+
+    Thread-safe: the loopback's ticker thread runs cycles while the GUI
+    thread reads the position and the log, so every public method and
+    property takes the same re-entrant lock.
+    """
+
+    def __init__(self, clock: Clock, config: GcodeConfig | None = None) -> None:
+        self.config = config if config is not None else grbl_plotter_config()
+        super().__init__(clock, self.config.control_cycle)
+        origin = (0.0,) * len(self.config.axes)
+        # GRBL's planner keeps one block of its ring free, as its receive buffer does a byte.
+        self._planner = Planner(origin, self.config.planner_blocks - 1)
+        self._interpreter = Interpreter(self.config, origin)
+        self._rx = bytearray()
+        self._rx_capacity = self.config.rx_buffer - 1
+        #: Bytes of a too-long line already taken out of the buffer, awaiting its end.
+        self._overlong = 0
+        #: Blocks of the line being queued that did not fit yet, and its answer.
+        self._pending: deque[Block] = deque()
+        self._pending_line: tuple[int, str] | None = None
+        self._status_wanted = False
+        self._alarm: int | None = None
+        self._pen_down = False
+        self._spindle = 0.0
+        self._overflows = 0
+        self._unacked = 0
+        self._max_unacked = 0
+        self._outbox: list[bytes] = []
+        self._events: deque[GcodeEvent] = deque(maxlen=LOG_LENGTH)
+        self._booted = False
+        self._lost_booting = 0
+        self._send_banner()
+
+    # -- EmulatedDevice --------------------------------------------------------------------
+
+    def receive(self, data: bytes) -> None:
+        with self._lock:
+            if not self._booted:
+                self._lost_booting += len(data)
+                return
+            for byte in data:
+                if byte == STATUS_QUERY[0]:
+                    self._status_wanted = True
+                elif byte == FEED_HOLD[0]:
+                    self.feed_hold()
+                elif byte == CYCLE_START[0]:
+                    self.cycle_start()
+                elif byte == SOFT_RESET[0]:
+                    self.soft_reset()
+                elif len(self._rx) >= self._rx_capacity:
+                    self._overflows += 1
+                else:
+                    self._rx.append(byte)
+                    self._unacked += 1
+                    self._max_unacked = max(self._max_unacked, self._unacked)
+                    if byte == _LINE_END:
+                        self._log_arrival()
+
+    # -- the machine's own controls, and the real-time commands ---------------------------
+
+    def feed_hold(self) -> None:
+        """``!``: brake to a stop and hold; ignored in alarm and while homing."""
+        with self._lock:
+            if self._alarm is not None or self.state == "Home":
+                return
+            if self._planner.hold_state is HoldState.RUNNING:
+                self._planner.hold()
+                self._log("hold", pos=self._where())
+
+    def cycle_start(self) -> None:
+        """``~``: resume from a completed hold or an ``M0``."""
+        with self._lock:
+            if self._alarm is None and self._planner.resume():
+                self._log("resume", pos=self._where())
+
+    def soft_reset(self) -> None:
+        """0x18: stop at once, forget every line and block, keep the position, say the banner."""
+        with self._lock:
+            self._stop()
+            self._rx.clear()
+            self._overlong = 0
+            self._unacked = 0
+            self._status_wanted = False
+            self._interpreter.reset(self._planner.position())
+            self._log("reset", pos=self._where())
+            self._send_banner()
+            if self._alarm is not None:
+                self._send_line("[MSG:'$H'|'$X' to unlock]")
+
+    def trigger_alarm(self, code: int = 1) -> None:
+        """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
+        with self._lock:
+            if self._pending_line is not None:
+                self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *self._pending_line)
+            self._stop()
+            self._interpreter.position = self._planner.position()
+            self._interpreter.pen_down = False
+            self._interpreter.spindle_level = 0.0
+            self._alarm = code
+            self._send_line(f"ALARM:{code}")
+            self._log("alarm", code=code, pos=self._where())
+
+    # -- introspection ---------------------------------------------------------------------
+
+    def position(self) -> dict[str, float]:
+        """Where the tool is now, per axis, in the machine's units."""
+        with self._lock:
+            return dict(zip(self.config.axes, self._planner.position(), strict=True))
+
+    def motor_counts(self) -> tuple[int, ...]:
+        """Each motor's step counter: CoreXY (a, b, z), otherwise one per axis."""
+        with self._lock:
+            return self.config.motor_counts(self._planner.position())
+
+    @property
+    def pen_down(self) -> bool:
+        with self._lock:
+            return self._pen_down
+
+    @property
+    def state(self) -> str:
+        """``Idle``, ``Run``, ``Hold``, ``Home`` or ``Alarm`` (without Hold's substate)."""
+        with self._lock:
+            if self._alarm is not None:
+                return "Alarm"
+            if self._planner.hold_state is not HoldState.RUNNING:
+                return "Hold"
+            current = self._planner.current
+            if isinstance(current, Move) and current.kind == "home":
+                return "Home"
+            return "Run" if len(self._planner) or self._pending else "Idle"
+
+    @property
+    def alarm(self) -> int | None:
+        """The alarm code while in alarm."""
+        with self._lock:
+            return self._alarm
+
+    @property
+    def busy(self) -> bool:
+        """A line waits to be parsed or a block to be executed."""
+        with self._lock:
+            return b"\n" in self._rx or bool(len(self._planner) or self._pending)
+
+    @property
+    def overflows(self) -> int:
+        """Bytes dropped because the receive buffer was full (a correct host causes none)."""
+        with self._lock:
+            return self._overflows
+
+    @property
+    def unacknowledged(self) -> int:
+        """Bytes received whose line has not been answered yet."""
+        with self._lock:
+            return self._unacked
+
+    @property
+    def max_unacknowledged(self) -> int:
+        with self._lock:
+            return self._max_unacked
+
+    @property
+    def planner_free(self) -> int:
+        with self._lock:
+            return self._planner.free
+
+    @property
+    def step_rate(self) -> float:
+        """Top step rate of the motors, steps/s (``M98`` sets it on the plotter)."""
+        with self._lock:
+            return self._interpreter.step_rate
+
+    @property
+    def servo_level(self) -> float | None:
+        """The last ``M99`` level, if any."""
+        with self._lock:
+            return self._interpreter.servo_level
+
+    @property
+    def event_log(self) -> tuple[GcodeEvent, ...]:
+        """Lines, replies, moves, pen changes, dwells, holds and resets, in order (``--log``)."""
+        with self._lock:
+            return tuple(self._events)
+
+    def status_report(self) -> str:
+        """What ``?`` answers now: ``<Run|MPos:1.000,2.000,0.000|FS:600,0|Bf:14,127>``."""
+        with self._lock:
+            state = self.state
+            hold = self._planner.hold_state
+            if hold is not HoldState.RUNNING and self._alarm is None:
+                state += ":0" if hold is HoldState.HELD else ":1"
+            where = ",".join(f"{round(p, 3) + 0.0:.3f}" for p in self._planner.position())
+            feed = self._planner.feed()
+            free_rx = self.config.rx_buffer - len(self._rx)
+            return (
+                f"<{state}|MPos:{where}|FS:{feed:.0f},{self._spindle:.0f}"
+                f"|Bf:{self._planner.free},{free_rx}>"
+            )
+
+    # -- the control cycle -----------------------------------------------------------------
+
+    def _run_cycle(self) -> None:
+        self._take_lines()
+        self._planner.run(self.config.control_cycle, self._block_done)
+        if self._status_wanted:
+            self._status_wanted = False
+            self._send_line(self.status_report())
+        self._cycles += 1
+        if not self._booted:
+            self._booted = True
+            self._log("boot", lost=self._lost_booting)
+        self._flush()
+
+    def _take_lines(self) -> None:
+        self._queue_pending(self.time)
+        while not self._pending and self._planner.free > 0:
+            line = self._next_line()
+            if line is None:
+                return
+            self._execute(*line)
+
+    def _next_line(self) -> tuple[int, bytes | None] | None:
+        """The next complete line and its length; None as the line of a too-long one."""
+        end = self._rx.find(_LINE_END)
+        if end < 0:
+            if len(self._rx) >= self.config.max_line:
+                # No line end within a line's length: it overflows, and it must not
+                # hold the buffer hostage while the rest of it comes.
+                self._overlong += len(self._rx)
+                self._rx.clear()
+            return None
+        raw = bytes(self._rx[: end + 1])
+        del self._rx[: end + 1]
+        if self._overlong:
+            length = self._overlong + len(raw)
+            self._overlong = 0
+            return length, None
+        return len(raw), raw
+
+    def _execute(self, length: int, raw: bytes | None) -> None:
+        text = "" if raw is None else raw.decode("ascii", errors="replace").strip()
+        result: list[Block] | int
+        if raw is None or length > self.config.max_line:
+            result = LINE_OVERFLOW
+        elif text.startswith("$"):
+            result = self._system(text.replace(" ", "").upper())
+        else:
+            result = self._gcode(text)
+        if isinstance(result, int):
+            self._answer(f"{self.config.reply_error}:{result}", length, text)
+            return
+        self._pending.extend(result)
+        self._pending_line = (length, text)
+        self._queue_pending(self.time)
+
+    def _gcode(self, text: str) -> list[Block] | int:
+        body = strip_comments(text).strip()
+        if not body:
+            return []  # GRBL answers an empty or comment line ok, for syncing
+        if self._alarm is not None:
+            return GCODE_LOCKED
+        words = split_words(body)
+        if isinstance(words, WordError):
+            return words.code
+        return self._interpreter.execute(words)
+
+    def _system(self, command: str) -> list[Block] | int:
+        """A ``$`` line; feedback lines go out before its ``ok``."""
+        idle = self.state in ("Idle", "Alarm")
+        if command == "$":
+            self._send_line(_HELP)
+        elif command == "$$":
+            if self.state in ("Run", "Hold", "Home"):
+                return NOT_IDLE
+            for line in self._settings():
+                self._send_line(line)
+        elif command == "$G":
+            self._send_line(self._interpreter.modes())
+        elif command == "$I":
+            if not idle:
+                return NOT_IDLE
+            self._send_line("[VER:1.1h.20190825:StepDeck emulator]")
+            self._send_line(f"[OPT:V,{self._planner.capacity},{self.config.rx_buffer}]")
+        elif command == "$X":
+            if self._alarm is not None:
+                self._alarm = None
+                self._send_line("[MSG:Caution: Unlocked]")
+                self._log("unlock")
+        elif command == "$H":
+            if not idle:
+                return NOT_IDLE
+            self._alarm = None
+            start = self._interpreter.position
+            home = (0.0,) * len(start)
+            self._interpreter.position = home
+            return [] if start == home else [self._interpreter.move(start, home, "home", None)]
+        else:
+            return INVALID_STATEMENT
+        return []
+
+    def _settings(self) -> list[str]:
+        """``$$``: a few GRBL settings, per axis in the machine's axis order."""
+        cfg = self.config
+        lines = [f"$12={cfg.arc_tolerance:.3f}", "$13=0", "$20=1", "$22=1"]
+        for group, values in (
+            (100, cfg.steps_per_unit),
+            (110, [cfg.max_rate / s * 60.0 for s in cfg.steps_per_unit]),
+            (120, [cfg.acceleration / s for s in cfg.steps_per_unit]),
+            (130, [0.0 if t is None else t[1] - t[0] for t in cfg.travel]),
+        ):
+            lines += [f"${group + i}={v:.3f}" for i, v in enumerate(values)]
+        return lines
+
+    def _queue_pending(self, t: float) -> None:
+        """Move waiting blocks into free planner slots; answer their line once all are in."""
+        while self._pending and self._planner.free > 0:
+            self._planner.push(self._pending.popleft())
+        if not self._pending and self._pending_line is not None:
+            length, text = self._pending_line
+            self._pending_line = None
+            self._answer(self.config.reply_ok, length, text, t)
+
+    def _block_done(self, block: Block, into: float) -> None:
+        t = self.time + into
+        match block:
+            case Move():
+                self._log(
+                    "move", t, kind=block.kind, pos=self._where(block.end), pen=self._pen_down
+                )
+            case PenChange():
+                self._set_pen(block.down, block.spindle, t)
+            case Dwell():
+                self._log("dwell", t, seconds=block.seconds)
+            case Pause():
+                self._log("pause", t)
+            case SetPosition():
+                self._log("setpos", t, pos=self._where(block.position))
+        self._queue_pending(t)
+
+    def _stop(self) -> None:
+        """Stop every motion at once and forget the queued blocks; lift the pen."""
+        self._planner.stop()
+        self._pending.clear()
+        self._pending_line = None
+        self._set_pen(False, 0.0, self.time)
+
+    def _set_pen(self, down: bool, spindle: float, t: float) -> None:
+        self._spindle = spindle
+        if down != self._pen_down:
+            self._pen_down = down
+            self._log("pen", t, down=down, pos=self._where())
+
+    # -- replies and the log ------------------------------------------------------------------
+
+    def _answer(self, reply: str, length: int, line: str, t: float | None = None) -> None:
+        self._send_line(reply)
+        self._unacked = max(self._unacked - length, 0)
+        self._log("reply", t, text=reply, line=line)
+
+    def _send_line(self, text: str) -> None:
+        self._outbox.append(text.encode("ascii") + b"\r\n")
+
+    def _send_banner(self) -> None:
+        self._outbox.append(b"\r\n" + self.config.banner.encode("ascii") + b"\r\n")
+
+    def _flush(self) -> None:
+        if not self._outbox:
+            return
+        data = b"".join(self._outbox)
+        self._outbox.clear()
+        self._send_to_host(data)
+
+    def _where(self, position: tuple[float, ...] | None = None) -> dict[str, float]:
+        where = self._planner.position() if position is None else position
+        return {axis: round(p, 6) + 0.0 for axis, p in zip(self.config.axes, where, strict=True)}
+
+    def _log_arrival(self) -> None:
+        start = self._rx.rfind(_LINE_END, 0, len(self._rx) - 1) + 1
+        text = self._rx[start:-1].decode("ascii", errors="replace").strip()
+        self._log("line", text=text, unacknowledged=self._unacked)
+
+    def _log(self, event: str, t: float | None = None, **fields: Any) -> None:
+        when = self.time if t is None else t
+        self._events.append({"t": round(when, 6), "event": event, **fields})

@@ -1,0 +1,176 @@
+"""The G-code machines the emulator knows: kinematics, travel, motors, replies, pen.
+
+One firmware serves the CoreXY pen plotter, GRBL servo plotters and the
+string-art winder (PROTOCOLS.md section 4); what differs between them is
+data, kept here so the interpreter, the planner and the firmware read one
+description.
+
+Decisions the contract leaves open, made here:
+
+- Travel runs from 0 to the profile's length on X and Y (300 by 200 mm, as
+  the station's profiles say); the plotters' Z, which only a job that does
+  not map Z to the pen would use, may go 20 mm either way; the winder's A
+  turns freely.
+- Every motor shares one top step rate and one acceleration; a move is
+  timed on the motor that makes the most steps, so the others never exceed
+  either.  The CoreXY plotter's power-on step interval is 25 µs (40 000
+  steps/s, about 98 mm/s per motor); ``M98`` changes it.
+- The CoreXY plotter and the winder move at their top rate when a job never
+  set ``F``; a GRBL plotter refuses ``G1`` without a feed rate (``error:22``)
+  as GRBL does.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from protocol.gcode.codec import GRBL_BANNER, MAX_LINE_BYTES, PLOTTER_BANNER, RX_BUFFER
+
+Kinematics = Literal["corexy", "cartesian", "cylindrical"]
+
+#: Axis letters a machine may have.
+AXIS_LETTERS = "XYZA"
+#: The CoreXY plotter's resolution: 64 microsteps of a 200-step motor on a 10 mm pulley.
+COREXY_MM_PER_STEP = 0.00245
+#: The winder's base: 200 steps x 6 (gearing) x 8 microsteps per turn.
+STRING_ART_STEPS_PER_TURN = 200 * 6 * 8
+
+
+class PenMapping(enum.Enum):
+    """Which M codes move the pen."""
+
+    #: The CoreXY plotter: ``M3`` lifts, ``M4`` lowers (``M5`` lifts too).
+    M3_UP_M4_DOWN = "m3-up-m4-down"
+    #: GRBL servo plotters: the spindle is the servo, down while on with ``S`` > 0.
+    SPINDLE = "spindle"
+
+
+@dataclass(frozen=True)
+class GcodeConfig:
+    """One machine; lengths in its units (mm, degrees for A), times in seconds.
+
+    ``travel`` is per axis ``(low, high)``, or None for an axis that turns
+    freely.  ``max_rate`` (steps/s) and ``acceleration`` (steps/s²) bound
+    every motor.
+    """
+
+    kinematics: Kinematics
+    axes: tuple[str, ...]
+    steps_per_unit: tuple[float, ...]
+    travel: tuple[tuple[float, float] | None, ...]
+    max_rate: float
+    acceleration: float
+    reply_ok: str = "ok"
+    reply_error: str = "error"
+    banner: str = GRBL_BANNER
+    rx_buffer: int = RX_BUFFER
+    planner_blocks: int = 16
+    max_line: int = MAX_LINE_BYTES
+    pen: PenMapping = PenMapping.SPINDLE
+    #: Seconds the pen takes to go up or down; motion waits for it.
+    pen_time: float = 0.0
+    #: G2/G3 accepted and flattened into straight blocks.
+    arcs: bool = False
+    #: The plotter's ``M98 <µs>`` step interval and ``M99 <pwm>`` servo level.
+    plotter_codes: bool = False
+    #: Units/min a G1 runs at before any F; None refuses it (``error:22``).
+    default_feed: float | None = None
+    #: Largest distance of an arc's chord from the arc (GRBL's $12).
+    arc_tolerance: float = 0.002
+    control_cycle: float = 0.005
+
+    def __post_init__(self) -> None:
+        count = len(self.axes)
+        if (
+            count == 0
+            or len(set(self.axes)) != count
+            or any(a not in AXIS_LETTERS for a in self.axes)
+        ):
+            raise ValueError(f"axes are distinct letters from {AXIS_LETTERS}, got {self.axes!r}")
+        if len(self.steps_per_unit) != count or len(self.travel) != count:
+            raise ValueError("steps_per_unit and travel need one entry per axis")
+        if any(not (math.isfinite(s) and s > 0) for s in self.steps_per_unit):
+            raise ValueError(f"steps per unit must be positive, got {self.steps_per_unit!r}")
+        for limits in self.travel:
+            if limits is not None and not limits[0] < limits[1]:
+                raise ValueError(f"travel runs from low to high, got {limits!r}")
+        if self.kinematics == "corexy" and self.axes[:2] != ("X", "Y"):
+            raise ValueError("a CoreXY machine's first two axes are X and Y")
+        if self.arcs and not {"X", "Y"} <= set(self.axes):
+            raise ValueError("arcs are traced in the XY plane: the machine needs X and Y")
+        if not (self.max_rate > 0 and self.acceleration > 0):
+            raise ValueError("the step rate and the acceleration must be positive")
+        if self.planner_blocks < 2 or self.rx_buffer < 2 or self.max_line < 2:
+            raise ValueError("the planner and the buffers need room for something")
+        if self.pen_time < 0 or not self.control_cycle > 0 or not self.arc_tolerance > 0:
+            raise ValueError("times and the arc tolerance must be positive")
+
+    def index(self, axis: str) -> int:
+        return self.axes.index(axis)
+
+    def motor_counts(self, position: tuple[float, ...]) -> tuple[int, ...]:
+        """Each motor's step counter at ``position``: CoreXY mixes X and Y, the others do not."""
+        counts = [round(p * s) for p, s in zip(position, self.steps_per_unit, strict=True)]
+        if self.kinematics == "corexy":
+            x, y = position[0], position[1]
+            counts[0] = round((x - y) * self.steps_per_unit[0])
+            counts[1] = round((x + y) * self.steps_per_unit[1])
+        return tuple(counts)
+
+    def within_travel(self, position: tuple[float, ...]) -> bool:
+        # A hair of tolerance, so that a target computed in inches or along an
+        # arc that should land on the edge is not refused for rounding.
+        return all(
+            limits is None or limits[0] - 1e-9 <= p <= limits[1] + 1e-9
+            for p, limits in zip(position, self.travel, strict=True)
+        )
+
+
+def corexy_plotter_config() -> GcodeConfig:
+    """The RP2040 CoreXY pen plotter: ``OK`` replies, M3 lifts and M4 lowers, M98/M99."""
+    per_mm = 1.0 / COREXY_MM_PER_STEP
+    return GcodeConfig(
+        kinematics="corexy",
+        axes=("X", "Y", "Z"),
+        steps_per_unit=(per_mm, per_mm, 100.0),
+        travel=((0.0, 300.0), (0.0, 200.0), (-20.0, 20.0)),
+        max_rate=40_000.0,
+        acceleration=400_000.0,
+        reply_ok="OK",
+        reply_error="ERROR",
+        banner=PLOTTER_BANNER,
+        pen=PenMapping.M3_UP_M4_DOWN,
+        plotter_codes=True,
+        default_feed=6000.0,
+    )
+
+
+def grbl_plotter_config() -> GcodeConfig:
+    """A GRBL 1.1 servo pen plotter: 80 steps/mm, ``M3 S<n>`` lowers, ``M5`` lifts, arcs."""
+    return GcodeConfig(
+        kinematics="cartesian",
+        axes=("X", "Y", "Z"),
+        steps_per_unit=(80.0, 80.0, 80.0),
+        travel=((0.0, 300.0), (0.0, 200.0), (-20.0, 20.0)),
+        max_rate=8000.0,
+        acceleration=80_000.0,
+        pen=PenMapping.SPINDLE,
+        arcs=True,
+    )
+
+
+def string_art_config() -> GcodeConfig:
+    """The string-art winder: A turns the base (degrees), X the radius, Z along the needle."""
+    return GcodeConfig(
+        kinematics="cylindrical",
+        axes=("A", "X", "Z"),
+        steps_per_unit=(STRING_ART_STEPS_PER_TURN / 360.0, 32.0, 133.3),
+        travel=(None, (0.0, 250.0), (0.0, 30.0)),
+        max_rate=2000.0,
+        acceleration=500.0,
+        pen=PenMapping.SPINDLE,
+        default_feed=60_000.0,
+    )

@@ -1,0 +1,48 @@
+"""The plotters' and the winder's dialect: GRBL-style G-code lines (PROTOCOLS.md section 4)."""
+
+from protocol.gcode.codec import (
+    ALARM_MESSAGES,
+    CYCLE_START,
+    ERROR_MESSAGES,
+    FEED_HOLD,
+    MAX_LINE_BYTES,
+    RX_BUFFER,
+    SOFT_RESET,
+    STATUS_QUERY,
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Feedback,
+    GcodeReply,
+    Ok,
+    Rejected,
+    StatusReport,
+    decode,
+    encode_line,
+    make_decoder,
+)
+from protocol.gcode.streaming import LineStreamer, StreamMode
+
+__all__ = [
+    "ALARM_MESSAGES",
+    "CYCLE_START",
+    "ERROR_MESSAGES",
+    "FEED_HOLD",
+    "MAX_LINE_BYTES",
+    "RX_BUFFER",
+    "SOFT_RESET",
+    "STATUS_QUERY",
+    "AlarmReply",
+    "Banner",
+    "ErrorReply",
+    "Feedback",
+    "GcodeReply",
+    "LineStreamer",
+    "Ok",
+    "Rejected",
+    "StatusReport",
+    "StreamMode",
+    "decode",
+    "encode_line",
+    "make_decoder",
+]

@@ -1,0 +1,122 @@
+"""Which G-code lines may go out now: ping-pong or character counting (PROTOCOLS.md section 4).
+
+A board acknowledges every line, in order, with ``ok`` or ``error:<n>``, and
+drops bytes that do not fit its receive buffer.  Ping-pong waits for each
+acknowledgement before the next line; character counting keeps the buffer
+full, which keeps the board's planner fed on short segments, by sending
+while the bytes of the unacknowledged lines stay below the buffer's size.
+
+Pure bookkeeping, no I/O and no clock: the session writes what
+:meth:`LineStreamer.sendable` hands out and calls
+:meth:`LineStreamer.acknowledge` for every ``ok`` and ``error`` it reads, so
+the same logic serves the real link, the emulator and the tests.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections import deque
+from typing import Generic, TypeVar
+
+from protocol.gcode.codec import RX_BUFFER, TERMINATOR
+
+T = TypeVar("T")
+
+
+class StreamMode(enum.Enum):
+    COUNTING = "counting"
+    PING_PONG = "ping-pong"
+
+
+class LineStreamer(Generic[T]):
+    """Queued and in-flight lines, each with the caller's ``tag`` (e.g. a job's operation).
+
+    In COUNTING mode at most ``rx_buffer - 1`` bytes are ever unacknowledged:
+    GRBL's ring buffer keeps one slot empty, so a full 128 would overflow it.
+    """
+
+    def __init__(self, mode: StreamMode, rx_buffer: int = RX_BUFFER) -> None:
+        if rx_buffer < 2:
+            raise ValueError(f"a receive buffer holds at least one line byte, got {rx_buffer}")
+        self.mode = mode
+        self.rx_buffer = rx_buffer
+        self._queued: deque[tuple[bytes, T]] = deque()
+        self._in_flight: deque[tuple[bytes, T]] = deque()
+        self._in_flight_bytes = 0
+
+    @property
+    def capacity(self) -> int:
+        """Bytes that may be unacknowledged at once, and the longest line that can go."""
+        return self.rx_buffer - 1
+
+    def queue(self, line: bytes, tag: T) -> None:
+        """Add an encoded line (ending in ``\\n``) behind the others.
+
+        A line that could never fit the board's buffer is refused here rather
+        than left to block the queue forever.
+        """
+        if not line.endswith(TERMINATOR):
+            raise ValueError(f"an encoded line ends with \\n: {line!r}")
+        if len(line) > self.capacity:
+            raise ValueError(
+                f"a line of {len(line)} bytes never fits a {self.rx_buffer}-byte receive buffer"
+            )
+        self._queued.append((line, tag))
+
+    def sendable(self) -> list[tuple[bytes, T]]:
+        """Take every queued line that may go out now; they count as in flight from here."""
+        out: list[tuple[bytes, T]] = []
+        while self._queued:
+            line, _ = self._queued[0]
+            if self.mode is StreamMode.PING_PONG:
+                if self._in_flight:
+                    break
+            elif self._in_flight_bytes + len(line) > self.capacity:
+                break
+            entry = self._queued.popleft()
+            self._in_flight.append(entry)
+            self._in_flight_bytes += len(line)
+            out.append(entry)
+        return out
+
+    def acknowledge(self) -> tuple[bytes, T] | None:
+        """The oldest line in flight, now acknowledged; None for an ``ok`` nobody waited for."""
+        if not self._in_flight:
+            return None
+        entry = self._in_flight.popleft()
+        self._in_flight_bytes -= len(entry[0])
+        return entry
+
+    @property
+    def in_flight_bytes(self) -> int:
+        return self._in_flight_bytes
+
+    @property
+    def in_flight(self) -> int:
+        return len(self._in_flight)
+
+    @property
+    def queued(self) -> int:
+        return len(self._queued)
+
+    @property
+    def idle(self) -> bool:
+        """Nothing waits to go and nothing waits for its acknowledgement."""
+        return not self._queued and not self._in_flight
+
+    def clear(self) -> list[T]:
+        """Forget everything, e.g. after a soft reset emptied the board's buffers.
+
+        The tags come back oldest first: those in flight, then those queued.
+        """
+        tags = [tag for _, tag in self._in_flight] + [tag for _, tag in self._queued]
+        self._in_flight.clear()
+        self._queued.clear()
+        self._in_flight_bytes = 0
+        return tags
+
+    def discard_queued(self) -> list[T]:
+        """Drop the lines not yet sent (oldest first); those in flight still await their replies."""
+        tags = [tag for _, tag in self._queued]
+        self._queued.clear()
+        return tags

@@ -1,0 +1,665 @@
+"""The emulated G-code boards against PROTOCOLS.md section 4, driven through encoded lines.
+
+Every duration is worked out by hand.  The GRBL plotter has 80 steps/mm,
+motors of at most 8000 steps/s and 80 000 steps/s²; a move starts and ends at
+rest, timed on the motor that makes the most steps: ``G1 X100 F3000`` is
+8000 steps at 4000 steps/s, 0.05 s (100 steps) up to speed, 1.95 s at speed,
+0.05 s down, 2.05 s in all.  Control cycles are 5 ms; a line sent between
+cycles is parsed, answered and started at the start of the next cycle, and
+its reply goes out at that cycle's end.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from protocol.clock import ManualClock
+from protocol.emulator.gcode_firmware import (
+    GcodeConfig,
+    GcodeEvent,
+    GcodeFirmware,
+    corexy_plotter_config,
+    event_log_line,
+    grbl_plotter_config,
+    string_art_config,
+)
+from protocol.gcode import (
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Feedback,
+    GcodeReply,
+    LineStreamer,
+    Ok,
+    Rejected,
+    StatusReport,
+    StreamMode,
+    encode_line,
+    make_decoder,
+)
+from protocol.gcode.codec import GRBL_BANNER, PLOTTER_BANNER
+
+START = 100.0
+CYCLE = 0.005
+MM_PER_STEP = 0.00245
+X100_SECONDS = 2.05  # G1 X100 F3000 on the GRBL plotter, see above
+
+Timed = tuple[float, GcodeReply]
+
+
+class Bench:
+    """The host's side of the wire on a manual clock, one control cycle at a time."""
+
+    def __init__(self, config: GcodeConfig | None = None) -> None:
+        # A start far from 0 catches code that confuses absolute and elapsed time.
+        self.clock = ManualClock(start=START)
+        self.fw = GcodeFirmware(self.clock, config)
+        self._out = bytearray()
+        self.fw.set_output(self._out.extend)
+        self._decoder = make_decoder()
+        banner = self.run(CYCLE)
+        assert banner == [(CYCLE, Banner(self.fw.config.banner))]
+
+    @property
+    def elapsed(self) -> float:
+        return round(self.clock.now() - START, 9)
+
+    def send(self, *lines: str) -> None:
+        self.fw.receive(b"".join(encode_line(line) for line in lines))
+
+    def run(self, seconds: float) -> list[Timed]:
+        """Run whole cycles for ``seconds``; the replies that came, stamped with elapsed time."""
+        got: list[Timed] = []
+        for _ in range(round(seconds / CYCLE)):
+            self.clock.advance(CYCLE)
+            self.fw.run_until(self.clock.now())
+            if self._out:
+                for reply in self._decoder.feed(bytes(self._out)):
+                    assert not isinstance(reply, Rejected), reply
+                    got.append((round(self.elapsed, 6), reply))
+                self._out.clear()
+        return got
+
+    def replies(self, seconds: float = CYCLE) -> list[GcodeReply]:
+        return [reply for _, reply in self.run(seconds)]
+
+    def run_until_idle(self, limit: float = 120.0) -> list[GcodeReply]:
+        got: list[GcodeReply] = []
+        start = self.elapsed
+        while self.fw.busy or self.fw.state in ("Run", "Hold", "Home"):
+            assert self.elapsed - start < limit, f"still {self.fw.state} after {limit} s"
+            got += self.replies()
+        return got
+
+    def do(self, *lines: str) -> list[GcodeReply]:
+        """Send lines, run until the machine is idle again; every reply."""
+        self.send(*lines)
+        return self.run_until_idle()
+
+    def status(self) -> StatusReport:
+        self.fw.receive(b"?")
+        reports = [r for r in self.replies() if isinstance(r, StatusReport)]
+        assert len(reports) == 1
+        return reports[0]
+
+    def events(self, kind: str) -> list[GcodeEvent]:
+        return [e for e in self.fw.event_log if e["event"] == kind]
+
+
+def corexy_counts(x: float, y: float) -> tuple[int, int]:
+    return round((x - y) / MM_PER_STEP), round((x + y) / MM_PER_STEP)
+
+
+# -- kinematics ------------------------------------------------------------------------------
+
+
+def test_corexy_square_moves_the_motors_a_x_minus_y_and_b_x_plus_y() -> None:
+    bench = Bench(corexy_plotter_config())
+    assert bench.fw.motor_counts() == (0, 0, 0)
+    for x, y in ((100, 0), (100, 100), (0, 100), (0, 0)):
+        assert bench.do(f"G1 X{x} Y{y}") == [Ok()]
+        assert bench.fw.position() == {"X": x, "Y": y, "Z": 0.0}
+        assert bench.fw.motor_counts() == (*corexy_counts(x, y), 0)
+    # By hand: 100 / 0.00245 = 40816.3 and 200 / 0.00245 = 81632.7.
+    assert corexy_counts(100, 0) == (40816, 40816)
+    assert corexy_counts(100, 100) == (0, 81633)
+    assert corexy_counts(0, 100) == (-40816, 40816)
+
+
+def test_corexy_motor_counts_follow_the_tool_mid_move() -> None:
+    bench = Bench(corexy_plotter_config())
+    bench.send("G1 X10 Y10")
+    bench.run(0.05)
+    where = bench.fw.position()
+    assert 0 < where["X"] == where["Y"] < 10
+    a, b, _ = bench.fw.motor_counts()
+    assert a == 0 and b == round(2 * where["X"] / MM_PER_STEP)
+
+
+def test_the_corexy_plotter_answers_OK_and_ERROR() -> None:
+    clock = ManualClock()
+    board = GcodeFirmware(clock, corexy_plotter_config())
+    out = bytearray()
+    board.set_output(out.extend)
+    clock.advance(CYCLE)
+    board.run_until(clock.now())
+    board.receive(b"G0 X1\nG7\n")
+    clock.advance(CYCLE)
+    board.run_until(clock.now())
+    assert bytes(out) == b"\r\n" + PLOTTER_BANNER.encode() + b"\r\nOK\r\nERROR:20\r\n"
+
+
+def test_bytes_sent_before_the_board_has_booted_are_lost() -> None:
+    clock = ManualClock()
+    board = GcodeFirmware(clock)
+    out = bytearray()
+    board.set_output(out.extend)
+    board.receive(b"G0 X1\n?")  # before the first control cycle: still booting
+    clock.advance(CYCLE)
+    board.run_until(clock.now())
+    assert make_decoder().feed(bytes(out)) == [Banner(GRBL_BANNER)]
+    assert board.event_log[0] == {"t": CYCLE, "event": "boot", "lost": 7}
+    assert board.unacknowledged == 0 and not board.busy
+
+
+def test_string_art_axes_turn_9600_microsteps_per_turn() -> None:
+    bench = Bench(string_art_config())
+    assert bench.fw.config.axes == ("A", "X", "Z")
+    assert bench.do("G0 A360 X10 Z3") == [Ok()]
+    # 360° = 9600; 10 mm at 32/mm = 320; 3 mm at 133.3/mm = 399.9, rounded 400.
+    assert bench.fw.motor_counts() == (9600, 320, 400)
+    assert bench.do("G0 A-7200") == [Ok()]  # A turns freely: no travel to exceed
+    assert bench.fw.motor_counts()[0] == -192_000
+    assert bench.do("G0 X251") == [ErrorReply(15)]
+    assert bench.do("G0 Y1") == [ErrorReply(20)]  # no Y on the winder
+
+
+def test_string_art_rapid_is_limited_to_2000_steps_and_500_per_second_squared() -> None:
+    bench = Bench(string_art_config())
+    bench.send("G0 A360")
+    t0 = bench.elapsed
+    bench.run_until_idle()
+    # 9600 steps: 4 s up to 2000 steps/s (4000 steps), 1600 steps at speed (0.8 s), 4 s down.
+    (move,) = bench.events("move")
+    assert move["t"] == pytest.approx(START + t0 + 8.8)
+
+
+# -- timing ----------------------------------------------------------------------------------
+
+
+def test_a_single_move_takes_its_trapezoid_and_reports_its_progress() -> None:
+    bench = Bench()
+    bench.send("G1 X100 F3000")
+    t0 = bench.elapsed
+    report = bench.status()  # after 5 ms: 0.5 * 80000 * 0.005² = 1 step
+    assert report.state == "Run" and report.mpos == (0.013, 0.0, 0.0)
+    assert report.planner_free == 14 and report.rx_free == 128
+    bench.run(0.995 - CYCLE)
+    report = bench.status()  # at t0 + 1.0: 100 steps ramping, then 0.95 s at 4000/s
+    assert report.state == "Run"
+    assert report.mpos == (48.75, 0.0, 0.0)
+    assert report.feed == 3000.0
+    bench.run_until_idle()
+    (move,) = bench.events("move")
+    assert move["t"] == pytest.approx(START + t0 + X100_SECONDS)
+    assert move["pos"] == {"X": 100.0, "Y": 0.0, "Z": 0.0} and move["kind"] == "G1"
+    assert bench.status().state == "Idle"
+
+
+def test_a_short_rapid_is_a_triangle() -> None:
+    bench = Bench()
+    # G0 X5: 400 steps; reaching 8000 steps/s would take 400 steps each way, so it
+    # peaks at sqrt(400 * 80000) after sqrt(400 / 80000) s: 0.141421 s in all.
+    bench.send("G0 X5")
+    t0 = bench.elapsed
+    bench.run_until_idle()
+    (move,) = bench.events("move")
+    assert move["t"] == pytest.approx(START + t0 + 2 * math.sqrt(400 / 80000))
+
+
+def test_the_plotters_step_interval_sets_its_speed() -> None:
+    bench = Bench(corexy_plotter_config())
+    bench.send("M98 100", "M99 1500", "G1 X10")
+    t0 = bench.elapsed
+    bench.run_until_idle()
+    assert bench.fw.step_rate == 10_000.0 and bench.fw.servo_level == 1500.0
+    # 10 mm: 4082 steps on both motors at 10 000 steps/s (100 µs), 400 000 steps/s²:
+    # 125 steps in 0.025 s each way and 3832 steps at speed.
+    (move,) = bench.events("move")
+    assert move["t"] == pytest.approx(START + t0 + 0.05 + 3832 / 10_000)
+
+
+def test_a_dwell_holds_the_next_move_in_order() -> None:
+    bench = Bench()
+    bench.send("G4 P500", "G0 X10", "G4 S0.25", "G0 X0")
+    t0 = bench.elapsed
+    bench.run_until_idle()
+    # G0 X10 is 800 steps: 400 up to 8000 steps/s and 400 down, 0.2 s.
+    moves = bench.events("move")
+    dwells = bench.events("dwell")
+    assert [d["seconds"] for d in dwells] == [0.5, 0.25]
+    assert dwells[0]["t"] == pytest.approx(START + t0 + 0.5)
+    assert moves[0]["t"] == pytest.approx(START + t0 + 0.7)
+    assert dwells[1]["t"] == pytest.approx(START + t0 + 0.95)
+    assert moves[1]["t"] == pytest.approx(START + t0 + 1.15)
+
+
+# -- the receive buffer and character counting --------------------------------------------------
+
+
+def test_bytes_beyond_the_receive_buffer_are_dropped_and_counted() -> None:
+    bench = Bench()
+    bench.fw.receive(b"G0 X1.000\n" * 20)  # 200 bytes at once; the buffer holds 127
+    assert bench.fw.overflows == 73
+    assert bench.fw.unacknowledged == bench.fw.max_unacknowledged == 127
+
+
+def test_a_counting_host_never_overflows_the_board() -> None:
+    bench = Bench()
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING)
+    lines = ["G1 F6000"] + [f"G1 X{i % 50 + 1}.5 Y{i % 30}.25" for i in range(200)]
+    for i, text in enumerate(lines):
+        streamer.queue(encode_line(text), i)
+    acknowledged: list[int] = []
+    for _ in range(200_000):
+        for data, _ in streamer.sendable():
+            bench.fw.receive(data)
+        for reply in bench.replies():
+            if isinstance(reply, Ok | ErrorReply):
+                entry = streamer.acknowledge()
+                assert isinstance(reply, Ok) and entry is not None
+                acknowledged.append(entry[1])
+        if streamer.idle and not bench.fw.busy:
+            break
+    assert acknowledged == list(range(len(lines)))
+    assert bench.fw.overflows == 0
+    assert 100 < bench.fw.max_unacknowledged <= 127
+    assert all(e["unacknowledged"] <= 127 for e in bench.events("line"))
+    assert len(bench.events("move")) == 200
+    assert bench.fw.position() == {"X": 50.5, "Y": 19.25, "Z": 0.0}
+
+
+def test_a_full_planner_withholds_the_replies() -> None:
+    bench = Bench()
+    # 20 one-word moves of 80 steps: X1 takes 2 * sqrt(80 / 80000) = 0.0632 s.
+    bench.send("G1 F3000", *(f"X{i}" for i in range(1, 21)))
+    first = bench.replies()
+    assert first == [Ok()] * 16  # G1 F3000 and 15 blocks: the planner is full
+    assert bench.fw.planner_free == 0
+    report = bench.status()
+    assert (report.planner_free, report.rx_free) == (0, 128 - 5 * 4)  # X16…X20 still wait
+    assert bench.replies(0.05) == []  # X1 still running
+    assert bench.replies(0.015) == [Ok()]  # X1 ended at 0.0632: one slot, one more line
+    assert bench.run_until_idle().count(Ok()) == 4
+    assert bench.fw.position()["X"] == 20.0
+
+
+def test_the_log_records_each_line_with_the_bytes_then_unacknowledged() -> None:
+    bench = Bench()
+    bench.fw.receive(b"G0 X1\nG0 X2\nG0 X3\n")
+    lines = bench.events("line")
+    assert [(e["text"], e["unacknowledged"]) for e in lines] == [
+        ("G0 X1", 6),
+        ("G0 X2", 12),
+        ("G0 X3", 18),
+    ]
+    bench.run(CYCLE)
+    assert [(e["text"], e["line"]) for e in bench.events("reply")] == [
+        ("ok", "G0 X1"),
+        ("ok", "G0 X2"),
+        ("ok", "G0 X3"),
+    ]
+    assert bench.fw.unacknowledged == 0
+
+
+def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
+    bench = Bench()
+    bench.fw.receive(b"G1 X1" + b" " * 100 + b"\n")  # 106 bytes: never fits a line
+    assert bench.replies() == [ErrorReply(11)]
+    assert bench.fw.unacknowledged == 0
+    bench.fw.receive(b"(" + b"x" * 110)  # a run without a line end is taken out as it comes
+    bench.run(CYCLE)
+    bench.fw.receive(b"x" * 50 + b")\nG0 X1\n")
+    assert bench.replies() == [ErrorReply(11), Ok()]
+    assert bench.fw.overflows == 0
+
+
+# -- errors ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("line", "code"),
+    [
+        ("G1 X10 Q1", 20),  # no such word
+        ("G5 X1", 20),
+        ("M98 100", 20),  # the plotter's code, not GRBL's
+        ("A10", 20),  # no A on a plotter
+        ("T1", 20),
+        ("G1 X1.2.3 F100", 1),
+        ("10", 1),
+        ("G1 X F100", 2),
+        ("G0 G1 X1", 21),
+        ("G90 G91", 21),
+        ("G1 X1 F-1", 4),
+        ("G1 X1", 22),  # GRBL needs a feed rate first
+        ("G28 G0 X1", 24),
+        ("G0 X1 X2", 25),
+        ("G92", 26),
+        ("N-5 G0 X1", 27),
+        ("G4", 28),
+        ("G0 X1 P5", 36),
+        ("G2 X10 Y0 F100", 35),
+        ("G2 X10 Y0 R2 F100", 34),
+        ("G2 X10 Y0 I1 J1 F100", 33),
+        ("G2 X0 Y0 I1000000000 F100", 33),  # a circle of a thousand km: not flattened
+        ("G0 X301", 15),
+        ("G0 Y-0.1", 15),
+        ("$Q", 3),
+    ],
+)
+def test_refused_lines_get_grbls_error_and_move_nothing(line: str, code: int) -> None:
+    bench = Bench()
+    assert bench.do(line) == [ErrorReply(code)]
+    assert bench.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert bench.events("move") == []
+    assert bench.do("G0 X1") == [Ok()]  # and the board goes on
+
+
+def test_a_refused_line_changes_no_mode() -> None:
+    bench = Bench()
+    assert bench.do("G91 G1 X1 F100 Q2") == [ErrorReply(20)]
+    assert bench.do("G0 X5") == [Ok()]  # still absolute, still G0
+    assert bench.fw.position()["X"] == 5.0
+
+
+def test_comments_line_numbers_and_empty_lines() -> None:
+    bench = Bench()
+    assert (
+        bench.do("N10 G0 X5 (to the side) ; done", "", "(just a comment)", "; also") == [Ok()] * 4
+    )
+    assert bench.fw.position()["X"] == 5.0
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.binary(max_size=60), max_size=12), st.sampled_from(["grbl", "corexy"]))
+def test_the_firmware_never_raises_on_any_input(chunks: list[bytes], which: str) -> None:
+    config = grbl_plotter_config() if which == "grbl" else corexy_plotter_config()
+    bench = Bench(config)
+    for chunk in chunks:
+        bench.fw.receive(chunk)
+        bench.run(0.02)
+    bench.fw.receive(b"\x18")
+    assert Banner(config.banner) in bench.replies()
+    assert bench.do("G0 X1") == [Ok()]
+
+
+# -- real-time commands ------------------------------------------------------------------------
+
+
+def test_feed_hold_brakes_and_resume_finishes_the_move() -> None:
+    bench = Bench()
+    bench.send("G1 X100 F3000")
+    t0 = bench.elapsed
+    bench.run(1.0)  # cruising at 4000 steps/s, 3900 steps made
+    bench.fw.receive(b"!")
+    report = bench.status()
+    assert (report.state, report.substate) == ("Hold", "1")  # braking
+    bench.run(0.05)  # 4000 / 80000 s of braking, 100 steps: stopped at 4000 steps
+    report = bench.status()
+    assert (report.state, report.substate, report.mpos) == ("Hold", "0", (50.0, 0.0, 0.0))
+    bench.run(1.0)
+    assert bench.fw.position()["X"] == pytest.approx(50.0)
+    assert bench.events("move") == []
+    bench.fw.receive(b"~")
+    t1 = bench.elapsed
+    bench.run_until_idle()
+    # The remaining 4000 steps from rest: 0.05 + 3800 / 4000 + 0.05 = 1.05 s.
+    (move,) = bench.events("move")
+    assert move["t"] == pytest.approx(START + t1 + 1.05)
+    assert bench.fw.position()["X"] == 100.0
+    assert move["t"] > START + t0 + X100_SECONDS  # the hold cost its braking and its wait
+
+
+def test_resume_is_ignored_until_the_hold_is_complete() -> None:
+    bench = Bench()
+    bench.send("G1 X100 F3000")
+    bench.run(1.0)
+    bench.fw.receive(b"!~")
+    bench.run(0.1)
+    assert bench.fw.state == "Hold"
+    bench.fw.receive(b"~")
+    bench.run(CYCLE)
+    assert bench.fw.state == "Run"
+
+
+def test_a_hold_while_idle_keeps_new_lines_waiting() -> None:
+    bench = Bench()
+    bench.fw.receive(b"!")
+    assert bench.status().substate == "0"
+    bench.send("G0 X10")
+    assert bench.replies() == [Ok()]
+    bench.run(1.0)
+    assert bench.fw.position()["X"] == 0.0
+    bench.fw.receive(b"~")
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 10.0
+
+
+def test_m0_pauses_until_cycle_start() -> None:
+    bench = Bench()
+    bench.send("G0 X10", "M0", "G0 X20")
+    assert bench.replies() == [Ok()] * 3
+    bench.run(2.0)
+    assert bench.fw.position()["X"] == 10.0
+    report = bench.status()
+    assert (report.state, report.substate) == ("Hold", "0")
+    bench.fw.receive(b"~")
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 20.0
+    assert [e["event"] for e in bench.fw.event_log if e["event"] in ("move", "pause")] == [
+        "move",
+        "pause",
+        "move",
+    ]
+
+
+def test_soft_reset_stops_clears_and_sends_the_banner() -> None:
+    bench = Bench()
+    bench.send("G1 X100 F3000", "G1 X0", "G1 Y50")
+    bench.run(1.0)
+    bench.fw.receive(b"G1 X5")  # a partial line, lost with the reset
+    bench.fw.receive(b"\x18")
+    assert bench.fw.state == "Idle" and bench.fw.unacknowledged == 0
+    stopped = bench.fw.position()
+    assert 0 < stopped["X"] < 100
+    assert bench.replies() == [Banner(GRBL_BANNER)]
+    bench.run(1.0)
+    assert bench.fw.position() == stopped  # kept, and nothing queued runs
+    # The modes are GRBL's power-on ones again: G1 needs its feed rate anew.
+    assert bench.do("G1 X0") == [ErrorReply(22)]
+    assert bench.do("G1 X0 F3000") == [Ok()]
+
+
+def test_real_time_bytes_inside_a_line_are_picked_out() -> None:
+    bench = Bench()
+    bench.fw.receive(b"G0 X?1\n")
+    replies = bench.replies()
+    assert isinstance(replies[0], Ok) and isinstance(replies[1], StatusReport)
+    assert [e["text"] for e in bench.events("line")] == ["G0 X1"]
+
+
+# -- the pen ---------------------------------------------------------------------------------
+
+
+def test_corexy_pen_lifts_with_m3_and_lowers_with_m4() -> None:
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("G0 X10", "M4", "G1 X20", "M3", "G0 X0") == [Ok()] * 5
+    assert not bench.fw.pen_down
+    pens = bench.events("pen")
+    assert [(e["down"], e["pos"]["X"]) for e in pens] == [(True, 10.0), (False, 20.0)]
+    assert [(m["pos"]["X"], m["pen"]) for m in bench.events("move")] == [
+        (10.0, False),
+        (20.0, True),
+        (0.0, False),
+    ]
+
+
+def test_grbl_pen_lowers_with_m3_s_and_lifts_with_m5() -> None:
+    bench = Bench()
+    assert bench.do("M3 S0") == [Ok()]
+    assert not bench.fw.pen_down  # the servo at 0: still up
+    assert bench.do("S1000") == [Ok()]
+    assert bench.fw.pen_down
+    assert bench.status().spindle == 1000.0
+    assert bench.do("M5") == [Ok()]
+    assert not bench.fw.pen_down
+    assert bench.do("M3 S800 G0 X10") == [Ok()]  # the pen first, then the move
+    (move,) = bench.events("move")
+    assert move["pen"] is True
+    assert [e["down"] for e in bench.events("pen")] == [True, False, True]
+
+
+# -- modes -----------------------------------------------------------------------------------
+
+
+def test_g91_moves_relative_and_g90_absolute_again() -> None:
+    bench = Bench()
+    assert bench.do("G91", "G0 X10", "G0 X10", "Y5", "G90", "X1") == [Ok()] * 6
+    assert [m["pos"]["X"] for m in bench.events("move")] == [10.0, 20.0, 20.0, 1.0]
+    assert bench.fw.position() == {"X": 1.0, "Y": 5.0, "Z": 0.0}
+
+
+def test_g20_takes_inches() -> None:
+    bench = Bench()
+    assert bench.do("G20 G0 X1 Y2") == [Ok()]
+    assert bench.fw.position() == {"X": 25.4, "Y": 50.8, "Z": 0.0}
+
+
+def test_g92_says_where_the_tool_is() -> None:
+    bench = Bench()
+    assert bench.do("G0 X20 Y10", "G92 X0 Y0") == [Ok()] * 2
+    assert bench.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert bench.fw.motor_counts() == (0, 0, 0)
+    assert bench.do("G0 X5") == [Ok()]
+    assert bench.fw.position()["X"] == 5.0
+    assert bench.events("setpos")[0]["pos"] == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+
+
+def test_g28_and_dollar_h_go_home() -> None:
+    bench = Bench()
+    assert bench.do("G0 X20 Y10", "G28") == [Ok()] * 2
+    assert bench.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert bench.do("G0 X20 Y10", "G28 X30") == [Ok()] * 2  # through X30 Y10
+    assert [m["pos"]["X"] for m in bench.events("move")][-2:] == [30.0, 0.0]
+    bench.do("G0 X20")
+    bench.send("$H")
+    bench.run(CYCLE)
+    assert bench.fw.state == "Home"
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 0.0
+
+
+# -- arcs --------------------------------------------------------------------------------------
+
+
+def test_arcs_are_flattened_and_end_exactly_at_the_target() -> None:
+    bench = Bench()
+    bench.send("G2 X20 Y0 I10 J0 F3000")
+    assert bench.replies() == []  # 78 segments, more than the planner holds
+    replies = bench.run_until_idle()
+    assert replies == [Ok()]
+    segments = [m for m in bench.events("move") if m["kind"] == "G2"]
+    # Half a circle of radius 10 within 0.002 mm: floor(5π / sqrt(0.002 * 19.998)) = 78.
+    assert len(segments) == 78
+    assert segments[-1]["pos"] == {"X": 20.0, "Y": 0.0, "Z": 0.0}
+    assert bench.fw.position() == {"X": 20.0, "Y": 0.0, "Z": 0.0}
+    for segment in segments:
+        x, y = segment["pos"]["X"], segment["pos"]["Y"]
+        assert math.hypot(x - 10, y) == pytest.approx(10, abs=1e-5)
+        assert y >= -1e-9  # clockwise from the left: over the top
+    assert max(s["pos"]["Y"] for s in segments) == pytest.approx(10, abs=0.01)
+
+
+def test_radius_arcs_and_full_circles() -> None:
+    bench = Bench()
+    assert bench.do("G0 X50 Y50", "G3 X70 Y50 R10 F3000") == [Ok()] * 2
+    assert bench.fw.position() == {"X": 70.0, "Y": 50.0, "Z": 0.0}
+    assert bench.do("G2 X70 Y50 I-10 J0") == [Ok()]  # start = end with offsets: a full turn
+    circle = bench.events("move")[-157:]
+    xs = [m["pos"]["X"] for m in circle]
+    assert min(xs) == pytest.approx(50, abs=0.01) and max(xs) == pytest.approx(70, abs=1e-9)
+    # From (70, 50) around (80, 50), (20, 0) is 78 mm off the circle: an invalid target.
+    assert bench.do("G3 X20 Y0 I10 J0") == [ErrorReply(33)]
+
+
+def test_an_arc_leaving_the_travel_is_refused_whole() -> None:
+    bench = Bench()
+    assert bench.do("G3 X20 Y0 I10 J0 F3000") == [ErrorReply(15)]  # under Y = 0
+    assert bench.events("move") == []
+
+
+def test_the_corexy_plotter_has_no_arcs() -> None:
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("G2 X20 Y0 I10 J0") == [ErrorReply(20)]
+
+
+# -- $ commands and the alarm -------------------------------------------------------------------
+
+
+def test_dollar_commands_print_then_answer() -> None:
+    bench = Bench()
+    replies = bench.do("$$")
+    assert Feedback("$100=80.000") in replies and Feedback("$130=300.000") in replies
+    assert replies[-1] == Ok()
+    assert bench.do("$G") == [Feedback("[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]"), Ok()]
+    replies = bench.do("$I")
+    assert replies[-1] == Ok() and any(
+        isinstance(r, Feedback) and r.text == "[OPT:V,15,128]" for r in replies
+    )
+
+
+def test_an_alarm_locks_g_code_until_unlocked() -> None:
+    bench = Bench()
+    bench.send("M3 S1000", "G1 X100 F3000")
+    bench.run(0.5)
+    bench.fw.trigger_alarm(1)
+    assert bench.replies() == [AlarmReply(1)]
+    assert bench.fw.state == "Alarm" and not bench.fw.pen_down
+    stopped = bench.fw.position()
+    assert bench.do("G0 X1") == [ErrorReply(9)]
+    assert bench.do("") == [Ok()]
+    bench.fw.receive(b"\x18")
+    assert bench.replies() == [Banner(GRBL_BANNER), Feedback("[MSG:'$H'|'$X' to unlock]")]
+    assert bench.fw.state == "Alarm"
+    assert bench.do("$X") == [Feedback("[MSG:Caution: Unlocked]"), Ok()]
+    assert bench.fw.state == "Idle" and bench.fw.position() == stopped
+    assert bench.do("G0 X1") == [Ok()]
+
+
+def test_home_needs_the_machine_idle() -> None:
+    bench = Bench()
+    bench.send("G0 X100")
+    bench.run(CYCLE)
+    assert bench.do("$H") == [ErrorReply(8)]
+
+
+# -- the log -----------------------------------------------------------------------------------
+
+
+def test_every_log_entry_is_small_json() -> None:
+    bench = Bench(corexy_plotter_config())
+    bench.do("G0 X10", "M4", "G1 X20", "G4 P10", "M3")
+    bench.fw.receive(b"!~\x18")
+    bench.run(CYCLE)
+    kinds = {e["event"] for e in bench.fw.event_log}
+    assert {"line", "reply", "move", "pen", "dwell", "hold", "resume", "reset"} <= kinds
+    for entry in bench.fw.event_log:
+        text = event_log_line(entry)
+        assert "\n" not in text and len(text) < 200
+        assert json.loads(text) == entry
+        assert entry["t"] >= START
