@@ -11,10 +11,12 @@ import sys
 import traceback
 from collections.abc import Callable, Sequence
 from types import TracebackType
+from typing import TextIO
 
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
 
+from app.discovery import serial_ports
 from app.profiles import (
     DEFAULT_PROFILE,
     MachineProfile,
@@ -50,7 +52,25 @@ def build_parser() -> argparse.ArgumentParser:
         help="connect over Bluetooth LE (to ADDRESS, or the strongest stage found)",
     )
     parser.add_argument("--baud", type=int, help="serial baud rate (default: the profile's)")
+    parser.add_argument(
+        "-l",
+        "--list-ports",
+        action="store_true",
+        help="print the serial ports present (device, description, hardware id) and exit",
+    )
     return parser
+
+
+def print_ports(out: TextIO) -> int:
+    """The serial ports, one per line, as the plotter's old sender script's ``-l`` did."""
+    ports = serial_ports()
+    if not ports:
+        print("no serial ports found", file=out)
+        return 1
+    width = max(len(p.device) for p in ports)
+    for port in ports:
+        print(f"{port.device:<{width}}  {port.description}  [{port.hwid}]", file=out)
+    return 0
 
 
 def connect_as_asked(station: Station, args: argparse.Namespace, settings: StationSettings) -> None:
@@ -131,6 +151,8 @@ def report_unexpected(launcher: Launcher) -> Callable[..., None]:
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.list_ports:
+        return print_ports(sys.stdout)
     app = QApplication.instance() or QApplication(sys.argv[:1])
     assert isinstance(app, QApplication)
     app.setApplicationName("StepDeck")

@@ -10,6 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from app.drill_session import DrillSession
+from app.gcode_session import GcodeSession
 from app.link import Link
 from app.machine import MachineModel
 from app.profiles import MachineProfile
@@ -19,6 +20,13 @@ from app.usb3_session import Usb3Session
 from protocol.clock import Clock
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.drill_firmware import DrillConfig, DrillFirmware
+from protocol.emulator.gcode_firmware import (
+    GcodeConfig,
+    GcodeFirmware,
+    corexy_plotter_config,
+    grbl_plotter_config,
+    string_art_config,
+)
 from protocol.emulator.stage_firmware import StageConfig, StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 
@@ -67,6 +75,27 @@ def _drill_session(
     return DrillSession(model, link, clock)
 
 
+def _gcode_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    if profile.gcode is None:
+        raise ValueError(f"profile {profile.name!r} has no [gcode] table")
+    return GcodeSession(model, link, clock, profile.gcode, autotick=autotick)
+
+
+#: The emulated G-code machine for each kinematics a profile can name.
+GCODE_EMULATORS: dict[str, Callable[[], GcodeConfig]] = {
+    "corexy": corexy_plotter_config,
+    "cartesian": grbl_plotter_config,
+    "cylindrical": string_art_config,
+}
+
+
 def _stage_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
     return StageFirmware(clock, StageConfig(axes=len(profile.axes)))
 
@@ -82,10 +111,16 @@ def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
     return DrillFirmware(clock, DrillConfig(travel=(travel[0], travel[1])))
 
 
+def _gcode_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    kinematics = profile.gcode.kinematics if profile.gcode is not None else "cartesian"
+    return GcodeFirmware(clock, GCODE_EMULATORS[kinematics]())
+
+
 DIALECTS: dict[str, Dialect] = {
     "stage": Dialect(_stage_session, _stage_emulator),
     "usb3": Dialect(_usb3_session, _usb3_emulator),
     "drill": Dialect(_drill_session, _drill_emulator),
+    "gcode": Dialect(_gcode_session, _gcode_emulator),
 }
 
 

@@ -18,6 +18,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 from app.dialects import dialect_for
 from app.discovery import ble_uuids_for
 from app.drill_session import DrillSession
+from app.gcode_session import GcodeSession
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.profiles import MachineProfile
@@ -28,6 +29,7 @@ from app.usb3_session import Usb3Session
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.drill_firmware import DrillFirmware
+from protocol.emulator.gcode_firmware import GcodeFirmware
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.stage.codec import EchoFrame
@@ -91,6 +93,10 @@ class Station(QObject):
         return self.session if isinstance(self.session, DrillSession) else None
 
     @property
+    def gcode_session(self) -> GcodeSession | None:
+        return self.session if isinstance(self.session, GcodeSession) else None
+
+    @property
     def stage_emulator(self) -> StageFirmware | None:
         return self.emulator if isinstance(self.emulator, StageFirmware) else None
 
@@ -101,6 +107,10 @@ class Station(QObject):
     @property
     def drill_emulator(self) -> DrillFirmware | None:
         return self.emulator if isinstance(self.emulator, DrillFirmware) else None
+
+    @property
+    def gcode_emulator(self) -> GcodeFirmware | None:
+        return self.emulator if isinstance(self.emulator, GcodeFirmware) else None
 
     @property
     def device_id(self) -> str | None:

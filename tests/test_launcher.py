@@ -101,3 +101,48 @@ def test_an_unexpected_error_stops_the_machine_and_says_so(
         launcher.shutdown()
         if launcher.window is not None:
             launcher.window.close()
+
+
+# --- stepdeck --list-ports -------------------------------------------------------------
+
+
+def test_list_ports_prints_every_port_and_exits(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import app.__main__ as entry
+    from protocol.transport.serial_link import PortInfo
+
+    ports = [
+        PortInfo("/dev/ttyACM0", "RP2040 plotter", "USB VID:PID=2E8A:000A"),
+        PortInfo("/dev/ttyUSB10", "FT232R USB UART", "USB VID:PID=0403:6001"),
+    ]
+    monkeypatch.setattr(entry, "serial_ports", lambda: ports)
+    assert entry.main(["--list-ports"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines == [
+        "/dev/ttyACM0   RP2040 plotter  [USB VID:PID=2E8A:000A]",
+        "/dev/ttyUSB10  FT232R USB UART  [USB VID:PID=0403:6001]",
+    ]
+    monkeypatch.setattr(entry, "serial_ports", list)
+    assert entry.main(["-l"]) == 1
+    assert capsys.readouterr().out == "no serial ports found\n"
+
+
+def test_list_ports_needs_no_display() -> None:
+    """The real command, in a fresh process without a display: it must not start Qt."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "QT_QPA_PLATFORM")}
+    done = subprocess.run(
+        [sys.executable, "-m", "app", "--list-ports"],
+        capture_output=True,
+        text=True,
+        timeout=60,
+        env=env,
+        cwd=Path(__file__).resolve().parent.parent,
+    )
+    assert done.returncode in (0, 1), done.stderr
+    assert done.stdout.strip(), "prints the ports or says there are none"
+    assert "Traceback" not in done.stderr

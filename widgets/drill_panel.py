@@ -9,14 +9,11 @@ received" and "command done", filled as the device says ``R`` and ``D``.
 
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QObject, Qt
-from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import (
     QGridLayout,
     QGroupBox,
     QHBoxLayout,
     QLabel,
-    QLineEdit,
     QListWidget,
     QPlainTextEdit,
     QPushButton,
@@ -27,6 +24,7 @@ from PySide6.QtWidgets import (
 
 from app.drill_session import DrillSession
 from app.station import Station
+from widgets.history_entry import HistoryLineEdit
 from widgets.style import monospace_font
 
 #: Buttons of the procedures that take no value: letter, caption, tooltip.
@@ -44,8 +42,6 @@ class DrillPanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._watched: DrillSession | None = None
-        self._history: list[str] = []
-        self._history_index = 0
         self.command_buttons: dict[str, QPushButton] = {}
         self.targets: list[QSpinBox] = []
         self._mm_labels: list[QLabel] = []
@@ -86,13 +82,11 @@ class DrillPanel(QWidget):
         self.output.setReadOnly(True)
         self.output.setFont(monospace_font())
         self.output.setMaximumBlockCount(2000)
-        self.entry = QLineEdit()
+        self.entry = HistoryLineEdit()
         self.entry.setObjectName("terminal_entry")
-        self.entry.setFont(monospace_font())
         self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
         self.entry.setMinimumWidth(160)
         self.entry.returnPressed.connect(self.send_line)
-        self.entry.installEventFilter(self)
         self.send_button = QPushButton("Send")
         self.send_button.clicked.connect(self.send_line)
         self.clear_button = QPushButton("Cls")
@@ -152,13 +146,9 @@ class DrillPanel(QWidget):
         return session.send_line(f"{name}{self.targets[axis].value()}")
 
     def send_line(self) -> bool:
-        text = self.entry.text().strip()
+        text = self.entry.take()
         if not text:
             return False
-        if not self._history or self._history[-1] != text:
-            self._history.append(text)
-        self._history_index = len(self._history)
-        self.entry.clear()
         session = self.session
         sent = session is not None and session.send_line(text)
         if not sent:
@@ -172,33 +162,11 @@ class DrillPanel(QWidget):
 
     @property
     def history(self) -> tuple[str, ...]:
-        return tuple(self._history)
+        return self.entry.history
 
     def set_motion_enabled(self, enabled: bool) -> None:
         for button in (*self.command_buttons.values(), *self.send_buttons):
             button.setEnabled(enabled)
-
-    # --- history on Up/Down --------------------------------------------------------
-
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        if watched is self.entry and event.type() == QEvent.Type.KeyPress:
-            assert isinstance(event, QKeyEvent)
-            if event.key() == Qt.Key.Key_Up:
-                self._walk_history(-1)
-                return True
-            if event.key() == Qt.Key.Key_Down:
-                self._walk_history(1)
-                return True
-        return super().eventFilter(watched, event)
-
-    def _walk_history(self, step: int) -> None:
-        if not self._history:
-            return
-        self._history_index = max(0, min(len(self._history), self._history_index + step))
-        if self._history_index == len(self._history):
-            self.entry.clear()
-        else:
-            self.entry.setText(self._history[self._history_index])
 
     # --- the session's news ----------------------------------------------------------
 

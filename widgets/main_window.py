@@ -46,6 +46,7 @@ from widgets.connection_panel import ConnectionPanel
 from widgets.developer_pane import DeveloperPane
 from widgets.drill_panel import DrillPanel
 from widgets.dynamics_panel import DynamicsPanel
+from widgets.gcode_panel import GcodePanel
 from widgets.info_panel import InfoPanel
 from widgets.jobs_dock import JobsDock
 from widgets.jog_input import JogInput
@@ -133,7 +134,7 @@ class MainWindow(QMainWindow):
         self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
         #: Every page with motion controls, for the motion lock.
         self.motion_panels: list[
-            ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel
+            ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel
         ] = [self.manual_panel]
         if station.profile.dialect == "drill":
             # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
@@ -156,6 +157,12 @@ class MainWindow(QMainWindow):
                 "&Relative", self.relative_panel, "Move by an increment (Alt+R)"
             )
             self.motion_panels += [self.absolute_panel, self.relative_panel]
+        if station.profile.dialect == "gcode":
+            self.gcode_panel = GcodePanel(station)
+            self.menu_panel.add_page(
+                "&G-code", self.gcode_panel, "Console, pen, hold/resume/reset (Alt+G)"
+            )
+            self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
             self.dynamics_panel = DynamicsPanel(station)
             # The widest page scrolls rather than forcing its width on the whole window.

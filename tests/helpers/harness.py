@@ -13,12 +13,14 @@ from collections.abc import Callable
 from PySide6.QtWidgets import QApplication
 
 from app.drill_session import DrillSession
+from app.gcode_session import GcodeSession
 from app.profiles import MachineProfile, load_profile
 from app.stage_session import StageSession
 from app.station import Station
 from app.usb3_session import Usb3Session
 from protocol.clock import ManualClock
 from protocol.emulator.drill_firmware import DrillFirmware
+from protocol.emulator.gcode_firmware import GcodeFirmware
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.transport.loopback import LoopbackTransport
@@ -61,6 +63,18 @@ class StationHarness:
         session = self.station.drill_session
         assert session is not None, "not connected to a drill"
         return session
+
+    @property
+    def gcode_session(self) -> GcodeSession:
+        session = self.station.gcode_session
+        assert session is not None, "not connected to a G-code machine"
+        return session
+
+    @property
+    def gcode_emulator(self) -> GcodeFirmware:
+        emulator = self.station.gcode_emulator
+        assert emulator is not None, "no emulated G-code machine"
+        return emulator
 
     @property
     def emulator(self) -> StageFirmware:

@@ -1,0 +1,200 @@
+"""The G-code session against the emulated plotter, on the manual clock.
+
+What the operator relies on: lines reach the device without overrunning its
+128-byte buffer, every reply is tied to its line, errors say which line,
+positions follow the status reports, Esc stops without losing the position,
+a held arrow reaches the wire at once, and a device that falls silent is
+noticed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import replace
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.gcode_session import SentLine
+from app.machine import LinkState
+from app.profiles import load_profile
+from protocol.gcode.codec import FEED_HOLD, SOFT_RESET, STATUS_QUERY
+from protocol.transport.loopback import Direction
+from tests.helpers.harness import StationHarness
+
+
+@pytest.fixture
+def plotter(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness(load_profile("corexy-plotter"))
+    harness.connect()
+    harness.run(0.05)
+    try:
+        yield harness
+    finally:
+        harness.close()
+
+
+def lines_written(harness: StationHarness) -> list[str]:
+    """What went out as lines (real-time bytes left out)."""
+    text = b"".join(harness.written).decode("ascii")
+    for byte in (STATUS_QUERY, FEED_HOLD, SOFT_RESET):
+        text = text.replace(byte.decode(), "")
+    return [line for line in text.split("\n") if line]
+
+
+def test_connecting_asks_for_the_status_and_shows_the_position(plotter: StationHarness) -> None:
+    assert plotter.station.model.link_state is LinkState.CONNECTED
+    assert STATUS_QUERY in b"".join(plotter.written)
+    plotter.run(0.3)
+    assert plotter.gcode_session.machine_state == "Idle"
+    assert [axis.position for axis in plotter.station.model.axes] == [0.0, 0.0]
+
+
+def test_a_console_line_is_answered_and_moves_the_machine(plotter: StationHarness) -> None:
+    session = plotter.gcode_session
+    acknowledged: list[SentLine] = []
+    replies: list[str] = []
+    session.lineAcknowledged.connect(acknowledged.append)
+    session.replyText.connect(replies.append)
+    assert session.send_line("G1 X20 Y10 F3000")
+    plotter.run_until(lambda: bool(acknowledged), timeout=2)
+    assert acknowledged[0].text == "G1 X20 Y10 F3000" and acknowledged[0].origin == "console"
+    assert replies == ["ok  ← G1 X20 Y10 F3000"]
+    plotter.run_until(lambda: session.settled, timeout=5)
+    model = plotter.station.model
+    assert (model.axes[0].position, model.axes[1].position) == pytest.approx((20.0, 10.0))
+    assert plotter.gcode_emulator.position()["X"] == pytest.approx(20.0)
+
+
+def test_an_error_reply_names_the_line_it_answers(plotter: StationHarness) -> None:
+    session = plotter.gcode_session
+    failed: list[tuple[SentLine, int, str]] = []
+    session.lineFailed.connect(lambda sent, code, meaning: failed.append((sent, code, meaning)))
+    session.send_line("G0 X1")
+    session.send_line("G7 X1")  # no such command on the plotter
+    session.send_line("G0 X2")
+    plotter.run_until(lambda: session.streamer.idle, timeout=2)
+    assert [(sent.text, code) for sent, code, _ in failed] == [("G7 X1", 20)]
+    assert "unsupported" in failed[0][2].lower()
+    assert session.errors == 1
+
+
+def test_character_counting_keeps_at_most_127_bytes_unanswered(plotter: StationHarness) -> None:
+    session = plotter.gcode_session
+    for i in range(200):
+        assert session.send_line(f"G1 X{(i % 50) * 1.234:.3f} Y{(i % 37) * 0.5:.3f} F6000")
+    most = 0
+    while not session.streamer.idle:
+        most = max(most, session.streamer.in_flight_bytes)
+        plotter.step()
+    # The buffer was used (several lines out at once), never overrun.
+    assert 100 < most <= 127
+    assert plotter.gcode_emulator.max_unacknowledged <= 127
+    assert plotter.gcode_emulator.overflows == 0
+
+
+def test_ping_pong_profiles_send_one_line_at_a_time(qtbot: QtBot) -> None:
+    profile = load_profile("corexy-plotter")
+    assert profile.gcode is not None
+    profile = replace(profile, gcode=replace(profile.gcode, streaming="ping-pong"))
+    harness = StationHarness(profile)
+    try:
+        harness.connect()
+        harness.run(0.05)  # the board's banner first: bytes sent while it boots are lost
+        session = harness.gcode_session
+        for i in range(10):
+            session.send_line(f"G1 X{i} F6000")
+        most = 0
+        while not session.streamer.idle:
+            most = max(most, session.streamer.in_flight)
+            harness.step()
+        assert most == 1
+        assert len([line for line in lines_written(harness) if line.startswith("G1")]) == 10
+    finally:
+        harness.close()
+
+
+def test_moves_from_the_panels_are_absolute_lines_within_the_travel(
+    plotter: StationHarness,
+) -> None:
+    session = plotter.gcode_session
+    assert session.move_absolute(1, 42.5)
+    assert not session.move_absolute(0, 301.0)  # outside the 300 mm travel: refused here
+    plotter.run_until(lambda: session.settled, timeout=5)
+    assert plotter.station.model.axes[1].position == pytest.approx(42.5)
+    assert session.move_relative(1, -2.5)
+    plotter.run_until(lambda: session.settled, timeout=5)
+    assert plotter.station.model.axes[1].position == pytest.approx(40.0)
+    assert lines_written(plotter) == ["G90 G0 Y42.500", "G90 G0 Y40.000"]
+
+
+def test_a_held_arrow_reaches_the_wire_at_once_and_stops_on_release(
+    plotter: StationHarness,
+) -> None:
+    session = plotter.gcode_session
+    before = len(plotter.written)
+    session.set_jog((1, 0))
+    # No step of the clock in between: the first jog line is already written.
+    assert any(chunk.startswith(b"G91 G1 X") for chunk in plotter.written[before:])
+    plotter.run(1.0)
+    session.set_jog((0, 0))
+    sent_at_release = len(lines_written(plotter))
+    plotter.run_until(lambda: session.settled, timeout=5)
+    assert len(lines_written(plotter)) == sent_at_release  # nothing more after the release
+    x = plotter.station.model.axes[0].position
+    speed = plotter.station.profile.axes[0].max_speed * 0.5
+    # Travelled about a second's worth, and ran on for at most the blocks kept ahead.
+    assert speed * 0.6 < x < speed * (1.0 + 0.1 * 3)
+
+
+def test_stop_holds_then_resets_and_keeps_the_position(plotter: StationHarness) -> None:
+    session = plotter.gcode_session
+    for i in range(1, 30):
+        session.send_line(f"G1 X{i * 5} F600")
+    plotter.run(1.0)
+    moving_x = plotter.gcode_emulator.position()["X"]
+    assert 0 < moving_x < 145
+    resets: list[bool] = []
+    session.reset.connect(lambda: resets.append(True))
+    session.stop_all()
+    written = b"".join(plotter.written)
+    assert written.index(FEED_HOLD) < written.index(SOFT_RESET)
+    assert resets and session.streamer.idle
+    plotter.run(1.0)
+    stopped_x = plotter.gcode_emulator.position()["X"]
+    plotter.run(1.0)
+    assert plotter.gcode_emulator.position()["X"] == stopped_x  # standing still
+    assert stopped_x >= moving_x  # it decelerated from where it was, not jumped back
+    plotter.run(0.5)
+    assert plotter.station.model.axes[0].position == pytest.approx(stopped_x, abs=1e-3)
+
+
+def test_garbage_from_the_device_is_counted_not_fatal(plotter: StationHarness) -> None:
+    session = plotter.gcode_session
+    spoiled = [False]
+
+    def add_garbage(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_HOST and not spoiled[0]:
+            spoiled[0] = True
+            return b"\xff\xfe garbage\n" + data
+        return data
+
+    plotter.loopback.set_manipulator(add_garbage)
+    assert session.send_line("G0 X5")
+    plotter.run_until(lambda: session.settled, timeout=5)
+    assert session.rejected == 1
+    assert plotter.station.model.axes[0].position == pytest.approx(5.0)
+    assert plotter.station.model.link_state is LinkState.CONNECTED
+
+
+def test_a_silent_device_is_noticed_and_the_station_reconnects(plotter: StationHarness) -> None:
+    def swallow(direction: Direction, data: bytes) -> bytes:
+        return b"" if direction is Direction.TO_HOST else data
+
+    plotter.loopback.set_manipulator(swallow)
+    states: list[LinkState] = []
+    plotter.station.model.linkStateChanged.connect(states.append)
+    plotter.run(2.5)
+    assert LinkState.LOST in states
+    plotter.loopback.set_manipulator(None)
+    plotter.run_until(lambda: plotter.station.model.link_state is LinkState.CONNECTED, timeout=10)
