@@ -515,6 +515,72 @@ def bench_drill_order() -> list[str]:
     return lines
 
 
+def bench_string_art() -> list[str]:
+    """Load + preview and winding-program build for 300 nails and 10 000 connections.
+
+    The job is written as an SD-card pair (random nail order, no nail twice in
+    a row) and read the way the dock reads it: load = the files to a checked
+    job and its program; preview = ``JobPreview.set_program`` (paths, nails,
+    thread); build = ``build_program`` alone, on the string-art profile.
+    """
+    import random
+    import tempfile
+
+    from PySide6.QtWidgets import QApplication
+
+    from app.jobs.loaders import load_job
+    from app.jobs.string_art import StringArtJob, StringArtParams
+    from app.jobs.string_art_export import export_sd_files
+    from app.jobs.string_art_program import StringArtProgram, build_program
+    from app.profiles import load_profile
+    from app.station import Station
+    from widgets.job_preview import JobPreview
+
+    rng = random.Random(1)
+    sequence = [0]
+    for _ in range(10_000 - 1):
+        sequence.append((sequence[-1] + rng.randrange(1, 300)) % 300)
+    job = StringArtJob(StringArtParams(0, 300, 25.0), tuple(sequence))
+    profile = load_profile("string-art")
+    axes = [axis.name for axis in profile.axes]
+    app = QApplication.instance() or QApplication([])
+    station = Station(profile, ManualClock(), realtime=False)
+    preview = JobPreview(station, confirm=lambda _text: False)
+    preview.resize(900, 700)
+    preview.show()
+    app.processEvents()
+    loads, previews, builds, paints = [], [], [], []
+    with tempfile.TemporaryDirectory() as folder:
+        param, _poradi = export_sd_files(job, Path(folder))
+        for _ in range(3):
+            preview.set_program(None)
+            app.processEvents()
+            start = time.perf_counter()
+            program = load_job(param, axes)
+            loaded = time.perf_counter()
+            preview.set_program(program)
+            shown = time.perf_counter()
+            preview.plot_widget.viewport().repaint()
+            painted = time.perf_counter()
+            loads.append(loaded - start)
+            previews.append(shown - loaded)
+            paints.append(painted - shown)
+            start = time.perf_counter()
+            built = build_program(job, profile)
+            builds.append(time.perf_counter() - start)
+    assert isinstance(program, StringArtProgram)
+    preview.close()
+    preview.deleteLater()
+    station.shutdown()
+    app.processEvents()
+    return [
+        f"string art, 300 nails and 10,000 connections ({len(program):,} operations): "
+        f"load {min(loads):.3f} s + preview {min(previews):.3f} s "
+        f"(first paint {min(paints):.3f} s); winding-program build {min(builds):.3f} s; "
+        f"estimated {(built.estimate_s or 0.0) / 3600:.1f} h on the winder"
+    ]
+
+
 BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_decode,
     bench_emulated_move,
@@ -526,6 +592,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_job_preview,
     bench_dry_run,
     bench_drill_order,
+    bench_string_art,
 ]
 
 

@@ -38,6 +38,7 @@ from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVB
 
 from app.jobs.program import OpKind, Program
 from app.jobs.runner import JobRunner, JobState
+from app.jobs.string_art_program import StringArtProgram
 from app.station import Station
 
 TRAVEL_COLOUR = "#9a9a9a"
@@ -189,6 +190,9 @@ class JobPreview(QWidget):
         self._throttle_ms = throttle_ms
 
         self._build(axes[0].unit if axes else "mm")
+        self.string_art = StringArtPreviewExtras(
+            self.plot, (self.work_curve, self.done_work_curve, self.work_markers, self.done_markers)
+        )
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
         if runner is not None:
@@ -301,6 +305,7 @@ class JobPreview(QWidget):
             self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
             self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
             self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
+        self.string_art.set_program(program)
         self._draw_done()
         self.fit()
         self.build_seconds = time.perf_counter() - start
@@ -422,6 +427,7 @@ class JobPreview(QWidget):
             self._throttle.start()  # a beat with work: keep the pace for what comes next
 
     def _draw_done(self) -> None:
+        self.string_art.set_done(self.done)
         geometry = self.path_geometry
         if geometry is None:
             for curve in (self.done_travel_curve, self.done_work_curve):
@@ -443,3 +449,112 @@ class JobPreview(QWidget):
         x = values[0] if values else 0.0
         y = values[1] if len(values) > 1 else 0.0
         self.position_marker.setData(x=[x], y=[y])
+
+
+# --- string art ------------------------------------------------------------------------------
+
+NAIL_COLOUR = "#6b4423"
+#: The thread's opacity (of 255): low, so that where threads cross the colour deepens.
+THREAD_ALPHA = 40
+DONE_THREAD_ALPHA = 90
+
+
+class StringArtPreviewExtras:
+    """What a string-art program adds to the preview: nails, thread, the current nail.
+
+    The thread is drawn nail to nail, one segment per connection, with a
+    faint pen, each segment blended on its own (pyqtgraph's segmented line
+    mode), so density shows as it will on the board; the wound
+    part is drawn again in green, drilled nails turn green, and a ring marks
+    the nail the running operation serves.  While a string-art program is
+    shown, the generic work items (``replaced``: the needle's path, drawn
+    in the board plane) are hidden; any other program shows them again.
+    """
+
+    def __init__(self, plot: pg.PlotItem, replaced: Sequence[pg.GraphicsObject]) -> None:
+        self.plot = plot
+        self.replaced = tuple(replaced)
+        self.program: StringArtProgram | None = None
+        self.thread = self._segments(WORK_COLOUR, THREAD_ALPHA)
+        self.done_thread = self._segments(DONE_COLOUR, DONE_THREAD_ALPHA)
+        self.nails = pg.ScatterPlotItem(
+            size=4, symbol="o", pen=pg.mkPen(NAIL_COLOUR), brush=pg.mkBrush(NAIL_COLOUR)
+        )
+        self.drilled = pg.ScatterPlotItem(
+            size=4, symbol="o", pen=pg.mkPen(DONE_COLOUR), brush=pg.mkBrush(DONE_COLOUR)
+        )
+        self.current = pg.ScatterPlotItem(
+            size=14, symbol="o", pen=pg.mkPen(POSITION_COLOUR, width=2), brush=None
+        )
+        for item in (self.nails, self.drilled, self.current):
+            plot.addItem(item)
+        self.current.setZValue(9)
+        self._nail_xy = np.empty((0, 2))
+        self._pairs = (_EMPTY, _EMPTY)
+        self._drill_ends = np.empty(0, dtype=np.int64)
+
+    def _segments(self, colour: str, alpha: int) -> pg.PlotCurveItem:
+        pen = pg.mkPen(pg.mkColor(colour), width=1)
+        color = pen.color()
+        color.setAlpha(alpha)
+        pen.setColor(color)
+        curve = pg.PlotCurveItem(pen=pen, connect="pairs")
+        curve.setSegmentedLineMode("on")
+        self.plot.addItem(curve)
+        return curve
+
+    @property
+    def thread_segments(self) -> int:
+        return len(self._pairs[0]) // 2
+
+    def set_program(self, program: Program | None) -> None:
+        """Show ``program``'s nails and thread when it is a string-art one, else nothing."""
+        active = isinstance(program, StringArtProgram)
+        for item in self.replaced:
+            item.setVisible(not active)
+        if not isinstance(program, StringArtProgram):
+            self.program = None
+            self._nail_xy = np.empty((0, 2))
+            self._pairs = (_EMPTY, _EMPTY)
+            self._drill_ends = np.empty(0, dtype=np.int64)
+            self.nails.setData(x=_EMPTY, y=_EMPTY)
+            self.thread.setData(_EMPTY, _EMPTY)
+            return
+        self.program = program
+        xy = program.job.nail_positions()
+        self._nail_xy = xy
+        visits = xy[np.asarray(program.job.sequence, dtype=np.int64)]
+        self._pairs = (
+            np.column_stack((visits[:-1, 0], visits[1:, 0])).ravel(),
+            np.column_stack((visits[:-1, 1], visits[1:, 1])).ravel(),
+        )
+        # The last operation of each nail's drill cycle, in drilling (index) order.
+        drilling = np.flatnonzero((program.entry_of_op == -1) & (program.nail_of_op >= 0))
+        nails = program.nail_of_op[drilling]
+        last = np.append(nails[1:] != nails[:-1], True) if len(nails) else np.empty(0, bool)
+        self._drill_ends = drilling[last]
+        self.nails.setData(x=xy[:, 0], y=xy[:, 1])
+        self.thread.setData(*self._pairs)
+
+    def set_done(self, done: int) -> None:
+        """The first ``done`` operations are done: wound thread, drilled nails, current nail."""
+        program = self.program
+        if program is None:
+            for item in (self.drilled, self.current):
+                item.setData(x=_EMPTY, y=_EMPTY)
+            self.done_thread.setData(_EMPTY, _EMPTY)
+            return
+        total = len(program.nail_of_op)
+        if done >= total:
+            segments = self.thread_segments
+        else:
+            segments = max(int(program.entry_of_op[max(done, 0)]) - 1, 0)
+        x, y = self._pairs
+        self.done_thread.setData(x[: 2 * segments], y[: 2 * segments])
+        drilled = int(np.searchsorted(self._drill_ends, done, side="left"))
+        self.drilled.setData(x=self._nail_xy[:drilled, 0], y=self._nail_xy[:drilled, 1])
+        nail = program.current_nail(done) if done > 0 else -1
+        if nail < 0:
+            self.current.setData(x=_EMPTY, y=_EMPTY)
+        else:
+            self.current.setData(x=[self._nail_xy[nail, 0]], y=[self._nail_xy[nail, 1]])

@@ -18,6 +18,8 @@ from pathlib import Path
 
 from app.jobs.excellon import build_drill_program, read_drill_file, sniff_dri, sniff_excellon
 from app.jobs.program import JobFileError, Program, load_point_list
+from app.jobs.string_art import StringArtParams, sniff_string_art
+from app.jobs.string_art_program import load_string_art_program
 
 
 @dataclass(frozen=True)
@@ -26,6 +28,8 @@ class JobOptions:
 
     draw: bool = False  # drill files: draw each hole with the pen instead of drilling it
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
+    #: String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount).
+    string_art: StringArtParams | None = None
 
 
 #: Reads ``path`` for a machine with these axis names; raises JobFileError with file:line.
@@ -173,3 +177,23 @@ EXCELLON = register_loader(
     "Excellon drill files", (".drl", ".drd", ".txt", ".xln"), load_drill_job, sniff_excellon
 )
 EAGLE_DRILL_INFO = register_loader("EAGLE drill info (.dri)", (".dri",), load_drill_job, sniff_dri)
+
+
+# --- string-art jobs ---------------------------------------------------------------------
+# param.txt / poradi.txt (either file of the pair) and bare nail lists from generators.  After
+# the point lists and drill files: their sniffers see a .txt first, and neither takes a
+# "key = value" file or a long run of whole numbers; a nail list too short to tell from a point
+# list (fewer than four numbers) stays a point list.
+
+
+def load_string_art_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
+    """A string-art job for the winder (A, X, Z); NeedsNailCount when the board is unknown."""
+    return load_string_art_program(path, axis_names, options.string_art)
+
+
+STRING_ART = register_loader(
+    "String-art jobs (param.txt, poradi.txt)",
+    (".txt",),
+    load_string_art_job,
+    sniff_string_art,
+)

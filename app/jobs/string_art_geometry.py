@@ -1,0 +1,90 @@
+"""Where a string-art board's nails are, and how the base turns between them.
+
+All lengths are millimetres, all angles degrees, counter-clockwise from +X
+seen from above the board (the base's A axis).  The board file gives the
+board radius R in centimetres; the nails sit ``NAIL_INSET_MM`` (1.5 cm)
+inside the board's edge:
+
+* a circle (``tvar = 0``): nail ``k`` at angle ``360·k/n`` on the circle of
+  radius ``R - 15 mm``;
+* a regular polygon (``tvar = m ≥ 3``): vertex ``j`` at angle ``360·j/m`` on
+  the circle of radius ``R - 15 mm`` (vertex 0 on +X), nails spaced evenly
+  along the perimeter by linear interpolation between the vertices, nail 0
+  on vertex 0.  A nail in the middle of an edge is the closest a nail gets
+  to the centre: ``(R - 15 mm)·cos(π/m)``.
+
+The base's angle A is kept unwrapped (a continuous number of degrees, not
+reduced to 0…360): every turn goes from where the base is by the shortest
+signed difference, so no turn is longer than 180°.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: How far inside the board's edge the nails sit (the original firmware's 1.5 cm).
+NAIL_INSET_MM = 15.0
+#: How deep each nail hole is drilled, along the tool axis.
+DRILL_DEPTH_MM = 10.0
+#: The drill (Z) axis' tilt to the board; Z is measured along it.
+DRILL_AXIS_TILT_DEG = 74.333
+
+
+def nail_circle_radius_mm(radius_cm: float) -> float:
+    """The radius of the circle the nails (or the polygon's vertices) sit on."""
+    return radius_cm * 10.0 - NAIL_INSET_MM
+
+
+def nail_positions(tvar: int, nails: int, radius_cm: float) -> np.ndarray:
+    """(nails, 2) board coordinates in mm: nail 0 on +X, counter-clockwise."""
+    r0 = nail_circle_radius_mm(radius_cm)
+    k = np.arange(nails, dtype=np.float64)
+    if tvar == 0:
+        angles = np.radians(360.0 * k / nails)
+        return np.column_stack((r0 * np.cos(angles), r0 * np.sin(angles)))
+    sides = tvar
+    corners = np.radians(360.0 * np.arange(sides + 1) / sides)
+    vertices = np.column_stack((r0 * np.cos(corners), r0 * np.sin(corners)))
+    # Position along the perimeter in edge lengths: an exact integer on a vertex.
+    along = k * sides / nails
+    edge = np.minimum(np.floor(along).astype(np.int64), sides - 1)
+    fraction = (along - edge)[:, None]
+    points: np.ndarray = vertices[edge] * (1.0 - fraction) + vertices[edge + 1] * fraction
+    return points
+
+
+def nail_polar(tvar: int, nails: int, radius_cm: float) -> tuple[np.ndarray, np.ndarray]:
+    """(angle in degrees within 0…360, radius in mm) of every nail."""
+    if tvar == 0:
+        angles = 360.0 * np.arange(nails, dtype=np.float64) / nails
+        return angles, np.full(nails, nail_circle_radius_mm(radius_cm))
+    xy = nail_positions(tvar, nails, radius_cm)
+    angles = np.degrees(np.arctan2(xy[:, 1], xy[:, 0])) % 360.0
+    angles[0] = 0.0  # exactly, whatever the rounding of the vertex
+    return angles, np.hypot(xy[:, 0], xy[:, 1])
+
+
+def half_gaps(angles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per nail, half the angle to the previous nail and half the angle to the next one.
+
+    The needle passes between two nails at the angle halfway between them;
+    with at least three nails round the centre, the two halves of a nail add
+    up to less than 180°, so crossing a nail is always the short way round.
+    """
+    following = np.roll(angles, -1)
+    after = ((following - angles) % 360.0) / 2.0
+    before = np.roll(after, 1)
+    return before, after
+
+
+def shortest_turn(current: float, target: float) -> float:
+    """The signed turn (-180…180°) that brings angle ``current`` to ``target`` (mod 360)."""
+    return (target - current + 180.0) % 360.0 - 180.0
+
+
+def polygon_min_radius_mm(tvar: int, radius_cm: float) -> float:
+    """The closest a nail can come to the centre: an edge's midpoint (a circle: R - 15 mm)."""
+    r0 = nail_circle_radius_mm(radius_cm)
+    return r0 if tvar == 0 else r0 * math.cos(math.pi / tvar)

@@ -1,0 +1,120 @@
+"""The preview of a string-art job: nails, faint thread, what is wound and the current nail."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+import pytest
+from PySide6.QtGui import QColor, QImage
+from pytestqt.qtbot import QtBot
+
+from app.jobs.program import Program, SourceRef, move
+from app.jobs.string_art import StringArtJob, StringArtParams
+from app.jobs.string_art_program import StringArtProgram, build_program
+from app.profiles import load_profile
+from tests.helpers.harness import StationHarness
+from widgets.job_preview import THREAD_ALPHA, JobPreview
+
+
+def points(item: object) -> np.ndarray:
+    x, y = item.getData()  # type: ignore[attr-defined]
+    if x is None:
+        return np.empty((0, 2))
+    return np.column_stack((np.asarray(x), np.asarray(y)))
+
+
+def job(sequence: list[int], nails: int = 8) -> StringArtJob:
+    return StringArtJob(StringArtParams(0, nails, 10.0), tuple(sequence))
+
+
+@pytest.fixture
+def preview(qtbot: QtBot, qapp: object) -> Iterator[JobPreview]:
+    harness = StationHarness(load_profile("string-art"))
+    widget = JobPreview(harness.station, confirm=lambda _text: False, throttle_ms=0)
+    qtbot.addWidget(widget)
+    widget.resize(500, 500)
+    widget.show()
+    qtbot.waitExposed(widget)
+    yield widget
+    widget.close()
+    harness.close()
+
+
+def test_nails_and_thread_replace_the_needle_path(preview: JobPreview) -> None:
+    program = build_program(job([0, 4, 2, 6]))
+    preview.set_program(program)
+    extras = preview.string_art
+    nails = job([0, 1]).nail_positions()  # 8 nails at 85 mm, every 45°
+    assert np.allclose(points(extras.nails), nails)
+    # Three connections, nail to nail: 0→4, 4→2, 2→6.
+    assert np.allclose(points(extras.thread), nails[[0, 4, 4, 2, 2, 6]])
+    assert extras.thread.opts["pen"].color().alpha() == THREAD_ALPHA
+    assert not preview.work_curve.isVisible() and not preview.work_markers.isVisible()
+    assert preview.travel_curve.isVisible()  # the drill phase's travel stays
+    assert len(points(extras.current)) == 0  # nothing under way yet
+
+    preview.set_program(Program("plain", (move(SourceRef("p.txt", 1), A=1.0, X=2.0),)))
+    assert preview.work_curve.isVisible() and preview.work_markers.isVisible()
+    assert len(points(extras.nails)) == 0 and len(points(extras.thread)) == 0
+
+
+def test_progress_shows_drilled_nails_wound_thread_and_the_current_nail(
+    preview: JobPreview,
+) -> None:
+    program = build_program(job([0, 4, 2, 6]))
+    assert isinstance(program, StringArtProgram)
+    preview.set_program(program)
+    extras = preview.string_art
+    nails = job([0, 1]).nail_positions()
+
+    # Operation 0 is the drill phase's comment; 1…4 drill nail 0; 5…8 nail 1.
+    preview.set_done(6)  # nail 0 drilled, nail 1 under way
+    assert np.allclose(points(extras.drilled), nails[:1])
+    assert np.allclose(points(extras.current), nails[[1]])
+    assert len(points(extras.done_thread)) == 0
+
+    wait = program.wait_index
+    preview.set_done(wait)  # waiting for the operator: every nail drilled, nail 0 to tie
+    assert len(points(extras.drilled)) == 8
+    assert np.allclose(points(extras.current), nails[[0]])
+
+    second = int(np.flatnonzero(program.entry_of_op == 2)[0])
+    preview.set_done(second + 1)  # 0→4 wound, 4→2 under way
+    assert np.allclose(points(extras.done_thread), nails[[0, 4]])
+    assert np.allclose(points(extras.current), nails[[2]])
+
+    preview.set_done(len(program))
+    assert np.allclose(points(extras.done_thread), nails[[0, 4, 4, 2, 2, 6]])
+    assert np.allclose(points(extras.current), nails[[6]])
+
+
+def _darkness(image: QImage, x: int, y: int) -> int:
+    colour = QColor(image.pixel(x, y))
+    return 3 * 255 - colour.red() - colour.green() - colour.blue()
+
+
+def test_crossing_threads_look_denser(preview: JobPreview) -> None:
+    """The same chord wound six times is darker than wound once: each segment is blended on
+    its own, so density shows."""
+    view = preview.plot.getViewBox()
+
+    def darkness_at_centre(sequence: list[int]) -> int:
+        preview.set_program(build_program(job(sequence)))
+        preview.travel_curve.setVisible(False)
+        preview.limits_curve.setVisible(False)
+        preview.position_marker.setVisible(False)  # the machine sits at the centre
+        preview.plot.showGrid(x=False, y=False)
+        view.setRange(xRange=(-90, 90), yRange=(-90, 90), padding=0)
+        preview.plot_widget.viewport().repaint()
+        image = preview.plot_widget.grab().toImage()
+        centre = preview.plot_widget.mapFromScene(view.mapViewToScene(view.viewRect().center()))
+        return max(
+            _darkness(image, centre.x() + dx, centre.y() + dy)
+            for dx in range(-2, 3)
+            for dy in range(-2, 3)
+        )
+
+    once = darkness_at_centre([0, 4])  # one diameter through the centre
+    six = darkness_at_centre([0, 4, 0, 4, 0, 4, 0])
+    assert 0 < once < six
