@@ -18,7 +18,7 @@ Replies are judged only once enough fresh echoes have come in, because an
 echo already on its way when a move was sent (or one left in a serial buffer
 by a killed station) still describes the machine before the move.
 
-The runner speaks two dialects, chosen by the profile:
+The runner speaks three dialects, chosen by the profile:
 
 * **stage** — absolute moves, completion judged from the echoes as above;
   drill and pen operations are refused at :meth:`JobRunner.load`.
@@ -56,6 +56,7 @@ from PySide6.QtCore import QObject, Qt, QTimer, Signal
 
 from app.drill_session import DrillSession
 from app.jobs.dry_run import Estimate, estimate, parameters_from_model
+from app.jobs.gcode_driver import GcodeDriver
 from app.jobs.program import LimitViolation, Operation, OpKind, Program, check_limits
 from app.machine import LinkState
 from app.session import MachineSession
@@ -66,7 +67,7 @@ ETA_INTERVAL_MS = 1000
 #: Refused operations listed in the message (the dock's list holds them all).
 REFUSALS_SHOWN = 20
 #: Dialects whose completion reports the runner understands.
-RUNNABLE_DIALECTS = frozenset({"stage", "drill"})
+RUNNABLE_DIALECTS = frozenset({"stage", "drill", "gcode"})
 
 #: Position echoes per moved axis, counted from a resume, before the machine's state is believed:
 #: more than a killed station can leave unread in a serial buffer.
@@ -146,6 +147,7 @@ class JobRunner(QObject):
         self._elapsed_before = 0.0
         self._running_since: float | None = None
         self._session: MachineSession | None = None
+        self._gcode = GcodeDriver(self)
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
@@ -316,6 +318,8 @@ class JobRunner(QObject):
         session = self.station.session
         if session is not None:
             session.stop_all()
+        if self._gcode_dialect():
+            self._gcode.stopped()
         self._in_flight = None
         self._verify = False
         # The resume offer first, so views reacting to the state change see it.
@@ -327,6 +331,8 @@ class JobRunner(QObject):
         """The operator has done what the WAIT asked for."""
         if self._state is not JobState.WAITING or self._in_flight is None:
             return
+        if self._gcode_dialect():
+            self._gcode.confirmed(self._in_flight)
         self._set_state(JobState.RUNNING)
         self._complete(self._in_flight)
 
@@ -368,6 +374,10 @@ class JobRunner(QObject):
         self._verify = self._in_flight is not None
         self._single_step = single_step
         self._pause_requested = False
+        if self._gcode_dialect():
+            self._in_flight = None
+            self._verify = False
+            self._gcode.begin(index, verify=verify)
         self.progressChanged.emit(self._done, len(self._program))
         self._set_state(JobState.RUNNING)
         self._proceed()
@@ -391,6 +401,9 @@ class JobRunner(QObject):
         """Start whatever comes next: a re-examination, an operation, or the end."""
         program = self._program
         assert program is not None
+        if self._gcode_dialect():
+            self._gcode.proceed()
+            return
         while self._state is JobState.RUNNING:
             if self._in_flight is not None:
                 if self._verify:
@@ -507,6 +520,9 @@ class JobRunner(QObject):
 
     def _drill_dialect(self) -> bool:
         return self.station.profile.dialect == "drill"
+
+    def _gcode_dialect(self) -> bool:
+        return self.station.profile.dialect == "gcode"
 
     def _dispatch_drill(self, index: int) -> None:
         """Queue the drill commands of operation ``index``; the session's ``idle`` ends it."""
@@ -632,6 +648,8 @@ class JobRunner(QObject):
         session = self.station.session
         if session is not None and self.station.model.link_state not in _LINK_DOWN:
             session.stop_all()
+        if self._gcode_dialect():
+            self._gcode.stopped()
         self._offer_checkpoint()
         self._set_state(JobState.FAILED)
         self.message.emit(f"Job failed at {self._op_source(index)}: {reason}")
@@ -640,6 +658,8 @@ class JobRunner(QObject):
         """The link is gone: hold the operation under way as not done, to re-examine later."""
         if self._in_flight is not None:
             self._verify = True
+        if self._gcode_dialect():
+            self._gcode.link_lost()
         self._pause_requested = False
         self._set_state(JobState.PAUSED)
         where = f" at {self._op_source(self._in_flight)}" if self._in_flight is not None else ""
@@ -677,6 +697,7 @@ class JobRunner(QObject):
         session = self.station.session
         if session is self._session:
             return
+        self._gcode.bind(session)
         if self._session is not None:
             old = self._session
             try:

@@ -1,0 +1,264 @@
+"""The job runner's G-code half: streaming a program and judging it from ``ok`` and status.
+
+The runner keeps what every dialect shares (job states, operator commands,
+checkpoint file, ETA); on a G-code machine it hands the running itself to a
+:class:`GcodeDriver`, because here many operations are under way at once
+(see :mod:`app.jobs.gcode_stream` for what counts as answered and executed).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from app.gcode_session import GcodeSession, SentLine
+from app.jobs.gcode_stream import GcodeStream, preamble, resume_state
+from app.jobs.program import OpKind
+from protocol.gcode.codec import StatusReport
+
+if TYPE_CHECKING:
+    from app.jobs.runner import JobRunner
+
+#: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
+CHECKPOINT_EVERY_S = 0.5
+
+
+class GcodeDriver:
+    """Feeds the runner's program to the G-code session and reports progress to the runner."""
+
+    def __init__(self, runner: JobRunner) -> None:
+        self.runner = runner
+        self.stream: GcodeStream | None = None
+        self.session: GcodeSession | None = None
+        self._recheck = False  # look at the machine before sending again
+        self._asked_since_recheck = False
+        self._checkpoint_at = -1.0
+
+    # --- session wiring --------------------------------------------------------
+
+    def bind(self, session: object) -> None:
+        old = self.session
+        if old is not None:
+            try:
+                old.lineAcknowledged.disconnect(self._on_ok)
+                old.lineFailed.disconnect(self._on_error)
+                old.statusChanged.disconnect(self._on_status)
+                old.reset.disconnect(self._on_reset)
+            except (RuntimeError, TypeError):
+                pass  # already deleted with its link
+        self.session = session if isinstance(session, GcodeSession) else None
+        if self.session is not None:
+            self.session.lineAcknowledged.connect(self._on_ok)
+            self.session.lineFailed.connect(self._on_error)
+            self.session.statusChanged.connect(self._on_status)
+            self.session.reset.connect(self._on_reset)
+
+    # --- what the runner asks ----------------------------------------------------
+
+    def begin(self, index: int, *, verify: bool) -> None:
+        """Start streaming at operation ``index``; after a restart look at the machine first."""
+        runner = self.runner
+        assert runner.program is not None
+        self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        self._recheck = verify
+        self._asked_since_recheck = False
+
+    def link_lost(self) -> None:
+        """The lines the device had may or may not run: decide when it is back."""
+        if self.stream is not None:
+            self._recheck = True
+            self._asked_since_recheck = False
+            self._write_checkpoint(force=True)
+
+    def proceed(self) -> None:
+        """Send what may be sent now; end, wait or pause when the stream says so."""
+        from app.jobs.runner import JobState
+
+        runner = self.runner
+        stream, session = self.stream, self.session
+        if stream is None or session is None:
+            runner._link_pause()
+            return
+        if self._recheck:
+            if not self._asked_since_recheck:
+                self._asked_since_recheck = True
+                session.query_status()
+            return  # _on_status carries on
+        if runner.state is not JobState.RUNNING:
+            return
+        if runner._single_step and stream.in_flight:
+            return
+        if runner._single_step:
+            wait = self._feed_one(stream, session)
+        else:
+            wait = stream.feed(session)
+        self._report(stream)
+        if stream.in_flight:
+            return
+        if wait is not None or stream.sent_all:
+            if not session.settled:
+                session.query_status()  # the answer to this one can show it settled
+                return
+            if wait is not None:
+                self._wait_for_operator(wait)
+            else:
+                assert runner.program is not None
+                runner._write_checkpoint(runner.program, len(runner.program) - 1)
+                runner._finish()
+
+    def _feed_one(self, stream: GcodeStream, session: GcodeSession) -> int | None:
+        """Single step: one operation that sends something, then the runner pauses."""
+        start = stream.next_index
+        while stream.next_index == start and stream.next_index < len(stream.program):
+            op = stream.program[stream.next_index]
+            if op.kind is OpKind.WAIT:
+                return stream.next_index
+            before = stream.next_index
+            text = stream.line_for(before)
+            if text is None:
+                stream.next_index += 1
+                if not stream.pending:
+                    stream.answered = stream.executed = before + 1
+                start = stream.next_index
+                continue
+            if session.send_line(text, "job", before):
+                stream.next_index += 1
+                stream.pending.append(before)
+            return None
+        return None
+
+    def _wait_for_operator(self, index: int) -> None:
+        from app.jobs.runner import JobState
+
+        runner = self.runner
+        assert runner.program is not None and self.stream is not None
+        self._report(self.stream)
+        runner._in_flight = index
+        runner._set_state(JobState.WAITING)
+        runner.waitingForOperator.emit(runner.program[index].message)
+
+    def confirmed(self, index: int) -> None:
+        """The operator confirmed the WAIT at ``index``."""
+        if self.stream is not None:
+            self.stream.rewind(index + 1)
+
+    def stopped(self) -> None:
+        """Abort or failure: the device was reset, so only executed operations count."""
+        self._write_checkpoint(force=True)
+
+    # --- replies ------------------------------------------------------------------
+
+    def _on_ok(self, sent: SentLine) -> None:
+        from app.jobs.runner import JobState
+
+        stream = self.stream
+        runner = self.runner
+        if stream is None or sent.origin != "job" or not stream.acknowledge(sent):
+            return
+        self._report(stream)
+        if runner._single_step and not stream.in_flight:
+            runner._single_step = False
+            runner._set_state(JobState.PAUSED)
+            return
+        if runner.state is JobState.PAUSING and not stream.in_flight:
+            runner._pause_requested = False
+            runner._set_state(JobState.PAUSED)
+            return
+        self.proceed()
+
+    def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
+        from app.jobs.runner import _ACTIVE
+
+        runner = self.runner
+        if self.stream is None or sent.origin != "job" or sent.op_index is None:
+            return
+        if runner.state not in _ACTIVE:
+            return
+        runner._fail(
+            sent.op_index, f"the machine answered error:{code} ({meaning}) to {sent.text!r}"
+        )
+
+    def _on_status(self, report: StatusReport) -> None:
+        from app.jobs.runner import JobState
+
+        stream = self.stream
+        runner = self.runner
+        if stream is None or runner.state not in (JobState.RUNNING, JobState.PAUSING):
+            if stream is not None:
+                stream.status(report.state, report.planner_free)
+            return
+        if self._recheck:
+            self._resume_after_recheck(stream, report)
+            return
+        stream.status(report.state, report.planner_free)
+        self._write_checkpoint(force=False)
+        if not stream.in_flight:
+            self.proceed()
+
+    def _on_reset(self) -> None:
+        """The device reset on its own (a banner): its planner is gone, look before going on."""
+        from app.jobs.runner import _CLOCK_RUNS
+
+        if self.stream is None or self.runner.state not in _CLOCK_RUNS:
+            return
+        stream = self.stream
+        stream.pending.clear()
+        self._recheck = True
+        self._asked_since_recheck = False
+        self.runner.message.emit("The machine reset during the job; checking where it stands…")
+        self.proceed()
+
+    def _resume_after_recheck(self, stream: GcodeStream, report: StatusReport) -> None:
+        runner = self.runner
+        session = self.session
+        assert runner.program is not None and session is not None
+        if report.state not in ("Idle", "Hold"):
+            session.query_status()  # still finishing what it had: ask again
+            return
+        if report.state == "Idle" and stream.at_end_of(stream.answered, report.mpos):
+            start = stream.answered
+            note = "every answered line ran"
+        else:
+            start = stream.executed
+            again = stream.answered - stream.executed
+            note = f"{again} operation(s) may not have run and are sent again"
+        self._recheck = False
+        stream.rewind(start)
+        if report.state == "Hold":
+            session.soft_reset()
+        if start >= len(runner.program):
+            runner._finish()
+            return
+        axes = [a.name for a in runner.station.profile.axes]
+        state = resume_state(runner.program, start, axes)
+        for line in preamble(state, stream.settings):
+            session.send_line(line, "resume")
+        runner.message.emit(
+            f"Resuming at {runner.program[start].source}: {note}; machine set up again "
+            f"({'pen down' if state.pen_down else 'pen up'}, at the program's position)"
+        )
+        self._report(stream)
+        self.proceed()
+
+    # --- progress and checkpoint -------------------------------------------------------
+
+    def _report(self, stream: GcodeStream) -> None:
+        runner = self.runner
+        assert runner.program is not None
+        runner._in_flight = stream.pending[0] if stream.pending else None
+        if stream.answered != runner._done:
+            runner._done = stream.answered
+            if stream.answered:
+                runner.operationDone.emit(stream.answered - 1)
+            runner.progressChanged.emit(runner._done, len(runner.program))
+        self._write_checkpoint(force=False)
+
+    def _write_checkpoint(self, *, force: bool) -> None:
+        runner = self.runner
+        stream = self.stream
+        if stream is None or runner.program is None:
+            return
+        now = runner.station.clock.now()
+        if not force and now - self._checkpoint_at < CHECKPOINT_EVERY_S:
+            return
+        self._checkpoint_at = now
+        runner._write_checkpoint(runner.program, stream.executed - 1)

@@ -1,0 +1,206 @@
+"""How the job runner feeds a program to a G-code machine, and what counts as done there.
+
+A G-code device answers a line when it has *planned* it, not when it has
+moved: with character counting a dozen answered lines may still wait in its
+planner.  So two boundaries are kept:
+
+* **answered** — operations whose line got its ``ok``: the progress bar;
+* **executed** — operations known to have run: every answered line except as
+  many motion lines, counted back from the last answered one, as the status
+  report says are still planned (``Bf:`` free blocks).  A device that does not
+  report its planner only advances this boundary when it is seen idle.  The
+  count is conservative (an arc is one line but many planner blocks), so the
+  boundary may lag, never lead.
+
+The checkpoint holds the executed boundary.  When the link comes back (or the
+station restarts) the runner first looks at the machine: standing idle where
+the last answered operation ends means every answered line ran, and the job
+carries on after it — nothing repeated, nothing skipped; anywhere else (the
+device was reset and lost its planner) it carries on after the executed
+boundary, re-sending the few lines that may not have run.  Before the first
+line goes again the machine is put back into the state the program had
+there: pen up, absolute move to the position, then the pen, distance mode and
+feed of that point.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from app.gcode_session import GcodeSession, SentLine
+from app.jobs.gcode_render import render_operation
+from app.jobs.program import OpKind, Program
+from app.profiles import GcodeSettings, MachineProfile
+
+#: Lines handed to the session beyond those it can send at once: enough that the device's
+#: buffer never runs dry between replies, few enough that a pause or an error strands little.
+LINES_AHEAD = 24
+#: Position agreement (mm) for "the machine stands where the last answered line ends".
+AT_POSITION_MM = 0.01
+
+_MOTION_KINDS = frozenset({OpKind.MOVE, OpKind.GCODE})
+
+
+@dataclass(frozen=True)
+class ResumeState:
+    """The machine state the program expects just before an operation."""
+
+    position: dict[str, float]
+    pen_down: bool
+    relative: bool = False
+    feed: float | None = None
+
+
+def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeState:
+    """Where the machine should be, and how set up, before operation ``index`` runs.
+
+    Programs that know their modal state (G-code files: distance mode, feed)
+    say so through ``resume_state``; for the others it is read from the path.
+    """
+    own = getattr(program, "resume_state", None)
+    if callable(own):
+        state = own(index)
+        if isinstance(state, ResumeState):
+            return state
+    path = program.path(axes)
+    upto = int(np.searchsorted(path.ops, index, side="left"))
+    position: dict[str, float] = {}
+    if upto:
+        row = path.coords[upto - 1]
+        position = {a: float(v) for a, v in zip(axes, row, strict=True) if not math.isnan(v)}
+    downs = program.indices_of(OpKind.PEN_DOWN)
+    ups = program.indices_of(OpKind.PEN_UP)
+    last_down = downs[np.searchsorted(downs, index) - 1] if np.searchsorted(downs, index) else -1
+    last_up = ups[np.searchsorted(ups, index) - 1] if np.searchsorted(ups, index) else -1
+    return ResumeState(position, pen_down=bool(last_down > last_up))
+
+
+def preamble(state: ResumeState, settings: GcodeSettings) -> list[str]:
+    """Lines that put the machine into ``state`` without drawing on the way."""
+    lines = [settings.pen_up, "G90"]
+    if state.position:
+        lines.append("G0 " + " ".join(f"{a}{v:.3f}" for a, v in state.position.items()))
+    if state.pen_down:
+        lines.append(settings.pen_down)
+    if state.relative:
+        lines.append("G91")
+    if state.feed is not None:
+        lines.append(f"G1 F{state.feed:g}")
+    return lines
+
+
+class GcodeStream:
+    """The runner's view of a program being streamed: what to send next, what is done.
+
+    Plain Python on purpose: the runner owns the Qt signals and the job state;
+    this object only keeps the bookkeeping between the session's lines and the
+    program's operations.
+    """
+
+    def __init__(self, program: Program, profile: MachineProfile, start: int) -> None:
+        if profile.gcode is None:
+            raise ValueError(f"{profile.title} is not a G-code machine")
+        self.program = program
+        self.profile = profile
+        self.settings: GcodeSettings = profile.gcode
+        self.next_index = start  # the next operation to hand to the session
+        self.answered = start  # operations [0, answered) have their ok
+        self.executed = start  # operations [0, executed) are known to have run
+        #: Operations sent and not yet answered, in order.
+        self.pending: deque[int] = deque()
+        #: Answered motion operations not known executed, in order (the planner's share).
+        self._planned: deque[int] = deque()
+        self._planner_size = 0
+        self._answered_at_last_report = start
+
+    # --- what to send --------------------------------------------------------
+
+    def line_for(self, index: int) -> str | None:
+        """The text of operation ``index`` for this machine, None when nothing is sent."""
+        return render_operation(self.program[index], self.settings)
+
+    def feed(self, session: GcodeSession) -> int | None:
+        """Hand lines to the session until enough are ahead; returns a WAIT's index met first.
+
+        Operations that send nothing (comments) are done when everything before
+        them is: they are completed here when nothing is pending.
+        """
+        program = self.program
+        while self.next_index < len(program) and session.queued < LINES_AHEAD:
+            index = self.next_index
+            op = program[index]
+            if op.kind is OpKind.WAIT:
+                return index
+            text = self.line_for(index)
+            self.next_index += 1
+            if text is None:
+                if not self.pending:
+                    self.answered = self.executed = index + 1
+                continue
+            if not session.send_line(text, "job", index):
+                self.next_index = index
+                return None
+            self.pending.append(index)
+        return None
+
+    # --- replies -------------------------------------------------------------
+
+    def acknowledge(self, sent: SentLine) -> bool:
+        """An ``ok`` for a job line; False when it is not the one expected (not ours)."""
+        if sent.op_index is None or not self.pending or self.pending[0] != sent.op_index:
+            return False
+        index = self.pending.popleft()
+        # Everything up to the next pending line is answered: comments between count too.
+        upto = self.pending[0] if self.pending else self.next_index
+        self.answered = upto
+        if self.program[index].kind in _MOTION_KINDS:
+            self._planned.append(index)
+        if not self._planned:
+            self.executed = upto
+        return True
+
+    def status(self, state: str, planner_free: int | None) -> None:
+        """A status report: advance the executed boundary as far as it proves."""
+        if state == "Idle" and not self.pending:
+            self._planned.clear()
+            self.executed = self.answered
+        elif planner_free is not None:
+            self._planner_size = max(self._planner_size, planner_free)
+            in_planner = max(self._planner_size - planner_free, 0)
+            answered = self._answered_at_last_report
+            # Lines answered before this report was asked for, minus what is still planned.
+            ran = [i for i in self._planned if i < answered]
+            finished = len(ran) - in_planner
+            for _ in range(max(finished, 0)):
+                self._planned.popleft()
+            self.executed = self._planned[0] if self._planned else self.answered
+        self._answered_at_last_report = self.answered
+
+    @property
+    def in_flight(self) -> bool:
+        return bool(self.pending)
+
+    @property
+    def sent_all(self) -> bool:
+        return self.next_index >= len(self.program) and not self.pending
+
+    def rewind(self, index: int) -> None:
+        """Forget everything unanswered; the next line sent is operation ``index``."""
+        self.pending.clear()
+        self._planned.clear()
+        self.next_index = self.answered = self.executed = index
+        self._answered_at_last_report = index
+
+    def at_end_of(self, index: int, mpos: Sequence[float]) -> bool:
+        """Whether a machine at ``mpos`` stands where operation ``index - 1`` left it."""
+        axes = [a.name for a in self.profile.axes]
+        expected = resume_state(self.program, index, axes).position
+        for i, name in enumerate(axes[: len(mpos)]):
+            if name in expected and abs(expected[name] - mpos[i]) > AT_POSITION_MM:
+                return False
+        return True
