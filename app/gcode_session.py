@@ -206,6 +206,16 @@ class GcodeSession(MachineSession):
         self._realtime(STATUS_QUERY, "?")
         self._idle.queries.append(self.clock.now())
 
+    def request_status(self) -> None:
+        """A status report soon: asks now unless a question is already unanswered."""
+        if not self._idle.queries:
+            self.query_status()
+
+    @property
+    def planner_size(self) -> int:
+        """Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown)."""
+        return self._planner_size
+
     def feed_hold(self) -> None:
         self._realtime(FEED_HOLD, "! (feed hold)")
 
@@ -364,6 +374,7 @@ class GcodeSession(MachineSession):
             elif isinstance(reply, Banner):
                 self.replyText.emit(reply.text)
                 lost = self._forget_stream()
+                self.query_status()  # a board that just started: where is it, how big its planner
                 if lost:
                     self.model.message.emit(
                         f"The device reset: {len(lost)} unanswered line(s) were not run"
@@ -400,8 +411,9 @@ class GcodeSession(MachineSession):
     def _apply_status(self, report: StatusReport) -> None:
         asked = self._idle.queries.pop(0) if self._idle.queries else self.clock.now()
         self.status = report
-        if report.planner_free is not None:
-            self._planner_size = max(self._planner_size, report.planner_free)
+        if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
+            # Free blocks of an idle machine with nothing on its way: the planner's size.
+            self._planner_size = report.planner_free
         self._jog_status_fresh = True
         moving = report.state in _MOVING_STATES
         for axis in range(min(self.axis_count, len(report.mpos))):

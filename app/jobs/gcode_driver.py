@@ -39,6 +39,7 @@ class GcodeDriver:
         old = self.session
         if old is not None:
             try:
+                old.lineSent.disconnect(self._on_sent)
                 old.lineAcknowledged.disconnect(self._on_ok)
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
@@ -47,6 +48,7 @@ class GcodeDriver:
                 pass  # already deleted with its link
         self.session = session if isinstance(session, GcodeSession) else None
         if self.session is not None:
+            self.session.lineSent.connect(self._on_sent)
             self.session.lineAcknowledged.connect(self._on_ok)
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
@@ -96,8 +98,7 @@ class GcodeDriver:
             return
         if wait is not None or stream.sent_all:
             if not session.settled:
-                session.query_status()  # the answer to this one can show it settled
-                return
+                return  # the session's next status report can show it settled
             if wait is not None:
                 self._wait_for_operator(wait)
             else:
@@ -147,6 +148,10 @@ class GcodeDriver:
 
     # --- replies ------------------------------------------------------------------
 
+    def _on_sent(self, sent: SentLine) -> None:
+        if self.stream is not None and sent.origin == "job" and sent.op_index is not None:
+            self.stream.note_written(sent.op_index)
+
     def _on_ok(self, sent: SentLine) -> None:
         from app.jobs.runner import JobState
 
@@ -183,13 +188,21 @@ class GcodeDriver:
         stream = self.stream
         runner = self.runner
         if stream is None or runner.state not in (JobState.RUNNING, JobState.PAUSING):
-            if stream is not None:
-                stream.status(report.state, report.planner_free)
+            # While a lost link is unresolved an idle machine proves nothing: it may have
+            # lost what it had.  The recheck on resume decides.
+            if stream is not None and not self._recheck:
+                stream.status(
+                    report.state,
+                    report.planner_free,
+                    self.session.planner_size if self.session else 0,
+                )
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(report.state, report.planner_free)
+        stream.status(
+            report.state, report.planner_free, self.session.planner_size if self.session else 0
+        )
         self._write_checkpoint(force=False)
         if not stream.in_flight:
             self.proceed()
@@ -212,11 +225,14 @@ class GcodeDriver:
         session = self.session
         assert runner.program is not None and session is not None
         if report.state not in ("Idle", "Hold"):
-            session.query_status()  # still finishing what it had: ask again
-            return
-        if report.state == "Idle" and stream.at_end_of(stream.answered, report.mpos):
-            start = stream.answered
-            note = "every answered line ran"
+            return  # still finishing what it had: the next report decides
+        ran = stream.ran_through(report.mpos) if report.state == "Idle" else None
+        if ran is not None:
+            start = ran
+            unanswered = ran - stream.answered
+            note = "every answered line ran" + (
+                f", and {unanswered} more whose answer was lost" if unanswered else ""
+            )
         else:
             start = stream.executed
             again = stream.answered - stream.executed
@@ -226,6 +242,7 @@ class GcodeDriver:
         if report.state == "Hold":
             session.soft_reset()
         if start >= len(runner.program):
+            runner.message.emit(f"The machine is back: {note}")
             runner._finish()
             return
         axes = [a.name for a in runner.station.profile.axes]

@@ -6,11 +6,13 @@ planner.  So two boundaries are kept:
 
 * **answered** — operations whose line got its ``ok``: the progress bar;
 * **executed** — operations known to have run: every answered line except as
-  many motion lines, counted back from the last answered one, as the status
-  report says are still planned (``Bf:`` free blocks).  A device that does not
-  report its planner only advances this boundary when it is seen idle.  The
-  count is conservative (an arc is one line but many planner blocks), so the
-  boundary may lag, never lead.
+  many lines, counted back from the last answered one, as the status report
+  says blocks are still planned (``Bf:`` free blocks against the idle figure).
+  Any line may hold a block (the plotter plans its pen changes too; GRBL
+  answers a spindle change only once the planner has drained, and an arc is
+  one line but many blocks), so counting every line as one block can make the
+  boundary lag, never lead.  A device that does not report its planner only
+  advances it when it is seen idle.
 
 The checkpoint holds the executed boundary.  When the link comes back (or the
 station restarts) the runner first looks at the machine: standing idle where
@@ -33,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.gcode_session import GcodeSession, SentLine
-from app.jobs.gcode_render import render_operation
+from app.jobs.gcode_render import feed_for, render_operation
 from app.jobs.program import OpKind, Program
 from app.profiles import GcodeSettings, MachineProfile
 
@@ -42,8 +44,6 @@ from app.profiles import GcodeSettings, MachineProfile
 LINES_AHEAD = 24
 #: Position agreement (mm) for "the machine stands where the last answered line ends".
 AT_POSITION_MM = 0.01
-
-_MOTION_KINDS = frozenset({OpKind.MOVE, OpKind.GCODE})
 
 
 @dataclass(frozen=True)
@@ -108,21 +108,31 @@ class GcodeStream:
         self.program = program
         self.profile = profile
         self.settings: GcodeSettings = profile.gcode
+        self._axis_order = tuple(axis.name for axis in profile.axes)
         self.next_index = start  # the next operation to hand to the session
         self.answered = start  # operations [0, answered) have their ok
         self.executed = start  # operations [0, executed) are known to have run
+        self.written = start  # operations [0, written) went out on the wire
         #: Operations sent and not yet answered, in order.
         self.pending: deque[int] = deque()
-        #: Answered motion operations not known executed, in order (the planner's share).
+        #: Answered lines' operations not known executed, in order (the planner's share).
         self._planned: deque[int] = deque()
-        self._planner_size = 0
         self._answered_at_last_report = start
 
     # --- what to send --------------------------------------------------------
 
     def line_for(self, index: int) -> str | None:
-        """The text of operation ``index`` for this machine, None when nothing is sent."""
-        return render_operation(self.program[index], self.settings)
+        """The text of operation ``index`` for this machine, None when nothing is sent.
+
+        A G-code file's line goes as written; other programs' moves are rendered at
+        their slowest axis's top speed, in the profile's axis order.
+        """
+        op = self.program[index]
+        if op.line:
+            return render_operation(op, self.settings)
+        return render_operation(
+            op, self.settings, feed_for(op.target, self.profile), axis_order=self._axis_order
+        )
 
     def feed(self, session: GcodeSession) -> int | None:
         """Hand lines to the session until enough are ahead; returns a WAIT's index met first.
@@ -158,20 +168,20 @@ class GcodeStream:
         # Everything up to the next pending line is answered: comments between count too.
         upto = self.pending[0] if self.pending else self.next_index
         self.answered = upto
-        if self.program[index].kind in _MOTION_KINDS:
-            self._planned.append(index)
-        if not self._planned:
-            self.executed = upto
+        self._planned.append(index)
         return True
 
-    def status(self, state: str, planner_free: int | None) -> None:
-        """A status report: advance the executed boundary as far as it proves."""
+    def status(self, state: str, planner_free: int | None, planner_size: int) -> None:
+        """A status report: advance the executed boundary as far as it proves.
+
+        ``planner_size`` is what the device reported free when idle (0: unknown,
+        then only an idle machine with nothing pending proves anything).
+        """
         if state == "Idle" and not self.pending:
             self._planned.clear()
             self.executed = self.answered
-        elif planner_free is not None:
-            self._planner_size = max(self._planner_size, planner_free)
-            in_planner = max(self._planner_size - planner_free, 0)
+        elif planner_free is not None and planner_size:
+            in_planner = max(planner_size - planner_free, 0)
             answered = self._answered_at_last_report
             # Lines answered before this report was asked for, minus what is still planned.
             ran = [i for i in self._planned if i < answered]
@@ -189,10 +199,33 @@ class GcodeStream:
     def sent_all(self) -> bool:
         return self.next_index >= len(self.program) and not self.pending
 
+    def note_written(self, index: int) -> None:
+        """Operation ``index``'s line left for the device (it may run without an answer back)."""
+        self.written = max(self.written, index + 1)
+
+    def ran_through(self, mpos: Sequence[float]) -> int | None:
+        """After a lost link, for an idle machine at ``mpos``: the operations known to have run.
+
+        The device runs what it received in order, so an idle machine stands
+        where the last line it got leaves it.  The latest operation among those
+        written but unanswered (or the last answered one) that ends there is
+        taken — unless the machine also stands where the executed boundary
+        leaves it, because then "ran them all and came back" cannot be told
+        from "lost them" (a reset), and only the cautious answer is safe.
+        None means: carry on from the executed boundary.
+        """
+        for end in range(max(self.written, self.answered), self.answered - 1, -1):
+            if self.at_end_of(end, mpos):
+                if end != self.executed and self.at_end_of(self.executed, mpos):
+                    return None
+                return end
+        return None
+
     def rewind(self, index: int) -> None:
         """Forget everything unanswered; the next line sent is operation ``index``."""
         self.pending.clear()
         self._planned.clear()
+        self.written = index
         self.next_index = self.answered = self.executed = index
         self._answered_at_last_report = index
 

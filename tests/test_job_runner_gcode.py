@@ -1,0 +1,227 @@
+"""Jobs on the emulated CoreXY plotter: streamed, judged from ok and status, never skipped.
+
+The emulator's event log is the judge: where it moved, with the pen up or
+down, in which order.  The station runs on the harness's manual clock.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.runner import JobRunner, JobState
+from app.machine import LinkState
+from app.profiles import load_profile
+from protocol.transport.loopback import Direction
+from tests.helpers.harness import StationHarness
+
+SQUARE = [(10.0, 10.0), (110.0, 10.0), (110.0, 110.0), (10.0, 110.0), (10.0, 10.0)]
+
+
+@pytest.fixture
+def plotter(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness(load_profile("corexy-plotter"))
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=1)
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def runner(plotter: StationHarness, tmp_path: Path) -> Iterator[JobRunner]:
+    built = JobRunner(plotter.station, tmp_path / "checkpoints")
+    yield built
+    built.deleteLater()
+
+
+def at(line: int) -> SourceRef:
+    return SourceRef("square", line)
+
+
+def square_program(wait: bool = False) -> Program:
+    """Pen up, to the first corner, pen down, round the square, pen up, home."""
+    ops: list[Operation] = [Operation(OpKind.PEN_UP, at(1))]
+    ops.append(move(at(2), X=SQUARE[0][0], Y=SQUARE[0][1]))
+    ops.append(Operation(OpKind.PEN_DOWN, at(3)))
+    for n, (x, y) in enumerate(SQUARE[1:], start=4):
+        ops.append(move(at(n), X=x, Y=y))
+    ops.append(Operation(OpKind.PEN_UP, at(8)))
+    if wait:
+        ops.append(Operation(OpKind.WAIT, at(9), message="change the pen"))
+    ops.append(Operation(OpKind.COMMENT, at(10), message="back home"))
+    ops.append(move(at(11), X=0.0, Y=0.0))
+    return Program("square", tuple(ops))
+
+
+def drawn(plotter: StationHarness) -> list[tuple[float, float, bool]]:
+    """Every move the emulator finished: (x, y, pen down)."""
+    return [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3), bool(e["pen"]))
+        for e in plotter.gcode_emulator.event_log
+        if e["event"] == "move"
+    ]
+
+
+EXPECTED = [
+    (10.0, 10.0, False),
+    (110.0, 10.0, True),
+    (110.0, 110.0, True),
+    (10.0, 110.0, True),
+    (10.0, 10.0, True),
+    (0.0, 0.0, False),
+]
+
+
+def run_to_end(plotter: StationHarness, runner: JobRunner, timeout: float = 60.0) -> None:
+    plotter.run_until(
+        lambda: runner.state in (JobState.DONE, JobState.FAILED, JobState.PAUSED), timeout
+    )
+
+
+def state_of(runner: JobRunner) -> JobState:
+    return runner.state
+
+
+def test_a_program_draws_in_order_with_the_pen_where_it_says(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    program = square_program()
+    assert runner.load(program) == []
+    runner.start()
+    run_to_end(plotter, runner)
+    assert runner.state is JobState.DONE
+    assert drawn(plotter) == EXPECTED
+    # Done means drawn: the machine stands at the last target, idle.
+    assert plotter.gcode_emulator.state == "Idle"
+    assert runner.done == len(program)
+    written = b"".join(plotter.written)
+    assert written.count(b"M4\n") == 1 and written.count(b"M3\n") == 2  # the plotter's pen
+
+
+def test_a_long_program_streams_within_the_buffer_and_ends_when_drawn(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    ops = [Operation(OpKind.PEN_DOWN, at(1))]
+    ops += [move(at(n + 2), X=10 + (n % 20) * 0.5, Y=10 + (n // 20) * 0.5) for n in range(300)]
+    program = Program("zigzag", tuple(ops))
+    assert runner.load(program) == []
+    runner.start()
+    most_in_flight = 0
+    while runner.state is JobState.RUNNING:
+        session = plotter.gcode_session
+        most_in_flight = max(most_in_flight, session.streamer.in_flight)
+        plotter.step()
+    assert runner.state is JobState.DONE
+    assert most_in_flight > 3  # several lines in the device at once: not ping-pong
+    assert plotter.gcode_emulator.max_unacknowledged <= 127
+    assert len(drawn(plotter)) == 300
+    assert drawn(plotter)[-1] == (10 + 19 * 0.5, 10 + 14 * 0.5, True)
+
+
+def test_an_error_reply_stops_the_job_and_names_the_line(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    def spoil(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_DEVICE:
+            return data.replace(b"G1 X110.000 Y110.000", b"G7 X110.000 Y110.000")
+        return data
+
+    plotter.loopback.set_manipulator(spoil)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    assert runner.load(square_program()) == []
+    runner.start()
+    run_to_end(plotter, runner)
+    assert runner.state is JobState.FAILED
+    failure = messages[-1]
+    assert "square:5" in failure and "error:20" in failure, failure
+    plotter.run(3.0)
+    # Stopped there: the corner after it may have begun, the way home never ran.
+    assert (0.0, 0.0, False) not in drawn(plotter)
+    assert plotter.gcode_emulator.state in ("Idle", "Hold")
+    assert runner.resume_available is not None and runner.resume_available <= 4
+
+
+def test_a_cut_link_resumes_after_the_last_line_that_ran_nothing_twice(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    assert runner.load(square_program()) == []
+    runner.start()
+    plotter.run_until(lambda: len(drawn(plotter)) >= 2, timeout=20)  # drawing the square
+    plotter.loopback.sever("cable pulled")
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+    plotter.run(8.0)  # the machine runs what it had planned, alone
+    plotter.loopback.set_manipulator(None)
+    plotter.run_until(lambda: plotter.station.model.link_state is LinkState.CONNECTED, timeout=30)
+    runner.resume()
+    run_to_end(plotter, runner)
+    assert state_of(runner) is JobState.DONE
+    assert any("every answered line ran" in m for m in messages), messages
+    moves = drawn(plotter)
+    # The way back to where it stopped is a pen-up travel; the drawing itself is exact.
+    assert [m for m in moves if m[2]] == [m for m in EXPECTED if m[2]]
+    assert moves[-1] == EXPECTED[-1]
+
+
+def test_a_machine_that_lost_its_planner_gets_the_lines_again_none_skipped(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    assert runner.load(square_program()) == []
+    runner.start()
+    plotter.run_until(lambda: len(drawn(plotter)) >= 2, timeout=20)  # drawing the square
+    plotter.loopback.sever("cable pulled")
+    plotter.gcode_emulator.soft_reset()  # e.g. a board that resets when the port reopens
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+    plotter.run_until(lambda: plotter.station.model.link_state is LinkState.CONNECTED, timeout=30)
+    runner.resume()
+    run_to_end(plotter, runner)
+    assert state_of(runner) is JobState.DONE
+    assert any("sent again" in m for m in messages), messages
+    strokes = [m for m in drawn(plotter) if m[2]]
+    # Every stroke of the square was drawn (some perhaps twice), none missed.
+    for expected in (m for m in EXPECTED if m[2]):
+        assert expected in strokes
+
+
+def test_a_wait_asks_the_operator_only_once_the_machine_stands(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    asked: list[str] = []
+    runner.waitingForOperator.connect(asked.append)
+    assert runner.load(square_program(wait=True)) == []
+    runner.start()
+    plotter.run_until(lambda: runner.state is JobState.WAITING, timeout=30)
+    assert asked == ["change the pen"]
+    assert plotter.gcode_emulator.state == "Idle"
+    assert drawn(plotter) == EXPECTED[:-1]  # the square is finished, home not begun
+    plotter.run(1.0)
+    assert drawn(plotter) == EXPECTED[:-1]
+    runner.confirm()
+    run_to_end(plotter, runner)
+    assert runner.state is JobState.DONE
+    assert drawn(plotter) == EXPECTED
+
+
+def test_pause_lets_the_lines_out_finish_and_resume_carries_on(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    assert runner.load(square_program()) == []
+    runner.start()
+    plotter.run_until(lambda: runner.done >= 3, timeout=20)
+    runner.pause()
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=20)
+    paused_at = runner.done
+    plotter.run(5.0)
+    assert runner.done == paused_at
+    runner.resume()
+    run_to_end(plotter, runner)
+    assert state_of(runner) is JobState.DONE
+    assert drawn(plotter) == EXPECTED
