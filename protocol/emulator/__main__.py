@@ -69,6 +69,7 @@ import select
 import signal
 import sys
 import threading
+import time
 import tty
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -96,6 +97,7 @@ from protocol.emulator.gcode_firmware import event_log_line as gcode_log_line
 from protocol.emulator.stage_firmware import ExecutedCommand as StageCommand
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import ADC_MAX, Usb3Firmware
+from protocol.emulator.wire import PacedWire
 from protocol.stage.codec import CommandId
 from protocol.usb3.codec import AxisId, StepSize, Thread
 
@@ -503,33 +505,47 @@ def pump(
     outbox: bytearray,
     timeout: float,
     controls: ControlChannel | None = None,
+    wire: PacedWire | None = None,
 ) -> None:
     """One loop iteration: host bytes and control lines in, cycles up to now, replies out."""
-    watched = [fd]
+    watched = []
+    allowed = 4096
+    if wire is not None:
+        allowed = wire.readable(time.monotonic())
+        timeout = min(timeout, wire.wait_for_byte())
+    if allowed > 0:
+        watched.append(fd)
     if controls is not None and controls.open:
         watched.append(controls.fd)
     readable, _, _ = select.select(watched, [], [], timeout)
     if fd in readable:
         try:
-            data = os.read(fd, 4096)
+            data = os.read(fd, allowed)
         except BlockingIOError:
             data = b""
+        if wire is not None:
+            wire.took(len(data))
         firmware.receive(data)
     if controls is not None and controls.fd in readable:
         controls.read()
     firmware.run_until(clock.now())
-    _flush(fd, outbox)
+    _flush(fd, outbox, wire)
 
 
-def _flush(fd: int, outbox: bytearray) -> None:
+def _flush(fd: int, outbox: bytearray, wire: PacedWire | None = None) -> None:
     while outbox:
+        room = len(outbox) if wire is None else wire.writable(time.monotonic())
+        if room <= 0:
+            return  # the rest goes as the line frees up
         try:
-            written = os.write(fd, outbox)
+            written = os.write(fd, outbox[:room])
         except BlockingIOError:
             # Nobody reads the terminal: stale echoes are worth nothing, drop them.
             outbox.clear()
             return
         del outbox[:written]
+        if wire is not None:
+            wire.gave(written)
 
 
 def serve(
@@ -540,13 +556,14 @@ def serve(
     poll: float = POLL_SECONDS,
     controls: ControlChannel | None = None,
     log: CommandLogFile | None = None,
+    wire: PacedWire | None = None,
 ) -> None:
     """Run ``firmware`` against the terminal ``fd`` until ``should_stop()``."""
     outbox = bytearray()
     firmware.set_output(outbox.extend)
     try:
         while not should_stop():
-            pump(firmware, fd, clock, outbox, poll, controls)
+            pump(firmware, fd, clock, outbox, poll, controls, wire)
             if log is not None:
                 log.write_new()
     finally:
@@ -593,12 +610,14 @@ def run_on_pty(
     controls: bool = False,
     time_scale: float = 1.0,
     log_path: Path | None = None,
+    baud: int | None = None,
 ) -> int:
     """Serve ``profile``'s firmware on a new pty until SIGTERM or SIGINT; the exit status.
 
     With ``controls`` standard input carries control lines (see :class:`ControlChannel`);
     ``time_scale`` runs the firmware's clock that many times faster than real time;
-    ``log_path`` gets a line per executed command (see :class:`CommandLogFile`).
+    ``log_path`` gets a line per executed command (see :class:`CommandLogFile`);
+    ``baud`` paces the pty like a serial line of that speed (see :class:`PacedWire`).
     """
     stop = threading.Event()
 
@@ -629,6 +648,7 @@ def run_on_pty(
             (
                 "; control lines on stdin (help lists them)" if controls else "",
                 f"; time runs x{time_scale:g}" if time_scale != 1.0 else "",
+                f"; paced at {baud} baud" if baud else "",
             )
         )
         print(
@@ -639,7 +659,8 @@ def run_on_pty(
         channel = ControlChannel(firmware, control_fd) if control_fd is not None else None
         log = CommandLogFile(firmware, log_path) if log_path is not None else None
         try:
-            serve(firmware, master, clock, stop.is_set, controls=channel, log=log)
+            wire = PacedWire(baud, time.monotonic()) if baud else None
+            serve(firmware, master, clock, stop.is_set, controls=channel, log=log, wire=wire)
         finally:
             if log is not None:
                 log.close()
@@ -697,6 +718,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         metavar="PATH",
         help="append one line per command the firmware executes to PATH",
     )
+    parser.add_argument(
+        "--baud",
+        type=int,
+        metavar="N",
+        help=(
+            "pace the pty like a serial line at N baud, 10 bits a byte (a pty has no speed "
+            "of its own; for streaming measurements)"
+        ),
+    )
     args = parser.parse_args(argv)
     if not args.pty and args.link is None:
         parser.print_usage(sys.stderr)
@@ -711,6 +741,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         controls=args.controls,
         time_scale=args.time_scale,
         log_path=args.log,
+        baud=args.baud if args.baud and args.baud > 0 else None,
     )
 
 
