@@ -21,6 +21,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from protocol.clock import ManualClock  # noqa: E402
+from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
 
 if TYPE_CHECKING:
     from app.jobs.program import Program
@@ -581,6 +582,91 @@ def bench_string_art() -> list[str]:
     ]
 
 
+def _write_plotter_gcode(path: Path, lines: int) -> None:
+    """Typical plotter G-code: ``G1 X12.345 Y67.890 F3000`` strokes, the pen up/down every 50."""
+    import random
+
+    rng = random.Random(1)
+    out = ["G21", "G90"]
+    while len(out) < lines:
+        out.append(f"G0 X{rng.uniform(0, 290):.3f} Y{rng.uniform(0, 190):.3f}")
+        out.append("M3 S1000")
+        out += [
+            f"G1 X{rng.uniform(0, 290):.3f} Y{rng.uniform(0, 190):.3f} F3000" for _ in range(47)
+        ]
+        out.append("M5")
+    path.write_text("\n".join(out[:lines]) + "\n", encoding="ascii")
+
+
+#: Run in a fresh interpreter so its peak RSS is the load's own, not the benchmarks' before it.
+_GCODE_CHILD = """
+import json, resource, sys, time
+from pathlib import Path
+sys.path.insert(0, sys.argv[2])
+from app.jobs.gcode_estimate import estimate_gcode
+from app.jobs.loaders import JobOptions, load_job
+from app.profiles import load_profile
+from widgets.job_preview import ProgramGeometry
+
+profile = load_profile("grbl-plotter")
+options = JobOptions(gcode=profile.gcode, machine_title=profile.title)
+imports_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+start = time.perf_counter()
+program = load_job(Path(sys.argv[1]), [axis.name for axis in profile.axes], options)
+loaded = time.perf_counter()
+geometry = ProgramGeometry(program, "X", "Y")
+drawn = time.perf_counter()
+peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+estimate = estimate_gcode(program, profile)
+timed = time.perf_counter()
+print(json.dumps({
+    "operations": len(program), "load": loaded - start, "geometry": drawn - loaded,
+    "estimate": timed - drawn, "imports_mb": imports_mb, "peak_mb": peak_mb,
+    "work_points": int(len(geometry.work.x)), "model_hours": estimate.total_s / 3600,
+}))
+"""
+
+
+def bench_gcode_load_1m() -> list[str]:
+    """Load and preview geometry of a synthetic 1,000,000-line plotter file (goal: <= 5 s, 500 MB).
+
+    The file is written to a temporary directory and read by a separate
+    interpreter, whose peak RSS (``ru_maxrss``) covers the imports (Qt,
+    pyqtgraph, numpy), the load and the preview geometry; the figure after
+    the imports is given too, so the load's own share is plain.
+    """
+    import json
+    import subprocess
+    import tempfile
+
+    lines = 1_000_000
+    with tempfile.TemporaryDirectory() as directory:
+        path = Path(directory) / "synthetic-1m.gcode"
+        _write_plotter_gcode(path, lines)
+        size_mb = path.stat().st_size / 1e6
+        runs = []
+        for _ in range(3):
+            child = subprocess.run(
+                [sys.executable, "-c", _GCODE_CHILD, str(path), str(ROOT)],
+                check=True,
+                capture_output=True,
+                text=True,
+                env={**os.environ, "QT_QPA_PLATFORM": "offscreen"},
+            )
+            runs.append(json.loads(child.stdout.strip().splitlines()[-1]))
+    best = min(runs, key=lambda r: r["load"] + r["geometry"])
+    total = best["load"] + best["geometry"]
+    return [
+        f"gcode_load_1m: {lines:,} lines ({size_mb:.1f} MB, {best['operations']:,} operations): "
+        f"load {best['load']:.2f} s + preview geometry {best['geometry']:.2f} s = {total:.2f} s "
+        f"(goal <= 5 s; best of 3, median load "
+        f"{statistics.median(r['load'] for r in runs):.2f} s); "
+        f"peak RSS {best['peak_mb']:.0f} MB ({best['imports_mb']:.0f} MB after imports; "
+        f"goal <= 500 MB); estimate {best['estimate']:.2f} s "
+        f"({best['model_hours']:.1f} h of plotting)"
+    ]
+
+
 BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_decode,
     bench_emulated_move,
@@ -593,6 +679,8 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_dry_run,
     bench_drill_order,
     bench_string_art,
+    bench_gcode_load_1m,
+    bench_gcode_streaming,
 ]
 
 

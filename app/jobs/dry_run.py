@@ -15,6 +15,10 @@ plus the control cycle the echo waits for.  That overhead is added per move;
 WAIT and COMMENT operations cost nothing here (the operator's time is not the
 machine's).
 
+G-code machines (``gcode`` dialect) plan their own moves from feeds and
+accelerations, and their files can be a million lines long, so they are
+timed by :func:`app.jobs.gcode_estimate.estimate_gcode` from numpy columns.
+
 The PCB drill (``drill`` dialect) has no ramps and runs one procedure at a
 time, so it is timed in closed form instead (:func:`estimate_drill`): every
 axis steps at one constant period per microstep, X and Y move one after the
@@ -26,9 +30,12 @@ started at the device's next control cycle).
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from decimal import ROUND_HALF_UP, Decimal
+
+import numpy as np
+import numpy.typing as npt
 
 from app.jobs.program import OpKind, Program
 from app.machine import MachineModel, ParameterState
@@ -67,13 +74,15 @@ class Estimate:
     """Model times of a program: ``cumulative_s[i]`` is when operation ``i`` ends."""
 
     total_s: float
-    cumulative_s: tuple[float, ...]
+    #: A tuple, or a numpy array for G-code programs (a million floats as objects would not do).
+    cumulative_s: Sequence[float] | npt.NDArray[np.float64]
 
     def remaining_after(self, done: int) -> float:
         """Model time still to go once the first ``done`` operations are complete."""
-        if done <= 0 or not self.cumulative_s:
+        if done <= 0 or len(self.cumulative_s) == 0:
             return self.total_s
-        return max(self.total_s - self.cumulative_s[min(done, len(self.cumulative_s)) - 1], 0.0)
+        ended = float(self.cumulative_s[min(done, len(self.cumulative_s)) - 1])
+        return max(self.total_s - ended, 0.0)
 
 
 def parameters_from_model(model: MachineModel) -> dict[str, dict[int, int]]:
@@ -106,10 +115,16 @@ def estimate(
     session has selected.  Axes the profile lacks are ignored here: the
     runner's pre-check refuses such programs before this matters.  A drill
     profile is timed by :func:`estimate_drill` (``parameters``, ``period_s``
-    and ``fast`` do not apply to it).
+    and ``fast`` do not apply to it), a G-code profile by
+    :func:`~app.jobs.gcode_estimate.estimate_gcode`.
     """
     if profile.dialect == "drill":
         return estimate_drill(program, profile, start=start)
+    if profile.dialect == "gcode":
+        # Imported here: gcode_estimate builds on this module's Estimate.
+        from app.jobs.gcode_estimate import estimate_gcode
+
+        return estimate_gcode(program, profile, start=start)
     axes: dict[str, Axis] = {}
     speeds: dict[str, float] = {}
     for axis_profile in profile.axes:

@@ -17,9 +17,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from app.jobs.excellon import build_drill_program, read_drill_file, sniff_dri, sniff_excellon
+from app.jobs.gcode import load_gcode, sniff_gcode
 from app.jobs.program import JobFileError, Program, load_point_list
 from app.jobs.string_art import StringArtParams, sniff_string_art
 from app.jobs.string_art_program import load_string_art_program
+from app.profiles import GcodeSettings
 
 
 @dataclass(frozen=True)
@@ -28,6 +30,14 @@ class JobOptions:
 
     draw: bool = False  # drill files: draw each hole with the pen instead of drilling it
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
+    #: G-code: pen lines of another flavour are sent as the machine's own pen commands.
+    translate_pen: bool = True
+    #: G-code: lines the machine cannot execute become comments instead of refusing the job.
+    skip_unsupported: bool = False
+    #: G-code: the machine's repertoire and pen conventions (None: a GRBL board).
+    gcode: GcodeSettings | None = None
+    #: G-code: the machine's name in refusals ("the CoreXY pen plotter cannot execute M18").
+    machine_title: str = ""
     #: String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount).
     string_art: StringArtParams | None = None
 
@@ -196,4 +206,24 @@ STRING_ART = register_loader(
     (".txt",),
     load_string_art_job,
     sniff_string_art,
+)
+
+
+# --- G-code ----------------------------------------------------------------------------
+
+
+def load_gcode_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
+    """A G-code file checked against the machine's repertoire (``options.gcode``)."""
+    return load_gcode(
+        path,
+        axis_names,
+        options.gcode,
+        translate_pen=options.translate_pen,
+        skip_unsupported=options.skip_unsupported,
+        machine_title=options.machine_title,
+    )
+
+
+GCODE = register_loader(
+    "G-code", (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap"), load_gcode_job, sniff_gcode
 )
