@@ -22,10 +22,11 @@ message with a Continue button.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QObject, Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -34,6 +35,7 @@ from PySide6.QtWidgets import (
     QFrame,
     QHBoxLayout,
     QLabel,
+    QMenu,
     QPlainTextEdit,
     QProgressBar,
     QPushButton,
@@ -45,11 +47,20 @@ from PySide6.QtWidgets import (
 from app.jobs.loaders import JobOptions, file_dialog_filter, load_job
 from app.jobs.program import JobFileError, Program
 from app.jobs.runner import JobRunner, JobState
+from app.jobs.string_art import NeedsNailCount, StringArtParams
+from app.jobs.string_art_export import export_gcode, export_sd_files
+from app.jobs.string_art_program import StringArtProgram
 from app.station import Station
 from widgets.job_preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
+from widgets.string_art_board import BoardAsker
+from widgets.string_art_board import ask_board as ask_board_dialog
 from widgets.style import monospace_font
 
 MESSAGE_LINES = 200
+#: Files larger than this are read on a worker thread when opened from the dialog.
+BACKGROUND_BYTES = 2_000_000
+#: Files larger than this are not kept in memory for showing source lines.
+SOURCE_LINES_MAX_BYTES = 8_000_000
 
 
 def _banner_style(name: str, background: str, border: str) -> str:
@@ -81,6 +92,7 @@ class JobsDock(QDockWidget):
         *,
         confirm: Callable[[str], bool] | None = None,
         throttle_ms: float | None = None,
+        ask_board: BoardAsker | None = None,
     ) -> None:
         super().__init__("Jobs", parent)
         self.setObjectName("jobs_dock")
@@ -88,6 +100,10 @@ class JobsDock(QDockWidget):
         self.runner = runner
         self._path: Path | None = None
         self._source_lines: list[str] = []
+        self._ask_board: BoardAsker = ask_board or ask_board_dialog(self)
+        #: The board the operator gave for a bare nail list (kept while the file is re-read).
+        self._board: StringArtParams | None = None
+        self._loading: _Loading | None = None
         self.preview = JobPreview(
             station,
             runner,
@@ -155,13 +171,38 @@ class JobsDock(QDockWidget):
         row.addWidget(self.step_combo)
         self.draw_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
+        # G-code files: other flavours' pen commands, and lines the machine cannot run.
+        self.translate_pen_check = QCheckBox("Pen lines as this machine's")
+        self.translate_pen_check.setObjectName("job_translate_pen")
+        self.translate_pen_check.setChecked(True)
+        self.translate_pen_check.setToolTip(
+            "G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine's own "
+            "pen-up / pen-down commands"
+        )
+        self.skip_check = QCheckBox("Skip lines it cannot run")
+        self.skip_check.setObjectName("job_skip_unsupported")
+        self.skip_check.setToolTip(
+            "G-code: lines this machine cannot execute (e.g. M18) are listed and left out "
+            "instead of refusing the job"
+        )
+        gcode = self.station.profile.dialect == "gcode"
+        for check in (self.translate_pen_check, self.skip_check):
+            check.setVisible(gcode)
+            check.toggled.connect(self._options_changed)
+            row.insertWidget(row.count() - 3, check)
         return row
 
     @property
     def options(self) -> JobOptions:
+        profile = self.station.profile
         return JobOptions(
             draw=self.draw_check.isChecked(),
             excellon_step_inch=float(self.step_combo.currentData()),
+            translate_pen=self.translate_pen_check.isChecked(),
+            skip_unsupported=self.skip_check.isChecked(),
+            gcode=profile.gcode,
+            machine_title=profile.title,
+            string_art=self._board,
         )
 
     def _options_changed(self, *_args: object) -> None:
@@ -185,6 +226,12 @@ class JobsDock(QDockWidget):
             "Open a job file (point list; the type is told by its content)",
             self.ask_open,
         )
+        self.export_button = self._button(
+            "Export…",
+            "job_export",
+            "Write the loaded job out: G-code, or a string-art job's SD-card files",
+            self.ask_export,
+        )
         self.file_label = QLabel("no job loaded")
         self.file_label.setObjectName("job_file")
         self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -207,6 +254,7 @@ class JobsDock(QDockWidget):
             "QPushButton:enabled { color: #b00020; font-weight: bold; }"
         )
         bar.addWidget(self.open_button)
+        bar.addWidget(self.export_button)
         bar.addWidget(self.file_label, 1)
         for button in (
             self.run_button,
@@ -295,26 +343,129 @@ class JobsDock(QDockWidget):
     def ask_open(self) -> None:
         path, _ = QFileDialog.getOpenFileName(self, "Open a job", "", file_dialog_filter())
         if path:
-            self.open_path(Path(path))
+            self.open_path(Path(path), background=True)
 
-    def open_path(self, path: Path) -> bool:
-        """Load the job in ``path`` into the runner; False (and says why) when it is not loaded."""
+    def open_path(self, path: Path, *, background: bool = False) -> bool:
+        """Load the job in ``path`` into the runner; False (and says why) when it is not loaded.
+
+        With ``background`` a large file is read on a worker thread (a million G-code lines
+        take seconds) and the window stays responsive; the result arrives later, and True
+        only means the reading began.
+        """
         if self.runner.state in ACTIVE_STATES:
             self.say(f"{path.name}: not opened — a job is under way (abort it first)")
             return False
+        if self._loading is not None:
+            self.say(f"{path.name}: not opened — still reading {self._loading.path.name}")
+            return False
+        if path != self._path:
+            self._board = None
         axis_names = [axis.name for axis in self.station.profile.axes]
         self._path = path
+        if background and _size(path) > BACKGROUND_BYTES:
+            self._loading = _Loading(path, axis_names, self.options, self)
+            self._loading.done.connect(self._loaded)
+            self.file_label.setText(f"reading <b>{path.name}</b>…")
+            self.open_button.setEnabled(False)
+            self._loading.start()
+            return True
         try:
             program = load_job(path, axis_names, self.options)
         except JobFileError as exc:
-            self.say(f"{exc} — not loaded")
-            return False
+            return self._refused(path, exc)
+        return self._accept(path, program)
+
+    def _loaded(self, path: Path, result: object) -> None:
+        """The worker finished reading ``path`` (GUI thread)."""
+        loading, self._loading = self._loading, None
+        if loading is not None:
+            loading.join()
+        if isinstance(result, JobFileError):
+            self._refused(path, result)
+        elif isinstance(result, Program):
+            self._accept(path, result)
+        else:
+            self.say(f"{path.name}: not loaded — {result}")
+        self._program_changed()
+
+    def _refused(self, path: Path, exc: JobFileError) -> bool:
+        if isinstance(exc, NeedsNailCount) and self._board is None:
+            board = self._ask_board(exc)
+            if board is not None:
+                self._board = board
+                return self.open_path(path)
+        self.say(f"{exc} — not loaded")
+        return False
+
+    def _accept(self, path: Path, program: Program) -> bool:
         if self.runner.load(program):
-            return False  # the runner said which operations, line by line (its message)
+            # The runner said which operations, line by line (its message).  The drawing is
+            # still worth seeing — where it leaves the travel, what it would do — so the
+            # preview shows it while Run stays off.
+            self.preview.set_program(program)
+            self.file_label.setText(f"<b>{program.name}</b> — refused, preview only")
+            self.file_label.setToolTip(str(program.source) if program.source else program.name)
+            return False
         self.say(f"{path.name}: {len(program)} operations loaded")
+        summary = getattr(program, "summary", None)
+        if callable(summary):
+            self.say(f"{path.name}: {summary()}")
         for note in program.notes:
             self.say(f"{path.name}: {note}")
         self._program_changed()
+        return True
+
+    def ask_export(self) -> None:
+        program = self.runner.program
+        if program is None:
+            return
+        menu = QMenu(self)
+        if isinstance(program, StringArtProgram):
+            menu.addAction("SD-card files (param.txt, poradi.txt)…", self._ask_export_sd)
+        if self.station.profile.gcode is not None:
+            menu.addAction("G-code program…", self._ask_export_gcode)
+        if menu.isEmpty():
+            self.say("Nothing to export for this job on this machine")
+            return
+        menu.exec(self.export_button.mapToGlobal(self.export_button.rect().bottomLeft()))
+
+    def _ask_export_sd(self) -> None:
+        directory = QFileDialog.getExistingDirectory(self, "Folder for param.txt and poradi.txt")
+        if directory:
+            self.export_sd(Path(directory))
+
+    def _ask_export_gcode(self) -> None:
+        program = self.runner.program
+        name = f"{program.name}.gcode" if program is not None else "job.gcode"
+        path, _ = QFileDialog.getSaveFileName(self, "Export G-code", name, "G-code (*.gcode)")
+        if path:
+            self.export_gcode(Path(path))
+
+    def export_sd(self, directory: Path) -> bool:
+        """The string-art job as its standalone firmware reads it from an SD card."""
+        program = self.runner.program
+        if not isinstance(program, StringArtProgram):
+            self.say("Only string-art jobs have SD-card files")
+            return False
+        try:
+            param, poradi = export_sd_files(program.job, directory)
+        except OSError as exc:
+            self.say(f"SD-card files not written: {exc}")
+            return False
+        self.say(f"Wrote {param} and {poradi}")
+        return True
+
+    def export_gcode(self, path: Path) -> bool:
+        """The loaded job as the G-code this machine would be sent."""
+        program = self.runner.program
+        if program is None:
+            return False
+        try:
+            export_gcode(program, path, self.station.profile)
+        except (OSError, ValueError) as exc:
+            self.say(f"G-code not written: {exc}")
+            return False
+        self.say(f"Wrote {path}")
         return True
 
     def say(self, text: str) -> None:
@@ -384,7 +535,8 @@ class JobsDock(QDockWidget):
         lock = self.station.model.motion_lock_reason()
         can_move = lock is None
         offer = self.runner.resume_available is not None
-        self.open_button.setEnabled(state not in ACTIVE_STATES)
+        self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        self.export_button.setEnabled(loaded)
         # With an interrupted run on offer, Run from the start would repeat operations:
         # the operator chooses Resume or Discard first.
         self.run_button.setEnabled(
@@ -451,9 +603,51 @@ class JobsDock(QDockWidget):
         self.say(f"waiting for the operator: {text}")
 
 
+def _size(path: Path) -> int:
+    try:
+        return path.stat().st_size
+    except OSError:
+        return 0
+
+
+class _Loading(QObject):
+    """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
+
+    done = Signal(object, object)  # path, Program or JobFileError (or another exception)
+
+    def __init__(
+        self, path: Path, axis_names: list[str], options: JobOptions, parent: QObject
+    ) -> None:
+        super().__init__(parent)
+        self.path = path
+        self._axis_names = axis_names
+        self._options = options
+        self._thread = threading.Thread(target=self._run, name="job-loader", daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def join(self) -> None:
+        self._thread.join()
+
+    def _run(self) -> None:
+        result: object
+        try:
+            result = load_job(self.path, self._axis_names, self._options)
+        except JobFileError as exc:
+            result = exc
+        except Exception as exc:  # a loader bug must not take the window down
+            result = f"{type(exc).__name__}: {exc}"
+        self.done.emit(self.path, result)
+
+
 def _read_lines(path: Path | None) -> list[str]:
-    """The job file's lines, for showing an operation's source as written (empty if unreadable)."""
-    if path is None:
+    """The job file's lines, for showing an operation's source as written (empty if unreadable).
+
+    Skipped for very large files: the operations carry their own text, and a copy of
+    a million lines is memory for nothing.
+    """
+    if path is None or _size(path) > SOURCE_LINES_MAX_BYTES:
         return []
     try:
         return path.read_text(encoding="utf-8", errors="replace").splitlines()

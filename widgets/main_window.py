@@ -66,7 +66,10 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("PageUp / PageDown", "Jog Z while held, on machines with a Z axis"),
     ("Shift (held)", "Jog and move at the other speed"),
     ("Esc", "Stop everything, from anywhere in the window"),
-    ("Alt+M / A / R / D / L", "Manual / Absolute / Relative / Dynamics / Link page"),
+    (
+        "Alt+M / A / R / D / L / X / G",
+        "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page",
+    ),
     ("Ctrl+J", "Show or hide the jobs dock"),
     ("Ctrl+T", "Show or hide the telemetry plots"),
     ("Shift+V", "Show or hide the developer pane"),

@@ -1,0 +1,154 @@
+"""Jobs dock on the G-code machines: options, the board question, exports, background reading."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from pytestqt.qtbot import QtBot
+
+from app.jobs.runner import JobRunner, JobState
+from app.jobs.string_art import NeedsNailCount, StringArtParams, read_string_art
+from app.profiles import load_profile
+from tests.helpers.harness import StationHarness
+from widgets.jobs_dock import JobsDock
+
+LEFT = Qt.MouseButton.LeftButton
+
+
+def make_dock(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path, asked: list[NeedsNailCount] | None = None
+) -> JobsDock:
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+
+    def board(needs: NeedsNailCount) -> StringArtParams | None:
+        if asked is not None:
+            asked.append(needs)
+        return StringArtParams(0, 160, 20.0)
+
+    dock = JobsDock(
+        harness.station, runner, confirm=lambda _t: False, throttle_ms=0, ask_board=board
+    )
+    qtbot.addWidget(dock)
+    dock.resize(820, 640)
+    dock.show()
+    return dock
+
+
+@pytest.fixture
+def plotter(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness(load_profile("corexy-plotter"))
+    harness.connect()
+    harness.run(0.3)
+    yield harness
+    harness.close()
+
+
+@pytest.fixture
+def winder(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = StationHarness(load_profile("string-art"))
+    harness.connect()
+    harness.run(0.3)
+    yield harness
+    harness.close()
+
+
+def messages(dock: JobsDock) -> str:
+    return dock.messages.toPlainText()
+
+
+def test_gcode_options_show_on_a_gcode_machine_only(
+    qtbot: QtBot, plotter: StationHarness, harness: StationHarness, tmp_path: Path
+) -> None:
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert dock.translate_pen_check.isVisible() and dock.skip_check.isVisible()
+    stage = make_dock(qtbot, harness, tmp_path / "stage")
+    assert not stage.translate_pen_check.isVisible()
+
+
+def test_a_file_the_plotter_cannot_run_is_refused_line_by_line_until_skipping_is_chosen(
+    qtbot: QtBot, plotter: StationHarness, shared_dir: Path, tmp_path: Path
+) -> None:
+    bunny = shared_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert not dock.open_path(bunny)
+    text = messages(dock)
+    assert "refused" in text and "M18" in text
+    first_m18 = next(
+        n
+        for n, line in enumerate(bunny.read_text().splitlines(), start=1)
+        if line.startswith("M18")
+    )
+    assert f"{bunny.name}:{first_m18}" in text  # the line, as the operator finds it
+    # Refused, but still shown: the drawing is previewed while Run stays off.
+    assert dock.runner.program is None and not dock.run_button.isEnabled()
+    assert dock.preview.program is not None and "preview only" in dock.file_label.text()
+    assert dock.preview.path_geometry is not None and len(dock.preview.path_geometry.work.x)
+    qtbot.mouseClick(dock.skip_check, LEFT)  # re-reads the file with the new choice
+    assert dock.runner.program is not None
+    assert dock.runner.state is JobState.READY
+    assert "M18" in messages(dock).split("operations loaded")[-1]  # listed as left out
+
+
+def test_a_bare_nail_list_asks_for_the_board_once_and_loads(
+    qtbot: QtBot, winder: StationHarness, shared_dir: Path, tmp_path: Path
+) -> None:
+    asked: list[NeedsNailCount] = []
+    dock = make_dock(qtbot, winder, tmp_path, asked)
+    path = shared_dir / "realdata/stringart/threadArt_cat-sequence_160pins.txt"
+    assert dock.open_path(path)
+    assert len(asked) == 1 and asked[0].min_nails <= 160
+    program = dock.runner.program
+    assert program is not None
+    assert "160 nails" in messages(dock) and "connections" in messages(dock)
+    dock.open_path(path)  # re-reading the same file keeps the board given
+    assert len(asked) == 1
+
+
+def test_exports_write_the_sd_files_and_the_gcode(
+    qtbot: QtBot, winder: StationHarness, shared_dir: Path, tmp_path: Path
+) -> None:
+    dock = make_dock(qtbot, winder, tmp_path)
+    sample = shared_dir / "samples/string-art-hexagon/poradi.txt"
+    assert dock.open_path(sample)
+    assert dock.export_button.isEnabled()
+    out = tmp_path / "sd"
+    assert dock.export_sd(out)
+    assert read_string_art(out / "poradi.txt") == read_string_art(sample)
+    gcode = tmp_path / "hexagon.gcode"
+    assert dock.export_gcode(gcode)
+    lines = gcode.read_text().splitlines()
+    assert sum(1 for line in lines if line.startswith("M0")) == 1
+    assert all(len(line) < 80 for line in lines)
+
+
+def test_a_large_file_is_read_in_the_background_and_the_window_keeps_working(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    path = tmp_path / "big.gcode"
+    with path.open("w") as out:
+        out.write("M4\n")
+        for i in range(150_000):
+            out.write(f"G1 X{(i % 200) * 0.5:.3f} Y{(i // 200) % 150:.3f} F3000\n")
+        out.write("M3\n")
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert dock.open_path(path, background=True)
+    assert "reading" in dock.file_label.text()
+    assert not dock.open_button.isEnabled()
+    ticks = [0]
+
+    def tick() -> None:
+        ticks[0] += 1
+
+    from PySide6.QtCore import QTimer
+
+    timer = QTimer()
+    timer.timeout.connect(tick)
+    timer.start(10)
+    qtbot.waitUntil(lambda: dock.runner.program is not None, timeout=60_000)
+    timer.stop()
+    assert ticks[0] > 3  # the event loop ran while the file was read
+    assert len(dock.runner.program) == 150_002
+    assert dock.open_button.isEnabled()
