@@ -45,7 +45,7 @@ import json
 import math
 import os
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from functools import partial
@@ -57,7 +57,14 @@ from PySide6.QtCore import QObject, Qt, QTimer, Signal
 from app.drill_session import DrillSession
 from app.jobs.dry_run import Estimate, estimate, parameters_from_model
 from app.jobs.gcode_driver import GcodeDriver
-from app.jobs.program import LimitViolation, Operation, OpKind, Program, check_limits
+from app.jobs.program import (
+    LimitViolation,
+    Operation,
+    OpKind,
+    Program,
+    SourceRef,
+    check_limits,
+)
 from app.machine import LinkState
 from app.session import MachineSession
 from app.station import Station
@@ -216,7 +223,9 @@ class JobRunner(QObject):
         profile = self.station.profile
         refused: list[LimitViolation] = check_limits(program, profile.travel_limits())
         refused += self._unsupported(program)
-        refused.sort(key=lambda v: v.index)
+        refused += self._unexecutable_lines(program)
+        # In file order, as the operator reads the file.
+        refused.sort(key=lambda v: (v.operation.source.line, v.index))
         self._reset()
         if refused:
             self._program = None
@@ -269,6 +278,16 @@ class JobRunner(QObject):
             for index in program.indices_of(kind):
                 op = program[int(index)]
                 refused.append(UnsupportedOperation.of(int(index), op, problems[kind]))
+        return refused
+
+    def _unexecutable_lines(self, program: Program) -> list[LimitViolation]:
+        """G-code lines the loader found this machine cannot execute (named words, axes)."""
+        problems: Sequence[Any] = getattr(program, "unsupported", ())
+        name = program.source.name if program.source is not None else program.name
+        refused: list[LimitViolation] = []
+        for problem in problems:
+            op = Operation(OpKind.GCODE, SourceRef(name, problem.line), line=problem.text)
+            refused.append(UnsupportedOperation.of(problem.line, op, problem.reason))
         return refused
 
     # --- operator commands ---------------------------------------------------

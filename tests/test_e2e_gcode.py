@@ -1,0 +1,200 @@
+"""End to end: real G-code files streamed over a pseudo-terminal to the emulated CoreXY plotter.
+
+The emulator runs as ``python -m protocol.emulator --profile corexy-plotter
+--pty`` (clock 50 times real time, every event in ``--log``); a real-clock
+station connects with ``connect_serial`` and the job runner streams the
+file with character counting.  The log is the judge: every line the
+emulator received arrived with at most 127 bytes unanswered, and the moves
+it made — position and pen — are the file's, in order.
+
+Every wait is bounded; the process is killed and the station shut down
+whatever happens.
+"""
+
+from __future__ import annotations
+
+import json
+import selectors
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QTimer
+from pytestqt.qtbot import QtBot
+
+from app.jobs.loaders import JobOptions, load_job
+from app.jobs.program import Program
+from app.jobs.runner import JobRunner, JobState
+from app.machine import LinkState
+from app.profiles import load_profile
+from app.station import Station
+
+ROOT = Path(__file__).resolve().parent.parent
+STARTUP_TIMEOUT_S = 15.0
+JOB_TIMEOUT_MS = 90_000
+TIME_SCALE = 50
+PROFILE = load_profile("corexy-plotter")
+
+
+@pytest.fixture
+def emulator(tmp_path: Path) -> Iterator[tuple[str, Path]]:
+    """The plotter emulator on a pty: (device path, log path); always terminated."""
+    log = tmp_path / "plotter.log"
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "protocol.emulator",
+            "--profile",
+            "corexy-plotter",
+            "--pty",
+            "--time-scale",
+            str(TIME_SCALE),
+            "--log",
+            str(log),
+        ],
+        cwd=ROOT,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+    )
+    try:
+        assert process.stdout is not None
+        with selectors.DefaultSelector() as selector:
+            selector.register(process.stdout, selectors.EVENT_READ)
+            assert selector.select(STARTUP_TIMEOUT_S), "the emulator printed no device path"
+        path = process.stdout.readline().decode().strip()
+        assert path, f"the emulator ended (status {process.poll()})"
+        yield path, log
+    finally:
+        if process.poll() is None:
+            process.terminate()
+        try:
+            process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
+        if process.stdout is not None:
+            process.stdout.close()
+
+
+@pytest.fixture
+def station(qtbot: QtBot) -> Iterator[Station]:
+    built = Station(PROFILE)
+    try:
+        yield built
+    finally:
+        built.shutdown()
+
+
+def events(log: Path) -> list[dict[str, Any]]:
+    if not log.exists():
+        return []
+    found = []
+    for line in log.read_text(encoding="utf-8").splitlines():
+        try:
+            found.append(json.loads(line))
+        except ValueError:
+            continue  # a line being written as we read
+    return found
+
+
+def connect(qtbot: QtBot, station: Station, path: str) -> None:
+    station.connect_serial(path)
+    qtbot.waitUntil(lambda: station.model.link_state is LinkState.CONNECTED, timeout=5000)
+    session = station.gcode_session
+    assert session is not None
+    qtbot.waitUntil(lambda: session.planner_size > 0, timeout=5000)  # an idle status came
+
+
+def run(
+    qtbot: QtBot, station: Station, program: Program, tmp_path: Path, asked: list[str]
+) -> JobRunner:
+    runner = JobRunner(station, tmp_path / "checkpoints")
+
+    def confirm_later(message: str) -> None:
+        asked.append(message)
+        QTimer.singleShot(0, runner.confirm)
+
+    runner.waitingForOperator.connect(confirm_later)
+    assert runner.load(program) == []
+    runner.start()
+    qtbot.waitUntil(
+        lambda: runner.state in (JobState.DONE, JobState.FAILED, JobState.PAUSED),
+        timeout=JOB_TIMEOUT_MS,
+    )
+    return runner
+
+
+def test_a_real_drawing_streams_to_the_end_within_the_buffer_and_draws_the_file(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, shared_dir: Path, tmp_path: Path
+) -> None:
+    path, log = emulator
+    connect(qtbot, station, path)
+    source = shared_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
+    # The Unicorn servo lines become the plotter's M3/M4; the few it has no use for
+    # (motors on/off, the registration stop) are left out, as the operator chose.
+    options = JobOptions(
+        gcode=PROFILE.gcode, machine_title=PROFILE.title, translate_pen=True, skip_unsupported=True
+    )
+    program = load_job(source, ["X", "Y"], options)
+    asked: list[str] = []
+    runner = run(qtbot, station, program, tmp_path, asked)
+    assert runner.state is JobState.DONE, runner.state
+    assert asked == ["Was registration test successful?"]  # the file's M01, asked of the operator
+
+    expected_path = program.path(("X", "Y"))
+    expected = list(
+        zip(
+            np.round(expected_path.coords[:, 0], 3),
+            np.round(expected_path.coords[:, 1], 3),
+            expected_path.pen,
+            strict=True,
+        )
+    )
+    # A move to where the pen already is (the file repeats a polyline's last point) moves
+    # nothing, and the plotter logs no move for it.
+    expected = [m for k, m in enumerate(expected) if k == 0 or m[:2] != expected[k - 1][:2]]
+    qtbot.waitUntil(
+        lambda: sum(e["event"] == "move" for e in events(log)) >= len(expected), timeout=5000
+    )
+    logged = events(log)
+    moves = [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3), bool(e["pen"]))
+        for e in logged
+        if e["event"] == "move"
+    ]
+    assert moves == expected
+    lines = [e for e in logged if e["event"] == "line"]
+    assert len(lines) >= 3000  # the drawing really went over the wire
+    assert max(e["unacknowledged"] for e in lines) <= 127
+    # Character counting, not ping-pong: lines arrived while earlier ones were unanswered.
+    assert max(e["unacknowledged"] for e in lines) > 40
+    assert not [e for e in logged if e["event"] == "reply" and "ERR" in e["text"].upper()]
+
+
+def test_an_error_reply_stops_the_job_at_its_line(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    path, log = emulator
+    connect(qtbot, station, path)
+    source = tmp_path / "bad.gcode"
+    body = [f"G1 X{10 + i} Y10 F3000" for i in range(20)]
+    body[12] = "G4 P-5"  # a negative dwell: the loader passes it, the plotter refuses it
+    source.write_text("M4\n" + "\n".join(body) + "\nM3\nG0 X0 Y0\n", encoding="utf-8")
+    program = load_job(source, ["X", "Y"], JobOptions(gcode=PROFILE.gcode))
+    messages: list[str] = []
+    runner = JobRunner(station, tmp_path / "checkpoints")
+    runner.message.connect(messages.append)
+    assert runner.load(program) == []
+    runner.start()
+    qtbot.waitUntil(lambda: runner.state is not JobState.RUNNING, timeout=JOB_TIMEOUT_MS)
+    assert runner.state is JobState.FAILED
+    assert "bad.gcode:14" in messages[-1] and "error:" in messages[-1].lower(), messages[-1]
+    qtbot.wait(500)
+    moves = [e for e in events(log) if e["event"] == "move"]
+    # Nothing after the refused line reached the paper: the way home never ran.
+    assert all(not (e["pos"]["X"] == 0 and e["pos"]["Y"] == 0) for e in moves)
