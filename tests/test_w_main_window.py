@@ -432,3 +432,35 @@ def test_ctrl_j_shows_the_jobs_dock_whose_checkpoints_go_where_asked(
     window.job_runner.start()
     harness.run_until(lambda: window.job_runner.done == 1)
     assert list((tmp_path / "checkpoints").iterdir()), "no checkpoint written after an operation"
+
+
+# --- the G-code machines ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter", "string-art"])
+def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(
+    qtbot: QtBot, name: str
+) -> None:
+    from app.profiles import load_profile
+
+    plotter = StationHarness(load_profile(name))
+    try:
+        window = _open_window(qtbot, plotter)
+        plotter.connect()
+        plotter.run(0.3)
+        assert window.gcode_panel is not None
+        page = window.stack.indexOf(window.gcode_panel)
+        qtbot.mouseClick(window.menu_panel.button(page), Qt.MouseButton.LeftButton)
+        assert window.stack.currentWidget() is window.gcode_panel
+        window.setFocus()
+        sent = len(plotter.written)
+        qtbot.keyPress(window, Qt.Key.Key_Right)
+        # At once, not at the next status tick: the first jog step is already on the wire.
+        assert any(b"G91 G1 " in chunk for chunk in plotter.written[sent:])
+        plotter.run(0.5)
+        qtbot.keyRelease(window, Qt.Key.Key_Right)
+        plotter.run_until(lambda: plotter.gcode_session.settled, timeout=5)
+        axis = plotter.station.profile.axes[0]
+        assert plotter.station.model.axes[0].position > 0, f"{axis.name} did not move"
+    finally:
+        plotter.close()
