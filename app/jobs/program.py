@@ -15,6 +15,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
+from typing import ClassVar, Literal
 
 import numpy as np
 
@@ -95,6 +96,10 @@ class Program:
     source: Path | None = None
     #: What the loader wants the operator to know (e.g. the travel its ordering saved).
     notes: tuple[str, ...] = ()
+    #: What :meth:`preview_path` gives: "axes", the two axes asked for as they are (the
+    #: preview projects them on a polar machine), or "board", the work's own plane in mm
+    #: whatever the axes (a job that knows its geometry projects itself, and better).
+    preview_plane: ClassVar[Literal["axes", "board"]] = "axes"
 
     def __len__(self) -> int:
         return len(self.operations)

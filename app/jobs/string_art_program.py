@@ -40,6 +40,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
+from typing import ClassVar, Literal
 
 import numpy as np
 
@@ -89,6 +90,7 @@ class StringArtProgram(Program):
     estimate_s: float | None = None
     needle_in_radius_mm: float = 0.0
     needle_out_radius_mm: float = 0.0
+    preview_plane: ClassVar[Literal["axes", "board"]] = "board"
 
     def _move_indices(self) -> np.ndarray:
         return np.flatnonzero(self.kind_codes == _KIND_CODES[OpKind.MOVE])
