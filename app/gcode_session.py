@@ -18,7 +18,7 @@ without losing its position.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from itertools import count
 
 from PySide6.QtCore import QObject, QTimer, Signal
@@ -83,15 +83,6 @@ class SentLine:
     op_index: int | None = None
 
 
-@dataclass
-class _Idle:
-    """Whether the machine has been seen standing still since the last line was answered."""
-
-    answered_at: float = 0.0
-    seen_idle: bool = True
-    queries: list[float] = field(default_factory=list)
-
-
 class GcodeSession(MachineSession):
     """frameSent carries the line text (or the real-time byte's name), frameReceived a reply."""
 
@@ -122,7 +113,9 @@ class GcodeSession(MachineSession):
         self.status: StatusReport | None = None
         self.errors = 0
         self._serials = count(1)
-        self._idle = _Idle()
+        #: A status report since the last line was answered showed the machine idle.
+        self._seen_idle = True
+        self._status_asked_at: float | None = None  # an unanswered "?", for request_status
         self._last_heard = clock.now()
         self._status_at = 0.0
         self._jog_unanswered = 0
@@ -154,7 +147,7 @@ class GcodeSession(MachineSession):
     @property
     def settled(self) -> bool:
         """Everything sent is answered and a status report since then shows the machine idle."""
-        return self.streamer.idle and self._idle.seen_idle
+        return self.streamer.idle and self._seen_idle
 
     # --- lines --------------------------------------------------------------------
 
@@ -177,7 +170,7 @@ class GcodeSession(MachineSession):
         except ValueError as exc:
             self.model.message.emit(f"Not sent: {line!r} ({exc})")
             return False
-        self._idle.seen_idle = False
+        self._seen_idle = False
         self._pump()
         return True
 
@@ -204,11 +197,12 @@ class GcodeSession(MachineSession):
 
     def query_status(self) -> None:
         self._realtime(STATUS_QUERY, "?")
-        self._idle.queries.append(self.clock.now())
+        self._status_asked_at = self.clock.now()
 
     def request_status(self) -> None:
-        """A status report soon: asks now unless a question is already unanswered."""
-        if not self._idle.queries:
+        """A status report soon: asks now unless a question is already on its way."""
+        asked = self._status_asked_at
+        if asked is None or self.clock.now() - asked > self.settings.status_ms / 1000:
             self.query_status()
 
     @property
@@ -326,7 +320,7 @@ class GcodeSession(MachineSession):
 
     def _forget_stream(self) -> list[SentLine]:
         lost = self.streamer.clear()
-        self._idle = _Idle()
+        self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
         return lost
@@ -334,7 +328,8 @@ class GcodeSession(MachineSession):
     def _on_connected(self) -> None:
         self.decoder.reset()
         self.streamer.clear()
-        self._idle = _Idle()
+        self._seen_idle = False
+        self._status_asked_at = None
         self._last_heard = self.clock.now()
         self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
         if self._autotick:
@@ -388,8 +383,7 @@ class GcodeSession(MachineSession):
             self.model.message.emit("A reply arrived for no line (ignored)")
             return
         _, sent = entry
-        self._idle.answered_at = self.clock.now()
-        self._idle.seen_idle = False
+        self._seen_idle = False
         if sent.origin == "jog":
             self._jog_unanswered = max(0, self._jog_unanswered - 1)
             if any(self._jog):
@@ -409,7 +403,7 @@ class GcodeSession(MachineSession):
         self._pump()
 
     def _apply_status(self, report: StatusReport) -> None:
-        asked = self._idle.queries.pop(0) if self._idle.queries else self.clock.now()
+        self._status_asked_at = None
         self.status = report
         if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
             # Free blocks of an idle machine with nothing on its way: the planner's size.
@@ -423,9 +417,15 @@ class GcodeSession(MachineSession):
                 status_text=report.state.lower(),
                 moving=moving,
             )
-        # Idle only counts when the question was asked after the last answer: a report
-        # already on its way describes the machine before that line was planned.
-        if report.state == "Idle" and asked >= self._idle.answered_at and self.streamer.idle:
-            self._idle.seen_idle = True
+        # Replies and reports share one ordered stream, so with every line answered this
+        # report was made after the last line was planned.  A board that has planned a
+        # block but not yet started it still says Idle; its Bf then shows the block.
+        planner_empty = (
+            report.planner_free is None
+            or not self._planner_size
+            or report.planner_free >= self._planner_size
+        )
+        if report.state == "Idle" and self.streamer.idle and planner_empty:
+            self._seen_idle = True
         self.statusChanged.emit(report)
         self._feed_jog()
