@@ -109,6 +109,8 @@ def test_a_long_program_streams_within_the_buffer_and_ends_when_drawn(
     ops += [move(at(n + 2), X=10 + (n % 20) * 0.5, Y=10 + (n // 20) * 0.5) for n in range(300)]
     program = Program("zigzag", tuple(ops))
     assert runner.load(program) == []
+    started: list[int] = []
+    runner.operationStarted.connect(started.append)
     runner.start()
     most_in_flight = 0
     while runner.state is JobState.RUNNING:
@@ -120,6 +122,8 @@ def test_a_long_program_streams_within_the_buffer_and_ends_when_drawn(
     assert plotter.gcode_emulator.max_unacknowledged <= 127
     assert len(drawn(plotter)) == 300
     assert drawn(plotter)[-1] == (10 + 19 * 0.5, 10 + 14 * 0.5, True)
+    # The dock is told the operation under way as the job goes (a few a second, in order).
+    assert len(started) > 5 and started == sorted(started) and started[-1] > 250
 
 
 def test_an_error_reply_stops_the_job_and_names_the_line(

@@ -20,6 +20,8 @@ if TYPE_CHECKING:
 
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
+#: Station-clock seconds between "operation under way" announcements while lines stream.
+SHOW_EVERY_S = 0.1
 
 
 class GcodeDriver:
@@ -32,6 +34,8 @@ class GcodeDriver:
         self._recheck = False  # look at the machine before sending again
         self._asked_since_recheck = False
         self._checkpoint_at = -1.0
+        self._shown: int | None = None
+        self._shown_at = -1.0
 
     # --- session wiring --------------------------------------------------------
 
@@ -262,6 +266,13 @@ class GcodeDriver:
         runner = self.runner
         assert runner.program is not None
         runner._in_flight = stream.pending[0] if stream.pending else None
+        now = runner.station.clock.now()
+        current = runner._in_flight
+        if current is not None and current != self._shown and now - self._shown_at >= SHOW_EVERY_S:
+            # The dock shows the operation under way; a thousand lines a second need not
+            # all be shown, so at most ten a second are.
+            self._shown, self._shown_at = current, now
+            runner.operationStarted.emit(current)
         if stream.answered != runner._done:
             runner._done = stream.answered
             if stream.answered:
