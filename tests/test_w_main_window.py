@@ -438,9 +438,7 @@ def test_ctrl_j_shows_the_jobs_dock_whose_checkpoints_go_where_asked(
 
 
 @pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter", "string-art"])
-def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(
-    qtbot: QtBot, name: str
-) -> None:
+def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(qtbot: QtBot, name: str) -> None:
     from app.profiles import load_profile
 
     plotter = StationHarness(load_profile(name))

@@ -11,6 +11,16 @@ What it draws, and why:
 * the machine's position as a cross-hair marker, and the soft-limit
   rectangle (0…travel per axis), the only area click-to-move accepts.
 
+A cylindrical machine (the string-art winder: the base turns the work by A
+degrees, the tool sits X mm from the centre) is drawn in the plane of the
+work, not as an A-by-X chart, because that is where the operator sees nails and
+thread: the position marker at (X·cos A, X·sin A), the limits as the disc
+the tool reaches (radius = X's travel; A turns freely), the view fitted to
+the job rather than to that disc.  A program that knows its plane
+(``Program.preview_plane == "board"``, a string-art job) is drawn as it
+says; any other has its (A, X) vertices projected, each turn drawn in steps
+of ``ARC_STEP_DEG`` because the machine sweeps an arc there, not a chord.
+
 Speed: a 100 000-operation program must open without a pause, so the path is
 built once with numpy into one array per kind, runs of the same kind joined
 and NaN between runs (``connect="finite"``), never one item per segment.
@@ -22,13 +32,20 @@ Click-to-move is a click, not a drag (drags pan, the wheel zooms), asks
 first (``confirm``, injectable so tests need no modal dialog) and sends one
 absolute move per axis through the session; outside the travel, while a job
 is under way or while motion is locked it refuses with a message and sends
-nothing.
+nothing.  On a cylindrical machine the clicked point is taken in polar form:
+A turns the shorter way (at most 180°, A stays unwrapped as the machine
+keeps it) to the point's bearing, then X moves to its distance from the
+centre; beyond X's travel it is refused.  The question names both moves and
+their order, because with nails in the board the operator must judge the
+way there.
 """
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 import pyqtgraph as pg
@@ -36,9 +53,11 @@ from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
 from PySide6.QtCore import QPointF, Qt, QTimer, Signal
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
-from app.jobs.program import OpKind, Program
+from app.jobs.program import OpKind, Program, ProgramPath
 from app.jobs.runner import JobRunner, JobState
+from app.jobs.string_art_geometry import shortest_turn
 from app.jobs.string_art_program import StringArtProgram
+from app.profiles import MachineProfile
 from app.station import Station
 
 TRAVEL_COLOUR = "#9a9a9a"
@@ -47,6 +66,12 @@ DONE_COLOUR = "#2ca02c"
 POSITION_COLOUR = "#d62728"
 LIMIT_COLOUR = "#e08a00"
 DEFAULT_THROTTLE_MS = 33.0
+#: Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so.
+ARC_STEP_DEG = 5.0
+#: At most this many steps per move, so a move spinning the base many turns stays cheap.
+MAX_ARC_STEPS = 720
+#: Points of the drawn reach circle.
+CIRCLE_POINTS = 361
 
 #: Runner states in which a job is under way: the machine is the job's, not the mouse's.
 ACTIVE_STATES = frozenset({JobState.RUNNING, JobState.PAUSING, JobState.PAUSED, JobState.WAITING})
@@ -61,6 +86,59 @@ LEGEND_HTML = (
     f"<span style='color:{POSITION_COLOUR}'><b>+</b> machine</span>&nbsp;&nbsp;"
     f"<span style='color:{LIMIT_COLOUR}'>&#9633; travel limits</span>"
 )
+#: The same for a cylindrical machine, whose limit is the disc the tool reaches.
+POLAR_LEGEND_HTML = LEGEND_HTML.replace("&#9633; travel limits", "&#9675; reach")
+
+
+@dataclass(frozen=True)
+class PolarAxes:
+    """A cylindrical machine's plane: a rotary axis turns the work, a linear one is the radius."""
+
+    angle: int  # axis index, degrees counter-clockwise from +x
+    radius: int  # axis index, mm from the centre
+    reach: float  # the radius axis' travel: how far from the centre the tool gets
+
+    def project(self, angle_deg: float, radius: float) -> tuple[float, float]:
+        a = math.radians(angle_deg)
+        return radius * math.cos(a), radius * math.sin(a)
+
+
+def polar_axes(profile: MachineProfile) -> PolarAxes | None:
+    """The polar axes of a cylindrical G-code machine, None for any other machine."""
+    if profile.gcode is None or profile.gcode.kinematics != "cylindrical":
+        return None
+    kinds = [axis.kind for axis in profile.axes]
+    if "rotary" not in kinds or "linear" not in kinds:
+        return None
+    radius = kinds.index("linear")
+    return PolarAxes(kinds.index("rotary"), radius, profile.axes[radius].travel)
+
+
+def board_plane(path: ProgramPath) -> ProgramPath:
+    """(angle°, radius) vertices as points of the work's plane, turns drawn as arcs.
+
+    The machine moves A and X together in proportion, a spiral arc on the
+    work; a chord between the ends would cut across what the tool sweeps,
+    so each move is drawn in steps of at most ``ARC_STEP_DEG``.  An axis not
+    set yet stands at 0, where homing left it.
+    """
+    coords = np.nan_to_num(path.coords[:, :2])
+    count = len(coords)
+    if not count:
+        return ProgramPath(np.empty((0, 2)), path.ops, path.pen)
+    angle, radius = coords[:, 0], coords[:, 1]
+    steps = np.ones(count, dtype=np.int64)
+    turns = np.ceil(np.abs(np.diff(angle)) / ARC_STEP_DEG)
+    steps[1:] = np.clip(turns, 1, MAX_ARC_STEPS).astype(np.int64)
+    vertex = np.repeat(np.arange(count), steps)  # the vertex each drawn point leads to
+    starts = np.repeat(np.cumsum(steps) - steps, steps)
+    fraction = (np.arange(len(vertex)) - starts + 1) / steps[vertex]
+    before = np.maximum(vertex - 1, 0)
+    a = np.radians(angle[before] + (angle[vertex] - angle[before]) * fraction)
+    r = radius[before] + (radius[vertex] - radius[before]) * fraction
+    return ProgramPath(
+        np.column_stack((r * np.cos(a), r * np.sin(a))), path.ops[vertex], path.pen[vertex]
+    )
 
 
 def ask_operator(parent: QWidget) -> Callable[[str], bool]:
@@ -121,8 +199,13 @@ def _runs(
 class ProgramGeometry:
     """The plottable shape of a program on two axes, computed once per program."""
 
-    def __init__(self, program: Program, x_axis: str, y_axis: str | None) -> None:
+    def __init__(
+        self, program: Program, x_axis: str, y_axis: str | None, *, polar: bool = False
+    ) -> None:
+        """``polar``: the axes are (angle, radius) and the program's path is to be projected."""
         path = program.preview_path(x_axis, y_axis)
+        if polar and y_axis is not None and program.preview_plane == "axes":
+            path = board_plane(path)
         xs = np.ascontiguousarray(path.coords[:, 0])
         ys = np.ascontiguousarray(path.coords[:, 1])
         self.travel = _runs(xs, ys, path.ops, path.pen, wanted=False)
@@ -177,7 +260,13 @@ class JobPreview(QWidget):
         self.done = 0
         self.last_message = ""
         axes = station.profile.axes
-        self.axis_indices: tuple[int, ...] = tuple(range(min(2, len(axes))))
+        #: Set on a cylindrical machine: the plot is the work's plane, not two axes.
+        self.polar = polar_axes(station.profile)
+        self.axis_indices: tuple[int, ...] = (
+            tuple(range(min(2, len(axes))))
+            if self.polar is None
+            else (self.polar.angle, self.polar.radius)
+        )
         self.axis_names: tuple[str, ...] = tuple(axes[i].name for i in self.axis_indices)
         self.travel_limits: tuple[tuple[float, float], ...] = tuple(
             (0.0, axes[i].travel) for i in self.axis_indices
@@ -189,7 +278,7 @@ class JobPreview(QWidget):
         self._throttle.timeout.connect(self._flush)
         self._throttle_ms = throttle_ms
 
-        self._build(axes[0].unit if axes else "mm")
+        self._build(axes[self.axis_indices[0]].unit if axes else "mm")
         self.string_art = StringArtPreviewExtras(
             self.plot, (self.work_curve, self.done_work_curve, self.work_markers, self.done_markers)
         )
@@ -210,15 +299,25 @@ class JobPreview(QWidget):
         layout.setSpacing(2)
         bar = QHBoxLayout()
         bar.setSpacing(6)
-        self.hint_label = QLabel(LEGEND_HTML)
+        polar = self.polar is not None
+        self.hint_label = QLabel(POLAR_LEGEND_HTML if polar else LEGEND_HTML)
         self.hint_label.setObjectName("preview_hint")
         self.hint_label.setToolTip(
-            "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside the"
-            " travel limits moves the machine there after you confirm"
+            "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) "
+            + (
+                "within the tool's reach turns the base and moves the tool there"
+                if polar
+                else "inside the travel limits moves the machine there"
+            )
+            + " after you confirm"
         )
         self.fit_button = QPushButton("Fit")
         self.fit_button.setObjectName("preview_fit")
-        self.fit_button.setToolTip("Show the whole job and the machine's travel")
+        self.fit_button.setToolTip(
+            "Show the whole job (without a job, the tool's reach)"
+            if polar
+            else "Show the whole job and the machine's travel"
+        )
         self.fit_button.clicked.connect(self.fit)
         bar.addWidget(self.hint_label, 1)
         bar.addWidget(self.fit_button)
@@ -233,6 +332,10 @@ class JobPreview(QWidget):
         self.plot.hideButtons()
         self.plot.setMenuEnabled(False)
         names = self.axis_names if self.axis_names else ("X",)
+        if self.polar is not None:
+            # The work's plane, whatever the axes are called; the radius axis' unit.
+            unit = self.station.profile.axes[self.polar.radius].unit
+            names = ("x on the work", "y on the work")
         self.plot.setLabel("bottom", names[0], units=unit)
         self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
         for side in ("left", "bottom"):
@@ -243,10 +346,16 @@ class JobPreview(QWidget):
             axis.enableAutoSIPrefix(False)
         layout.addWidget(self.plot_widget, 1)
 
-        (x0, x1), (y0, y1) = self._limits_2d()
+        if self.polar is not None:
+            around = np.linspace(0.0, 2.0 * np.pi, CIRCLE_POINTS)
+            outline_x = self.polar.reach * np.cos(around)
+            outline_y = self.polar.reach * np.sin(around)
+        else:
+            (x0, x1), (y0, y1) = self._limits_2d()
+            outline_x, outline_y = np.array([x0, x1, x1, x0, x0]), np.array([y0, y0, y1, y1, y0])
         self.limits_curve = self.plot.plot(
-            [x0, x1, x1, x0, x0],
-            [y0, y0, y1, y1, y0],
+            outline_x,
+            outline_y,
             pen=pg.mkPen(LIMIT_COLOUR, width=1, style=Qt.PenStyle.DashDotLine),
         )
         # Width-1 pens: wider ones make Qt stroke segment by segment, far slower on big paths.
@@ -300,7 +409,9 @@ class JobPreview(QWidget):
             self.work_markers.setData(x=_EMPTY, y=_EMPTY)
         else:
             y_axis = self.axis_names[1] if len(self.axis_names) > 1 else None
-            geometry = ProgramGeometry(program, self.axis_names[0], y_axis)
+            geometry = ProgramGeometry(
+                program, self.axis_names[0], y_axis, polar=self.polar is not None
+            )
             self.path_geometry = geometry
             self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
             self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
@@ -318,7 +429,10 @@ class JobPreview(QWidget):
         self._request("done")
 
     def fit(self) -> None:
-        """Show the whole job and the soft-limit rectangle."""
+        """Show the whole job and the soft-limit rectangle (polar: the job, else the reach)."""
+        if self.polar is not None:
+            self._fit_polar(self.polar)
+            return
         (x0, x1), (y0, y1) = self._limits_2d()
         geometry = self.path_geometry
         if geometry is not None:
@@ -328,6 +442,33 @@ class JobPreview(QWidget):
                 x0, x1 = min(x0, float(np.nanmin(xs))), max(x1, float(np.nanmax(xs)))
             if np.isfinite(ys).any():
                 y0, y1 = min(y0, float(np.nanmin(ys))), max(y1, float(np.nanmax(ys)))
+        self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
+
+    def _fit_polar(self, polar: PolarAxes) -> None:
+        """The job's path and its board; the disc the tool reaches only when there is no job.
+
+        The reach (X's whole travel) is far larger than most boards: fitting it
+        would leave the nails a small ring in the middle.
+        """
+        xs: list[np.ndarray] = []
+        ys: list[np.ndarray] = []
+        geometry = self.path_geometry
+        if geometry is not None:
+            xs += [geometry.travel.x, geometry.work.x, geometry.markers.x]
+            ys += [geometry.travel.y, geometry.work.y, geometry.markers.y]
+        board = self.string_art.board_radius_mm
+        if board > 0:
+            xs.append(np.array([-board, board]))
+            ys.append(np.array([-board, board]))
+        x = np.concatenate(xs) if xs else _EMPTY
+        y = np.concatenate(ys) if ys else _EMPTY
+        finite = np.isfinite(x) & np.isfinite(y)
+        if finite.any():
+            x0, x1 = float(x[finite].min()), float(x[finite].max())
+            y0, y1 = float(y[finite].min()), float(y[finite].max())
+        else:
+            x0 = y0 = -polar.reach
+            x1 = y1 = polar.reach
         self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
 
     @property
@@ -344,6 +485,8 @@ class JobPreview(QWidget):
 
     def request_move(self, x: float, y: float) -> bool:
         """What a click at (x, y) does: refuse, or ask and move.  True when moves were sent."""
+        if self.polar is not None:
+            return self._request_polar_move(self.polar, x, y)
         target = (x, y)[: len(self.axis_names)]
         described = ", ".join(
             f"{name} {value:.3f}" for name, value in zip(self.axis_names, target, strict=True)
@@ -366,6 +509,42 @@ class JobPreview(QWidget):
         session = self.station.session
         assert session is not None  # click_refusal said so
         for axis, value in zip(self.axis_indices, target, strict=True):
+            if not session.move_absolute(axis, value):
+                return self._say(f"The machine refused the move to {described}")
+        self._say(f"Moving to {described}")
+        return True
+
+    def _request_polar_move(self, polar: PolarAxes, x: float, y: float) -> bool:
+        """The point (x, y) of the work as the shorter turn of A to its bearing, then X out."""
+        angle_name, radius_name = self.axis_names
+        axes = self.station.profile.axes
+        angle_unit, radius_unit = axes[polar.angle].unit, axes[polar.radius].unit
+        radius = math.hypot(x, y)
+        current = self.model.axes[polar.angle].position
+        # At the centre every bearing is the same point: no turn.
+        bearing = math.degrees(math.atan2(y, x)) if radius > 1e-9 else current
+        turn = shortest_turn(current, bearing)
+        angle = current + turn
+        described = (
+            f"{angle_name} {angle:.3f} {angle_unit}, {radius_name} {radius:.3f} {radius_unit}"
+        )
+        refusal = self.click_refusal
+        if refusal is not None:
+            return self._say(f"Click-to-move refused ({described}): {refusal}")
+        if radius > polar.reach:
+            return self._say(
+                f"Click-to-move refused: {radius:.3f} {radius_unit} from the centre is beyond "
+                f"{radius_name}'s travel 0…{polar.reach:g} (the reach)"
+            )
+        question = (
+            f"Turn {angle_name} by {turn:+.1f}° to {angle:.3f} {angle_unit}, "
+            f"then move {radius_name} to {radius:.3f} {radius_unit}?"
+        )
+        if not self.confirm(question):
+            return self._say("Click-to-move cancelled")
+        session = self.station.session
+        assert session is not None  # click_refusal said so
+        for axis, value in ((polar.angle, angle), (polar.radius, radius)):
             if not session.move_absolute(axis, value):
                 return self._say(f"The machine refused the move to {described}")
         self._say(f"Moving to {described}")
@@ -401,8 +580,9 @@ class JobPreview(QWidget):
 
     def _update_enabled(self, *_args: object) -> None:
         refusal = self.click_refusal
+        where = "within the tool's reach" if self.polar is not None else "inside the travel"
         self.plot_widget.setToolTip(
-            "Click a point inside the travel to move there (after confirming)"
+            f"Click a point {where} to move there (after confirming)"
             if refusal is None
             else f"Click-to-move is off: {refusal}"
         )
@@ -448,6 +628,8 @@ class JobPreview(QWidget):
         values: Sequence[float] = [axes[i].position for i in self.axis_indices]
         x = values[0] if values else 0.0
         y = values[1] if len(values) > 1 else 0.0
+        if self.polar is not None:
+            x, y = self.polar.project(x, y)  # (A°, X) → where the tool is over the work
         self.position_marker.setData(x=[x], y=[y])
 
 
@@ -506,6 +688,11 @@ class StringArtPreviewExtras:
     @property
     def thread_segments(self) -> int:
         return len(self._pairs[0]) // 2
+
+    @property
+    def board_radius_mm(self) -> float:
+        """The shown job's board radius (its edge, 15 mm beyond the nails), 0 without one."""
+        return self.program.job.params.radius_cm * 10.0 if self.program is not None else 0.0
 
     def set_program(self, program: Program | None) -> None:
         """Show ``program``'s nails and thread when it is a string-art one, else nothing."""
