@@ -331,11 +331,14 @@ def _between(value: float, a: float, b: float) -> bool:
 
 
 #: Where the needle is when the job is stopped, as a test of the emulator's live position.
-#: Not among them: a stop within a status report of the needle's going out.  The
-#: checkpoint then still holds the move out as not run, and the resume's one G0 back
-#: to the point before it turns the base (a fraction of a degree here) while the needle
-#: crosses the ring: ``wound`` rightly calls that a turn among the nails.
+#: "round the nail, just begun" stops within a status report of the needle's going out:
+#: the checkpoint still holds the move out as not run, so the way back must retrace the
+#: path (turn back outside the ring, then in) rather than cut across the nails.
 STOP_POINTS = [
+    pytest.param(
+        lambda p, c: abs(p["X"] - c.r_out) < 1e-6 and _between(p["A"], c.gap, c.nail_angle),
+        id="round the nail, just begun",
+    ),
     pytest.param(
         lambda p, c: (
             abs(p["X"] - c.r_in) < 1e-6 and _between(p["A"], (c.before + c.gap) / 2, c.gap)

@@ -229,3 +229,74 @@ def test_pause_lets_the_lines_out_finish_and_resume_carries_on(
     run_to_end(plotter, runner)
     assert state_of(runner) is JobState.DONE
     assert drawn(plotter) == EXPECTED
+
+
+def test_pause_stops_after_the_lines_the_device_has_not_the_ones_queued(
+    plotter: StationHarness, runner: JobRunner
+) -> None:
+    ops = [Operation(OpKind.PEN_DOWN, at(1))]
+    ops += [move(at(n + 2), X=10 + (n % 2) * 20, Y=10 + n * 0.5) for n in range(200)]
+    program = Program("long", tuple(ops))
+    assert runner.load(program) == []
+    runner.start()
+    plotter.run_until(lambda: runner.done >= 20, timeout=60)
+    received = len([e for e in plotter.gcode_emulator.event_log if e["event"] == "line"])
+    runner.pause()
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=20)
+    # Only what the device held (its 128-byte buffer and its planner) ran: no line left
+    # the station after the pause.
+    plotter.run(5.0)
+    lines = [e for e in plotter.gcode_emulator.event_log if e["event"] == "line"]
+    assert len(lines) == received
+    paused_at = runner.done
+    assert paused_at <= received
+    runner.resume()
+    run_to_end(plotter, runner, timeout=400)
+    assert state_of(runner) is JobState.DONE
+    # Every move once, in order, across the pause.
+    moves = drawn(plotter)
+    assert [(x, y) for x, y, _ in moves] == [
+        (10 + (n % 2) * 20, round(10 + n * 0.5, 3)) for n in range(200)
+    ]
+
+
+def test_the_winder_goes_back_one_axis_at_a_time_tool_radius_then_turn() -> None:
+    from app.jobs.gcode_stream import ResumeState, preamble
+
+    winder = load_profile("string-art").gcode
+    plotter = load_profile("corexy-plotter").gcode
+    assert winder is not None and plotter is not None
+    state = ResumeState({"A": 370.0, "X": 120.0, "Z": 0.0}, pen_down=False)
+    assert preamble(state, winder)[-3:] == ["G0 Z0.000", "G0 X120.000", "G0 A370.000"]
+    drawing = ResumeState({"X": 10.0, "Y": 20.0}, pen_down=True, relative=True, feed=1200.0)
+    assert preamble(drawing, plotter) == [
+        "M3",
+        "G90",
+        "G0 X10.000 Y20.000",
+        "M4",
+        "G91",
+        "F1200",
+    ]
+
+
+def test_the_way_back_retraces_the_path_from_where_the_machine_stopped() -> None:
+    from app.jobs.gcode_stream import retrace
+
+    # In at 10°, out, round to 30°, in: a winder's wrap in (A, X).
+    ops = (
+        move(at(1), A=10.0, X=60.0),
+        move(at(2), X=70.0),
+        move(at(3), A=30.0),
+        move(at(4), X=60.0),
+    )
+    program = Program("wrap", ops)
+    axes = ("A", "X")
+    # Stopped half way round, the checkpoint at the move out: back round, then in.
+    assert retrace(program, axes, 1, 4, (20.0, 70.0)) == [
+        {"A": 10.0, "X": 70.0},
+        {"A": 10.0, "X": 60.0},
+    ]
+    # Just past the corner: the turn has begun, so the way back is a turn first.
+    assert retrace(program, axes, 1, 4, (10.00001, 70.0))[0] == {"A": 10.0, "X": 70.0}
+    # Nowhere on that stretch (the machine was moved by hand): no way back is made up.
+    assert retrace(program, axes, 1, 4, (50.0, 0.0)) == []

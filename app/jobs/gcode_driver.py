@@ -11,7 +11,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from app.gcode_session import GcodeSession, SentLine
-from app.jobs.gcode_stream import GcodeStream, preamble, resume_state
+from app.jobs.gcode_stream import (
+    RETRACE_WINDOW,
+    GcodeStream,
+    preamble,
+    resume_state,
+    retrace,
+)
 from app.jobs.program import OpKind
 from protocol.gcode.codec import StatusReport
 
@@ -141,6 +147,21 @@ class GcodeDriver:
         runner._set_state(JobState.WAITING)
         runner.waitingForOperator.emit(runner.program[index].message)
 
+    def hold_back(self) -> None:
+        """Pausing: take back the lines still queued in the session, not yet on the wire.
+
+        Only what the device already has runs before the pause; the rest is sent again
+        from the stream when the operator resumes.
+        """
+        stream, session = self.stream, self.session
+        if stream is None or session is None:
+            return
+        taken = [sent.op_index for sent in session.discard_queued() if sent.origin == "job"]
+        indices = [i for i in taken if i is not None]
+        if indices:
+            stream.take_back(min(indices))
+            self._report(stream)
+
     def confirmed(self, index: int) -> None:
         """The operator confirmed the WAIT at ``index``."""
         if self.stream is not None:
@@ -242,6 +263,13 @@ class GcodeDriver:
             again = stream.answered - stream.executed
             note = f"{again} operation(s) may not have run and are sent again"
         self._recheck = False
+        way_back = retrace(
+            runner.program,
+            [a.name for a in runner.station.profile.axes],
+            start,
+            self._sent_upto(stream, start),
+            report.mpos,
+        )
         stream.rewind(start)
         if report.state == "Hold":
             session.soft_reset()
@@ -251,7 +279,7 @@ class GcodeDriver:
             return
         axes = [a.name for a in runner.station.profile.axes]
         state = resume_state(runner.program, start, axes)
-        for line in preamble(state, stream.settings):
+        for line in preamble(state, stream.settings, way_back):
             session.send_line(line, "resume")
         runner.message.emit(
             f"Resuming at {runner.program[start].source}: {note}; machine set up again "
@@ -259,6 +287,14 @@ class GcodeDriver:
         )
         self._report(stream)
         self.proceed()
+
+    @staticmethod
+    def _sent_upto(stream: GcodeStream, start: int) -> int:
+        """Operations the device may have received: known in this run, else a window."""
+        known = max(stream.written, stream.answered)
+        if known > start:
+            return known
+        return min(len(stream.program), start + RETRACE_WINDOW)
 
     # --- progress and checkpoint -------------------------------------------------------
 

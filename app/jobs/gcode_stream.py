@@ -80,17 +80,85 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     return ResumeState(position, pen_down=bool(last_down > last_up))
 
 
-def preamble(state: ResumeState, settings: GcodeSettings) -> list[str]:
-    """Lines that put the machine into ``state`` without drawing on the way."""
+#: On a cylindrical machine (the string-art winder) axes go back one at a time: the tool
+#: out of the board first, then the radius, then the turn — so a needle stopped between
+#: two nails retraces its way instead of turning through the nail ring.
+CYLINDRICAL_ORDER = ("Z", "X", "A")
+
+
+#: How far (mm or degrees, in axis space) the machine may stand off the program's path for
+#: the way back to follow it.
+ON_PATH = 0.05
+#: Operations after the resume point the machine may have run when nobody knows what was
+#: sent (a checkpoint after an abort or a restart): the session's queue and the device's.
+RETRACE_WINDOW = 64
+
+
+def retrace(
+    program: Program, axes: Sequence[str], start: int, upto: int, mpos: Sequence[float]
+) -> list[dict[str, float]]:
+    """The program's own path back from where the machine stands to where ``start`` begins.
+
+    The machine stopped somewhere on the segments of operations ``start … upto - 1``
+    (they may have run without their answers getting back; after a restart, when what
+    was sent is unknown, ``upto`` is a window of :data:`RETRACE_WINDOW` operations).
+    Going back along them, vertex by vertex, only travels where the machine has just
+    been: on the winder that never turns the base with the needle among the nails.
+    Empty when the machine is
+    not on that stretch of path (then the caller goes straight, axis by axis).
+    """
+    path = program.path(axes)
+    first = int(np.searchsorted(path.ops, start, side="left"))
+    last = int(np.searchsorted(path.ops, upto, side="left"))
+    if first == 0 or last <= first - 1:
+        return []
+    vertices = path.coords[first - 1 : last]  # the position before ``start``, then each end
+    here = np.array([mpos[i] if i < len(mpos) else np.nan for i in range(len(axes))])
+    known = ~np.isnan(here) & ~np.isnan(vertices).any(axis=0)
+
+    def on(k: int) -> bool:
+        a, b = vertices[k][known], vertices[k + 1][known]
+        span = b - a
+        length2 = float(span @ span)
+        t = 0.0 if length2 == 0 else min(max(float((here[known] - a) @ span) / length2, 0.0), 1.0)
+        return float(np.linalg.norm(a + t * span - here[known])) <= ON_PATH
+
+    # The first stretch of segments the machine stands on (it cannot have gone further
+    # than it must), to its far end: standing at a corner is standing on the next segment.
+    best = next((k for k in range(len(vertices) - 1) if on(k)), -1)
+    if best < 0:
+        return []
+    while best + 1 < len(vertices) - 1 and on(best + 1):
+        best += 1
+    return [
+        {axis: float(v) for axis, v in zip(axes, vertices[k], strict=True) if not np.isnan(v)}
+        for k in range(best, -1, -1)
+    ]
+
+
+def preamble(
+    state: ResumeState, settings: GcodeSettings, way_back: Sequence[dict[str, float]] = ()
+) -> list[str]:
+    """Lines that put the machine into ``state`` without drawing or crossing on the way.
+
+    ``way_back`` (see :func:`retrace`) is followed when given; otherwise the machine
+    goes straight there — on the winder one axis at a time.
+    """
     lines = [settings.pen_up, "G90"]
-    if state.position:
+    if way_back:
+        lines += ["G0 " + " ".join(f"{a}{v:.3f}" for a, v in point.items()) for point in way_back]
+    elif state.position and settings.kinematics == "cylindrical":
+        ordered = [a for a in CYLINDRICAL_ORDER if a in state.position]
+        ordered += [a for a in state.position if a not in ordered]
+        lines += [f"G0 {a}{state.position[a]:.3f}" for a in ordered]
+    elif state.position:
         lines.append("G0 " + " ".join(f"{a}{v:.3f}" for a, v in state.position.items()))
     if state.pen_down:
         lines.append(settings.pen_down)
     if state.relative:
         lines.append("G91")
     if state.feed is not None:
-        lines.append(f"G1 F{state.feed:g}")
+        lines.append(f"F{state.feed:g}")  # the feed alone: the motion mode is the file's
     return lines
 
 
@@ -198,6 +266,12 @@ class GcodeStream:
     @property
     def sent_all(self) -> bool:
         return self.next_index >= len(self.program) and not self.pending
+
+    def take_back(self, index: int) -> None:
+        """Lines from operation ``index`` on were taken back unsent: send them again later."""
+        while self.pending and self.pending[-1] >= index:
+            self.pending.pop()
+        self.next_index = min(self.next_index, index)
 
     def note_written(self, index: int) -> None:
         """Operation ``index``'s line left for the device (it may run without an answer back)."""

@@ -155,6 +155,7 @@ class JobRunner(QObject):
         self._running_since: float | None = None
         self._session: MachineSession | None = None
         self._gcode = GcodeDriver(self)
+        self._fingerprint_cache: tuple[Program, str] | None = None
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
@@ -304,6 +305,8 @@ class JobRunner(QObject):
     def pause(self) -> None:
         """Let the operation under way finish, then stop before the next one."""
         if self._state is JobState.RUNNING:
+            if self._gcode_dialect():
+                self._gcode.hold_back()  # lines not yet on the wire wait for the resume
             if self._in_flight is None:
                 self._set_state(JobState.PAUSED)
             else:
@@ -807,12 +810,19 @@ class JobRunner(QObject):
     # --- checkpoint ----------------------------------------------------------
 
     def _checkpoint_path(self, program: Program) -> Path:
-        return self.checkpoint_dir / f"{program.fingerprint()}.json"
+        return self.checkpoint_dir / f"{self._fingerprint(program)}.json"
+
+    def _fingerprint(self, program: Program) -> str:
+        """The program's fingerprint, hashed once: a checkpoint is written twice a second."""
+        cached = self._fingerprint_cache
+        if cached is None or cached[0] is not program:
+            cached = self._fingerprint_cache = (program, program.fingerprint())
+        return cached[1]
 
     def _write_checkpoint(self, program: Program, completed: int) -> None:
         """Atomically: a crash leaves the old checkpoint or the new one, never half of one."""
         record = {
-            "fingerprint": program.fingerprint(),
+            "fingerprint": self._fingerprint(program),
             "name": program.name,
             "source": str(program.source) if program.source is not None else None,
             "completed": completed,
@@ -847,7 +857,7 @@ class JobRunner(QObject):
         completed = record.get("completed") if isinstance(record, dict) else None
         if (
             not isinstance(record, dict)
-            or record.get("fingerprint") != program.fingerprint()
+            or record.get("fingerprint") != self._fingerprint(program)
             or not isinstance(completed, int)
             or not -1 <= completed < len(program) - 1
         ):
