@@ -24,6 +24,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
+from app.gcode_developer import describe_gcode
 from app.machine import LinkState
 from app.session import MachineSession
 from app.stage_echoes import STATUS_TEXT
@@ -263,6 +264,9 @@ def _mm(value_um: int, unit: str, *, signed: bool = False) -> str:
 
 def describe_message(message: object) -> str:
     """Other dialects' messages are small dataclasses: their fields read well enough."""
+    gcode = describe_gcode(message)
+    if gcode is not None:
+        return gcode
     if is_dataclass(message) and not isinstance(message, type):
         values = ", ".join(f"{f.name}={_plain(getattr(message, f.name))}" for f in fields(message))
         return f"{type(message).__name__}({values})"

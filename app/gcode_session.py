@@ -349,6 +349,10 @@ class GcodeSession(MachineSession):
             tail = f"; {len(lost)} unanswered line(s)" if lost else ""
             self.model.message.emit(f"Link lost: {reason}{tail}")
 
+    def receive_injected(self, data: bytes) -> None:
+        """Bytes a developer injects as the device's (developer pane): handled as if read."""
+        self._on_data(data)
+
     def _on_data(self, data: bytes) -> None:
         for reply in self.decoder.feed(data):
             self._last_heard = self.clock.now()

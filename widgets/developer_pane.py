@@ -58,6 +58,7 @@ from app.developer import (
 )
 from app.stage_echoes import STATUS_TEXT
 from app.station import Station
+from widgets.gcode_developer_box import GcodeEmulatorBox, GcodeReplyBox
 from widgets.style import MINUS, monospace_font
 
 #: How often the log view takes in what arrived: fast enough to feel live, slow
@@ -487,11 +488,18 @@ class DeveloperPane(QDockWidget):
         self.composer.setVisible(stage)
         self.emulator_box.setVisible(stage)
         self.joystick_box.setVisible(station.profile.dialect == "usb3")
+        gcode = station.profile.dialect == "gcode"
+        self.reply_box = GcodeReplyBox(station)
+        self.board_box = GcodeEmulatorBox(station)
+        self.reply_box.setVisible(gcode)
+        self.board_box.setVisible(gcode)
         self.log_view = FrameLogView(self.frame_log)
 
         self.setWidget(self._build(self._controls_column()))
         self.emulator_controls.availabilityChanged.connect(self._show_simulation)
+        self.emulator_controls.availabilityChanged.connect(self.board_box.sync)
         self._show_simulation()
+        self.board_box.sync()
 
     def _controls_column(self) -> QScrollArea:
         column = QWidget()
@@ -502,6 +510,8 @@ class DeveloperPane(QDockWidget):
         layout.addWidget(self.composer)
         layout.addWidget(self.emulator_box)
         layout.addWidget(self.joystick_box)
+        layout.addWidget(self.reply_box)
+        layout.addWidget(self.board_box)
         layout.addStretch(1)
         scroll = QScrollArea()
         scroll.setWidget(column)
