@@ -186,8 +186,9 @@ class JobsDock(QDockWidget):
             "instead of refusing the job"
         )
         gcode = self.station.profile.dialect == "gcode"
-        for check in (self.translate_pen_check, self.skip_check):
-            check.setVisible(gcode)
+        pen = self.station.profile.capabilities.pen
+        for check, shown in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
+            check.setVisible(shown)
             check.toggled.connect(self._options_changed)
             row.insertWidget(row.count() - 3, check)
         return row
@@ -407,10 +408,14 @@ class JobsDock(QDockWidget):
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
             return False
         self.say(f"{path.name}: {len(program)} operations loaded")
-        summary = getattr(program, "summary", None)
-        if callable(summary):
-            self.say(f"{path.name}: {summary()}")
-        for note in program.notes:
+        notes = list(program.notes)
+        if isinstance(program, StringArtProgram):
+            # The totals with this machine's time for them (the loader knew no machine).
+            estimate = self.runner.estimate
+            plain = program.job.summary()
+            notes = [n for n in notes if n != plain]
+            notes.insert(0, program.job.summary(estimate.total_s if estimate else None))
+        for note in notes:
             self.say(f"{path.name}: {note}")
         self._program_changed()
         return True
