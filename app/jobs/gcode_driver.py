@@ -303,7 +303,9 @@ class GcodeDriver:
         assert runner.program is not None
         runner._in_flight = stream.pending[0] if stream.pending else None
         now = runner.station.clock.now()
-        current = runner._in_flight
+        # The operation the machine is at: the first not known executed (the lines answered
+        # after it wait in the device's planner).
+        current = stream.executed if stream.executed < len(runner.program) else None
         if current is not None and current != self._shown and now - self._shown_at >= SHOW_EVERY_S:
             # The dock shows the operation under way; a thousand lines a second need not
             # all be shown, so at most ten a second are.
