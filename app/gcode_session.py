@@ -52,6 +52,8 @@ SILENCE_S = 2.0
 #: is *planned*, so counting answers alone would let a held key fill the planner).
 JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
+#: A stop resets the device this long after its hold at the latest, standing or not.
+RESET_AFTER_S = 2.0
 #: Fraction of an axis's top speed a held arrow jogs at.
 JOG_SPEED_SHARE = 0.5
 _MOVING_STATES = frozenset({"Run", "Jog", "Home"})
@@ -120,6 +122,8 @@ class GcodeSession(MachineSession):
         self._status_at = 0.0
         self._jog_unanswered = 0
         self._jog_status_fresh = False
+        self._reset_requested_at: float | None = None
+        self._dropped_by_stop = 0
         self._planner_size = 0
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -228,15 +232,31 @@ class GcodeSession(MachineSession):
     # --- intents ------------------------------------------------------------------
 
     def stop_all(self) -> None:
-        """Hold at once, then reset so buffered lines are dropped; the position is kept."""
+        """Hold at once; reset once the machine stands, so buffered lines are dropped.
+
+        A reset while the axes still move makes GRBL raise ALARM:3 and forget its
+        position, so the reset waits for a status report saying the hold is
+        complete (``Hold:0``) or the machine idle — or for :data:`RESET_AFTER_S`.
+        """
         self._jog = [0] * self.axis_count
         if not self.link.is_open:
             return
-        dropped = len(self.streamer.discard_queued())
+        self._dropped_by_stop = len(self.streamer.discard_queued())
         self.feed_hold()
-        lost = len(self.soft_reset())
-        if dropped or lost:
-            self.model.message.emit(f"Stopped: {dropped + lost} line(s) not run")
+        self._reset_requested_at = self.clock.now()
+        self.query_status()
+
+    @property
+    def stopping(self) -> bool:
+        """A stop was asked for and its reset has not gone out yet."""
+        return self._reset_requested_at is not None
+
+    def _reset_after_stop(self) -> None:
+        self._reset_requested_at = None
+        lost = len(self.soft_reset()) + self._dropped_by_stop
+        self._dropped_by_stop = 0
+        if lost:
+            self.model.message.emit(f"Stopped: {lost} line(s) not run")
 
     def move_absolute(self, axis: int, position: float) -> bool:
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
@@ -307,6 +327,9 @@ class GcodeSession(MachineSession):
         if not self.link.is_open:
             return
         now = self.clock.now()
+        requested = self._reset_requested_at
+        if requested is not None and now - requested > RESET_AFTER_S:
+            self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
         if now - self._last_heard > SILENCE_S:
             self._last_heard = now
@@ -314,7 +337,10 @@ class GcodeSession(MachineSession):
             self.linkLost.emit()
 
     def shutdown(self) -> None:
+        """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
         self._timer.stop()
+        if self.stopping and self.link.is_open:
+            self._reset_after_stop()
 
     # --- link events and replies -------------------------------------------------------
 
@@ -330,6 +356,7 @@ class GcodeSession(MachineSession):
         self.streamer.clear()
         self._seen_idle = False
         self._status_asked_at = None
+        self._reset_requested_at = None
         self._last_heard = self.clock.now()
         self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
         if self._autotick:
@@ -338,6 +365,7 @@ class GcodeSession(MachineSession):
 
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
+        self._reset_requested_at = None
         self._jog = [0] * self.axis_count
         lost = self.streamer.clear()
         for axis in range(self.axis_count):
@@ -409,6 +437,12 @@ class GcodeSession(MachineSession):
     def _apply_status(self, report: StatusReport) -> None:
         self._status_asked_at = None
         self.status = report
+        if self._reset_requested_at is not None:
+            held = report.state == "Hold" and report.substate in (None, "0")
+            if held or report.state in ("Idle", "Alarm"):
+                self._reset_after_stop()
+            else:
+                self.request_status()  # still braking: ask again at once
         if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
             # Free blocks of an idle machine with nothing on its way: the planner's size.
             self._planner_size = report.planner_free

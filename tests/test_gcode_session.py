@@ -157,6 +157,11 @@ def test_stop_holds_then_resets_and_keeps_the_position(plotter: StationHarness) 
     resets: list[bool] = []
     session.reset.connect(lambda: resets.append(True))
     session.stop_all()
+    assert FEED_HOLD in b"".join(plotter.written)
+    # The reset waits for the hold to complete: a reset in motion loses GRBL its position.
+    assert session.stopping and SOFT_RESET not in b"".join(plotter.written)
+    plotter.run_until(lambda: not session.stopping, timeout=2)
+    assert plotter.gcode_emulator.state in ("Hold", "Idle")
     written = b"".join(plotter.written)
     assert written.index(FEED_HOLD) < written.index(SOFT_RESET)
     assert resets and session.streamer.idle
