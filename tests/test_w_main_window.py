@@ -322,6 +322,26 @@ def test_geometry_and_page_survive_a_restart(
     assert second.stack.currentWidget() is second.relative_panel
 
 
+def test_job_reading_options_survive_a_restart(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    first = _open_window(qtbot, harness, settings=settings)
+    dock = first.jobs_dock
+    assert not dock.draw_check.isChecked() and dock.translate_pen_check.isChecked()
+    qtbot.mouseClick(dock.draw_check, Qt.MouseButton.LeftButton)
+    dock.translate_pen_check.setChecked(False)
+    dock.step_combo.setCurrentIndex(dock.step_combo.findData(1e-3))
+    first.close()
+
+    again = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    window = _open_window(qtbot, harness, settings=again)
+    second = window.jobs_dock
+    assert second.draw_check.isChecked()
+    assert not second.translate_pen_check.isChecked()
+    assert second.options.excellon_step_inch == 1e-3
+
+
 def test_closing_removes_the_key_filter_and_stops_the_station(
     qtbot: QtBot, harness: StationHarness, window: MainWindow
 ) -> None:

@@ -193,6 +193,36 @@ class JobsDock(QDockWidget):
             row.insertWidget(row.count() - 3, check)
         return row
 
+    def option_values(self) -> dict[str, object]:
+        """The operator's reading options, to keep across launches (the main window stores)."""
+        return {
+            "draw": self.draw_check.isChecked(),
+            "excellon_step_inch": float(self.step_combo.currentData()),
+            "translate_pen": self.translate_pen_check.isChecked(),
+            "skip_unsupported": self.skip_check.isChecked(),
+        }
+
+    def restore_options(self, values: dict[str, object]) -> None:
+        """Set the reading options from ``values`` (unknown or malformed entries are ignored)."""
+        checks = {
+            "draw": self.draw_check,
+            "translate_pen": self.translate_pen_check,
+            "skip_unsupported": self.skip_check,
+        }
+        for key, check in checks.items():
+            value = values.get(key)
+            if isinstance(value, bool):
+                check.setChecked(value)
+            elif isinstance(value, str) and value in ("true", "false"):  # INI files keep text
+                check.setChecked(value == "true")
+        step = values.get("excellon_step_inch")
+        try:
+            index = self.step_combo.findData(float(str(step)))
+        except ValueError:
+            index = -1
+        if index >= 0:
+            self.step_combo.setCurrentIndex(index)
+
     @property
     def options(self) -> JobOptions:
         profile = self.station.profile

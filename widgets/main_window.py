@@ -77,6 +77,7 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
 )
 
 _SETTINGS_GROUP = "main_window"
+_JOB_OPTIONS_GROUP = "job_options"
 
 
 def _is_text_editing(widget: QWidget | None) -> bool:
@@ -436,6 +437,10 @@ class MainWindow(QMainWindow):
         state = self._settings.value("state")
         page = self._settings.value("page", 0, type=int)
         self._settings.endGroup()
+        self._settings.beginGroup(_JOB_OPTIONS_GROUP)
+        options = {key: self._settings.value(key) for key in self._settings.childKeys()}
+        self._settings.endGroup()
+        self.jobs_dock.restore_options(options)
         if not (isinstance(geometry, QByteArray) and self.restoreGeometry(geometry)):
             self.resize(980, 640)
         if isinstance(state, QByteArray):
@@ -450,6 +455,10 @@ class MainWindow(QMainWindow):
         self._settings.setValue("geometry", self.saveGeometry())
         self._settings.setValue("state", self.saveState())
         self._settings.setValue("page", self.menu_panel.current)
+        self._settings.endGroup()
+        self._settings.beginGroup(_JOB_OPTIONS_GROUP)
+        for key, value in self.jobs_dock.option_values().items():
+            self._settings.setValue(key, value)
         self._settings.endGroup()
         self._settings.sync()
 
