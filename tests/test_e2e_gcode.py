@@ -27,7 +27,7 @@ from PySide6.QtCore import QTimer
 from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JobOptions, load_job
-from app.jobs.program import Program
+from app.jobs.program import OpKind, Program
 from app.jobs.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
@@ -41,16 +41,20 @@ PROFILE = load_profile("corexy-plotter")
 
 
 @pytest.fixture
-def emulator(tmp_path: Path) -> Iterator[tuple[str, Path]]:
-    """The plotter emulator on a pty: (device path, log path); always terminated."""
+def emulator(tmp_path: Path, request: pytest.FixtureRequest) -> Iterator[tuple[str, Path]]:
+    """The plotter emulator on a pty: (device path, log path); always terminated.
+
+    The CoreXY plotter unless a test asks for another profile (``indirect`` parameter).
+    """
     log = tmp_path / "plotter.log"
+    profile = getattr(request, "param", "corexy-plotter")
     process = subprocess.Popen(
         [
             sys.executable,
             "-m",
             "protocol.emulator",
             "--profile",
-            "corexy-plotter",
+            profile,
             "--pty",
             "--time-scale",
             str(TIME_SCALE),
@@ -82,8 +86,8 @@ def emulator(tmp_path: Path) -> Iterator[tuple[str, Path]]:
 
 
 @pytest.fixture
-def station(qtbot: QtBot) -> Iterator[Station]:
-    built = Station(PROFILE)
+def station(qtbot: QtBot, request: pytest.FixtureRequest) -> Iterator[Station]:
+    built = Station(load_profile(getattr(request, "param", "corexy-plotter")))
     try:
         yield built
     finally:
@@ -198,3 +202,34 @@ def test_an_error_reply_stops_the_job_at_its_line(
     moves = [e for e in events(log) if e["event"] == "move"]
     # Nothing after the refused line reached the paper: the way home never ran.
     assert all(not (e["pos"]["X"] == 0 and e["pos"]["Y"] == 0) for e in moves)
+
+
+GRBL = load_profile("grbl-plotter")
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_arcs_go_as_written_and_the_board_ends_each_where_the_preview_does(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, shared_dir: Path, tmp_path: Path
+) -> None:
+    path, log = emulator
+    connect(qtbot, station, path)
+    source = shared_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
+    options = JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title, skip_unsupported=True)
+    program = load_job(source, ["X", "Y"], options)
+    arcs = [op for op in program if op.line[:3] in ("G02", "G03")]
+    assert len(arcs) == 151
+    runner = run(qtbot, station, program, tmp_path, [])
+    assert runner.state is JobState.DONE, runner.state
+    logged = events(log)
+    received = [e["text"] for e in logged if e["event"] == "line"]
+    # Every arc went to the board as the file wrote it.
+    assert [text for text in received if text[:3] in ("G02", "G03")] == [op.line for op in arcs]
+    # The board's moves pass through every end point the preview has, in order.
+    ends = iter(
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
+    )
+    for op in program:
+        if op.kind is OpKind.MOVE and op.line[:3] in ("G02", "G03"):
+            target = (round(op.target["X"], 3), round(op.target["Y"], 3))
+            assert any(end == target for end in ends), f"{op.source}: never reached {target}"
