@@ -12,14 +12,17 @@ Run by ``tests/benchmark.py``.
 
 from __future__ import annotations
 
-import selectors
-import subprocess
 import sys
 import time
 from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+from tests.helpers.emulator_process import emulator_on_pty  # noqa: E402
+
 BAUD = 115200
 WIRE_BYTES_PER_S = BAUD / 10
 
@@ -45,54 +48,36 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> tuple[float
     profile = load_profile("corexy-plotter")
     assert profile.gcode is not None
     profile = replace(profile, gcode=replace(profile.gcode, streaming=mode))
-    command = [
-        sys.executable, "-m", "protocol.emulator", "--profile", "corexy-plotter", "--pty",
-        "--baud", str(BAUD),
-    ]  # fmt: skip
-    with subprocess.Popen(
-        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL
-    ) as process:
+    with emulator_on_pty("--profile", "corexy-plotter", "--baud", str(BAUD)) as path:
+        station = Station(profile)
         try:
-            assert process.stdout is not None
-            with selectors.DefaultSelector() as selector:
-                selector.register(process.stdout, selectors.EVENT_READ)
-                if not selector.select(15):
-                    raise RuntimeError("the emulator printed no device path")
-            path = process.stdout.readline().decode().strip()
-            station = Station(profile)
-            try:
-                station.connect_serial(path)
-                deadline = time.monotonic() + 10
+            station.connect_serial(path)
+            deadline = time.monotonic() + 10
+            session = station.gcode_session
+            while session is None or session.planner_size == 0:
+                app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 20)
                 session = station.gcode_session
-                while session is None or session.planner_size == 0:
-                    app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 20)
-                    session = station.gcode_session
-                    if time.monotonic() > deadline:
-                        raise RuntimeError("the plotter did not answer")
-                answered = [0]
-                session.lineAcknowledged.connect(
-                    lambda _sent: answered.__setitem__(0, answered[0] + 1)
-                )
-                session.send_line(lines[0], "console")  # get there; the rest move nothing
-                while answered[0] < 1 or not session.settled:
+                if time.monotonic() > deadline:
+                    raise RuntimeError("the plotter did not answer")
+            answered = [0]
+            session.lineAcknowledged.connect(lambda _sent: answered.__setitem__(0, answered[0] + 1))
+            session.send_line(lines[0], "console")  # get there; the rest move nothing
+            while answered[0] < 1 or not session.settled:
+                app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 5)
+            answered[0] = 0
+            if as_job:
+                elapsed = _run_as_job(app, station, lines)
+            else:
+                start = time.perf_counter()
+                for line in lines:
+                    session.send_line(line, "console")
+                while answered[0] < len(lines):
                     app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 5)
-                answered[0] = 0
-                if as_job:
-                    elapsed = _run_as_job(app, station, lines)
-                else:
-                    start = time.perf_counter()
-                    for line in lines:
-                        session.send_line(line, "console")
-                    while answered[0] < len(lines):
-                        app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 5)
-                        if time.perf_counter() - start > 300:
-                            raise RuntimeError(f"only {answered[0]} of {len(lines)} answered")
-                    elapsed = time.perf_counter() - start
-            finally:
-                station.shutdown()
+                    if time.perf_counter() - start > 300:
+                        raise RuntimeError(f"only {answered[0]} of {len(lines)} answered")
+                elapsed = time.perf_counter() - start
         finally:
-            process.terminate()
-            process.wait(timeout=5)
+            station.shutdown()
     return elapsed, sum(len(line) + 1 for line in lines)
 
 
@@ -154,6 +139,5 @@ def bench_gcode_streaming() -> list[str]:
 
 
 if __name__ == "__main__":
-    sys.path.insert(0, str(ROOT))
     for text in bench_gcode_streaming():
         print(text)

@@ -13,9 +13,6 @@ whatever happens.
 from __future__ import annotations
 
 import re
-import selectors
-import subprocess
-import sys
 import time
 from collections import Counter
 from collections.abc import Iterator
@@ -31,9 +28,8 @@ from app.jobs.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.station import Station
+from tests.helpers.emulator_process import emulator_on_pty
 
-ROOT = Path(__file__).resolve().parent.parent
-STARTUP_TIMEOUT_S = 15.0
 JOB_TIMEOUT_MS = 45_000  # the whole test stays under a minute
 TIME_SCALE = 20
 SAMPLE_HOLES = 36
@@ -44,43 +40,9 @@ HOLE_LINE = re.compile(r"^\d+\.\d+ hole X(-?\d+) Y(-?\d+)$")
 def emulator(tmp_path: Path) -> Iterator[tuple[str, Path]]:
     """The drill emulator on a pty: (device path, log path); always terminated."""
     log = tmp_path / "drill.log"
-    process = subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "protocol.emulator",
-            "--profile",
-            "pcb-drill",
-            "--pty",
-            "--link",
-            str(tmp_path / "drill"),
-            "--time-scale",
-            str(TIME_SCALE),
-            "--log",
-            str(log),
-        ],
-        cwd=ROOT,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-    )
-    try:
-        assert process.stdout is not None
-        with selectors.DefaultSelector() as selector:
-            selector.register(process.stdout, selectors.EVENT_READ)
-            assert selector.select(STARTUP_TIMEOUT_S), "the emulator printed no device path"
-        path = process.stdout.readline().decode().strip()
-        assert path, f"the emulator ended (status {process.poll()})"
+    args = ("--profile", "pcb-drill", "--link", str(tmp_path / "drill"))
+    with emulator_on_pty(*args, "--time-scale", str(TIME_SCALE), "--log", str(log)) as path:
         yield path, log
-    finally:
-        if process.poll() is None:
-            process.terminate()
-        try:
-            process.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait()
-        if process.stdout is not None:
-            process.stdout.close()
 
 
 @pytest.fixture

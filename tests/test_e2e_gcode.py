@@ -14,9 +14,6 @@ whatever happens.
 from __future__ import annotations
 
 import json
-import selectors
-import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -32,9 +29,8 @@ from app.jobs.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.station import Station
+from tests.helpers.emulator_process import emulator_on_pty
 
-ROOT = Path(__file__).resolve().parent.parent
-STARTUP_TIMEOUT_S = 15.0
 JOB_TIMEOUT_MS = 90_000
 TIME_SCALE = 50
 PROFILE = load_profile("corexy-plotter")
@@ -48,41 +44,9 @@ def emulator(tmp_path: Path, request: pytest.FixtureRequest) -> Iterator[tuple[s
     """
     log = tmp_path / "plotter.log"
     profile = getattr(request, "param", "corexy-plotter")
-    process = subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "protocol.emulator",
-            "--profile",
-            profile,
-            "--pty",
-            "--time-scale",
-            str(TIME_SCALE),
-            "--log",
-            str(log),
-        ],
-        cwd=ROOT,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.DEVNULL,
-    )
-    try:
-        assert process.stdout is not None
-        with selectors.DefaultSelector() as selector:
-            selector.register(process.stdout, selectors.EVENT_READ)
-            assert selector.select(STARTUP_TIMEOUT_S), "the emulator printed no device path"
-        path = process.stdout.readline().decode().strip()
-        assert path, f"the emulator ended (status {process.poll()})"
+    scale = ("--time-scale", str(TIME_SCALE))
+    with emulator_on_pty("--profile", profile, *scale, "--log", str(log)) as path:
         yield path, log
-    finally:
-        if process.poll() is None:
-            process.terminate()
-        try:
-            process.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait()
-        if process.stdout is not None:
-            process.stdout.close()
 
 
 @pytest.fixture
