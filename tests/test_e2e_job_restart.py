@@ -24,6 +24,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.helpers.emulator_process import stop
+
 ROOT = Path(__file__).resolve().parent.parent
 TIMEOUT_S = 20.0
 OPERATIONS = 24
@@ -45,15 +47,7 @@ class Processes:
 
     def stop_all(self) -> None:
         for process in self.started:
-            if process.poll() is None:
-                process.terminate()
-            try:
-                process.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait()
-            if process.stdout is not None:
-                process.stdout.close()
+            stop(process)
 
 
 @pytest.fixture
