@@ -81,7 +81,8 @@ class SentLine:
 
     serial: int
     text: str
-    origin: str  # "job", "console" or "intent"
+    #: "job", "resume" (the set-up before a resumed job), "console", "intent" (panels) or "jog"
+    origin: str
     op_index: int | None = None
 
 
@@ -119,7 +120,6 @@ class GcodeSession(MachineSession):
         self._seen_idle = True
         self._status_asked_at: float | None = None  # an unanswered "?", for request_status
         self._last_heard = clock.now()
-        self._status_at = 0.0
         self._jog_unanswered = 0
         self._jog_status_fresh = False
         self._reset_requested_at: float | None = None
