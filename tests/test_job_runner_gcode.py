@@ -300,3 +300,21 @@ def test_the_way_back_retraces_the_path_from_where_the_machine_stopped() -> None
     assert retrace(program, axes, 1, 4, (10.00001, 70.0))[0] == {"A": 10.0, "X": 70.0}
     # Nowhere on that stretch (the machine was moved by hand): no way back is made up.
     assert retrace(program, axes, 1, 4, (50.0, 0.0)) == []
+
+
+def test_step_sends_one_line_at_a_time(plotter: StationHarness, runner: JobRunner) -> None:
+    assert runner.load(square_program()) == []
+    runner.step()
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+    assert runner.done == 1  # the pen lifted, nothing moved
+    assert drawn(plotter) == []
+    runner.step()
+    plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+    assert runner.done == 2
+    plotter.run_until(lambda: plotter.gcode_emulator.state == "Idle", timeout=5)
+    assert drawn(plotter) == EXPECTED[:1]  # to the first corner, pen up; no further
+    plotter.run(2.0)
+    assert drawn(plotter) == EXPECTED[:1]
+    runner.resume()
+    run_to_end(plotter, runner)
+    assert state_of(runner) is JobState.DONE and drawn(plotter) == EXPECTED

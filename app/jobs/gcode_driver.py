@@ -18,7 +18,6 @@ from app.jobs.gcode_stream import (
     resume_state,
     retrace,
 )
-from app.jobs.program import OpKind
 from protocol.gcode.codec import StatusReport
 
 if TYPE_CHECKING:
@@ -99,10 +98,8 @@ class GcodeDriver:
             return
         if runner._single_step and stream.in_flight:
             return
-        if runner._single_step:
-            wait = self._feed_one(stream, session)
-        else:
-            wait = stream.feed(session)
+        # Single step: one operation that sends something, then the runner pauses.
+        wait = stream.feed(session, 1 if runner._single_step else None)
         self._report(stream)
         if stream.in_flight:
             return
@@ -115,27 +112,6 @@ class GcodeDriver:
                 assert runner.program is not None
                 runner._write_checkpoint(runner.program, len(runner.program) - 1)
                 runner._finish()
-
-    def _feed_one(self, stream: GcodeStream, session: GcodeSession) -> int | None:
-        """Single step: one operation that sends something, then the runner pauses."""
-        start = stream.next_index
-        while stream.next_index == start and stream.next_index < len(stream.program):
-            op = stream.program[stream.next_index]
-            if op.kind is OpKind.WAIT:
-                return stream.next_index
-            before = stream.next_index
-            text = stream.line_for(before)
-            if text is None:
-                stream.next_index += 1
-                if not stream.pending:
-                    stream.answered = stream.executed = before + 1
-                start = stream.next_index
-                continue
-            if session.send_line(text, "job", before):
-                stream.next_index += 1
-                stream.pending.append(before)
-            return None
-        return None
 
     def _wait_for_operator(self, index: int) -> None:
         from app.jobs.runner import JobState

@@ -202,14 +202,18 @@ class GcodeStream:
             op, self.settings, feed_for(op.target, self.profile), axis_order=self._axis_order
         )
 
-    def feed(self, session: GcodeSession) -> int | None:
+    def feed(self, session: GcodeSession, most: int | None = None) -> int | None:
         """Hand lines to the session until enough are ahead; returns a WAIT's index met first.
 
-        Operations that send nothing (comments) are done when everything before
-        them is: they are completed here when nothing is pending.
+        ``most`` caps the lines handed over (single step: one).  Operations that
+        send nothing (comments) are done when everything before them is: they are
+        completed here when nothing is pending.
         """
         program = self.program
+        sent = 0
         while self.next_index < len(program) and session.queued < LINES_AHEAD:
+            if most is not None and sent >= most:
+                return None
             index = self.next_index
             op = program[index]
             if op.kind is OpKind.WAIT:
@@ -224,6 +228,7 @@ class GcodeStream:
                 self.next_index = index
                 return None
             self.pending.append(index)
+            sent += 1
         return None
 
     # --- replies -------------------------------------------------------------
