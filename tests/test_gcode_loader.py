@@ -709,3 +709,24 @@ def test_the_plotters_own_bare_value_words_are_sent_as_written(tmp_path: Path) -
     assert program.unsupported == ()
     on_grbl = grbl(path)  # GRBL has no M98/M99: refused there, with the line
     assert unsupported_lines(on_grbl) == [1, 2]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "G1 X" + "1" * 80 + " Y1\nG2 X2 Y1 I5 J0\n",  # a radius whose chord step rounds to 0
+        "G1 X" + "9" * 400 + " Y1\nG2 X2 Y1 I5 J0\n",  # a coordinate beyond any float
+    ],
+)
+def test_absurd_coordinates_before_an_arc_are_refused_or_drawn_never_a_crash(
+    tmp_path: Path, text: str
+) -> None:
+    path = write(tmp_path, text)
+    try:
+        program = grbl(path)
+    except JobFileError as exc:
+        assert exc.line == 2 and "too large" in exc.reason
+    else:
+        # Loaded: the move far outside any travel is what the runner refuses, by line.
+        limits = {"X": (0.0, 300.0), "Y": (0.0, 200.0)}
+        assert {v.operation.source.line for v in program.limit_violations(limits)} >= {1}

@@ -52,6 +52,8 @@ def flatten_arc(
         cx, cy = sx + offsets.get("I", 0.0), sy + offsets.get("J", 0.0)
     else:
         raise JobFileError(file, number, f"an arc needs I/J or R: {code!r}")
+    if not all(math.isfinite(v) for v in (sx, sy, ex, ey, cx, cy)):
+        raise JobFileError(file, number, f"arc coordinates too large to draw: {code!r}")
     r0 = math.hypot(sx - cx, sy - cy)
     r1 = math.hypot(ex - cx, ey - cy)
     a0 = math.atan2(sy - cy, sx - cx)
@@ -65,7 +67,8 @@ def flatten_arc(
     radius = max(r0, r1)
     if radius > ARC_TOLERANCE_MM:
         step = 2 * math.acos(1 - ARC_TOLERANCE_MM / radius)
-        segments = math.ceil(sweep / step)
+        # A radius so large that the step rounds to nothing gets the most segments.
+        segments = math.ceil(sweep / step) if step > 0 else MAX_ARC_SEGMENTS
     else:
         segments = 1
     segments = min(max(segments, MIN_ARC_SEGMENTS), MAX_ARC_SEGMENTS)
