@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from app.jobs.dry_run import estimate
 from app.jobs.gcode import (
@@ -730,3 +732,48 @@ def test_absurd_coordinates_before_an_arc_are_refused_or_drawn_never_a_crash(
         # Loaded: the move far outside any travel is what the runner refuses, by line.
         limits = {"X": (0.0, 300.0), "Y": (0.0, 200.0)}
         assert {v.operation.source.line for v in program.limit_violations(limits)} >= {1}
+
+
+_FUZZ_WORDS = st.sampled_from(
+    ["G0", "G1", "G2", "G3", "G4", "G20", "G21", "G90", "G91", "G92", "G28", "M0", "M3", "M5",
+     "M4", "M300", "M280", "M98", "M99", "$H", "$$", "#1=", "[", "(c)", ";x", "N10", "*7", "%",
+     "X", "Y", "Z", "A", "I", "J", "R", "F", "P", "S", "T", "?", "~", "\t", " "]
+)  # fmt: skip
+_FUZZ_NUMBERS = st.one_of(
+    st.integers(-(10**6), 10**6).map(str),
+    st.floats(allow_nan=False, allow_infinity=False, width=32).map(lambda v: f"{v:g}"),
+    st.sampled_from(["", "-", ".", "1..2", "1e400", "0.0000001", "-.5"]),
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.lists(
+        st.lists(st.tuples(_FUZZ_WORDS, _FUZZ_NUMBERS), max_size=6).map(
+            lambda words: "".join(w + n + " " for w, n in words)
+        ),
+        min_size=1,
+        max_size=12,
+    ),
+    st.sampled_from(["corexy-plotter", "grbl-plotter", "string-art"]),
+    st.booleans(),
+)
+def test_any_text_loads_or_is_refused_with_a_line_never_a_crash(
+    tmp_path_factory: pytest.TempPathFactory, lines: list[str], profile: str, skip: bool
+) -> None:
+    path = tmp_path_factory.mktemp("fuzz") / "fuzz.gcode"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    machine = load_profile(profile)
+    axes = [axis.name for axis in machine.axes]
+    try:
+        program = load_gcode(
+            path, axes, machine.gcode, skip_unsupported=skip, machine_title=machine.title
+        )
+    except JobFileError as exc:
+        assert 0 <= exc.line <= len(lines) and exc.reason
+        return
+    # Whatever loaded can be previewed, checked and estimated.
+    program.preview_path(axes[0], axes[1])
+    program.limit_violations(machine.travel_limits())
+    estimate(program, machine, {}, 0.1)
+    assert all(1 <= problem.line <= len(lines) for problem in program.unsupported)
