@@ -445,3 +445,41 @@ def test_summary_shows_the_totals(shared_dir: Path) -> None:
     assert text.endswith(", about 1:02:05")
     assert f"thread {job.thread_length_mm() / 1000:.1f} m" in text
     assert "about" not in job.summary(None)
+
+
+_PARAM_LINES = st.lists(
+    st.tuples(
+        st.sampled_from(["tvar", "pocet_hrebiku", "polomer_matrice", "x", "", "TVAR"]),
+        st.sampled_from([" = ", "=", ": ", " "]),
+        st.sampled_from(["0", "3", "6", "1", "-2", "200", "14,5", "1.5", "1e9", "", "abc", "nan"]),
+    ).map(lambda t: "".join(t)),
+    max_size=5,
+)
+_PORADI = st.lists(
+    st.one_of(st.integers(-3, 250).map(str), st.sampled_from(["", " ", "x", "1.5", "\n"])),
+    max_size=30,
+).map(",".join)
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.one_of(_PARAM_LINES, st.just(["tvar = 0", "pocet_hrebiku = 200", "polomer_matrice = 14.5"])),
+    st.one_of(_PORADI, st.just("3,0,1,2")),
+)
+def test_any_pair_of_files_loads_or_is_refused_with_file_and_line(
+    tmp_path_factory: pytest.TempPathFactory, param_lines: list[str], poradi: str
+) -> None:
+    directory = tmp_path_factory.mktemp("pair")
+    (directory / "param.txt").write_text("\n".join(param_lines) + "\n", encoding="utf-8")
+    (directory / "poradi.txt").write_text(poradi + "\n", encoding="utf-8")
+    profile = load_profile("string-art")
+    axes = [axis.name for axis in profile.axes]
+    for chosen in ("param.txt", "poradi.txt"):
+        try:
+            program = load_job(directory / chosen, axes, JobOptions())
+        except JobFileError as exc:
+            assert exc.file in ("param.txt", "poradi.txt") and exc.reason
+            assert exc.line >= 0
+            continue
+        assert len(program) > 0
+        program.preview_path("A", "X")
