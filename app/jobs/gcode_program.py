@@ -24,6 +24,7 @@ import numpy.typing as npt
 
 from app.jobs.program import (
     LimitViolation,
+    LineProblem,
     Operation,
     OpKind,
     Program,
@@ -46,16 +47,8 @@ RAPID, LINEAR, CW_ARC, CCW_ARC, HOME = 0, 1, 2, 3, 4
 NO_MOTION = 255
 
 
-@dataclass(frozen=True)
-class GcodeProblem:
-    """A line this machine cannot execute: the runner refuses the job and lists these."""
-
-    line: int
-    text: str
-    reason: str
-
-    def __str__(self) -> str:
-        return f"line {self.line}: {self.text} — {self.reason}"
+#: A line this machine cannot execute (the name the G-code modules have always used).
+GcodeProblem = LineProblem
 
 
 class GcodeData:
@@ -173,6 +166,9 @@ class GcodeProgram(Program):
     #: Lines this machine cannot execute, by line; the runner refuses the job while any remain.
     unsupported: tuple[GcodeProblem, ...] = ()
     data: GcodeData = field(repr=False)
+
+    def unexecutable_lines(self) -> Sequence[LineProblem]:
+        return self.unsupported
 
     @property
     def axes(self) -> tuple[str, ...]:

@@ -65,6 +65,18 @@ def move(source: SourceRef, **target: float) -> Operation:
 
 
 @dataclass(frozen=True)
+class LineProblem:
+    """A file line the machine cannot execute, found while loading: the runner refuses it."""
+
+    line: int
+    text: str
+    reason: str
+
+    def __str__(self) -> str:
+        return f"line {self.line}: {self.text} — {self.reason}"
+
+
+@dataclass(frozen=True)
 class ProgramPath:
     """The vertices a program's moves pass through, as arrays (preview, estimate, limits).
 
@@ -158,6 +170,10 @@ class Program:
             zeros = np.zeros((len(flat), 1))
             return ProgramPath(np.hstack([flat.coords, zeros]), flat.ops, flat.pen)
         return self.path((x_axis, y_axis))
+
+    def unexecutable_lines(self) -> Sequence[LineProblem]:
+        """File lines this machine cannot execute (G-code files name them while loading)."""
+        return ()
 
     def kinds(self) -> frozenset[OpKind]:
         """The operation kinds the program uses (capability checks without a full scan)."""

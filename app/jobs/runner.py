@@ -45,7 +45,7 @@ import json
 import math
 import os
 import tempfile
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from functools import partial
@@ -283,10 +283,9 @@ class JobRunner(QObject):
 
     def _unexecutable_lines(self, program: Program) -> list[LimitViolation]:
         """G-code lines the loader found this machine cannot execute (named words, axes)."""
-        problems: Sequence[Any] = getattr(program, "unsupported", ())
         name = program.source.name if program.source is not None else program.name
         refused: list[LimitViolation] = []
-        for problem in problems:
+        for problem in program.unexecutable_lines():
             op = Operation(OpKind.GCODE, SourceRef(name, problem.line), line=problem.text)
             refused.append(UnsupportedOperation.of(problem.line, op, problem.reason))
         return refused
