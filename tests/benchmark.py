@@ -608,20 +608,32 @@ from app.jobs.loaders import JobOptions, load_job
 from app.profiles import load_profile
 from widgets.job_preview import ProgramGeometry
 
+def peak_mb():
+    # VmHWM belongs to this process image; ru_maxrss survives exec and would report
+    # the benchmark's own (large) parent process instead.
+    try:
+        with open("/proc/self/status") as status:
+            for line in status:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
 profile = load_profile("grbl-plotter")
 options = JobOptions(gcode=profile.gcode, machine_title=profile.title)
-imports_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+imports_mb = peak_mb()
 start = time.perf_counter()
 program = load_job(Path(sys.argv[1]), [axis.name for axis in profile.axes], options)
 loaded = time.perf_counter()
 geometry = ProgramGeometry(program, "X", "Y")
 drawn = time.perf_counter()
-peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+peak = peak_mb()
 estimate = estimate_gcode(program, profile)
 timed = time.perf_counter()
 print(json.dumps({
     "operations": len(program), "load": loaded - start, "geometry": drawn - loaded,
-    "estimate": timed - drawn, "imports_mb": imports_mb, "peak_mb": peak_mb,
+    "estimate": timed - drawn, "imports_mb": imports_mb, "peak_mb": peak,
     "work_points": int(len(geometry.work.x)), "model_hours": estimate.total_s / 3600,
 }))
 """
