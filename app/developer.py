@@ -24,11 +24,11 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
-from app.gcode_developer import describe_gcode
 from app.machine import LinkState
-from app.session import MachineSession
-from app.stage_echoes import STATUS_TEXT
-from app.stage_parameters import BY_TYPE
+from app.machines.gcode.developer import describe_gcode
+from app.machines.session import MachineSession
+from app.machines.stage.echoes import STATUS_TEXT
+from app.machines.stage.parameters import BY_TYPE
 from app.station import Station
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.mechanism import SwitchName

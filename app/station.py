@@ -15,17 +15,17 @@ from __future__ import annotations
 
 from PySide6.QtCore import QObject, QTimer, Signal
 
-from app.dialects import dialect_for
 from app.discovery import ble_uuids_for
-from app.drill_session import DrillSession
-from app.gcode_session import GcodeSession
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.drill.session import DrillSession
+from app.machines.gcode.session import GcodeSession
+from app.machines.registry import dialect_for
+from app.machines.session import MachineSession
+from app.machines.stage.echoes import StageEchoes
+from app.machines.stage.session import StageSession
+from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile
-from app.session import MachineSession
-from app.stage_echoes import StageEchoes
-from app.stage_session import StageSession
-from app.usb3_session import Usb3Session
 from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.drill_firmware import DrillFirmware

@@ -57,7 +57,7 @@ import numpy.typing as npt
 from PySide6.QtCore import QObject, Qt, QTimer, Signal
 
 from app.machine import LinkState
-from app.stage_session import SUBSCRIBER_TELEMETRY
+from app.machines.stage.session import SUBSCRIBER_TELEMETRY
 from app.station import Station
 from protocol.stage.codec import EchoFrame, Subscriber
 

@@ -88,9 +88,9 @@ def _run_as_job(app: object, station: object, lines: list[str]) -> float:
     from PySide6.QtCore import QEventLoop
     from PySide6.QtWidgets import QApplication
 
-    from app.jobs.runner import JobRunner, JobState
+    from app.jobs.run.runner import JobRunner, JobState
     from app.station import Station
-    from widgets.jobs_dock import JobsDock
+    from widgets.jobs.dock import JobsDock
 
     assert isinstance(app, QApplication) and isinstance(station, Station)
     with tempfile.TemporaryDirectory() as directory:

@@ -174,8 +174,8 @@ def bench_key_to_pty() -> list[str]:
 
     from app.link import Link
     from app.machine import LinkState, MachineModel
+    from app.machines.stage.session import StageSession
     from app.profiles import load_profile
-    from app.stage_session import StageSession
     from protocol.clock import MonotonicClock
     from protocol.transport.serial_link import SerialTransport
 
@@ -424,7 +424,7 @@ def bench_job_preview() -> list[str]:
 
     from app.profiles import load_profile
     from app.station import Station
-    from widgets.job_preview import JobPreview
+    from widgets.jobs.preview import JobPreview
 
     app = QApplication.instance() or QApplication([])
     program = _large_program(100_000)
@@ -457,7 +457,7 @@ def bench_dry_run() -> list[str]:
     """Emulated seconds per wall second of the dry run on a 10,000-move, two-axis program."""
     import random
 
-    from app.jobs.dry_run import estimate
+    from app.jobs.estimate.stage import estimate
     from app.jobs.program import Program, SourceRef, move
     from app.profiles import load_profile
 
@@ -486,8 +486,8 @@ def bench_drill_order() -> list[str]:
     """Load + optimise time and travel (file order vs optimised) per real board and 50 000 holes."""
     import numpy as np
 
-    from app.jobs.excellon import plan_drilling, read_drill_file
-    from app.jobs.hole_order import order_holes
+    from app.jobs.formats.excellon.hole_order import order_holes
+    from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
     shared = ROOT.parent / "shared"
     boards = [shared / "samples" / "pcb-driver" / "driver"]
@@ -529,13 +529,13 @@ def bench_string_art() -> list[str]:
 
     from PySide6.QtWidgets import QApplication
 
+    from app.jobs.formats.string_art.export import export_sd_files
+    from app.jobs.formats.string_art.program import StringArtProgram, build_program
+    from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
     from app.jobs.loaders import load_job
-    from app.jobs.string_art import StringArtJob, StringArtParams
-    from app.jobs.string_art_export import export_sd_files
-    from app.jobs.string_art_program import StringArtProgram, build_program
     from app.profiles import load_profile
     from app.station import Station
-    from widgets.job_preview import JobPreview
+    from widgets.jobs.preview import JobPreview
 
     rng = random.Random(1)
     sequence = [0]
@@ -603,10 +603,10 @@ _GCODE_CHILD = """
 import json, resource, sys, time
 from pathlib import Path
 sys.path.insert(0, sys.argv[2])
-from app.jobs.gcode_estimate import estimate_gcode
+from app.jobs.estimate.gcode import estimate_gcode
 from app.jobs.loaders import JobOptions, load_job
 from app.profiles import load_profile
-from widgets.job_preview import ProgramGeometry
+from widgets.jobs.preview import ProgramGeometry
 
 def peak_mb():
     # VmHWM belongs to this process image; ru_maxrss survives exec and would report

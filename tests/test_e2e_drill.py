@@ -22,9 +22,9 @@ import pytest
 from PySide6.QtCore import QTimer
 from pytestqt.qtbot import QtBot
 
-from app.jobs.excellon import build_drill_program, read_drill_file
+from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
 from app.jobs.program import OpKind
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.station import Station

@@ -25,7 +25,7 @@ from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import OpKind, Program
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.station import Station

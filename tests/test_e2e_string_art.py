@@ -29,11 +29,11 @@ import numpy as np
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.jobs.formats.string_art.geometry import DRILL_DEPTH_MM, shortest_turn
+from app.jobs.formats.string_art.program import StringArtProgram, build_program
+from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams, read_string_art
 from app.jobs.program import OpKind
-from app.jobs.runner import JobRunner, JobState
-from app.jobs.string_art import StringArtJob, StringArtParams, read_string_art
-from app.jobs.string_art_geometry import DRILL_DEPTH_MM, shortest_turn
-from app.jobs.string_art_program import StringArtProgram, build_program
+from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from protocol.emulator.gcode_firmware import GcodeEvent
 from tests.helpers.harness import StationHarness

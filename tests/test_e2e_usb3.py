@@ -25,11 +25,11 @@ import pytest
 from pytestqt.qtbot import QtBot
 
 from app.machine import LinkState
+from app.machines.usb3.session import Usb3Session
 from app.profiles import load_profile
 from app.station import Station
-from app.usb3_session import Usb3Session
 from protocol.usb3.codec import StepSize, Thread
-from widgets.usb3_panel import Usb3Panel
+from widgets.panels.usb3 import Usb3Panel
 
 ROOT = Path(__file__).resolve().parent.parent
 STARTUP_TIMEOUT = 15.0

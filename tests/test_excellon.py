@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from app.jobs.excellon import (
+from app.jobs.formats.excellon.reader import (
     DrillJob,
     build_drill_program,
     plan_drilling,

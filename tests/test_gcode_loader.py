@@ -11,18 +11,18 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.jobs.dry_run import estimate
-from app.jobs.gcode import (
+from app.jobs.estimate.gcode import estimate_gcode
+from app.jobs.estimate.stage import estimate
+from app.jobs.formats.gcode.loader import (
     PARAMETER_REASON,
     GcodeProgram,
     load_gcode,
     sniff_gcode,
 )
-from app.jobs.gcode_estimate import estimate_gcode
 from app.jobs.loaders import JobOptions, load_job, loader_for
 from app.jobs.program import JobFileError, OpKind
 from app.profiles import AxisProfile, GcodeSettings, MachineProfile, load_profile
-from widgets.job_preview import ProgramGeometry
+from widgets.jobs.preview import ProgramGeometry
 
 BUNNY = "CNC-Drawinger_unicorn_BUNNY.gcode"
 ESCRIBA = "Escriba_gcodetools_calibration.gcode"

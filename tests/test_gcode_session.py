@@ -15,8 +15,8 @@ from dataclasses import replace
 import pytest
 from pytestqt.qtbot import QtBot
 
-from app.gcode_session import SentLine
 from app.machine import LinkState
+from app.machines.gcode.session import SentLine
 from app.profiles import load_profile
 from protocol.gcode.codec import FEED_HOLD, SOFT_RESET, STATUS_QUERY
 from protocol.transport.loopback import Direction

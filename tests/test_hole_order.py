@@ -14,8 +14,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.jobs.excellon import plan_drilling, read_drill_file
-from app.jobs.hole_order import order_holes, travel_length
+from app.jobs.formats.excellon.hole_order import order_holes, travel_length
+from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
 coordinate = st.floats(-200, 200, allow_nan=False, allow_infinity=False)
 point_sets = st.lists(st.tuples(coordinate, coordinate), min_size=0, max_size=120)

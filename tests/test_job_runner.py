@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from app.jobs.program import Operation, OpKind, Program, SourceRef, load_point_list, move
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.stage.codec import CommandId, StageDecoder

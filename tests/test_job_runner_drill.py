@@ -15,10 +15,10 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
-from app.jobs.dry_run import DRILL_CYCLE_S, estimate_drill
-from app.jobs.excellon import build_drill_program, read_drill_file
+from app.jobs.estimate.stage import DRILL_CYCLE_S, estimate_drill
+from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.drill.codec import Command

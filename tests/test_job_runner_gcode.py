@@ -13,7 +13,7 @@ import pytest
 from pytestqt.qtbot import QtBot
 
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.transport.loopback import Direction
@@ -261,7 +261,7 @@ def test_pause_stops_after_the_lines_the_device_has_not_the_ones_queued(
 
 
 def test_the_winder_goes_back_one_axis_at_a_time_tool_radius_then_turn() -> None:
-    from app.jobs.gcode_stream import ResumeState, preamble
+    from app.jobs.run.gcode_stream import ResumeState, preamble
 
     winder = load_profile("string-art").gcode
     plotter = load_profile("corexy-plotter").gcode
@@ -280,7 +280,7 @@ def test_the_winder_goes_back_one_axis_at_a_time_tool_radius_then_turn() -> None
 
 
 def test_the_way_back_retraces_the_path_from_where_the_machine_stopped() -> None:
-    from app.jobs.gcode_stream import retrace
+    from app.jobs.run.gcode_stream import retrace
 
     # In at 10°, out, round to 30°, in: a winder's wrap in (A, X).
     ops = (

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from app.machine import LinkState, ParameterState
-from app.stage_session import INFO_SUBSCRIBERS, SubscriberScheduler
+from app.machines.stage.session import INFO_SUBSCRIBERS, SubscriberScheduler
 from protocol.stage.codec import (
     PARAMETERS,
     CommandFrame,

@@ -17,9 +17,19 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.jobs.loaders import JobOptions, load_job, load_string_art_job, loader_for
-from app.jobs.program import JobFileError, OpKind, Program
-from app.jobs.string_art import (
+from app.jobs.formats.string_art.geometry import (
+    nail_positions,
+    polygon_min_radius_mm,
+    shortest_turn,
+)
+from app.jobs.formats.string_art.program import (
+    StringArtProgram,
+    WindingSettings,
+    build_program,
+    move_seconds,
+    winder_seconds,
+)
+from app.jobs.formats.string_art.reader import (
     NeedsNailCount,
     StringArtJob,
     StringArtParams,
@@ -27,14 +37,8 @@ from app.jobs.string_art import (
     read_string_art,
     sniff_string_art,
 )
-from app.jobs.string_art_geometry import nail_positions, polygon_min_radius_mm, shortest_turn
-from app.jobs.string_art_program import (
-    StringArtProgram,
-    WindingSettings,
-    build_program,
-    move_seconds,
-    winder_seconds,
-)
+from app.jobs.loaders import JobOptions, load_job, load_string_art_job, loader_for
+from app.jobs.program import JobFileError, OpKind, Program
 from app.profiles import load_profile
 
 WINDER = ("A", "X", "Z")

@@ -8,11 +8,16 @@ from types import MappingProxyType
 
 import pytest
 
-from app.jobs.gcode_render import comment, feed_for, format_number, render_operation
+from app.jobs.formats.string_art.export import export_gcode, export_sd_files
+from app.jobs.formats.string_art.program import build_program
+from app.jobs.formats.string_art.reader import (
+    StringArtJob,
+    StringArtParams,
+    load_string_art,
+    read_string_art,
+)
 from app.jobs.program import Operation, OpKind, SourceRef, move
-from app.jobs.string_art import StringArtJob, StringArtParams, load_string_art, read_string_art
-from app.jobs.string_art_export import export_gcode, export_sd_files
-from app.jobs.string_art_program import build_program
+from app.machines.gcode.render import comment, feed_for, format_number, render_operation
 from app.profiles import GcodeSettings, load_profile
 
 AT = SourceRef("job.nc", 7)

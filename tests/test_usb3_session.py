@@ -17,8 +17,8 @@ from itertools import pairwise
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.machines.usb3.session import JOG_LEAD_S, STILL_AFTER_S
 from app.profiles import load_profile
-from app.usb3_session import JOG_LEAD_S, STILL_AFTER_S
 from protocol.emulator.usb3_firmware import Usb3Config, Usb3Firmware
 from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId, StepSize, Thread, count_to_mm

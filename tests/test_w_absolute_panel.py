@@ -10,8 +10,8 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from pytestqt.qtbot import QtBot
 
 from tests.helpers.harness import StationHarness
-from widgets.absolute_panel import AbsolutePanel
-from widgets.info_panel import InfoPanel
+from widgets.panels.absolute import AbsolutePanel
+from widgets.panels.info import InfoPanel
 
 
 class Panels(NamedTuple):

@@ -12,12 +12,12 @@ from PySide6.QtCore import QSettings, Qt
 from pytestqt.qtbot import QtBot
 
 import app.discovery
-import widgets.connection_panel as panel_module
+import widgets.panels.connection as panel_module
 from app.discovery import BleDevice, PortInfo
 from app.machine import LinkState
 from app.settings import StationSettings
 from tests.helpers.harness import StationHarness
-from widgets.connection_panel import ConnectionPanel
+from widgets.panels.connection import ConnectionPanel
 
 LEFT = Qt.MouseButton.LeftButton
 PORTS = [

@@ -19,7 +19,7 @@ from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus
 from tests.helpers.fake_transport import SilentPort
 from tests.helpers.harness import StationHarness
-from widgets.developer_pane import DeveloperPane
+from widgets.developer.pane import DeveloperPane
 
 LEFT = Qt.MouseButton.LeftButton
 

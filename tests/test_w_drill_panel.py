@@ -16,8 +16,8 @@ from pytestqt.qtbot import QtBot
 
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.drill_panel import DrillPanel
 from widgets.main_window import MainWindow
+from widgets.panels.drill import DrillPanel
 
 
 @pytest.fixture

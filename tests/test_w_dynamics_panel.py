@@ -8,10 +8,10 @@ from PySide6.QtWidgets import QDoubleSpinBox, QLabel
 from pytestqt.qtbot import QtBot
 
 from app.machine import ParameterState
-from app.stage_parameters import STAGE_PARAMETERS
+from app.machines.stage.parameters import STAGE_PARAMETERS
 from protocol.stage.codec import CommandFrame, CommandId, EchoType, decode
 from tests.helpers.harness import StationHarness
-from widgets.dynamics_panel import DynamicsPanel
+from widgets.panels.dynamics import DynamicsPanel
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
 

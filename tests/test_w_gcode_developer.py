@@ -8,11 +8,11 @@ import pytest
 from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
-from app.gcode_developer import describe_gcode, parse_reply
+from app.machines.gcode.developer import describe_gcode, parse_reply
 from app.profiles import load_profile
 from protocol.gcode.codec import ErrorReply, StatusReport
 from tests.helpers.harness import StationHarness
-from widgets.developer_pane import DeveloperPane
+from widgets.developer.pane import DeveloperPane
 
 LEFT = Qt.MouseButton.LeftButton
 

@@ -10,7 +10,7 @@ from pytestqt.qtbot import QtBot
 
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.gcode_panel import GcodePanel
+from widgets.panels.gcode import GcodePanel
 
 
 @pytest.fixture

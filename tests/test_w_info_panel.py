@@ -7,7 +7,7 @@ from pytestqt.qtbot import QtBot
 
 from app.machine import LinkState
 from tests.helpers.harness import StationHarness
-from widgets.info_panel import LINK_COLOURS, InfoPanel
+from widgets.panels.info import LINK_COLOURS, InfoPanel
 
 
 @pytest.fixture

@@ -13,7 +13,7 @@ from pytestqt.qtbot import QtBot
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from protocol.stage.codec import CommandId
 from tests.helpers.harness import StationHarness
-from widgets.job_preview import JobPreview
+from widgets.jobs.preview import JobPreview
 
 LEFT = Qt.MouseButton.LeftButton
 NAN = float("nan")

@@ -17,12 +17,12 @@ import pytest
 from PySide6.QtCore import QPoint, QPointF, Qt
 from pytestqt.qtbot import QtBot
 
+from app.jobs.formats.string_art.program import build_program
+from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.program import Program, SourceRef, move
-from app.jobs.string_art import StringArtJob, StringArtParams
-from app.jobs.string_art_program import build_program
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.job_preview import ARC_STEP_DEG, JobPreview
+from widgets.jobs.preview import ARC_STEP_DEG, JobPreview
 
 LEFT = Qt.MouseButton.LeftButton
 REACH = 250.0  # the winder's X travel

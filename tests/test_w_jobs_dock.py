@@ -13,10 +13,10 @@ from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JOB_LOADERS, load_job, sniff_point_list
 from app.jobs.program import JobFileError, OpKind
-from app.jobs.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs_dock import JobsDock, clock_text
+from widgets.jobs.dock import JobsDock, clock_text
 
 LEFT = Qt.MouseButton.LeftButton
 

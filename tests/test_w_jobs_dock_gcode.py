@@ -9,11 +9,11 @@ import pytest
 from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
-from app.jobs.runner import JobRunner, JobState
-from app.jobs.string_art import NeedsNailCount, StringArtParams, read_string_art
+from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams, read_string_art
+from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs_dock import JobsDock
+from widgets.jobs.dock import JobsDock
 
 LEFT = Qt.MouseButton.LeftButton
 

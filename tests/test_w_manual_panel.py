@@ -10,9 +10,9 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from pytestqt.qtbot import QtBot
 
 from tests.helpers.harness import StationHarness
-from widgets.info_panel import InfoPanel
 from widgets.jog_input import JogInput
-from widgets.manual_panel import ManualPanel
+from widgets.panels.info import InfoPanel
+from widgets.panels.manual import ManualPanel
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
 

@@ -6,7 +6,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QStackedWidget
 from pytestqt.qtbot import QtBot
 
-from widgets.menu_panel import MenuPanel
+from widgets.panels.menu import MenuPanel
 
 
 def test_buttons_switch_the_stack(qtbot: QtBot) -> None:

@@ -10,8 +10,8 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from pytestqt.qtbot import QtBot
 
 from tests.helpers.harness import StationHarness
-from widgets.info_panel import InfoPanel
-from widgets.relative_panel import RelativePanel
+from widgets.panels.info import InfoPanel
+from widgets.panels.relative import RelativePanel
 
 
 class Panels(NamedTuple):

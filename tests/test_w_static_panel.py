@@ -8,7 +8,7 @@ from pytestqt.qtbot import QtBot
 
 from tests.helpers.harness import StationHarness
 from widgets.jog_input import JogInput
-from widgets.static_panel import StaticPanel
+from widgets.panels.static import StaticPanel
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
 

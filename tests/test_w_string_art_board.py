@@ -6,8 +6,8 @@ from pathlib import Path
 
 from pytestqt.qtbot import QtBot
 
-from app.jobs.string_art import NeedsNailCount, StringArtParams
-from widgets.string_art_board import BoardDialog
+from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
+from widgets.jobs.string_art_board import BoardDialog
 
 
 def test_the_dialog_starts_at_the_least_nail_count_and_returns_the_board(qtbot: QtBot) -> None:

@@ -9,12 +9,12 @@ import pytest
 from PySide6.QtGui import QColor, QImage
 from pytestqt.qtbot import QtBot
 
+from app.jobs.formats.string_art.program import StringArtProgram, build_program
+from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.program import Program, SourceRef, move
-from app.jobs.string_art import StringArtJob, StringArtParams
-from app.jobs.string_art_program import StringArtProgram, build_program
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.job_preview import THREAD_ALPHA, JobPreview
+from widgets.jobs.preview import THREAD_ALPHA, JobPreview
 
 
 def points(item: object) -> np.ndarray:

@@ -21,7 +21,7 @@ from protocol.transport.loopback import Direction
 from protocol.usb3.codec import AxisId, StepSize, Thread
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
-from widgets.usb3_panel import Usb3Panel
+from widgets.panels.usb3 import Usb3Panel
 
 X, Y, Z = 0, 1, 2
 

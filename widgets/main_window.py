@@ -36,26 +36,26 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.jobs.runner import JobRunner
+from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
 from app.settings import StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
-from widgets.absolute_panel import AbsolutePanel
-from widgets.connection_panel import ConnectionPanel
-from widgets.developer_pane import DeveloperPane
-from widgets.drill_panel import DrillPanel
-from widgets.dynamics_panel import DynamicsPanel
-from widgets.gcode_panel import GcodePanel
-from widgets.info_panel import InfoPanel
-from widgets.jobs_dock import JobsDock
+from widgets.developer.pane import DeveloperPane
+from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
-from widgets.manual_panel import ManualPanel
-from widgets.menu_panel import MenuPanel
-from widgets.relative_panel import RelativePanel
-from widgets.static_panel import StaticPanel
+from widgets.panels.absolute import AbsolutePanel
+from widgets.panels.connection import ConnectionPanel
+from widgets.panels.drill import DrillPanel
+from widgets.panels.dynamics import DynamicsPanel
+from widgets.panels.gcode import GcodePanel
+from widgets.panels.info import InfoPanel
+from widgets.panels.manual import ManualPanel
+from widgets.panels.menu import MenuPanel
+from widgets.panels.relative import RelativePanel
+from widgets.panels.static import StaticPanel
+from widgets.panels.usb3 import Usb3Panel
 from widgets.telemetry_dock import TelemetryDock
-from widgets.usb3_panel import Usb3Panel
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)

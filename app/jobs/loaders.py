@@ -16,11 +16,16 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from app.jobs.excellon import build_drill_program, read_drill_file, sniff_dri, sniff_excellon
-from app.jobs.gcode import load_gcode, sniff_gcode
+from app.jobs.formats.excellon.reader import (
+    build_drill_program,
+    read_drill_file,
+    sniff_dri,
+    sniff_excellon,
+)
+from app.jobs.formats.gcode.loader import load_gcode, sniff_gcode
+from app.jobs.formats.string_art.program import load_string_art_program
+from app.jobs.formats.string_art.reader import StringArtParams, sniff_string_art
 from app.jobs.program import JobFileError, Program, load_point_list
-from app.jobs.string_art import StringArtParams, sniff_string_art
-from app.jobs.string_art_program import load_string_art_program
 from app.profiles import GcodeSettings
 
 

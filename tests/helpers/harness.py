@@ -12,12 +12,12 @@ from collections.abc import Callable
 
 from PySide6.QtWidgets import QApplication
 
-from app.drill_session import DrillSession
-from app.gcode_session import GcodeSession
+from app.machines.drill.session import DrillSession
+from app.machines.gcode.session import GcodeSession
+from app.machines.stage.session import StageSession
+from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile, load_profile
-from app.stage_session import StageSession
 from app.station import Station
-from app.usb3_session import Usb3Session
 from protocol.clock import ManualClock
 from protocol.emulator.drill_firmware import DrillFirmware
 from protocol.emulator.gcode_firmware import GcodeFirmware

@@ -1,0 +1,510 @@
+"""The G-code parser: a file's lines through the modal state the machine will have.
+
+The model is kept in machine coordinates and millimetres, as the limit check
+and the preview need it: G20 inch coordinates are scaled, G92 offsets added,
+G91 distances accumulated, arcs flattened for the preview.  The machine is
+assumed to start at its origin (where homing leaves it) for G91 and G92.
+
+Plain ``G0``/``G1`` moves take the fast path (:mod:`app.jobs.formats.gcode.plain_moves`);
+every other line is read here, one at a time, into the modal state and the
+operations it makes, checked against the machine's repertoire, and kept in
+:class:`~app.jobs.formats.gcode.columns.OperationColumns`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from app.jobs.formats.gcode.arcs import flatten_arc
+from app.jobs.formats.gcode.columns import OperationColumns
+from app.jobs.formats.gcode.pen import DOWN, UP, PenRules
+from app.jobs.formats.gcode.plain_moves import PlainMoves
+from app.jobs.formats.gcode.program import (
+    CCW_ARC,
+    COMMENT,
+    CW_ARC,
+    GCODE,
+    HOME,
+    LINEAR,
+    MOVE,
+    PEN_DOWN,
+    PEN_UP,
+    RAPID,
+    WAIT,
+    GcodeData,
+    GcodeProblem,
+)
+from app.jobs.formats.gcode.state import Pending, State
+from app.jobs.formats.gcode.words import (
+    CHECKSUM,
+    LINE_NUMBER,
+    MAX_LINE_CHARS,
+    MESSAGE_RE,
+    PARAMETERS,
+    REALTIME,
+    SYSTEM,
+    TOKEN_CACHE_SIZE,
+    WAIT_RE,
+    Tokenizer,
+    Word,
+    normal,
+    render,
+    split_comment,
+)
+from app.profiles import GcodeSettings
+
+INCH_MM = 25.4
+
+PARAMETER_REASON = "named parameters/expressions are not G-code this machine runs"
+
+MOTION_WORDS = {"G0": RAPID, "G1": LINEAR, "G2": CW_ARC, "G3": CCW_ARC}
+MOTION_NAMES = {code: word for word, code in MOTION_WORDS.items()}
+
+AXIS_LETTERS = "XYZABCUVWE"
+_LINEAR_AXES = frozenset("XYZUVWE")  # scaled by G20; A B C are degrees
+
+
+class Parser:
+    """One file read for one machine: :meth:`parse`, then :meth:`data` and :meth:`notes`."""
+
+    def __init__(
+        self,
+        file: str,
+        axis_names: Sequence[str],
+        settings: GcodeSettings,
+        translate_pen: bool,
+        skip_unsupported: bool,
+        machine_title: str,
+    ) -> None:
+        self.file = file
+        self.machine_axes = frozenset(a.upper() for a in axis_names)
+        self.words = frozenset(w.upper() for w in settings.words)
+        self.translate = translate_pen
+        self.skip = skip_unsupported
+        self.who = f"the {machine_title}" if machine_title else "this machine"
+        self.title = machine_title or "machine"
+        self.z_is_pen = settings.z_is_pen
+        self.pens = PenRules(settings)
+
+        self.columns: list[str] = ["X", "Y"]
+        self.state = State([math.nan, math.nan], [0.0, 0.0])
+        self.tokens = Tokenizer(file)
+        #: Lines whose operations depend on nothing but their text (pen commands, dwells):
+        #: the pen state they set, their operations and the machine's objections.
+        self.memo: dict[str, tuple[int | None, list[Pending], tuple[str, ...]]] = {}
+
+        # Output, in operation order.
+        self.out = OperationColumns()
+        self.problems: list[GcodeProblem] = []
+        self.skipped: list[tuple[int, str, tuple[str, ...]]] = []
+        self.g21_dropped = 0
+        self.realtime_dropped = 0
+        self.z_dropped = 0
+        self.checked_texts: dict[str, tuple[str, ...]] = {}
+
+        # Plain moves (the fast path).
+        self.plain = PlainMoves(file)
+
+    # --- driving -------------------------------------------------------------------
+
+    def fast_path_allowed(self) -> bool:
+        """Plain moves need no checks only where G0, G1, X and Y are all the machine's."""
+        return {"G0", "G1"} <= self.words and {"X", "Y"} <= self.machine_axes
+
+    def parse(self, text: str) -> None:
+        if not text.endswith("\n"):
+            text += "\n"
+        lines = text.split("\n")
+        plain = self.plain.find(text, lines, self.fast_path_allowed())
+        slow = np.flatnonzero(~plain)
+        self.pens.prescan([lines[i] for i in slow.tolist()], self.tokens)
+        plain_before = (np.cumsum(plain) - plain)[slow].tolist()
+        place, texts, line = self.plain.place, self.out.texts, self._line
+        done = 0
+        for i, before in zip(slow.tolist(), plain_before, strict=True):
+            if before > done:
+                place(done, before, self.state, texts)
+                done = before
+            line(i + 1, lines[i])
+        if done < len(self.plain.texts):
+            place(done, len(self.plain.texts), self.state, texts)
+
+    # --- one line ------------------------------------------------------------------
+
+    def _column(self, letter: str) -> int:
+        if letter not in self.columns:
+            self.columns.append(letter)
+            self.state.position.append(math.nan)
+            self.state.offset.append(0.0)
+        return self.columns.index(letter)
+
+    def _line(self, number: int, raw: str) -> None:
+        code, comment = split_comment(raw)
+        code = code.strip()
+        if not code:
+            if comment:
+                self._commit(number, "", [Pending(COMMENT, "", message=comment)], ())
+            return
+        if code.startswith("%"):
+            return
+        match = LINE_NUMBER.match(code)
+        if match:
+            code = code[match.end() :]
+        code = CHECKSUM.sub("", code).strip()
+        if not code:
+            return
+        replay = self.memo.get(code)
+        if replay is not None:
+            pen, pending, reasons = replay
+            if pen is not None:
+                self.state.pen = pen
+            self._commit(number, code, pending, reasons)
+        elif code[0] == "$":
+            self._system(number, code)
+        elif code in REALTIME:
+            self._realtime(number, code)
+        elif PARAMETERS.search(code):
+            self._commit(number, code, [Pending(GCODE, code)], (PARAMETER_REASON,))
+        elif wait := WAIT_RE.match(code):
+            message = comment or code[wait.end() :].strip() or f"M{wait.group(1)}: paused"
+            self._commit(number, code, [Pending(WAIT, "", message=message)], ())
+        elif display := MESSAGE_RE.match(code):
+            word = f"M{display.group(1)}"
+            reasons = () if word in self.words else (f"{self.who} cannot execute {word}",)
+            self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
+        else:
+            self._words(number, code, self.tokens.words(code, number))
+
+    def _system(self, number: int, code: str) -> None:
+        """A GRBL ``$`` command: sent as written where the machine knows it."""
+        match = SYSTEM.match(code)
+        word = "$" + (match.group(1) or "").upper() if match else "$"
+        reasons = () if word in self.words else (f"{self.who} cannot execute {word}",)
+        self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
+
+    def _realtime(self, number: int, code: str) -> None:
+        """A real-time byte on a line: the station sends ``?`` itself; the others never belong."""
+        what = REALTIME[code]
+        if code == "?":
+            self.realtime_dropped += 1
+            message = "? not sent: the station asks for the status itself"
+            self._commit(number, code, [Pending(COMMENT, "", message=message)], ())
+            return
+        reason = f"{what} ({code!r}) is a real-time command, not a line of a job"
+        self._commit(number, code, [Pending(GCODE, code, checked=True)], (reason,))
+
+    def _words(self, number: int, code: str, words: tuple[Word, ...]) -> None:
+        """A line of words: modal changes, pen commands, then what remains as one operation."""
+        st = self.state
+        saved = st.copy()
+        commands: dict[str, int] = {}
+        params: dict[str, int] = {}
+        for index, word in enumerate(words):
+            if word.letter in "GM":
+                commands.setdefault(normal(word.letter, word.value), index)
+            else:
+                params[word.letter] = index
+        removed: set[int] = set()
+        pending: list[Pending] = []
+        notes: list[str] = []
+        extra: list[str] = []
+        previous_motion = st.motion
+
+        def value(letter: str) -> float:
+            return words[params[letter]].value
+
+        if "G20" in commands:
+            st.scale = INCH_MM
+        if "G21" in commands:
+            st.scale = 1.0
+            if "G21" not in self.words:
+                removed.add(commands["G21"])
+                notes.append("g21")
+        if "G90" in commands:
+            st.relative = False
+        if "G91" in commands:
+            st.relative = True
+        for plane in (17, 18, 19):
+            if f"G{plane}" in commands:
+                st.plane = plane
+        for name, motion in MOTION_WORDS.items():
+            if name in commands:
+                st.motion = motion
+        for end in ("M2", "M30"):
+            if end in commands:
+                removed.add(commands[end])
+        if "M0" in commands or "M1" in commands:
+            extra.append("M0/M1 must stand on a line of its own (the station asks the operator)")
+        non_modal = {"G92", "G28", "G10", "G4"} & commands.keys()
+
+        # The pen: a pen command word, or a Z height on a machine whose pen Z is.
+        pen, pen_words = self.pens.pen_command(commands, params, words)
+        z_index = params.get("Z")
+        z_only = False
+        if z_index is not None and self.z_is_pen:
+            if "G92" in commands:
+                st.z_work = value("Z") * st.scale
+                if self.translate:
+                    removed.add(z_index)
+            elif not non_modal:
+                if self.pens.z_pen:
+                    z = value("Z") * st.scale
+                    base = 0.0 if math.isnan(st.z_work) else st.z_work
+                    st.z_work = base + z if st.relative else z
+                    if pen is None:
+                        pen = UP if st.z_work > 0 else DOWN
+                        pen_words = {z_index}
+                        z_only = not (set(params) & set(AXIS_LETTERS)) - {"Z"}
+                if self.translate:
+                    removed.add(z_index)
+                    if not self.pens.z_pen:
+                        notes.append("z")
+        split = False
+        if pen is not None:
+            changed = pen != st.pen or z_only or pen_words != {z_index}
+            if self.translate:
+                removed |= pen_words
+                if changed:
+                    pending.append(self._pen_pending(code, words, pen_words, pen))
+                    split = True
+            st.pen = pen
+        whole = pen is not None and not self.translate  # the pen line goes out as written
+
+        rest = (
+            list(range(len(words))) if whole else [i for i in range(len(words)) if i not in removed]
+        )
+        if rest:
+            text = code if whole or not removed else render(code, removed)
+            sent = [words[i] for i in rest]
+            op = Pending(GCODE, text, sent)
+            if "F" in params and params["F"] in rest:
+                op.feed = value("F") * st.scale
+            axes = [i for i in rest if self._is_axis(words[i].letter)]
+            if "G92" in commands or "G92.1" in commands:
+                self._set_offsets(commands, words, axes)
+            elif "G28" in commands:
+                op.kind, op.motion = MOVE, HOME
+                op.target = dict.fromkeys(range(len(self.columns)), 0.0)
+                for c in op.target:
+                    st.position[c] = 0.0
+            elif "G4" in commands:
+                # PROTOCOLS.md section 4: P in milliseconds, S in seconds.
+                op.dwell = (
+                    value("P") / 1000 if "P" in params else value("S") if "S" in params else 0.0
+                )
+            elif axes and not non_modal:
+                self._motion(number, code, words, params, commands, op, axes)
+            if whole:
+                op.pen = pen if pen is not None else -1
+                if op.kind != MOVE:
+                    op.kind = PEN_DOWN if pen == DOWN else PEN_UP
+            if not (split and op.kind == GCODE and self._redundant(sent, previous_motion)):
+                pending.append(op)
+        if not pending and ("M2" in commands or "M30" in commands):
+            pending.append(Pending(COMMENT, "", message="program end"))
+        elif not pending and "g21" in notes:
+            message = "G21 not sent: the machine works in mm"
+            pending.append(Pending(COMMENT, "", message=message))
+        reasons = self._check(pending) + tuple(extra)
+        # F is read in the units in force, axes move from where the machine is: not pure.
+        pure = not any(letter in AXIS_LETTERS or letter == "F" for letter in params) and all(
+            name == "G4" or (name[0] == "M" and name not in ("M0", "M1", "M2", "M30"))
+            for name in commands
+        )
+        if pure and not (reasons and self.skip) and len(self.memo) < TOKEN_CACHE_SIZE:
+            self.memo[code] = (pen, pending, reasons)
+        if reasons and self.skip:
+            while len(saved.position) < len(self.columns):
+                saved.position.append(math.nan)
+                saved.offset.append(0.0)
+            self.state = saved
+        else:
+            self.g21_dropped += notes.count("g21")
+            self.z_dropped += notes.count("z")
+        self._commit(number, code, pending, reasons)
+
+    def _is_axis(self, letter: str) -> bool:
+        """An axis of the model (on a machine whose pen Z is, Z is no axis)."""
+        return letter in AXIS_LETTERS and not (self.z_is_pen and letter == "Z")
+
+    def _redundant(self, sent: Sequence[Word], previous_motion: int) -> bool:
+        """What is left of a pen line is only the motion word already in force."""
+        if len(sent) != 1 or sent[0].letter != "G":
+            return False
+        return MOTION_WORDS.get(normal("G", sent[0].value)) == previous_motion
+
+    def _pen_pending(
+        self, code: str, words: Sequence[Word], pen_words: set[int], pen: int
+    ) -> Pending:
+        """The pen part of a line: as written if it is the profile's own command, else that."""
+        own = self.pens.pen_down if pen == DOWN else self.pens.pen_up
+        kind = PEN_DOWN if pen == DOWN else PEN_UP
+        written = [words[i] for i in sorted(pen_words)]
+        commands = [normal(w.letter, w.value) for w in written if w.letter in "GM"]
+        s_values = [w.value for w in written if w.letter == "S"]
+        if (
+            commands == [own.word]
+            and len(written) == len(commands) + len(s_values)
+            and (s_values == ([own.s] if own.s is not None else []))
+        ):
+            text = render(code, set(range(len(words))) - pen_words)
+            return Pending(kind, text, written)
+        return Pending(kind, own.text, translated=True, checked=False)
+
+    def _set_offsets(
+        self, commands: Mapping[str, int], words: Sequence[Word], axes: Sequence[int]
+    ) -> None:
+        """G92: the current machine position is called the given values from now on."""
+        st = self.state
+        if "G92.1" in commands:
+            st.offset = [0.0] * len(st.offset)
+            return
+        for index in axes:
+            word = words[index]
+            if self.z_is_pen and word.letter == "Z":
+                continue
+            c = self._column(word.letter)
+            scale = st.scale if word.letter in _LINEAR_AXES else 1.0
+            here = st.position[c]
+            st.offset[c] = (0.0 if math.isnan(here) else here) - word.value * scale
+
+    def _motion(
+        self,
+        number: int,
+        code: str,
+        words: Sequence[Word],
+        params: Mapping[str, int],
+        commands: Mapping[str, int],
+        op: Pending,
+        axes: Sequence[int],
+    ) -> None:
+        """A move: its machine target, and the arc's inner vertices when it is one."""
+        st = self.state
+        op.kind = MOVE
+        op.motion = st.motion
+        machine = "G53" in commands
+        start = list(st.position)
+        for index in axes:
+            word = words[index]
+            c = self._column(word.letter)
+            scale = st.scale if word.letter in _LINEAR_AXES else 1.0
+            if machine:
+                target = word.value * scale
+            elif st.relative:
+                here = st.position[c]
+                target = (0.0 if math.isnan(here) else here) + word.value * scale
+            else:
+                target = word.value * scale + st.offset[c]
+            op.target[c] = target
+        while len(start) < len(self.columns):
+            start.append(math.nan)
+        if op.motion in (CW_ARC, CCW_ARC) and st.plane == 17:
+            op.target.setdefault(0, 0.0 if math.isnan(start[0]) else start[0])
+            op.target.setdefault(1, 0.0 if math.isnan(start[1]) else start[1])
+            offsets = {k: words[params[k]].value * st.scale for k in "IJR" if k in params}
+            clockwise = op.motion == CW_ARC
+            op.arc = flatten_arc(
+                self.file, number, code, start, op.target, offsets, clockwise, len(self.columns)
+            )
+        for c, target in op.target.items():
+            st.position[c] = target
+
+    # --- checks and output -----------------------------------------------------------
+
+    def _check(self, pending: Sequence[Pending]) -> tuple[str, ...]:
+        """Why the machine could not execute what this line sends (empty: it can)."""
+        reasons: list[str] = []
+        for op in pending:
+            if op.kind in (COMMENT, WAIT) or not op.text:
+                continue
+            if op.translated or op.checked:
+                found = self._check_text(op.text) if op.translated else ()
+            else:
+                found = self._check_words(op)
+            if not op.text.isascii():
+                found += (f"{op.text!r} is not ASCII",)
+            if len(op.text) > MAX_LINE_CHARS:
+                found += (f"{len(op.text)} characters; a line holds at most {MAX_LINE_CHARS}",)
+            reasons += [r for r in found if r not in reasons]
+        return tuple(reasons)
+
+    def _check_words(self, op: Pending) -> tuple[str, ...]:
+        found: list[str] = []
+        explicit_motion = False
+        for word in op.sent:
+            if word.letter in "GM":
+                name = normal(word.letter, word.value)
+                explicit_motion |= name in MOTION_WORDS
+                if name not in self.words:
+                    found.append(f"{self.who} cannot execute {name}")
+            elif word.letter in AXIS_LETTERS and word.letter not in self.machine_axes:
+                found.append(f"{self.who} has no {word.letter} axis")
+        if op.kind == MOVE and op.motion in MOTION_NAMES and not explicit_motion:
+            name = MOTION_NAMES[op.motion]
+            if name not in self.words:
+                found.append(f"{self.who} cannot execute {name}")
+        return tuple(found)
+
+    def _check_text(self, text: str) -> tuple[str, ...]:
+        """The profile's own pen command, checked once like any line."""
+        if text not in self.checked_texts:
+            words = self.tokens.words_or_none(text) or ()
+            self.checked_texts[text] = self._check_words(Pending(GCODE, text, words))
+        return self.checked_texts[text]
+
+    def _commit(
+        self, number: int, code: str, pending: Sequence[Pending], reasons: Sequence[str]
+    ) -> None:
+        if reasons and self.skip:
+            reason_text = "; ".join(reasons)
+            message = f"not sent: {code} ({reason_text})"
+            pending = [Pending(COMMENT, "", message=message)]
+            self.skipped.append((number, code, tuple(reasons)))
+        else:
+            self.problems += [GcodeProblem(number, code, reason) for reason in reasons]
+        self.out.add(number, pending)
+
+    # --- the result ------------------------------------------------------------------
+
+    def data(self) -> GcodeData:
+        return self.out.data(self.file, self.columns, self.plain)
+
+    def notes(self, data: GcodeData) -> tuple[str, ...]:
+        """What the operator should know about how the file was taken."""
+        notes: list[str] = []
+        pens = self.pens
+        translated = self.out.translated
+        if translated:
+            plural = "line" if translated == 1 else "lines"
+            notes.append(
+                f"{translated} pen {plural} sent as the {self.title}'s "
+                f"{pens.pen_up.text}/{pens.pen_down.text}"
+            )
+        for word, (down, up) in sorted(pens.servo.items()):
+            notes.append(f"pen servo {word}: S{down:g} lowers the pen, S{up:g} lifts it")
+        if pens.z_pen:
+            notes.append("Z heights are the pen: above 0 up, 0 or below down")
+        if self.z_dropped:
+            notes.append(
+                f"Z not sent on {self.z_dropped} line(s): Z is the {self.title}'s pen and this "
+                "file's Z never lifts it"
+            )
+        if self.g21_dropped:
+            plural = "line" if self.g21_dropped == 1 else "lines"
+            notes.append(f"{self.g21_dropped} G21 {plural} not sent: the machine works in mm")
+        if self.realtime_dropped:
+            notes.append("? not sent: the station asks for the status itself")
+        if not data.pen_info and (data.kinds == MOVE).any():
+            notes.append("no pen commands: G0 moves are shown as travel, G1/G2/G3 as work")
+        by_reason: dict[str, list[int]] = {}
+        for number, _code, reasons in self.skipped:
+            for reason in reasons:
+                by_reason.setdefault(reason, []).append(number)
+        for reason, numbers in by_reason.items():
+            shown = ", ".join(str(n) for n in numbers[:10])
+            more = f" and {len(numbers) - 10} more" if len(numbers) > 10 else ""
+            notes.append(f"skipped {len(numbers)} line(s): {reason} (lines {shown}{more})")
+        return tuple(notes)

@@ -1,0 +1,133 @@
+"""The fast path of the G-code loader: plain ``G0``/``G1`` moves, read and placed with numpy.
+
+Why a fast path: most lines of a large file are plain ``G1 X… Y… F…``.  One
+compiled pattern over the whole text picks those out and their numbers are
+parsed by numpy in one call; only the other lines (pen commands, modal words,
+arcs, comments) go through the full per-line parser, and runs of plain lines
+between them are placed with numpy (scale, G92 offset, or a cumulative sum
+under G91).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import numpy.typing as npt
+
+from app.jobs.formats.gcode.state import State
+from app.jobs.formats.gcode.words import MAX_LINE_CHARS, NUMBER, plain_code
+from app.jobs.program import JobFileError
+
+#: One record per line: group 1 is the G0/G1 digit of a plain move (a comment may follow),
+#: empty for any other line.
+FAST_LINE = re.compile(
+    rf"[ \t]*(?:G0?([01])[ \t]*X[ \t]*{NUMBER}[ \t]*Y[ \t]*{NUMBER}(?:[ \t]*F[ \t]*{NUMBER})?"
+    rf"[ \t]*(?:;[^\n]*|\([^()\n]*\)[ \t]*)?\r?\n|[^\n]*\n)"
+)
+FAST_LETTERS = bytes.maketrans(b"GXYF\t\r", b"      ")
+
+
+class PlainMoves:
+    """A file's plain moves: numbers per plain line and the runs placed so far."""
+
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self.texts: list[str] = []
+        self.g = np.empty(0)
+        self.x = np.empty(0)
+        self.y = np.empty(0)
+        self.f = np.empty(0)
+        self.runs: list[tuple[int, int, int]] = []  # (first plain line, end, first operation)
+        self.lines = np.empty(0, dtype=np.int32)  # source line of each plain move
+
+    def find(self, text: str, lines: list[str], allowed: bool) -> np.ndarray:
+        """Which ``lines`` (``text`` split at its line ends) are plain moves; reads their numbers.
+
+        ``allowed``: plain moves need no checks on this machine (else none is plain).
+        """
+        count = len(lines) - 1
+        plain: np.ndarray
+        if allowed:
+            kinds = np.array(FAST_LINE.findall(text), dtype="<U1")
+            plain = kinds != ""
+        else:
+            plain = np.zeros(count, dtype=bool)
+        if len(plain) != count:  # cannot happen: one record per line
+            raise JobFileError(self.file, 0, "could not split the file into lines")
+        plain_index = np.flatnonzero(plain)
+        texts = [plain_code(lines[i]) for i in plain_index.tolist()]
+        lengths = np.fromiter(map(len, texts), dtype=np.int64, count=len(texts))
+        if len(texts) and int(lengths.max()) > MAX_LINE_CHARS:  # left to the full parser
+            plain[plain_index[lengths > MAX_LINE_CHARS]] = False
+            keep = lengths <= MAX_LINE_CHARS
+            texts = [t for t, k in zip(texts, keep.tolist(), strict=True) if k]
+            plain_index = plain_index[keep]
+        self._numbers(texts)
+        self.lines = (plain_index + 1).astype(np.int32)
+        return plain
+
+    def _numbers(self, texts: list[str]) -> None:
+        """Every plain line's G, X, Y and F in one numpy parse (F NaN where not given)."""
+        self.texts = texts
+        n = len(texts)
+        has_f = np.fromiter(("F" in t for t in texts), dtype=bool, count=n)
+        blob = " ".join(texts).encode("ascii").translate(FAST_LETTERS)
+        numbers = np.fromstring(blob, dtype=np.float64, sep=" ") if n else np.empty(0)
+        per_line = 3 + has_f.astype(np.int64)
+        starts = np.cumsum(per_line) - per_line
+        if len(numbers) != int(per_line.sum()):  # cannot happen: the pattern admits numbers only
+            raise JobFileError(self.file, 0, "could not read the coordinates")
+        self.g = numbers[starts]
+        self.x = numbers[starts + 1]
+        self.y = numbers[starts + 2]
+        self.f = np.full(n, np.nan)
+        self.f[has_f] = numbers[starts[has_f] + 3]
+
+    def place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
+        """Plain moves k0…k1-1 as MOVE operations, placed by the modal state in force.
+
+        Their texts are added to ``texts``, the texts of the operations so far.
+        """
+        self.runs.append((k0, k1, len(texts)))
+        texts.extend(self.texts[k0:k1])
+        scale = st.scale
+        if st.relative:
+            for column, values in ((0, self.x), (1, self.y)):
+                start = st.position[column]
+                steps = np.concatenate(
+                    ([0.0 if math.isnan(start) else start], values[k0:k1] * scale)
+                )
+                values[k0:k1] = np.cumsum(steps)[1:]  # added in order, as line by line
+        else:
+            for column, values in ((0, self.x), (1, self.y)):
+                if scale != 1.0 or st.offset[column] != 0.0:
+                    values[k0:k1] = values[k0:k1] * scale + st.offset[column]
+        if scale != 1.0:
+            self.f[k0:k1] *= scale
+        st.position[0] = float(self.x[k1 - 1])
+        st.position[1] = float(self.y[k1 - 1])
+        st.motion = int(self.g[k1 - 1])
+
+    def fill(
+        self,
+        lines: npt.NDArray[np.int32],
+        motion: npt.NDArray[np.uint8],
+        feed: npt.NDArray[np.float64],
+        named: npt.NDArray[np.uint16],
+        positions: npt.NDArray[np.float64],
+    ) -> None:
+        """The plain moves' entries of the program's columns (indexed by operation)."""
+        if not self.runs:
+            return
+        # The runs cover the plain moves in order, so plain move r is operation r + shift.
+        k0s, k1s, op0s = (np.array(v, dtype=np.int64) for v in zip(*self.runs, strict=True))
+        ranks = np.arange(int(k1s[-1]))
+        ops = ranks + np.repeat(op0s - k0s, k1s - k0s)
+        lines[ops] = self.lines[ranks]
+        motion[ops] = self.g[ranks].astype(np.uint8)
+        feed[ops] = self.f[ranks]
+        named[ops] = 0b11
+        positions[ops, 0] = self.x[ranks]
+        positions[ops, 1] = self.y[ranks]

@@ -1,0 +1,404 @@
+"""String-art jobs: the SD-card pair ``param.txt`` + ``poradi.txt``, read and checked.
+
+The winder's original firmware read two files (DESIGN.md, "Job files"):
+
+* ``param.txt``: ``key = value`` lines — ``tvar`` (0 = circle, n ≥ 3 = a
+  regular n-gon), ``pocet_hrebiku`` (the nail count) and ``polomer_matrice``
+  (the board radius in cm);
+* ``poradi.txt``: comma-separated integers — the number of nail indices
+  that follow, then the nail indices in winding order (0-based).
+
+The operator may open either file: the other one is looked for in the same
+directory under its usual name (case ignored, as on a FAT SD card).
+Public generators write the nail sequence alone, without the count and
+without a ``param.txt``; such a file loads with :func:`load_string_art` and
+parameters the operator supplies, and the job loader raises
+:class:`NeedsNailCount` so the dock can ask for them.
+
+What is tolerated: blank lines, ``#``/``;``/``//`` comment lines and
+``# comments`` after a value in ``param.txt``, ``key=value`` with or without
+spaces (``key: value`` too), keys in any case, a UTF-8 byte-order mark, CRLF
+line ends, a trailing comma, and in ``poradi.txt`` commas, semicolons,
+spaces and line breaks alike as separators (empty fields between two commas
+are skipped).  A decimal comma
+is accepted in ``param.txt`` values (``polomer_matrice = 14,5``), where a
+comma cannot be a separator; nail indices must be whole numbers.
+
+Whether a nail list starts with its count: a file named ``poradi.txt``
+always does (it is the firmware's format, so a count that disagrees is an
+error on its line); any other file does when its first number equals the
+number of numbers after it, and is a bare list otherwise.
+
+Every refusal is a :class:`~app.jobs.program.JobFileError` naming the file
+and the line; a missing ``param.txt`` key is reported on line 0.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import MappingProxyType
+
+import numpy as np
+
+from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail_positions
+from app.jobs.program import JobFileError, SourceRef
+
+PARAM_NAME = "param.txt"
+PORADI_NAME = "poradi.txt"
+PARAM_KEYS = ("tvar", "pocet_hrebiku", "polomer_matrice")
+MIN_NAILS = 3
+
+_SEPARATORS = re.compile(r"[,;\s]+")
+_INTEGER = re.compile(r"[+-]?\d+")
+_PARAM_LINE = re.compile(r"^\s*(tvar|pocet_hrebiku|polomer_matrice)\s*[=:]", re.I | re.M)
+
+
+@dataclass(frozen=True)
+class StringArtParams:
+    """The board: its shape, nail count and radius (what ``param.txt`` holds)."""
+
+    tvar: int  # 0: circle; n ≥ 3: a regular n-gon
+    nails: int
+    radius_cm: float
+
+    @property
+    def shape(self) -> str:
+        return "circle" if self.tvar == 0 else f"{self.tvar}-gon"
+
+    def check(self) -> str | None:
+        """Why these parameters cannot make a board, or None when they can."""
+        return _check_tvar(self.tvar) or _check_nails(self.nails) or _check_radius(self.radius_cm)
+
+
+@dataclass(frozen=True)
+class StringArtJob:
+    """A checked board and nail sequence; equal jobs wind the same picture.
+
+    The source paths and line numbers are where it came from (for messages),
+    not part of the job: an exported and re-read job equals the original.
+    """
+
+    params: StringArtParams
+    sequence: tuple[int, ...]
+    poradi_path: Path | None = field(default=None, compare=False)
+    param_path: Path | None = field(default=None, compare=False)
+    #: The line of each sequence entry in ``poradi_path`` (1-based).
+    entry_lines: tuple[int, ...] = field(default=(), compare=False)
+    #: The line of each ``param.txt`` key (absent: supplied by the operator).
+    param_lines: Mapping[str, int] = field(
+        default_factory=lambda: MappingProxyType({}), compare=False
+    )
+
+    @property
+    def name(self) -> str:
+        path = self.poradi_path
+        if path is None:
+            return "string art"
+        if path.name.lower() == PORADI_NAME and path.parent.name:
+            return path.parent.name
+        return path.stem
+
+    def nail_positions(self) -> np.ndarray:
+        """(nails, 2) in mm on the board, nail 0 on +X, counter-clockwise."""
+        p = self.params
+        return nail_positions(p.tvar, p.nails, p.radius_cm)
+
+    def nail_polar(self) -> tuple[np.ndarray, np.ndarray]:
+        """(angle in degrees within 0…360, radius in mm) per nail."""
+        p = self.params
+        return nail_polar(p.tvar, p.nails, p.radius_cm)
+
+    def thread_length_mm(self) -> float:
+        """Straight nail-to-nail thread from the first entry to the last (centres, no wraps)."""
+        points = self.nail_positions()[np.asarray(self.sequence, dtype=np.int64)]
+        return float(np.hypot(*np.diff(points, axis=0).T).sum())
+
+    def entry_source(self, entry: int) -> SourceRef:
+        """Where sequence entry ``entry`` (0-based) is written."""
+        name = self.poradi_path.name if self.poradi_path is not None else PORADI_NAME
+        line = self.entry_lines[entry] if entry < len(self.entry_lines) else 0
+        return SourceRef(name, line)
+
+    def param_source(self, key: str = "pocet_hrebiku") -> SourceRef:
+        """Where ``key`` is written; line 0 of "parameters entered" when the operator gave it."""
+        if self.param_path is None or key not in self.param_lines:
+            return SourceRef("parameters entered", 0)
+        return SourceRef(self.param_path.name, self.param_lines[key])
+
+    def summary(self, estimate_s: float | None = None) -> str:
+        """Totals for the operator: nails, connections, thread length, estimated time."""
+        p = self.params
+        text = (
+            f"{p.nails} nails on a {p.shape} of {p.radius_cm:g} cm radius, "
+            f"{len(self.sequence)} connections, thread {self.thread_length_mm() / 1000:.1f} m"
+        )
+        if estimate_s is not None and math.isfinite(estimate_s):
+            text += f", about {_clock(estimate_s)}"
+        return text
+
+
+class NeedsNailCount(JobFileError):
+    """A bare nail list with no ``param.txt``: the operator must give the board.
+
+    ``min_nails`` is the least nail count the list allows (its largest index
+    plus one); ``entries`` the number of nail indices read.
+    """
+
+    def __init__(self, path: Path, min_nails: int, entries: int) -> None:
+        super().__init__(
+            path.name,
+            0,
+            f"a nail list without {PARAM_NAME}: give the board (shape, at least {min_nails} "
+            f"nails, radius) to load its {entries} entries",
+        )
+        self.path = path
+        self.min_nails = min_nails
+        self.entries = entries
+
+
+# --- reading ---------------------------------------------------------------------------------
+
+
+def read_text(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+
+
+def _number(text: str) -> float | None:
+    try:
+        return float(text.replace(",", "."))
+    except ValueError:
+        return None
+
+
+def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
+    """``param.txt`` as parameters and the line of each key; JobFileError names the line."""
+    found: dict[str, tuple[float, int, str]] = {}
+    for number, raw in enumerate(read_text(path).splitlines(), start=1):
+        line = raw.strip()
+        if not line or line.startswith(("#", ";", "//")):
+            continue
+        key, sep, value = line.replace(":", "=", 1).partition("=")
+        key = key.strip().lower()
+        value = value.partition("#")[0].strip().rstrip(";").strip()
+        if not sep or not key:
+            raise JobFileError(path.name, number, f"expected 'key = value', found {line!r}")
+        if key not in PARAM_KEYS:
+            continue  # the firmware ignores keys it does not know; so does the station
+        if key in found:
+            first = found[key][1]
+            raise JobFileError(path.name, number, f"{key} given twice (first on line {first})")
+        parsed = _number(value)
+        if parsed is None or not math.isfinite(parsed):
+            raise JobFileError(path.name, number, f"{key} = {value!r} is not a number")
+        if key != "polomer_matrice" and parsed != int(parsed):
+            raise JobFileError(path.name, number, f"{key} = {value} is not a whole number")
+        found[key] = (parsed, number, value)
+    for key in PARAM_KEYS:
+        if key not in found:
+            raise JobFileError(path.name, 0, f"no '{key} = …' line (line 0: missing, not wrong)")
+    lines = {key: found[key][1] for key in PARAM_KEYS}
+    params = StringArtParams(
+        tvar=int(found["tvar"][0]),
+        nails=int(found["pocet_hrebiku"][0]),
+        radius_cm=found["polomer_matrice"][0],
+    )
+    for key, reason in (
+        ("tvar", _check_tvar(params.tvar)),
+        ("pocet_hrebiku", _check_nails(params.nails)),
+        ("polomer_matrice", _check_radius(params.radius_cm)),
+    ):
+        if reason is not None:
+            raise JobFileError(path.name, lines[key], reason)
+    return params, lines
+
+
+def _check_tvar(tvar: int) -> str | None:
+    if tvar == 0 or tvar >= 3:
+        return None
+    return f"tvar = {tvar}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
+
+
+def _check_nails(nails: int) -> str | None:
+    if nails >= MIN_NAILS:
+        return None
+    return f"pocet_hrebiku = {nails}: a board needs at least {MIN_NAILS} nails"
+
+
+def _check_radius(radius_cm: float) -> str | None:
+    if math.isfinite(radius_cm) and radius_cm > NAIL_INSET_MM / 10:
+        return None
+    return (
+        f"polomer_matrice = {radius_cm:g} cm: the nails sit {NAIL_INSET_MM / 10:g} cm inside "
+        f"the edge, so the radius must be larger than {NAIL_INSET_MM / 10:g} cm"
+    )
+
+
+@dataclass(frozen=True)
+class NailList:
+    """The integers of a nail-order file: the sequence, its lines, and the count if written."""
+
+    sequence: tuple[int, ...]
+    lines: tuple[int, ...]
+    count: int | None
+    count_line: int
+
+
+def read_nail_list(path: Path) -> NailList:
+    """The integers of ``path`` (see the module notes for separators and the count)."""
+    values: list[int] = []
+    lines: list[int] = []
+    for number, raw in enumerate(read_text(path).splitlines(), start=1):
+        for token in _SEPARATORS.split(raw.strip()):
+            if not token:
+                continue
+            if not _INTEGER.fullmatch(token):
+                raise JobFileError(
+                    path.name,
+                    number,
+                    f"number {len(values) + 1} of the file: {token!r} is not a whole number",
+                )
+            values.append(int(token))
+            lines.append(number)
+    if not values:
+        raise JobFileError(path.name, 0, "no nail indices in the file")
+    counted = path.name.lower() == PORADI_NAME or values[0] == len(values) - 1
+    if not counted:
+        return NailList(tuple(values), tuple(lines), None, 0)
+    return NailList(tuple(values[1:]), tuple(lines[1:]), values[0], lines[0])
+
+
+def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None:
+    """Count, range and repeats; the first problem as a JobFileError on its line."""
+    name = path.name
+    sequence = nails.sequence
+    if nails.count is not None and nails.count != len(sequence):
+        raise JobFileError(
+            name,
+            nails.count_line,
+            f"the count says {nails.count} nail indices, but {len(sequence)} follow",
+        )
+    if len(sequence) < 2:
+        raise JobFileError(name, nails.count_line or 1, "fewer than two nails: nothing to wind")
+    array = np.asarray(sequence, dtype=np.int64)
+    bad = np.flatnonzero((array < 0) | (array >= params.nails))
+    if len(bad):
+        i = int(bad[0])
+        more = f" ({len(bad) - 1} more out of range)" if len(bad) > 1 else ""
+        raise JobFileError(
+            name,
+            nails.lines[i],
+            f"entry {i + 1}: nail {sequence[i]} is out of range 0…{params.nails - 1}{more}",
+        )
+    repeats = np.flatnonzero(array[1:] == array[:-1])
+    if len(repeats):
+        i = int(repeats[0]) + 1
+        raise JobFileError(
+            name,
+            nails.lines[i],
+            f"entries {i} and {i + 1}: nail {sequence[i]} twice in a row (a thread to itself)",
+        )
+
+
+def _partner(path: Path, name: str) -> Path | None:
+    """``name`` beside ``path``, in any letter case."""
+    try:
+        for candidate in path.parent.iterdir():
+            if candidate.name.lower() == name and candidate.is_file():
+                return candidate
+    except OSError:
+        return None
+    return None
+
+
+def load_string_art(poradi: Path, param: StringArtParams | None = None) -> StringArtJob:
+    """The job of nail-order file ``poradi`` and the board ``param``.
+
+    Without ``param`` the board comes from ``param.txt`` beside a
+    ``poradi.txt``; for any other file (a bare generator list) it must be
+    given, else :class:`NeedsNailCount` says what the list needs.
+    """
+    nails = read_nail_list(poradi)
+    param_path: Path | None = None
+    lines: dict[str, int] = {}
+    if param is None:
+        if poradi.name.lower() == PORADI_NAME:
+            param_path = _partner(poradi, PARAM_NAME)
+        if param_path is None:
+            raise NeedsNailCount(poradi, max(nails.sequence) + 1, len(nails.sequence))
+        param, lines = read_params(param_path)
+    else:
+        reason = param.check()
+        if reason is not None:
+            raise JobFileError(poradi.name, 0, f"the board entered: {reason}")
+    check_sequence(poradi, nails, param)
+    return StringArtJob(
+        params=param,
+        sequence=nails.sequence,
+        poradi_path=poradi,
+        param_path=param_path,
+        entry_lines=nails.lines,
+        param_lines=MappingProxyType(lines),
+    )
+
+
+def read_string_art(path: Path, param: StringArtParams | None = None) -> StringArtJob:
+    """Either file of the pair (``param.txt`` finds its ``poradi.txt``), or a nail list."""
+    if path.name.lower() == PARAM_NAME or (_looks_like_params(path) and param is None):
+        params, lines = read_params(path)  # its errors first: the file the operator chose
+        poradi = _partner(path, PORADI_NAME)
+        if poradi is None:
+            raise JobFileError(path.name, 0, f"no {PORADI_NAME} beside it (the nail order)")
+        nails = read_nail_list(poradi)
+        check_sequence(poradi, nails, params)
+        return StringArtJob(
+            params, nails.sequence, poradi, path, nails.lines, MappingProxyType(lines)
+        )
+    return load_string_art(path, param)
+
+
+def _looks_like_params(path: Path) -> bool:
+    try:
+        with path.open(encoding="utf-8", errors="replace") as handle:
+            return sniff_params(handle.read(4096))
+    except OSError:
+        return False
+
+
+# --- sniffing --------------------------------------------------------------------------------
+
+
+def sniff_params(head: str) -> bool:
+    """A ``param.txt``: a ``tvar``, ``pocet_hrebiku`` or ``polomer_matrice`` line."""
+    return bool(_PARAM_LINE.search(head))
+
+
+def sniff_nail_list(head: str) -> bool:
+    """A nail list: nothing but integers, at least four, and not shaped like a point list.
+
+    A point list (2-3 numbers a line on several lines) is left to its own
+    loader even when its numbers are whole.
+    """
+    tokens = [t for t in _SEPARATORS.split(head.strip()) if t]
+    if len(tokens) < 4 or not all(_INTEGER.fullmatch(t) for t in tokens):
+        return False
+    rows = [line for line in head.splitlines() if line.strip()]
+    widths = {len([t for t in _SEPARATORS.split(line.strip()) if t]) for line in rows}
+    return not (len(rows) >= 2 and widths <= {2, 3})
+
+
+def sniff_string_art(head: str) -> bool:
+    return sniff_params(head) or sniff_nail_list(head)
+
+
+def _clock(seconds: float) -> str:
+    whole = round(seconds)
+    hours, rest = divmod(whole, 3600)
+    minutes, secs = divmod(rest, 60)
+    return f"{hours}:{minutes:02d}:{secs:02d}" if hours else f"{minutes:02d}:{secs:02d}"

@@ -1,0 +1,318 @@
+"""How the job runner feeds a program to a G-code machine, and what counts as done there.
+
+A G-code device answers a line when it has *planned* it, not when it has
+moved: with character counting a dozen answered lines may still wait in its
+planner.  So two boundaries are kept:
+
+* **answered** — operations whose line got its ``ok``: the progress bar;
+* **executed** — operations known to have run: every answered line except as
+  many lines, counted back from the last answered one, as the status report
+  says blocks are still planned (``Bf:`` free blocks against the idle figure).
+  Any line may hold a block (the plotter plans its pen changes too; GRBL
+  answers a spindle change only once the planner has drained, and an arc is
+  one line but many blocks), so counting every line as one block can make the
+  boundary lag, never lead.  A device that does not report its planner only
+  advances it when it is seen idle.
+
+The checkpoint holds the executed boundary.  When the link comes back (or the
+station restarts) the runner first looks at the machine: standing idle where
+the last answered operation ends means every answered line ran, and the job
+carries on after it — nothing repeated, nothing skipped; anywhere else (the
+device was reset and lost its planner) it carries on after the executed
+boundary, re-sending the few lines that may not have run.  Before the first
+line goes again the machine is put back into the state the program had
+there: pen up, absolute move to the position, then the pen, distance mode and
+feed of that point.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from app.jobs.program import OpKind, Program
+from app.machines.gcode.render import feed_for, render_operation
+from app.machines.gcode.session import GcodeSession, SentLine
+from app.profiles import GcodeSettings, MachineProfile
+
+#: Lines handed to the session beyond those it can send at once: enough that the device's
+#: buffer never runs dry between replies, few enough that a pause or an error strands little.
+LINES_AHEAD = 24
+#: Position agreement (mm) for "the machine stands where the last answered line ends".
+AT_POSITION_MM = 0.01
+
+
+@dataclass(frozen=True)
+class ResumeState:
+    """The machine state the program expects just before an operation."""
+
+    position: dict[str, float]
+    pen_down: bool
+    relative: bool = False
+    feed: float | None = None
+
+
+def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeState:
+    """Where the machine should be, and how set up, before operation ``index`` runs.
+
+    Programs that know their modal state (G-code files: distance mode, feed)
+    say so through ``resume_state``; for the others it is read from the path.
+    """
+    own = getattr(program, "resume_state", None)
+    if callable(own):
+        state = own(index)
+        if isinstance(state, ResumeState):
+            return state
+    path = program.path(axes)
+    upto = int(np.searchsorted(path.ops, index, side="left"))
+    position: dict[str, float] = {}
+    if upto:
+        row = path.coords[upto - 1]
+        position = {a: float(v) for a, v in zip(axes, row, strict=True) if not math.isnan(v)}
+    downs = program.indices_of(OpKind.PEN_DOWN)
+    ups = program.indices_of(OpKind.PEN_UP)
+    last_down = downs[np.searchsorted(downs, index) - 1] if np.searchsorted(downs, index) else -1
+    last_up = ups[np.searchsorted(ups, index) - 1] if np.searchsorted(ups, index) else -1
+    return ResumeState(position, pen_down=bool(last_down > last_up))
+
+
+#: On a cylindrical machine (the string-art winder) axes go back one at a time: the tool
+#: out of the board first, then the radius, then the turn — so a needle stopped between
+#: two nails retraces its way instead of turning through the nail ring.
+CYLINDRICAL_ORDER = ("Z", "X", "A")
+
+
+#: How far (mm or degrees, in axis space) the machine may stand off the program's path for
+#: the way back to follow it.
+ON_PATH = 0.05
+#: Operations after the resume point the machine may have run when nobody knows what was
+#: sent (a checkpoint after an abort or a restart): the session's queue and the device's.
+RETRACE_WINDOW = 64
+
+
+def retrace(
+    program: Program, axes: Sequence[str], start: int, upto: int, mpos: Sequence[float]
+) -> list[dict[str, float]]:
+    """The program's own path back from where the machine stands to where ``start`` begins.
+
+    The machine stopped somewhere on the segments of operations ``start … upto - 1``
+    (they may have run without their answers getting back; after a restart, when what
+    was sent is unknown, ``upto`` is a window of :data:`RETRACE_WINDOW` operations).
+    Going back along them, vertex by vertex, only travels where the machine has just
+    been: on the winder that never turns the base with the needle among the nails.
+    Empty when the machine is
+    not on that stretch of path (then the caller goes straight, axis by axis).
+    """
+    path = program.path(axes)
+    first = int(np.searchsorted(path.ops, start, side="left"))
+    last = int(np.searchsorted(path.ops, upto, side="left"))
+    if first == 0 or last <= first - 1:
+        return []
+    vertices = path.coords[first - 1 : last]  # the position before ``start``, then each end
+    here = np.array([mpos[i] if i < len(mpos) else np.nan for i in range(len(axes))])
+    known = ~np.isnan(here) & ~np.isnan(vertices).any(axis=0)
+
+    def on(k: int) -> bool:
+        a, b = vertices[k][known], vertices[k + 1][known]
+        span = b - a
+        length2 = float(span @ span)
+        t = 0.0 if length2 == 0 else min(max(float((here[known] - a) @ span) / length2, 0.0), 1.0)
+        return float(np.linalg.norm(a + t * span - here[known])) <= ON_PATH
+
+    # The first stretch of segments the machine stands on (it cannot have gone further
+    # than it must), to its far end: standing at a corner is standing on the next segment.
+    best = next((k for k in range(len(vertices) - 1) if on(k)), -1)
+    if best < 0:
+        return []
+    while best + 1 < len(vertices) - 1 and on(best + 1):
+        best += 1
+    return [
+        {axis: float(v) for axis, v in zip(axes, vertices[k], strict=True) if not np.isnan(v)}
+        for k in range(best, -1, -1)
+    ]
+
+
+def preamble(
+    state: ResumeState, settings: GcodeSettings, way_back: Sequence[dict[str, float]] = ()
+) -> list[str]:
+    """Lines that put the machine into ``state`` without drawing or crossing on the way.
+
+    ``way_back`` (see :func:`retrace`) is followed when given; otherwise the machine
+    goes straight there — on the winder one axis at a time.
+    """
+    lines = [settings.pen_up, "G90"]
+    if way_back:
+        lines += ["G0 " + " ".join(f"{a}{v:.3f}" for a, v in point.items()) for point in way_back]
+    elif state.position and settings.kinematics == "cylindrical":
+        ordered = [a for a in CYLINDRICAL_ORDER if a in state.position]
+        ordered += [a for a in state.position if a not in ordered]
+        lines += [f"G0 {a}{state.position[a]:.3f}" for a in ordered]
+    elif state.position:
+        lines.append("G0 " + " ".join(f"{a}{v:.3f}" for a, v in state.position.items()))
+    if state.pen_down:
+        lines.append(settings.pen_down)
+    if state.relative:
+        lines.append("G91")
+    if state.feed is not None:
+        lines.append(f"F{state.feed:g}")  # the feed alone: the motion mode is the file's
+    return lines
+
+
+class GcodeStream:
+    """The runner's view of a program being streamed: what to send next, what is done.
+
+    Plain Python on purpose: the runner owns the Qt signals and the job state;
+    this object only keeps the bookkeeping between the session's lines and the
+    program's operations.
+    """
+
+    def __init__(self, program: Program, profile: MachineProfile, start: int) -> None:
+        if profile.gcode is None:
+            raise ValueError(f"{profile.title} is not a G-code machine")
+        self.program = program
+        self.profile = profile
+        self.settings: GcodeSettings = profile.gcode
+        self._axis_order = tuple(axis.name for axis in profile.axes)
+        self.next_index = start  # the next operation to hand to the session
+        self.answered = start  # operations [0, answered) have their ok
+        self.executed = start  # operations [0, executed) are known to have run
+        self.written = start  # operations [0, written) went out on the wire
+        #: Operations sent and not yet answered, in order.
+        self.pending: deque[int] = deque()
+        #: Answered lines' operations not known executed, in order (the planner's share).
+        self._planned: deque[int] = deque()
+        self._answered_at_last_report = start
+
+    # --- what to send --------------------------------------------------------
+
+    def line_for(self, index: int) -> str | None:
+        """The text of operation ``index`` for this machine, None when nothing is sent.
+
+        A G-code file's line goes as written; other programs' moves are rendered at
+        their slowest axis's top speed, in the profile's axis order.
+        """
+        op = self.program[index]
+        if op.line:
+            return render_operation(op, self.settings)
+        return render_operation(
+            op, self.settings, feed_for(op.target, self.profile), axis_order=self._axis_order
+        )
+
+    def feed(self, session: GcodeSession, most: int | None = None) -> int | None:
+        """Hand lines to the session until enough are ahead; returns a WAIT's index met first.
+
+        ``most`` caps the lines handed over (single step: one).  Operations that
+        send nothing (comments) are done when everything before them is: they are
+        completed here when nothing is pending.
+        """
+        program = self.program
+        sent = 0
+        while self.next_index < len(program) and session.queued < LINES_AHEAD:
+            if most is not None and sent >= most:
+                return None
+            index = self.next_index
+            op = program[index]
+            if op.kind is OpKind.WAIT:
+                return index
+            text = self.line_for(index)
+            self.next_index += 1
+            if text is None:
+                if not self.pending:
+                    self.answered = self.executed = index + 1
+                continue
+            if not session.send_line(text, "job", index):
+                self.next_index = index
+                return None
+            self.pending.append(index)
+            sent += 1
+        return None
+
+    # --- replies -------------------------------------------------------------
+
+    def acknowledge(self, sent: SentLine) -> bool:
+        """An ``ok`` for a job line; False when it is not the one expected (not ours)."""
+        if sent.op_index is None or not self.pending or self.pending[0] != sent.op_index:
+            return False
+        index = self.pending.popleft()
+        # Everything up to the next pending line is answered: comments between count too.
+        upto = self.pending[0] if self.pending else self.next_index
+        self.answered = upto
+        self._planned.append(index)
+        return True
+
+    def status(self, state: str, planner_free: int | None, planner_size: int) -> None:
+        """A status report: advance the executed boundary as far as it proves.
+
+        ``planner_size`` is what the device reported free when idle (0: unknown,
+        then only an idle machine with nothing pending proves anything).
+        """
+        if state == "Idle" and not self.pending:
+            self._planned.clear()
+            self.executed = self.answered
+        elif planner_free is not None and planner_size:
+            in_planner = max(planner_size - planner_free, 0)
+            answered = self._answered_at_last_report
+            # Lines answered before this report was asked for, minus what is still planned.
+            ran = [i for i in self._planned if i < answered]
+            finished = len(ran) - in_planner
+            for _ in range(max(finished, 0)):
+                self._planned.popleft()
+            self.executed = self._planned[0] if self._planned else self.answered
+        self._answered_at_last_report = self.answered
+
+    @property
+    def in_flight(self) -> bool:
+        return bool(self.pending)
+
+    @property
+    def sent_all(self) -> bool:
+        return self.next_index >= len(self.program) and not self.pending
+
+    def take_back(self, index: int) -> None:
+        """Lines from operation ``index`` on were taken back unsent: send them again later."""
+        while self.pending and self.pending[-1] >= index:
+            self.pending.pop()
+        self.next_index = min(self.next_index, index)
+
+    def note_written(self, index: int) -> None:
+        """Operation ``index``'s line left for the device (it may run without an answer back)."""
+        self.written = max(self.written, index + 1)
+
+    def ran_through(self, mpos: Sequence[float]) -> int | None:
+        """After a lost link, for an idle machine at ``mpos``: the operations known to have run.
+
+        The device runs what it received in order, so an idle machine stands
+        where the last line it got leaves it.  The latest operation among those
+        written but unanswered (or the last answered one) that ends there is
+        taken — unless the machine also stands where the executed boundary
+        leaves it, because then "ran them all and came back" cannot be told
+        from "lost them" (a reset), and only the cautious answer is safe.
+        None means: carry on from the executed boundary.
+        """
+        for end in range(max(self.written, self.answered), self.answered - 1, -1):
+            if self.at_end_of(end, mpos):
+                if end != self.executed and self.at_end_of(self.executed, mpos):
+                    return None
+                return end
+        return None
+
+    def rewind(self, index: int) -> None:
+        """Forget everything unanswered; the next line sent is operation ``index``."""
+        self.pending.clear()
+        self._planned.clear()
+        self.written = index
+        self.next_index = self.answered = self.executed = index
+        self._answered_at_last_report = index
+
+    def at_end_of(self, index: int, mpos: Sequence[float]) -> bool:
+        """Whether a machine at ``mpos`` stands where operation ``index - 1`` left it."""
+        axes = [a.name for a in self.profile.axes]
+        expected = resume_state(self.program, index, axes).position
+        for i, name in enumerate(axes[: len(mpos)]):
+            if name in expected and abs(expected[name] - mpos[i]) > AT_POSITION_MM:
+                return False
+        return True

@@ -1,0 +1,327 @@
+"""The PCB drill/plotter's session (PROTOCOLS.md section 3).
+
+The plotter takes one-letter procedures, one at a time: the host sends a
+command, the device answers ``R<letter>`` when it has it and ``D<letter>``
+when the procedure is over, and only then does the host send the next one.
+So every intent goes into a queue and the queue is fed one command per
+``D``.  An ``E`` means the device refused the command in flight: whatever was
+queued after it is dropped rather than run out of its context (a ``V`` after
+a refused ``X`` would drill in the wrong place).
+
+Positions are absolute microsteps from the machine's zero; the session
+converts millimetres with the profile's constants (steps per revolution x
+microsteps ÷ lead) and does all the rounding, half away from zero, in
+decimal so that 12.5 mm x 19.8 is 247.5 exactly and becomes 248.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from decimal import ROUND_HALF_UP, Decimal
+
+from PySide6.QtCore import QObject, Signal
+
+from app.link import Link
+from app.machine import LinkState, MachineModel
+from app.machines.session import MachineSession
+from protocol.clock import Clock
+from protocol.drill.codec import (
+    DRILL,
+    HOME,
+    PARK,
+    PEN_DOWN,
+    PEN_UP,
+    POSITION_LETTERS,
+    Command,
+    Rejected,
+    Reply,
+    ReplyDecoder,
+    ReplyKind,
+    decode_command,
+    encode_command,
+    encode_reply,
+)
+
+#: What each procedure is called in messages.
+PROCEDURES = {
+    "N": "home",
+    "X": "move X",
+    "Y": "move Y",
+    "V": "drill",
+    "K": "pen down",
+    "Z": "pen up",
+    "P": "park",
+}
+
+
+def command_text(command: Command) -> str:
+    """The command as the terminal shows it, without its CR: ``X248``, ``N``."""
+    return encode_command(command).decode("ascii").rstrip("\r")
+
+
+class DrillSession(MachineSession):
+    """frameSent carries :class:`Command`, frameReceived :class:`Reply` or :class:`Rejected`."""
+
+    #: The device acknowledged the command in flight (``R``); the command's text.
+    commandReceived = Signal(str)
+    #: The command in flight has finished (``D``); the command's text.
+    commandDone = Signal(str)
+    #: The device refused the command in flight (``E``); the queue was cleared.
+    commandFailed = Signal(str)
+    #: The last queued command is done and nothing is waiting.
+    idle = Signal()
+
+    def __init__(
+        self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
+    ) -> None:
+        super().__init__(model, link, clock, parent)
+        self.decoder = ReplyDecoder()
+        self._queue: deque[Command] = deque()
+        self._in_flight: Command | None = None
+        self._received = False
+        self._refused_lines = 0
+        self._per_mm = [
+            Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
+            for axis in model.profile.axes
+        ]
+        link.connected.connect(self._on_connected)
+        link.disconnected.connect(self._on_disconnected)
+        link.dataReceived.connect(self._on_data)
+
+    # --- state the widgets read ------------------------------------------------
+
+    @property
+    def rejected(self) -> int:
+        """Garbage replies dropped so far."""
+        return self.decoder.rejected
+
+    @property
+    def refused_lines(self) -> int:
+        """Terminal lines refused here because they are no command (never sent)."""
+        return self._refused_lines
+
+    @property
+    def busy(self) -> bool:
+        """A command is out or waiting."""
+        return self._in_flight is not None or bool(self._queue)
+
+    @property
+    def in_flight(self) -> Command | None:
+        return self._in_flight
+
+    @property
+    def queued(self) -> tuple[Command, ...]:
+        return tuple(self._queue)
+
+    # --- conversions -----------------------------------------------------------
+
+    def microsteps_per_mm(self, axis: int) -> float:
+        return float(self._per_mm[axis])
+
+    def to_microsteps(self, axis: int, mm: float) -> int:
+        """Nearest microstep to ``mm``, half away from zero, computed in decimal."""
+        exact = Decimal(str(mm)) * self._per_mm[axis]
+        return int(exact.copy_abs().quantize(Decimal(1), rounding=ROUND_HALF_UP)) * (
+            -1 if exact < 0 else 1
+        )
+
+    def to_mm(self, axis: int, microsteps: int) -> float:
+        return microsteps / float(self._per_mm[axis])
+
+    # --- intents ----------------------------------------------------------------
+
+    def move_absolute(self, axis: int, position: float) -> bool:
+        if not 0 <= axis < self.axis_count:
+            return self._unsupported(f"axis {axis + 1}")
+        name = self.model.profile.axes[axis].name
+        if name not in POSITION_LETTERS:
+            return self._unsupported(f"moves of {name}")
+        travel = self.model.profile.axes[axis].travel
+        if not 0 <= position <= travel:
+            self.model.message.emit(
+                f"{name} {position:g} mm refused: outside the travel 0…{travel:g} mm"
+            )
+            return False
+        return self._enqueue(Command(name, self.to_microsteps(axis, position)))
+
+    def home(self, axis: int) -> bool:
+        """``N`` homes X then Y, whichever axis was asked for."""
+        return self._enqueue(HOME)
+
+    def drill(self) -> bool:
+        return self._enqueue(DRILL)
+
+    def pen(self, down: bool) -> bool:
+        return self._enqueue(PEN_DOWN if down else PEN_UP)
+
+    def park(self) -> bool:
+        return self._enqueue(PARK)
+
+    def send_command(self, command: Command) -> bool:
+        return self._enqueue(command)
+
+    def send_line(self, text: str) -> bool:
+        """A terminal line: queued if it is a command, otherwise refused here and counted."""
+        line = text.strip()
+        try:
+            raw = line.encode("ascii") + b"\r"
+        except UnicodeEncodeError:
+            return self._refuse_line(line, "not ASCII")
+        used, result = decode_command(raw)
+        if isinstance(result, Rejected):
+            return self._refuse_line(line, result.reason)
+        if result is None or used != len(raw):
+            return self._refuse_line(line, "not one command")
+        return self._enqueue(result)
+
+    def stop_all(self) -> None:
+        dropped = len(self._queue)
+        self._queue.clear()
+        running = self._in_flight
+        tail = f"; {command_text(running)} finishes its procedure" if running is not None else ""
+        self.model.message.emit(
+            f"The drill has no stop command: {dropped} queued command(s) dropped{tail}"
+        )
+        if running is None and dropped:
+            self.idle.emit()
+
+    # --- the queue ---------------------------------------------------------------
+
+    def _refuse_line(self, line: str, reason: str) -> bool:
+        self._refused_lines += 1
+        self.model.message.emit(f"Not sent: {line!r} is no drill command ({reason})")
+        return False
+
+    def _enqueue(self, command: Command) -> bool:
+        if self._refuse_motion():
+            return False
+        self._queue.append(command)
+        self._send_next()
+        return True
+
+    def _send_next(self) -> None:
+        if self._in_flight is not None or not self._queue or not self.link.is_open:
+            return
+        command = self._queue.popleft()
+        self._in_flight = command
+        self._received = False
+        raw = encode_command(command)
+        self.link.write(raw)
+        self.frameSent.emit(command, raw)
+        self._show_started(command)
+
+    def _clear(self) -> None:
+        self._queue.clear()
+        self._in_flight = None
+        self._received = False
+
+    # --- model --------------------------------------------------------------------
+
+    def _axes_named(self, letters: str) -> list[int]:
+        return [i for i, a in enumerate(self.model.profile.axes) if a.name in letters]
+
+    def _show_started(self, command: Command) -> None:
+        status = {"X": "moving", "Y": "moving", "N": "homing", "P": "parking"}.get(command.letter)
+        if status is None:
+            return
+        letters = command.letter if command.letter in POSITION_LETTERS else POSITION_LETTERS
+        for axis in self._axes_named(letters):
+            self.model.update_axis(axis, status_text=status, moving=True)
+
+    def _show_done(self, command: Command) -> None:
+        if command.letter in POSITION_LETTERS and command.value is not None:
+            for axis in self._axes_named(command.letter):
+                self.model.update_axis(
+                    axis,
+                    position=self.to_mm(axis, command.value),
+                    status_text="idle",
+                    moving=False,
+                    velocity=0.0,
+                )
+        elif command.letter == "N":
+            for axis in self._axes_named(POSITION_LETTERS):
+                self.model.update_axis(
+                    axis, position=0.0, status_text="idle", moving=False, velocity=0.0
+                )
+        elif command.letter == "P":
+            # Park runs X to 0 and Y to the back of the machine, then switches the motors off.
+            for axis in self._axes_named(POSITION_LETTERS):
+                name = self.model.profile.axes[axis].name
+                travel = self.model.profile.axes[axis].travel
+                self.model.update_axis(
+                    axis,
+                    position=0.0 if name == "X" else travel,
+                    status_text="parked",
+                    moving=False,
+                    velocity=0.0,
+                )
+
+    def _show_stopped(self) -> None:
+        for axis in range(self.axis_count):
+            if self.model.axes[axis].moving:
+                self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
+
+    # --- link events and replies ------------------------------------------------
+
+    def _on_connected(self) -> None:
+        self.decoder.reset()
+        self._clear()
+        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        for axis in range(self.axis_count):
+            self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
+
+    def _on_disconnected(self, reason: object) -> None:
+        dropped = len(self._queue) + (self._in_flight is not None)
+        self._clear()
+        self._show_stopped()
+        if reason is None:
+            self.model.set_link_state(LinkState.DISCONNECTED)
+        else:
+            self.model.set_link_state(LinkState.LOST, str(reason))
+            self.model.message.emit(
+                f"Link lost: {reason}; {dropped} command(s) dropped"
+                if dropped
+                else f"Link lost: {reason}"
+            )
+
+    def _on_data(self, data: bytes) -> None:
+        for reply in self.decoder.feed(data):
+            if isinstance(reply, Rejected):
+                self.frameReceived.emit(reply, reply.raw)
+                self.model.message.emit(f"Garbage from the drill dropped: {reply.raw!r}")
+                continue
+            self.frameReceived.emit(reply, encode_reply(reply))
+            self._on_reply(reply)
+
+    def _on_reply(self, reply: Reply) -> None:
+        command = self._in_flight
+        # One command at a time: an E while one is out refuses that one, whatever letter it
+        # names (a line corrupted on the way is named by its corrupted first letter).
+        refused = reply.kind is ReplyKind.ERROR
+        if command is None or (reply.letter != command.letter and not refused):
+            expected = f" (waiting for {command.letter})" if command is not None else ""
+            self.model.message.emit(
+                f"Unexpected reply {reply.kind.value}{reply.letter} from the drill{expected}"
+            )
+            return
+        text = command_text(command)
+        if reply.kind is ReplyKind.RECEIVED:
+            self._received = True
+            self.commandReceived.emit(text)
+        elif reply.kind is ReplyKind.DONE:
+            self._in_flight = None
+            self._show_done(command)
+            self.commandDone.emit(text)
+            if self._queue:
+                self._send_next()
+            else:
+                self.idle.emit()
+        else:
+            dropped = len(self._queue)
+            self._clear()
+            self._show_stopped()
+            self.model.message.emit(
+                f"The drill refused {text} ({PROCEDURES[command.letter]})"
+                + (f"; {dropped} queued command(s) dropped" if dropped else "")
+            )
+            self.commandFailed.emit(text)

@@ -1,0 +1,469 @@
+"""The G-code session: plotters and the string-art winder (PROTOCOLS.md section 4).
+
+Lines are streamed, not sent one by one: with *character counting* the
+session keeps up to 127 unacknowledged bytes in the device's 128-byte
+receive buffer, so the device never waits for the host between lines; with
+*ping-pong* (profiles whose firmware has no such buffer) the next line goes
+only after the ``ok`` of the last.  Every ``ok``/``error:n`` answers the
+oldest unacknowledged line, which is how a reply is tied to its line (and a
+job's error to its file line).
+
+Real-time bytes bypass the stream: ``?`` every ``status_ms`` keeps positions
+and the machine state fresh (and proves the device alive), ``!`` holds,
+``~`` resumes, 0x18 resets.  A stop is a feed hold followed by a soft reset
+once the machine stands, which throws away what the device had buffered
+without losing its position.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from itertools import count
+
+from PySide6.QtCore import QObject, QTimer, Signal
+
+from app.link import Link
+from app.machine import LinkState, MachineModel
+from app.machines.session import MachineSession
+from app.profiles import GcodeSettings
+from protocol.clock import Clock
+from protocol.gcode.codec import (
+    CYCLE_START,
+    FEED_HOLD,
+    SOFT_RESET,
+    STATUS_QUERY,
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Feedback,
+    Ok,
+    Rejected,
+    StatusReport,
+    encode_line,
+    make_decoder,
+)
+from protocol.gcode.streaming import LineStreamer, StreamMode
+
+#: No reply to status queries for this long: the device is gone (the station reconnects).
+SILENCE_S = 2.0
+#: Jogging: each held-arrow step is this much motion, and the next goes only while the
+#: device's planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line
+#: is *planned*, so counting answers alone would let a held key fill the planner).
+JOG_STEP_S = 0.1
+JOG_BLOCKS_AHEAD = 2
+#: A stop resets the device this long after its hold at the latest, standing or not.
+RESET_AFTER_S = 2.0
+#: Fraction of an axis's top speed a held arrow jogs at.
+JOG_SPEED_SHARE = 0.5
+_MOVING_STATES = frozenset({"Run", "Jog", "Home"})
+
+
+def reply_bytes(reply: object) -> bytes:
+    """The reply as a line again, for the frame log (the decoder keeps no raw bytes)."""
+    if isinstance(reply, Ok):
+        return b"ok"
+    if isinstance(reply, ErrorReply):
+        return f"error:{reply.code}".encode()
+    if isinstance(reply, AlarmReply):
+        return f"ALARM:{reply.code}".encode()
+    if isinstance(reply, StatusReport):
+        fields = "|".join(f"{k}:{v}" for k, v in reply.fields.items())
+        return f"<{reply.state}|{fields}>".encode()
+    if isinstance(reply, Banner | Feedback):
+        return reply.text.encode("ascii", "replace")
+    return repr(reply).encode("ascii", "replace")
+
+
+@dataclass(frozen=True)
+class SentLine:
+    """A line on its way: what was sent, by whom, and for a job the operation it carries."""
+
+    serial: int
+    text: str
+    #: "job", "resume" (the set-up before a resumed job), "console", "intent" (panels) or "jog"
+    origin: str
+    op_index: int | None = None
+
+
+class GcodeSession(MachineSession):
+    """frameSent carries the line text (or the real-time byte's name), frameReceived a reply."""
+
+    lineSent = Signal(object)  # SentLine
+    lineAcknowledged = Signal(object)  # SentLine
+    lineFailed = Signal(object, int, str)  # SentLine, error code, meaning
+    statusChanged = Signal(object)  # StatusReport
+    #: A reply line worth showing the operator (the console): its text.
+    replyText = Signal(str)
+    #: The device was reset (banner seen or reset sent): whatever was unanswered is gone.
+    reset = Signal()
+
+    def __init__(
+        self,
+        model: MachineModel,
+        link: Link,
+        clock: Clock,
+        settings: GcodeSettings,
+        *,
+        autotick: bool = True,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(model, link, clock, parent)
+        self.settings = settings
+        self.decoder = make_decoder()
+        mode = StreamMode.COUNTING if settings.streaming == "counting" else StreamMode.PING_PONG
+        self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
+        self.status: StatusReport | None = None
+        self.errors = 0
+        self._serials = count(1)
+        #: A status report since the last line was answered showed the machine idle.
+        self._seen_idle = True
+        self._status_asked_at: float | None = None  # an unanswered "?", for request_status
+        self._last_heard = clock.now()
+        self._jog_unanswered = 0
+        self._jog_status_fresh = False
+        self._reset_requested_at: float | None = None
+        self._dropped_by_stop = 0
+        self._planner_size = 0
+        self._autotick = autotick
+        self._timer = QTimer(self)
+        self._timer.setInterval(settings.status_ms)
+        self._timer.timeout.connect(self.tick)
+        link.connected.connect(self._on_connected)
+        link.disconnected.connect(self._on_disconnected)
+        link.dataReceived.connect(self._on_data)
+
+    # --- state the widgets and the runner read ---------------------------------
+
+    @property
+    def rejected(self) -> int:
+        return self.decoder.rejected
+
+    @property
+    def period_ms(self) -> int:
+        return self.settings.status_ms
+
+    @property
+    def machine_state(self) -> str:
+        """The device's last reported state (Idle, Run, Hold, Home, Alarm), or "" before any."""
+        return self.status.state if self.status is not None else ""
+
+    @property
+    def settled(self) -> bool:
+        """Everything sent is answered and a status report since then shows the machine idle."""
+        return self.streamer.idle and self._seen_idle
+
+    # --- lines --------------------------------------------------------------------
+
+    def send_line(self, text: str, origin: str = "console", op_index: int | None = None) -> bool:
+        """Queue one line for the device; a line it could never take is refused here."""
+        line = text.strip()
+        if not line:
+            return False
+        try:
+            raw = encode_line(line)
+        except ValueError as exc:
+            self.model.message.emit(f"Not sent: {line!r} ({exc})")
+            return False
+        if not self.link.is_open:
+            self.model.message.emit(f"Not sent: {line!r} (not connected)")
+            return False
+        sent = SentLine(next(self._serials), line, origin, op_index)
+        try:
+            self.streamer.queue(raw, sent)
+        except ValueError as exc:
+            self.model.message.emit(f"Not sent: {line!r} ({exc})")
+            return False
+        self._seen_idle = False
+        self._pump()
+        return True
+
+    @property
+    def queued(self) -> int:
+        """Lines waiting for room in the device's buffer."""
+        return self.streamer.queued
+
+    @property
+    def unanswered(self) -> int:
+        """Lines sent and not yet answered."""
+        return self.streamer.in_flight
+
+    def _pump(self) -> None:
+        for raw, sent in self.streamer.sendable():
+            self.link.write(raw)
+            self.frameSent.emit(sent.text, raw)
+            self.lineSent.emit(sent)
+
+    def _realtime(self, byte: bytes, name: str) -> None:
+        if self.link.is_open:
+            self.link.write(byte)
+            self.frameSent.emit(name, byte)
+
+    def query_status(self) -> None:
+        self._realtime(STATUS_QUERY, "?")
+        self._status_asked_at = self.clock.now()
+
+    def request_status(self) -> None:
+        """A status report soon: asks now unless a question is already on its way."""
+        asked = self._status_asked_at
+        if asked is None or self.clock.now() - asked > self.settings.status_ms / 1000:
+            self.query_status()
+
+    @property
+    def planner_size(self) -> int:
+        """Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown)."""
+        return self._planner_size
+
+    def feed_hold(self) -> None:
+        self._realtime(FEED_HOLD, "! (feed hold)")
+
+    def cycle_start(self) -> None:
+        self._realtime(CYCLE_START, "~ (resume)")
+
+    def soft_reset(self) -> list[SentLine]:
+        """Reset the device: its buffers are emptied, so nothing unanswered will be answered."""
+        self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+        return self._forget_stream()
+
+    def discard_queued(self) -> list[SentLine]:
+        """Drop lines not yet sent (the ones the device has stay and will be answered)."""
+        return self.streamer.discard_queued()
+
+    # --- intents ------------------------------------------------------------------
+
+    def stop_all(self) -> None:
+        """Hold at once; reset once the machine stands, so buffered lines are dropped.
+
+        A reset while the axes still move makes GRBL raise ALARM:3 and forget its
+        position, so the reset waits for a status report saying the hold is
+        complete (``Hold:0``) or the machine idle — or for :data:`RESET_AFTER_S`.
+        """
+        self._jog = [0] * self.axis_count
+        if not self.link.is_open:
+            return
+        self._dropped_by_stop = len(self.streamer.discard_queued())
+        self.feed_hold()
+        self._reset_requested_at = self.clock.now()
+        self.query_status()
+
+    @property
+    def stopping(self) -> bool:
+        """A stop was asked for and its reset has not gone out yet."""
+        return self._reset_requested_at is not None
+
+    def _reset_after_stop(self) -> None:
+        self._reset_requested_at = None
+        lost = len(self.soft_reset()) + self._dropped_by_stop
+        self._dropped_by_stop = 0
+        if lost:
+            self.model.message.emit(f"Stopped: {lost} line(s) not run")
+
+    def move_absolute(self, axis: int, position: float) -> bool:
+        if self._refuse_motion() or not 0 <= axis < self.axis_count:
+            return False
+        name = self.model.profile.axes[axis].name
+        low, high = self.model.profile.travel_limits()[name]
+        if not low <= position <= high:
+            self.model.message.emit(f"{name} {position:g} refused: outside {low:g}…{high:g}")
+            return False
+        return self.send_line(f"G90 G0 {name}{position:.3f}", "intent")
+
+    def move_relative(self, axis: int, delta: float) -> bool:
+        if self._refuse_motion() or not 0 <= axis < self.axis_count:
+            return False
+        target = self.model.axes[axis].position + delta
+        return self.move_absolute(axis, target)
+
+    def home(self, axis: int) -> bool:
+        if self._refuse_motion():
+            return False
+        return self.send_line("$H" if "$H" in self.settings.words else "G28", "intent")
+
+    def pen(self, down: bool) -> bool:
+        return self.send_line(self.settings.pen_down if down else self.settings.pen_up, "intent")
+
+    def set_jog(self, directions: Sequence[int]) -> None:
+        """Held arrows become short relative moves kept a little ahead of the machine."""
+        wanted = [int(d) for d in directions[: self.axis_count]]
+        wanted += [0] * (self.axis_count - len(wanted))
+        if wanted == self._jog:
+            return
+        self._jog = wanted
+        if any(wanted) and not self._refuse_motion():
+            self._send_jog_step()  # at once: the key must reach the wire now
+
+    def _feed_jog(self) -> None:
+        """Another step when the last is answered and the planner is nearly through."""
+        if not any(self._jog) or self._jog_unanswered or not self._jog_status_fresh:
+            return
+        report = self.status
+        if report is None:
+            return
+        if report.planner_free is not None and self._planner_size:
+            planned = self._planner_size - report.planner_free
+        else:
+            planned = 0 if report.state == "Idle" else JOG_BLOCKS_AHEAD
+        if planned < JOG_BLOCKS_AHEAD:
+            self._send_jog_step()
+
+    def _send_jog_step(self) -> None:
+        words: list[str] = []
+        speed = 0.0
+        for axis, direction in enumerate(self._jog):
+            if direction:
+                profile = self.model.profile.axes[axis]
+                axis_speed = profile.max_speed * JOG_SPEED_SHARE
+                speed = max(speed, axis_speed)
+                words.append(f"{profile.name}{direction * axis_speed * JOG_STEP_S:.3f}")
+        line = f"G91 G1 {' '.join(words)} F{speed * 60:.0f}"
+        if self.send_line(line, "jog"):
+            self._jog_unanswered += 1
+            self._jog_status_fresh = False
+
+    # --- time -----------------------------------------------------------------------
+
+    def tick(self) -> None:
+        """Ask for the status; notice a device that stopped answering."""
+        if not self.link.is_open:
+            return
+        now = self.clock.now()
+        requested = self._reset_requested_at
+        if requested is not None and now - requested > RESET_AFTER_S:
+            self._reset_after_stop()  # no report of a finished hold came: reset anyway
+        self.query_status()
+        if now - self._last_heard > SILENCE_S:
+            self._last_heard = now
+            self.model.message.emit(f"No reply from the device for {SILENCE_S:g} s")
+            self.linkLost.emit()
+
+    def shutdown(self) -> None:
+        """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
+        self._timer.stop()
+        if self.stopping and self.link.is_open:
+            self._reset_after_stop()
+
+    # --- link events and replies -------------------------------------------------------
+
+    def _forget_stream(self) -> list[SentLine]:
+        lost = self.streamer.clear()
+        self._seen_idle = False
+        self._jog_unanswered = 0
+        self.reset.emit()
+        return lost
+
+    def _on_connected(self) -> None:
+        self.decoder.reset()
+        self.streamer.clear()
+        self._seen_idle = False
+        self._status_asked_at = None
+        self._reset_requested_at = None
+        self._last_heard = self.clock.now()
+        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        if self._autotick:
+            self._timer.start()
+        self.query_status()
+
+    def _on_disconnected(self, reason: object) -> None:
+        self._timer.stop()
+        self._reset_requested_at = None
+        self._jog = [0] * self.axis_count
+        lost = self.streamer.clear()
+        for axis in range(self.axis_count):
+            self.model.update_axis(axis, moving=False, velocity=0.0)
+        if reason is None:
+            self.model.set_link_state(LinkState.DISCONNECTED)
+        else:
+            self.model.set_link_state(LinkState.LOST, str(reason))
+            tail = f"; {len(lost)} unanswered line(s)" if lost else ""
+            self.model.message.emit(f"Link lost: {reason}{tail}")
+
+    def receive_injected(self, data: bytes) -> None:
+        """Bytes a developer injects as the device's (developer pane): handled as if read."""
+        self._on_data(data)
+
+    def _on_data(self, data: bytes) -> None:
+        for reply in self.decoder.feed(data):
+            self._last_heard = self.clock.now()
+            if isinstance(reply, Rejected):
+                self.frameReceived.emit(reply, reply.raw)
+                self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
+                continue
+            self.frameReceived.emit(reply, reply_bytes(reply))
+            if isinstance(reply, Ok):
+                self._answered(None)
+            elif isinstance(reply, ErrorReply):
+                self._answered(reply)
+            elif isinstance(reply, StatusReport):
+                self._apply_status(reply)
+            elif isinstance(reply, AlarmReply):
+                self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
+                self.model.message.emit(f"Machine alarm {reply.code}: {reply.meaning}")
+            elif isinstance(reply, Banner):
+                self.replyText.emit(reply.text)
+                lost = self._forget_stream()
+                self.query_status()  # a board that just started: where is it, how big its planner
+                if lost:
+                    self.model.message.emit(
+                        f"The device reset: {len(lost)} unanswered line(s) were not run"
+                    )
+            elif isinstance(reply, Feedback):
+                self.replyText.emit(reply.text)
+
+    def _answered(self, error: ErrorReply | None) -> None:
+        entry = self.streamer.acknowledge()
+        if entry is None:
+            self.model.message.emit("A reply arrived for no line (ignored)")
+            return
+        _, sent = entry
+        self._seen_idle = False
+        if sent.origin == "jog":
+            self._jog_unanswered = max(0, self._jog_unanswered - 1)
+            if any(self._jog):
+                self.query_status()  # its Bf says whether the next step may go
+        if error is None:
+            if sent.origin in ("console", "intent"):
+                self.replyText.emit(f"ok  ← {sent.text}")
+            self.lineAcknowledged.emit(sent)
+        else:
+            self.errors += 1
+            self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
+            if sent.origin != "job":
+                self.model.message.emit(
+                    f"{sent.text!r} refused: error {error.code}, {error.meaning}"
+                )
+            self.lineFailed.emit(sent, error.code, error.meaning)
+        self._pump()
+
+    def _apply_status(self, report: StatusReport) -> None:
+        self._status_asked_at = None
+        self.status = report
+        if self._reset_requested_at is not None:
+            held = report.state == "Hold" and report.substate in (None, "0")
+            if held or report.state in ("Idle", "Alarm"):
+                self._reset_after_stop()
+            else:
+                self.request_status()  # still braking: ask again at once
+        if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
+            # Free blocks of an idle machine with nothing on its way: the planner's size.
+            self._planner_size = report.planner_free
+        self._jog_status_fresh = True
+        moving = report.state in _MOVING_STATES
+        for axis in range(min(self.axis_count, len(report.mpos))):
+            self.model.update_axis(
+                axis,
+                position=report.mpos[axis],
+                status_text=report.state.lower(),
+                moving=moving,
+            )
+        # Replies and reports share one ordered stream, so with every line answered this
+        # report was made after the last line was planned.  A board that has planned a
+        # block but not yet started it still says Idle; its Bf then shows the block.
+        planner_empty = (
+            report.planner_free is None
+            or not self._planner_size
+            or report.planner_free >= self._planner_size
+        )
+        if report.state == "Idle" and self.streamer.idle and planner_empty:
+            self._seen_idle = True
+        self.statusChanged.emit(report)
+        self._feed_jog()

@@ -1,0 +1,131 @@
+"""Which session and which emulated device serve each dialect.
+
+The station looks the profile's dialect up here, so a machine family is
+added by registering its session and emulator, not by editing the station.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from app.link import Link
+from app.machine import MachineModel
+from app.machines.drill.session import DrillSession
+from app.machines.gcode.session import GcodeSession
+from app.machines.session import MachineSession
+from app.machines.stage.session import StageSession
+from app.machines.usb3.session import Usb3Session
+from app.profiles import MachineProfile
+from protocol.clock import Clock
+from protocol.emulator.device import EmulatedDevice
+from protocol.emulator.drill_firmware import DrillConfig, DrillFirmware
+from protocol.emulator.gcode_firmware import (
+    GcodeConfig,
+    GcodeFirmware,
+    corexy_plotter_config,
+    grbl_plotter_config,
+    string_art_config,
+)
+from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
+
+SessionFactory = Callable[[MachineModel, Link, Clock, MachineProfile, int, bool], MachineSession]
+EmulatorFactory = Callable[[Clock, MachineProfile], EmulatedDevice]
+
+
+@dataclass(frozen=True)
+class Dialect:
+    session: SessionFactory
+    emulator: EmulatorFactory
+
+
+def _stage_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return StageSession(model, link, clock, period_ms=period_ms, autotick=autotick)
+
+
+def _usb3_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return Usb3Session(
+        model, link, clock, autotick=autotick, stop_command=profile.capabilities.stop_command
+    )
+
+
+def _drill_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    return DrillSession(model, link, clock)
+
+
+def _gcode_session(
+    model: MachineModel,
+    link: Link,
+    clock: Clock,
+    profile: MachineProfile,
+    period_ms: int,
+    autotick: bool,
+) -> MachineSession:
+    if profile.gcode is None:
+        raise ValueError(f"profile {profile.name!r} has no [gcode] table")
+    return GcodeSession(model, link, clock, profile.gcode, autotick=autotick)
+
+
+#: The emulated G-code machine for each kinematics a profile can name.
+GCODE_EMULATORS: dict[str, Callable[[], GcodeConfig]] = {
+    "corexy": corexy_plotter_config,
+    "cartesian": grbl_plotter_config,
+    "cylindrical": string_art_config,
+}
+
+
+def _stage_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    return StageFirmware(clock, StageConfig(axes=len(profile.axes)))
+
+
+def _usb3_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    return Usb3Firmware(clock)
+
+
+def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    """The plotter with the profile's X/Y travel in microsteps (the host's own conversion)."""
+    x, y = profile.axes[0], profile.axes[1]
+    travel = tuple(round(a.travel * a.steps_per_rev * a.microsteps / a.lead) for a in (x, y))
+    return DrillFirmware(clock, DrillConfig(travel=(travel[0], travel[1])))
+
+
+def _gcode_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    kinematics = profile.gcode.kinematics if profile.gcode is not None else "cartesian"
+    return GcodeFirmware(clock, GCODE_EMULATORS[kinematics]())
+
+
+DIALECTS: dict[str, Dialect] = {
+    "stage": Dialect(_stage_session, _stage_emulator),
+    "usb3": Dialect(_usb3_session, _usb3_emulator),
+    "drill": Dialect(_drill_session, _drill_emulator),
+    "gcode": Dialect(_gcode_session, _gcode_emulator),
+}
+
+
+def dialect_for(profile: MachineProfile) -> Dialect:
+    try:
+        return DIALECTS[profile.dialect]
+    except KeyError:
+        raise ValueError(f"the {profile.dialect!r} dialect is not supported yet") from None

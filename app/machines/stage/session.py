@@ -1,0 +1,332 @@
+"""The stage dialect's session: operator intents in, command frames out, echoes into the model.
+
+The device is level-triggered (a jog lasts while JOG keeps arriving) and
+answers every frame, so the session sends a frame every period *and* at
+once whenever the operator's intent changes: a key press never waits for the
+next tick.  One-shot commands (moves, writes, speed select) queue per axis and
+take that axis's slot in the next frame; reads fill idle slots in the
+background so an operator's command is never stuck behind them.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Sequence
+
+from PySide6.QtCore import QObject, QTimer
+
+from app.link import Link
+from app.machine import LinkState, MachineModel
+from app.machines.session import MachineSession
+from app.machines.stage.echoes import STATUS_TEXT as STATUS_TEXT  # re-exported for callers
+from app.machines.stage.echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
+from app.machines.stage.echoes import StageEchoes
+from protocol.clock import Clock
+from protocol.stage.codec import (
+    PARAMETERS,
+    CommandFrame,
+    CommandId,
+    CommandPacket,
+    EchoFrame,
+    EchoType,
+    Rejected,
+    StageDecoder,
+    Subscriber,
+    encode_command,
+    encode_echo,
+    write_command,
+)
+
+#: What the info panel shows; each is asked for at least once a second.
+INFO_SUBSCRIBERS: tuple[Subscriber, ...] = (
+    Subscriber.BATTERY_CHARGE,
+    Subscriber.BATTERY_VOLTAGE,
+    Subscriber.BOARD_TEMPERATURE,
+    Subscriber.DEVICE_FLAGS,
+    Subscriber.CHARGING_CURRENT,
+)
+
+STALE_PERIODS = 3
+LOST_AFTER_S = 2.0
+JOG_RELEASE_REPEATS = 3
+MAX_BURST = 16
+
+
+class SubscriberScheduler:
+    """Chooses the SS of each frame: info values at least once a second, the rest plotted."""
+
+    def __init__(self, period_s: float) -> None:
+        self.period_s = period_s
+        self.plotted: int | None = None
+        self._last: dict[int, float] = {}
+
+    def next(self, now: float) -> int:
+        due = [s for s in INFO_SUBSCRIBERS if now - self._last.get(s, -1e9) >= 1.0 - self.period_s]
+        if due:
+            choice: int = min(due, key=lambda s: self._last.get(s, -1e9))
+        elif self.plotted is not None:
+            choice = self.plotted
+        else:
+            choice = min(INFO_SUBSCRIBERS, key=lambda s: self._last.get(s, -1e9))
+        self._last[choice] = now
+        return choice
+
+
+class StageSession(MachineSession):
+    """frameSent carries CommandFrames; frameReceived EchoFrames or Rejected lines."""
+
+    def __init__(
+        self,
+        model: MachineModel,
+        link: Link,
+        clock: Clock,
+        *,
+        period_ms: int | None = None,
+        autotick: bool = True,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(model, link, clock, parent)
+        self.decoder = StageDecoder(self.axis_count)
+        self._period_ms = period_ms or model.profile.period_ms
+        self.subscribers = SubscriberScheduler(self._period_ms / 1000)
+        self._release_repeats = [0] * self.axis_count
+        self._urgent: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
+        self._background: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
+        self._read_in_last_frame = [False] * self.axis_count
+        self.echoes = StageEchoes(model, clock)
+        self._shift_held = False
+        self._device_fast: bool | None = None
+        self._last_echo: float | None = None
+        self._timer = QTimer(self)
+        self._timer.setInterval(self._period_ms)
+        self._timer.timeout.connect(self.tick)
+        self._autotick = autotick
+        link.connected.connect(self._on_connected)
+        link.disconnected.connect(self._on_disconnected)
+        link.dataReceived.connect(self._on_data)
+
+    # --- settings ------------------------------------------------------------
+
+    @property
+    def period_ms(self) -> int:
+        return self._period_ms
+
+    def set_period_ms(self, period_ms: int) -> None:
+        self._period_ms = max(20, min(1000, int(period_ms)))
+        self._timer.setInterval(self._period_ms)
+        self.subscribers.period_s = self._period_ms / 1000
+
+    def set_plotted_subscriber(self, subscriber: int | None) -> None:
+        self.subscribers.plotted = subscriber
+
+    @property
+    def rejected(self) -> int:
+        return self.decoder.rejected
+
+    # --- operator intents ----------------------------------------------------
+
+    def set_jog(self, directions: Sequence[int]) -> None:
+        """The jog directions of all axes as the operator holds them right now."""
+        wanted = [max(-1, min(1, int(d))) for d in directions]
+        wanted += [0] * (self.axis_count - len(wanted))
+        if any(wanted) and self._refuse_motion():
+            wanted = [0] * self.axis_count
+        if wanted == self._jog:
+            return
+        for axis, (old, new) in enumerate(zip(self._jog, wanted, strict=True)):
+            if old and not new:
+                self._release_repeats[axis] = JOG_RELEASE_REPEATS
+            elif new:
+                self._release_repeats[axis] = 0
+        self._jog = wanted
+        self._send_now()
+
+    def set_shift(self, held: bool) -> None:
+        """Shift held jogs at the other speed; the switch goes out at once."""
+        if held != self._shift_held:
+            self._shift_held = held
+            self._sync_speed()
+            self._send_now()
+
+    def select_speed(self, fast: bool) -> None:
+        self._fast_selected = fast
+        self._sync_speed()
+        self._send_now()
+
+    def stop_all(self) -> None:
+        """Stop everything: drop queued motion and jogs, STOP every axis at once."""
+        self._jog = [0] * self.axis_count
+        self._release_repeats = [0] * self.axis_count
+        for queue in self._urgent:
+            queue.clear()
+        for queue in self._urgent:
+            queue.append(CommandPacket(CommandId.STOP))
+        self._send_now()
+
+    def move_absolute(self, axis: int, position_mm: float) -> bool:
+        return self._motion(axis, CommandPacket(CommandId.MOVE_ABS, _um(position_mm)))
+
+    def move_relative(self, axis: int, delta_mm: float) -> bool:
+        return self._motion(axis, CommandPacket(CommandId.MOVE_REL, _um(delta_mm)))
+
+    def home(self, axis: int) -> bool:
+        return self._motion(axis, CommandPacket(CommandId.HOME))
+
+    def set_position(self, axis: int, position_mm: float) -> None:
+        self._urgent[axis].append(CommandPacket(CommandId.SET_POS, _um(position_mm)))
+        self._send_now()
+
+    def set_sleep(self, sleep: bool) -> None:
+        if sleep:
+            self._jog = [0] * self.axis_count
+        for queue in self._urgent:
+            queue.append(CommandPacket(CommandId.SLEEP, 1 if sleep else 0))
+        self._send_now()
+
+    def write_parameter(self, axis: int, parameter: EchoType, value: int) -> None:
+        self.echoes.expect_write(axis, parameter, value)
+        self._urgent[axis].append(CommandPacket(write_command(parameter), value))
+        self._send_now()
+
+    def read_parameter(self, axis: int, parameter: EchoType) -> None:
+        self._background[axis].append(CommandPacket(CommandId.READ, parameter))
+
+    def read_all_parameters(self) -> None:
+        for axis in range(self.axis_count):
+            for parameter in PARAMETERS:
+                self.read_parameter(axis, parameter)
+
+    # --- the wire ------------------------------------------------------------
+
+    def tick(self) -> None:
+        """One period: health check, then the periodic frame."""
+        self._check_health()
+        if self.link.is_open:
+            self._send_frame()
+
+    def _send_now(self) -> None:
+        """Send at once: every urgent packet, then the jog state, without waiting for a tick."""
+        if not self.link.is_open:
+            return
+        for _ in range(MAX_BURST):
+            self._send_frame()
+            if not any(self._urgent):
+                break
+
+    def _send_frame(self) -> None:
+        packets = tuple(self._next_packet(axis) for axis in range(self.axis_count))
+        frame = CommandFrame(packets, self.subscribers.next(self.clock.now()))
+        raw = encode_command(frame)
+        self.link.write(raw)
+        self.frameSent.emit(frame, raw)
+
+    def _next_packet(self, axis: int) -> CommandPacket:
+        if self._urgent[axis]:
+            self._read_in_last_frame[axis] = False
+            packet = self._urgent[axis].popleft()
+            if packet.command in _MOTION_COMMANDS:
+                self._release_repeats[axis] = 0
+            return packet
+        if self._jog[axis]:
+            self._read_in_last_frame[axis] = False
+            return CommandPacket(CommandId.JOG, self._jog[axis])
+        if self._release_repeats[axis]:
+            self._read_in_last_frame[axis] = False
+            self._release_repeats[axis] -= 1
+            return CommandPacket(CommandId.JOG, 0)
+        # A READ answer takes the axis's position slot in the echo, so reads go out at most
+        # every other frame: the info panel keeps following the axis while they run.
+        if self._background[axis] and not self._read_in_last_frame[axis]:
+            self._read_in_last_frame[axis] = True
+            return self._background[axis].popleft()
+        self._read_in_last_frame[axis] = False
+        return CommandPacket(CommandId.NOP)
+
+    def _motion(self, axis: int, packet: CommandPacket) -> bool:
+        if self._refuse_motion():
+            return False
+        self._urgent[axis].append(packet)
+        self._send_now()
+        return True
+
+    def _sync_speed(self) -> None:
+        fast = self._fast_selected != self._shift_held
+        if fast == self._device_fast:
+            return
+        self._device_fast = fast
+        for queue in self._urgent:
+            queue.append(CommandPacket(CommandId.SPEED, 1 if fast else 0))
+
+    # --- link events ---------------------------------------------------------
+
+    def _on_connected(self) -> None:
+        self.decoder.reset()
+        self._last_echo = self.clock.now()
+        self._device_fast = None
+        self._jog = [0] * self.axis_count
+        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._sync_speed()
+        self.read_all_parameters()
+        if self._autotick:
+            self._timer.start()
+        self._send_now()
+
+    def _on_disconnected(self, reason: object) -> None:
+        self._timer.stop()
+        self._jog = [0] * self.axis_count
+        self.echoes.forget_writes()
+        for queue in (*self._urgent, *self._background):
+            queue.clear()
+        if reason is None:
+            self.model.set_link_state(LinkState.DISCONNECTED)
+        else:
+            self.model.set_link_state(LinkState.LOST, str(reason))
+            self.model.message.emit(f"Link lost: {reason}")
+
+    def _check_health(self) -> None:
+        if self._last_echo is None or self.model.link_state not in (
+            LinkState.CONNECTED,
+            LinkState.STALE,
+        ):
+            return
+        silent = self.clock.now() - self._last_echo
+        if silent > LOST_AFTER_S:
+            self._jog = [0] * self.axis_count
+            self.model.set_link_state(LinkState.LOST, f"no reply for {silent:.1f} s")
+            self.linkLost.emit()
+        elif silent > STALE_PERIODS * self._period_ms / 1000:
+            self.model.set_link_state(LinkState.STALE, f"no reply for {silent:.1f} s")
+
+    def _on_data(self, data: bytes) -> None:
+        for result in self.decoder.feed(data):
+            if isinstance(result, Rejected):
+                self.frameReceived.emit(result, result.raw)
+            elif isinstance(result, EchoFrame):
+                # The codec is canonical, so re-encoding gives back the bytes received.
+                self.frameReceived.emit(result, encode_echo(result))
+                self.apply_echo(result)
+            else:
+                # A command frame arriving here is an echo of our own bytes (a looped
+                # cable, a misbehaving bridge): noise on this side, counted as such.
+                self.decoder.rejected += 1
+
+    # --- echoes into the model -----------------------------------------------
+
+    def apply_echo(self, echo: EchoFrame) -> None:
+        """Fold one echo into the model; any echo proves the link is alive."""
+        self._last_echo = self.clock.now()
+        if self.model.link_state in (LinkState.STALE, LinkState.LOST):
+            self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self.echoes.apply(echo)
+
+    def shutdown(self) -> None:
+        self._timer.stop()
+
+
+_MOTION_COMMANDS = frozenset(
+    {CommandId.MOVE_ABS, CommandId.MOVE_REL, CommandId.HOME, CommandId.STOP, CommandId.ESTOP}
+)
+
+
+def _um(mm: float) -> int:
+    return round(mm * 1000)

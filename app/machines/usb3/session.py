@@ -1,0 +1,285 @@
+"""The three-axis USB unit's session (PROTOCOLS.md section 2).
+
+The unit takes relative moves in 1/32-step counts and reports positions
+while it moves; it has no jog command, so a held key becomes a stream of
+short moves that keeps the axis a fraction of a second ahead of the key, and
+the release sends ``S;`` (where the profile declares that extension) so the
+axis stops at once rather than running out its lead.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TypeVar
+
+from PySide6.QtCore import QObject, QTimer, Signal
+
+from app.link import Link
+from app.machine import LinkState, MachineModel
+from app.machines.session import MachineSession
+from protocol.clock import Clock
+from protocol.usb3.codec import (
+    AxisId,
+    GetSettings,
+    Message,
+    NotUnderstood,
+    Position,
+    Rejected,
+    ReplyDecoder,
+    StepSize,
+    StepSizes,
+    StopAll,
+    Thread,
+    Threads,
+    Triple,
+    ZeroAll,
+    count_to_mm,
+    encode,
+    move_commands,
+    nearest_reachable_count,
+)
+
+#: The unit's top pulse rate (its speed table's fastest entry), pulses per second.
+TOP_PULSE_RATE = 300.0
+#: How far ahead of the key a jog keeps the axis, in seconds of travel at top rate.
+JOG_LEAD_S = 0.3
+#: An axis that has not reported for this long after a report has stopped.
+STILL_AFTER_S = 0.25
+TICK_MS = 100
+DEFAULT_STEP = StepSize.EIGHTH
+DEFAULT_THREAD = Thread.M6
+
+_T = TypeVar("_T")
+
+
+class Usb3Session(MachineSession):
+    """frameSent/frameReceived carry usb3 messages (or Rejected) with their bytes."""
+
+    settingsChanged = Signal()
+
+    def __init__(
+        self,
+        model: MachineModel,
+        link: Link,
+        clock: Clock,
+        *,
+        autotick: bool = True,
+        stop_command: bool = True,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(model, link, clock, parent)
+        self.decoder = ReplyDecoder()
+        self.not_understood = 0
+        self.step_sizes: list[StepSize] = [DEFAULT_STEP] * self.axis_count
+        self.threads: list[Thread] = [DEFAULT_THREAD] * self.axis_count
+        self._counts = [0] * self.axis_count
+        self._last_report: list[float | None] = [None] * self.axis_count
+        #: ``C;`` was sent and the axis has not reported since: its next report is a new zero.
+        self._zeroing = [False] * self.axis_count
+        self._stop_command = stop_command
+        self._autotick = autotick
+        self._timer = QTimer(self)
+        self._timer.setInterval(TICK_MS)
+        self._timer.timeout.connect(self.tick)
+        link.connected.connect(self._on_connected)
+        link.disconnected.connect(self._on_disconnected)
+        link.dataReceived.connect(self._on_data)
+
+    @property
+    def rejected(self) -> int:
+        return self.decoder.rejected + self.not_understood
+
+    # --- conversions the panel shows -------------------------------------------
+
+    def reachable(self, axis: int, mm: float) -> float:
+        """The distance a move of ``mm`` really covers with this axis's step size and thread."""
+        count = nearest_reachable_count(mm, self.step_sizes[axis], self.threads[axis])
+        return count_to_mm(count, self.threads[axis])
+
+    def speed_mm_s(self, axis: int) -> float:
+        """Top speed of the axis: the pulse rate is fixed, so finer steps are slower."""
+        pulses_per_mm = 6400 / self.threads[axis].pitch_mm / self.step_sizes[axis].counts_per_pulse
+        return TOP_PULSE_RATE / pulses_per_mm
+
+    # --- intents ----------------------------------------------------------------
+
+    def move_relative(self, axis: int, delta: float) -> bool:
+        if self._refuse_motion():
+            return False
+        counts = [0] * 3
+        counts[axis] = nearest_reachable_count(delta, self.step_sizes[axis], self.threads[axis])
+        if not counts[axis]:
+            self.model.message.emit(
+                f"{self.model.axes[axis].name}: {delta:g} mm is less than one step"
+            )
+            return False
+        self._send(*move_commands(counts))
+        return True
+
+    def set_jog(self, directions: Sequence[int]) -> None:
+        wanted = [max(-1, min(1, int(d))) for d in directions][: self.axis_count]
+        wanted += [0] * (self.axis_count - len(wanted))
+        if any(wanted) and self._refuse_motion():
+            wanted = [0] * self.axis_count
+        if wanted == self._jog:
+            return
+        previous, self._jog = self._jog, wanted
+        released = any(old and not new for old, new in zip(previous, wanted, strict=True))
+        stopped_all = released and self._stop_command
+        if stopped_all:
+            # S; stops every axis, so axes still held are started again right after.
+            self._send(StopAll())
+        # Only axes that start (or were just stopped) get a lead: the others already have one,
+        # and a second would only lengthen the run-out on a unit without S;.
+        starting = [
+            axis
+            for axis, direction in enumerate(wanted)
+            if direction and (stopped_all or direction != previous[axis])
+        ]
+        self._send_jog_lead(JOG_LEAD_S, starting)
+
+    def stop_all(self) -> None:
+        self._jog = [0] * self.axis_count
+        if self._stop_command:
+            self._send(StopAll())
+        else:
+            self.model.message.emit("This unit has no stop command: it finishes its move")
+
+    def zero_all(self) -> None:
+        if self.link.is_open:
+            self._zeroing = [True] * self.axis_count
+        self._send(ZeroAll())
+
+    def request_settings(self) -> None:
+        self._send(GetSettings())
+
+    def set_step_size(self, axis: int, size: StepSize) -> None:
+        self.step_sizes[axis] = size
+        self._send(StepSizes(self._triple(self.step_sizes, DEFAULT_STEP)))
+        self.settingsChanged.emit()
+
+    def set_thread(self, axis: int, thread: Thread) -> None:
+        self.threads[axis] = thread
+        self._send(Threads(self._triple(self.threads, DEFAULT_THREAD)))
+        self._refresh_positions()
+        self.settingsChanged.emit()
+
+    # --- time -------------------------------------------------------------------
+
+    def tick(self) -> None:
+        """Keep held jogs fed and notice axes that stopped reporting."""
+        if any(self._jog):
+            self._send_jog_lead(TICK_MS / 1000)
+        now = self.clock.now()
+        for axis, last in enumerate(self._last_report):
+            if last is not None and now - last > STILL_AFTER_S:
+                self._last_report[axis] = None
+                self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
+
+    def shutdown(self) -> None:
+        self._timer.stop()
+
+    # --- the wire ---------------------------------------------------------------
+
+    def _send_jog_lead(self, seconds: float, axes: Sequence[int] | None = None) -> None:
+        counts = [0] * 3
+        for axis, direction in enumerate(self._jog):
+            if direction and (axes is None or axis in axes):
+                pulses = max(1, round(TOP_PULSE_RATE * seconds))
+                counts[axis] = direction * pulses * self.step_sizes[axis].counts_per_pulse
+        self._send(*move_commands(counts))
+
+    def _send(self, *messages: Message) -> None:
+        if not self.link.is_open:
+            return
+        for message in messages:
+            raw = encode(message)
+            self.link.write(raw)
+            self.frameSent.emit(message, raw)
+
+    @staticmethod
+    def _triple(values: Sequence[_T], default: _T) -> Triple[_T]:
+        """Three values for the wire, whatever the profile's axis count."""
+        padded = [*values[:3], *[default] * (3 - len(values))]
+        return (padded[0], padded[1], padded[2])
+
+    # --- link events and replies ------------------------------------------------
+
+    def _on_connected(self) -> None:
+        self.decoder.reset()
+        self._jog = [0] * self.axis_count
+        self._zeroing = [False] * self.axis_count
+        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        if self._autotick:
+            self._timer.start()
+        self.request_settings()
+
+    def _on_disconnected(self, reason: object) -> None:
+        self._timer.stop()
+        self._jog = [0] * self.axis_count
+        if reason is None:
+            self.model.set_link_state(LinkState.DISCONNECTED)
+        else:
+            self.model.set_link_state(LinkState.LOST, str(reason))
+            self.model.message.emit(f"Link lost: {reason}")
+
+    def _on_data(self, data: bytes) -> None:
+        for reply in self.decoder.feed(data):
+            raw = reply.raw if isinstance(reply, Rejected) else encode(reply)
+            if isinstance(reply, NotUnderstood):
+                # Counted before the frame is announced, so a listener reading
+                # ``rejected`` (the status bar) sees this one too, as it does a Rejected.
+                self.not_understood += 1
+            self.frameReceived.emit(reply, raw)
+            if isinstance(reply, Rejected):
+                self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
+            elif isinstance(reply, Position):
+                self._apply_position(reply.axis, reply.count)
+            elif isinstance(reply, StepSizes):
+                self.step_sizes[: self.axis_count] = list(reply.sizes)[: self.axis_count]
+                self.settingsChanged.emit()
+            elif isinstance(reply, Threads):
+                self.threads[: self.axis_count] = list(reply.threads)[: self.axis_count]
+                self._refresh_positions()
+                self.settingsChanged.emit()
+            elif isinstance(reply, NotUnderstood):
+                self.model.message.emit("The unit did not understand a command (?;)")
+
+    def _apply_position(self, axis: AxisId, count: int) -> None:
+        if axis >= self.axis_count:
+            return
+        now = self.clock.now()
+        moved = count != self._counts[axis]
+        last = self._last_report[axis]
+        delta_mm = count_to_mm(count - self._counts[axis], self.threads[axis])
+        self._counts[axis] = count
+        position = count_to_mm(count, self.threads[axis])
+        if self._zeroing[axis]:
+            # The report C; asks for: the axis got a new origin, it did not move there.
+            self._zeroing[axis] = False
+            if last is None:
+                self.model.update_axis(
+                    axis, position=position, velocity=0.0, status_text="idle", moving=False
+                )
+            else:  # zeroed on the way: still moving, its speed measured from here on
+                self._last_report[axis] = now
+                self.model.update_axis(axis, position=position)
+            return
+        if not moved:
+            # A report that repeats the last count: the axis is standing still.
+            self._last_report[axis] = None
+            self.model.update_axis(
+                axis, position=position, velocity=0.0, status_text="idle", moving=False
+            )
+            return
+        velocity = delta_mm / (now - last) if last is not None and now > last else 0.0
+        self._last_report[axis] = now
+        self.model.update_axis(
+            axis, position=position, velocity=velocity, status_text="moving", moving=True
+        )
+
+    def _refresh_positions(self) -> None:
+        for axis in range(self.axis_count):
+            self.model.update_axis(
+                axis, position=count_to_mm(self._counts[axis], self.threads[axis])
+            )

@@ -1,0 +1,98 @@
+"""The developer pane on a G-code machine: inject a reply, press the emulated board's buttons."""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QSpinBox,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.machines.gcode.developer import QUICK_REPLIES, GcodeEmulatorButtons, inject_reply
+from app.station import Station
+from widgets.history_entry import HistoryLineEdit
+
+_ERROR_STYLE = "color: #b00020;"
+
+
+class GcodeReplyBox(QGroupBox):
+    """Type what the device "says"; it reaches the session as the device's bytes would."""
+
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__("Inject a reply (as if the device sent it)", parent)
+        self._station = station
+        self.entry = HistoryLineEdit()
+        self.entry.setObjectName("gcode_inject_entry")
+        self.entry.setPlaceholderText("ok, error:9, ALARM:1, <Hold:0|MPos:1,2,0|FS:0,0>…")
+        self.entry.returnPressed.connect(self.inject)
+        self.inject_button = QPushButton("Inject")
+        self.inject_button.clicked.connect(self.inject)
+        self.error = QLabel()
+        self.error.setStyleSheet(_ERROR_STYLE)
+        self.error.setWordWrap(True)
+        self.error.hide()
+        row = QHBoxLayout()
+        row.addWidget(self.entry, 1)
+        row.addWidget(self.inject_button)
+        quick = QHBoxLayout()
+        self.quick_buttons: dict[str, QPushButton] = {}
+        for caption, text in QUICK_REPLIES:
+            button = QPushButton(caption)
+            button.setToolTip(f"Inject {text!r}")
+            button.clicked.connect(lambda _=False, t=text: self.inject_text(t))
+            quick.addWidget(button)
+            self.quick_buttons[caption] = button
+        layout = QVBoxLayout(self)
+        layout.addLayout(row)
+        layout.addLayout(quick)
+        layout.addWidget(self.error)
+
+    def inject(self) -> bool:
+        return self.inject_text(self.entry.take())
+
+    def inject_text(self, text: str) -> bool:
+        try:
+            inject_reply(self._station, text)
+        except ValueError as exc:
+            self.error.setText(f"Not injected: {exc}")
+            self.error.show()
+            return False
+        self.error.hide()
+        return True
+
+
+class GcodeEmulatorBox(QGroupBox):
+    """The emulated board's own hold / resume buttons and an alarm, as a switch would raise."""
+
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__("Emulated board", parent)
+        self.buttons = GcodeEmulatorButtons(station, self)
+        self.hold_button = QPushButton("Hold")
+        self.hold_button.setToolTip("The board's feed-hold button")
+        self.resume_button = QPushButton("Cycle start")
+        self.resume_button.setToolTip("The board's cycle-start button")
+        self.alarm_code = QSpinBox()
+        self.alarm_code.setRange(1, 9)
+        self.alarm_code.setToolTip("ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)")
+        self.alarm_button = QPushButton("Raise alarm")
+        self.hold_button.clicked.connect(self.buttons.hold)
+        self.resume_button.clicked.connect(self.buttons.resume)
+        self.alarm_button.clicked.connect(self._alarm)
+        grid = QGridLayout(self)
+        grid.addWidget(self.hold_button, 0, 0)
+        grid.addWidget(self.resume_button, 0, 1)
+        grid.addWidget(self.alarm_code, 1, 0)
+        grid.addWidget(self.alarm_button, 1, 1)
+
+    def _alarm(self) -> None:
+        self.buttons.alarm(self.alarm_code.value())
+
+    def sync(self, *_args: object) -> None:
+        enabled = self.buttons.available
+        for widget in (self.hold_button, self.resume_button, self.alarm_code, self.alarm_button):
+            widget.setEnabled(enabled)

@@ -1,0 +1,551 @@
+"""The developer pane (Shift+V): inject echoes, simulate the device, watch the wire.
+
+It mirrors the developer extension of the stage's original tool — fake a
+received echo, let a timer answer the tool's own commands — and adds the
+frame log and the emulator's knobs, so every state the operator panels can
+show is one click away.  The pane is a view: parsing, logging and the
+emulator live in :mod:`app.developer`, and the pane never touches a
+transport or the emulator itself.
+
+The log view redraws on a timer, in batches, never per frame: at a 1 kHz
+frame rate a redraw per frame would stall the GUI the operator is using.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from PySide6.QtCore import Qt, QTimer
+from PySide6.QtGui import QShowEvent
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDockWidget,
+    QDoubleSpinBox,
+    QFileDialog,
+    QFormLayout,
+    QFrame,
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPlainTextEdit,
+    QPushButton,
+    QScrollArea,
+    QSizePolicy,
+    QSlider,
+    QSpinBox,
+    QSplitter,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.developer import (
+    END_SWITCHES,
+    LOG_CAPACITY,
+    SUBSCRIBER_TEXT,
+    TYPE_TEXT,
+    AxisFields,
+    EchoFields,
+    EmulatorControls,
+    FrameLog,
+    InjectError,
+    SimulationRefused,
+    inject_echo,
+    raw_echo_text,
+)
+from app.machines.stage.echoes import STATUS_TEXT
+from app.station import Station
+from widgets.developer.gcode_box import GcodeEmulatorBox, GcodeReplyBox
+from widgets.style import MINUS, monospace_font
+
+#: How often the log view takes in what arrived: fast enough to feel live, slow
+#: enough that a 1 kHz stream costs ten redraws a second.
+REDRAW_MS = 100
+#: Lines the view keeps; the log itself keeps :data:`LOG_CAPACITY` entries (saved in full).
+VIEW_LINES = 5_000
+
+_ERROR_STYLE = "color: #c62828;"
+_NOTE_STYLE = "color: #6a6a6a;"
+
+
+@contextmanager
+def _quiet(*widgets: QWidget) -> Iterator[None]:
+    """Set widgets from the model without their change signals writing it back."""
+    for widget in widgets:
+        widget.blockSignals(True)
+    try:
+        yield
+    finally:
+        for widget in widgets:
+            widget.blockSignals(False)
+
+
+class EchoComposer(QGroupBox):
+    """Compose an echo field by field and inject it as if the device had sent it."""
+
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__("Inject echo", parent)
+        self._station = station
+        self.type_combos: list[QComboBox] = []
+        self.status_combos: list[QComboBox] = []
+        self.data_edits: list[QLineEdit] = []
+
+        grid = QGridLayout()
+        grid.setHorizontalSpacing(6)
+        for column, title in enumerate(("", "TYPE", "STATUS", "DATA")):
+            grid.addWidget(QLabel(f"<small>{title}</small>"), 0, column)
+        for row, axis in enumerate(station.model.axes, start=1):
+            grid.addWidget(QLabel(f"<b>{axis.name}</b>"), row, 0)
+            grid.addWidget(self._add_combo(self.type_combos, TYPE_TEXT), row, 1)
+            grid.addWidget(self._add_combo(self.status_combos, STATUS_TEXT), row, 2)
+            grid.addWidget(self._add_data_edit(self.data_edits, "µm, µm/s or value"), row, 3)
+        ss_row = len(station.model.axes) + 1
+        self.subscriber_combo = QComboBox()
+        self.subscriber_combo.setEditable(True)  # any ID 00…FF, to try unknown ones
+        self.subscriber_combo.setToolTip("Subscriber ID: pick one, or type any hex ID 00…FF")
+        for code, text in SUBSCRIBER_TEXT.items():
+            self.subscriber_combo.addItem(f"{code:02X} {text}", code)
+        self.subscriber_data = self._add_data_edit([], "subscriber value")
+        grid.addWidget(QLabel("<b>SS</b>"), ss_row, 0)
+        grid.addWidget(self.subscriber_combo, ss_row, 1, 1, 2)
+        grid.addWidget(self.subscriber_data, ss_row, 3)
+        grid.setColumnStretch(1, 1)
+        grid.setColumnStretch(2, 1)
+
+        self.inject_button = QPushButton("Inject")
+        self.inject_button.setToolTip("Fold this echo into the model as if the device had sent it")
+        self.inject_button.clicked.connect(self.inject)
+        self.result_label = QLabel()
+        self.result_label.setWordWrap(True)
+        self.result_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        buttons = QHBoxLayout()
+        buttons.addWidget(self.inject_button)
+        buttons.addWidget(self.result_label, 1)
+
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addLayout(buttons)
+
+    @staticmethod
+    def _add_combo(into: list[QComboBox], names: dict[int, str]) -> QComboBox:
+        combo = QComboBox()
+        for code, text in names.items():
+            combo.addItem(f"{code:X} {text}", code)  # the hex digit first, as on the wire
+        combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+        combo.setMinimumContentsLength(10)
+        into.append(combo)
+        return combo
+
+    def _add_data_edit(self, into: list[QLineEdit], tip: str) -> QLineEdit:
+        # No validator on purpose: a malformed value gets a message that says why,
+        # instead of keys that silently do nothing.
+        edit = QLineEdit("0")
+        edit.setToolTip(f"{tip}: a whole number, {MINUS}99999…999999")
+        edit.setMaximumWidth(90)
+        edit.returnPressed.connect(self.inject)
+        into.append(edit)
+        return edit
+
+    def fields(self) -> EchoFields:
+        axes = [
+            AxisFields(int(t.currentData()), int(s.currentData()), d.text())
+            for t, s, d in zip(self.type_combos, self.status_combos, self.data_edits, strict=True)
+        ]
+        return EchoFields(axes, self.subscriber_combo.currentText(), self.subscriber_data.text())
+
+    def inject(self) -> None:
+        """Inject the composed echo, or say which field is wrong (then nothing is injected)."""
+        try:
+            echo = inject_echo(self._station, self.fields())
+        except InjectError as error:
+            self.result_label.setStyleSheet(_ERROR_STYLE)
+            self.result_label.setText(error.message)
+            return
+        self.result_label.setStyleSheet(_NOTE_STYLE)
+        self.result_label.setText(f"Injected {raw_echo_text(echo)}")
+
+
+class EmulatorBox(QGroupBox):
+    """The built-in emulator's environment and faults; disabled while there is none."""
+
+    def __init__(self, controls: EmulatorControls, axis_names: list[str]) -> None:
+        super().__init__("Emulator")
+        self._controls = controls
+        self.note = QLabel(
+            "No emulator connected: these controls act on the built-in emulator. "
+            "Turn Simulation on, or connect it on the Link page."
+        )
+        self.note.setWordWrap(True)
+        self.note.setStyleSheet(_NOTE_STYLE)
+        self.body = QWidget()
+
+        self.charger = QCheckBox("Charger connected")
+        self.usb = QCheckBox("USB connected")
+        self.verification_fault = QCheckBox("FRAM verification fault (writes refused)")
+        self.charger.toggled.connect(controls.set_charger)
+        self.usb.toggled.connect(controls.set_usb)
+        self.verification_fault.toggled.connect(controls.set_verification_fault)
+
+        self.battery = QSpinBox()
+        self.battery.setRange(0, 100)
+        self.battery.setSuffix(" %")
+        self.battery.setToolTip("State of charge; below 5 % the stage blocks motion")
+        self.temperature = QDoubleSpinBox()
+        self.temperature.setRange(-40.0, 125.0)
+        self.temperature.setSuffix(" °C")
+        self.temperature.setToolTip("Board temperature")
+        self.rotation = QDoubleSpinBox()
+        self.rotation.setRange(-720.0, 720.0)
+        self.rotation.setSuffix(" °/s")
+        self.rotation.setToolTip("Platform rotation rate; the IMU's yaw integrates it")
+        for spin in (self.battery, self.temperature, self.rotation):
+            # Applied on Enter, focus out or an arrow step, not at every keystroke of "12.5".
+            spin.setKeyboardTracking(False)
+        self.battery.valueChanged.connect(controls.set_battery)
+        self.temperature.valueChanged.connect(controls.set_temperature)
+        self.rotation.valueChanged.connect(controls.set_rotation_rate)
+        form = QFormLayout()
+        form.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.FieldsStayAtSizeHint)
+        form.addRow("Battery", self.battery)
+        form.addRow("Temperature", self.temperature)
+        form.addRow("Rotation rate", self.rotation)
+
+        self.switch_buttons: dict[tuple[int, str], QPushButton] = {}
+        self.driver_faults: list[QCheckBox] = []
+        axes = QGridLayout()
+        for index, name in enumerate(axis_names):
+            axes.addWidget(QLabel(f"<b>{name}</b>"), index, 0)
+            for column, which in enumerate(END_SWITCHES, start=1):
+                button = QPushButton(f"{which.capitalize()} end switch")
+                button.setToolTip(f"Close {name}'s {which} end switch where the axis is now")
+                button.clicked.connect(
+                    lambda _=False, a=index, w=which: controls.press_end_switch(a, w)
+                )
+                self.switch_buttons[(index, which)] = button
+                axes.addWidget(button, index, column)
+            fault = QCheckBox("Driver fault")
+            fault.setToolTip(f"Over-temperature or stall on {name}'s driver: the axis stops dead")
+            fault.toggled.connect(lambda on, a=index: controls.set_driver_fault(a, on))
+            self.driver_faults.append(fault)
+            axes.addWidget(fault, index, 3)
+
+        self.drop_button = QPushButton("Drop link")
+        self.drop_button.setToolTip("Cut the emulated cable; the station reconnects with back-off")
+        self.drop_button.clicked.connect(controls.drop_link)
+        self.corrupt_count = QSpinBox()
+        self.corrupt_count.setRange(1, 999)
+        self.corrupt_count.setValue(3)
+        self.corrupt_count.setSuffix(" frames")
+        self.corrupt_button = QPushButton("Corrupt")
+        self.corrupt_button.setToolTip("Flip a byte in each of the next frames from the device")
+        self.corrupt_button.clicked.connect(self._corrupt)
+        link = QHBoxLayout()
+        link.addWidget(self.drop_button)
+        link.addSpacing(12)
+        link.addWidget(self.corrupt_button)
+        link.addWidget(self.corrupt_count)
+        link.addStretch(1)
+
+        body = QVBoxLayout(self.body)
+        body.setContentsMargins(0, 0, 0, 0)
+        for box in (self.charger, self.usb, self.verification_fault):
+            body.addWidget(box)
+        body.addLayout(form)
+        body.addLayout(axes)
+        body.addLayout(link)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.note)
+        layout.addWidget(self.body)
+
+        controls.availabilityChanged.connect(self.sync)
+        self.sync()
+
+    def sync(self, *_args: object) -> None:
+        """Show the emulator's present state, or disable everything when there is none."""
+        state = self._controls.state()
+        self.note.setVisible(state is None)
+        self.body.setEnabled(state is not None)
+        if state is None:
+            return
+        checks = (self.charger, self.usb, self.verification_fault, *self.driver_faults)
+        with _quiet(*checks, self.battery, self.temperature, self.rotation):
+            self.charger.setChecked(state.charger)
+            self.usb.setChecked(state.usb)
+            self.verification_fault.setChecked(state.verification_fault)
+            for box, fault in zip(self.driver_faults, state.driver_faults, strict=True):
+                box.setChecked(fault)
+            self.battery.setValue(round(state.battery_percent))
+            self.temperature.setValue(state.temperature_c)
+            self.rotation.setValue(state.rotation_dps)
+
+    def _corrupt(self) -> None:
+        self._controls.corrupt_next(self.corrupt_count.value())
+
+
+JOYSTICK_CENTRE = 512
+
+
+class JoystickBox(QGroupBox):
+    """The usb3 unit's joystick as three sliders that spring back to the centre like the stick."""
+
+    def __init__(self, controls: EmulatorControls, axis_names: list[str]) -> None:
+        super().__init__("Joystick (usb3 unit)")
+        self._controls = controls
+        self.sliders: list[QSlider] = []
+        grid = QGridLayout(self)
+        for index, name in enumerate(axis_names):
+            slider = QSlider(Qt.Orientation.Horizontal)
+            slider.setRange(0, 1023)
+            slider.setValue(JOYSTICK_CENTRE)
+            slider.setToolTip(f"{name} stick: 500…524 is the dead zone; let go to centre it")
+            slider.valueChanged.connect(lambda value, a=index: controls.set_joystick(a, value))
+            slider.sliderReleased.connect(lambda s=slider: s.setValue(JOYSTICK_CENTRE))
+            grid.addWidget(QLabel(name), index, 0)
+            grid.addWidget(slider, index, 1)
+            self.sliders.append(slider)
+        controls.availabilityChanged.connect(self.setEnabled)
+        self.setEnabled(controls.available)
+
+
+class FrameLogView(QWidget):
+    """The TX/RX log: filter, Pause, Clear, Save…, and a view redrawn in batches."""
+
+    def __init__(self, log: FrameLog, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._log = log
+        self._shown_seq = log.last_seq
+        self._rebuild_due = True
+
+        self.filter_edit = QLineEdit()
+        self.filter_edit.setPlaceholderText("Filter: words that must all occur, e.g. rx charger")
+        self.filter_edit.setClearButtonEnabled(True)
+        self.filter_edit.textChanged.connect(self._request_rebuild)
+        self.pause_button = QPushButton("Pause")
+        self.pause_button.setCheckable(True)
+        self.pause_button.setToolTip(
+            "Freeze the view; frames are still recorded and appear on Resume"
+        )
+        self.pause_button.toggled.connect(log.set_paused)
+        self.clear_button = QPushButton("Clear")
+        self.clear_button.clicked.connect(log.clear)
+        self.save_button = QPushButton("Save…")
+        self.save_button.setToolTip("Save the entries that pass the filter (all when empty)")
+        self.save_button.clicked.connect(self.save)
+        bar = QHBoxLayout()
+        bar.addWidget(self.filter_edit, 1)
+        for button in (self.pause_button, self.clear_button, self.save_button):
+            bar.addWidget(button)
+
+        self.view = QPlainTextEdit()
+        self.view.setReadOnly(True)
+        self.view.setLineWrapMode(QPlainTextEdit.LineWrapMode.NoWrap)
+        self.view.setMaximumBlockCount(VIEW_LINES)
+        self.view.setFont(monospace_font())
+        self.view.setPlaceholderText(
+            "Frames sent (TX), received (RX), injected (INJ), rejected (BAD)"
+        )
+        self.status_label = QLabel()
+        self.status_label.setStyleSheet(_NOTE_STYLE)
+
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addLayout(bar)
+        layout.addWidget(self.view, 1)
+        layout.addWidget(self.status_label)
+
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.setInterval(REDRAW_MS)
+        self._timer.timeout.connect(self.flush)
+        log.entriesAdded.connect(self._schedule)
+        log.cleared.connect(self._on_cleared)
+        log.pausedChanged.connect(self._on_paused)
+        self._schedule()
+
+    @property
+    def text(self) -> str:
+        return self.view.toPlainText()
+
+    def _schedule(self) -> None:
+        if not self._timer.isActive():
+            self._timer.start()
+
+    def _request_rebuild(self) -> None:
+        self._rebuild_due = True
+        self._schedule()
+
+    def flush(self) -> None:
+        """Take in what the log recorded since the last redraw (the timer calls this).
+
+        While paused only a new filter is applied (to what was shown when the
+        pause began) and the count of held entries refreshed.
+        """
+        if not self.isVisible():
+            return
+        if self._rebuild_due:
+            self._rebuild()
+        elif not self._log.paused:
+            self._append_new()
+        self._show_status()
+        if self._log.paused:
+            self._timer.start()  # the log holds its signal while paused: keep the count live
+
+    def _rebuild(self) -> None:
+        self._rebuild_due = False
+        chosen = self._log.filtered(self.filter_edit.text())
+        if self._log.paused:
+            chosen = [entry for entry in chosen if entry.seq <= self._shown_seq]
+        else:
+            self._shown_seq = self._log.last_seq
+        self.view.setPlainText("\n".join(entry.line for entry in chosen[-VIEW_LINES:]))
+        self.view.verticalScrollBar().setValue(self.view.verticalScrollBar().maximum())
+
+    def _append_new(self) -> None:
+        new = self._log.entries_since(self._shown_seq)
+        if not new:
+            return
+        lines = []
+        lost = new[0].seq - self._shown_seq - 1
+        if lost > 0:
+            kept = self._log.capacity
+            lines.append(f"… {lost} entries not shown: the log keeps the last {kept}")
+        self._shown_seq = new[-1].seq
+        lines += [entry.line for entry in self._log.filtered(self.filter_edit.text(), new)]
+        if lines:
+            self.view.appendPlainText("\n".join(lines))
+
+    def _on_cleared(self) -> None:
+        self.view.clear()
+        self._shown_seq = self._log.last_seq
+        self._show_status()
+
+    def _on_paused(self, paused: bool) -> None:
+        self.pause_button.setChecked(paused)
+        self.pause_button.setText("Resume" if paused else "Pause")
+        self._show_status()
+        self._schedule()
+
+    def _show_status(self) -> None:
+        text = f"{len(self._log)} entries"
+        if self._log.paused:
+            text += f" — paused, {self._log.last_seq - self._shown_seq} new not shown"
+        self.status_label.setText(text)
+
+    def save(self) -> None:
+        """Ask where, then write the entries that pass the filter (all when it is empty)."""
+        path, _ = QFileDialog.getSaveFileName(
+            self, "Save frame log", "stepdeck-frames.log", "Log files (*.log *.txt);;All files (*)"
+        )
+        if not path:
+            return
+        try:
+            count = self._log.save(path, self.filter_edit.text())
+        except OSError as error:
+            self.status_label.setText(f"Could not save: {error.strerror or error}")
+            return
+        self.status_label.setText(f"Saved {count} entries to {path}")
+
+    def showEvent(self, event: QShowEvent) -> None:
+        # Hidden, the view skipped its redraws; shown again, it starts from the log.
+        self._request_rebuild()
+        super().showEvent(event)
+
+
+class DeveloperPane(QDockWidget):
+    """Echo composer, simulation switch, emulator controls and the frame log, in one dock.
+
+    The main window adds it and gives its ``toggleViewAction()`` the Shift+V
+    shortcut; the pane itself owns no window-wide keys.
+    """
+
+    def __init__(
+        self, station: Station, parent: QWidget | None = None, *, log_capacity: int = LOG_CAPACITY
+    ) -> None:
+        super().__init__("Developer", parent)
+        self.setObjectName("developer_pane")  # for QMainWindow.saveState
+        self.frame_log = FrameLog(station, log_capacity, parent=self)
+        self.emulator_controls = EmulatorControls(station, self)
+
+        self.simulation = QCheckBox("Simulation: the built-in emulator answers the commands")
+        self.simulation.setToolTip(
+            "On: connect the emulated stage (when no device is connected). Off: disconnect it."
+        )
+        self.simulation.toggled.connect(self._set_simulation)
+        self.simulation_note = QLabel()
+        self.simulation_note.setWordWrap(True)
+        self.simulation_note.setStyleSheet(_ERROR_STYLE)
+        self.simulation_note.hide()
+        axis_names = [axis.name for axis in station.model.axes]
+        stage = station.profile.dialect == "stage"
+        # The echo composer and the stage's environment only mean something on a stage;
+        # the usb3 unit's developer controls are its joystick.
+        self.composer = EchoComposer(station)
+        self.emulator_box = EmulatorBox(self.emulator_controls, axis_names)
+        self.joystick_box = JoystickBox(self.emulator_controls, axis_names)
+        self.composer.setVisible(stage)
+        self.emulator_box.setVisible(stage)
+        self.joystick_box.setVisible(station.profile.dialect == "usb3")
+        gcode = station.profile.dialect == "gcode"
+        self.reply_box = GcodeReplyBox(station)
+        self.board_box = GcodeEmulatorBox(station)
+        self.reply_box.setVisible(gcode)
+        self.board_box.setVisible(gcode)
+        self.log_view = FrameLogView(self.frame_log)
+
+        self.setWidget(self._build(self._controls_column()))
+        self.emulator_controls.availabilityChanged.connect(self._show_simulation)
+        self.emulator_controls.availabilityChanged.connect(self.board_box.sync)
+        self._show_simulation()
+        self.board_box.sync()
+
+    def _controls_column(self) -> QScrollArea:
+        column = QWidget()
+        layout = QVBoxLayout(column)
+        layout.setContentsMargins(0, 0, 6, 0)
+        layout.addWidget(self.simulation)
+        layout.addWidget(self.simulation_note)
+        layout.addWidget(self.composer)
+        layout.addWidget(self.emulator_box)
+        layout.addWidget(self.joystick_box)
+        layout.addWidget(self.reply_box)
+        layout.addWidget(self.board_box)
+        layout.addStretch(1)
+        scroll = QScrollArea()
+        scroll.setWidget(column)
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setMinimumWidth(column.sizeHint().width() + 12)
+        scroll.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Expanding)
+        return scroll
+
+    def _build(self, controls: QScrollArea) -> QWidget:
+        splitter = QSplitter(Qt.Orientation.Horizontal)
+        splitter.addWidget(controls)
+        splitter.addWidget(self.log_view)
+        splitter.setStretchFactor(0, 0)
+        splitter.setStretchFactor(1, 1)
+        splitter.setChildrenCollapsible(False)
+        content = QWidget()
+        layout = QVBoxLayout(content)
+        layout.setContentsMargins(6, 4, 6, 4)
+        layout.addWidget(splitter)
+        return content
+
+    def _set_simulation(self, on: bool) -> None:
+        try:
+            self.emulator_controls.set_simulation(on)
+        except SimulationRefused as refused:
+            self.simulation_note.setText(f"Simulation refused: {refused}")
+            self.simulation_note.show()
+        else:
+            self.simulation_note.hide()
+        self._show_simulation()
+
+    def _show_simulation(self, *_args: object) -> None:
+        self.simulation.blockSignals(True)
+        self.simulation.setChecked(self.emulator_controls.simulating)
+        self.simulation.blockSignals(False)

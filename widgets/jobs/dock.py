@@ -1,0 +1,690 @@
+"""The jobs dock: open a job, see it, run it, and know at every moment where it is.
+
+A view over :class:`app.jobs.run.runner.JobRunner`, which owns the program, the
+state machine, the dry-run estimate and the checkpoint; the dock only asks
+it (Run, Pause, Resume, Step, Abort, Continue) and shows what it says.
+Buttons are enabled from the runner's state alone, so a button the operator
+can press is one the runner will honour.
+
+Opening goes through :mod:`app.jobs.loaders` (the extension or the content
+chooses the reader) and then ``runner.load``.  A malformed file shows
+``file:line: reason`` and loads nothing: the runner is not even asked, so a
+job loaded before stays as it was.  A program that leaves the machine's
+travel (or needs a tool the machine lacks) is refused by the runner, which
+unloads and lists every offending operation with its file and line; the
+dock shows that list as it comes, in the message area.
+
+Two things ask for the operator: an interrupted run of the loaded job
+(``resume_available``) offers to resume from the operation after the last
+completed one or to discard the checkpoint, and a WAIT operation shows its
+message with a Continue button.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDockWidget,
+    QFileDialog,
+    QFrame,
+    QHBoxLayout,
+    QLabel,
+    QMenu,
+    QPlainTextEdit,
+    QProgressBar,
+    QPushButton,
+    QSizePolicy,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.jobs.formats.string_art.export import export_gcode, export_sd_files
+from app.jobs.formats.string_art.program import StringArtProgram
+from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
+from app.jobs.loaders import JobOptions, file_dialog_filter, load_job
+from app.jobs.program import JobFileError, Program
+from app.jobs.run.runner import JobRunner, JobState
+from app.station import Station
+from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
+from widgets.jobs.string_art_board import BoardAsker
+from widgets.jobs.string_art_board import ask_board as ask_board_dialog
+from widgets.style import monospace_font
+
+MESSAGE_LINES = 200
+#: Files larger than this are read on a worker thread when opened from the dialog.
+BACKGROUND_BYTES = 2_000_000
+#: Files larger than this are not kept in memory for showing source lines.
+SOURCE_LINES_MAX_BYTES = 8_000_000
+
+
+def _banner_style(name: str, background: str, border: str) -> str:
+    """A coloured band for one named frame only (its labels and buttons keep their looks)."""
+    return (
+        f"QFrame#{name} {{ background: {background}; border: 1px solid {border};"
+        " border-radius: 4px; }"
+    )
+
+
+def clock_text(seconds: float | None) -> str:
+    """mm:ss (h:mm:ss past an hour); "--:--" when unknown."""
+    if seconds is None or seconds != seconds or seconds < 0:  # None, NaN or nonsense
+        return "--:--"
+    whole = round(seconds)
+    hours, rest = divmod(whole, 3600)
+    minutes, secs = divmod(rest, 60)
+    return f"{hours}:{minutes:02d}:{secs:02d}" if hours else f"{minutes:02d}:{secs:02d}"
+
+
+class JobsDock(QDockWidget):
+    """Open…, preview, Run / Pause / Resume / Step / Abort, progress, ETA, operator prompts."""
+
+    def __init__(
+        self,
+        station: Station,
+        runner: JobRunner,
+        parent: QWidget | None = None,
+        *,
+        confirm: Callable[[str], bool] | None = None,
+        throttle_ms: float | None = None,
+        ask_board: BoardAsker | None = None,
+    ) -> None:
+        super().__init__("Jobs", parent)
+        self.setObjectName("jobs_dock")
+        self.station = station
+        self.runner = runner
+        self._path: Path | None = None
+        self._source_lines: list[str] = []
+        self._ask_board: BoardAsker = ask_board or ask_board_dialog(self)
+        #: The board the operator gave for a bare nail list (kept while the file is re-read).
+        self._board: StringArtParams | None = None
+        self._loading: _Loading | None = None
+        self.preview = JobPreview(
+            station,
+            runner,
+            confirm=confirm,
+            throttle_ms=DEFAULT_THROTTLE_MS if throttle_ms is None else throttle_ms,
+        )
+        self.preview.setObjectName("job_preview")
+
+        content = QWidget()
+        layout = QVBoxLayout(content)
+        layout.setContentsMargins(6, 4, 6, 6)
+        layout.setSpacing(4)
+        layout.addLayout(self._build_toolbar())
+        layout.addLayout(self._build_options())
+        layout.addWidget(self._build_resume_offer())
+        layout.addWidget(self._build_prompt())
+        layout.addWidget(self.preview, 1)
+        layout.addLayout(self._build_progress())
+        self.operation_label = QLabel("—")
+        self.operation_label.setObjectName("job_operation")
+        self.operation_label.setFont(monospace_font())
+        self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.operation_label.setToolTip("The operation being executed and the line it came from")
+        layout.addWidget(self.operation_label)
+        self.messages = QPlainTextEdit()
+        self.messages.setObjectName("job_messages")
+        self.messages.setReadOnly(True)
+        self.messages.setMaximumBlockCount(MESSAGE_LINES)
+        self.messages.setFont(monospace_font(-1))
+        self.messages.setPlaceholderText("Messages about the job appear here")
+        self.messages.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Preferred)
+        self.messages.setFixedHeight(self.messages.fontMetrics().lineSpacing() * 5 + 12)
+        layout.addWidget(self.messages)
+        self.setWidget(content)
+
+        runner.stateChanged.connect(self._state_changed)
+        runner.progressChanged.connect(self._show_progress)
+        runner.etaChanged.connect(self._show_eta)
+        runner.operationStarted.connect(self._show_operation)
+        runner.waitingForOperator.connect(self._show_prompt)
+        runner.message.connect(self._runner_message)
+        runner.programChanged.connect(self._program_changed)
+        station.model.lockChanged.connect(self._update_buttons)
+        self.preview.message.connect(self.say)
+        self._program_changed()
+
+    # --- building ------------------------------------------------------------
+
+    def _build_options(self) -> QHBoxLayout:
+        """How drill files are read: drill or draw (the original tool's two run modes), and
+        the Excellon step for files whose integer coordinates carry no format."""
+        row = QHBoxLayout()
+        row.setSpacing(8)
+        self.draw_check = QCheckBox("Draw holes with the pen instead of drilling")
+        self.draw_check.setObjectName("job_draw")
+        self.draw_check.setToolTip("Drill files: a pen cross the size of each hole (K / Z)")
+        self.step_combo = QComboBox()
+        self.step_combo.setObjectName("job_excellon_step")
+        for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
+            self.step_combo.addItem(label, inch)
+        self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
+        row.addWidget(self.draw_check)
+        row.addStretch(1)
+        row.addWidget(QLabel("Excellon step"))
+        row.addWidget(self.step_combo)
+        self.draw_check.toggled.connect(self._options_changed)
+        self.step_combo.activated.connect(self._options_changed)
+        # G-code files: other flavours' pen commands, and lines the machine cannot run.
+        self.translate_pen_check = QCheckBox("Pen lines as this machine's")
+        self.translate_pen_check.setObjectName("job_translate_pen")
+        self.translate_pen_check.setChecked(True)
+        self.translate_pen_check.setToolTip(
+            "G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine's own "
+            "pen-up / pen-down commands"
+        )
+        self.skip_check = QCheckBox("Skip lines it cannot run")
+        self.skip_check.setObjectName("job_skip_unsupported")
+        self.skip_check.setToolTip(
+            "G-code: lines this machine cannot execute (e.g. M18) are listed and left out "
+            "instead of refusing the job"
+        )
+        gcode = self.station.profile.dialect == "gcode"
+        pen = self.station.profile.capabilities.pen
+        for check, shown in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
+            check.setVisible(shown)
+            check.toggled.connect(self._options_changed)
+            row.insertWidget(row.count() - 3, check)
+        return row
+
+    def option_values(self) -> dict[str, object]:
+        """The operator's reading options, to keep across launches (the main window stores)."""
+        return {
+            "draw": self.draw_check.isChecked(),
+            "excellon_step_inch": float(self.step_combo.currentData()),
+            "translate_pen": self.translate_pen_check.isChecked(),
+            "skip_unsupported": self.skip_check.isChecked(),
+        }
+
+    def restore_options(self, values: dict[str, object]) -> None:
+        """Set the reading options from ``values`` (unknown or malformed entries are ignored)."""
+        checks = {
+            "draw": self.draw_check,
+            "translate_pen": self.translate_pen_check,
+            "skip_unsupported": self.skip_check,
+        }
+        for key, check in checks.items():
+            value = values.get(key)
+            if isinstance(value, bool):
+                check.setChecked(value)
+            elif isinstance(value, str) and value in ("true", "false"):  # INI files keep text
+                check.setChecked(value == "true")
+        step = values.get("excellon_step_inch")
+        try:
+            index = self.step_combo.findData(float(str(step)))
+        except ValueError:
+            index = -1
+        if index >= 0:
+            self.step_combo.setCurrentIndex(index)
+
+    @property
+    def options(self) -> JobOptions:
+        profile = self.station.profile
+        return JobOptions(
+            draw=self.draw_check.isChecked(),
+            excellon_step_inch=float(self.step_combo.currentData()),
+            translate_pen=self.translate_pen_check.isChecked(),
+            skip_unsupported=self.skip_check.isChecked(),
+            gcode=profile.gcode,
+            machine_title=profile.title,
+            string_art=self._board,
+        )
+
+    def _options_changed(self, *_args: object) -> None:
+        """Re-read the open file with the new choice (not while it runs)."""
+        if self._path is not None and self.runner.state not in ACTIVE_STATES:
+            self.open_path(self._path)
+
+    def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
+        button = QPushButton(text)
+        button.setObjectName(name)
+        button.setToolTip(tip)
+        button.clicked.connect(lambda _=False: slot())
+        return button
+
+    def _build_toolbar(self) -> QHBoxLayout:
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        self.open_button = self._button(
+            "Open…",
+            "job_open",
+            "Open a job file (point list; the type is told by its content)",
+            self.ask_open,
+        )
+        self.export_button = self._button(
+            "Export…",
+            "job_export",
+            "Write the loaded job out: G-code, or a string-art job's SD-card files",
+            self.ask_export,
+        )
+        self.file_label = QLabel("no job loaded")
+        self.file_label.setObjectName("job_file")
+        self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.run_button = self._button(
+            "Run", "job_run", "Run the job from the start", self.runner.start
+        )
+        self.pause_button = self._button(
+            "Pause", "job_pause", "Pause after the operation under way finishes", self.runner.pause
+        )
+        self.resume_button = self._button(
+            "Resume", "job_resume", "Go on from where the job paused", self.runner.resume
+        )
+        self.step_button = self._button(
+            "Step", "job_step", "Execute the next operation only, then pause", self.runner.step
+        )
+        self.abort_button = self._button(
+            "Abort", "job_abort", "Stop the machine now and end the job", self.runner.abort
+        )
+        self.abort_button.setStyleSheet(
+            "QPushButton:enabled { color: #b00020; font-weight: bold; }"
+        )
+        bar.addWidget(self.open_button)
+        bar.addWidget(self.export_button)
+        bar.addWidget(self.file_label, 1)
+        for button in (
+            self.run_button,
+            self.pause_button,
+            self.resume_button,
+            self.step_button,
+            self.abort_button,
+        ):
+            bar.addWidget(button)
+        return bar
+
+    def _build_resume_offer(self) -> QFrame:
+        self.resume_offer = QFrame()
+        self.resume_offer.setObjectName("job_resume_offer")
+        self.resume_offer.setStyleSheet(_banner_style("job_resume_offer", "#e8f0fe", "#8ab4f8"))
+        row = QHBoxLayout(self.resume_offer)
+        row.setContentsMargins(6, 4, 6, 4)
+        self.resume_offer_label = QLabel()
+        self.resume_offer_label.setWordWrap(True)
+        self.resume_checkpoint_button = self._button(
+            "Resume",
+            "job_resume_checkpoint",
+            "Go on after the last operation the machine completed; none is repeated",
+            self.runner.resume_from_checkpoint,
+        )
+        self.discard_checkpoint_button = self._button(
+            "Discard",
+            "job_discard_checkpoint",
+            "Forget the interrupted run; Run then starts from the first operation",
+            self.runner.discard_checkpoint,
+        )
+        row.addWidget(self.resume_offer_label, 1)
+        row.addWidget(self.resume_checkpoint_button)
+        row.addWidget(self.discard_checkpoint_button)
+        self.resume_offer.hide()
+        return self.resume_offer
+
+    def _build_prompt(self) -> QFrame:
+        self.prompt = QFrame()
+        self.prompt.setObjectName("job_prompt")
+        self.prompt.setStyleSheet(_banner_style("job_prompt", "#fff3cd", "#e0c060"))
+        row = QHBoxLayout(self.prompt)
+        row.setContentsMargins(6, 4, 6, 4)
+        self.prompt_label = QLabel()
+        self.prompt_label.setObjectName("job_prompt_text")
+        self.prompt_label.setWordWrap(True)
+        font = self.prompt_label.font()
+        font.setBold(True)
+        self.prompt_label.setFont(font)
+        self.continue_button = self._button(
+            "Continue", "job_continue", "Done: let the job go on", self.runner.confirm
+        )
+        row.addWidget(self.prompt_label, 1)
+        row.addWidget(self.continue_button)
+        self.prompt.hide()
+        return self.prompt
+
+    def _build_progress(self) -> QHBoxLayout:
+        row = QHBoxLayout()
+        row.setSpacing(8)
+        self.progress = QProgressBar()
+        self.progress.setObjectName("job_progress")
+        self.progress.setRange(0, 1)
+        self.progress.setValue(0)
+        # The count beside the bar, not on it: text over the bar's edge is half unreadable.
+        self.progress.setTextVisible(False)
+        self.count_label = QLabel()
+        self.count_label.setObjectName("job_count")
+        self.count_label.setFont(monospace_font())
+        self.elapsed_label = QLabel()
+        self.elapsed_label.setObjectName("job_elapsed")
+        self.elapsed_label.setFont(monospace_font())
+        self.eta_label = QLabel()
+        self.eta_label.setObjectName("job_eta")
+        self.eta_label.setFont(monospace_font())
+        self.eta_label.setToolTip("Time left, from the dry run of the job on the machine's model")
+        row.addWidget(self.progress, 1)
+        row.addWidget(self.count_label)
+        row.addWidget(self.elapsed_label)
+        row.addWidget(self.eta_label)
+        self._set_times(None, None)
+        return row
+
+    # --- operator actions ----------------------------------------------------
+
+    def ask_open(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, "Open a job", "", file_dialog_filter())
+        if path:
+            self.open_path(Path(path), background=True)
+
+    def open_path(self, path: Path, *, background: bool = False) -> bool:
+        """Load the job in ``path`` into the runner; False (and says why) when it is not loaded.
+
+        With ``background`` a large file is read on a worker thread (a million G-code lines
+        take seconds) and the window stays responsive; the result arrives later, and True
+        only means the reading began.
+        """
+        if self.runner.state in ACTIVE_STATES:
+            self.say(f"{path.name}: not opened — a job is under way (abort it first)")
+            return False
+        if self._loading is not None:
+            self.say(f"{path.name}: not opened — still reading {self._loading.path.name}")
+            return False
+        if path != self._path:
+            self._board = None
+        axis_names = [axis.name for axis in self.station.profile.axes]
+        self._path = path
+        if background and _size(path) > BACKGROUND_BYTES:
+            self._loading = _Loading(path, axis_names, self.options, self)
+            self._loading.done.connect(self._loaded)
+            self.file_label.setText(f"reading <b>{path.name}</b>…")
+            self.open_button.setEnabled(False)
+            self._loading.start()
+            return True
+        try:
+            program = load_job(path, axis_names, self.options)
+        except JobFileError as exc:
+            return self._refused(path, exc)
+        return self._accept(path, program)
+
+    def _loaded(self, path: Path, result: object) -> None:
+        """The worker finished reading ``path`` (GUI thread)."""
+        loading, self._loading = self._loading, None
+        if loading is not None:
+            loading.join()
+        if isinstance(result, JobFileError):
+            self._refused(path, result)
+        elif isinstance(result, Program):
+            self._accept(path, result)
+        else:
+            self.say(f"{path.name}: not loaded — {result}")
+        self._program_changed()
+
+    def _refused(self, path: Path, exc: JobFileError) -> bool:
+        if isinstance(exc, NeedsNailCount) and self._board is None:
+            board = self._ask_board(exc)
+            if board is not None:
+                self._board = board
+                return self.open_path(path)
+        self.say(f"{exc} — not loaded")
+        return False
+
+    def _accept(self, path: Path, program: Program) -> bool:
+        if self.runner.load(program):
+            # The runner said which operations, line by line (its message).  The drawing is
+            # still worth seeing — where it leaves the travel, what it would do — so the
+            # preview shows it while Run stays off.
+            self.preview.set_program(program)
+            self.file_label.setText(f"<b>{program.name}</b> — refused, preview only")
+            self.file_label.setToolTip(str(program.source) if program.source else program.name)
+            return False
+        self.say(f"{path.name}: {len(program)} operations loaded")
+        notes = list(program.notes)
+        if isinstance(program, StringArtProgram):
+            # The totals with this machine's time for them (the loader knew no machine).
+            estimate = self.runner.estimate
+            plain = program.job.summary()
+            notes = [n for n in notes if n != plain]
+            notes.insert(0, program.job.summary(estimate.total_s if estimate else None))
+        for note in notes:
+            self.say(f"{path.name}: {note}")
+        self._program_changed()
+        return True
+
+    def ask_export(self) -> None:
+        program = self.runner.program
+        if program is None:
+            return
+        menu = QMenu(self)
+        if isinstance(program, StringArtProgram):
+            menu.addAction("SD-card files (param.txt, poradi.txt)…", self._ask_export_sd)
+        if self.station.profile.gcode is not None:
+            menu.addAction("G-code program…", self._ask_export_gcode)
+        if menu.isEmpty():
+            self.say("Nothing to export for this job on this machine")
+            return
+        menu.exec(self.export_button.mapToGlobal(self.export_button.rect().bottomLeft()))
+
+    def _ask_export_sd(self) -> None:
+        directory = QFileDialog.getExistingDirectory(self, "Folder for param.txt and poradi.txt")
+        if directory:
+            self.export_sd(Path(directory))
+
+    def _ask_export_gcode(self) -> None:
+        program = self.runner.program
+        name = f"{program.name}.gcode" if program is not None else "job.gcode"
+        path, _ = QFileDialog.getSaveFileName(self, "Export G-code", name, "G-code (*.gcode)")
+        if path:
+            self.export_gcode(Path(path))
+
+    def export_sd(self, directory: Path) -> bool:
+        """The string-art job as its standalone firmware reads it from an SD card."""
+        program = self.runner.program
+        if not isinstance(program, StringArtProgram):
+            self.say("Only string-art jobs have SD-card files")
+            return False
+        try:
+            param, poradi = export_sd_files(program.job, directory)
+        except OSError as exc:
+            self.say(f"SD-card files not written: {exc}")
+            return False
+        self.say(f"Wrote {param} and {poradi}")
+        return True
+
+    def export_gcode(self, path: Path) -> bool:
+        """The loaded job as the G-code this machine would be sent."""
+        program = self.runner.program
+        if program is None:
+            return False
+        try:
+            export_gcode(program, path, self.station.profile)
+        except (OSError, ValueError) as exc:
+            self.say(f"G-code not written: {exc}")
+            return False
+        self.say(f"Wrote {path}")
+        return True
+
+    def say(self, text: str) -> None:
+        self.messages.appendPlainText(text)
+        self.messages.ensureCursorVisible()
+
+    # --- runner → view -------------------------------------------------------
+
+    def _runner_message(self, text: str) -> None:
+        """Show it, and look at the runner again: it offers a checkpoint (abort, failure,
+        discard) after its state change, with no signal of its own, but always says so."""
+        self.say(text)
+        self._state_changed()
+
+    def _program_changed(self) -> None:
+        program = self.runner.program
+        if program is not self.preview.program:
+            self.preview.set_program(program)
+        self._show_file(program)
+        total = len(program) if program is not None else 0
+        self._show_progress(self.runner.done if program is not None else 0, total)
+        estimate = self.runner.estimate if program is not None else None
+        self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
+        self.operation_label.setText("—")
+        self._source_lines = _read_lines(program.source if program is not None else None)
+        self._state_changed()
+
+    def _show_file(self, program: Program | None) -> None:
+        if program is None:
+            self.file_label.setText("no job loaded")
+            self.file_label.setToolTip("")
+            return
+        source = str(program.source) if program.source else program.name
+        self.file_label.setText(f"<b>{program.name}</b> — {len(program)} operations")
+        self.file_label.setToolTip(source)
+
+    def _state_changed(self, *_args: object) -> None:
+        state = self.runner.state
+        if state is not JobState.WAITING:
+            self.prompt.hide()
+        if state in (JobState.READY, JobState.PAUSED) and self.runner.program is not None:
+            # Stepping through: show what the next Step will send before it is sent.
+            self._show_operation(self.runner.done)
+        self._show_resume_offer()
+        self._update_buttons()
+
+    def _show_resume_offer(self) -> None:
+        index = self.runner.resume_available
+        program = self.runner.program
+        if index is None or program is None or self.runner.state in ACTIVE_STATES:
+            self.resume_offer.hide()
+            return
+        if 0 <= index < len(program):
+            where = f"{program[index].source}  {program[index].describe()}"
+        else:
+            where = "the end"
+        self.resume_offer_label.setText(
+            f"An interrupted run of <b>{program.name}</b> completed {index} of "
+            f"{len(program)} operations. Resume from operation {index + 1} ({where})?"
+        )
+        self.resume_checkpoint_button.setText(f"Resume from op {index + 1}")
+        self.resume_offer.show()
+
+    def _update_buttons(self, *_args: object) -> None:
+        state = self.runner.state
+        loaded = self.runner.program is not None
+        lock = self.station.model.motion_lock_reason()
+        can_move = lock is None
+        offer = self.runner.resume_available is not None
+        self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        self.export_button.setEnabled(loaded)
+        # With an interrupted run on offer, Run from the start would repeat operations:
+        # the operator chooses Resume or Discard first.
+        self.run_button.setEnabled(
+            loaded
+            and can_move
+            and not offer
+            and state in (JobState.READY, JobState.DONE, JobState.ABORTED, JobState.FAILED)
+        )
+        self.pause_button.setEnabled(state in (JobState.RUNNING, JobState.WAITING))
+        self.resume_button.setEnabled(can_move and state in (JobState.PAUSED, JobState.PAUSING))
+        self.step_button.setEnabled(
+            loaded and can_move and not offer and state in (JobState.READY, JobState.PAUSED)
+        )
+        self.abort_button.setEnabled(state in ACTIVE_STATES)
+        self.resume_checkpoint_button.setEnabled(can_move)
+        self.continue_button.setEnabled(state is JobState.WAITING)
+        why = f" — motion locked: {lock}" if lock else ""
+        self.run_button.setToolTip(f"Run the job from the start{why}")
+
+    def _show_progress(self, done: int, total: int) -> None:
+        self.progress.setRange(0, max(1, total))
+        self.progress.setValue(min(done, max(1, total)))
+        self.count_label.setText(f"{done} / {total} ops")
+
+    def _show_eta(self, elapsed_s: float, remaining_s: float) -> None:
+        self._set_times(elapsed_s, remaining_s)
+
+    def _set_times(self, elapsed_s: float | None, remaining_s: float | None) -> None:
+        self.elapsed_label.setText(f"elapsed {clock_text(elapsed_s)}")
+        self.eta_label.setText(f"left {clock_text(remaining_s)}")
+
+    def _show_operation(self, index: int) -> None:
+        """The operation with its source line as written in the file and, on a machine that
+        counts microsteps, what will go on the wire — what stepping through a file needs."""
+        program = self.runner.program
+        if program is None or not 0 <= index < len(program):
+            return
+        op = program[index]
+        text = f"{op.source}  {op.describe()}"
+        raw = self._source_line(op.source.line)
+        if raw:
+            text += f"\n    file: {raw}"
+        session = self.station.drill_session
+        if session is not None and op.target:
+            names = [axis.name for axis in self.station.profile.axes]
+            steps = [
+                f"{axis}{session.to_microsteps(names.index(axis), value)}"
+                for axis, value in op.target.items()
+                if axis in names
+            ]
+            text += f"    machine: {' '.join(steps)} microsteps"
+        self.operation_label.setText(text)
+
+    def _source_line(self, number: int) -> str:
+        if number < 1 or number > len(self._source_lines):
+            return ""
+        return self._source_lines[number - 1].strip()
+
+    def _show_prompt(self, text: str) -> None:
+        self.prompt_label.setText(f"Operator: {text}")
+        self.prompt.show()
+        self.continue_button.setEnabled(True)
+        self.continue_button.setFocus()
+        self.say(f"waiting for the operator: {text}")
+
+
+def _size(path: Path) -> int:
+    try:
+        return path.stat().st_size
+    except OSError:
+        return 0
+
+
+class _Loading(QObject):
+    """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
+
+    done = Signal(object, object)  # path, Program or JobFileError (or another exception)
+
+    def __init__(
+        self, path: Path, axis_names: list[str], options: JobOptions, parent: QObject
+    ) -> None:
+        super().__init__(parent)
+        self.path = path
+        self._axis_names = axis_names
+        self._options = options
+        self._thread = threading.Thread(target=self._run, name="job-loader", daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def join(self) -> None:
+        self._thread.join()
+
+    def _run(self) -> None:
+        result: object
+        try:
+            result = load_job(self.path, self._axis_names, self._options)
+        except JobFileError as exc:
+            result = exc
+        except Exception as exc:  # a loader bug must not take the window down
+            result = f"{type(exc).__name__}: {exc}"
+        self.done.emit(self.path, result)
+
+
+def _read_lines(path: Path | None) -> list[str]:
+    """The job file's lines, for showing an operation's source as written (empty if unreadable).
+
+    Skipped for very large files: the operations carry their own text, and a copy of
+    a million lines is memory for nothing.
+    """
+    if path is None or _size(path) > SOURCE_LINES_MAX_BYTES:
+        return []
+    try:
+        return path.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError:
+        return []

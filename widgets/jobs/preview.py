@@ -1,0 +1,747 @@
+"""The job preview: a program's path over the machine's travel, progress, and click-to-move.
+
+What it draws, and why:
+
+* travel (moves with the pen up, and plain moves between the points of a
+  point list) thin, dashed and grey, because nothing is made there;
+* work (moves with the pen down; drill holes — and a point list's points —
+  as markers) in a strong colour, because that is the job;
+* what is done, drawn again over it in green as the runner reports progress,
+  so "where is it" reads at a glance;
+* the machine's position as a cross-hair marker, and the soft-limit
+  rectangle (0…travel per axis), the only area click-to-move accepts.
+
+A cylindrical machine (the string-art winder: the base turns the work by A
+degrees, the tool sits X mm from the centre) is drawn in the plane of the
+work, not as an A-by-X chart, because that is where the operator sees nails and
+thread: the position marker at (X·cos A, X·sin A), the limits as the disc
+the tool reaches (radius = X's travel; A turns freely), the view fitted to
+the job rather than to that disc.  A program that knows its plane
+(``Program.preview_plane == "board"``, a string-art job) is drawn as it
+says; any other has its (A, X) vertices projected, each turn drawn in steps
+of ``ARC_STEP_DEG`` because the machine sweeps an arc there, not a chord.
+
+Speed: a 100 000-operation program must open without a pause, so the path is
+built once with numpy into one array per kind, runs of the same kind joined
+and NaN between runs (``connect="finite"``), never one item per segment.
+Progress only slices those arrays (the done prefix), and progress and
+position redraws are throttled (``throttle_ms``, 0 in tests) so a fast job
+or a 1 kHz position stream costs at most ~30 redraws a second.
+
+Click-to-move is a click, not a drag (drags pan, the wheel zooms), asks
+first (``confirm``, injectable so tests need no modal dialog) and sends one
+absolute move per axis through the session; outside the travel, while a job
+is under way or while motion is locked it refuses with a message and sends
+nothing.  On a cylindrical machine the clicked point is taken in polar form:
+A turns the shorter way (at most 180°, A stays unwrapped as the machine
+keeps it) to the point's bearing, then X moves to its distance from the
+centre; beyond X's travel it is refused.  The question names both moves and
+their order, because with nails in the board the operator must judge the
+way there.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import pyqtgraph as pg
+from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
+from PySide6.QtCore import QPointF, Qt, QTimer, Signal
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
+
+from app.jobs.formats.string_art.geometry import shortest_turn
+from app.jobs.formats.string_art.program import StringArtProgram
+from app.jobs.program import OpKind, Program, ProgramPath
+from app.jobs.run.runner import JobRunner, JobState
+from app.profiles import MachineProfile
+from app.station import Station
+
+TRAVEL_COLOUR = "#9a9a9a"
+WORK_COLOUR = "#1f4fb4"
+DONE_COLOUR = "#2ca02c"
+POSITION_COLOUR = "#d62728"
+LIMIT_COLOUR = "#e08a00"
+DEFAULT_THROTTLE_MS = 33.0
+#: Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so.
+ARC_STEP_DEG = 5.0
+#: At most this many steps per move, so a move spinning the base many turns stays cheap.
+MAX_ARC_STEPS = 720
+#: Points of the drawn reach circle.
+CIRCLE_POINTS = 361
+
+#: Runner states in which a job is under way: the machine is the job's, not the mouse's.
+ACTIVE_STATES = frozenset({JobState.RUNNING, JobState.PAUSING, JobState.PAUSED, JobState.WAITING})
+
+_EMPTY = np.empty(0)
+
+#: The key to the colours, in the row above the plot (a legend inside would hide the path).
+LEGEND_HTML = (
+    f"<span style='color:{WORK_COLOUR}'>&#9679; work</span>&nbsp;&nbsp;"
+    f"<span style='color:{TRAVEL_COLOUR}'>- - travel</span>&nbsp;&nbsp;"
+    f"<span style='color:{DONE_COLOUR}'>&#9679; done</span>&nbsp;&nbsp;"
+    f"<span style='color:{POSITION_COLOUR}'><b>+</b> machine</span>&nbsp;&nbsp;"
+    f"<span style='color:{LIMIT_COLOUR}'>&#9633; travel limits</span>"
+)
+#: The same for a cylindrical machine, whose limit is the disc the tool reaches.
+POLAR_LEGEND_HTML = LEGEND_HTML.replace("&#9633; travel limits", "&#9675; reach")
+
+
+@dataclass(frozen=True)
+class PolarAxes:
+    """A cylindrical machine's plane: a rotary axis turns the work, a linear one is the radius."""
+
+    angle: int  # axis index, degrees counter-clockwise from +x
+    radius: int  # axis index, mm from the centre
+    reach: float  # the radius axis' travel: how far from the centre the tool gets
+
+    def project(self, angle_deg: float, radius: float) -> tuple[float, float]:
+        a = math.radians(angle_deg)
+        return radius * math.cos(a), radius * math.sin(a)
+
+
+def polar_axes(profile: MachineProfile) -> PolarAxes | None:
+    """The polar axes of a cylindrical G-code machine, None for any other machine."""
+    if profile.gcode is None or profile.gcode.kinematics != "cylindrical":
+        return None
+    kinds = [axis.kind for axis in profile.axes]
+    if "rotary" not in kinds or "linear" not in kinds:
+        return None
+    radius = kinds.index("linear")
+    return PolarAxes(kinds.index("rotary"), radius, profile.axes[radius].travel)
+
+
+def board_plane(path: ProgramPath) -> ProgramPath:
+    """(angle°, radius) vertices as points of the work's plane, turns drawn as arcs.
+
+    The machine moves A and X together in proportion, a spiral arc on the
+    work; a chord between the ends would cut across what the tool sweeps,
+    so each move is drawn in steps of at most ``ARC_STEP_DEG``.  An axis not
+    set yet stands at 0, where homing left it.
+    """
+    coords = np.nan_to_num(path.coords[:, :2])
+    count = len(coords)
+    if not count:
+        return ProgramPath(np.empty((0, 2)), path.ops, path.pen)
+    angle, radius = coords[:, 0], coords[:, 1]
+    steps = np.ones(count, dtype=np.int64)
+    turns = np.ceil(np.abs(np.diff(angle)) / ARC_STEP_DEG)
+    steps[1:] = np.clip(turns, 1, MAX_ARC_STEPS).astype(np.int64)
+    vertex = np.repeat(np.arange(count), steps)  # the vertex each drawn point leads to
+    starts = np.repeat(np.cumsum(steps) - steps, steps)
+    fraction = (np.arange(len(vertex)) - starts + 1) / steps[vertex]
+    before = np.maximum(vertex - 1, 0)
+    a = np.radians(angle[before] + (angle[vertex] - angle[before]) * fraction)
+    r = radius[before] + (radius[vertex] - radius[before]) * fraction
+    return ProgramPath(
+        np.column_stack((r * np.cos(a), r * np.sin(a))), path.ops[vertex], path.pen[vertex]
+    )
+
+
+def ask_operator(parent: QWidget) -> Callable[[str], bool]:
+    """The default confirmation: a Yes/No box, No by default (a stray click must not move)."""
+
+    def confirm(text: str) -> bool:
+        answer = QMessageBox.question(
+            parent,
+            "Move the machine?",
+            text,
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No,
+        )
+        return answer == QMessageBox.StandardButton.Yes
+
+    return confirm
+
+
+class PathArrays:
+    """One kind of path (travel or work) as plot-ready arrays plus each point's operation.
+
+    ``ops`` is non-decreasing, so the part done after ``n`` operations is the
+    prefix up to ``searchsorted(ops, n)`` — a slice, not a rebuild.
+    """
+
+    def __init__(self, x: np.ndarray, y: np.ndarray, ops: np.ndarray) -> None:
+        self.x = x
+        self.y = y
+        self.ops = ops
+
+    def done_count(self, done: int) -> int:
+        return int(np.searchsorted(self.ops, done, side="left"))
+
+
+def _runs(
+    x: np.ndarray, y: np.ndarray, ops: np.ndarray, kind: np.ndarray, wanted: bool
+) -> PathArrays:
+    """The vertices of segments whose ``kind`` is ``wanted``, consecutive ones joined.
+
+    Vertex ``j`` ends segment ``j`` (``kind[j]``; vertex 0 ends none) and starts
+    segment ``j + 1``.  It belongs to the curve when either touches a wanted
+    segment; a NaN follows every vertex that ends a wanted run.
+    """
+    ends = kind == wanted  # segment j (ending at vertex j) is wanted
+    if len(ends):
+        ends[0] = False  # the first move's segment starts where the machine happens to be
+    starts = np.append(ends[1:], False)  # segment j + 1 (starting at j) is wanted
+    keep = ends | starts
+    run_end = ends & ~starts
+    index = np.flatnonzero(keep)
+    breaks = np.flatnonzero(run_end[index])  # positions within the kept points
+    out_x = np.insert(x[index], breaks + 1, np.nan)
+    out_y = np.insert(y[index], breaks + 1, np.nan)
+    out_ops = np.insert(ops[index], breaks + 1, ops[index][breaks])
+    return PathArrays(out_x, out_y, out_ops)
+
+
+class ProgramGeometry:
+    """The plottable shape of a program on two axes, computed once per program."""
+
+    def __init__(
+        self, program: Program, x_axis: str, y_axis: str | None, *, polar: bool = False
+    ) -> None:
+        """``polar``: the axes are (angle, radius) and the program's path is to be projected."""
+        path = program.preview_path(x_axis, y_axis)
+        if polar and y_axis is not None and program.preview_plane == "axes":
+            path = board_plane(path)
+        xs = np.ascontiguousarray(path.coords[:, 0])
+        ys = np.ascontiguousarray(path.coords[:, 1])
+        self.travel = _runs(xs, ys, path.ops, path.pen, wanted=False)
+        self.work = _runs(xs, ys, path.ops, path.pen, wanted=True)
+        self.markers = self._markers(program, xs, ys, path.ops)
+
+    @staticmethod
+    def _markers(program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray) -> PathArrays:
+        """Drill holes where they are drilled; a plain point list's points are its work."""
+        kinds = program.kinds()
+        if OpKind.DRILL in kinds:
+            drills = program.indices_of(OpKind.DRILL)
+            # Where the tool is at each drill: the last move before it.
+            at = np.searchsorted(ops, drills, side="right") - 1
+            valid = at >= 0
+            at, drills = at[valid], drills[valid]
+            return PathArrays(xs[at], ys[at], drills)
+        uses_pen = bool(kinds & {OpKind.PEN_DOWN, OpKind.PEN_UP})
+        if uses_pen or not len(xs):
+            return PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
+        return PathArrays(xs, ys, ops)
+
+
+class JobPreview(QWidget):
+    """The path of a program, what is done of it and where the machine is; click to move.
+
+    ``runner`` (optional) supplies progress and whether a job is under way;
+    without one, :meth:`set_done` drives the done part by hand.
+    """
+
+    #: A refusal or news about click-to-move, for the dock's message area.
+    message = Signal(str)
+
+    def __init__(
+        self,
+        station: Station,
+        runner: JobRunner | None = None,
+        *,
+        confirm: Callable[[str], bool] | None = None,
+        throttle_ms: float = DEFAULT_THROTTLE_MS,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.station = station
+        self.model = station.model
+        self.runner = runner
+        self.confirm = confirm or ask_operator(self)
+        self.program: Program | None = None
+        self.path_geometry: ProgramGeometry | None = None
+        #: Wall seconds the last :meth:`set_program` took to build the curves.
+        self.build_seconds = 0.0
+        self.done = 0
+        self.last_message = ""
+        axes = station.profile.axes
+        #: Set on a cylindrical machine: the plot is the work's plane, not two axes.
+        self.polar = polar_axes(station.profile)
+        self.axis_indices: tuple[int, ...] = (
+            tuple(range(min(2, len(axes))))
+            if self.polar is None
+            else (self.polar.angle, self.polar.radius)
+        )
+        self.axis_names: tuple[str, ...] = tuple(axes[i].name for i in self.axis_indices)
+        self.travel_limits: tuple[tuple[float, float], ...] = tuple(
+            (0.0, axes[i].travel) for i in self.axis_indices
+        )
+        self._dirty: set[str] = set()
+        self._throttle = QTimer(self)
+        self._throttle.setSingleShot(True)
+        self._throttle.setInterval(max(0, round(throttle_ms)))
+        self._throttle.timeout.connect(self._flush)
+        self._throttle_ms = throttle_ms
+
+        self._build(axes[self.axis_indices[0]].unit if axes else "mm")
+        self.string_art = StringArtPreviewExtras(
+            self.plot, (self.work_curve, self.done_work_curve, self.work_markers, self.done_markers)
+        )
+        self.model.axisChanged.connect(self._axis_changed)
+        self.model.lockChanged.connect(self._update_enabled)
+        if runner is not None:
+            runner.progressChanged.connect(self._progress)
+            runner.stateChanged.connect(self._update_enabled)
+        self._draw_position()
+        self._update_enabled()
+        self.fit()
+
+    # --- building ------------------------------------------------------------
+
+    def _build(self, unit: str) -> None:
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(2)
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        polar = self.polar is not None
+        self.hint_label = QLabel(POLAR_LEGEND_HTML if polar else LEGEND_HTML)
+        self.hint_label.setObjectName("preview_hint")
+        self.hint_label.setToolTip(
+            "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) "
+            + (
+                "within the tool's reach turns the base and moves the tool there"
+                if polar
+                else "inside the travel limits moves the machine there"
+            )
+            + " after you confirm"
+        )
+        self.fit_button = QPushButton("Fit")
+        self.fit_button.setObjectName("preview_fit")
+        self.fit_button.setToolTip(
+            "Show the whole job (without a job, the tool's reach)"
+            if polar
+            else "Show the whole job and the machine's travel"
+        )
+        self.fit_button.clicked.connect(self.fit)
+        bar.addWidget(self.hint_label, 1)
+        bar.addWidget(self.fit_button)
+        layout.addLayout(bar)
+
+        self.plot_widget = pg.PlotWidget(background="w")
+        self.plot_widget.setObjectName("job_preview_plot")
+        self.plot_widget.setMinimumSize(260, 200)
+        self.plot = self.plot_widget.getPlotItem()
+        self.plot.setAspectLocked(True, ratio=1.0)
+        self.plot.showGrid(x=True, y=True, alpha=0.2)
+        self.plot.hideButtons()
+        self.plot.setMenuEnabled(False)
+        names = self.axis_names if self.axis_names else ("X",)
+        if self.polar is not None:
+            # The work's plane, whatever the axes are called; the radius axis' unit.
+            unit = self.station.profile.axes[self.polar.radius].unit
+            names = ("x on the work", "y on the work")
+        self.plot.setLabel("bottom", names[0], units=unit)
+        self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
+        for side in ("left", "bottom"):
+            axis = self.plot.getAxis(side)
+            axis.setPen(pg.mkPen("#909090"))
+            axis.setTextPen(pg.mkPen("#404040"))
+            # pyqtgraph would otherwise show "(kmm)" or "(µmm)": these are machine millimetres.
+            axis.enableAutoSIPrefix(False)
+        layout.addWidget(self.plot_widget, 1)
+
+        if self.polar is not None:
+            around = np.linspace(0.0, 2.0 * np.pi, CIRCLE_POINTS)
+            outline_x = self.polar.reach * np.cos(around)
+            outline_y = self.polar.reach * np.sin(around)
+        else:
+            (x0, x1), (y0, y1) = self._limits_2d()
+            outline_x, outline_y = np.array([x0, x1, x1, x0, x0]), np.array([y0, y0, y1, y1, y0])
+        self.limits_curve = self.plot.plot(
+            outline_x,
+            outline_y,
+            pen=pg.mkPen(LIMIT_COLOUR, width=1, style=Qt.PenStyle.DashDotLine),
+        )
+        # Width-1 pens: wider ones make Qt stroke segment by segment, far slower on big paths.
+        self.travel_curve = self._curve(
+            pg.mkPen(TRAVEL_COLOUR, width=1, style=Qt.PenStyle.DashLine)
+        )
+        self.work_curve = self._curve(pg.mkPen(WORK_COLOUR, width=1))
+        self.done_travel_curve = self._curve(
+            pg.mkPen(DONE_COLOUR, width=1, style=Qt.PenStyle.DashLine)
+        )
+        self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
+        self.work_markers = self._markers(WORK_COLOUR, 6)
+        self.done_markers = self._markers(DONE_COLOUR, 6)
+        self.position_marker = pg.ScatterPlotItem(
+            size=16,
+            symbol="+",
+            pen=pg.mkPen(POSITION_COLOUR, width=2),
+            brush=pg.mkBrush(POSITION_COLOUR),
+        )
+        self.position_marker.setZValue(10)
+        self.plot.addItem(self.position_marker)
+        self.plot.scene().sigMouseClicked.connect(self._clicked)
+
+    def _curve(self, pen: object) -> pg.PlotDataItem:
+        return self.plot.plot(pen=pen, connect="finite")
+
+    def _markers(self, colour: str, size: int) -> pg.ScatterPlotItem:
+        markers = pg.ScatterPlotItem(
+            size=size, symbol="o", pen=pg.mkPen(colour), brush=pg.mkBrush(colour)
+        )
+        self.plot.addItem(markers)
+        return markers
+
+    def _limits_2d(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        limits = self.travel_limits
+        x = limits[0] if limits else (0.0, 0.0)
+        y = limits[1] if len(limits) > 1 else (0.0, 0.0)
+        return x, y
+
+    # --- public --------------------------------------------------------------
+
+    def set_program(self, program: Program | None) -> None:
+        """Draw ``program`` (None clears); times the build in ``build_seconds``."""
+        start = time.perf_counter()
+        self.program = program
+        self.done = 0
+        if program is None or not self.axis_names:
+            self.path_geometry = None
+            for curve in (self.travel_curve, self.work_curve):
+                curve.setData(_EMPTY, _EMPTY)
+            self.work_markers.setData(x=_EMPTY, y=_EMPTY)
+        else:
+            y_axis = self.axis_names[1] if len(self.axis_names) > 1 else None
+            geometry = ProgramGeometry(
+                program, self.axis_names[0], y_axis, polar=self.polar is not None
+            )
+            self.path_geometry = geometry
+            self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
+            self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
+            self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
+        self.string_art.set_program(program)
+        self._draw_done()
+        self.fit()
+        self.build_seconds = time.perf_counter() - start
+
+    def set_done(self, done: int) -> None:
+        """Operations ``0 … done - 1`` are done (throttled redraw)."""
+        if done == self.done:
+            return
+        self.done = done
+        self._request("done")
+
+    def fit(self) -> None:
+        """Show the whole job and the soft-limit rectangle (polar: the job, else the reach)."""
+        if self.polar is not None:
+            self._fit_polar(self.polar)
+            return
+        (x0, x1), (y0, y1) = self._limits_2d()
+        geometry = self.path_geometry
+        if geometry is not None:
+            xs = np.concatenate((geometry.travel.x, geometry.work.x, geometry.markers.x))
+            ys = np.concatenate((geometry.travel.y, geometry.work.y, geometry.markers.y))
+            if np.isfinite(xs).any():
+                x0, x1 = min(x0, float(np.nanmin(xs))), max(x1, float(np.nanmax(xs)))
+            if np.isfinite(ys).any():
+                y0, y1 = min(y0, float(np.nanmin(ys))), max(y1, float(np.nanmax(ys)))
+        self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
+
+    def _fit_polar(self, polar: PolarAxes) -> None:
+        """The job's path and its board; the disc the tool reaches only when there is no job.
+
+        The reach (X's whole travel) is far larger than most boards: fitting it
+        would leave the nails a small ring in the middle.
+        """
+        xs: list[np.ndarray] = []
+        ys: list[np.ndarray] = []
+        geometry = self.path_geometry
+        if geometry is not None:
+            xs += [geometry.travel.x, geometry.work.x, geometry.markers.x]
+            ys += [geometry.travel.y, geometry.work.y, geometry.markers.y]
+        board = self.string_art.board_radius_mm
+        if board > 0:
+            xs.append(np.array([-board, board]))
+            ys.append(np.array([-board, board]))
+        x = np.concatenate(xs) if xs else _EMPTY
+        y = np.concatenate(ys) if ys else _EMPTY
+        finite = np.isfinite(x) & np.isfinite(y)
+        if finite.any():
+            x0, x1 = float(x[finite].min()), float(x[finite].max())
+            y0, y1 = float(y[finite].min()), float(y[finite].max())
+        else:
+            x0 = y0 = -polar.reach
+            x1 = y1 = polar.reach
+        self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
+
+    @property
+    def click_refusal(self) -> str | None:
+        """Why a click would not move the machine now, or None when it would."""
+        if self.runner is not None and self.runner.state in ACTIVE_STATES:
+            return "a job is under way"
+        reason = self.model.motion_lock_reason()
+        if reason is not None:
+            return f"motion is locked: {reason}"
+        if self.station.session is None:
+            return "not connected"
+        return None
+
+    def request_move(self, x: float, y: float) -> bool:
+        """What a click at (x, y) does: refuse, or ask and move.  True when moves were sent."""
+        if self.polar is not None:
+            return self._request_polar_move(self.polar, x, y)
+        target = (x, y)[: len(self.axis_names)]
+        described = ", ".join(
+            f"{name} {value:.3f}" for name, value in zip(self.axis_names, target, strict=True)
+        )
+        refusal = self.click_refusal
+        if refusal is not None:
+            return self._say(f"Click-to-move refused ({described}): {refusal}")
+        outside = [
+            f"{name} {value:.3f} is outside {low:g}…{high:g}"
+            for name, value, (low, high) in zip(
+                self.axis_names, target, self.travel_limits, strict=True
+            )
+            if not low <= value <= high
+        ]
+        if outside:
+            return self._say(f"Click-to-move refused: {'; '.join(outside)} (soft limits)")
+        unit = self.station.profile.axes[0].unit
+        if not self.confirm(f"Move to {described} {unit}?"):
+            return self._say("Click-to-move cancelled")
+        session = self.station.session
+        assert session is not None  # click_refusal said so
+        for axis, value in zip(self.axis_indices, target, strict=True):
+            if not session.move_absolute(axis, value):
+                return self._say(f"The machine refused the move to {described}")
+        self._say(f"Moving to {described}")
+        return True
+
+    def _request_polar_move(self, polar: PolarAxes, x: float, y: float) -> bool:
+        """The point (x, y) of the work as the shorter turn of A to its bearing, then X out."""
+        angle_name, radius_name = self.axis_names
+        axes = self.station.profile.axes
+        angle_unit, radius_unit = axes[polar.angle].unit, axes[polar.radius].unit
+        radius = math.hypot(x, y)
+        current = self.model.axes[polar.angle].position
+        # At the centre every bearing is the same point: no turn.
+        bearing = math.degrees(math.atan2(y, x)) if radius > 1e-9 else current
+        turn = shortest_turn(current, bearing)
+        angle = current + turn
+        described = (
+            f"{angle_name} {angle:.3f} {angle_unit}, {radius_name} {radius:.3f} {radius_unit}"
+        )
+        refusal = self.click_refusal
+        if refusal is not None:
+            return self._say(f"Click-to-move refused ({described}): {refusal}")
+        if radius > polar.reach:
+            return self._say(
+                f"Click-to-move refused: {radius:.3f} {radius_unit} from the centre is beyond "
+                f"{radius_name}'s travel 0…{polar.reach:g} (the reach)"
+            )
+        question = (
+            f"Turn {angle_name} by {turn:+.1f}° to {angle:.3f} {angle_unit}, "
+            f"then move {radius_name} to {radius:.3f} {radius_unit}?"
+        )
+        if not self.confirm(question):
+            return self._say("Click-to-move cancelled")
+        session = self.station.session
+        assert session is not None  # click_refusal said so
+        for axis, value in ((polar.angle, angle), (polar.radius, radius)):
+            if not session.move_absolute(axis, value):
+                return self._say(f"The machine refused the move to {described}")
+        self._say(f"Moving to {described}")
+        return True
+
+    # --- events --------------------------------------------------------------
+
+    def _clicked(self, event: object) -> None:
+        """A left click (pyqtgraph sends none for a drag) in the plot area is a move request."""
+        if not isinstance(event, MouseClickEvent):
+            return
+        if event.button() != Qt.MouseButton.LeftButton or event.double():
+            return
+        view = self.plot.getViewBox()
+        scene_pos = event.scenePos()
+        if not view.sceneBoundingRect().contains(scene_pos):
+            return  # on an axis or the margin, not on the plate
+        event.accept()
+        point: QPointF = view.mapSceneToView(scene_pos)
+        self.request_move(point.x(), point.y())
+
+    def _say(self, text: str) -> bool:
+        self.last_message = text
+        self.message.emit(text)
+        return False
+
+    def _progress(self, done: int, _total: int) -> None:
+        self.set_done(done)
+
+    def _axis_changed(self, index: int) -> None:
+        if index in self.axis_indices:
+            self._request("position")
+
+    def _update_enabled(self, *_args: object) -> None:
+        refusal = self.click_refusal
+        where = "within the tool's reach" if self.polar is not None else "inside the travel"
+        self.plot_widget.setToolTip(
+            f"Click a point {where} to move there (after confirming)"
+            if refusal is None
+            else f"Click-to-move is off: {refusal}"
+        )
+
+    # --- throttled drawing ---------------------------------------------------
+
+    def _request(self, what: str) -> None:
+        self._dirty.add(what)
+        if self._throttle_ms <= 0:
+            self._flush()
+        elif not self._throttle.isActive():
+            self._flush()  # draw at once, then at most once per interval
+            self._throttle.start()
+
+    def _flush(self) -> None:
+        dirty, self._dirty = self._dirty, set()
+        if "done" in dirty:
+            self._draw_done()
+        if "position" in dirty:
+            self._draw_position()
+        if dirty and self._throttle_ms > 0 and not self._throttle.isActive():
+            self._throttle.start()  # a beat with work: keep the pace for what comes next
+
+    def _draw_done(self) -> None:
+        self.string_art.set_done(self.done)
+        geometry = self.path_geometry
+        if geometry is None:
+            for curve in (self.done_travel_curve, self.done_work_curve):
+                curve.setData(_EMPTY, _EMPTY)
+            self.done_markers.setData(x=_EMPTY, y=_EMPTY)
+            return
+        for curve, path in (
+            (self.done_travel_curve, geometry.travel),
+            (self.done_work_curve, geometry.work),
+        ):
+            n = path.done_count(self.done)
+            curve.setData(path.x[:n], path.y[:n], connect="finite")
+        n = geometry.markers.done_count(self.done)
+        self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
+
+    def _draw_position(self) -> None:
+        axes = self.model.axes
+        values: Sequence[float] = [axes[i].position for i in self.axis_indices]
+        x = values[0] if values else 0.0
+        y = values[1] if len(values) > 1 else 0.0
+        if self.polar is not None:
+            x, y = self.polar.project(x, y)  # (A°, X) → where the tool is over the work
+        self.position_marker.setData(x=[x], y=[y])
+
+
+# --- string art ------------------------------------------------------------------------------
+
+NAIL_COLOUR = "#6b4423"
+#: The thread's opacity (of 255): low, so that where threads cross the colour deepens.
+THREAD_ALPHA = 40
+DONE_THREAD_ALPHA = 90
+
+
+class StringArtPreviewExtras:
+    """What a string-art program adds to the preview: nails, thread, the current nail.
+
+    The thread is drawn nail to nail, one segment per connection, with a
+    faint pen, each segment blended on its own (pyqtgraph's segmented line
+    mode), so density shows as it will on the board; the wound
+    part is drawn again in green, drilled nails turn green, and a ring marks
+    the nail the running operation serves.  While a string-art program is
+    shown, the generic work items (``replaced``: the needle's path, drawn
+    in the board plane) are hidden; any other program shows them again.
+    """
+
+    def __init__(self, plot: pg.PlotItem, replaced: Sequence[pg.GraphicsObject]) -> None:
+        self.plot = plot
+        self.replaced = tuple(replaced)
+        self.program: StringArtProgram | None = None
+        self.thread = self._segments(WORK_COLOUR, THREAD_ALPHA)
+        self.done_thread = self._segments(DONE_COLOUR, DONE_THREAD_ALPHA)
+        self.nails = pg.ScatterPlotItem(
+            size=4, symbol="o", pen=pg.mkPen(NAIL_COLOUR), brush=pg.mkBrush(NAIL_COLOUR)
+        )
+        self.drilled = pg.ScatterPlotItem(
+            size=4, symbol="o", pen=pg.mkPen(DONE_COLOUR), brush=pg.mkBrush(DONE_COLOUR)
+        )
+        self.current = pg.ScatterPlotItem(
+            size=14, symbol="o", pen=pg.mkPen(POSITION_COLOUR, width=2), brush=None
+        )
+        for item in (self.nails, self.drilled, self.current):
+            plot.addItem(item)
+        self.current.setZValue(9)
+        self._nail_xy = np.empty((0, 2))
+        self._pairs = (_EMPTY, _EMPTY)
+        self._drill_ends = np.empty(0, dtype=np.int64)
+
+    def _segments(self, colour: str, alpha: int) -> pg.PlotCurveItem:
+        pen = pg.mkPen(pg.mkColor(colour), width=1)
+        color = pen.color()
+        color.setAlpha(alpha)
+        pen.setColor(color)
+        curve = pg.PlotCurveItem(pen=pen, connect="pairs")
+        curve.setSegmentedLineMode("on")
+        self.plot.addItem(curve)
+        return curve
+
+    @property
+    def thread_segments(self) -> int:
+        return len(self._pairs[0]) // 2
+
+    @property
+    def board_radius_mm(self) -> float:
+        """The shown job's board radius (its edge, 15 mm beyond the nails), 0 without one."""
+        return self.program.job.params.radius_cm * 10.0 if self.program is not None else 0.0
+
+    def set_program(self, program: Program | None) -> None:
+        """Show ``program``'s nails and thread when it is a string-art one, else nothing."""
+        active = isinstance(program, StringArtProgram)
+        for item in self.replaced:
+            item.setVisible(not active)
+        if not isinstance(program, StringArtProgram):
+            self.program = None
+            self._nail_xy = np.empty((0, 2))
+            self._pairs = (_EMPTY, _EMPTY)
+            self._drill_ends = np.empty(0, dtype=np.int64)
+            self.nails.setData(x=_EMPTY, y=_EMPTY)
+            self.thread.setData(_EMPTY, _EMPTY)
+            return
+        self.program = program
+        xy = program.job.nail_positions()
+        self._nail_xy = xy
+        visits = xy[np.asarray(program.job.sequence, dtype=np.int64)]
+        self._pairs = (
+            np.column_stack((visits[:-1, 0], visits[1:, 0])).ravel(),
+            np.column_stack((visits[:-1, 1], visits[1:, 1])).ravel(),
+        )
+        # The last operation of each nail's drill cycle, in drilling (index) order.
+        drilling = np.flatnonzero((program.entry_of_op == -1) & (program.nail_of_op >= 0))
+        nails = program.nail_of_op[drilling]
+        last = np.append(nails[1:] != nails[:-1], True) if len(nails) else np.empty(0, bool)
+        self._drill_ends = drilling[last]
+        self.nails.setData(x=xy[:, 0], y=xy[:, 1])
+        self.thread.setData(*self._pairs)
+
+    def set_done(self, done: int) -> None:
+        """The first ``done`` operations are done: wound thread, drilled nails, current nail."""
+        program = self.program
+        if program is None:
+            for item in (self.drilled, self.current):
+                item.setData(x=_EMPTY, y=_EMPTY)
+            self.done_thread.setData(_EMPTY, _EMPTY)
+            return
+        total = len(program.nail_of_op)
+        if done >= total:
+            segments = self.thread_segments
+        else:
+            segments = max(int(program.entry_of_op[max(done, 0)]) - 1, 0)
+        x, y = self._pairs
+        self.done_thread.setData(x[: 2 * segments], y[: 2 * segments])
+        drilled = int(np.searchsorted(self._drill_ends, done, side="left"))
+        self.drilled.setData(x=self._nail_xy[:drilled, 0], y=self._nail_xy[:drilled, 1])
+        nail = program.current_nail(done) if done > 0 else -1
+        if nail < 0:
+            self.current.setData(x=_EMPTY, y=_EMPTY)
+        else:
+            self.current.setData(x=[self._nail_xy[nail, 0]], y=[self._nail_xy[nail, 1]])

@@ -1,0 +1,217 @@
+"""The PCB drill's page, as its Visual Basic tool had it.
+
+Command buttons for the procedures that take no value (N V K Z P), X and Y
+each with a target in microsteps and a send button, a terminal (a line
+entry with Send and Cls, the lines sent kept in a history walked with
+Up/Down, the device's replies shown), and the tool's two columns: "command
+received" and "command done", filled as the device says ``R`` and ``D``.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QListWidget,
+    QPlainTextEdit,
+    QPushButton,
+    QSpinBox,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.machines.drill.session import DrillSession
+from app.station import Station
+from widgets.history_entry import HistoryLineEdit
+from widgets.style import monospace_font
+
+#: Buttons of the procedures that take no value: letter, caption, tooltip.
+COMMAND_BUTTONS = (
+    ("N", "N  home", "Home X then Y to the switches and the zero offsets"),
+    ("V", "V  drill", "Drill one hole where the head stands"),
+    ("K", "K  pen down", "Lower the pen"),
+    ("Z", "Z  pen up", "Raise the pen"),
+    ("P", "P  park", "Park at the back and switch the motors off"),
+)
+
+
+class DrillPanel(QWidget):
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._watched: DrillSession | None = None
+        self.command_buttons: dict[str, QPushButton] = {}
+        self.targets: list[QSpinBox] = []
+        self._mm_labels: list[QLabel] = []
+        self.send_buttons: list[QPushButton] = []
+
+        commands = QGroupBox("Commands")
+        row = QHBoxLayout(commands)
+        for letter, caption, tip in COMMAND_BUTTONS:
+            button = QPushButton(caption)
+            button.setObjectName(f"command_{letter}")
+            button.setToolTip(f"{tip} ({letter})")
+            button.clicked.connect(lambda _=False, c=letter: self.send_command(c))
+            row.addWidget(button)
+            self.command_buttons[letter] = button
+
+        axes = QGroupBox("Move to (microsteps from zero)")
+        grid = QGridLayout(axes)
+        for index, axis in enumerate(station.profile.axes):
+            per_mm = axis.steps_per_rev * axis.microsteps / axis.lead
+            target = QSpinBox()
+            target.setObjectName(f"target_{axis.name}")
+            target.setRange(0, round(axis.travel * per_mm))
+            target.setToolTip(f"{axis.name} target; {per_mm:g} microsteps a mm")
+            target.valueChanged.connect(lambda _v=0, i=index: self._show_mm(i))
+            mm = QLabel()
+            mm.setFont(monospace_font())
+            send = QPushButton(f"Send {axis.name}")
+            send.clicked.connect(lambda _=False, i=index: self.send_axis(i))
+            for column, widget in enumerate((QLabel(axis.name), target, mm, send)):
+                grid.addWidget(widget, index, column)
+            self.targets.append(target)
+            self._mm_labels.append(mm)
+            self.send_buttons.append(send)
+
+        terminal = QGroupBox("Terminal")
+        box = QVBoxLayout(terminal)
+        self.output = QPlainTextEdit()
+        self.output.setReadOnly(True)
+        self.output.setFont(monospace_font())
+        self.output.setMaximumBlockCount(2000)
+        self.entry = HistoryLineEdit()
+        self.entry.setObjectName("terminal_entry")
+        self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
+        self.entry.setMinimumWidth(160)
+        self.entry.returnPressed.connect(self.send_line)
+        self.send_button = QPushButton("Send")
+        self.send_button.clicked.connect(self.send_line)
+        self.clear_button = QPushButton("Cls")
+        self.clear_button.setToolTip("Clear the terminal and the columns")
+        self.clear_button.clicked.connect(self.clear)
+        line = QHBoxLayout()
+        line.addWidget(self.entry, 1)
+        line.addWidget(self.send_button)
+        line.addWidget(self.clear_button)
+        box.addWidget(self.output, 1)
+        box.addLayout(line)
+
+        self.received_list = QListWidget()
+        self.received_list.setObjectName("command_received")
+        self.done_list = QListWidget()
+        self.done_list.setObjectName("command_done")
+        for listing in (self.received_list, self.done_list):
+            # Commands are a few characters: narrow columns leave the terminal its width.
+            listing.setMaximumWidth(150)
+            listing.setFont(monospace_font())
+        columns = QGridLayout()
+        columns.addWidget(QLabel("<b>command received</b>"), 0, 0)
+        columns.addWidget(QLabel("<b>command done</b>"), 0, 1)
+        columns.addWidget(self.received_list, 1, 0)
+        columns.addWidget(self.done_list, 1, 1)
+
+        lower = QHBoxLayout()
+        lower.addWidget(terminal, 2)
+        lower.addLayout(columns, 1)
+        layout = QVBoxLayout(self)
+        layout.addWidget(commands)
+        layout.addWidget(axes)
+        layout.addLayout(lower, 1)
+
+        for index in range(len(self.targets)):
+            self._show_mm(index)
+        station.sessionChanged.connect(self._watch_session)
+        self._watch_session()
+
+    @property
+    def session(self) -> DrillSession | None:
+        return self._station.drill_session
+
+    # --- what the buttons do -----------------------------------------------------
+
+    def send_command(self, letter: str) -> bool:
+        session = self.session
+        if session is None:
+            return False
+        return session.send_line(letter)
+
+    def send_axis(self, axis: int) -> bool:
+        session = self.session
+        if session is None:
+            return False
+        name = self._station.profile.axes[axis].name
+        return session.send_line(f"{name}{self.targets[axis].value()}")
+
+    def send_line(self) -> bool:
+        text = self.entry.take()
+        if not text:
+            return False
+        session = self.session
+        sent = session is not None and session.send_line(text)
+        if not sent:
+            self.output.appendPlainText(f"! {text}: not sent")
+        return sent
+
+    def clear(self) -> None:
+        self.output.clear()
+        self.received_list.clear()
+        self.done_list.clear()
+
+    @property
+    def history(self) -> tuple[str, ...]:
+        return self.entry.history
+
+    def set_motion_enabled(self, enabled: bool) -> None:
+        for button in (*self.command_buttons.values(), *self.send_buttons):
+            button.setEnabled(enabled)
+
+    # --- the session's news ----------------------------------------------------------
+
+    def _watch_session(self) -> None:
+        session = self.session
+        if session is self._watched:
+            return
+        self._watched = session
+        if session is not None:
+            # Bound methods, not lambdas: Qt drops a bound slot when the panel is destroyed,
+            # while a lambda would keep calling into deleted list widgets.
+            session.commandReceived.connect(self._show_received_command)
+            session.commandDone.connect(self._show_done_command)
+            session.frameSent.connect(self._show_sent)
+            session.frameReceived.connect(self._show_received)
+            session.commandFailed.connect(self._show_failed)
+
+    def _show_received_command(self, text: str) -> None:
+        _append(self.received_list, text)
+
+    def _show_done_command(self, text: str) -> None:
+        _append(self.done_list, text)
+
+    def _show_sent(self, _command: object, raw: bytes) -> None:
+        self.output.appendPlainText("> " + raw.decode("ascii", "replace").rstrip("\r\n"))
+
+    def _show_received(self, _reply: object, raw: bytes) -> None:
+        self.output.appendPlainText("< " + raw.decode("ascii", "replace").rstrip("\r\n"))
+
+    def _show_failed(self, text: str) -> None:
+        self.output.appendPlainText(f"! {text} refused by the drill; queue cleared")
+
+    def _show_mm(self, axis: int) -> None:
+        label = self._mm_labels[axis]
+        profile_axis = self._station.profile.axes[axis]
+        per_mm = profile_axis.steps_per_rev * profile_axis.microsteps / profile_axis.lead
+        label.setText(f"{self.targets[axis].value() / per_mm:8.3f} {profile_axis.unit}")
+
+
+COLUMN_ROWS = 1000
+
+
+def _append(column: QListWidget, text: str) -> None:
+    """Newest at the bottom and in view, like the original tool's lists; old rows drop off."""
+    column.addItem(text)
+    while column.count() > COLUMN_ROWS:
+        column.takeItem(0)
+    column.scrollToBottom()

@@ -1,0 +1,191 @@
+"""The G-code machine's page: its state, the pen, hold/resume/reset, and a console.
+
+The console is what the plotter's old sender script was, done properly:
+type a line, it is streamed like any other (refused here if the device
+could never take it), the device's answer appears under it, and Up/Down walk
+the lines sent before.  Job lines are not echoed here (a drawing has
+hundreds of thousands); the developer pane's frame log shows everything.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QPlainTextEdit,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from app.machines.gcode.session import GcodeSession, SentLine
+from app.station import Station
+from widgets.history_entry import HistoryLineEdit
+from widgets.style import monospace_font
+
+CONSOLE_LINES = 2000
+
+
+class GcodePanel(QWidget):
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._watched: GcodeSession | None = None
+
+        machine = QGroupBox("Machine")
+        grid = QGridLayout(machine)
+        self.state_label = QLabel("—")
+        self.state_label.setObjectName("gcode_state")
+        self.state_label.setFont(monospace_font())
+        self.position_label = QLabel("—")
+        self.position_label.setObjectName("gcode_position")
+        self.position_label.setFont(monospace_font())
+        grid.addWidget(QLabel("State"), 0, 0)
+        grid.addWidget(self.state_label, 0, 1)
+        grid.addWidget(QLabel("Position"), 1, 0)
+        grid.addWidget(self.position_label, 1, 1, 1, 3)
+        settings = station.profile.gcode
+        self.home_button = self._button("Home", "Back to the origin ($H or G28)", self.home)
+        self.pen_up_button = self._button(
+            "Pen up", f"Lift the pen ({settings.pen_up if settings else 'M5'})", self.pen_up
+        )
+        self.pen_down_button = self._button(
+            "Pen down",
+            f"Lower the pen ({settings.pen_down if settings else 'M3'})",
+            self.pen_down,
+        )
+        self.hold_button = self._button("Hold !", "Feed hold: decelerate and stop", self.hold)
+        self.resume_button = self._button("Resume ~", "Carry on after a hold or M0", self.resume)
+        self.reset_button = self._button(
+            "Reset", "Soft reset (Ctrl-X): stop and drop everything buffered", self.soft_reset
+        )
+        buttons = QHBoxLayout()
+        for button in (
+            self.home_button,
+            self.pen_up_button,
+            self.pen_down_button,
+            self.hold_button,
+            self.resume_button,
+            self.reset_button,
+        ):
+            buttons.addWidget(button)
+        grid.addLayout(buttons, 2, 0, 1, 4)
+        if not station.profile.capabilities.pen:
+            self.pen_up_button.hide()
+            self.pen_down_button.hide()
+
+        console = QGroupBox("Console")
+        box = QVBoxLayout(console)
+        self.output = QPlainTextEdit()
+        self.output.setObjectName("gcode_console")
+        self.output.setReadOnly(True)
+        self.output.setFont(monospace_font())
+        self.output.setMaximumBlockCount(CONSOLE_LINES)
+        self.entry = HistoryLineEdit()
+        self.entry.setObjectName("gcode_entry")
+        self.entry.setPlaceholderText("G0 X10 Y10, $$, M3 …  (Up/Down: history)")
+        self.entry.returnPressed.connect(self.send_line)
+        self.send_button = QPushButton("Send")
+        self.send_button.clicked.connect(self.send_line)
+        self.clear_button = QPushButton("Cls")
+        self.clear_button.setToolTip("Clear the console")
+        self.clear_button.clicked.connect(self.output.clear)
+        line = QHBoxLayout()
+        line.addWidget(self.entry, 1)
+        line.addWidget(self.send_button)
+        line.addWidget(self.clear_button)
+        box.addWidget(self.output, 1)
+        box.addLayout(line)
+
+        layout = QVBoxLayout(self)
+        layout.addWidget(machine)
+        layout.addWidget(console, 1)
+        station.sessionChanged.connect(self._watch_session)
+        self._watch_session()
+
+    def _button(self, caption: str, tip: str, slot: object) -> QPushButton:
+        button = QPushButton(caption)
+        button.setToolTip(tip)
+        button.clicked.connect(slot)
+        return button
+
+    @property
+    def session(self) -> GcodeSession | None:
+        return self._station.gcode_session
+
+    @property
+    def history(self) -> tuple[str, ...]:
+        return self.entry.history
+
+    # --- what the buttons do -----------------------------------------------------------
+
+    def send_line(self) -> bool:
+        text = self.entry.take()
+        if not text:
+            return False
+        session = self.session
+        sent = session is not None and session.send_line(text, "console")
+        if not sent:
+            self.output.appendPlainText(f"! {text}: not sent")
+        return sent
+
+    def home(self) -> None:
+        if self.session is not None:
+            self.session.home(0)
+
+    def pen_up(self) -> None:
+        if self.session is not None:
+            self.session.pen(False)
+
+    def pen_down(self) -> None:
+        if self.session is not None:
+            self.session.pen(True)
+
+    def hold(self) -> None:
+        if self.session is not None:
+            self.session.feed_hold()
+
+    def resume(self) -> None:
+        if self.session is not None:
+            self.session.cycle_start()
+
+    def soft_reset(self) -> None:
+        if self.session is not None:
+            lost = self.session.soft_reset()
+            self.output.appendPlainText(f"! soft reset: {len(lost)} unanswered line(s) dropped")
+
+    def set_motion_enabled(self, enabled: bool) -> None:
+        for button in (self.home_button, self.pen_up_button, self.pen_down_button):
+            button.setEnabled(enabled)
+
+    # --- the session's news ------------------------------------------------------------
+
+    def _watch_session(self) -> None:
+        session = self.session
+        if session is self._watched:
+            return
+        self._watched = session
+        if session is not None:
+            # Bound methods: Qt drops them with the panel (a lambda would outlive it).
+            session.lineSent.connect(self._show_sent)
+            session.replyText.connect(self._show_reply)
+            session.statusChanged.connect(self._show_status)
+
+    def _show_sent(self, sent: SentLine) -> None:
+        if sent.origin in ("console", "intent"):
+            self.output.appendPlainText(f"> {sent.text}")
+
+    def _show_reply(self, text: str) -> None:
+        self.output.appendPlainText(f"< {text}")
+
+    def _show_status(self, report: object) -> None:
+        state = getattr(report, "state", "?")
+        mpos = getattr(report, "mpos", ())
+        feed = getattr(report, "feed", 0.0)
+        self.state_label.setText(f"{state}   feed {feed:g}")
+        names = [a.name for a in self._station.profile.axes]
+        self.position_label.setText(
+            "  ".join(f"{n} {v:9.3f}" for n, v in zip(names, mpos, strict=False))
+        )

@@ -1,0 +1,135 @@
+"""The three-axis unit's page, as its own C# tool had it: move by millimetres per axis.
+
+Per axis a signed distance, the step size and the thread (what the unit
+needs to turn millimetres into steps), and Send; one "0 0 0" button zeroes
+all positions.  Because the unit moves in whole steps, the page shows the
+distance that will really be moved next to the one typed.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDoubleSpinBox,
+    QGridLayout,
+    QLabel,
+    QPushButton,
+    QWidget,
+)
+
+from app.machines.usb3.session import Usb3Session
+from app.station import Station
+from protocol.usb3.codec import StepSize, Thread
+from widgets.style import distance_box, monospace_font
+
+
+class Usb3Panel(QWidget):
+    def __init__(self, station: Station, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._watched: Usb3Session | None = None
+        self.distances: list[QDoubleSpinBox] = []
+        self.reachable: list[QLabel] = []
+        self.step_combos: list[QComboBox] = []
+        self.thread_combos: list[QComboBox] = []
+        self.send_buttons: list[QPushButton] = []
+
+        grid = QGridLayout(self)
+        grid.setHorizontalSpacing(10)
+        grid.setVerticalSpacing(8)
+        for column, title in enumerate(("", "Move by", "Will move", "Step", "Thread", "")):
+            grid.addWidget(QLabel(f"<b>{title}</b>"), 0, column)
+        for index, axis in enumerate(station.profile.axes):
+            row = index + 1
+            distance = distance_box(
+                f"distance_{axis.name}",
+                axis.unit,
+                -axis.travel,
+                axis.travel,
+                f"Signed distance to move {axis.name} (fractions allowed)",
+            )
+            distance.valueChanged.connect(lambda _v=0.0, i=index: self._show_reachable(i))
+            reachable = QLabel()
+            reachable.setFont(monospace_font())
+            reachable.setToolTip("The unit moves in whole steps: this is what it will really move")
+            steps = QComboBox()
+            for size in StepSize:
+                steps.addItem("full" if size is StepSize.FULL else size.label, size)
+            steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
+            threads = QComboBox()
+            for thread in Thread:
+                threads.addItem(f"{thread.name} ({thread.pitch_mm:g} mm)", thread)
+            threads.activated.connect(lambda _i=0, i=index: self._thread_chosen(i))
+            send = QPushButton(f"Send {axis.name}")
+            send.clicked.connect(lambda _=False, i=index: self.send(i))
+            for column, widget in enumerate(
+                (QLabel(axis.name), distance, reachable, steps, threads, send)
+            ):
+                grid.addWidget(widget, row, column)
+            self.distances.append(distance)
+            self.reachable.append(reachable)
+            self.step_combos.append(steps)
+            self.thread_combos.append(threads)
+            self.send_buttons.append(send)
+        self.zero_button = QPushButton("0 0 0")
+        self.zero_button.setToolTip("Zero all positions (C;)")
+        self.zero_button.clicked.connect(self.zero_all)
+        grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
+        grid.setColumnStretch(6, 1)
+        grid.setRowStretch(len(self.distances) + 2, 1)
+        station.sessionChanged.connect(self._watch_session)
+        self._watch_session()
+
+    @property
+    def session(self) -> Usb3Session | None:
+        return self._station.usb3_session
+
+    def send(self, axis: int) -> bool:
+        session = self.session
+        return session is not None and session.move_relative(axis, self.distances[axis].value())
+
+    def zero_all(self) -> None:
+        if self.session is not None:
+            self.session.zero_all()
+
+    def set_motion_enabled(self, enabled: bool) -> None:
+        for button in self.send_buttons:
+            button.setEnabled(enabled)
+
+    def _step_chosen(self, axis: int) -> None:
+        if self.session is not None:
+            self.session.set_step_size(axis, StepSize(self.step_combos[axis].currentData()))
+
+    def _thread_chosen(self, axis: int) -> None:
+        if self.session is not None:
+            self.session.set_thread(axis, Thread(self.thread_combos[axis].currentData()))
+
+    def _watch_session(self) -> None:
+        session = self.session
+        if session is self._watched:
+            return
+        self._watched = session
+        if session is not None:
+            # The unit's own menu can change these; the panel follows what it reports.
+            session.settingsChanged.connect(self._show_settings)
+        self._show_settings()
+
+    def _show_settings(self) -> None:
+        session = self.session
+        for axis in range(len(self.distances)):
+            if session is not None:
+                self.step_combos[axis].setCurrentIndex(int(session.step_sizes[axis]))
+                self.thread_combos[axis].setCurrentIndex(int(session.threads[axis]))
+            self._show_reachable(axis)
+
+    def _show_reachable(self, axis: int) -> None:
+        session = self.session
+        if session is None:
+            self.reachable[axis].setText("—")
+            return
+        mm = session.reachable(axis, self.distances[axis].value())
+        speed = session.speed_mm_s(axis)
+        self.reachable[axis].setText(f"{mm:+.4f} mm")
+        self.reachable[axis].setToolTip(
+            f"The unit moves in whole steps; top speed at this step size {speed:.3f} mm/s"
+        )
