@@ -457,7 +457,7 @@ def bench_dry_run() -> list[str]:
     """Emulated seconds per wall second of the dry run on a 10,000-move, two-axis program."""
     import random
 
-    from app.jobs.estimate.stage import estimate
+    from app.jobs.estimate import estimate
     from app.jobs.program import Program, SourceRef, move
     from app.profiles import load_profile
 

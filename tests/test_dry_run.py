@@ -11,7 +11,7 @@ import math
 
 import pytest
 
-from app.jobs.estimate.stage import CONTROL_CYCLE_S, Estimate, estimate
+from app.jobs.estimate import CONTROL_CYCLE_S, Estimate, estimate
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.profiles import load_profile
 from protocol.stage.codec import EchoType

@@ -11,8 +11,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.jobs.estimate import estimate
 from app.jobs.estimate.gcode import estimate_gcode
-from app.jobs.estimate.stage import estimate
 from app.jobs.formats.gcode.loader import (
     PARAMETER_REASON,
     GcodeProgram,

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
-from app.jobs.estimate.stage import DRILL_CYCLE_S, estimate_drill
+from app.jobs.estimate.drill import DRILL_CYCLE_S, estimate_drill
 from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.run.runner import JobRunner, JobState

@@ -125,7 +125,7 @@ def test_x_by_12_5_mm_at_m6_and_an_eighth_step_sends_the_exact_count_and_ends_re
     mark = len(unit.written)
     session.set_thread(X, Thread.M6)
     session.set_step_size(X, StepSize.EIGHTH)
-    assert sent_since(unit, mark) == b"T444;M333;"
+    assert sent_since(unit, mark) == b"T444;G;M333;G;"
     seen = statuses(unit, X)
 
     mark = len(unit.written)

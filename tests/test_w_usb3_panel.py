@@ -102,7 +102,7 @@ def test_changing_the_step_size_sends_it_and_the_reachable_distance_follows(
     mark = len(usb3.written)
     key_on(qtbot, panel.step_combos[X], Qt.Key.Key_Home)  # full steps
 
-    assert sent_since(usb3, mark) == b"M033;"
+    assert sent_since(usb3, mark) == b"M033;G;"
     assert usb3.usb3_session.step_sizes[X] is StepSize.FULL
     # A full step is 32 counts, 0.005 mm: 0.012 mm reaches 2 steps.
     assert panel.reachable[X].text() == "+0.0100 mm"
@@ -119,7 +119,7 @@ def test_changing_the_thread_sends_it_and_the_reachable_distance_follows(
     key_on(qtbot, panel.thread_combos[Y], Qt.Key.Key_Up, times=2)  # M6 → M5 → M4
 
     assert panel.thread_combos[Y].currentText() == "M4 (0.7 mm)"
-    assert sent_since(usb3, mark) == b"T434;T424;"
+    assert sent_since(usb3, mark) == b"T434;G;T424;G;"
     # 12.5 mm on 0.7 mm is 114285.7 counts: 28571 pulses of 4 = 114284 counts.
     assert panel.reachable[Y].text() == "+12.4998 mm"
 

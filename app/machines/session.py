@@ -20,6 +20,7 @@ class MachineSession(QObject):
     frameSent = Signal(object, bytes)  # decoded message, raw bytes
     frameReceived = Signal(object, bytes)  # decoded message or a rejected one, raw bytes
     linkLost = Signal()  # the device fell silent: the station reopens the link
+    ticked = Signal()  # one period passed (station-clock time for whoever waits on the device)
 
     def __init__(
         self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
@@ -45,6 +46,10 @@ class MachineSession(QObject):
     @property
     def period_ms(self) -> int:
         return 100
+
+    def top_speeds_mm_s(self) -> dict[str, float] | None:
+        """Axis speeds where the machine's own settings decide them (None: from the profile)."""
+        return None
 
     @property
     def rejected(self) -> int:

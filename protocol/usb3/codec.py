@@ -125,6 +125,15 @@ def count_to_mm(count: int, thread: Thread) -> float:
     return count * thread.pitch_mm / COUNTS_PER_REV
 
 
+#: The unit's top pulse rate (its speed table's fastest entry), pulses per second.
+TOP_PULSE_RATE = 300.0
+
+
+def top_speed_mm_s(step_size: StepSize, thread: Thread) -> float:
+    """An axis's top speed: the pulse rate is fixed, so finer steps and threads are slower."""
+    return TOP_PULSE_RATE * step_size.counts_per_pulse * thread.pitch_mm / COUNTS_PER_REV
+
+
 def nearest_reachable_count(mm: float, step_size: StepSize, thread: Thread) -> int:
     """The count of whole pulses closest to ``mm`` (signed like ``mm``).
 

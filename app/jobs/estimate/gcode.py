@@ -25,7 +25,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from app.jobs.estimate.stage import Estimate
+from app.jobs.estimate.model import Estimate
 from app.jobs.formats.gcode.loader import HOME, LINEAR, NO_MOTION, RAPID, GcodeProgram
 from app.jobs.program import Program
 from app.profiles import MachineProfile

@@ -1,15 +1,16 @@
-"""The job runner's G-code half: streaming a program and judging it from ``ok`` and status.
+"""Running a program on a G-code machine: streaming lines, judged from ``ok`` and status.
 
-The runner keeps what every dialect shares (job states, operator commands,
-checkpoint file, ETA); on a G-code machine it hands the running itself to a
-:class:`GcodeDriver`, because here many operations are under way at once
-(see :mod:`app.jobs.run.gcode_stream` for what counts as answered and executed).
+Here many operations are under way at once (see :mod:`app.jobs.run.gcode_stream`
+for what counts as answered and executed): the device's planner holds the
+lines answered but not yet run.  After a lost link or a reset the driver
+looks at the machine (a status report) before anything is sent again, and
+resumes from the first operation not known to have run, retracing the
+program's own path back to where the machine stands.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
+from app.jobs.run.driver import JobDriver, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     GcodeStream,
@@ -17,11 +18,10 @@ from app.jobs.run.gcode_stream import (
     resume_state,
     retrace,
 )
+from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.session import GcodeSession, SentLine
+from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
-
-if TYPE_CHECKING:
-    from app.jobs.run.runner import JobRunner
 
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
@@ -29,22 +29,32 @@ CHECKPOINT_EVERY_S = 0.5
 SHOW_EVERY_S = 0.1
 
 
-class GcodeDriver:
+class GcodeDriver(JobDriver):
     """Feeds the runner's program to the G-code session and reports progress to the runner."""
 
-    def __init__(self, runner: JobRunner) -> None:
-        self.runner = runner
+    takes_gcode = True
+
+    def __init__(self, runner: RunnerPort) -> None:
+        super().__init__(runner)
         self.stream: GcodeStream | None = None
         self.session: GcodeSession | None = None
+        self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
         self._asked_since_recheck = False
         self._checkpoint_at = -1.0
         self._shown: int | None = None
         self._shown_at = -1.0
 
+    @property
+    def in_flight(self) -> int | None:
+        if self._waiting is not None:
+            return self._waiting
+        stream = self.stream
+        return stream.pending[0] if stream is not None and stream.pending else None
+
     # --- session wiring --------------------------------------------------------
 
-    def bind(self, session: object) -> None:
+    def bind(self, session: MachineSession | None) -> None:
         old = self.session
         if old is not None:
             try:
@@ -70,6 +80,7 @@ class GcodeDriver:
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        self._waiting = None
         self._recheck = verify
         self._asked_since_recheck = False
 
@@ -82,12 +93,10 @@ class GcodeDriver:
 
     def proceed(self) -> None:
         """Send what may be sent now; end, wait or pause when the stream says so."""
-        from app.jobs.run.runner import JobState
-
         runner = self.runner
         stream, session = self.stream, self.session
         if stream is None or session is None:
-            runner._link_pause()
+            runner.link_pause()
             return
         if self._recheck:
             if not self._asked_since_recheck:
@@ -96,10 +105,10 @@ class GcodeDriver:
             return  # _on_status carries on
         if runner.state is not JobState.RUNNING:
             return
-        if runner._single_step and stream.in_flight:
+        if runner.single_step and stream.in_flight:
             return
         # Single step: one operation that sends something, then the runner pauses.
-        wait = stream.feed(session, 1 if runner._single_step else None)
+        wait = stream.feed(session, 1 if runner.single_step else None)
         self._report(stream)
         if stream.in_flight:
             return
@@ -107,21 +116,11 @@ class GcodeDriver:
             if not session.settled:
                 return  # the session's next status report can show it settled
             if wait is not None:
-                self._wait_for_operator(wait)
+                self._report(stream)
+                self._waiting = wait
+                runner.wait_for_operator(wait)
             else:
-                assert runner.program is not None
-                runner._write_checkpoint(runner.program, len(runner.program) - 1)
-                runner._finish()
-
-    def _wait_for_operator(self, index: int) -> None:
-        from app.jobs.run.runner import JobState
-
-        runner = self.runner
-        assert runner.program is not None and self.stream is not None
-        self._report(self.stream)
-        runner._in_flight = index
-        runner._set_state(JobState.WAITING)
-        runner.waitingForOperator.emit(runner.program[index].message)
+                runner.finish()
 
     def hold_back(self) -> None:
         """Pausing: take back the lines still queued in the session, not yet on the wire.
@@ -140,12 +139,16 @@ class GcodeDriver:
 
     def confirmed(self, index: int) -> None:
         """The operator confirmed the WAIT at ``index``."""
+        self._waiting = None
         if self.stream is not None:
             self.stream.rewind(index + 1)
 
     def stopped(self) -> None:
         """Abort or failure: the device was reset, so only executed operations count."""
         self._write_checkpoint(force=True)
+
+    def forget(self) -> None:
+        self._waiting = None
 
     # --- replies ------------------------------------------------------------------
 
@@ -154,77 +157,59 @@ class GcodeDriver:
             self.stream.note_written(sent.op_index)
 
     def _on_ok(self, sent: SentLine) -> None:
-        from app.jobs.run.runner import JobState
-
         stream = self.stream
         runner = self.runner
         if stream is None or sent.origin != "job" or not stream.acknowledge(sent):
             return
         self._report(stream)
-        if runner._single_step and not stream.in_flight:
-            runner._single_step = False
-            runner._set_state(JobState.PAUSED)
-            return
-        if runner.state is JobState.PAUSING and not stream.in_flight:
-            runner._pause_requested = False
-            runner._set_state(JobState.PAUSED)
+        if (runner.single_step or runner.state is JobState.PAUSING) and not stream.in_flight:
+            runner.pause_reached()
             return
         self.proceed()
 
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
-        from app.jobs.run.runner import _ACTIVE
-
         runner = self.runner
         if self.stream is None or sent.origin != "job" or sent.op_index is None:
             return
-        if runner.state not in _ACTIVE:
+        if runner.state not in ACTIVE:
             return
-        runner._fail(
+        runner.fail(
             sent.op_index, f"the machine answered error:{code} ({meaning}) to {sent.text!r}"
         )
 
     def _on_status(self, report: StatusReport) -> None:
-        from app.jobs.run.runner import JobState
-
         stream = self.stream
         runner = self.runner
-        if stream is None or runner.state not in (JobState.RUNNING, JobState.PAUSING):
+        planner_size = self.session.planner_size if self.session else 0
+        if stream is None or runner.state not in CLOCK_RUNS:
             # While a lost link is unresolved an idle machine proves nothing: it may have
             # lost what it had.  The recheck on resume decides.
             if stream is not None and not self._recheck:
-                stream.status(
-                    report.state,
-                    report.planner_free,
-                    self.session.planner_size if self.session else 0,
-                )
+                stream.status(report.state, report.planner_free, planner_size)
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(
-            report.state, report.planner_free, self.session.planner_size if self.session else 0
-        )
+        stream.status(report.state, report.planner_free, planner_size)
         self._write_checkpoint(force=False)
         if not stream.in_flight:
             self.proceed()
 
     def _on_reset(self) -> None:
         """The device reset on its own (a banner): its planner is gone, look before going on."""
-        from app.jobs.run.runner import _CLOCK_RUNS
-
-        if self.stream is None or self.runner.state not in _CLOCK_RUNS:
+        if self.stream is None or self.runner.state not in CLOCK_RUNS:
             return
-        stream = self.stream
-        stream.pending.clear()
+        self.stream.pending.clear()
         self._recheck = True
         self._asked_since_recheck = False
-        self.runner.message.emit("The machine reset during the job; checking where it stands…")
+        self.runner.note("The machine reset during the job; checking where it stands…")
         self.proceed()
 
     def _resume_after_recheck(self, stream: GcodeStream, report: StatusReport) -> None:
         runner = self.runner
         session = self.session
-        assert runner.program is not None and session is not None
+        program = runner.program
+        assert program is not None and session is not None
         if report.state not in ("Idle", "Hold"):
             return  # still finishing what it had: the next report decides
         ran = stream.ran_through(report.mpos) if report.state == "Idle" else None
@@ -239,26 +224,20 @@ class GcodeDriver:
             again = stream.answered - stream.executed
             note = f"{again} operation(s) may not have run and are sent again"
         self._recheck = False
-        way_back = retrace(
-            runner.program,
-            [a.name for a in runner.station.profile.axes],
-            start,
-            self._sent_upto(stream, start),
-            report.mpos,
-        )
+        axes = [a.name for a in runner.station.profile.axes]
+        way_back = retrace(program, axes, start, self._sent_upto(stream, start), report.mpos)
         stream.rewind(start)
         if report.state == "Hold":
             session.soft_reset()
-        if start >= len(runner.program):
-            runner.message.emit(f"The machine is back: {note}")
-            runner._finish()
+        if start >= len(program):
+            runner.note(f"The machine is back: {note}")
+            runner.finish()
             return
-        axes = [a.name for a in runner.station.profile.axes]
-        state = resume_state(runner.program, start, axes)
+        state = resume_state(program, start, axes)
         for line in preamble(state, stream.settings, way_back):
             session.send_line(line, "resume")
-        runner.message.emit(
-            f"Resuming at {runner.program[start].source}: {note}; machine set up again "
+        runner.note(
+            f"Resuming at {program[start].source}: {note}; machine set up again "
             f"({'pen down' if state.pen_down else 'pen up'}, at the program's position)"
         )
         self._report(stream)
@@ -277,7 +256,6 @@ class GcodeDriver:
     def _report(self, stream: GcodeStream) -> None:
         runner = self.runner
         assert runner.program is not None
-        runner._in_flight = stream.pending[0] if stream.pending else None
         now = runner.station.clock.now()
         # The operation the machine is at: the first not known executed (the lines answered
         # after it wait in the device's planner).
@@ -286,12 +264,8 @@ class GcodeDriver:
             # The dock shows the operation under way; a thousand lines a second need not
             # all be shown, so at most ten a second are.
             self._shown, self._shown_at = current, now
-            runner.operationStarted.emit(current)
-        if stream.answered != runner._done:
-            runner._done = stream.answered
-            if stream.answered:
-                runner.operationDone.emit(stream.answered - 1)
-            runner.progressChanged.emit(runner._done, len(runner.program))
+            runner.announce(current)
+        runner.advance(stream.answered)
         self._write_checkpoint(force=False)
 
     def _write_checkpoint(self, *, force: bool) -> None:
@@ -303,4 +277,4 @@ class GcodeDriver:
         if not force and now - self._checkpoint_at < CHECKPOINT_EVERY_S:
             return
         self._checkpoint_at = now
-        runner._write_checkpoint(runner.program, stream.executed - 1)
+        runner.record(stream.executed - 1)

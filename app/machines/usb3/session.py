@@ -19,13 +19,16 @@ from app.machine import LinkState, MachineModel
 from app.machines.session import MachineSession
 from protocol.clock import Clock
 from protocol.usb3.codec import (
+    TOP_PULSE_RATE,
     AxisId,
     GetSettings,
     Message,
+    Move,
     NotUnderstood,
     Position,
     Rejected,
     ReplyDecoder,
+    SetDirection,
     StepSize,
     StepSizes,
     StopAll,
@@ -37,10 +40,9 @@ from protocol.usb3.codec import (
     encode,
     move_commands,
     nearest_reachable_count,
+    top_speed_mm_s,
 )
 
-#: The unit's top pulse rate (its speed table's fastest entry), pulses per second.
-TOP_PULSE_RATE = 300.0
 #: How far ahead of the key a jog keeps the axis, in seconds of travel at top rate.
 JOG_LEAD_S = 0.3
 #: An axis that has not reported for this long after a report has stopped.
@@ -97,9 +99,11 @@ class Usb3Session(MachineSession):
         return count_to_mm(count, self.threads[axis])
 
     def speed_mm_s(self, axis: int) -> float:
-        """Top speed of the axis: the pulse rate is fixed, so finer steps are slower."""
-        pulses_per_mm = 6400 / self.threads[axis].pitch_mm / self.step_sizes[axis].counts_per_pulse
-        return TOP_PULSE_RATE / pulses_per_mm
+        """Top speed of the axis at its present step size and thread."""
+        return top_speed_mm_s(self.step_sizes[axis], self.threads[axis])
+
+    def top_speeds_mm_s(self) -> dict[str, float]:
+        return {axis.name: self.speed_mm_s(i) for i, axis in enumerate(self.model.axes)}
 
     # --- intents ----------------------------------------------------------------
 
@@ -138,6 +142,16 @@ class Usb3Session(MachineSession):
         ]
         self._send_jog_lead(JOG_LEAD_S, starting)
 
+    def request_positions(self, axes: Sequence[int]) -> None:
+        """Ask where ``axes`` stand: a move of nothing ends at once, and an ended move reports.
+
+        The unit has no position query; this is how a job re-examines the axes
+        after a lost link without moving them.
+        """
+        wanted = [AxisId(axis) for axis in axes if 0 <= axis < min(3, self.axis_count)]
+        if wanted:
+            self._send(SetDirection((1, 1, 1)), *(Move(axis, 0) for axis in wanted))
+
     def stop_all(self) -> None:
         self._jog = [0] * self.axis_count
         if self._stop_command:
@@ -157,12 +171,16 @@ class Usb3Session(MachineSession):
         self.step_sizes[axis] = size
         self._send(StepSizes(self._triple(self.step_sizes, DEFAULT_STEP)))
         self.settingsChanged.emit()
+        # A report asked for earlier (at connect) still carries the old values and would
+        # undo this one on arrival: the unit's answer to a fresh G; comes after it.
+        self.request_settings()
 
     def set_thread(self, axis: int, thread: Thread) -> None:
         self.threads[axis] = thread
         self._send(Threads(self._triple(self.threads, DEFAULT_THREAD)))
         self._refresh_positions()
         self.settingsChanged.emit()
+        self.request_settings()  # see set_step_size
 
     # --- time -------------------------------------------------------------------
 
@@ -175,6 +193,7 @@ class Usb3Session(MachineSession):
             if last is not None and now - last > STILL_AFTER_S:
                 self._last_report[axis] = None
                 self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
+        self.ticked.emit()
 
     def shutdown(self) -> None:
         self._timer.stop()

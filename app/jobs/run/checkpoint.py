@@ -1,0 +1,81 @@
+"""The record of the last completed operation, so an interrupted job resumes exactly.
+
+One JSON file per program, named by the program's fingerprint, replaced
+atomically: a crash leaves the old checkpoint or the new one, never half of
+one.  The runner writes it after every completed operation and before the
+next is sent, so it can never name an operation as done that was not.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from app.jobs.program import Program
+
+
+class CheckpointStore:
+    """Checkpoints of programs in one directory."""
+
+    def __init__(self, directory: Path) -> None:
+        self.directory = Path(directory)
+        self._fingerprint_cache: tuple[Program, str] | None = None
+
+    def path(self, program: Program) -> Path:
+        return self.directory / f"{self.fingerprint(program)}.json"
+
+    def fingerprint(self, program: Program) -> str:
+        """The program's fingerprint, hashed once: a checkpoint is written twice a second."""
+        cached = self._fingerprint_cache
+        if cached is None or cached[0] is not program:
+            cached = self._fingerprint_cache = (program, program.fingerprint())
+        return cached[1]
+
+    def write(self, program: Program, completed: int) -> None:
+        """Record operations ``[0, completed]`` as done; raises OSError when it cannot."""
+        record = {
+            "fingerprint": self.fingerprint(program),
+            "name": program.name,
+            "source": str(program.source) if program.source is not None else None,
+            "completed": completed,
+            "time": datetime.now(UTC).isoformat(timespec="seconds"),
+        }
+        path = self.path(program)
+        self.directory.mkdir(parents=True, exist_ok=True)
+        fd, temp = tempfile.mkstemp(prefix=f".{path.stem}.", dir=self.directory)
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8") as handle:
+                json.dump(record, handle)
+                handle.flush()
+                os.fsync(handle.fileno())
+            os.replace(temp, path)
+        except BaseException:
+            Path(temp).unlink(missing_ok=True)
+            raise
+
+    def read(self, program: Program) -> int | None:
+        """First operation not completed by an earlier run of this very program, or None.
+
+        Raises OSError or ValueError for a checkpoint that exists but cannot be read.
+        """
+        path = self.path(program)
+        try:
+            record: Any = json.loads(path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            return None
+        completed = record.get("completed") if isinstance(record, dict) else None
+        if (
+            not isinstance(record, dict)
+            or record.get("fingerprint") != self.fingerprint(program)
+            or not isinstance(completed, int)
+            or not -1 <= completed < len(program) - 1
+        ):
+            return None
+        return completed + 1
+
+    def discard(self, program: Program) -> None:
+        self.path(program).unlink(missing_ok=True)

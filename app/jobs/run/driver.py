@@ -1,0 +1,174 @@
+"""What the runner and a dialect's job driver say to each other.
+
+The runner (:mod:`app.jobs.run.runner`) knows job states, operator commands,
+progress, the ETA and the checkpoint, and nothing of any dialect.  A driver
+knows one dialect and owns four things for it:
+
+* sending the next operation (or, for a streaming dialect, as many as the
+  device may hold);
+* judging completion from the device's replies;
+* what "in flight" means after the link went: which operation may or may
+  not have run;
+* how to resume: re-examine that operation and send it again only when the
+  machine shows it was not done.
+
+A driver talks back only through :class:`RunnerPort`, so the runner's
+private state never leaks into it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import ClassVar, Protocol
+
+from app.jobs.program import LimitViolation, Operation, OpKind, Program, SourceRef
+from app.jobs.run.states import JobState
+from app.machine import LinkState
+from app.machines.session import MachineSession
+from app.station import Station
+
+#: Link states in which nothing can be sent.
+LINK_DOWN = (LinkState.LOST, LinkState.DISCONNECTED, LinkState.CONNECTING)
+
+
+@dataclass(frozen=True)
+class UnsupportedOperation(LimitViolation):
+    """An operation the machine cannot do at all (a drill cycle on a stage): refused like a limit.
+
+    A subclass so that :meth:`JobRunner.load` returns one list the dock can
+    show line by line, whatever the reason for each refusal.
+    """
+
+    reason: str = ""
+
+    @classmethod
+    def of(cls, index: int, operation: Operation, reason: str) -> UnsupportedOperation:
+        return cls(index, operation, "", math.nan, math.nan, math.nan, reason)
+
+    def __str__(self) -> str:
+        return f"{self.operation.source}: {self.operation.describe()} — {self.reason}"
+
+
+class RunnerPort(Protocol):
+    """The runner as a driver sees it."""
+
+    @property
+    def station(self) -> Station: ...
+
+    @property
+    def program(self) -> Program | None: ...
+
+    @property
+    def state(self) -> JobState: ...
+
+    @property
+    def done(self) -> int: ...
+
+    @property
+    def single_step(self) -> bool: ...
+
+    def announce(self, index: int) -> None:
+        """Operation ``index`` is now under way (the dock highlights it)."""
+
+    def note(self, text: str) -> None:
+        """One line for the operator."""
+
+    def mark_done(self, index: int) -> bool:
+        """Operations up to ``index`` are done (checkpointed); whether the job goes on now."""
+
+    def complete(self, index: int) -> None:
+        """``mark_done``, then the driver's next ``proceed`` if the job goes on."""
+
+    def advance(self, done: int) -> None:
+        """A streaming driver's progress: the first ``done`` operations are answered."""
+
+    def record(self, completed: int) -> None:
+        """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace)."""
+
+    def fail(self, index: int, reason: str) -> None: ...
+
+    def link_pause(self) -> None:
+        """The link is gone: pause, holding the operation under way for re-examination."""
+
+    def stop_short(self, text: str) -> None:
+        """The machine stopped an operation short (the operator's Esc): pause with ``text``."""
+
+    def pause_reached(self) -> None:
+        """Nothing of the job is under way any more: a requested pause (or step) takes hold."""
+
+    def wait_for_operator(self, index: int) -> None: ...
+
+    def finish(self) -> None: ...
+
+
+class JobDriver:
+    """One dialect's way of running a program's operations on its session."""
+
+    #: Whether G-code lines (``OpKind.GCODE``) can be sent as they are.
+    takes_gcode: ClassVar[bool] = False
+
+    def __init__(self, runner: RunnerPort) -> None:
+        self.runner = runner
+
+    @property
+    def station(self) -> Station:
+        return self.runner.station
+
+    @property
+    def in_flight(self) -> int | None:
+        """The operation under way: sent, or held for re-examination, and not yet done."""
+        return None
+
+    # --- loading --------------------------------------------------------------
+
+    def refusals(self, program: Program) -> list[LimitViolation]:
+        """Operations this machine cannot do at all; scans only when such a kind is used."""
+        profile = self.station.profile
+        capabilities = profile.capabilities
+        problems: dict[OpKind, str] = {}
+        if not capabilities.drill:
+            problems[OpKind.DRILL] = f"{profile.title} cannot drill"
+        if not capabilities.pen:
+            problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
+        if not self.takes_gcode:
+            problems[OpKind.GCODE] = f"{profile.title} does not take G-code"
+        refused: list[LimitViolation] = []
+        for kind in sorted(program.kinds() & problems.keys(), key=lambda k: k.value):
+            for index in program.indices_of(kind):
+                op = program[int(index)]
+                refused.append(UnsupportedOperation.of(int(index), op, problems[kind]))
+        name = program.source.name if program.source is not None else program.name
+        for problem in program.unexecutable_lines():
+            op = Operation(OpKind.GCODE, SourceRef(name, problem.line), line=problem.text)
+            refused.append(UnsupportedOperation.of(problem.line, op, problem.reason))
+        return refused
+
+    # --- the runner's requests -----------------------------------------------
+
+    def bind(self, session: MachineSession | None) -> None:
+        """Listen to this session's replies (None: no link)."""
+
+    def begin(self, index: int, *, verify: bool) -> None:
+        """A run starts at ``index``; ``verify``: it may have been under way before."""
+
+    def proceed(self) -> None:
+        """Send what may be sent now; end, wait or pause when the program says so."""
+
+    def hold_back(self) -> None:
+        """A pause was asked for: take back what is queued but not yet on the wire."""
+
+    def confirmed(self, index: int) -> None:
+        """The operator confirmed the WAIT at ``index``; the runner completes it next."""
+
+    def stopped(self) -> None:
+        """The job failed or was aborted and the machine was stopped."""
+
+    def forget(self) -> None:
+        """Nothing is under way any more (aborted): drop what was held."""
+
+    def link_lost(self) -> None:
+        """The link went: whatever was under way may or may not have run."""
+
+    def link_up(self) -> bool:
+        return self.station.model.link_state not in LINK_DOWN
