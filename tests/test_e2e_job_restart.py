@@ -13,6 +13,7 @@ Every wait is bounded and every process is killed in the fixture's finaliser.
 from __future__ import annotations
 
 import random
+import re
 import selectors
 import signal
 import subprocess
@@ -129,3 +130,70 @@ def executed_moves(log: Path) -> list[tuple[int, int]]:
         for fields in (line.split() for line in log.read_text(encoding="utf-8").splitlines())
         if len(fields) == 5 and fields[2] == "MOVE_ABS" and fields[4] == "1"
     ]
+
+
+USB3_COUNTS_PER_MM = 6400  # M6 thread (1 mm a turn), the unit's default
+_USB3_DIRECTION = re.compile(r"SetDirection\(signs=\((-?1), (-?1), (-?1)\)\)")
+_USB3_MOVE = re.compile(r"Move\(axis=<AxisId\.(\w): \d>, count=(\d+)\)")
+
+
+def usb3_moves(log: Path) -> list[tuple[str, int]]:
+    """(axis, signed count) of every move of something the unit executed, from its ``--log``."""
+    signs = {"X": 1, "Y": 1, "Z": 1}
+    moves: list[tuple[str, int]] = []
+    if not log.exists():
+        return moves
+    for line in log.read_text(encoding="utf-8").splitlines():
+        if (direction := _USB3_DIRECTION.search(line)) is not None:
+            signs = dict(zip("XYZ", (int(s) for s in direction.groups()), strict=True))
+        elif (move := _USB3_MOVE.search(line)) is not None and int(move.group(2)):
+            axis = move.group(1)
+            moves.append((axis, signs[axis] * int(move.group(2))))
+    return moves
+
+
+def test_a_killed_station_resumes_a_usb3_job_and_the_unit_moved_each_step_once(
+    processes: Processes, tmp_path: Path
+) -> None:
+    """Relative moves: a move sent twice would go twice as far, so this is the strict case."""
+    rng = random.Random(7)
+    # On the unit's step grid (1/8 step on M6: 1/1600 mm), so every target is reached exactly.
+    targets = [(rng.randrange(0, 9) / 4, rng.randrange(0, 9) / 4) for _ in range(8)]
+    job = tmp_path / "route.txt"
+    job.write_text("".join(f"{x}, {y}\n" for x, y in targets), encoding="utf-8")
+    link, log = tmp_path / "unit", tmp_path / "executed.log"
+    deadline = time.monotonic() + 3 * TIMEOUT_S
+
+    emulator = processes.start(
+        "-m", "protocol.emulator", "--profile", "usb3", "--link", str(link),
+        "--time-scale", "20", "--log", str(log),
+    )  # fmt: skip
+    read_line(emulator, deadline)
+    station_args = (
+        "-m", "tests.helpers.run_job", "--link", str(link), "--job", str(job),
+        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(3 * TIMEOUT_S),
+        "--profile", "usb3",
+    )  # fmt: skip
+
+    first = processes.start(*station_args)
+    assert wait_for(first, "start", deadline)[-1] == "start"
+    wait_for(first, "done 3/", deadline)
+    # Killed while operation 3 is under way (or about to be): the unit runs out what it has.
+    first.send_signal(signal.SIGKILL)
+    first.wait(timeout=5)
+
+    second = processes.start(*station_args)
+    lines = wait_for(second, "DONE", deadline)
+    assert [line for line in lines if line.startswith("resume ")] == ["resume 3"], lines
+    assert second.wait(timeout=5) == 0
+
+    emulator.send_signal(signal.SIGTERM)  # it flushes and closes its log
+    emulator.wait(timeout=5)
+    expected: list[tuple[str, int]] = []
+    where = (0.0, 0.0)
+    for target in targets:
+        for axis, start, end in zip("XY", where, target, strict=True):
+            if end != start:
+                expected.append((axis, round((end - start) * USB3_COUNTS_PER_MM)))
+        where = target
+    assert usb3_moves(log) == expected

@@ -196,3 +196,22 @@ def test_a_unit_that_does_not_say_where_it_stands_is_never_sent_a_move_blind(
     runner.resume()  # asks again, and this time hears
     unit.run_until(lambda: finished(runner), timeout=30)
     assert runner.state is JobState.DONE and unit_at(unit, AxisId.X) == 0.0
+
+
+def test_a_unit_moved_while_nobody_listened_is_asked_before_the_first_move(
+    unit: StationHarness, runner: JobRunner
+) -> None:
+    def mute(direction: Direction, data: bytes) -> bytes:
+        return b"" if direction is Direction.TO_HOST else data
+
+    unit.loopback.set_manipulator(mute)
+    unit.usb3_emulator.receive(b"D+++;X000000000012800;")  # 3 mm by its own menu or a hand
+    unit.run_until(lambda: not unit.usb3_emulator.moving(AxisId.X) and unit_at(unit, AxisId.X) > 0)
+    unit.loopback.set_manipulator(None)
+    assert unit.station.model.axes[0].position == 0.0  # the station has not heard of it
+
+    runner.load(route((4.5, 0.0)))
+    runner.start()
+    unit.run_until(lambda: finished(runner), timeout=30)
+    assert runner.state is JobState.DONE and unit_at(unit, AxisId.X) == 4.5
+    assert moves_executed(unit)[-1] == (AxisId.X, round(1.5 * 6400 / THREAD.pitch_mm))

@@ -41,10 +41,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--job", type=Path, required=True)
     parser.add_argument("--checkpoints", type=Path, required=True)
     parser.add_argument("--timeout", type=float, default=60.0)
+    parser.add_argument("--profile", default="xy-stage")
     args = parser.parse_args(argv)
 
     app = QCoreApplication([])
-    station = Station(load_profile("xy-stage"))
+    profile = load_profile(args.profile)
+    station = Station(profile)
     runner = JobRunner(station, args.checkpoints)
     program = load_point_list(args.job)
     status = [3]
@@ -83,7 +85,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     runner.message.connect(lambda text: print(text, file=sys.stderr, flush=True))
     station.model.linkStateChanged.connect(on_link)
     QTimer.singleShot(round(args.timeout * 1000), app.quit)
-    station.connect_serial(args.link, 115200)
+    station.connect_serial(args.link, profile.link.baud)
     app.exec()
     station.shutdown()
     return status[0]

@@ -54,6 +54,7 @@ class Usb3Driver(SequentialDriver):
                 self._session.frameReceived.disconnect(self._on_frame)
                 self._session.ticked.disconnect(self._on_tick)
                 self._session.settingsChanged.disconnect(self._forget_positions)
+                self._session.model.linkStateChanged.disconnect(self._forget_positions)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
         self._session = session if isinstance(session, Usb3Session) else None
@@ -67,6 +68,8 @@ class Usb3Driver(SequentialDriver):
             self._session.ticked.connect(self._on_tick)
             # Another thread changes what a count means: the model has the new positions.
             self._session.settingsChanged.connect(self._forget_positions)
+            # While nobody listens the unit may move (it runs its move out; its joystick).
+            self._session.model.linkStateChanged.connect(self._forget_positions)
 
     def _send(self, index: int, op: Operation) -> None:
         session = self._session
@@ -76,11 +79,18 @@ class Usb3Driver(SequentialDriver):
         if op.kind is not OpKind.MOVE:
             self._unsupported(index, op)
             return
+        profile = self.station.profile
+        if any(profile.axis_index(name) not in self._last for name in op.target):
+            # Nothing heard from an axis on this link yet (a new station, a unit moved by its
+            # joystick or its menu meanwhile): a relative move needs to know where it starts.
+            self._verify = True
+            self._start_verify(index)
+            return
         moves: dict[int, float] = {}
         start: dict[int, float] = {}
         for name, target in op.target.items():
-            axis = self.station.profile.axis_index(name)
-            start[axis] = self._last.get(axis, self.station.model.axes[axis].position)
+            axis = profile.axis_index(name)
+            start[axis] = self._last[axis]
             delta = session.reachable(axis, target - start[axis])
             if delta != 0.0:
                 moves[axis] = delta
@@ -118,7 +128,7 @@ class Usb3Driver(SequentialDriver):
         super()._clear()
         self._forget_move()
 
-    def _forget_positions(self) -> None:
+    def _forget_positions(self, *_: object) -> None:
         self._last = {}
 
     def _forget_move(self) -> None:
