@@ -11,17 +11,15 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
-from app.developer import (
+from app.developer.emulator_controls import EmulatorControls, SimulationRefused
+from app.developer.frame_log import FrameLog, LogDirection
+from app.developer.raw_text import escape_raw
+from app.developer.stage import (
     AxisFields,
     EchoFields,
-    EmulatorControls,
-    FrameLog,
     InjectError,
-    LogDirection,
-    SimulationRefused,
     describe_command,
     describe_echo,
-    escape_raw,
     inject_echo,
     parse_echo,
 )

@@ -17,7 +17,7 @@ from app.jobs.formats.string_art.reader import (
     read_string_art,
 )
 from app.jobs.program import Operation, OpKind, SourceRef, move
-from app.machines.gcode.render import comment, feed_for, format_number, render_operation
+from app.jobs.render.gcode import comment, feed_for, format_number, render_operation
 from app.profiles import GcodeSettings, load_profile
 
 AT = SourceRef("job.nc", 7)

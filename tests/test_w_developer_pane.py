@@ -13,7 +13,7 @@ from PySide6.QtCore import QPoint, Qt
 from PySide6.QtWidgets import QAbstractSpinBox, QCheckBox, QFileDialog, QLineEdit
 from pytestqt.qtbot import QtBot
 
-from app.developer import AxisFields, EchoFields, inject_echo
+from app.developer.stage import AxisFields, EchoFields, inject_echo
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus

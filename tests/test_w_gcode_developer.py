@@ -8,7 +8,7 @@ import pytest
 from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
-from app.machines.gcode.developer import describe_gcode, parse_reply
+from app.developer.gcode import describe_gcode, parse_reply
 from app.profiles import load_profile
 from protocol.gcode.codec import ErrorReply, StatusReport
 from tests.helpers.harness import StationHarness

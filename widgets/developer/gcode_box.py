@@ -13,7 +13,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.machines.gcode.developer import QUICK_REPLIES, GcodeEmulatorButtons, inject_reply
+from app.developer.gcode import QUICK_REPLIES, GcodeEmulatorButtons, inject_reply
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 

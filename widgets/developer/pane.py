@@ -42,17 +42,14 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.developer import (
-    END_SWITCHES,
-    LOG_CAPACITY,
+from app.developer.emulator_controls import END_SWITCHES, EmulatorControls, SimulationRefused
+from app.developer.frame_log import LOG_CAPACITY, FrameLog
+from app.developer.stage import (
     SUBSCRIBER_TEXT,
     TYPE_TEXT,
     AxisFields,
     EchoFields,
-    EmulatorControls,
-    FrameLog,
     InjectError,
-    SimulationRefused,
     inject_echo,
     raw_echo_text,
 )

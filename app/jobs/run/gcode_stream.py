@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.jobs.program import OpKind, Program
-from app.machines.gcode.render import feed_for, render_operation
+from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from app.jobs.formats.string_art.reader import PARAM_NAME, PORADI_NAME, StringArtJob
 from app.jobs.program import OpKind, Program
-from app.machines.gcode.render import MAX_LINE, comment, feed_for, render_operation
+from app.jobs.render.gcode import MAX_LINE, comment, feed_for, render_operation
 from app.profiles import GcodeSettings, MachineProfile
 
 

@@ -1,0 +1,123 @@
+"""The developer pane's G-code half: replies in words, injected replies, the emulator's buttons.
+
+A developer testing a sender wants to see what the station does with an
+``error:9`` in the middle of a job, an ``ALARM:1``, a board that reports
+``Hold``, or garbage — without a board that misbehaves on cue.  Injected
+text goes through the session exactly as bytes from the device would (so
+it answers the oldest unanswered line, moves the model, counts as a
+reject), and the frame log shows it.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject
+
+from app.machine import LinkState
+from app.machines.gcode.session import GcodeSession
+from app.station import Station
+from protocol.gcode.codec import (
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Feedback,
+    GcodeReply,
+    Ok,
+    Rejected,
+    StatusReport,
+    decode,
+)
+
+#: Replies a developer reaches for most, for the pane's quick buttons.
+QUICK_REPLIES = (
+    ("ok", "ok"),
+    ("error:20", "error:20"),
+    ("ALARM:1", "ALARM:1"),
+    ("Hold", "<Hold:0|MPos:0.000,0.000,0.000|FS:0,0>"),
+    ("banner", "Grbl 1.1h ['$' for help]"),
+)
+
+
+def describe_gcode(message: object) -> str | None:
+    """A G-code line or reply in words for the frame log; None when it is none of them."""
+    if isinstance(message, str):
+        return message
+    if isinstance(message, Ok):
+        return "ok: the oldest unanswered line was accepted"
+    if isinstance(message, ErrorReply):
+        return f"error {message.code}: {message.meaning}"
+    if isinstance(message, AlarmReply):
+        return f"alarm {message.code}: {message.meaning}"
+    if isinstance(message, StatusReport):
+        where = ", ".join(f"{v:.3f}" for v in message.mpos)
+        planner = f", {message.planner_free} planner blocks free" if message.planner_free else ""
+        return f"{message.state} at ({where}), feed {message.feed:g}{planner}"
+    if isinstance(message, Banner):
+        return f"the board (re)started: {message.text}"
+    if isinstance(message, Feedback):
+        return f"message: {message.text}"
+    return None
+
+
+def parse_reply(text: str) -> GcodeReply:
+    """The reply ``text`` is, as the station would decode it; ValueError says why not."""
+    line = text.strip()
+    if not line:
+        raise ValueError("type a reply, e.g. ok, error:20, ALARM:1 or <Idle|MPos:0,0,0|FS:0,0>")
+    try:
+        raw = line.encode("ascii") + b"\n"
+    except UnicodeEncodeError:
+        raise ValueError("replies are ASCII") from None
+    used, reply = decode(raw)
+    if isinstance(reply, Rejected):
+        raise ValueError(f"the station would drop this: {reply.reason}")
+    if reply is None or used != len(raw):
+        raise ValueError("not one reply line")
+    return reply
+
+
+def inject_reply(station: Station, text: str) -> GcodeReply:
+    """Hand ``text`` to the G-code session as if the device had sent it.
+
+    Checked first (ValueError with the reason) so a developer's typo is not
+    mistaken for a device's garbage; deliberate garbage is what
+    :func:`inject_raw` is for.
+    """
+    reply = parse_reply(text)
+    inject_raw(station, text.strip().encode("ascii") + b"\n")
+    return reply
+
+
+def inject_raw(station: Station, data: bytes) -> None:
+    session = _session(station)
+    session.receive_injected(data)
+
+
+def _session(station: Station) -> GcodeSession:
+    session = station.gcode_session
+    if session is None or station.model.link_state is not LinkState.CONNECTED:
+        raise ValueError("connect a G-code machine first")
+    return session
+
+
+class GcodeEmulatorButtons(QObject):
+    """The emulated board's own buttons (hold, resume, an alarm), with no protocol import."""
+
+    def __init__(self, station: Station, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._station = station
+
+    @property
+    def available(self) -> bool:
+        return self._station.gcode_emulator is not None and self._station.loopback is not None
+
+    def hold(self) -> None:
+        if (emulator := self._station.gcode_emulator) is not None:
+            emulator.feed_hold()
+
+    def resume(self) -> None:
+        if (emulator := self._station.gcode_emulator) is not None:
+            emulator.cycle_start()
+
+    def alarm(self, code: int = 1) -> None:
+        if (emulator := self._station.gcode_emulator) is not None:
+            emulator.trigger_alarm(code)
