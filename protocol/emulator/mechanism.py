@@ -500,7 +500,7 @@ class Axis:
         if self._plan.open_ended:
             return None
         ghost = copy.copy(self)
-        elapsed = ghost._run(math.inf)
+        elapsed = ghost._run(math.inf)  # noqa: SLF001 (a copy of self)
         return elapsed if math.isfinite(elapsed) else None
 
     # -- internals ------------------------------------------------------------
