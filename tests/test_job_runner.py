@@ -7,6 +7,7 @@ commands: that is what the machine did, whatever the station believed.
 from __future__ import annotations
 
 import json
+import os
 import random
 from collections.abc import Iterator
 from pathlib import Path
@@ -390,3 +391,43 @@ def test_every_dialect_a_profile_can_name_has_a_job_driver() -> None:
     assert set(DRIVERS) == set(DIALECTS)
     for name in ("xy-stage", "usb3", "pcb-drill", "string-art", "corexy-plotter", "grbl-plotter"):
         assert load_profile(name).dialect in DRIVERS
+
+
+def test_a_checkpoint_that_cannot_be_written_stops_the_job_as_failed_with_the_reason(
+    connected: StationHarness, tmp_path: Path
+) -> None:
+    blocked = tmp_path / "not-a-folder"
+    blocked.write_text("a file where the checkpoint folder should be", encoding="utf-8")
+    runner = JobRunner(connected.station, blocked)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    prog = random_program(5, seed=4)
+    assert runner.load(prog) == []
+    runner.start()
+    connected.run_until(lambda: finished(runner), timeout=60)
+    assert runner.state is JobState.FAILED  # not running on, not "done" without a record
+    assert runner.done == 1
+    assert executed_moves(connected) == expected_moves(prog.operations[:1])  # nothing after it
+    assert any("checkpoint could not be written" in m and str(blocked) in m for m in messages)
+
+
+@pytest.mark.parametrize("kind", ["fifo", "device", "huge"])
+def test_only_a_small_regular_file_is_read_as_a_checkpoint(
+    runner: JobRunner, tmp_path: Path, kind: str
+) -> None:
+    """A FIFO would hang the load, /dev/zero would never end: both refused, with a word."""
+    prog = random_program(4, seed=5)
+    folder = tmp_path / "checkpoints"
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{prog.fingerprint()}.json"
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "device":
+        path.symlink_to("/dev/zero")
+    else:
+        path.write_text(json.dumps({"pad": "x" * 100_000}), encoding="utf-8")
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    assert runner.load(prog) == []
+    assert runner.resume_available is None and runner.state is JobState.READY
+    assert any("unreadable checkpoint" in m for m in messages)

@@ -213,9 +213,10 @@ def test_a_link_cut_during_a_received_drill_cycle_resumes_without_drilling_it_ag
     assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
 
 
-def test_a_drill_command_lost_with_the_link_is_sent_again_and_a_move_is_repeated_harmlessly(
+def test_a_drill_command_lost_with_the_link_is_the_operators_call_and_a_move_is_repeated(
     drill: StationHarness, runner: JobRunner, shared_dir: Path
 ) -> None:
+    """A V that went out unacknowledged may have drilled: the operator, not the runner, decides."""
     program = sample_program(shared_dir)
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     moves = [i for i, op in enumerate(program) if op.kind is OpKind.MOVE]
@@ -230,6 +231,8 @@ def test_a_drill_command_lost_with_the_link_is_sent_again_and_a_move_is_repeated
             drill.loopback.set_manipulator(cable_gone)
 
     runner.operationStarted.connect(cut)
+    asked: list[tuple[int | None, str]] = []
+    runner.decisionNeeded.connect(lambda question, *_: asked.append((runner.question, question)))
     assert runner.load(program) == []
     runner.start()
     paused: list[int] = []
@@ -249,13 +252,92 @@ def test_a_drill_command_lost_with_the_link_is_sent_again_and_a_move_is_repeated
         paused.append(paused_at)
         reconnect(drill)
         runner.resume()
+        if asked and runner.question is not None:
+            runner.resume()  # refused: the question stands
+            assert runner.state is JobState.PAUSED
+            runner.decide(again=True)  # the operator sees no hole there
     run_to_end(drill, runner)
     assert paused == [drills[3], moves[10]]
+    assert [index for index, _ in asked] == [drills[3]]  # the move was simply sent again
+    assert str(program[drills[3]].source) in asked[0][1]
     assert runner.state is JobState.DONE
     assert drilled(drill) == expected_holes(drill, program)
     assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
     sent_v = [c for c in drill.drill_emulator.command_log if c.command == Command("V")]
     assert len(sent_v) == SAMPLE_HOLES  # the lost V never reached the machine
+
+
+def test_a_lost_receipt_is_not_a_reason_to_drill_twice(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    """The drill took the V, but its RV and DV never came back: asked, then counted as drilled."""
+    program = sample_program(shared_dir)
+    drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
+    target = drills[6]
+
+    def replies_lost(direction: Direction, data: bytes) -> bytes:
+        return b"" if direction is Direction.TO_HOST else data
+
+    def lose_replies(index: int) -> None:
+        if index == target:
+            drill.loopback.set_manipulator(replies_lost)
+
+    runner.operationStarted.connect(lose_replies)
+    asked: list[int | None] = []
+    runner.decisionNeeded.connect(lambda *_: asked.append(runner.question))
+    assert runner.load(program) == []
+    runner.start()
+
+    def v_taken() -> bool:
+        if runner.state is JobState.WAITING:
+            runner.confirm()
+        return len(drill.drill_emulator.drill_log) == 7
+
+    drill.run_until(v_taken, timeout=300)
+    drill.loopback.sever("cable pulled")
+    drill.run_until(lambda: runner.state is JobState.PAUSED)
+    reconnect(drill)
+    drill.run(2.0)
+    runner.resume()
+    assert asked == [target] and runner.state is JobState.PAUSED
+    assert len(drill.drill_emulator.drill_log) == 7  # nothing sent while the question stands
+
+    runner.decide(again=False)  # the operator sees the hole
+    run_to_end(drill, runner)
+    assert runner.state is JobState.DONE
+    assert drilled(drill) == expected_holes(drill, program)
+    assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
+
+
+def test_a_restarted_station_asks_about_the_checkpoints_next_hole(
+    drill: StationHarness, shared_dir: Path, tmp_path: Path
+) -> None:
+    """After a crash nothing is known of the last V: the operator is asked, nothing is sent."""
+    program = sample_program(shared_dir)
+    drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
+    first = JobRunner(drill.station, tmp_path / "checkpoints")
+    assert first.load(program) == []
+    first.start()
+
+    def at_third_drill() -> bool:
+        if first.state is JobState.WAITING:
+            first.confirm()
+        return first.done == drills[2]
+
+    drill.run_until(at_third_drill, timeout=300)
+    first.deleteLater()  # the station died here, its V perhaps on the wire
+    holes = len(drill.drill_emulator.drill_log)
+
+    again = JobRunner(drill.station, tmp_path / "checkpoints")
+    asked: list[str] = []
+    again.decisionNeeded.connect(lambda question, *_: asked.append(question))
+    assert again.load(program) == [] and again.resume_available == drills[2]
+    again.resume_from_checkpoint()
+    assert again.state is JobState.PAUSED and again.question == drills[2] and asked
+    drill.run(1.0)
+    assert len(drill.drill_emulator.drill_log) == holes
+    again.decide(again=False)
+    assert again.done == drills[2] + 1
 
 
 def test_a_refused_command_fails_the_job_at_its_line(

@@ -334,3 +334,66 @@ def test_a_drill_job_on_the_drill_shows_its_travel_saving_and_microsteps(
         assert line.endswith(f"machine: X{x} Y{y} microsteps")
     finally:
         drill.close()
+
+
+def test_a_hole_perhaps_drilled_is_asked_with_it_marked_and_again_drills_it_once(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """The drill's V went out, the link went before RV: the dock asks; Again drills it."""
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, confirm=lambda _text: False, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.resize(820, 640)
+    dock.show()
+    try:
+        drill.connect()
+        drill.run(0.5)
+        excellon = "M48\nMETRIC\nT01C0.8\n%\nT01\nX10.0Y10.0\nX20.0Y15.0\nM30\n"
+        job = write(tmp_path, "holes.drl", excellon)
+        assert dock.open_path(job)
+        program = runner.program
+        assert program is not None
+        drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
+
+        def gone(_direction: object, _data: bytes) -> bytes:
+            return b""
+
+        cut: list[int] = []
+
+        def cut_at_second_hole(index: int) -> None:
+            if index == drills[1] and not cut:
+                cut.append(index)
+                drill.loopback.set_manipulator(gone)  # the V leaves, nothing comes back
+
+        runner.operationStarted.connect(cut_at_second_hole)
+        qtbot.mouseClick(dock.run_button, LEFT)
+
+        def at_the_question() -> bool:
+            if runner.state is JobState.WAITING:
+                qtbot.mouseClick(dock.continue_button, LEFT)
+            return bool(cut) and runner.current_index == drills[1]
+
+        drill.run_until(at_the_question, timeout=120)
+        drill.run(0.1)
+        drill.loopback.sever("cable pulled")
+        drill.run_until(lambda: runner.state is JobState.PAUSED)
+        drill.loopback.set_manipulator(None)
+        drill.run_until(lambda: drill.station.model.link_state.value == "connected", timeout=60)
+        qtbot.mouseClick(dock.resume_button, LEFT)
+
+        assert runner.question == drills[1] and dock.prompt.isVisible()
+        assert dock.again_button.isVisible() and not dock.continue_button.isVisible()
+        assert not dock.resume_button.isEnabled()  # the question first
+        marked = dock.preview.question_marker.getData()
+        assert (list(marked[0]), list(marked[1])) == ([20.0], [15.0])
+        holes = len(drill.drill_emulator.drill_log)
+        assert holes == 1  # the lost V never reached the drill
+
+        qtbot.mouseClick(dock.again_button, LEFT)
+        drill.run_until(lambda: runner.state is JobState.DONE, timeout=120)
+        assert len(drill.drill_emulator.drill_log) == 2
+        assert not dock.prompt.isVisible()
+        assert len(dock.preview.question_marker.getData()[0]) == 0
+    finally:
+        drill.close()

@@ -144,6 +144,7 @@ class JobsDock(QDockWidget):
         runner.etaChanged.connect(self._show_eta)
         runner.operationStarted.connect(self._show_operation)
         runner.waitingForOperator.connect(self._show_prompt)
+        runner.decisionNeeded.connect(self._show_question)
         runner.message.connect(self._runner_message)
         runner.programChanged.connect(self._program_changed)
         station.model.lockChanged.connect(self._update_buttons)
@@ -338,8 +339,19 @@ class JobsDock(QDockWidget):
         self.continue_button = self._button(
             "Continue", "job_continue", "Done: let the job go on", self.runner.confirm
         )
+        # Only the operator can tell whether an interrupted operation ran (a hole drilled?).
+        self.again_button = self._button(
+            "Again", "job_again", "It did not happen: send it again",
+            lambda: self.runner.decide(again=True),
+        )  # fmt: skip
+        self.counted_button = self._button(
+            "Done", "job_counted", "It happened: count it as done",
+            lambda: self.runner.decide(again=False),
+        )  # fmt: skip
         row.addWidget(self.prompt_label, 1)
         row.addWidget(self.continue_button)
+        row.addWidget(self.again_button)
+        row.addWidget(self.counted_button)
         self.prompt.hide()
         return self.prompt
 
@@ -539,8 +551,9 @@ class JobsDock(QDockWidget):
 
     def _state_changed(self, *_args: object) -> None:
         state = self.runner.state
-        if state is not JobState.WAITING:
+        if state is not JobState.WAITING and self.runner.question is None:
             self.prompt.hide()
+            self.preview.mark_question(None)
         if state in (JobState.READY, JobState.PAUSED) and self.runner.program is not None:
             # Stepping through: show what the next Step will send before it is sent.
             self._show_operation(self.runner.done)
@@ -581,13 +594,20 @@ class JobsDock(QDockWidget):
             and state in (JobState.READY, JobState.DONE, JobState.ABORTED, JobState.FAILED)
         )
         self.pause_button.setEnabled(state in (JobState.RUNNING, JobState.WAITING))
-        self.resume_button.setEnabled(can_move and state in (JobState.PAUSED, JobState.PAUSING))
+        answering = can_move and self.runner.question is not None
+        self.resume_button.setEnabled(
+            can_move
+            and self.runner.question is None
+            and state in (JobState.PAUSED, JobState.PAUSING)
+        )
         self.step_button.setEnabled(
             loaded and can_move and not offer and state in (JobState.READY, JobState.PAUSED)
         )
         self.abort_button.setEnabled(state in ACTIVE_STATES)
         self.resume_checkpoint_button.setEnabled(can_move)
         self.continue_button.setEnabled(state is JobState.WAITING)
+        self.again_button.setEnabled(answering)
+        self.counted_button.setEnabled(answering)
         why = f" — motion locked: {lock}" if lock else ""
         self.run_button.setToolTip(f"Run the job from the start{why}")
 
@@ -632,10 +652,25 @@ class JobsDock(QDockWidget):
 
     def _show_prompt(self, text: str) -> None:
         self.prompt_label.setText(f"Operator: {text}")
+        self._show_answers(question=False)
         self.prompt.show()
         self.continue_button.setEnabled(True)
         self.continue_button.setFocus()
         self.say(f"waiting for the operator: {text}")
+
+    def _show_question(self, text: str, again: str, done: str) -> None:
+        self.prompt_label.setText(text)
+        self.again_button.setText(again)
+        self.counted_button.setText(done)
+        self._show_answers(question=True)
+        self.prompt.show()
+        self.preview.mark_question(self.runner.question)
+        self.say(text)
+
+    def _show_answers(self, *, question: bool) -> None:
+        self.continue_button.setVisible(not question)
+        self.again_button.setVisible(question)
+        self.counted_button.setVisible(question)
 
 
 def _size(path: Path) -> int:

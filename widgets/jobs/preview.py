@@ -64,6 +64,7 @@ TRAVEL_COLOUR = "#9a9a9a"
 WORK_COLOUR = "#1f4fb4"
 DONE_COLOUR = "#2ca02c"
 POSITION_COLOUR = "#d62728"
+QUESTION_COLOUR = "#ff7f0e"
 LIMIT_COLOUR = "#e08a00"
 DEFAULT_THROTTLE_MS = 33.0
 #: Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so.
@@ -377,6 +378,12 @@ class JobPreview(QWidget):
         )
         self.position_marker.setZValue(10)
         self.plot.addItem(self.position_marker)
+        #: A ring around the operation the operator is asked about (a hole perhaps drilled).
+        self.question_marker = pg.ScatterPlotItem(
+            size=22, symbol="o", pen=pg.mkPen(QUESTION_COLOUR, width=3), brush=None
+        )
+        self.question_marker.setZValue(11)
+        self.plot.addItem(self.question_marker)
         self.plot.scene().sigMouseClicked.connect(self._clicked)
 
     def _curve(self, pen: object) -> pg.PlotDataItem:
@@ -397,11 +404,41 @@ class JobPreview(QWidget):
 
     # --- public --------------------------------------------------------------
 
+    def mark_question(self, index: int | None) -> None:
+        """Ring where operation ``index`` acts (None clears): the place the operator must look."""
+        where = self._where(index) if index is not None else None
+        if where is None:
+            self.question_marker.setData(x=_EMPTY, y=_EMPTY)
+        else:
+            self.question_marker.setData(x=[where[0]], y=[where[1]])
+
+    def _where(self, index: int) -> tuple[float, float] | None:
+        """Where the machine stands for operation ``index``: the last target before it."""
+        program = self.program
+        if program is None or not self.axis_names or not 0 <= index < len(program):
+            return None
+        x_name = self.axis_names[0]
+        y_name = self.axis_names[1] if len(self.axis_names) > 1 else None
+        x = y = None
+        for back in range(index, -1, -1):
+            target = program[back].target
+            if x is None and x_name in target:
+                x = target[x_name]
+            if y is None and y_name is not None and y_name in target:
+                y = target[y_name]
+            if x is not None and (y is not None or y_name is None):
+                break
+        if x is None:
+            return None
+        y = y if y is not None else 0.0
+        return self.polar.project(x, y) if self.polar is not None else (x, y)
+
     def set_program(self, program: Program | None) -> None:
         """Draw ``program`` (None clears); times the build in ``build_seconds``."""
         start = time.perf_counter()
         self.program = program
         self.done = 0
+        self.question_marker.setData(x=_EMPTY, y=_EMPTY)
         if program is None or not self.axis_names:
             self.path_geometry = None
             for curve in (self.travel_curve, self.work_curve):

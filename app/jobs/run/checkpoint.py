@@ -10,12 +10,16 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import tempfile
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
 from app.jobs.program import Program
+
+#: A checkpoint is a few hundred bytes; anything much larger is not one of ours.
+MAX_CHECKPOINT_BYTES = 64 * 1024
 
 
 class CheckpointStore:
@@ -64,9 +68,15 @@ class CheckpointStore:
         """
         path = self.path(program)
         try:
-            record: Any = json.loads(path.read_text(encoding="utf-8"))
+            # Looked at before it is opened: a FIFO would block the read, /dev/zero never end.
+            info = path.stat()
         except FileNotFoundError:
             return None
+        if not stat.S_ISREG(info.st_mode):
+            raise ValueError("not a regular file")
+        if info.st_size > MAX_CHECKPOINT_BYTES:
+            raise ValueError(f"{info.st_size} bytes, more than a checkpoint ever holds")
+        record: Any = json.loads(path.read_text(encoding="utf-8"))
         completed = record.get("completed") if isinstance(record, dict) else None
         if (
             not isinstance(record, dict)

@@ -7,13 +7,19 @@ idle after the ``D`` of each of its commands; an ``E`` fails the job at the
 operation's line.
 
 When the link goes, the operation in flight is held as not done and
-re-examined on resume: a MOVE is simply sent again (absolute microsteps,
-harmless whether or not it was finished); a DRILL whose ``V`` had been
-received (``RV`` seen) counts as done, because the machine runs a procedure
-it has accepted to its end on its own and drilling the hole again would
-enlarge it; a DRILL whose ``RV`` never arrived is sent again.  After a
-station restart nothing is known of the last ``RV``, so the checkpoint's
-next DRILL is sent again.
+re-examined on resume.  The drill cannot be asked what it did, so the rule
+uses only what it said before the link went:
+
+* a MOVE or a pen movement is simply sent again (absolute microsteps, a pen
+  position: harmless whether or not it was done);
+* a DRILL whose ``V`` was received (``RV`` seen) counts as done: the machine
+  runs a procedure it has accepted to its end on its own, and drilling the
+  hole again would enlarge it;
+* a DRILL whose ``V`` never left the station is sent;
+* a DRILL whose ``V`` was written but never acknowledged may or may not have
+  been drilled (the ``V`` or its ``RV`` was lost), and so may the checkpoint's
+  next DRILL after a station restart: the operator decides, looking at the
+  board, with the hole marked in the preview.  Never a silent resend.
 """
 
 from __future__ import annotations
@@ -37,6 +43,7 @@ class DrillDriver(SequentialDriver):
         # the device acknowledged (``R``) the drill cycle of a DRILL.
         self._pending: list[str] = []
         self._received = False
+        self._written = False  # the in-flight DRILL's V went out on the wire
 
     def bind(self, session: MachineSession | None) -> None:
         old = self._session
@@ -46,6 +53,7 @@ class DrillDriver(SequentialDriver):
                 old.commandDone.disconnect(self._on_done)
                 old.commandFailed.disconnect(self._on_failed)
                 old.idle.disconnect(self._on_idle)
+                old.frameSent.disconnect(self._on_sent)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
         self._session = session if isinstance(session, DrillSession) else None
@@ -55,6 +63,7 @@ class DrillDriver(SequentialDriver):
             self._session.commandDone.connect(self._on_done)
             self._session.commandFailed.connect(self._on_failed)
             self._session.idle.connect(self._on_idle)
+            self._session.frameSent.connect(self._on_sent)
 
     def _send(self, index: int, op: Operation) -> None:
         session = self._session
@@ -81,31 +90,58 @@ class DrillDriver(SequentialDriver):
             return
         self._pending = [letter for letter, _ in sends]
         self._received = False
+        self._written = False
         for _, send in sends:
             if not send():
                 self._pending = []
                 self._refused_send(index, "the drill refused it")
                 return
 
+    def begin(self, index: int, *, verify: bool) -> None:
+        super().begin(index, verify=verify)
+        program = self.runner.program
+        assert program is not None
+        if verify and index < len(program) and program[index].kind is OpKind.DRILL:
+            # A new station knows nothing of what the last one sent: the V may have gone.
+            self._in_flight = index
+            self._verify = True
+            self._written = True
+
     def _start_verify(self, index: int) -> None:
-        """After a lost link: a DRILL the device had received is done; anything else goes again."""
+        """After a lost link: what the drill said before it went decides (module docstring)."""
         program = self.runner.program
         assert program is not None
         op = program[index]
-        self._verify = False
-        if op.kind is OpKind.DRILL and self._received:
+        if op.kind is not OpKind.DRILL or not (self._received or self._written):
+            self._verify = False
+            self._dispatch(index)
+            return
+        if self._received:
+            self._verify = False
             self.runner.note(
                 f"Drill cycle at {op.source} was received by the machine, which finishes it "
                 "on its own: counted as done"
             )
             self._done(index)
             return
-        self._dispatch(index)
+        self.runner.ask(
+            index,
+            f"The hole at {op.source} may or may not have been drilled: the link went before "
+            "the drill confirmed the command. Look at the board (the hole is marked in the "
+            "preview), then drill it again or count it as drilled.",
+            "Drill it again",
+            "Count it as drilled",
+        )
 
     def _clear(self) -> None:
         super()._clear()
         self._pending = []
         self._received = False
+        self._written = False
+
+    def _on_sent(self, command: object, raw: bytes) -> None:
+        if self.in_flight is not None and self._pending and raw.startswith(b"V"):
+            self._written = True
 
     def _on_received(self, text: str) -> None:
         if self.in_flight is not None and self._pending and text == "V":

@@ -99,6 +99,13 @@ class RunnerPort(Protocol):
 
     def wait_for_operator(self, index: int) -> None: ...
 
+    def ask(self, index: int, question: str, again: str, done: str) -> None:
+        """Only the operator can tell whether operation ``index`` ran: pause and ask.
+
+        ``again`` and ``done`` name the two answers (send it again / count it
+        as done); the runner passes the answer to :meth:`JobDriver.decided`.
+        """
+
     def finish(self) -> None: ...
 
 
@@ -166,6 +173,9 @@ class JobDriver:
 
     def forget(self) -> None:
         """Nothing is under way any more (aborted): drop what was held."""
+
+    def decided(self, index: int, *, again: bool) -> None:
+        """The operator's answer to :meth:`RunnerPort.ask`: send ``index`` again, or count it."""
 
     def link_lost(self) -> None:
         """The link went: whatever was under way may or may not have run."""

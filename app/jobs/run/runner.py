@@ -47,6 +47,8 @@ class JobRunner(QObject):
     operationStarted = Signal(int)
     operationDone = Signal(int)
     waitingForOperator = Signal(str)
+    #: Only the operator can tell whether an operation ran: question, "again" and "done" labels.
+    decisionNeeded = Signal(str, str, str)
     message = Signal(str)
     programChanged = Signal()
 
@@ -64,6 +66,8 @@ class JobRunner(QObject):
         self._resume_available: int | None = None
         self._single_step = False
         self._pause_requested = False
+        self._question: int | None = None  # the operation the operator is asked about
+        self._failing = False  # a checkpoint write failed and the job is being failed
         self._elapsed_before = 0.0
         self._running_since: float | None = None
         self._session: object = None
@@ -113,6 +117,11 @@ class JobRunner(QObject):
         if in_flight is not None:
             return in_flight
         return self._done if self._done < len(self._program) else None
+
+    @property
+    def question(self) -> int | None:
+        """The operation whose fate the operator is asked to decide (see ``decisionNeeded``)."""
+        return self._question
 
     @property
     def resume_available(self) -> int | None:
@@ -208,7 +217,21 @@ class JobRunner(QObject):
             self._pause_requested = False
             self._set_state(JobState.RUNNING)
         elif self._state is JobState.PAUSED:
+            if self._question is not None:
+                self.message.emit("Answer the question about the interrupted operation first")
+                return
             self._continue(single_step=False)
+
+    def decide(self, *, again: bool) -> None:
+        """The operator's answer: send the operation in question again, or count it as done."""
+        index = self._question
+        if index is None or self._state is not JobState.PAUSED or self._refuse_for_link():
+            return
+        self._question = None
+        self._single_step = False
+        self._pause_requested = False
+        self._set_state(JobState.RUNNING)
+        self._driver.decided(index, again=again)
 
     def step(self) -> None:
         """Run exactly one operation, then pause."""
@@ -217,7 +240,7 @@ class JobRunner(QObject):
                 self.message.emit("Resume from the checkpoint or discard it first")
                 return
             self._begin(0, single_step=True, verify=False)
-        elif self._state is JobState.PAUSED:
+        elif self._state is JobState.PAUSED and self._question is None:
             self._continue(single_step=True)
 
     def abort(self) -> None:
@@ -229,6 +252,7 @@ class JobRunner(QObject):
             session.stop_all()
         self._driver.stopped()
         self._driver.forget()
+        self._question = None
         # The resume offer first, so views reacting to the state change see it.
         self._offer_checkpoint()
         self._set_state(JobState.ABORTED)
@@ -258,7 +282,11 @@ class JobRunner(QObject):
         """Forget the interrupted run: the next start begins at the first operation."""
         if self._program is None:
             return
-        self._checkpoints.discard(self._program)
+        try:
+            self._checkpoints.discard(self._program)
+        except OSError as exc:
+            self.message.emit(f"The checkpoint could not be removed: {exc}")
+            return
         self._resume_available = None
         if self._state in FINISHED:
             self._set_state(JobState.READY)
@@ -280,7 +308,8 @@ class JobRunner(QObject):
         """Operations up to ``index`` are done; whether the next one starts now."""
         assert self._program is not None
         self._done = index + 1
-        self._write_checkpoint(self._program, index)  # before anything else is sent
+        if not self._write_checkpoint(self._program, index):  # before anything else is sent
+            return False
         self.operationDone.emit(index)
         self.progressChanged.emit(self._done, len(self._program))
         self.emit_eta()
@@ -299,10 +328,12 @@ class JobRunner(QObject):
         self.progressChanged.emit(done, len(self._program))
 
     def record(self, completed: int) -> None:
-        if self._program is not None:
+        if self._program is not None and self._state in ACTIVE:
             self._write_checkpoint(self._program, completed)
 
     def fail(self, index: int, reason: str) -> None:
+        if self._state not in ACTIVE:
+            return  # already ended (a failure while failing, say the checkpoint's)
         session = self.station.session
         if session is not None and self.station.model.link_state not in LINK_DOWN:
             session.stop_all()
@@ -337,9 +368,18 @@ class JobRunner(QObject):
         self._set_state(JobState.WAITING)
         self.waitingForOperator.emit(self._program[index].message)
 
+    def ask(self, index: int, question: str, again: str, done: str) -> None:
+        self._question = index
+        self._set_state(JobState.PAUSED)
+        self.message.emit(question)
+        self.decisionNeeded.emit(question, again, done)
+
     def finish(self) -> None:
         assert self._program is not None
-        self._checkpoints.discard(self._program)
+        try:
+            self._checkpoints.discard(self._program)
+        except OSError as exc:
+            self.message.emit(f"The finished job's checkpoint could not be removed: {exc}")
         self._set_state(JobState.DONE)
         self.emit_eta()
         self.message.emit(
@@ -438,6 +478,7 @@ class JobRunner(QObject):
 
     def _reset(self) -> None:
         self._done = 0
+        self._question = None
         self._driver.forget()
         self._resume_available = None
         self._single_step = False
@@ -461,11 +502,27 @@ class JobRunner(QObject):
 
     # --- checkpoint ----------------------------------------------------------
 
-    def _write_checkpoint(self, program: Program, completed: int) -> None:
+    def _write_checkpoint(self, program: Program, completed: int) -> bool:
+        """Record progress; a job that cannot record it stops (FAILED) rather than run on.
+
+        Without its checkpoint an interrupted job could only be run again from the
+        start, repeating every operation done so far: better to stop while the
+        operator can still see where it stands.
+        """
         try:
             self._checkpoints.write(program, completed)
         except OSError as exc:
-            self.message.emit(f"Checkpoint not written ({exc}); an interruption restarts the job")
+            if self._state in ACTIVE and not self._failing:
+                self._failing = True
+                try:
+                    self.fail(
+                        min(completed + 1, len(program) - 1),
+                        f"the checkpoint could not be written to {self.checkpoint_dir} ({exc})",
+                    )
+                finally:
+                    self._failing = False
+            return False
+        return True
 
     def _read_checkpoint(self, program: Program) -> int | None:
         try:

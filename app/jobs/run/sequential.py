@@ -69,6 +69,14 @@ class SequentialDriver(JobDriver, ABC):
     def confirmed(self, index: int) -> None:
         self._clear()
 
+    def decided(self, index: int, *, again: bool) -> None:
+        if again:
+            self._verify = False
+            self._in_flight = index
+            self.proceed()
+        else:
+            self._done(index)
+
     def forget(self) -> None:
         self._clear()
 
