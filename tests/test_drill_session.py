@@ -240,3 +240,27 @@ def test_a_lost_link_clears_the_queue(drill: StationHarness) -> None:
     assert not session.busy
     assert not session.drill()  # motion is refused while the link is lost
     assert drill.drill_emulator.drill_log == ()
+
+
+def test_a_long_procedure_is_waited_for_and_a_missing_receipt_is_a_silent_link(
+    drill: StationHarness,
+) -> None:
+    """The D of a slow procedure is not a silence; a command nobody acknowledges is."""
+    session = drill.drill_session
+    silences: list[None] = []
+    session.linkLost.connect(lambda: silences.append(None))
+    assert session.home(0)  # both axes across their travel: many seconds
+    expected = session.expected_s(session.in_flight)  # type: ignore[arg-type]
+    assert expected > 3.0
+    drill.run_until(lambda: not session.busy, timeout=120)
+    assert silences == []
+
+    def to_device_only(direction: Direction, data: bytes) -> bytes:
+        return b"" if direction is Direction.TO_DEVICE else data
+
+    drill.loopback.set_manipulator(to_device_only)  # the command never arrives
+    assert session.move_absolute(0, 5.0)
+    drill.run(0.9)
+    assert silences == []
+    drill.run(0.3)
+    assert silences == [None]

@@ -359,3 +359,39 @@ def test_a_refused_command_fails_the_job_at_its_line(
     assert runner.done == first_drill
     assert any(f"Job failed at {program[first_drill].source}" in m for m in messages)
     assert drill.drill_emulator.drill_log == ()
+
+
+def test_a_silent_link_mid_drill_is_noticed_paused_and_recovered_without_reconnecting(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    """The port stays open but no byte passes (a pulled RS232 cable): no reply, no hang."""
+    program = sample_program(shared_dir)
+    drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
+    states: list[LinkState] = []
+    drill.station.model.linkStateChanged.connect(states.append)
+    assert runner.load(program) == []
+    runner.start()
+
+    def received_third_drill() -> bool:
+        if runner.state is JobState.WAITING:
+            runner.confirm()
+        return runner.current_index == drills[2] and drill.drill_emulator.positions[2] > 0
+
+    drill.run_until(received_third_drill, timeout=200)
+    drill.run(0.01)  # its RV reaches the station
+
+    def silence(_direction: Direction, _data: bytes) -> bytes:
+        return b""
+
+    drill.loopback.set_manipulator(silence)
+    waited = drill.run_until(lambda: runner.state is JobState.PAUSED, timeout=30)
+    assert waited < 2 * DRILL_CYCLE_S + 3.0 + 0.5  # the D's deadline, not forever
+    assert LinkState.LOST in states
+
+    drill.loopback.set_manipulator(None)
+    drill.run_until(lambda: drill.station.model.link_state is LinkState.CONNECTED, timeout=60)
+    runner.resume()  # no Disconnect/Connect: the station reopened the link itself
+    run_to_end(drill, runner)
+    assert runner.state is JobState.DONE
+    assert drilled(drill) == expected_holes(drill, program)
+    assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES

@@ -72,7 +72,7 @@ def _drill_session(
     period_ms: int,
     autotick: bool,
 ) -> MachineSession:
-    return DrillSession(model, link, clock)
+    return DrillSession(model, link, clock, autotick=autotick)
 
 
 def _gcode_session(

@@ -15,13 +15,10 @@ from decimal import ROUND_HALF_UP, Decimal
 from app.jobs.estimate.model import Estimate
 from app.jobs.program import OpKind, Program
 from app.profiles import MachineProfile
+from protocol.drill.timing import DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
 
-#: The PCB drill's seconds per microstep, per axis name (PROTOCOLS.md section 3).
-DRILL_STEP_PERIODS_S: Mapping[str, float] = {"X": 0.0013, "Y": 0.0015}
-#: One ``V``: Z down to the sensor and 12 microsteps more at 2.5 ms, 0.2 s dwell, up in full steps.
-DRILL_CYCLE_S = 1.35875
-#: One ``K`` or ``Z``: the pen's solenoid settling.
-PEN_TIME_S = 0.15
+__all__ = ["DRILL_CYCLE_S", "PEN_TIME_S", "estimate_drill"]
+
 #: Per drill command: its ``D`` leaves at the end of the control cycle in which the procedure
 #: ends, half a 5 ms cycle late on average; the host's next command starts at the cycle after.
 #: (A real 19200-baud line adds about half a millisecond per byte on top.)
@@ -61,7 +58,7 @@ def estimate_drill(
                 if name not in per_mm:
                     continue
                 target = _microsteps(target_mm, per_mm[name])
-                period = DRILL_STEP_PERIODS_S.get(name, 0.0)
+                period = STEP_PERIODS_S.get(name, 0.0)
                 elapsed += abs(target - where[name]) * period + overhead_s
                 where[name] = target
         elif op.kind is OpKind.DRILL:

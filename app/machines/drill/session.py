@@ -8,6 +8,12 @@ So every intent goes into a queue and the queue is fed one command per
 queued after it is dropped rather than run out of its context (a ``V`` after
 a refused ``X`` would drill in the wrong place).
 
+The device answers ``R`` at once and ``D`` when the procedure ends, so a
+silent link shows as a missing reply: the session gives the ``R`` a second
+and the ``D`` twice the procedure's expected time plus a margin
+(:mod:`protocol.drill.timing`), then reports the link silent; the station
+reopens it and a running job pauses.
+
 Positions are absolute microsteps from the machine's zero; the session
 converts millimetres with the profile's constants (steps per revolution x
 microsteps ÷ lead) and does all the rounding, half away from zero, in
@@ -19,7 +25,7 @@ from __future__ import annotations
 from collections import deque
 from decimal import ROUND_HALF_UP, Decimal
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -41,6 +47,14 @@ from protocol.drill.codec import (
     encode_command,
     encode_reply,
 )
+from protocol.drill.timing import DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
+
+#: Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle.
+RECEIPT_TIMEOUT_S = 1.0
+#: The ``D`` may take this much longer than expected (x) and then this many seconds more.
+DONE_FACTOR = 2.0
+DONE_MARGIN_S = 3.0
+TICK_MS = 100
 
 #: What each procedure is called in messages.
 PROCEDURES = {
@@ -72,13 +86,25 @@ class DrillSession(MachineSession):
     idle = Signal()
 
     def __init__(
-        self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
+        self,
+        model: MachineModel,
+        link: Link,
+        clock: Clock,
+        *,
+        autotick: bool = True,
+        parent: QObject | None = None,
     ) -> None:
         super().__init__(model, link, clock, parent)
         self.decoder = ReplyDecoder()
         self._queue: deque[Command] = deque()
         self._in_flight: Command | None = None
         self._received = False
+        #: Station-clock time by which the device must have answered the command in flight.
+        self._deadline: float | None = None
+        self._autotick = autotick
+        self._timer = QTimer(self)
+        self._timer.setInterval(TICK_MS)
+        self._timer.timeout.connect(self.tick)
         self._refused_lines = 0
         self._per_mm = [
             Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
@@ -205,6 +231,7 @@ class DrillSession(MachineSession):
         command = self._queue.popleft()
         self._in_flight = command
         self._received = False
+        self._deadline = self.clock.now() + RECEIPT_TIMEOUT_S
         raw = encode_command(command)
         self.link.write(raw)
         self.frameSent.emit(command, raw)
@@ -214,6 +241,43 @@ class DrillSession(MachineSession):
         self._queue.clear()
         self._in_flight = None
         self._received = False
+        self._deadline = None
+
+    # --- time --------------------------------------------------------------------
+
+    def tick(self) -> None:
+        """A device that does not answer in time means a silent link: say so, once."""
+        if self._deadline is None or self.clock.now() < self._deadline:
+            return
+        command = self._in_flight
+        self._deadline = None
+        what = command_text(command) if command is not None else "the last command"
+        waited = "its receipt" if not self._received else "the end of its procedure"
+        self.model.message.emit(f"The drill did not answer {what} ({waited}): the link is silent")
+        self.linkLost.emit()
+
+    def expected_s(self, command: Command) -> float:
+        """How long ``command``'s procedure should take on the reference machine."""
+        letter = command.letter
+        if letter in POSITION_LETTERS and command.value is not None:
+            axes = self._axes_named(letter)
+            if not axes:
+                return 0.0
+            here = self.to_microsteps(axes[0], self.model.axes[axes[0]].position)
+            return abs(command.value - here) * STEP_PERIODS_S.get(letter, 0.0)
+        if letter == "V":
+            return DRILL_CYCLE_S
+        if letter in "KZ":
+            return PEN_TIME_S
+        # Home and park run the axes across their whole travel.
+        return sum(
+            self.to_microsteps(axis, self.model.profile.axes[axis].travel)
+            * STEP_PERIODS_S.get(self.model.profile.axes[axis].name, 0.0)
+            for axis in self._axes_named(POSITION_LETTERS)
+        )
+
+    def shutdown(self) -> None:
+        self._timer.stop()
 
     # --- model --------------------------------------------------------------------
 
@@ -267,10 +331,13 @@ class DrillSession(MachineSession):
         self.decoder.reset()
         self._clear()
         self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        if self._autotick:
+            self._timer.start()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
 
     def _on_disconnected(self, reason: object) -> None:
+        self._timer.stop()
         dropped = len(self._queue) + (self._in_flight is not None)
         self._clear()
         self._show_stopped()
@@ -307,9 +374,13 @@ class DrillSession(MachineSession):
         text = command_text(command)
         if reply.kind is ReplyKind.RECEIVED:
             self._received = True
+            self._deadline = (
+                self.clock.now() + DONE_FACTOR * self.expected_s(command) + DONE_MARGIN_S
+            )
             self.commandReceived.emit(text)
         elif reply.kind is ReplyKind.DONE:
             self._in_flight = None
+            self._deadline = None
             self._show_done(command)
             self.commandDone.emit(text)
             if self._queue:
