@@ -200,11 +200,14 @@ def test_malformed_frame_is_dropped_counted_and_the_next_one_decodes(name: str) 
     assert decoder.frames == 1
 
 
-def test_endless_garbage_without_terminator_is_dropped() -> None:
+def test_endless_garbage_without_terminator_is_dropped_up_to_its_line_end() -> None:
+    """A frame on the same line as the garbage goes with it, as it would fed whole."""
     decoder = StageDecoder()
     results = decoder.feed(b"x" * 1000)
     assert len(results) == 1 and isinstance(results[0], Rejected)
+    assert decoder.feed(encode_echo(ECHO)) == []
     assert decoder.feed(encode_echo(ECHO)) == [ECHO]
+    assert decoder.rejected == 1
 
 
 @given(

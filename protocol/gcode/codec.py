@@ -305,6 +305,9 @@ def decode(buffer: bytes | bytearray) -> DecodeResult[GcodeReply]:
         return 0, None
     used = end + 1
     raw = bytes(buffer[:used])
+    if end >= MAX_REPLY_BYTES:
+        # Refused whole as it would be in pieces (see the unterminated case above).
+        return used, Rejected(raw, "too long")
     try:
         text = raw.decode("ascii").strip()
     except UnicodeDecodeError:

@@ -10,9 +10,13 @@ carries on with the next line.
 from __future__ import annotations
 
 import enum
+import functools
 from dataclasses import dataclass
 
 # Rejected is re-exported: readers of this dialect import it from here.
+from protocol.framing import (
+    LineDecoder,
+)
 from protocol.framing import (
     Rejected as Rejected,
 )
@@ -337,41 +341,25 @@ def decode(buffer: bytes | bytearray, axes: int = 2) -> tuple[int, Frame | Rejec
             return len(buffer), Rejected(bytes(buffer), "line too long")
         return 0, None
     used = end + 1
+    if end > MAX_LINE:
+        # Refused whole as it would be in pieces: never parse the tail of an over-long run.
+        return used, Rejected(bytes(buffer[:used]), "line too long")
     return used, parse_line(bytes(buffer[:used]), axes)
 
 
-class StageDecoder:
+class StageDecoder(LineDecoder[Frame]):
     """Stateful reader for a byte stream: buffers, resynchronises, counts.
 
     Transports hand over bytes in arbitrary pieces (20-byte BLE notifications,
-    several frames per serial read); this keeps the leftover between calls.
+    several frames per serial read); this keeps the leftover between calls, and
+    drops the rest of an over-long run up to its terminator, so a frame is
+    accepted or refused the same way wherever the stream was cut.
     """
 
     def __init__(self, axes: int = 2) -> None:
+        super().__init__(functools.partial(decode, axes=axes), TERMINATOR)
         self.axes = axes
-        self._buffer = bytearray()
-        self.frames = 0
-        self.rejected = 0
-        self.last_rejected: Rejected | None = None
 
-    def feed(self, data: bytes) -> list[Frame | Rejected]:
-        """Decode everything complete in ``data``; rejected lines are returned too."""
-        self._buffer += data
-        results: list[Frame | Rejected] = []
-        while True:
-            used, result = decode(self._buffer, self.axes)
-            if used == 0:
-                break
-            del self._buffer[:used]
-            if isinstance(result, Rejected):
-                self.rejected += 1
-                self.last_rejected = result
-            else:
-                self.frames += 1
-            if result is not None:
-                results.append(result)
-        return results
-
-    def reset(self) -> None:
-        """Forget a partial line, e.g. after the link was reopened."""
-        self._buffer.clear()
+    @property
+    def frames(self) -> int:
+        return self.messages
