@@ -318,3 +318,36 @@ def test_step_sends_one_line_at_a_time(plotter: StationHarness, runner: JobRunne
     runner.resume()
     run_to_end(plotter, runner)
     assert state_of(runner) is JobState.DONE and drawn(plotter) == EXPECTED
+
+
+@pytest.mark.parametrize("lost", [2, 6])  # an answer lost mid-job, and the last one
+def test_a_lost_ok_does_not_stall_the_job_and_nothing_is_drawn_twice(
+    qtbot: QtBot, tmp_path: Path, lost: int
+) -> None:
+    grbl = StationHarness(load_profile("grbl-plotter"))
+    grbl.connect()
+    grbl.run_until(lambda: grbl.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(grbl.station, tmp_path / "checkpoints")
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    grbl.station.model.message.connect(messages.append)
+    oks = [0]
+
+    def lose_one_ok(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_HOST and b"ok" in data:
+            oks[0] += data.count(b"ok")
+            if oks[0] >= lost and data.count(b"ok\r\n") and oks[0] - data.count(b"ok") < lost:
+                return data.replace(b"ok\r\n", b"", 1)
+        return data
+
+    try:
+        program = square_program()
+        assert runner.load(program) == []
+        grbl.loopback.set_manipulator(lose_one_ok)
+        runner.start()
+        grbl.run_until(lambda: runner.state is not JobState.RUNNING, timeout=60)
+        assert runner.state is JobState.DONE
+        assert any("lost on the way" in m for m in messages)
+        assert drawn(grbl) == EXPECTED
+    finally:
+        grbl.close()

@@ -87,6 +87,10 @@ class LineStreamer(Generic[T]):
         self._in_flight_bytes -= len(entry[0])
         return entry
 
+    def unanswered_tags(self) -> list[T]:
+        """The tags of the lines sent and not yet answered, oldest first."""
+        return [tag for _, tag in self._in_flight]
+
     @property
     def in_flight_bytes(self) -> int:
         return self._in_flight_bytes

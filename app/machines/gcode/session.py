@@ -17,6 +17,7 @@ without losing its position.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import count
@@ -54,6 +55,12 @@ JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
+#: Reports in a row, at least this far apart, that show every sent byte consumed and the
+#: machine idle with an empty planner while lines are unanswered: their answers were lost.
+LOST_ANSWER_REPORTS = 2
+LOST_ANSWER_AFTER_S = 0.5
+_COMMENT = re.compile(r"\([^)]*\)|;.*")
+_WORD = re.compile(r"([GM])\s*([-+]?\d+(?:\.\d*)?)")
 #: Fraction of an axis's top speed a held arrow jogs at.
 JOG_SPEED_SHARE = 0.5
 _MOVING_STATES = frozenset({"Run", "Jog", "Home"})
@@ -125,6 +132,11 @@ class GcodeSession(MachineSession):
         self._reset_requested_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
+        #: Since when (station clock) reports show the board done with everything sent, while
+        #: lines are unanswered, and how many reports in a row have.
+        self._drained_since: float | None = None
+        self._drained_reports = 0
+        self._stall_told = False
         self._autotick = autotick
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
@@ -410,6 +422,7 @@ class GcodeSession(MachineSession):
                 self.replyText.emit(reply.text)
 
     def _answered(self, error: ErrorReply | None) -> None:
+        self._stall_told = False
         entry = self.streamer.acknowledge()
         if entry is None:
             self.model.message.emit("A reply arrived for no line (ignored)")
@@ -433,6 +446,53 @@ class GcodeSession(MachineSession):
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
         self._pump()
+
+    def _check_lost_answers(self, report: StatusReport, planner_empty: bool) -> None:
+        """An ``ok`` lost on the wire would stall the stream forever: notice it, and say so.
+
+        GRBL answers every line once it has parsed it, so when its reports show
+        the receive buffer empty (``Bf:…,<all free>``), the planner empty and the
+        machine idle, reports in a row and some time apart, every line sent was
+        taken and answered: the missing answers were lost, and the lines count
+        as answered.  A line that pauses the board (a dwell, a program stop) is
+        still waited for; a board that reports no ``Bf:`` cannot show this, and
+        the operator is told the stream waits.
+        """
+        unanswered = self.streamer.unanswered_tags()
+        if not unanswered or report.state != "Idle":
+            self._drained_since, self._drained_reports = None, 0
+            return
+        now = self.clock.now()
+        drained = (
+            report.rx_free is not None
+            and report.rx_free >= self.settings.rx_buffer - 1
+            and report.planner_free is not None
+            and self._planner_size > 0
+            and planner_empty
+            and not any(_pauses(sent.text) for sent in unanswered)
+        )
+        if self._drained_since is None:
+            self._drained_since, self._drained_reports = now, 0
+        self._drained_reports += 1
+        waited = now - self._drained_since
+        if (
+            drained
+            and self._drained_reports >= LOST_ANSWER_REPORTS
+            and (waited >= LOST_ANSWER_AFTER_S)
+        ):
+            self._drained_since, self._drained_reports = None, 0
+            self.model.message.emit(
+                f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
+                "taken and run every line sent, so they count as answered"
+            )
+            for _ in unanswered:
+                self._answered(None)
+        elif not drained and waited >= SILENCE_S and not self._stall_told:
+            self._stall_told = True
+            self.model.message.emit(
+                f"{len(unanswered)} line(s) unanswered while the board stands idle; "
+                "waiting for its answer (without Bf: in its reports it cannot show it has them)"
+            )
 
     def _apply_status(self, report: StatusReport) -> None:
         self._status_asked_at = None
@@ -465,5 +525,16 @@ class GcodeSession(MachineSession):
         )
         if report.state == "Idle" and self.streamer.idle and planner_empty:
             self._seen_idle = True
+        self._check_lost_answers(report, planner_empty)
         self.statusChanged.emit(report)
         self._feed_jog()
+
+
+def _pauses(line: str) -> bool:
+    """Whether ``line`` may keep the board idle and answer only later (a dwell, a stop)."""
+    code = _COMMENT.sub("", line).upper()
+    for letter, number in _WORD.findall(code):
+        value = float(number)
+        if (letter == "G" and value == 4) or (letter == "M" and value in (0, 1, 2, 30)):
+            return True
+    return False
