@@ -256,7 +256,9 @@ def test_sent_and_received_frames_are_logged_in_words(
     assert [e.raw for e in tx] == [escape_raw(raw) for raw in connected.written[-len(tx) :]]
     times = [e.time for e in log.entries]
     assert times == sorted(times)
-    assert log.origin <= times[0] and times[-1] == connected.clock.now()
+    period = connected.session.period_ms / 1000
+    assert log.origin <= times[0]
+    assert connected.clock.now() - period <= times[-1] <= connected.clock.now()
     assert log.entries[-1].line.startswith(f"{times[-1] - log.origin:9.3f}  ")
 
 
@@ -354,7 +356,8 @@ def test_controls_are_available_only_with_the_emulator_connected(
         harness.connect()
     assert changed.args == [True] and controls.available
     state = controls.state()
-    assert state is not None and state.battery_percent == 80.0 and not state.charger
+    # the emulator starts at 80 % and drains only slowly while the link waits for its answer
+    assert state is not None and 79.9 < state.battery_percent <= 80.0 and not state.charger
     with qtbot.waitSignal(controls.availabilityChanged) as changed:
         harness.station.close_link()
     assert changed.args == [False] and not controls.available

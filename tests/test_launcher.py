@@ -31,7 +31,8 @@ def test_switching_machine_rebuilds_station_and_window(qtbot: QtBot, store: QSet
         assert first.link is None  # the old machine was stopped and its link closed
         assert launcher.station is not None and launcher.station.profile.name == "usb3"
         assert launcher.window.windowTitle() == "StepDeck — Three-axis USB unit"
-        assert launcher.station.model.link_state is LinkState.CONNECTED
+        station = launcher.station
+        qtbot.waitUntil(lambda: station.model.link_state is LinkState.CONNECTED, timeout=5000)
         assert StationSettings(store).profile == "usb3"
     finally:
         launcher.shutdown()

@@ -78,7 +78,9 @@ def test_failed_reopens_back_off_longer_each_time(harness: StationHarness) -> No
             times.append(harness.clock.now())
     gaps = [round(b - a, 2) for a, b in itertools.pairwise(times)]
     assert gaps == [0.5, 1.0, 2.0]
-    assert model.link_state is LinkState.CONNECTED
+    # Open at last, but a silent port proves no device: waiting for one, motion locked.
+    assert model.link_state is LinkState.CONNECTING
+    assert model.motion_lock_reason() == "not connected"
     harness.station.close_link()
     assert harness.station.reconnect_due is None
 

@@ -99,7 +99,8 @@ def test_emulator_choice_connects_the_built_in_stage(
     panel = make_panel()
     panel.select_transport("emulator")
     qtbot.mouseClick(panel.connect_button, LEFT)
-    assert harness.station.model.link_state is LinkState.CONNECTED
+    # Open, then connected once the emulated stage has answered (its first echo).
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.CONNECTED)
     assert panel.state_label.text().startswith("connected")
     qtbot.mouseClick(panel.disconnect_button, LEFT)
     assert harness.station.model.link_state is LinkState.DISCONNECTED

@@ -12,8 +12,14 @@ from collections.abc import Sequence
 from PySide6.QtCore import QObject, Signal
 
 from app.link import Link
-from app.machine import MachineModel
+from app.machine import LinkState, MachineModel
 from protocol.clock import Clock
+from protocol.sniff import sounds_like
+
+#: Seconds a device has to give its first valid reply before the operator is told.
+ANSWER_WAIT_S = 3.0
+#: Bytes of unrecognised replies kept to tell which machine is there instead.
+_HEARD_KEPT = 512
 
 
 class MachineSession(QObject):
@@ -32,6 +38,10 @@ class MachineSession(QObject):
         self.axis_count = len(model.axes)
         self._jog = [0] * self.axis_count
         self._fast_selected = True
+        self._device_heard = False  # a valid reply in this dialect came since the link opened
+        self._awaiting_since: float | None = None
+        self._told_no_answer = False
+        self._unrecognised = bytearray()
 
     # --- state the widgets read ------------------------------------------------
 
@@ -91,6 +101,50 @@ class MachineSession(QObject):
 
     def shutdown(self) -> None:
         """Stop timers; the link is closed by the station."""
+
+    # --- "connected" means the device answers ----------------------------------------
+
+    @property
+    def device_answered(self) -> bool:
+        return self._device_heard
+
+    def _await_device(self) -> None:
+        """The port is open: motion stays locked until the device answers in this dialect."""
+        self._device_heard = False
+        self._awaiting_since = self.clock.now()
+        self._told_no_answer = False
+        self._unrecognised.clear()
+        self.model.set_link_state(
+            LinkState.CONNECTING, f"{self.link.describe()} — waiting for the device…"
+        )
+
+    def _device_answered(self) -> None:
+        """A valid reply in this dialect: the link is up (and back, after silence)."""
+        if not self._device_heard:
+            self._device_heard = True
+            self._awaiting_since = None
+            self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+
+    def _heard_unrecognised(self, raw: bytes) -> None:
+        """Bytes from the device before it answered: kept to tell which machine it is."""
+        if not self._device_heard:
+            self._unrecognised += raw
+            del self._unrecognised[:-_HEARD_KEPT]
+
+    def _check_answer(self) -> None:
+        """Called each tick: a device silent (or speaking another dialect) is named once."""
+        since = self._awaiting_since
+        if self._device_heard or since is None or self._told_no_answer:
+            return
+        if self.clock.now() - since < ANSWER_WAIT_S:
+            return
+        self._told_no_answer = True
+        profile = self.model.profile
+        other = sounds_like(bytes(self._unrecognised), besides=profile.dialect)
+        heard = f"; its replies sound like {other}" if other else ""
+        detail = f"no answer: is this a {profile.title}? Check the profile, baud and port{heard}"
+        self.model.set_link_state(LinkState.CONNECTING, detail)
+        self.model.message.emit(f"{self.link.describe()}: {detail}")
 
     def _unsupported(self, what: str) -> bool:
         self.model.message.emit(f"{self.model.profile.title} has no {what}")

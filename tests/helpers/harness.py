@@ -37,10 +37,18 @@ class StationHarness:
         # Hook each new link before it opens, so the frames sent at connect are recorded too.
         self.station.sessionChanged.connect(self._record_link)
 
-    def connect(self) -> None:
+    def connect(self, *, wait_for_answer: bool = True) -> None:
+        """Open the emulator link; by default also step until the device has answered.
+
+        "Connected" means the device answered in its dialect, so motion stays
+        locked until then; tests that look at that first moment pass False.
+        """
         self.station.connect_emulator()
-        assert self.station.session is not None
-        self._next_tick = self.clock.now() + self.station.session.period_ms / 1000
+        session = self.station.session
+        assert session is not None
+        self._next_tick = self.clock.now() + session.period_ms / 1000
+        if wait_for_answer:
+            self.run_until(lambda: session.device_answered, timeout=5.0)
 
     def _record_link(self) -> None:
         if self.station.link is not None:

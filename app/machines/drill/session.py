@@ -55,6 +55,9 @@ RECEIPT_TIMEOUT_S = 1.0
 DONE_FACTOR = 2.0
 DONE_MARGIN_S = 3.0
 TICK_MS = 100
+#: Sent once a link opens, to hear the drill answer: no command has this letter.
+PROBE_LETTER = "I"
+PROBE = f"{PROBE_LETTER}\r".encode("ascii")
 
 #: What each procedure is called in messages.
 PROCEDURES = {
@@ -101,6 +104,7 @@ class DrillSession(MachineSession):
         self._received = False
         #: Station-clock time by which the device must have answered the command in flight.
         self._deadline: float | None = None
+        self._probe_sent = False
         self._autotick = autotick
         self._timer = QTimer(self)
         self._timer.setInterval(TICK_MS)
@@ -247,6 +251,7 @@ class DrillSession(MachineSession):
 
     def tick(self) -> None:
         """A device that does not answer in time means a silent link: say so, once."""
+        self._check_answer()
         if self._deadline is None or self.clock.now() < self._deadline:
             return
         command = self._in_flight
@@ -330,9 +335,14 @@ class DrillSession(MachineSession):
     def _on_connected(self) -> None:
         self.decoder.reset()
         self._clear()
-        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._await_device()
         if self._autotick:
             self._timer.start()
+        # The drill speaks only when spoken to: a letter that is no command is answered
+        # E, which proves a drill is there and moves nothing.
+        self._probe_sent = True
+        self.link.write(PROBE)
+        self.frameSent.emit(PROBE.decode("ascii").strip(), PROBE)
         for axis in range(self.axis_count):
             self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
 
@@ -352,12 +362,17 @@ class DrillSession(MachineSession):
             )
 
     def _on_data(self, data: bytes) -> None:
+        self._heard_unrecognised(data)  # kept until the device answers: whose words?
         for reply in self.decoder.feed(data):
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
                 self.model.message.emit(f"Garbage from the drill dropped: {reply.raw!r}")
                 continue
             self.frameReceived.emit(reply, encode_reply(reply))
+            self._device_answered()
+            if self._probe_sent and reply.kind is ReplyKind.ERROR and reply.letter == PROBE_LETTER:
+                self._probe_sent = False  # the answer to the probe, not to a command
+                continue
             self._on_reply(reply)
 
     def _on_reply(self, reply: Reply) -> None:

@@ -335,15 +335,16 @@ class GcodeSession(MachineSession):
     # --- time -----------------------------------------------------------------------
 
     def tick(self) -> None:
-        """Ask for the status; notice a device that stopped answering."""
+        """Ask for the status; notice a device that stopped answering (or never did)."""
         if not self.link.is_open:
             return
+        self._check_answer()
         now = self.clock.now()
         requested = self._reset_requested_at
         if requested is not None and now - requested > RESET_AFTER_S:
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
-        if now - self._last_heard > SILENCE_S:
+        if self.device_answered and now - self._last_heard > SILENCE_S:
             self._last_heard = now
             self.model.message.emit(f"No reply from the device for {SILENCE_S:g} s")
             self.linkLost.emit()
@@ -370,7 +371,7 @@ class GcodeSession(MachineSession):
         self._status_asked_at = None
         self._reset_requested_at = None
         self._last_heard = self.clock.now()
-        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._await_device()
         if self._autotick:
             self._timer.start()
         self.query_status()
@@ -394,12 +395,14 @@ class GcodeSession(MachineSession):
         self._on_data(data)
 
     def _on_data(self, data: bytes) -> None:
+        self._heard_unrecognised(data)  # kept until the device answers: whose words?
         for reply in self.decoder.feed(data):
-            self._last_heard = self.clock.now()
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
                 continue
+            self._last_heard = self.clock.now()
+            self._device_answered()
             self.frameReceived.emit(reply, reply_bytes(reply))
             if isinstance(reply, Ok):
                 self._answered(None)

@@ -200,6 +200,7 @@ class StageSession(MachineSession):
 
     def tick(self) -> None:
         """One period: health check, then the periodic frame."""
+        self._check_answer()
         self._check_health()
         if self.link.is_open:
             self._send_frame()
@@ -264,7 +265,7 @@ class StageSession(MachineSession):
         self._last_echo = self.clock.now()
         self._device_fast = None
         self._jog = [0] * self.axis_count
-        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._await_device()
         self._sync_speed()
         self.read_all_parameters()
         if self._autotick:
@@ -298,6 +299,7 @@ class StageSession(MachineSession):
             self.model.set_link_state(LinkState.STALE, f"no reply for {silent:.1f} s")
 
     def _on_data(self, data: bytes) -> None:
+        self._heard_unrecognised(data)  # kept until the device answers: whose words?
         for result in self.decoder.feed(data):
             if isinstance(result, Rejected):
                 self.frameReceived.emit(result, result.raw)
@@ -317,6 +319,7 @@ class StageSession(MachineSession):
         self._last_echo = self.clock.now()
         if self.model.link_state in (LinkState.STALE, LinkState.LOST):
             self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._device_answered()
         self.echoes.apply(echo)
 
     def shutdown(self) -> None:

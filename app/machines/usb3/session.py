@@ -186,6 +186,7 @@ class Usb3Session(MachineSession):
 
     def tick(self) -> None:
         """Keep held jogs fed and notice axes that stopped reporting."""
+        self._check_answer()
         if any(self._jog):
             self._send_jog_lead(TICK_MS / 1000)
         now = self.clock.now()
@@ -228,7 +229,7 @@ class Usb3Session(MachineSession):
         self.decoder.reset()
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
-        self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        self._await_device()
         if self._autotick:
             self._timer.start()
         self.request_settings()
@@ -243,6 +244,7 @@ class Usb3Session(MachineSession):
             self.model.message.emit(f"Link lost: {reason}")
 
     def _on_data(self, data: bytes) -> None:
+        self._heard_unrecognised(data)  # kept until the device answers: whose words?
         for reply in self.decoder.feed(data):
             raw = reply.raw if isinstance(reply, Rejected) else encode(reply)
             if isinstance(reply, NotUnderstood):
@@ -252,7 +254,9 @@ class Usb3Session(MachineSession):
             self.frameReceived.emit(reply, raw)
             if isinstance(reply, Rejected):
                 self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
-            elif isinstance(reply, Position):
+                continue
+            self._device_answered()
+            if isinstance(reply, Position):
                 self._apply_position(reply.axis, reply.count)
             elif isinstance(reply, StepSizes):
                 self.step_sizes[: self.axis_count] = list(reply.sizes)[: self.axis_count]

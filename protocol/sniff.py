@@ -1,0 +1,43 @@
+"""Which machine a byte stream sounds like: for a station connected to the wrong one.
+
+A station set up for one machine but cabled to another hears only garbage in
+its own dialect; each dialect's reply decoder, run over the same bytes, tells
+whose replies they are.  Pure and headless, like every codec.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from protocol.drill.codec import ReplyDecoder as DrillReplies
+from protocol.framing import Rejected
+from protocol.gcode.codec import make_decoder as gcode_replies
+from protocol.stage.codec import EchoFrame, StageDecoder
+from protocol.usb3.codec import ReplyDecoder as Usb3Replies
+
+#: Dialect → words for the operator, and a reader of that dialect's replies.
+_READERS: dict[str, tuple[str, Callable[[], object]]] = {
+    "stage": ("an XY stage", StageDecoder),
+    "usb3": ("a three-axis USB unit", Usb3Replies),
+    "drill": ("a PCB drill", DrillReplies),
+    "gcode": ("a G-code board (GRBL or alike)", gcode_replies),
+}
+
+
+def replies_in(dialect: str, data: bytes) -> int:
+    """How many well-formed replies of ``dialect`` the bytes hold."""
+    reader = _READERS[dialect][1]()
+    results = reader.feed(data)  # type: ignore[attr-defined]
+    if dialect == "stage":
+        # A command frame is what a stage is *sent*: only echoes count as its replies.
+        return sum(isinstance(r, EchoFrame) for r in results)
+    return sum(not isinstance(r, Rejected) for r in results)
+
+
+def sounds_like(data: bytes, besides: str) -> str | None:
+    """The machine the bytes sound like (in words), other than ``besides``; None if none."""
+    scores = {dialect: replies_in(dialect, data) for dialect in _READERS if dialect != besides}
+    best = max(scores, key=lambda d: scores[d], default=None)
+    if best is None or scores[best] == 0:
+        return None
+    return _READERS[best][0]
