@@ -57,12 +57,12 @@ def test_positions_keep_updating_while_parameters_are_read(harness: StationHarne
 def test_intent_change_sends_a_frame_at_once_without_a_tick(harness: StationHarness) -> None:
     harness.run(1.0)
     before = len(harness.written)
-    harness.session.set_jog([1, -1])  # no step: no tick, no emulated time
+    harness.session.set_jog([1, 1])  # no step: no tick, no emulated time
     sent = _frames(harness.written[before:])
     assert sent, "the jog did not reach the transport"
     assert [(p.command, p.data) for p in sent[-1].packets] == [
         (CommandId.JOG, 1),
-        (CommandId.JOG, -1),
+        (CommandId.JOG, 1),
     ]
     before = len(harness.written)
     harness.session.set_jog([0, 0])
@@ -102,7 +102,7 @@ def test_shift_switches_speed_before_the_jog_in_the_same_burst(harness: StationH
     assert commands.index(CommandId.SPEED) < commands.index(CommandId.JOG)
     harness.run(0.05)
     assert not harness.emulator.speed_is_fast(0)
-    harness.run(2.0)
+    harness.hold(2.0)
     slow = harness.emulator.parameter(0, EchoType.SLOW_SPEED)
     assert harness.station.model.axes[0].velocity == pytest.approx(slow / 1000, rel=0.05)
 

@@ -152,18 +152,20 @@ def test_a_distance_between_steps_moves_and_shows_the_reachable_one(
 ) -> None:
     session, model = unit.usb3_session, unit.station.model
     session.set_thread(Y, Thread.M4)  # 0.7 mm pitch: 9142.857… counts a mm
-    reachable = session.reachable(Y, -1.25)
+    reachable = session.reachable(Y, 1.25)
     # 11428.57 counts is 2857.14 eighth-step pulses: 2857 pulses = 11428 counts.
-    assert reachable == count_to_mm(-11428, Thread.M4) == pytest.approx(-1.2499375)
-    assert reachable != -1.25
+    assert reachable == count_to_mm(11428, Thread.M4) == pytest.approx(1.2499375)
+    assert reachable != 1.25
 
     mark = len(unit.written)
-    assert session.move_relative(Y, -1.25)
-    assert sent_since(unit, mark) == b"D+-+;Y000000000011428;"
+    assert session.move_relative(Y, 1.25)
+    assert sent_since(unit, mark) == b"D+++;Y000000000011428;"
     wait_idle(unit, Y)
 
     assert model.axes[Y].position == reachable
-    assert unit.usb3_emulator.positions == (0, -11428, 0)
+    assert unit.usb3_emulator.positions == (0, 11428, 0)
+    # Back past the zero it is counted from would leave the travel: refused.
+    assert not session.move_relative(Y, -1.5)
 
 
 def test_a_move_of_less_than_one_step_is_refused_with_a_message(unit: StationHarness) -> None:
@@ -210,11 +212,11 @@ def test_a_menu_change_on_the_unit_reaches_the_session_and_rescales_positions(
 
 def test_zero_all_sets_every_position_to_0_without_a_false_motion(unit: StationHarness) -> None:
     session, model = unit.usb3_session, unit.station.model
-    for axis, mm in ((X, 0.5), (Y, -0.25), (Z, 0.125)):
+    for axis, mm in ((X, 0.5), (Y, 0.25), (Z, 0.125)):
         assert session.move_relative(axis, mm)
     for axis in (X, Y, Z):
         wait_idle(unit, axis)
-    assert [a.position for a in model.axes] == [0.5, -0.25, 0.125]
+    assert [a.position for a in model.axes] == [0.5, 0.25, 0.125]
     seen = [statuses(unit, axis) for axis in (X, Y, Z)]
 
     mark = len(unit.written)
@@ -228,9 +230,9 @@ def test_zero_all_sets_every_position_to_0_without_a_false_motion(unit: StationH
     assert seen == [["idle"]] * 3  # the new zero is not shown as a motion
 
     # Counting goes on from the new zero.
-    assert session.move_relative(X, -0.5)
+    assert session.move_relative(X, 0.5)
     wait_idle(unit, X)
-    assert model.axes[X].position == -0.5
+    assert model.axes[X].position == 0.5
 
 
 def test_zero_all_during_a_move_keeps_the_axis_moving_from_its_new_zero(
@@ -269,7 +271,7 @@ def test_a_held_jog_moves_x_continuously_and_the_release_stops_it_at_once(
     session.set_jog([1, 0, 0])
     track: list[float] = []
     for _ in range(20):  # held for 2 s, looked at every 100 ms
-        unit.run(0.1)
+        unit.hold(0.1)
         track.append(x.position)
     assert unit.usb3_emulator.moving(AxisId.X)
     assert x.status_text == "moving"

@@ -107,6 +107,18 @@ def test_a_jog_key_reaches_the_wire_before_any_tick(qtbot: QtBot, harness: Stati
     assert frame.packets[0] == CommandPacket(CommandId.JOG, 0)
 
 
+def _hold_key(harness: StationHarness, key: Qt.Key, seconds: float) -> None:
+    """Keep a key held: its auto-repeat presses arrive every 0.1 s, as a keyboard's do."""
+    for _ in range(round(seconds / 0.1)):
+        harness.run(0.1)
+        target = QApplication.focusWidget()
+        assert target is not None
+        repeat = QKeyEvent(
+            QEvent.Type.KeyPress, key, Qt.KeyboardModifier.NoModifier, "", autorep=True
+        )
+        QApplication.sendEvent(target, repeat)
+
+
 def _jog_right_until_moving(qtbot: QtBot, harness: StationHarness, window: MainWindow) -> None:
     qtbot.keyPress(window, Qt.Key.Key_Right)
     harness.run_until(lambda: status(window, 0) == "constant speed", timeout=2)
@@ -167,7 +179,7 @@ def test_focus_moving_inside_the_window_keeps_the_jog(
     _jog_right_until_moving(qtbot, harness, window)
     window.absolute_panel.targets[1].setFocus()
     qtbot.waitUntil(window.absolute_panel.targets[1].hasFocus)
-    harness.run(0.6)  # longer than the device's jog watchdog
+    _hold_key(harness, Qt.Key.Key_Right, 0.6)  # longer than the device's jog watchdog
     assert status(window, 0) == "constant speed"
     qtbot.keyRelease(window.absolute_panel.targets[1], Qt.Key.Key_Right)
     harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
@@ -474,7 +486,10 @@ def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(qtbot: QtBot, n
         sent = len(plotter.written)
         qtbot.keyPress(window, Qt.Key.Key_Right)
         # At once, not at the next status tick: the first jog step is already on the wire.
-        assert any(b"G91 G1 " in chunk for chunk in plotter.written[sent:])
+        # A jog line ($J= where the board has it), never a switch to relative mode.
+        line = b"$J=G91 " if name == "grbl-plotter" else b"G90 G1 "
+        assert any(chunk.startswith(line) for chunk in plotter.written[sent:])
+        assert not any(chunk.startswith(b"G91") for chunk in plotter.written)
         plotter.run(0.5)
         qtbot.keyRelease(window, Qt.Key.Key_Right)
         plotter.run_until(lambda: plotter.gcode_session.settled, timeout=5)

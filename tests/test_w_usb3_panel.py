@@ -127,14 +127,19 @@ def test_changing_the_thread_sends_it_and_the_reachable_distance_follows(
 def test_send_moves_the_axis_by_the_reachable_distance(
     qtbot: QtBot, usb3: StationHarness, panel: Usb3Panel
 ) -> None:
-    type_distance(qtbot, panel.distances[Z], "-1.5")
+    type_distance(qtbot, panel.distances[Z], "1.5")
     mark = len(usb3.written)
     click(qtbot, panel.send_buttons[Z])
 
-    assert sent_since(usb3, mark) == b"D++-;Z000000000009600;"
+    assert sent_since(usb3, mark) == b"D+++;Z000000000009600;"
     wait_idle(usb3, Z)
-    assert usb3.station.model.axes[Z].position == -1.5
-    assert usb3.usb3_emulator.positions == (0, 0, -9600)
+    assert usb3.station.model.axes[Z].position == 1.5
+    assert usb3.usb3_emulator.positions == (0, 0, 9600)
+    # Back below the zero the unit counts from would leave the travel: nothing is sent.
+    type_distance(qtbot, panel.distances[Z], "-2")
+    mark = len(usb3.written)
+    click(qtbot, panel.send_buttons[Z])
+    assert sent_since(usb3, mark) == b""
 
 
 def test_zero_button_zeroes_every_axis(

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Hashable, Sequence
 
-from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtCore import QObject, Qt, QTimer, Signal
+from PySide6.QtGui import QGuiApplication
 
 from app.station import Station
 
@@ -26,6 +27,8 @@ JOG_KEYS: dict[int, tuple[int, int]] = {
     Qt.Key.Key_PageUp: (2, +1),
     Qt.Key.Key_PageDown: (2, -1),
 }
+#: How often a held on-screen button is checked for still being held (the dead-man's sign).
+BUTTON_POLL_MS = 200
 
 
 class JogInput(QObject):
@@ -44,8 +47,14 @@ class JogInput(QObject):
         self._shift = False
         self._enabled = True
         self._sent: tuple[int, ...] = (0,) * self._axes
+        # A held button sends no repeats: the mouse's state is looked at instead.
+        self._button_poll = QTimer(self)
+        self._button_poll.setInterval(BUTTON_POLL_MS)
+        self._button_poll.timeout.connect(self._poll_buttons)
         # A new session starts with no jog; forget what the old one was told.
         station.sessionChanged.connect(self._forget)
+        station.sessionChanged.connect(self._follow_session)
+        self._follow_session()
 
     # --- queries -------------------------------------------------------------
 
@@ -76,6 +85,15 @@ class JogInput(QObject):
             self._push()
         return True
 
+    def key_repeat(self, key: int) -> bool:
+        """An auto-repeat of a held key: the sign the station's dead-man waits for."""
+        if key not in self._keys:
+            return False
+        session = self._station.session
+        if session is not None:
+            session.keep_jogging()
+        return True
+
     def key_release(self, key: int) -> bool:
         """A key came up; returns whether it was a held jog key."""
         if key not in self._keys:
@@ -90,6 +108,7 @@ class JogInput(QObject):
             return
         padded = (*directions, *(0,) * self._axes)[: self._axes]
         self._buttons[source] = tuple(padded)
+        self._button_poll.start()
         self._push()
 
     def button_release(self, source: Hashable) -> None:
@@ -159,6 +178,27 @@ class JogInput(QObject):
         if vector != self._sent:
             self._sent = vector
             self.vectorChanged.emit(vector)
+
+    def _poll_buttons(self) -> None:
+        """While a button is held and the mouse says so, the jog goes on."""
+        if not self._buttons:
+            self._button_poll.stop()
+            return
+        held = QGuiApplication.mouseButtons() & Qt.MouseButton.LeftButton
+        session = self._station.session
+        if held and session is not None:
+            session.keep_jogging()
+
+    def _follow_session(self) -> None:
+        session = self._station.session
+        if session is not None:
+            session.jogEnded.connect(self._jog_ended)
+
+    def _jog_ended(self, _reason: str) -> None:
+        """The session ended the jog (dead-man): what we thought held is let go."""
+        self._keys.clear()
+        self._buttons.clear()
+        self._set_sent((0,) * self._axes)
 
     def _forget(self) -> None:
         self._keys.clear()

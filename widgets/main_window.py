@@ -356,7 +356,9 @@ class MainWindow(QMainWindow):
         if not self.jog.is_jog_key(key):
             return False
         if event.isAutoRepeat():
-            # The key is already held: swallow the repeats so they do not reach a widget.
+            # The key is already held: its repeats feed the dead-man and reach no widget.
+            if press:
+                return self.jog.key_repeat(key)
             return self.jog.is_held(key)
         if not press:
             return self.jog.key_release(key)

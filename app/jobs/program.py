@@ -108,6 +108,10 @@ class Program:
     source: Path | None = None
     #: What the loader wants the operator to know (e.g. the travel its ordering saved).
     notes: tuple[str, ...] = ()
+    #: Axes the job moves relative to wherever the machine stands when it starts (a G-code
+    #: file's G91 or G92 before it set them); its positions on them are as if that were 0,
+    #: so the runner starts it only from there.
+    start_relative: tuple[str, ...] = ()
     #: What :meth:`preview_path` gives: "axes", the two axes asked for as they are (the
     #: preview projects them on a polar machine), or "board", the work's own plane in mm
     #: whatever the axes (a job that knows its geometry projects itself, and better).

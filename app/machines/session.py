@@ -13,6 +13,7 @@ from PySide6.QtCore import QObject, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.motion_gate import MotionGate
 from protocol.clock import Clock
 from protocol.sniff import sounds_like
 
@@ -20,6 +21,10 @@ from protocol.sniff import sounds_like
 ANSWER_WAIT_S = 3.0
 #: Bytes of unrecognised replies kept to tell which machine is there instead.
 _HEARD_KEPT = 512
+#: A held jog with no sign for this long that the key or button is still held ends (the
+#: station's dead-man).  Longer than a keyboard's auto-repeat delay (0.25 to 0.66 s), whose
+#: repeats are the sign for a key; a held button is polled for it.
+JOG_DEADMAN_S = 1.0
 
 
 class MachineSession(QObject):
@@ -27,6 +32,8 @@ class MachineSession(QObject):
     frameReceived = Signal(object, bytes)  # decoded message or a rejected one, raw bytes
     linkLost = Signal()  # the device fell silent: the station reopens the link
     ticked = Signal()  # one period passed (station-clock time for whoever waits on the device)
+    #: A held jog ended without a release (dead-man or travel end): forget what is held.
+    jogEnded = Signal(str)
 
     def __init__(
         self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
@@ -37,6 +44,8 @@ class MachineSession(QObject):
         self.clock = clock
         self.axis_count = len(model.axes)
         self._jog = [0] * self.axis_count
+        self._jog_evidence_at: float | None = None  # last sign the jog is still held
+        self.gate = MotionGate(model)
         self._fast_selected = True
         self._device_heard = False  # a valid reply in this dialect came since the link opened
         self._awaiting_since: float | None = None
@@ -74,6 +83,33 @@ class MachineSession(QObject):
 
     def stop_all(self) -> None:
         self._unsupported("stop command")
+
+    # --- the dead-man: a held jog needs signs that it is still held -------------------
+
+    def keep_jogging(self) -> None:
+        """A sign that the held key or button is still held (a key repeat, a button poll)."""
+        if any(self._jog):
+            self._jog_evidence_at = self.clock.now()
+
+    def _jog_started(self) -> None:
+        """Sessions call this when a jog begins or changes: that is a sign too."""
+        self._jog_evidence_at = self.clock.now() if any(self._jog) else None
+
+    def _check_deadman(self) -> None:
+        """Called each tick: a jog whose holding shows no sign of life ends."""
+        since = self._jog_evidence_at
+        if not any(self._jog) or since is None:
+            return
+        silent = self.clock.now() - since
+        if silent > JOG_DEADMAN_S:
+            self._jog_evidence_at = None
+            self.set_jog((0,) * self.axis_count)
+            reason = (
+                f"Jog ended: no sign for {silent:.1f} s that the key or button is still held "
+                "(press it again to jog on)"
+            )
+            self.model.message.emit(reason)
+            self.jogEnded.emit(reason)
 
     def move_relative(self, axis: int, delta: float) -> bool:
         return self._unsupported("relative moves")

@@ -54,6 +54,7 @@ from __future__ import annotations
 
 import json
 from collections import deque
+from dataclasses import replace
 from typing import Any
 
 from protocol.clock import Clock
@@ -76,8 +77,8 @@ from protocol.emulator.gcode_planner import (
     Planner,
     SetPosition,
 )
-from protocol.gcode.codec import CYCLE_START, FEED_HOLD, SOFT_RESET, STATUS_QUERY
-from protocol.gcode.words import WordError, split_words, strip_comments
+from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
+from protocol.gcode.words import Word, WordError, split_words, strip_comments
 
 __all__ = [
     "LOG_LENGTH",
@@ -100,6 +101,11 @@ GcodeEvent = dict[str, Any]
 # GRBL's error codes the firmware itself gives (the parser's are in the interpreter).
 INVALID_STATEMENT = 3
 NOT_IDLE = 8
+UNDEFINED_FEED = 22
+#: GRBL 1.1: a ``$J=`` line with a word a jog may not have (error:16).
+INVALID_JOG = 16
+#: The G words a jog line may carry (GRBL's jogging documentation); F is required.
+_JOG_G_WORDS = frozenset({20.0, 21.0, 53.0, 90.0, 91.0})
 GCODE_LOCKED = 9
 LINE_OVERFLOW = 11
 
@@ -145,6 +151,8 @@ class GcodeFirmware(ControlCycles):
         self._events: deque[GcodeEvent] = deque(maxlen=LOG_LENGTH)
         self._booted = False
         self._lost_booting = 0
+        #: 0x85 came during a jog: brake, then drop the jog's blocks once it stands.
+        self._jog_cancelling = False
         self._send_banner()
 
     # -- EmulatedDevice --------------------------------------------------------------------
@@ -163,6 +171,8 @@ class GcodeFirmware(ControlCycles):
                     self.cycle_start()
                 elif byte == SOFT_RESET[0]:
                     self.soft_reset()
+                elif byte == JOG_CANCEL[0] and self.config.jogging:
+                    self.jog_cancel()
                 elif len(self._rx) >= self._rx_capacity:
                     self._overflows += 1
                 else:
@@ -189,10 +199,32 @@ class GcodeFirmware(ControlCycles):
             if self._alarm is None and self._planner.resume():
                 self._log("resume", pos=self._where())
 
+    def jog_cancel(self) -> None:
+        """0x85: a jog brakes to a stop and the jog blocks queued behind it are dropped."""
+        with self._lock:
+            if self.state == "Jog" and not self._jog_cancelling:
+                self._jog_cancelling = True
+                self._planner.hold()
+                self._log("jog cancel", pos=self._where())
+
+    def _finish_jog_cancel(self) -> None:
+        """The cancelled jog stands: forget its blocks, keep the position, back to Idle."""
+        if not self._jog_cancelling or self._planner.hold_state is not HoldState.HELD:
+            return
+        self._jog_cancelling = False
+        if self._pending_line is not None:  # a jog line half queued is answered all the same
+            self._answer(self.config.reply_ok, *self._pending_line)
+        self._planner.stop()
+        self._pending.clear()
+        self._pending_line = None
+        self._interpreter.position = self._planner.position()
+        self._log("jog cancelled", pos=self._where())
+
     def soft_reset(self) -> None:
         """0x18: stop at once, forget every line and block, keep the position, say the banner."""
         with self._lock:
             self._stop()
+            self._jog_cancelling = False
             self._rx.clear()
             self._overlong = 0
             self._unacked = 0
@@ -239,9 +271,12 @@ class GcodeFirmware(ControlCycles):
         with self._lock:
             if self._alarm is not None:
                 return "Alarm"
+            current = self._planner.current
+            jogging = isinstance(current, Move) and current.kind == "jog"
+            if self._jog_cancelling or (jogging and self._planner.hold_state is HoldState.RUNNING):
+                return "Jog"
             if self._planner.hold_state is not HoldState.RUNNING:
                 return "Hold"
-            current = self._planner.current
             if isinstance(current, Move) and current.kind == "home":
                 return "Home"
             return "Run" if len(self._planner) or self._pending else "Idle"
@@ -303,7 +338,7 @@ class GcodeFirmware(ControlCycles):
         with self._lock:
             state = self.state
             hold = self._planner.hold_state
-            if hold is not HoldState.RUNNING and self._alarm is None:
+            if state == "Hold":
                 state += ":0" if hold is HoldState.HELD else ":1"
             where = ",".join(f"{round(p, 3) + 0.0:.3f}" for p in self._planner.position())
             feed = self._planner.feed()
@@ -318,6 +353,7 @@ class GcodeFirmware(ControlCycles):
     def _run_cycle(self) -> None:
         self._take_lines()
         self._planner.run(self.config.control_cycle, self._block_done)
+        self._finish_jog_cancel()
         if self._status_wanted:
             self._status_wanted = False
             self._send_line(self.status_report())
@@ -397,6 +433,8 @@ class GcodeFirmware(ControlCycles):
                 return NOT_IDLE
             self._send_line("[VER:1.1h.20190825:StepDeck emulator]")
             self._send_line(f"[OPT:V,{self._planner.capacity},{self.config.rx_buffer}]")
+        elif command.startswith("$J=") and self.config.jogging:
+            return self._jog(command[3:])
         elif command == "$X":
             if self._alarm is not None:
                 self._alarm = None
@@ -413,6 +451,30 @@ class GcodeFirmware(ControlCycles):
         else:
             return INVALID_STATEMENT
         return []
+
+    def _jog(self, body: str) -> list[Block] | int:
+        """``$J=``: a move run as a jog, which leaves the parser's modal state as it was.
+
+        Only G20/G21, G90/G91 and G53 may stand in it, and F is required; it is
+        taken while idle or jogging, and its blocks report the ``Jog`` state.
+        """
+        if self.state not in ("Idle", "Jog") or self._jog_cancelling:
+            return NOT_IDLE
+        words = split_words(body)
+        if isinstance(words, WordError):
+            return words.code
+        if any(w.letter == "G" and w.value not in _JOG_G_WORDS for w in words):
+            return INVALID_JOG
+        if any(w.letter not in ("G", "F", *self.config.axes) for w in words):
+            return INVALID_JOG
+        if not any(w.letter == "F" for w in words):
+            return UNDEFINED_FEED
+        saved = replace(self._interpreter.modal)
+        result = self._interpreter.execute([Word("G", 1.0, "G1"), *words])
+        self._interpreter.modal = saved
+        if isinstance(result, int):
+            return result
+        return [replace(b, kind="jog") if isinstance(b, Move) else b for b in result]
 
     def _settings(self) -> list[str]:
         """``$$``: a few GRBL settings, per axis in the machine's axis order."""

@@ -76,6 +76,8 @@ class GcodeConfig:
     arcs: bool = False
     #: The plotter's ``M98 <µs>`` step interval and ``M99 <pwm>`` servo level.
     plotter_codes: bool = False
+    #: GRBL 1.1's ``$J=`` jog lines and the 0x85 jog cancel.
+    jogging: bool = False
     #: Units/min a G1 runs at before any F; None refuses it (``error:22``).
     default_feed: float | None = None
     #: Largest distance of an arc's chord from the arc (GRBL's $12).
@@ -159,6 +161,7 @@ def grbl_plotter_config() -> GcodeConfig:
         acceleration=80_000.0,
         pen=PenMapping.SPINDLE,
         arcs=True,
+        jogging=True,
     )
 
 

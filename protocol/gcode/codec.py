@@ -28,7 +28,9 @@ STATUS_QUERY = b"?"
 FEED_HOLD = b"!"
 CYCLE_START = b"~"
 SOFT_RESET = b"\x18"
-REALTIME_BYTES = frozenset(STATUS_QUERY + FEED_HOLD + CYCLE_START + SOFT_RESET)
+#: GRBL 1.1's jog cancel: a ``$J=`` jog brakes and its queued jog lines are dropped.
+JOG_CANCEL = b"\x85"
+REALTIME_BYTES = frozenset(STATUS_QUERY + FEED_HOLD + CYCLE_START + SOFT_RESET + JOG_CANCEL)
 
 TERMINATOR = b"\n"
 #: The longest line a board takes, its ``\n`` included (GRBL's line buffer).

@@ -123,6 +123,15 @@ class StationHarness:
         for _ in range(round(seconds / STEP_S)):
             self.step()
 
+    def hold(self, seconds: float, every: float = 0.1) -> None:
+        """Run while the operator holds a jog: the key's auto-repeat keeps the dead-man fed."""
+        steps_between = max(1, round(every / STEP_S))
+        for i in range(round(seconds / STEP_S)):
+            self.step()
+            session = self.station.session
+            if session is not None and i % steps_between == 0:
+                session.keep_jogging()
+
     def run_until(self, condition: Callable[[], bool], timeout: float = 30.0) -> float:
         """Step until ``condition`` holds; returns the emulated time it took."""
         start = self.clock.now()

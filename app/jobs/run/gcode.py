@@ -27,6 +27,22 @@ from protocol.gcode.codec import StatusReport
 CHECKPOINT_EVERY_S = 0.5
 #: Station-clock seconds between "operation under way" announcements while lines stream.
 SHOW_EVERY_S = 0.1
+#: The modal words a program is checked in (absolute, millimetres, XY plane), sent before
+#: its first line where the machine has them: a jog or a console line may have changed them.
+SETUP_WORDS = ("G90", "G21", "G17")
+
+
+def setup_lines(words: tuple[str, ...]) -> list[str]:
+    """The set-up a job starts with on a machine whose repertoire is ``words``."""
+    present = [word for word in SETUP_WORDS if word in words]
+    return [" ".join(present)] if present else []
+
+
+def modes_confirm(modes: str, words: tuple[str, ...]) -> str | None:
+    """What is wrong with a ``[GC:…]`` line after the set-up (None: the machine is set up)."""
+    stated = set(modes.strip("[]").removeprefix("GC:").split())
+    missing = [word for word in SETUP_WORDS if word in words and word not in stated]
+    return f"still not in {' '.join(missing)} after the set-up ({modes})" if missing else None
 
 
 class GcodeDriver(JobDriver):
@@ -44,6 +60,8 @@ class GcodeDriver(JobDriver):
         self._checkpoint_at = -1.0
         self._shown: int | None = None
         self._shown_at = -1.0
+        #: ``$G`` was sent after the set-up: nothing of the job goes before its answer.
+        self._confirming = False
 
     @property
     def in_flight(self) -> int | None:
@@ -63,6 +81,7 @@ class GcodeDriver(JobDriver):
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
                 old.reset.disconnect(self._on_reset)
+                old.replyText.disconnect(self._on_reply_text)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
         self.session = session if isinstance(session, GcodeSession) else None
@@ -72,6 +91,7 @@ class GcodeDriver(JobDriver):
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
             self.session.reset.connect(self._on_reset)
+            self.session.replyText.connect(self._on_reply_text)
 
     # --- what the runner asks ----------------------------------------------------
 
@@ -83,6 +103,23 @@ class GcodeDriver(JobDriver):
         self._waiting = None
         self._recheck = verify
         self._asked_since_recheck = False
+        self._confirming = False
+        session = self.session
+        if index == 0 and not verify and session is not None:
+            self._set_up(session)
+
+    def _set_up(self, session: GcodeSession) -> None:
+        """The machine in the state the program was checked for, confirmed where it can say.
+
+        A jog, a console line or an earlier job may have left it relative, in
+        inches or on another plane; a file that never says G90 would then run
+        wherever that put it.
+        """
+        words = session.settings.words
+        for line in setup_lines(words):
+            session.send_line(line, "setup")
+        if "$G" in words:
+            self._confirming = session.send_line("$G", "setup")
 
     def link_lost(self) -> None:
         """The lines the device had may or may not run: decide when it is back."""
@@ -98,6 +135,8 @@ class GcodeDriver(JobDriver):
         if stream is None or session is None:
             runner.link_pause()
             return
+        if self._confirming:
+            return  # the answer to $G carries on
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True
@@ -167,8 +206,25 @@ class GcodeDriver(JobDriver):
             return
         self.proceed()
 
+    def _on_reply_text(self, text: str) -> None:
+        """The ``[GC:…]`` answer to the set-up's ``$G``: the job goes on only when it is right."""
+        if not self._confirming or not text.startswith("[GC:"):
+            return
+        self._confirming = False
+        session = self.session
+        problem = modes_confirm(text, session.settings.words) if session is not None else None
+        if problem is not None:
+            self.runner.fail(0, f"the machine is {problem}")
+            return
+        self.proceed()
+
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
         runner = self.runner
+        if sent.origin == "setup" and runner.state in ACTIVE:
+            self._confirming = False
+            refused = f"{sent.text!r}: error:{code} ({meaning})"
+            runner.fail(0, f"the machine refused the set-up {refused}")
+            return
         if self.stream is None or sent.origin != "job" or sent.op_index is None:
             return
         if runner.state not in ACTIVE:

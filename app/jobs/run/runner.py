@@ -38,6 +38,8 @@ __all__ = ["JobRunner", "JobState", "UnsupportedOperation"]
 ETA_INTERVAL_MS = 1000
 #: Refused operations listed in the message (the dock's list holds them all).
 REFUSALS_SHOWN = 20
+#: How far from 0 (mm or degrees) a job that counts from its start may start.
+START_TOLERANCE = 0.01
 
 
 class JobRunner(QObject):
@@ -195,6 +197,8 @@ class JobRunner(QObject):
             return
         if self._resume_available is not None:
             self.message.emit("Resume from the checkpoint or discard it first")
+            return
+        if self._refuse_start_position(self._program):
             return
         self._begin(0, single_step=False, verify=False)
 
@@ -411,6 +415,28 @@ class JobRunner(QObject):
         self._pause_requested = False
         self._set_state(JobState.RUNNING)
         self._driver.proceed()
+
+    def _refuse_start_position(self, program: Program) -> bool:
+        """A job that moves relative to where it starts was checked from 0: it starts only there.
+
+        Its travel check (and its preview) took the start as the origin; run from
+        anywhere else it would be drawn shifted, past the travel perhaps.
+        """
+        model = self.station.model
+        away = []
+        for name in program.start_relative:
+            axis = next((i for i, a in enumerate(model.axes) if a.name == name), None)
+            if axis is not None and abs(model.axes[axis].position) > START_TOLERANCE:
+                away.append(f"{name}{model.axes[axis].position:.3f}")
+        if not away:
+            return False
+        axes = ", ".join(program.start_relative)
+        self.message.emit(
+            f"Job {program.name!r} not started: it moves {axes} relative to where the machine "
+            f"stands (G91 or G92 before any absolute move), and was checked from 0; the machine "
+            f"is at {' '.join(away)}. Home it or move it to 0 first."
+        )
+        return True
 
     def _refuse_for_link(self) -> bool:
         reason = self.station.model.motion_lock_reason()

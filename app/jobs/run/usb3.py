@@ -102,7 +102,7 @@ class Usb3Driver(SequentialDriver):
         self._heard = {}
         self._since = self.station.clock.now()
         for axis, delta in moves.items():
-            if not session.move_relative(axis, delta):
+            if not session.move_relative(axis, delta, start=start[axis]):
                 self._forget_move()
                 self._refused_send(index, "the move was refused")
                 return

@@ -17,6 +17,7 @@ without losing its position.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -32,6 +33,7 @@ from protocol.clock import Clock
 from protocol.gcode.codec import (
     CYCLE_START,
     FEED_HOLD,
+    JOG_CANCEL,
     SOFT_RESET,
     STATUS_QUERY,
     AlarmReply,
@@ -63,6 +65,8 @@ _COMMENT = re.compile(r"\([^)]*\)|;.*")
 _WORD = re.compile(r"([GM])\s*([-+]?\d+(?:\.\d*)?)")
 #: Fraction of an axis's top speed a held arrow jogs at.
 JOG_SPEED_SHARE = 0.5
+#: A jog step shorter than this (the travel's end reached) is not sent.
+JOG_RESOLUTION = 1e-3
 _MOVING_STATES = frozenset({"Run", "Jog", "Home"})
 
 
@@ -129,6 +133,13 @@ class GcodeSession(MachineSession):
         self._last_heard = clock.now()
         self._jog_unanswered = 0
         self._jog_status_fresh = False
+        #: Where the steps sent so far take each axis (None: no jog under way).
+        self._jog_target: list[float] | None = None
+        self._jog_told_end = False
+        #: A jog cancel was sent and the board still reports Jog: a new jog waits.
+        self._jog_cancelling = False
+        #: The stop under way ends a jog: no "lines not run" message for it.
+        self._quiet_stop = False
         self._reset_requested_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
@@ -243,14 +254,17 @@ class GcodeSession(MachineSession):
 
     # --- intents ------------------------------------------------------------------
 
-    def stop_all(self) -> None:
+    def stop_all(self, *, keep_jog: bool = False) -> None:
         """Hold at once; reset once the machine stands, so buffered lines are dropped.
 
         A reset while the axes still move makes GRBL raise ALARM:3 and forget its
         position, so the reset waits for a status report saying the hold is
         complete (``Hold:0``) or the machine idle — or for :data:`RESET_AFTER_S`.
         """
-        self._jog = [0] * self.axis_count
+        if not keep_jog:
+            self._jog = [0] * self.axis_count
+            self._jog_target = None
+            self._quiet_stop = False
         if not self.link.is_open:
             return
         self._dropped_by_stop = len(self.streamer.discard_queued())
@@ -267,24 +281,25 @@ class GcodeSession(MachineSession):
         self._reset_requested_at = None
         lost = len(self.soft_reset()) + self._dropped_by_stop
         self._dropped_by_stop = 0
-        if lost:
+        quiet, self._quiet_stop = self._quiet_stop, False
+        if lost and not quiet:
             self.model.message.emit(f"Stopped: {lost} line(s) not run")
 
     def move_absolute(self, axis: int, position: float) -> bool:
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
             return False
-        name = self.model.profile.axes[axis].name
-        low, high = self.model.profile.travel_limits()[name]
-        if not low <= position <= high:
-            self.model.message.emit(f"{name} {position:g} refused: outside {low:g}…{high:g}")
+        if self.gate.refuse(self.gate.refuse_target(axis, position)):
             return False
+        name = self.model.profile.axes[axis].name
         return self.send_line(f"G90 G0 {name}{position:.3f}", "intent")
 
     def move_relative(self, axis: int, delta: float) -> bool:
+        """Sent as the absolute target it reaches, so the machine's distance mode stays G90."""
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
             return False
-        target = self.model.axes[axis].position + delta
-        return self.move_absolute(axis, target)
+        if self.gate.refuse(self.gate.refuse_relative(axis, delta)):
+            return False
+        return self.move_absolute(axis, self.model.axes[axis].position + delta)
 
     def home(self, axis: int) -> bool:
         if self._refuse_motion():
@@ -294,19 +309,55 @@ class GcodeSession(MachineSession):
     def pen(self, down: bool) -> bool:
         return self.send_line(self.settings.pen_down if down else self.settings.pen_up, "intent")
 
+    @property
+    def jogs_with_command(self) -> bool:
+        """GRBL 1.1's ``$J=`` jogs: the modal state is left alone and 0x85 cancels them."""
+        return "$J" in self.settings.words
+
     def set_jog(self, directions: Sequence[int]) -> None:
-        """Held arrows become short relative moves kept a little ahead of the machine."""
-        wanted = [int(d) for d in directions[: self.axis_count]]
+        """Held arrows become short moves kept a little ahead of the machine, inside the travel.
+
+        A board with ``$J=`` gets jog lines, which leave its modal state as it
+        was, and the jog-cancel byte on release; any other gets absolute
+        ``G90 G1`` steps, and a release holds it and drops what it has queued
+        (the stop's feed hold and reset), so it stops within its deceleration.
+        Neither leaves the machine in ``G91``.
+        """
+        wanted = [max(-1, min(1, int(d))) for d in directions[: self.axis_count]]
         wanted += [0] * (self.axis_count - len(wanted))
+        if any(wanted) and self._refuse_motion():
+            wanted = [0] * self.axis_count
         if wanted == self._jog:
             return
-        self._jog = wanted
-        if any(wanted) and not self._refuse_motion():
+        previous, self._jog = self._jog, wanted
+        self._jog_started()
+        if any(previous):
+            self._end_jog()
+        if any(wanted) and not self._jog_cancelling:
             self._send_jog_step()  # at once: the key must reach the wire now
+
+    def _end_jog(self) -> None:
+        """The operator let go (or changed direction): the machine brakes now."""
+        self._jog_target = None
+        self._jog_told_end = False
+        if not self.link.is_open or not (self._jog_unanswered or self._machine_moving()):
+            return
+        if self.jogs_with_command:
+            self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
+            self._jog_cancelling = True
+            self.query_status()
+        else:
+            self._quiet_stop = True
+            self.stop_all(keep_jog=True)
+
+    def _machine_moving(self) -> bool:
+        return self.status is not None and self.status.state in _MOVING_STATES
 
     def _feed_jog(self) -> None:
         """Another step when the last is answered and the planner is nearly through."""
         if not any(self._jog) or self._jog_unanswered or not self._jog_status_fresh:
+            return
+        if self._jog_cancelling or self.stopping:
             return
         report = self.status
         if report is None:
@@ -319,15 +370,35 @@ class GcodeSession(MachineSession):
             self._send_jog_step()
 
     def _send_jog_step(self) -> None:
-        words: list[str] = []
-        speed = 0.0
+        """One step of the held jog, ending inside the travel; none once the travel ends."""
+        if self._jog_target is None:
+            self._jog_target = [axis.position for axis in self.model.axes]
+        moves: list[tuple[str, float, float]] = []
+        speed = math.inf
         for axis, direction in enumerate(self._jog):
-            if direction:
-                profile = self.model.profile.axes[axis]
-                axis_speed = profile.max_speed * JOG_SPEED_SHARE
-                speed = max(speed, axis_speed)
-                words.append(f"{profile.name}{direction * axis_speed * JOG_STEP_S:.3f}")
-        line = f"G91 G1 {' '.join(words)} F{speed * 60:.0f}"
+            if not direction:
+                continue
+            profile = self.model.profile.axes[axis]
+            axis_speed = profile.max_speed * JOG_SPEED_SHARE
+            here = self._jog_target[axis]
+            end = self.gate.clamp(axis, here + direction * axis_speed * JOG_STEP_S)
+            if abs(end - here) < JOG_RESOLUTION:
+                continue
+            self._jog_target[axis] = end
+            speed = min(speed, axis_speed)
+            moves.append((profile.name, end - here, end))
+        if not moves:
+            if not self._jog_told_end:
+                self._jog_told_end = True
+                self.model.message.emit("Jog ends: the end of the travel")
+            return
+        feed = f"F{speed * 60:.0f}"
+        if self.jogs_with_command:
+            words = " ".join(f"{name}{delta:.3f}" for name, delta, _ in moves)
+            line = f"$J=G91 G21 {words} {feed}"
+        else:
+            words = " ".join(f"{name}{end:.3f}" for name, _, end in moves)
+            line = f"G90 G1 {words} {feed}"
         if self.send_line(line, "jog"):
             self._jog_unanswered += 1
             self._jog_status_fresh = False
@@ -339,6 +410,7 @@ class GcodeSession(MachineSession):
         if not self.link.is_open:
             return
         self._check_answer()
+        self._check_deadman()
         now = self.clock.now()
         requested = self._reset_requested_at
         if requested is not None and now - requested > RESET_AFTER_S:
@@ -380,6 +452,9 @@ class GcodeSession(MachineSession):
         self._timer.stop()
         self._reset_requested_at = None
         self._jog = [0] * self.axis_count
+        self._jog_target = None
+        self._jog_cancelling = False
+        self._quiet_stop = False
         lost = self.streamer.clear()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, moving=False, velocity=0.0)
@@ -443,6 +518,8 @@ class GcodeSession(MachineSession):
         else:
             self.errors += 1
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
+            if sent.origin == "jog":
+                self._jog_unanswered = 0
             if sent.origin != "job":
                 self.model.message.emit(
                     f"{sent.text!r} refused: error {error.code}, {error.meaning}"
@@ -510,6 +587,9 @@ class GcodeSession(MachineSession):
             # Free blocks of an idle machine with nothing on its way: the planner's size.
             self._planner_size = report.planner_free
         self._jog_status_fresh = True
+        if self._jog_cancelling and report.state != "Jog":
+            self._jog_cancelling = False  # the cancelled jog stands: a held key may jog anew
+            self._jog_unanswered = 0
         moving = report.state in _MOVING_STATES
         for axis in range(min(self.axis_count, len(report.mpos))):
             self.model.update_axis(

@@ -50,6 +50,16 @@ STALE_PERIODS = 3
 LOST_AFTER_S = 2.0
 JOG_RELEASE_REPEATS = 3
 MAX_BURST = 16
+#: Until the stage's own dynamics are read: its documented defaults (PROTOCOLS.md table 1.4).
+DEFAULT_FAST_UM_S = 10_000
+DEFAULT_SLOW_UM_S = 2_000
+DEFAULT_ACCELERATION_UM_S2 = 20_000
+#: Periods between a frame leaving and its effect being seen (frame out, echo back), on top
+#: of the braking distance when a jog is turned into a stop at the travel end.
+JOG_LATENCY_PERIODS = 2
+#: A jog stopped at the travel's end stops this far inside it: the stage's end switches sit
+#: at the travel's ends, and a jog is to stop before them, not on them.
+JOG_END_MARGIN_MM = 0.1
 
 
 class SubscriberScheduler:
@@ -90,6 +100,8 @@ class StageSession(MachineSession):
         self._period_ms = period_ms or model.profile.period_ms
         self.subscribers = SubscriberScheduler(self._period_ms / 1000)
         self._release_repeats = [0] * self.axis_count
+        #: Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none).
+        self._jog_limited = [0] * self.axis_count
         self._urgent: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._background: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._read_in_last_frame = [False] * self.axis_count
@@ -134,11 +146,18 @@ class StageSession(MachineSession):
         if wanted == self._jog:
             return
         for axis, (old, new) in enumerate(zip(self._jog, wanted, strict=True)):
+            if self._jog_limited[axis] and new != self._jog_limited[axis]:
+                # The jog became a move to the travel end: a release must stop that move.
+                self._jog_limited[axis] = 0
+                if not new:
+                    self._urgent[axis].append(CommandPacket(CommandId.STOP))
+                    continue
             if old and not new:
                 self._release_repeats[axis] = JOG_RELEASE_REPEATS
             elif new:
                 self._release_repeats[axis] = 0
         self._jog = wanted
+        self._jog_started()
         self._send_now()
 
     def set_shift(self, held: bool) -> None:
@@ -156,6 +175,7 @@ class StageSession(MachineSession):
     def stop_all(self) -> None:
         """Stop everything: drop queued motion and jogs, STOP every axis at once."""
         self._jog = [0] * self.axis_count
+        self._jog_limited = [0] * self.axis_count
         self._release_repeats = [0] * self.axis_count
         for queue in self._urgent:
             queue.clear()
@@ -164,9 +184,13 @@ class StageSession(MachineSession):
         self._send_now()
 
     def move_absolute(self, axis: int, position_mm: float) -> bool:
+        if self.gate.refuse(self.gate.refuse_target(axis, position_mm)):
+            return False
         return self._motion(axis, CommandPacket(CommandId.MOVE_ABS, _um(position_mm)))
 
     def move_relative(self, axis: int, delta_mm: float) -> bool:
+        if self.gate.refuse(self.gate.refuse_relative(axis, delta_mm)):
+            return False
         return self._motion(axis, CommandPacket(CommandId.MOVE_REL, _um(delta_mm)))
 
     def home(self, axis: int) -> bool:
@@ -202,6 +226,7 @@ class StageSession(MachineSession):
         """One period: health check, then the periodic frame."""
         self._check_answer()
         self._check_health()
+        self._check_deadman()
         if self.link.is_open:
             self._send_frame()
 
@@ -230,6 +255,19 @@ class StageSession(MachineSession):
             return packet
         if self._jog[axis]:
             self._read_in_last_frame[axis] = False
+            if self._jog_limited[axis]:
+                return CommandPacket(CommandId.NOP)  # the move to the travel end runs
+            if self._must_brake(axis, self._jog[axis]):
+                self._jog_limited[axis] = self._jog[axis]
+                low, high = self.gate.limits(axis)
+                if self._jog[axis] > 0:
+                    end = max(low, high - JOG_END_MARGIN_MM)
+                else:
+                    end = min(high, low + JOG_END_MARGIN_MM)
+                self.model.message.emit(
+                    f"{self.model.axes[axis].name} jog ends before the travel's end, at {end:g} mm"
+                )
+                return CommandPacket(CommandId.MOVE_ABS, _um(end))
             return CommandPacket(CommandId.JOG, self._jog[axis])
         if self._release_repeats[axis]:
             self._read_in_last_frame[axis] = False
@@ -242,6 +280,32 @@ class StageSession(MachineSession):
             return self._background[axis].popleft()
         self._read_in_last_frame[axis] = False
         return CommandPacket(CommandId.NOP)
+
+    def _jog_dynamics(self, axis: int) -> tuple[float, float]:
+        """Speed and acceleration (mm/s, mm/s²) a jog of the axis runs with: the device's own."""
+        fast = self._fast_selected != self._shift_held
+        kind = EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED
+        default = DEFAULT_FAST_UM_S if fast else DEFAULT_SLOW_UM_S
+        speed = self.model.parameter(axis, kind).value or default
+        acceleration = (
+            self.model.parameter(axis, EchoType.ACCELERATION).value or DEFAULT_ACCELERATION_UM_S2
+        )
+        moving = abs(self.model.axes[axis].velocity)
+        return max(speed / 1000, moving), acceleration / 1000
+
+    def _must_brake(self, axis: int, direction: int) -> bool:
+        """Whether a jog must now become a stop at the travel end to end before it.
+
+        The device stops a jog only at its end switch, at full speed: so the
+        station turns the jog into a move to the travel's end once the room left
+        is what braking from the jog's speed needs, plus the distance covered
+        while a frame goes out and its echo comes back.
+        """
+        speed, acceleration = self._jog_dynamics(axis)
+        braking = speed * speed / (2 * acceleration)
+        latency = speed * JOG_LATENCY_PERIODS * self._period_ms / 1000
+        room = self.gate.room(axis, direction) - JOG_END_MARGIN_MM
+        return room <= braking + latency
 
     def _motion(self, axis: int, packet: CommandPacket) -> bool:
         if self._refuse_motion():
@@ -265,6 +329,7 @@ class StageSession(MachineSession):
         self._last_echo = self.clock.now()
         self._device_fast = None
         self._jog = [0] * self.axis_count
+        self._jog_limited = [0] * self.axis_count
         self._await_device()
         self._sync_speed()
         self.read_all_parameters()
@@ -275,6 +340,7 @@ class StageSession(MachineSession):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         self._jog = [0] * self.axis_count
+        self._jog_limited = [0] * self.axis_count
         self.echoes.forget_writes()
         for queue in (*self._urgent, *self._background):
             queue.clear()

@@ -78,6 +78,8 @@ class Usb3Session(MachineSession):
         self._last_report: list[float | None] = [None] * self.axis_count
         #: ``C;`` was sent and the axis has not reported since: its next report is a new zero.
         self._zeroing = [False] * self.axis_count
+        #: Where the jog leads sent so far take each axis (None: from its position).
+        self._jog_end: list[float | None] = [None] * self.axis_count
         self._stop_command = stop_command
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -107,8 +109,11 @@ class Usb3Session(MachineSession):
 
     # --- intents ----------------------------------------------------------------
 
-    def move_relative(self, axis: int, delta: float) -> bool:
+    def move_relative(self, axis: int, delta: float, *, start: float | None = None) -> bool:
+        """A move by ``delta`` mm, judged from ``start`` where the caller knows better."""
         if self._refuse_motion():
+            return False
+        if self.gate.refuse(self.gate.refuse_relative(axis, delta, start)):
             return False
         counts = [0] * 3
         counts[axis] = nearest_reachable_count(delta, self.step_sizes[axis], self.threads[axis])
@@ -128,6 +133,10 @@ class Usb3Session(MachineSession):
         if wanted == self._jog:
             return
         previous, self._jog = self._jog, wanted
+        self._jog_started()
+        for axis, (old, new) in enumerate(zip(previous, wanted, strict=True)):
+            if old != new:
+                self._jog_end[axis] = None  # a new jog counts from where the axis is
         released = any(old and not new for old, new in zip(previous, wanted, strict=True))
         stopped_all = released and self._stop_command
         if stopped_all:
@@ -154,6 +163,7 @@ class Usb3Session(MachineSession):
 
     def stop_all(self) -> None:
         self._jog = [0] * self.axis_count
+        self._jog_end = [None] * self.axis_count
         if self._stop_command:
             self._send(StopAll())
         else:
@@ -187,6 +197,7 @@ class Usb3Session(MachineSession):
     def tick(self) -> None:
         """Keep held jogs fed and notice axes that stopped reporting."""
         self._check_answer()
+        self._check_deadman()
         if any(self._jog):
             self._send_jog_lead(TICK_MS / 1000)
         now = self.clock.now()
@@ -202,12 +213,27 @@ class Usb3Session(MachineSession):
     # --- the wire ---------------------------------------------------------------
 
     def _send_jog_lead(self, seconds: float, axes: Sequence[int] | None = None) -> None:
+        """More of the held jog, never past the travel: the leads sent are added up per axis."""
         counts = [0] * 3
         for axis, direction in enumerate(self._jog):
-            if direction and (axes is None or axis in axes):
-                pulses = max(1, round(TOP_PULSE_RATE * seconds))
-                counts[axis] = direction * pulses * self.step_sizes[axis].counts_per_pulse
-        self._send(*move_commands(counts))
+            if not direction or (axes is not None and axis not in axes) or axis >= 3:
+                continue
+            thread = self.threads[axis]
+            pulses = max(1, round(TOP_PULSE_RATE * seconds))
+            wanted = count_to_mm(
+                direction * pulses * self.step_sizes[axis].counts_per_pulse, thread
+            )
+            here = self._jog_end[axis]
+            if here is None:
+                here = self.model.axes[axis].position
+            room = self.gate.clamp(axis, here + wanted) - here
+            per_pulse = self.step_sizes[axis].counts_per_pulse
+            # Whole pulses, rounded toward zero: the lead ends inside the travel.
+            count = int(room / count_to_mm(per_pulse, thread)) * per_pulse
+            self._jog_end[axis] = here + count_to_mm(count, thread)
+            counts[axis] = count
+        if any(counts):
+            self._send(*move_commands(counts))
 
     def _send(self, *messages: Message) -> None:
         if not self.link.is_open:

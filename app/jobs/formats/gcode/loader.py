@@ -139,6 +139,7 @@ def load_gcode(
         parser.notes(data),
         unsupported=problems,
         data=data,
+        start_relative=tuple(parser.columns[c] for c in sorted(parser.start_relative)),
     )
 
 

@@ -101,6 +101,9 @@ class Parser:
         self.problems: list[GcodeProblem] = []
         self.skipped: list[tuple[int, str, tuple[str, ...]]] = []
         self.g21_dropped = 0
+        #: Columns whose positions count from wherever the machine stands when the job
+        #: starts (a G91 move or a G92 before the file set them): taken here as from 0.
+        self.start_relative: set[int] = set()
         self.realtime_dropped = 0
         self.z_dropped = 0
         self.checked_texts: dict[str, tuple[str, ...]] = {}
@@ -126,11 +129,11 @@ class Parser:
         done = 0
         for i, before in zip(slow.tolist(), plain_before, strict=True):
             if before > done:
-                place(done, before, self.state, texts)
+                place(done, before, self.state, texts, self.start_relative)
                 done = before
             line(i + 1, lines[i])
         if done < len(self.plain.texts):
-            place(done, len(self.plain.texts), self.state, texts)
+            place(done, len(self.plain.texts), self.state, texts, self.start_relative)
 
     # --- one line ------------------------------------------------------------------
 
@@ -369,6 +372,8 @@ class Parser:
             c = self._column(word.letter)
             scale = st.scale if word.letter in _LINEAR_AXES else 1.0
             here = st.position[c]
+            if math.isnan(here):
+                self.start_relative.add(c)
             st.offset[c] = (0.0 if math.isnan(here) else here) - word.value * scale
 
     def _motion(
@@ -395,6 +400,8 @@ class Parser:
                 target = word.value * scale
             elif st.relative:
                 here = st.position[c]
+                if math.isnan(here):
+                    self.start_relative.add(c)
                 target = (0.0 if math.isnan(here) else here) + word.value * scale
             else:
                 target = word.value * scale + st.offset[c]

@@ -85,7 +85,9 @@ class PlainMoves:
         self.f = np.full(n, np.nan)
         self.f[has_f] = numbers[starts[has_f] + 3]
 
-    def place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
+    def place(
+        self, k0: int, k1: int, st: State, texts: list[str], start_relative: set[int] | None = None
+    ) -> None:
         """Plain moves k0…k1-1 as MOVE operations, placed by the modal state in force.
 
         Their texts are added to ``texts``, the texts of the operations so far.
@@ -96,6 +98,8 @@ class PlainMoves:
         if st.relative:
             for column, values in ((0, self.x), (1, self.y)):
                 start = st.position[column]
+                if math.isnan(start) and start_relative is not None:
+                    start_relative.add(column)
                 steps = np.concatenate(
                     ([0.0 if math.isnan(start) else start], values[k0:k1] * scale)
                 )
