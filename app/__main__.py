@@ -121,7 +121,10 @@ class Launcher:
     def open(self, profile: MachineProfile) -> Station:
         from widgets.main_window import MainWindow
 
-        self.settings.profile = profile.name
+        if profile.name in available_profiles():
+            # Only a shipped profile can be found by its name next time; one loaded from a
+            # path (``--profile my.toml``) leaves the remembered machine as it was.
+            self.settings.profile = profile.name
         station = Station(profile)
         if self.period_ms:
             station.set_period_ms(self.period_ms)
@@ -232,7 +235,8 @@ def start(
     try:
         connect_as_asked(station, args, settings)
     except Exception as exc:  # whatever the link does, the window stays usable
-        QMessageBox.critical(launcher.window, "StepDeck", f"Could not connect: {exc}")
+        reason = str(exc) or type(exc).__name__  # never an empty "Could not connect:"
+        QMessageBox.critical(launcher.window, "StepDeck", f"Could not connect: {reason}")
     return launcher
 
 

@@ -256,3 +256,28 @@ def test_a_baud_no_port_can_take_is_refused_on_the_command_line(
     with pytest.raises(SystemExit):
         build_parser().parse_args(["--port", "/dev/ttyUSB7", "--baud", str(2**70)])
     assert "outside 50…4000000" in capsys.readouterr().err
+
+
+def test_a_profile_loaded_from_a_file_opens_and_leaves_the_remembered_one(
+    qtbot: QtBot, store: QSettings, tmp_path: Path
+) -> None:
+    shipped = load_profile("xy-stage").source
+    assert shipped is not None
+    custom = tmp_path / "my-stage.toml"
+    custom.write_text(
+        shipped.read_text(encoding="utf-8").replace('name = "xy-stage"', 'name = "my-stage"'),
+        encoding="utf-8",
+    )
+    settings = StationSettings(store)
+    settings.profile = "usb3"
+    launcher = Launcher(settings, period_ms=None)
+    try:
+        station = launcher.open(load_profile(custom))
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        assert station.profile.name == "my-stage"
+        assert settings.profile == "usb3"  # "my-stage" could not be found by name next time
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()

@@ -164,18 +164,19 @@ def test_a_drill_procedure_whose_end_is_late_is_amber_before_it_is_red() -> None
         command = session.in_flight
         assert command is not None
         takes = session.expected_s(command)
-        received: list[float] = []
-        session.commandReceived.connect(lambda _text: received.append(unit.clock.now()))
+        received: list[str] = []
+        session.commandReceived.connect(received.append)  # nothing that holds the harness
         unit.run_until(lambda: bool(received), timeout=1)
+        received_at = unit.clock.now()  # within one harness step of the R
         unit.loopback.set_manipulator(_drop(Direction.TO_HOST))  # type: ignore[arg-type]
-        stale_at = received[0] + takes + DONE_LATE_S
+        stale_at = received_at + takes + DONE_LATE_S
         unit.run_until(lambda: unit.clock.now() >= stale_at - 0.05)
         assert model.link_state is LinkState.CONNECTED  # on time so far
         unit.run_until(lambda: model.link_state is not LinkState.CONNECTED, timeout=1)
         assert model.link_state is LinkState.STALE
         assert model.link_detail.startswith("no reply for ")
         assert "the end of its procedure" in model.link_detail
-        lost_at = received[0] + DONE_FACTOR * takes + DONE_MARGIN_S
+        lost_at = received_at + DONE_FACTOR * takes + DONE_MARGIN_S
         unit.run_until(lambda: model.link_state is LinkState.LOST, timeout=2 * takes + 5)
         assert unit.clock.now() == pytest.approx(lost_at, abs=0.15)
     finally:
