@@ -14,7 +14,8 @@ from types import TracebackType
 from typing import TextIO
 
 from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QApplication, QMainWindow, QMessageBox
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QApplication, QDialog, QInputDialog, QMainWindow, QMessageBox
 
 from app.discovery import serial_ports
 from app.profiles import (
@@ -24,8 +25,23 @@ from app.profiles import (
     available_profiles,
     load_profile,
 )
-from app.settings import StationSettings, default_settings
+from app.settings import BAUD_RANGE, StationSettings, default_settings
 from app.station import Station
+
+#: Qt platforms with no screen to ask on: there, a missing choice is refused, not guessed.
+HEADLESS_PLATFORMS = frozenset({"offscreen", "minimal"})
+
+
+def _baud(text: str) -> int:
+    """A baud rate a serial port can be asked for (a huge one once stopped every launch)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    low, high = BAUD_RANGE
+    if not low <= value <= high:
+        raise argparse.ArgumentTypeError(f"{value} is outside {low}…{high}")
+    return value
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -43,7 +59,11 @@ def build_parser() -> argparse.ArgumentParser:
     link.add_argument(
         "--emulator", action="store_true", help="connect to the built-in emulator (the default)"
     )
-    link.add_argument("--port", metavar="DEVICE", help="connect over this serial port")
+    link.add_argument(
+        "--port",
+        metavar="DEVICE",
+        help="connect over this serial port (name the machine with --profile, or you are asked)",
+    )
     link.add_argument(
         "--ble",
         nargs="?",
@@ -51,7 +71,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="ADDRESS",
         help="connect over Bluetooth LE (to ADDRESS, or the strongest stage found)",
     )
-    parser.add_argument("--baud", type=int, help="serial baud rate (default: the profile's)")
+    parser.add_argument("--baud", type=_baud, help="serial baud rate (default: the profile's)")
     parser.add_argument(
         "-l",
         "--list-ports",
@@ -92,9 +112,8 @@ def connect_as_asked(station: Station, args: argparse.Namespace, settings: Stati
 class Launcher:
     """Builds the station and its window, and rebuilds both when the operator switches machine."""
 
-    def __init__(self, store: QSettings, period_ms: int | None) -> None:
-        self.store = store
-        self.settings = StationSettings(store)
+    def __init__(self, store: QSettings | StationSettings, period_ms: int | None) -> None:
+        self.settings = store if isinstance(store, StationSettings) else StationSettings(store)
         self.period_ms = period_ms
         self.station: Station | None = None
         self.window: QMainWindow | None = None
@@ -102,11 +121,14 @@ class Launcher:
     def open(self, profile: MachineProfile) -> Station:
         from widgets.main_window import MainWindow
 
-        self.settings.profile = profile.name
+        if profile.name in available_profiles():
+            # Only a shipped profile can be found by its name next time; one loaded from a
+            # path (``--profile my.toml``) leaves the remembered machine as it was.
+            self.settings.profile = profile.name
         station = Station(profile)
         if self.period_ms:
             station.set_period_ms(self.period_ms)
-        window = MainWindow(station, self.store)
+        window = MainWindow(station, self.settings)
         window.profileRequested.connect(self.switch)
         window.show()
         self.station, self.window = station, window
@@ -149,6 +171,75 @@ def report_unexpected(launcher: Launcher) -> Callable[..., None]:
     return hook
 
 
+def profile_dialog(port: str, remembered: str) -> QInputDialog:
+    """Which machine is on ``port``: the remembered one offered first, but never assumed.
+
+    The README's own ``--port`` example once reused the last profile and sent
+    G-code to an XY stage; so a port named without ``--profile`` is a question.
+    """
+    names = available_profiles()
+    dialog = QInputDialog()
+    dialog.setObjectName("profile_choice")
+    dialog.setWindowTitle("StepDeck — which machine?")
+    dialog.setLabelText(
+        f"Which machine is on {port}?\n"
+        "Commands in the wrong machine's language can move it unexpectedly."
+    )
+    dialog.setComboBoxItems(names)
+    dialog.setComboBoxEditable(False)
+    if remembered in names:
+        dialog.setTextValue(remembered)
+    dialog.setOkButtonText("Connect")
+    return dialog
+
+
+def ask_profile(port: str, settings: StationSettings, err: TextIO) -> str | None:
+    """The profile the operator confirms for ``port``; None (and why, on ``err``) if none."""
+    known = ", ".join(available_profiles())
+    if QGuiApplication.platformName() in HEADLESS_PLATFORMS:
+        print(
+            f"stepdeck: --port {port} needs --profile NAME ({known}): "
+            "the station does not guess which machine is on a port",
+            file=err,
+        )
+        return None
+    dialog = profile_dialog(port, settings.profile)
+    if dialog.exec() != QDialog.DialogCode.Accepted:
+        print(f"stepdeck: no machine chosen for {port}; nothing was opened", file=err)
+        return None
+    return dialog.textValue()
+
+
+def start(
+    args: argparse.Namespace, settings: StationSettings, err: TextIO | None = None
+) -> Launcher | int:
+    """Build the station and its window and open the link asked for; an exit code if refused."""
+    err = err or sys.stderr
+    name = args.profile
+    if args.port and not name:
+        name = ask_profile(args.port, settings, err)
+        if name is None:
+            return 2
+    try:
+        profile = load_profile(name or settings.profile)
+    except ProfileError as exc:
+        if name:
+            print(f"stepdeck: {exc}", file=err)
+            return 2
+        profile = load_profile(DEFAULT_PROFILE)  # a stale setting must not stop the launch
+    if args.period:
+        settings.period_ms = max(20, min(1000, args.period))
+    launcher = Launcher(settings, settings.period_ms)
+    sys.excepthook = report_unexpected(launcher)
+    station = launcher.open(profile)
+    try:
+        connect_as_asked(station, args, settings)
+    except Exception as exc:  # whatever the link does, the window stays usable
+        reason = str(exc) or type(exc).__name__  # never an empty "Could not connect:"
+        QMessageBox.critical(launcher.window, "StepDeck", f"Could not connect: {reason}")
+    return launcher
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.list_ports:
@@ -157,24 +248,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     assert isinstance(app, QApplication)
     app.setApplicationName("StepDeck")
     app.setOrganizationName("StepDeck")
-    store = default_settings()
-    settings = StationSettings(store)
-    try:
-        profile = load_profile(args.profile or settings.profile)
-    except ProfileError as exc:
-        if args.profile:
-            print(f"stepdeck: {exc}", file=sys.stderr)
-            return 2
-        profile = load_profile(DEFAULT_PROFILE)  # a stale setting must not stop the launch
-    if args.period:
-        settings.period_ms = max(20, min(1000, args.period))
-    launcher = Launcher(store, settings.period_ms)
-    sys.excepthook = report_unexpected(launcher)
-    station = launcher.open(profile)
-    try:
-        connect_as_asked(station, args, settings)
-    except Exception as exc:  # whatever the link does, the window stays usable
-        QMessageBox.critical(launcher.window, "StepDeck", f"Could not connect: {exc}")
+    launcher = start(args, StationSettings(default_settings()))
+    if isinstance(launcher, int):
+        return launcher
     code = app.exec()
     launcher.shutdown()
     return code

@@ -1,20 +1,203 @@
-"""Settings that survive a restart (QSettings), behind names rather than string keys.
+"""Settings that survive a restart, each read through one layer that knows its type and range.
+
+The settings file may hold anything: a value from an older version, one
+edited by hand, a file half overwritten.  A remembered baud rate too large
+for an int once stopped the station at every launch, and a period of -5 ms
+ran a 1 ms timer.  So every persisted value has a :class:`Spec` here (type,
+range or choices, default), every read checks the stored value against it,
+and a bad one yields the default plus a warning naming the key and the
+file.  A file Qt cannot read at all gives defaults and one warning naming
+it; a copy is kept beside it, because Qt overwrites a malformed file on the
+next save.  The warnings are collected, not raised: the window shows them
+once at start (:meth:`StationSettings.take_warnings`).
 
 Tests pass their own QSettings file so they never touch the operator's.
 """
 
 from __future__ import annotations
 
-from PySide6.QtCore import QSettings
+import logging
+import math
+import shutil
+from collections.abc import Callable, Collection, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Generic, TypeVar
 
-from app.profiles import DEFAULT_PROFILE
+from PySide6.QtCore import QByteArray, QSettings
+
+from app.profiles import DEFAULT_PROFILE, TRANSPORTS, available_profiles
 
 ORGANISATION = "StepDeck"
 APPLICATION = "StepDeck"
 
+#: Baud rates a serial port can be asked for (pyserial's own bounds on Linux).
+BAUD_RANGE = (50, 4_000_000)
+#: The stage's command frame period, as ``--period`` and the profiles allow it.
+PERIOD_RANGE = (20, 1000)
+#: Window geometry and dock layout blobs are a few hundred bytes; more is not ours.
+_BLOB_LIMIT = 64 * 1024
+_TEXT_LIMIT = 512
+#: Suffix of the copy kept of a settings file Qt could not read.
+UNREADABLE_SUFFIX = ".unreadable"
+
+_log = logging.getLogger(__name__)
+
+T = TypeVar("T")
+T_co = TypeVar("T_co", covariant=True)
+
+
+class BadValue(ValueError):
+    """A stored value that is not what its key holds."""
+
 
 def default_settings() -> QSettings:
     return QSettings(ORGANISATION, APPLICATION)
+
+
+@dataclass(frozen=True)
+class Spec(Generic[T_co]):
+    """One persisted value: where it is stored, what it may be, and what to use instead.
+
+    A default of None means "not stored: the profile decides" (period, baud).
+    """
+
+    key: str
+    default: T_co
+    #: What the value must be, in words for the warning ("an integer within 20…1000").
+    expects: str
+    #: The stored value as a ``T``; raises :class:`BadValue` for anything else.
+    convert: Callable[[object], T_co]
+
+
+# --- converters: what a stored value may look like (INI files keep text) ------------------
+
+
+def _integer(lo: int, hi: int) -> Callable[[object], int]:
+    def convert(value: object) -> int:
+        if isinstance(value, bool):
+            raise BadValue("a truth value")
+        if isinstance(value, str):
+            text = value.strip()
+            digits = text.lstrip("+-")
+            if not digits.isascii() or not digits.isdigit() or len(digits) > 12:
+                raise BadValue("not an integer")
+            number = int(text)
+        elif isinstance(value, int):
+            number = value
+        else:
+            raise BadValue(f"a {type(value).__name__}")
+        if not lo <= number <= hi:
+            raise BadValue(f"{number} is out of range")
+        return number
+
+    return convert
+
+
+def _truth(value: object) -> bool:
+    if isinstance(value, bool):
+        return value
+    if isinstance(value, str) and value.strip().lower() in ("true", "false"):
+        return value.strip().lower() == "true"
+    raise BadValue("not true or false")
+
+
+def _choice(choices: Callable[[], Collection[str]]) -> Callable[[object], str]:
+    def convert(value: object) -> str:
+        if isinstance(value, str) and value in choices():
+            return value
+        raise BadValue("not one of the choices")
+
+    return convert
+
+
+def _number_choice(choices: Collection[float]) -> Callable[[object], float]:
+    def convert(value: object) -> float:
+        if isinstance(value, bool) or not isinstance(value, int | float | str):
+            raise BadValue("not a number")
+        try:
+            number = float(value)
+        except (ValueError, OverflowError) as exc:
+            raise BadValue("not a number") from exc
+        for choice in choices:
+            if math.isclose(number, choice, rel_tol=1e-9):
+                return choice
+        raise BadValue("not one of the choices")
+
+    return convert
+
+
+def _text(value: object) -> str:
+    if not isinstance(value, str):
+        raise BadValue(f"a {type(value).__name__}")
+    if len(value) > _TEXT_LIMIT or not value.isprintable():
+        raise BadValue("not a short printable text")
+    return value
+
+
+def _blob(value: object) -> QByteArray:
+    if isinstance(value, QByteArray):
+        data = value
+    elif isinstance(value, bytes):
+        data = QByteArray(value)
+    else:
+        raise BadValue(f"a {type(value).__name__}")
+    if data.size() > _BLOB_LIMIT:
+        raise BadValue("too large")
+    return data
+
+
+# --- every key the station stores -----------------------------------------------------------
+
+PROFILE = Spec(
+    "station/profile", DEFAULT_PROFILE, "a machine profile name", _choice(available_profiles)
+)
+PERIOD_MS: Spec[int | None] = Spec(
+    "station/period_ms",
+    None,
+    f"an integer within {PERIOD_RANGE[0]}…{PERIOD_RANGE[1]} (ms)",
+    _integer(*PERIOD_RANGE),
+)
+TRANSPORT = Spec(
+    "link/transport", "emulator", f"one of {', '.join(TRANSPORTS)}", _choice(lambda: TRANSPORTS)
+)
+DEVICE = Spec("link/device", "", "a port path or a BLE address", _text)
+BAUD: Spec[int | None] = Spec(
+    "link/baud",
+    None,
+    f"an integer within {BAUD_RANGE[0]}…{BAUD_RANGE[1]}",
+    _integer(*BAUD_RANGE),
+)
+GEOMETRY: Spec[QByteArray | None] = Spec("main_window/geometry", None, "window geometry", _blob)
+WINDOW_STATE: Spec[QByteArray | None] = Spec("main_window/state", None, "window layout", _blob)
+#: The page shown; the window has fewer, and checks the index again against its own count.
+PAGE = Spec("main_window/page", 0, "a page number within 0…31", _integer(0, 31))
+#: Excellon steps the jobs dock offers, in inches.
+EXCELLON_STEPS = (1e-4, 1e-3, 1e-5)
+#: The jobs dock's reading options, by option name.
+JOB_OPTIONS: Mapping[str, Spec[object]] = {
+    "draw": Spec("job_options/draw", False, "true or false", _truth),
+    "translate_pen": Spec("job_options/translate_pen", True, "true or false", _truth),
+    "skip_unsupported": Spec("job_options/skip_unsupported", False, "true or false", _truth),
+    "excellon_step_inch": Spec(
+        "job_options/excellon_step_inch",
+        1e-4,
+        "one of 0.0001, 0.001, 0.00001 (inch)",
+        _number_choice(EXCELLON_STEPS),
+    ),
+}
+#: Every key, for the tests (and for anyone wondering what the file may hold).
+ALL_SPECS: tuple[Spec[object], ...] = (
+    PROFILE,
+    PERIOD_MS,
+    TRANSPORT,
+    DEVICE,
+    BAUD,
+    GEOMETRY,
+    WINDOW_STATE,
+    PAGE,
+    *JOB_OPTIONS.values(),
+)
 
 
 class _MemoryStore:
@@ -29,65 +212,156 @@ class _MemoryStore:
     def setValue(self, key: str, value: object) -> None:
         self._values[key] = value
 
+    def contains(self, key: str) -> bool:
+        return key in self._values
+
+    def remove(self, key: str) -> None:
+        self._values.pop(key, None)
+
+    def fileName(self) -> str:
+        return "(memory)"
+
     def sync(self) -> None:
         pass
 
 
 class StationSettings:
+    """The station's remembered values, each read checked against its :class:`Spec`."""
+
     def __init__(self, store: QSettings | None) -> None:
         self.store: QSettings | _MemoryStore = store if store is not None else _MemoryStore()
+        self._warnings: list[str] = []
+        self._warned: set[str] = set()
+        if isinstance(self.store, QSettings):
+            self._check_file(self.store)
 
-    def _text(self, key: str, default: str) -> str:
-        value = self.store.value(key, default)
-        return str(value) if value is not None else default
+    @property
+    def file_name(self) -> str:
+        return self.store.fileName()
 
-    def _int(self, key: str) -> int | None:
-        value = self.store.value(key)
+    # --- the one way in and out ---------------------------------------------------------
+
+    def read(self, spec: Spec[T]) -> T:
+        """The stored value if it is what ``spec`` allows; otherwise the default, and a warning."""
         try:
-            return int(str(value)) if value is not None else None
-        except ValueError:
-            return None
+            if not self.store.contains(spec.key):
+                return spec.default
+            value = self.store.value(spec.key)
+        except Exception as exc:  # a value Qt itself cannot turn into Python
+            return self._bad(spec, f"unreadable ({type(exc).__name__})")
+        if value is None:
+            return spec.default
+        try:
+            return spec.convert(value)
+        except BadValue as exc:
+            return self._bad(spec, f"{_shown(value)} ({exc})")
+
+    def write(self, spec: Spec[T], value: T) -> None:
+        """Store ``value``; one the spec refuses is a bug in the caller, so it raises."""
+        if value is None:
+            self.store.remove(spec.key)
+            return
+        try:
+            spec.convert(value)
+        except BadValue as exc:
+            raise ValueError(f"{spec.key}: {value!r} is not {spec.expects}") from exc
+        self.store.setValue(spec.key, value)
+
+    def take_warnings(self) -> list[str]:
+        """The warnings not shown yet (each is shown once, at start)."""
+        taken, self._warnings = self._warnings, []
+        return taken
+
+    def _bad(self, spec: Spec[T], what: str) -> T:
+        if spec.key not in self._warned:
+            self._warned.add(spec.key)
+            text = (
+                f"Setting {spec.key} in {self.file_name} was {what}; "
+                f"it should be {spec.expects}, so the default is used"
+            )
+            _log.warning(text)
+            self._warnings.append(text)
+        return spec.default
+
+    def _check_file(self, store: QSettings) -> None:
+        store.allKeys()  # Qt reads the file, and learns its status, on the first access
+        status = store.status()
+        if status is QSettings.Status.NoError:
+            return
+        path = Path(store.fileName())
+        reason = "malformed" if status is QSettings.Status.FormatError else "not readable"
+        kept = ""
+        if status is QSettings.Status.FormatError and path.is_file():
+            copy = path.with_name(path.name + UNREADABLE_SUFFIX)
+            try:
+                shutil.copyfile(path, copy)
+                kept = f"; a copy is kept as {copy}"
+            except OSError:
+                kept = ""
+        text = f"Settings file {path} is {reason}: defaults are used{kept}"
+        _log.warning(text)
+        self._warnings.append(text)
+
+    # --- named values ---------------------------------------------------------------
 
     @property
     def profile(self) -> str:
-        return self._text("station/profile", DEFAULT_PROFILE)
+        return self.read(PROFILE)
 
     @profile.setter
     def profile(self, name: str) -> None:
-        self.store.setValue("station/profile", name)
+        self.write(PROFILE, name)
 
     @property
     def period_ms(self) -> int | None:
-        return self._int("station/period_ms")
+        return self.read(PERIOD_MS)
 
     @period_ms.setter
     def period_ms(self, value: int) -> None:
-        self.store.setValue("station/period_ms", int(value))
+        self.write(PERIOD_MS, int(value))
 
     @property
     def transport(self) -> str:
-        return self._text("link/transport", "emulator")
+        return self.read(TRANSPORT)
 
     @transport.setter
     def transport(self, value: str) -> None:
-        self.store.setValue("link/transport", value)
+        self.write(TRANSPORT, value)
 
     @property
     def device(self) -> str:
         """Last serial port or BLE address used."""
-        return self._text("link/device", "")
+        return self.read(DEVICE)
 
     @device.setter
     def device(self, value: str) -> None:
-        self.store.setValue("link/device", value)
+        self.write(DEVICE, value)
 
     @property
     def baud(self) -> int | None:
-        return self._int("link/baud")
+        return self.read(BAUD)
 
     @baud.setter
     def baud(self, value: int) -> None:
-        self.store.setValue("link/baud", int(value))
+        self.write(BAUD, int(value))
+
+    def job_options(self) -> dict[str, object]:
+        """The jobs dock's reading options that are stored (and valid), by option name."""
+        return {
+            name: self.read(spec)
+            for name, spec in JOB_OPTIONS.items()
+            if self.store.contains(spec.key)
+        }
+
+    def set_job_options(self, values: Mapping[str, object]) -> None:
+        for name, value in values.items():
+            self.write(JOB_OPTIONS[name], value)
 
     def sync(self) -> None:
         self.store.sync()
+
+
+def _shown(value: object) -> str:
+    """A stored value as the warning quotes it: short, one line."""
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "…"

@@ -2,15 +2,25 @@
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QSettings
+from PySide6.QtCore import QSettings, Qt, QTimer
+from PySide6.QtWidgets import QApplication, QComboBox, QDialog, QDialogButtonBox, QInputDialog
 from pytestqt.qtbot import QtBot
 
-from app.__main__ import Launcher, build_parser, connect_as_asked, report_unexpected
+from app.__main__ import (
+    Launcher,
+    ask_profile,
+    build_parser,
+    connect_as_asked,
+    profile_dialog,
+    report_unexpected,
+    start,
+)
 from app.machine import LinkState
-from app.profiles import load_profile
+from app.profiles import available_profiles, load_profile
 from app.settings import StationSettings
 
 
@@ -147,3 +157,127 @@ def test_list_ports_needs_no_display() -> None:
     assert done.returncode in (0, 1), done.stderr
     assert done.stdout.strip(), "prints the ports or says there are none"
     assert "Traceback" not in done.stderr
+
+
+# --- --port without --profile: asked, never guessed ---------------------------------------
+
+
+def test_a_port_without_a_profile_is_refused_headless_with_the_reason(
+    store: QSettings, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The README's --port example once reused the stage profile on a G-code board."""
+    settings = StationSettings(store)
+    settings.profile = "xy-stage"  # remembered from an earlier run: not a reason to guess
+    opened: list[str] = []
+    monkeypatch.setattr(Launcher, "open", lambda _self, profile: opened.append(profile.name))
+    args = build_parser().parse_args(["--port", "/dev/ttyUSB7"])
+    assert start(args, settings) == 2  # the suite runs on the offscreen platform
+    assert opened == []
+    err = capsys.readouterr().err
+    assert "--port /dev/ttyUSB7 needs --profile NAME" in err
+    assert "xy-stage" in err and "grbl-plotter" in err  # the names to choose from
+    assert "does not guess" in err
+
+
+def test_the_profile_question_offers_the_remembered_machine_but_waits_for_a_click(
+    qtbot: QtBot,
+) -> None:
+    dialog = profile_dialog("/dev/ttyUSB7", "grbl-plotter")
+    qtbot.addWidget(dialog)
+    dialog.show()
+    combo = dialog.findChild(QComboBox)
+    assert combo is not None
+    assert [combo.itemText(i) for i in range(combo.count())] == available_profiles()
+    assert combo.currentText() == "grbl-plotter"
+    assert "/dev/ttyUSB7" in dialog.labelText()
+    assert dialog.isVisible() and dialog.result() == 0  # nothing chosen until confirmed
+    combo.setCurrentIndex(combo.findText("pcb-drill"))
+    buttons = dialog.findChild(QDialogButtonBox)
+    assert buttons is not None
+    connect = buttons.button(QDialogButtonBox.StandardButton.Ok)
+    assert connect.text() == "Connect"
+    qtbot.mouseClick(connect, Qt.MouseButton.LeftButton)
+    assert dialog.result() == QDialog.DialogCode.Accepted
+    assert dialog.textValue() == "pcb-drill"
+
+
+def test_a_cancelled_question_opens_nothing(
+    qtbot: QtBot, store: QSettings, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr("app.__main__.HEADLESS_PLATFORMS", frozenset())
+
+    def cancel() -> None:
+        dialog = QApplication.activeModalWidget()
+        assert isinstance(dialog, QInputDialog)
+        dialog.reject()
+
+    QTimer.singleShot(0, cancel)
+    err = io.StringIO()
+    assert ask_profile("/dev/ttyUSB7", StationSettings(store), err) is None
+    assert "no machine chosen for /dev/ttyUSB7" in err.getvalue()
+
+
+def test_the_machine_chosen_for_a_port_is_the_one_opened_and_remembered(
+    qtbot: QtBot, store: QSettings, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr("app.__main__.HEADLESS_PLATFORMS", frozenset())
+    settings = StationSettings(store)
+    settings.profile = "xy-stage"
+
+    def choose() -> None:
+        dialog = QApplication.activeModalWidget()
+        assert isinstance(dialog, QInputDialog)
+        assert dialog.textValue() == "xy-stage"  # preselected: the last used
+        dialog.setTextValue("grbl-plotter")
+        dialog.accept()
+
+    calls: list[tuple[str, str, int | None]] = []
+    monkeypatch.setattr(
+        "app.station.Station.connect_serial",
+        lambda station, port, baud=None: calls.append((station.profile.name, port, baud)),
+    )
+    QTimer.singleShot(0, choose)
+    launcher = start(build_parser().parse_args(["--port", "/dev/ttyUSB7"]), settings)
+    assert isinstance(launcher, Launcher)
+    try:
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        assert calls == [("grbl-plotter", "/dev/ttyUSB7", None)]
+        assert settings.profile == "grbl-plotter"
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()
+
+
+def test_a_baud_no_port_can_take_is_refused_on_the_command_line(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    with pytest.raises(SystemExit):
+        build_parser().parse_args(["--port", "/dev/ttyUSB7", "--baud", str(2**70)])
+    assert "outside 50…4000000" in capsys.readouterr().err
+
+
+def test_a_profile_loaded_from_a_file_opens_and_leaves_the_remembered_one(
+    qtbot: QtBot, store: QSettings, tmp_path: Path
+) -> None:
+    shipped = load_profile("xy-stage").source
+    assert shipped is not None
+    custom = tmp_path / "my-stage.toml"
+    custom.write_text(
+        shipped.read_text(encoding="utf-8").replace('name = "xy-stage"', 'name = "my-stage"'),
+        encoding="utf-8",
+    )
+    settings = StationSettings(store)
+    settings.profile = "usb3"
+    launcher = Launcher(settings, period_ms=None)
+    try:
+        station = launcher.open(load_profile(custom))
+        assert launcher.window is not None
+        qtbot.addWidget(launcher.window)
+        assert station.profile.name == "my-stage"
+        assert settings.profile == "usb3"  # "my-stage" could not be found by name next time
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, QStandardPaths, Qt, Signal
+from PySide6.QtCore import QEvent, QObject, QSettings, QStandardPaths, Qt, Signal
 from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QMainWindow,
+    QMessageBox,
     QPlainTextEdit,
     QScrollArea,
     QStackedWidget,
@@ -38,7 +39,7 @@ from PySide6.QtWidgets import (
 
 from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
-from app.settings import StationSettings
+from app.settings import GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
 from widgets.developer.pane import DeveloperPane
@@ -76,9 +77,6 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
     ("F1", "This list"),
 )
 
-_SETTINGS_GROUP = "main_window"
-_JOB_OPTIONS_GROUP = "job_options"
-
 
 def _is_text_editing(widget: QWidget | None) -> bool:
     """Whether ``widget`` or one of its ancestors edits text (a spin box's line edit…)."""
@@ -102,7 +100,9 @@ def _is_free_text(widget: QWidget | None) -> bool:
 class MainWindow(QMainWindow):
     """The operator window over one :class:`Station`.
 
-    ``settings`` (optional) keeps the window geometry and the page shown between runs.
+    ``settings`` (optional) keeps the window geometry and the page shown between runs;
+    the launcher passes its :class:`StationSettings`, so the warnings about values it could
+    not use (collected since the start) are shown here, once.
     """
 
     #: The operator chose another machine profile; the launcher rebuilds station and window.
@@ -111,7 +111,7 @@ class MainWindow(QMainWindow):
     def __init__(
         self,
         station: Station,
-        settings: QSettings | None = None,
+        settings: QSettings | StationSettings | None = None,
         parent: QWidget | None = None,
         *,
         checkpoint_dir: Path | None = None,
@@ -119,7 +119,12 @@ class MainWindow(QMainWindow):
         super().__init__(parent)
         self.station = station
         self.model = station.model
-        self._settings = settings
+        self._remembers = settings is not None
+        self._settings = (
+            settings if isinstance(settings, StationSettings) else StationSettings(settings)
+        )
+        #: The box listing settings the station could not use (None: there were none).
+        self.settings_warning: QMessageBox | None = None
         self._filtering = False
         self.setWindowTitle(f"StepDeck — {station.profile.title}")
 
@@ -175,7 +180,7 @@ class MainWindow(QMainWindow):
             dynamics_page.setWidgetResizable(True)
             dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
             self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
-        self.connection_panel = ConnectionPanel(station, StationSettings(settings))
+        self.connection_panel = ConnectionPanel(station, self._settings)
         self.connection_panel.profileRequested.connect(self.profileRequested)
         self.menu_panel.add_page(
             "&Link", self.connection_panel, "Connect: emulator, serial port or BLE (Alt+L)"
@@ -431,42 +436,51 @@ class MainWindow(QMainWindow):
     # --- window lifecycle ----------------------------------------------------
 
     def _restore_settings(self) -> None:
-        if self._settings is None:
+        if not self._remembers:
             self.resize(980, 640)
             return
-        self._settings.beginGroup(_SETTINGS_GROUP)
-        geometry = self._settings.value("geometry")
-        state = self._settings.value("state")
-        page = self._settings.value("page", 0, type=int)
-        self._settings.endGroup()
-        self._settings.beginGroup(_JOB_OPTIONS_GROUP)
-        options = {key: self._settings.value(key) for key in self._settings.childKeys()}
-        self._settings.endGroup()
-        self.jobs_dock.restore_options(options)
-        if not (isinstance(geometry, QByteArray) and self.restoreGeometry(geometry)):
+        self.jobs_dock.restore_options(self._settings.job_options())
+        geometry = self._settings.read(GEOMETRY)
+        if geometry is None or not self.restoreGeometry(geometry):
             self.resize(980, 640)
-        if isinstance(state, QByteArray):
+        state = self._settings.read(WINDOW_STATE)
+        if state is not None:
             self.restoreState(state)
-        self.menu_panel.set_page(page if isinstance(page, int) else 0)
+        self.menu_panel.set_page(self._settings.read(PAGE))
+        self._warn_about_settings()
+
+    def _warn_about_settings(self) -> None:
+        """Settings that could not be used: in the status bar and a box, once per start."""
+        warnings = self._settings.take_warnings()
+        if not warnings:
+            return
+        self._show_message(
+            warnings[0]
+            if len(warnings) == 1
+            else f"{len(warnings)} settings could not be used; defaults are used instead"
+        )
+        box = QMessageBox(
+            QMessageBox.Icon.Warning, "StepDeck — settings", "\n\n".join(warnings), parent=self
+        )
+        box.setObjectName("settings_warning")
+        box.setWindowModality(Qt.WindowModality.NonModal)
+        self.settings_warning = box
 
     def save_settings(self) -> None:
         """Store geometry, window state and the page shown (also done on close)."""
-        if self._settings is None:
+        if not self._remembers:
             return
-        self._settings.beginGroup(_SETTINGS_GROUP)
-        self._settings.setValue("geometry", self.saveGeometry())
-        self._settings.setValue("state", self.saveState())
-        self._settings.setValue("page", self.menu_panel.current)
-        self._settings.endGroup()
-        self._settings.beginGroup(_JOB_OPTIONS_GROUP)
-        for key, value in self.jobs_dock.option_values().items():
-            self._settings.setValue(key, value)
-        self._settings.endGroup()
+        self._settings.write(GEOMETRY, self.saveGeometry())
+        self._settings.write(WINDOW_STATE, self.saveState())
+        self._settings.write(PAGE, self.menu_panel.current)
+        self._settings.set_job_options(self.jobs_dock.option_values())
         self._settings.sync()
 
     def showEvent(self, event: QShowEvent) -> None:
         self._install_filter()
         super().showEvent(event)
+        if self.settings_warning is not None and not self.settings_warning.isVisible():
+            self.settings_warning.show()  # not exec(): the window stays usable behind it
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Closing the operator window stops the machine and closes the link."""

@@ -160,6 +160,34 @@ class MachineSession(QObject):
             self._device_heard = True
             self._awaiting_since = None
             self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+        elif self.model.link_state is LinkState.STALE:
+            # Replies are back before the link was given up: green again, nothing reopened.
+            self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
+
+    # --- a silent link: amber, then red ---------------------------------------------------
+
+    def _watch_silence(
+        self, silent_s: float, stale_after_s: float, lost_after_s: float, why: str = ""
+    ) -> None:
+        """Called each tick with how long the reply due has been missing.
+
+        Past ``stale_after_s`` the link is shown *stale* (amber, "no reply for
+        N s", motion still allowed: a reply may only be late); past
+        ``lost_after_s`` it is *lost* (red) and :attr:`linkLost` has the
+        station reopen it.  Any valid reply before that turns it green again
+        (:meth:`_device_answered`).  Each dialect says what is due and when.
+        """
+        if not self._device_heard or self.model.link_state not in (
+            LinkState.CONNECTED,
+            LinkState.STALE,
+        ):
+            return
+        detail = f"no reply for {silent_s:.1f} s{f' ({why})' if why else ''}"
+        if silent_s > lost_after_s:
+            self.model.set_link_state(LinkState.LOST, detail)
+            self.linkLost.emit()
+        elif silent_s > stale_after_s:
+            self.model.set_link_state(LinkState.STALE, detail)
 
     def _heard_unrecognised(self, raw: bytes) -> None:
         """Bytes from the device before it answered: kept to tell which machine it is."""

@@ -12,7 +12,10 @@ The device answers ``R`` at once and ``D`` when the procedure ends, so a
 silent link shows as a missing reply: the session gives the ``R`` a second
 and the ``D`` twice the procedure's expected time plus a margin
 (:mod:`protocol.drill.timing`), then reports the link silent; the station
-reopens it and a running job pauses.
+reopens it and a running job pauses.  Before that, a reply merely late (an
+``R`` after half its time, a ``D`` a second past the expected time) shows
+the link stale, amber, and turns it green again when it comes.  An idle
+drill is asked nothing, so its silence means nothing.
 
 Positions are absolute microsteps from the machine's zero; the session
 converts millimetres with the profile's constants (steps per revolution x
@@ -54,6 +57,10 @@ RECEIPT_TIMEOUT_S = 1.0
 #: The ``D`` may take this much longer than expected (x) and then this many seconds more.
 DONE_FACTOR = 2.0
 DONE_MARGIN_S = 3.0
+#: A reply is late (the link shown stale) after this share of the receipt's time, or this
+#: long after a procedure's expected end.
+RECEIPT_LATE_SHARE = 0.5
+DONE_LATE_S = 1.0
 TICK_MS = 100
 #: Sent once a link opens, to hear the drill answer: no command has this letter.
 PROBE_LETTER = "I"
@@ -104,6 +111,9 @@ class DrillSession(MachineSession):
         self._received = False
         #: Station-clock time by which the device must have answered the command in flight.
         self._deadline: float | None = None
+        #: Since when the reply due has been awaited, and from when on it is late.
+        self._waiting_since: float | None = None
+        self._late_at: float | None = None
         self._probe_sent = False
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -235,7 +245,7 @@ class DrillSession(MachineSession):
         command = self._queue.popleft()
         self._in_flight = command
         self._received = False
-        self._deadline = self.clock.now() + RECEIPT_TIMEOUT_S
+        self._expect(RECEIPT_LATE_SHARE * RECEIPT_TIMEOUT_S, RECEIPT_TIMEOUT_S)
         raw = encode_command(command)
         self.link.write(raw)
         self.frameSent.emit(command, raw)
@@ -245,21 +255,42 @@ class DrillSession(MachineSession):
         self._queue.clear()
         self._in_flight = None
         self._received = False
-        self._deadline = None
+        self._expect(None)
+
+    def _expect(self, late_s: float | None, lost_s: float = 0.0) -> None:
+        """A reply is due: late (amber) after ``late_s``, the link lost after ``lost_s``."""
+        now = self.clock.now()
+        if late_s is None:
+            self._waiting_since = self._late_at = self._deadline = None
+            return
+        self._waiting_since = now
+        self._late_at = now + late_s
+        self._deadline = now + lost_s
 
     # --- time --------------------------------------------------------------------
 
     def tick(self) -> None:
-        """A device that does not answer in time means a silent link: say so, once."""
+        """A late reply shows the link stale; one not come in time means a silent link."""
         self._check_answer()
-        if self._deadline is None or self.clock.now() < self._deadline:
+        since, late_at, deadline = self._waiting_since, self._late_at, self._deadline
+        if since is None or late_at is None or deadline is None:
             return
+        now = self.clock.now()
         command = self._in_flight
-        self._deadline = None
         what = command_text(command) if command is not None else "the last command"
         waited = "its receipt" if not self._received else "the end of its procedure"
-        self.model.message.emit(f"The drill did not answer {what} ({waited}): the link is silent")
-        self.linkLost.emit()
+        if now >= deadline:
+            self._expect(None)
+            self.model.message.emit(
+                f"The drill did not answer {what} ({waited}): the link is silent"
+            )
+            # Lost, whatever the state was: the station reopens the link.
+            self.model.set_link_state(
+                LinkState.LOST, f"no reply for {now - since:.1f} s ({what}: {waited})"
+            )
+            self.linkLost.emit()
+        elif now >= late_at:
+            self._watch_silence(now - since, 0.0, deadline - since, f"{what}: {waited}")
 
     def expected_s(self, command: Command) -> float:
         """How long ``command``'s procedure should take on the reference machine."""
@@ -389,13 +420,12 @@ class DrillSession(MachineSession):
         text = command_text(command)
         if reply.kind is ReplyKind.RECEIVED:
             self._received = True
-            self._deadline = (
-                self.clock.now() + DONE_FACTOR * self.expected_s(command) + DONE_MARGIN_S
-            )
+            takes = self.expected_s(command)
+            self._expect(takes + DONE_LATE_S, DONE_FACTOR * takes + DONE_MARGIN_S)
             self.commandReceived.emit(text)
         elif reply.kind is ReplyKind.DONE:
             self._in_flight = None
-            self._deadline = None
+            self._expect(None)
             self._show_done(command)
             self.commandDone.emit(text)
             if self._queue:

@@ -9,7 +9,8 @@ oldest unacknowledged line, which is how a reply is tied to its line (and a
 job's error to its file line).
 
 Real-time bytes bypass the stream: ``?`` every ``status_ms`` keeps positions
-and the machine state fresh (and proves the device alive), ``!`` holds,
+and the machine state fresh (and proves the device alive: three unanswered
+show the link stale, amber, and 2 s without a reply lost, red), ``!`` holds,
 ``~`` resumes, 0x18 resets.  A stop is a feed hold followed by a soft reset
 once the machine stands, which throws away what the device had buffered
 without losing its position.
@@ -50,6 +51,9 @@ from protocol.gcode.streaming import LineStreamer, StreamMode
 
 #: No reply to status queries for this long: the device is gone (the station reconnects).
 SILENCE_S = 2.0
+#: Status queries unanswered before the link is shown stale (amber), and the least time.
+STALE_QUERIES = 3
+STALE_AFTER_MIN_S = 0.5
 #: Jogging: each held-arrow step is this much motion, and the next goes only while the
 #: device's planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line
 #: is *planned*, so counting answers alone would let a held key fill the planner).
@@ -165,6 +169,11 @@ class GcodeSession(MachineSession):
     @property
     def period_ms(self) -> int:
         return self.settings.status_ms
+
+    @property
+    def stale_after_s(self) -> float:
+        """Silence shown amber: a few status queries (one each ``status_ms``) unanswered."""
+        return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
 
     @property
     def machine_state(self) -> str:
@@ -416,10 +425,11 @@ class GcodeSession(MachineSession):
         if requested is not None and now - requested > RESET_AFTER_S:
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
-        if self.device_answered and now - self._last_heard > SILENCE_S:
+        silent = now - self._last_heard
+        if self.device_answered and silent > SILENCE_S:
             self._last_heard = now
             self.model.message.emit(f"No reply from the device for {SILENCE_S:g} s")
-            self.linkLost.emit()
+        self._watch_silence(silent, self.stale_after_s, SILENCE_S)
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""

@@ -358,11 +358,9 @@ class StageSession(MachineSession):
             return
         silent = self.clock.now() - self._last_echo
         if silent > LOST_AFTER_S:
-            self._jog = [0] * self.axis_count
-            self.model.set_link_state(LinkState.LOST, f"no reply for {silent:.1f} s")
-            self.linkLost.emit()
-        elif silent > STALE_PERIODS * self._period_ms / 1000:
-            self.model.set_link_state(LinkState.STALE, f"no reply for {silent:.1f} s")
+            self._jog = [0] * self.axis_count  # the device's watchdog has stopped it already
+        # Every frame is echoed within 20 ms: three silent periods are amber, 2 s red.
+        self._watch_silence(silent, STALE_PERIODS * self._period_ms / 1000, LOST_AFTER_S)
 
     def _on_data(self, data: bytes) -> None:
         self._heard_unrecognised(data)  # kept until the device answers: whose words?

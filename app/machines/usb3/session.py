@@ -5,6 +5,15 @@ while it moves; it has no jog command, so a held key becomes a stream of
 short moves that keeps the axis a fraction of a second ahead of the key, and
 the release sends ``S;`` (where the profile declares that extension) so the
 axis stops at once rather than running out its lead.
+
+The unit speaks only while an axis moves or when asked, so a link that went
+quiet is asked: after :data:`POLL_AFTER_S` without a reply the session sends
+``G;`` (report settings: it moves nothing), once per such interval.  An
+unanswered question shows the link stale (amber) at :data:`STALE_AFTER_S`
+and lost (red, reopened by the station) at :data:`LOST_AFTER_S`; an answer
+before that turns it green again.  A report that repeats what the session
+already holds changes nothing (no ``settingsChanged``), so the questions do
+not make a running job forget where the axes stand.
 """
 
 from __future__ import annotations
@@ -48,6 +57,10 @@ JOG_LEAD_S = 0.3
 #: An axis that has not reported for this long after a report has stopped.
 STILL_AFTER_S = 0.25
 TICK_MS = 100
+#: Seconds without any reply before the unit is asked ``G;``, then late (amber), then lost.
+POLL_AFTER_S = 1.0
+STALE_AFTER_S = 1.5
+LOST_AFTER_S = 3.0
 DEFAULT_STEP = StepSize.EIGHTH
 DEFAULT_THREAD = Thread.M6
 
@@ -80,6 +93,10 @@ class Usb3Session(MachineSession):
         self._zeroing = [False] * self.axis_count
         #: Where the jog leads sent so far take each axis (None: from its position).
         self._jog_end: list[float | None] = [None] * self.axis_count
+        self._last_heard = clock.now()
+        self._asked_at: float | None = None  # the last G; asked because the unit was quiet
+        #: Which settings reports came since the link opened (the first always counts).
+        self._reported: set[str] = set()
         self._stop_command = stop_command
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -201,11 +218,23 @@ class Usb3Session(MachineSession):
         if any(self._jog):
             self._send_jog_lead(TICK_MS / 1000)
         now = self.clock.now()
+        self._keep_alive(now)
         for axis, last in enumerate(self._last_report):
             if last is not None and now - last > STILL_AFTER_S:
                 self._last_report[axis] = None
                 self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
         self.ticked.emit()
+
+    def _keep_alive(self, now: float) -> None:
+        """Ask a quiet unit ``G;``; a question left unanswered is a silent link."""
+        silent = now - self._last_heard
+        if not self.device_answered or not self.link.is_open:
+            return
+        asked = self._asked_at
+        if silent >= POLL_AFTER_S and (asked is None or now - asked >= POLL_AFTER_S):
+            self._asked_at = now
+            self.request_settings()
+        self._watch_silence(silent, STALE_AFTER_S, LOST_AFTER_S)
 
     def shutdown(self) -> None:
         self._timer.stop()
@@ -255,6 +284,9 @@ class Usb3Session(MachineSession):
         self.decoder.reset()
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
+        self._last_heard = self.clock.now()
+        self._asked_at = None
+        self._reported.clear()
         self._await_device()
         if self._autotick:
             self._timer.start()
@@ -281,18 +313,29 @@ class Usb3Session(MachineSession):
             if isinstance(reply, Rejected):
                 self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
                 continue
+            self._last_heard = self.clock.now()
             self._device_answered()
             if isinstance(reply, Position):
                 self._apply_position(reply.axis, reply.count)
             elif isinstance(reply, StepSizes):
-                self.step_sizes[: self.axis_count] = list(reply.sizes)[: self.axis_count]
-                self.settingsChanged.emit()
+                sizes = list(reply.sizes)[: self.axis_count]
+                if self._news("M", sizes != self.step_sizes[: self.axis_count]):
+                    self.step_sizes[: self.axis_count] = sizes
+                    self.settingsChanged.emit()
             elif isinstance(reply, Threads):
-                self.threads[: self.axis_count] = list(reply.threads)[: self.axis_count]
-                self._refresh_positions()
-                self.settingsChanged.emit()
+                threads = list(reply.threads)[: self.axis_count]
+                if self._news("T", threads != self.threads[: self.axis_count]):
+                    self.threads[: self.axis_count] = threads
+                    self._refresh_positions()
+                    self.settingsChanged.emit()
             elif isinstance(reply, NotUnderstood):
                 self.model.message.emit("The unit did not understand a command (?;)")
+
+    def _news(self, report: str, changed: bool) -> bool:
+        """Whether a settings report is news: a change, or the first since the link opened."""
+        first = report not in self._reported
+        self._reported.add(report)
+        return changed or first
 
     def _apply_position(self, axis: AxisId, count: int) -> None:
         if axis >= self.axis_count:
