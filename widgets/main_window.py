@@ -44,6 +44,7 @@ from app.telemetry import TelemetryRecorder
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
+from widgets.number_field import NumberField
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
 from widgets.panels.drill import DrillPanel
@@ -93,7 +94,7 @@ def _is_free_text(widget: QWidget | None) -> bool:
     """A field where any character is input (not a number field, whose keys we may take)."""
     if isinstance(widget, (QTextEdit, QPlainTextEdit)):
         return True
-    if not isinstance(widget, QLineEdit):
+    if not isinstance(widget, QLineEdit) or isinstance(widget, NumberField):
         return False
     parent = widget.parentWidget()
     return not isinstance(parent, QAbstractSpinBox)
