@@ -14,7 +14,6 @@ from tests.helpers.harness import StationHarness
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.info import InfoPanel
 
-
 MOVES = {CommandId.MOVE_ABS, CommandId.MOVE_REL, CommandId.HOME, CommandId.JOG}
 
 

@@ -119,6 +119,7 @@ class NumberField(QLineEdit):
     def setValue(self, value: float) -> None:
         """Show ``value`` as it is — out of range it is shown, and framed invalid."""
         self.setText(format_number(value, self._decimals))
+        self._judge()  # also when the caller blocked signals to fill the field quietly
 
     def number(self) -> float | None:
         """The number the text spells, in range or not; None when it spells none."""

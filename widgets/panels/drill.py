@@ -222,7 +222,7 @@ class DrillPanel(QWidget):
         return False
 
     def confirm_long_move(self) -> bool:
-        """"Send anyway": the operator has read that the move cannot be stopped."""
+        """Send anyway: the operator has read that the move cannot be stopped."""
         text, self._pending_line = self._pending_line, None
         self.long_move.hide()
         return text is not None and self._send_now(text)

@@ -139,22 +139,22 @@ class DynamicsPanel(QWidget):
             parameter = BY_TYPE[type_]
             shown = self.fields[key].value()
             if shown is None:
-                reason = self.fields[key].problem() or "not a number"
-                self._set_state(key, "✗ not sent", _RED, reason)
-                reasons.append(f"{self._model.axes[axis].name} {parameter.label}: {reason}")
+                problem = self.fields[key].problem() or "not a number"
+                self._set_state(key, "✗ not sent", _RED, problem)
+                reasons.append(f"{self._model.axes[axis].name} {parameter.label}: {problem}")
                 continue
             wire = parameter.to_wire(shown)
             if wire == self._model.parameter(axis, type_).value:
                 self._edited.discard(key)
                 self._set_state(key, "", _GREY)
                 continue
-            reason = check_for_axis(parameter, wire, self._station.profile.axes[axis])
-            if reason is not None:
-                self._set_state(key, "✗ not sent", _RED, reason)
-                reasons.append(f"{self._model.axes[axis].name} {reason}")
+            refused = check_for_axis(parameter, wire, self._station.profile.axes[axis])
+            if refused is not None:
+                self._set_state(key, "✗ not sent", _RED, refused)
+                reasons.append(f"{self._model.axes[axis].name} {refused}")
                 continue
-            session.write_parameter(axis, parameter.type, wire)
-            sent += 1
+            if session.write_parameter(axis, parameter.type, wire):
+                sent += 1
         parts = [f"{sent} value(s) written"] if sent else []
         parts += [f"not sent: {reason}" for reason in reasons]
         self.summary.setText("; ".join(parts) or "Nothing changed")
