@@ -81,6 +81,8 @@ def beyond_mechanics(parameter: StageParameter, wire: int, axis: AxisProfile) ->
     The device checks its own ranges (and says so when it refuses); it cannot
     know the machine it is built into, so this one the station checks.
     """
+    if parameter.type != EchoType.TRAVEL:
+        return None
     _low, high = wire_limits(parameter, axis)
     if wire > high:
         return (
