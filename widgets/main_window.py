@@ -16,7 +16,16 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QByteArray, QEvent, QObject, QSettings, QStandardPaths, Qt, Signal
+from PySide6.QtCore import (
+    QByteArray,
+    QEvent,
+    QObject,
+    QSettings,
+    QStandardPaths,
+    Qt,
+    QTimer,
+    Signal,
+)
 from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -54,7 +63,7 @@ from widgets.panels.info import InfoPanel
 from widgets.panels.manual import ManualPanel
 from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
-from widgets.panels.static import StaticPanel
+from widgets.panels.static import StaticPanel, stop_key_text
 from widgets.panels.usb3 import Usb3Panel
 from widgets.telemetry_dock import TelemetryDock
 
@@ -122,6 +131,7 @@ class MainWindow(QMainWindow):
         self.model = station.model
         self._settings = settings
         self._filtering = False
+        self._close_after_stop = False
         self.setWindowTitle(f"StepDeck — {station.profile.title}")
 
         self.jog = JogInput(station, self)
@@ -274,13 +284,15 @@ class MainWindow(QMainWindow):
     def show_shortcuts(self) -> QDialog:
         """Show (non-modal) the list of keys; returns the dialog."""
         if self._help is None:
+            esc = stop_key_text(self.station.profile)
             rows = "".join(
-                f"<tr><td style='padding-right:16px'><b>{keys}</b></td><td>{what}</td></tr>"
+                f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
+                f"<td>{esc if keys == 'Esc' else what}</td></tr>"
                 for keys, what in SHORTCUTS
             )
             text = QLabel(
                 f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
-                "has focus: there they keep editing. Esc always stops.</p>"
+                "has focus: there they keep editing. Esc works from anywhere.</p>"
             )
             text.setWordWrap(True)
             buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
@@ -463,15 +475,33 @@ class MainWindow(QMainWindow):
         self._settings.endGroup()
         self._settings.sync()
 
+    def _close_when_stopped(self) -> None:
+        self.station.linkClosed.disconnect(self._close_when_stopped)
+        self._close_after_stop = False
+        # After the station's signal has returned: closing re-enters the station.
+        QTimer.singleShot(0, self.close)
+
     def showEvent(self, event: QShowEvent) -> None:
         self._install_filter()
         super().showEvent(event)
 
     def closeEvent(self, event: QCloseEvent) -> None:
-        """Closing the operator window stops the machine and closes the link."""
+        """Closing the operator window stops the machine and closes the link.
+
+        While a move runs the window stays open until the device confirms the
+        stop (at most ``STOP_CONFIRM_S``), without blocking the event loop;
+        then it closes by itself.
+        """
+        self.jog.release_all()
+        if not self.station.stop_and_close():
+            if not self._close_after_stop:
+                self._close_after_stop = True
+                self.station.linkClosed.connect(self._close_when_stopped)
+            self._show_message("Stopping every axis before closing…")
+            event.ignore()
+            return
         self.save_settings()
         self._remove_filter()
-        self.jog.release_all()
         if self._help is not None:
             self._help.close()
         self.station.shutdown()

@@ -4,6 +4,10 @@ Speed choice, Sleep/Wake and Stop live outside the stacked pages so the
 operator never has to switch pages to stop the machine or wake it up.  Sleep
 is shown from the device's reports, not from what was asked, so the button
 always offers what will actually change the machine's state.
+
+On a machine that cannot stop a move (the PCB drill has no stop command) the
+Stop button says on its face what it and Esc do instead — drop the queued
+commands and let the running procedure finish — rather than promising a stop.
 """
 
 from __future__ import annotations
@@ -11,9 +15,36 @@ from __future__ import annotations
 from PySide6.QtWidgets import QButtonGroup, QLabel, QPushButton, QVBoxLayout, QWidget
 
 from app.machine import LinkState
+from app.profiles import MachineProfile
 from app.station import Station
 from widgets.jog_input import JogInput
 from widgets.style import CHECKED_BUTTON_STYLE
+
+_STOP_STYLE = (
+    "QPushButton {{ background: #c62828; color: white; font-size: {size}pt;"
+    " font-weight: bold; border-radius: 8px; padding: 6px; }}"
+    "QPushButton:pressed {{ background: #8e1b1b; }}"
+)
+
+
+def stop_caption(profile: MachineProfile) -> tuple[str, str]:
+    """What the Stop button (and Esc) will do on this machine: its caption and tooltip."""
+    if profile.capabilities.stop_command:
+        return "STOP", "Stop every axis now (Esc, from anywhere in the window)"
+    running = "procedure" if profile.dialect == "drill" else "move"
+    return (
+        f"DROP QUEUE\nthis {running}\nfinishes (Esc)",
+        f"The {profile.title} has no stop command: this button and Esc drop the commands "
+        f"queued after the running one; the {running} it is running finishes",
+    )
+
+
+def stop_key_text(profile: MachineProfile) -> str:
+    """Esc's line in the keyboard help, as true on this machine as on the button."""
+    if profile.capabilities.stop_command:
+        return "Stop everything, from anywhere in the window"
+    running = "procedure" if profile.dialect == "drill" else "move"
+    return f"Drop the queued commands, from anywhere (no stop command: this {running} finishes)"
 
 
 class StaticPanel(QWidget):
@@ -45,14 +76,12 @@ class StaticPanel(QWidget):
         self.sleep_button.clicked.connect(self._toggle_sleep)
         self.sleep_button.setVisible(station.profile.capabilities.sleep)
 
-        self.stop_button = QPushButton("STOP")
-        self.stop_button.setToolTip("Stop every axis now (Esc, from anywhere in the window)")
+        caption, tip = stop_caption(station.profile)
+        self.stop_button = QPushButton(caption)
+        self.stop_button.setObjectName("stop_button")
+        self.stop_button.setToolTip(tip)
         self.stop_button.setMinimumSize(120, 80)
-        self.stop_button.setStyleSheet(
-            "QPushButton { background: #c62828; color: white; font-size: 18pt;"
-            " font-weight: bold; border-radius: 8px; }"
-            "QPushButton:pressed { background: #8e1b1b; }"
-        )
+        self.stop_button.setStyleSheet(_STOP_STYLE.format(size=18 if caption == "STOP" else 11))
         self.stop_button.clicked.connect(jog.stop_all)
 
         layout = QVBoxLayout(self)
