@@ -19,7 +19,7 @@ from pytestqt.qtbot import QtBot
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.settings import StationSettings
-from app.station import STOP_CONFIRM_S
+from app.station import STOP_CONFIRM_S, Station
 from protocol.stage.codec import CommandFrame, CommandId, decode
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -156,3 +156,23 @@ def test_disconnect_on_a_gcode_machine_holds_resets_and_then_closes(
     emulator.run_until(plotter.clock.now() + 10.0)
     assert emulator.position()["X"] == pytest.approx(stood_at)
     assert stood_at < moving_at + 10 < 200
+
+
+def test_in_real_time_the_wait_runs_on_the_event_loop(qtbot: QtBot) -> None:
+    """The station's own timer, not a test clock, ends the wait; the GUI thread never sleeps."""
+    station = Station(load_profile("xy-stage"))  # real clock, emulator on its ticker thread
+    try:
+        station.connect_emulator()
+        session = station.session
+        assert session is not None
+        qtbot.waitUntil(lambda: session.device_answered, timeout=5000)
+        assert session.move_absolute(0, 50.0)
+        qtbot.waitUntil(lambda: station.model.axes[0].moving, timeout=5000)
+        emulator = station.stage_emulator
+        assert emulator is not None
+        with qtbot.waitSignal(station.linkClosed, timeout=5000):
+            assert station.stop_and_close() is False
+        assert not emulator.axes[0].moving
+        assert emulator.axes[0].position_um < 50_000
+    finally:
+        station.shutdown()
