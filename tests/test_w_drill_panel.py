@@ -169,6 +169,7 @@ def test_stop_button_says_it_drops_the_queue_and_esc_does_that(
     stop = window.static_panel.stop_button
     assert stop.text() == "DROP QUEUE\nthis procedure\nfinishes (Esc)"
     assert "no stop command" in stop.toolTip()
+    assert window.manual_panel.stop_button.text() == "■ Drop\nqueue"  # the jog pad's too
     help_text = window.show_shortcuts().findChild(QLabel).text()
     assert "Drop the queued commands" in help_text and "this procedure finishes" in help_text
 
@@ -189,6 +190,7 @@ def test_stop_button_on_a_machine_that_stops_says_stop(
     window = MainWindow(harness.station)
     qtbot.addWidget(window)
     assert window.static_panel.stop_button.text() == "STOP"
+    assert window.manual_panel.stop_button.text() == "■ Stop"
 
 
 # --- long moves ask first: they cannot be stopped ------------------------------------------

@@ -63,8 +63,9 @@ from widgets.panels.info import InfoPanel
 from widgets.panels.manual import ManualPanel
 from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
-from widgets.panels.static import StaticPanel, stop_key_text
+from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
+from widgets.stop_caption import stop_key_text
 from widgets.telemetry_dock import TelemetryDock
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.

@@ -15,9 +15,9 @@ from __future__ import annotations
 from PySide6.QtWidgets import QButtonGroup, QLabel, QPushButton, QVBoxLayout, QWidget
 
 from app.machine import LinkState
-from app.profiles import MachineProfile
 from app.station import Station
 from widgets.jog_input import JogInput
+from widgets.stop_caption import stop_caption
 from widgets.style import CHECKED_BUTTON_STYLE
 
 _STOP_STYLE = (
@@ -25,26 +25,6 @@ _STOP_STYLE = (
     " font-weight: bold; border-radius: 8px; padding: 6px; }}"
     "QPushButton:pressed {{ background: #8e1b1b; }}"
 )
-
-
-def stop_caption(profile: MachineProfile) -> tuple[str, str]:
-    """What the Stop button (and Esc) will do on this machine: its caption and tooltip."""
-    if profile.capabilities.stop_command:
-        return "STOP", "Stop every axis now (Esc, from anywhere in the window)"
-    running = "procedure" if profile.dialect == "drill" else "move"
-    return (
-        f"DROP QUEUE\nthis {running}\nfinishes (Esc)",
-        f"The {profile.title} has no stop command: this button and Esc drop the commands "
-        f"queued after the running one; the {running} it is running finishes",
-    )
-
-
-def stop_key_text(profile: MachineProfile) -> str:
-    """Esc's line in the keyboard help, as true on this machine as on the button."""
-    if profile.capabilities.stop_command:
-        return "Stop everything, from anywhere in the window"
-    running = "procedure" if profile.dialect == "drill" else "move"
-    return f"Drop the queued commands, from anywhere (no stop command: this {running} finishes)"
 
 
 class StaticPanel(QWidget):
