@@ -9,6 +9,13 @@ The station also owns reconnection: when a link is lost (the transport
 reports an error, or the device falls silent for 2 s) it closes the
 transport and opens it again with back-off, on its own clock, so the
 operator never has to, and the session re-reads the device when it is back.
+
+Closing a link on the operator's word (Disconnect, closing the window) first
+stops every axis and waits — on the event loop, never blocking it — up to
+:data:`STOP_CONFIRM_S` for the device to report its axes still, then closes:
+a move must not run on with nobody left to stop it.  A machine without a stop
+command (the drill) has its queue dropped and is closed at once; its running
+procedure finishes, and the operator is told so.
 """
 
 from __future__ import annotations
@@ -40,11 +47,19 @@ from protocol.transport.serial_link import SerialTransport
 
 RECONNECT_DELAYS = (0.5, 1.0, 2.0, 4.0)
 POLL_MS = 100
+#: The longest Disconnect or closing the window waits for the device to confirm the stop:
+#: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next
+#: echo; a G-code board's hold takes about as long.
+STOP_CONFIRM_S = 1.0
+#: How often the wait looks at the device's reports (in real time).
+STOP_CHECK_MS = 20
 
 
 class Station(QObject):
     sessionChanged = Signal()
     echoInjected = Signal(object)  # EchoFrame, for the frame log
+    #: A link was closed on the operator's word (after the stop, when one was awaited).
+    linkClosed = Signal()
 
     def __init__(
         self,
@@ -73,6 +88,11 @@ class Station(QObject):
         self._poll = QTimer(self)
         self._poll.setInterval(POLL_MS)
         self._poll.timeout.connect(self.poll)
+        #: Station-clock time by which the device must have confirmed the stop, while waiting.
+        self._stop_deadline: float | None = None
+        self._stop_check = QTimer(self)
+        self._stop_check.setInterval(STOP_CHECK_MS)
+        self._stop_check.timeout.connect(self._check_stop)
 
     @property
     def loopback(self) -> LoopbackTransport | None:
@@ -185,12 +205,83 @@ class Station(QObject):
             self._poll.start()
         self.link.open()
 
+    @property
+    def stopping_to_close(self) -> bool:
+        """A stop went out and the link closes once the device confirms it (or time is up)."""
+        return self._stop_deadline is not None
+
+    def stop_and_close(self) -> bool:
+        """Disconnect: stop every axis, wait for the device to confirm it, then close.
+
+        Returns True when the link closed at once (nothing moving, nothing to
+        wait for, or a machine that cannot stop a move); False while the
+        stop is awaited — :attr:`linkClosed` follows within
+        :data:`STOP_CONFIRM_S` (plus one check), confirmed or not.
+        """
+        if self._stop_deadline is not None:
+            return False
+        session = self.session
+        if not self._live():
+            self.close_link()
+            return True
+        assert session is not None
+        session.stop_all()
+        if not self.profile.capabilities.stop_command or session.motion_stopped():
+            self._close(send_stop=False)
+            return True
+        self._stop_deadline = self.clock.now() + STOP_CONFIRM_S
+        self.model.message.emit("Stopping every axis before closing the link…")
+        if self.realtime:
+            self._stop_check.start()
+        return False
+
+    def _live(self) -> bool:
+        """A link that is open to a device that has answered: a stop would reach it."""
+        return (
+            self.session is not None
+            and self.link is not None
+            and self.link.is_open
+            and self.session.device_answered
+        )
+
+    def _check_stop(self) -> None:
+        """While a stop is awaited: close once the device reports every axis still."""
+        deadline = self._stop_deadline
+        if deadline is None:
+            self._stop_check.stop()
+            return
+        session = self.session
+        if session is None or not self._live():
+            self.model.message.emit("The link went before the stop was confirmed; closed")
+            self._close(send_stop=False)
+        elif session.motion_stopped():
+            self.model.message.emit("Every axis stopped; link closed")
+            self._close(send_stop=False)
+        elif self.clock.now() >= deadline:
+            self.model.message.emit(
+                f"The device did not confirm the stop within {STOP_CONFIRM_S:g} s; "
+                "link closed anyway — check that the machine stands"
+            )
+            self._close(send_stop=False)
+
     def close_link(self) -> None:
-        """Close on the operator's word: no reconnection follows."""
+        """Close on the operator's word: no reconnection follows.
+
+        Closing at once (another link chosen, the emulator switched off) still
+        sends a stop first when an axis is moving; :meth:`stop_and_close`
+        also waits for it to be confirmed.
+        """
+        self._close(send_stop=self._stop_deadline is None)
+
+    def _close(self, *, send_stop: bool) -> None:
+        self._stop_deadline = None
+        self._stop_check.stop()
         self._reconnect_at = None
         self._attempt = 0
         self._poll.stop()
         if self.session is not None:
+            if send_stop and self._live() and not self.session.motion_stopped():
+                self.session.stop_all()
             self.session.shutdown()
         if self.link is not None:
             self._closing = True
@@ -207,6 +298,7 @@ class Station(QObject):
         self.model.set_link_state(LinkState.DISCONNECTED)
         if had_session:
             self.sessionChanged.emit()
+            self.linkClosed.emit()
 
     def set_period_ms(self, period_ms: int) -> None:
         self.period_ms = period_ms
@@ -214,10 +306,15 @@ class Station(QObject):
             self.session.set_period_ms(period_ms)
 
     def shutdown(self) -> None:
-        """Stop motion, close the link and end the BLE thread; called when the window closes."""
-        if self.session is not None and self.link is not None and self.link.is_open:
+        """Stop motion, close the link and end the BLE thread, at once (the application ends).
+
+        The window waits for the stop first (:meth:`stop_and_close`); this is the last word.
+        """
+        stop_now = self._stop_deadline is None and self._live()
+        if stop_now:
+            assert self.session is not None
             self.session.stop_all()
-        self.close_link()
+        self._close(send_stop=False)
         if self._ble_loop is not None:
             self._ble_loop.stop()
             self._ble_loop = None
@@ -225,7 +322,12 @@ class Station(QObject):
     # --- losing and regaining the link ---------------------------------------
 
     def poll(self) -> None:
-        """Start a due reconnection attempt (a timer in real time, the test clock otherwise)."""
+        """Start a due reconnection attempt (a timer in real time, the test clock otherwise).
+
+        Also looks at an awaited stop, so that on a test clock the wait advances with it.
+        """
+        if self._stop_deadline is not None:
+            self._check_stop()
         if self._reconnect_at is None or self.link is None:
             return
         if self.clock.now() < self._reconnect_at:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QPoint, Qt
-from PySide6.QtWidgets import QAbstractSpinBox, QCheckBox, QFileDialog, QLineEdit
+from PySide6.QtWidgets import QCheckBox, QFileDialog, QLineEdit
 from pytestqt.qtbot import QtBot
 
 from app.developer.stage import AxisFields, EchoFields, inject_echo
@@ -20,6 +20,7 @@ from protocol.stage.codec import AxisStatus
 from tests.helpers.fake_transport import SilentPort
 from tests.helpers.harness import StationHarness
 from widgets.developer.pane import DeveloperPane
+from widgets.number_field import NumberField
 
 LEFT = Qt.MouseButton.LeftButton
 
@@ -52,13 +53,11 @@ def _tick(qtbot: QtBot, box: QCheckBox) -> None:
     qtbot.mouseClick(box, LEFT, pos=QPoint(8, box.height() // 2))
 
 
-def _enter_value(qtbot: QtBot, spin: QAbstractSpinBox, text: str) -> None:
-    line = spin.lineEdit()
-    assert line is not None
-    spin.setFocus()
-    line.selectAll()
-    qtbot.keyClicks(line, text)
-    qtbot.keyClick(spin, Qt.Key.Key_Return)
+def _enter_value(qtbot: QtBot, field: NumberField, text: str) -> None:
+    field.setFocus()
+    field.selectAll()
+    qtbot.keyClicks(field, text)
+    qtbot.keyClick(field, Qt.Key.Key_Return)
 
 
 # --- the echo composer ---------------------------------------------------------------
@@ -307,6 +306,18 @@ def test_typed_battery_temperature_and_rotation_reach_the_emulator(
     assert emulator.rotation_rate_dps == 10.0
     connected.run(1.0)
     assert emulator.yaw_deg == pytest.approx(10.0, abs=0.01)
+
+
+def test_an_out_of_range_battery_is_shown_invalid_and_not_applied(
+    qtbot: QtBot, connected: StationHarness, pane: DeveloperPane
+) -> None:
+    box = pane.emulator_box
+    _enter_value(qtbot, box.battery, "150")  # a spin box made this 15
+    assert box.battery.text() == "150" and box.battery.value() is None
+    assert "Battery: 150 is outside 0…100 %" in box.note.text()
+    assert connected.emulator.battery_charge != 15.0 and connected.emulator.battery_charge <= 100
+    _enter_value(qtbot, box.corrupt_count, "0")
+    assert not box.corrupt_button.isEnabled()
 
 
 def test_an_end_switch_button_stops_the_axis(

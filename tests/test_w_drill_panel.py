@@ -11,13 +11,13 @@ from collections.abc import Iterator
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QListWidget, QPushButton
+from PySide6.QtWidgets import QLabel, QListWidget, QPushButton, QWidget
 from pytestqt.qtbot import QtBot
 
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
-from widgets.panels.drill import DrillPanel
+from widgets.panels.drill import LONG_MOVE_S, DrillPanel
 
 
 @pytest.fixture
@@ -151,3 +151,104 @@ def test_main_window_has_a_drill_page_and_no_absolute_or_relative(
     assert "D&rill" in titles
     assert not any(t in titles for t in ("&Absolute", "&Relative", "&Dynamics"))
     assert not hasattr(window, "absolute_panel")
+
+
+# --- what STOP and Esc do on a machine that cannot stop a move (issue 15, symptom 9) -------
+
+
+def test_stop_button_says_it_drops_the_queue_and_esc_does_that(
+    qtbot: QtBot, drill: StationHarness
+) -> None:
+    window = MainWindow(drill.station)
+    qtbot.addWidget(window)
+    window.show()
+    window.activateWindow()
+    qtbot.waitUntil(window.isActiveWindow)
+    drill.connect()
+    drill.run(0.02)
+    stop = window.static_panel.stop_button
+    assert stop.text() == "DROP QUEUE\nthis procedure\nfinishes (Esc)"
+    assert "no stop command" in stop.toolTip()
+    assert window.manual_panel.stop_button.text() == "■ Drop\nqueue"  # the jog pad's too
+    help_text = window.show_shortcuts().findChild(QLabel).text()
+    assert "Drop the queued commands" in help_text and "this procedure finishes" in help_text
+
+    mark = len(drill.written)
+    for letter in "KZK":
+        click(qtbot, window.drill_panel.command_buttons[letter])
+    assert drill.written[mark:] == [b"K\r"]  # one at a time: Z and K wait in the queue
+    qtbot.keyClick(window, Qt.Key.Key_Escape)
+    drill.run_until(lambda: window.drill_panel.done_list.count() == 1)
+    drill.run(1.0)
+    assert drill.written[mark:] == [b"K\r"]  # the queue was dropped, the running K finished
+    assert items(window.drill_panel.done_list) == ["K"]
+
+
+def test_stop_button_on_a_machine_that_stops_says_stop(
+    qtbot: QtBot, harness: StationHarness
+) -> None:
+    window = MainWindow(harness.station)
+    qtbot.addWidget(window)
+    assert window.static_panel.stop_button.text() == "STOP"
+    assert window.manual_panel.stop_button.text() == "■ Stop"
+
+
+# --- long moves ask first: they cannot be stopped ------------------------------------------
+
+
+def type_target(qtbot: QtBot, box: QWidget, text: str) -> None:
+    qtbot.mouseClick(box, Qt.MouseButton.LeftButton)
+    qtbot.keyClick(box, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClicks(box, text)
+
+
+def test_a_long_move_is_sent_only_after_send_anyway(
+    qtbot: QtBot, drill: StationHarness, panel: DrillPanel
+) -> None:
+    # 3960 microsteps of X (200 mm) run 3960 x 1.3 ms ≈ 5.1 s: past LONG_MOVE_S.
+    type_target(qtbot, panel.targets[0], "3960")
+    mark = len(drill.written)
+    click(qtbot, panel.send_buttons[0])
+    assert drill.written[mark:] == []
+    assert panel.long_move.isVisible()
+    assert "X3960" in panel.long_move_label.text() and "5 s" in panel.long_move_label.text()
+    assert "no stop command" in panel.long_move_label.text()
+    click(qtbot, panel.long_move_cancel)
+    assert not panel.long_move.isVisible()
+    drill.run(0.5)
+    assert drill.written[mark:] == []
+
+    click(qtbot, panel.send_buttons[0])
+    click(qtbot, panel.long_move_send)
+    assert drill.written[mark:] == [b"X3960\r"]
+    assert not panel.long_move.isVisible()
+
+
+def test_a_long_move_typed_in_the_terminal_asks_too(
+    qtbot: QtBot, drill: StationHarness, panel: DrillPanel
+) -> None:
+    assert LONG_MOVE_S < 2955 * 0.0015  # 150 mm of Y
+    type_line(qtbot, panel, "Y2955")
+    mark = len(drill.written)
+    qtbot.keyClick(panel.entry, Qt.Key.Key_Return)
+    assert drill.written[mark:] == [] and panel.long_move.isVisible()
+    click(qtbot, panel.long_move_send)
+    assert drill.written[mark:] == [b"Y2955\r"]
+    # A short move goes at once (1000 microsteps of X: 1.3 s).
+    drill.run_until(lambda: panel.done_list.count() == 1, timeout=20)
+    type_line(qtbot, panel, "X1000")
+    qtbot.keyClick(panel.entry, Qt.Key.Key_Return)
+    assert drill.written[-1] == b"X1000\r" and not panel.long_move.isVisible()
+
+
+def test_a_target_beyond_the_travel_is_shown_invalid_and_not_sent(
+    qtbot: QtBot, drill: StationHarness, panel: DrillPanel
+) -> None:
+    type_target(qtbot, panel.targets[0], "5000")  # X travel: 200 mm = 3960 microsteps
+    assert panel.targets[0].text() == "5000" and panel.targets[0].value() is None
+    assert "5000 is outside 0…3960 µsteps" in panel.note.text()
+    assert not panel.send_buttons[0].isEnabled()
+    mark = len(drill.written)
+    assert panel.send_axis(0) is False
+    drill.run(0.3)
+    assert drill.written[mark:] == []

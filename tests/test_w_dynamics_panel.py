@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QDoubleSpinBox, QLabel
+from PySide6.QtWidgets import QLabel
 from pytestqt.qtbot import QtBot
 
 from app.machine import ParameterState
 from app.machines.stage.parameters import STAGE_PARAMETERS
 from protocol.stage.codec import CommandFrame, CommandId, EchoType, decode
 from tests.helpers.harness import StationHarness
+from widgets.number_field import NumberField
 from widgets.panels.dynamics import DynamicsPanel
 
 # The offscreen platform warns whenever a shown window's layout sets its size limits.
@@ -29,7 +30,7 @@ def panel(qtbot: QtBot, harness: StationHarness) -> DynamicsPanel:
     return panel
 
 
-def field(panel: DynamicsPanel, axis: int, parameter: EchoType) -> QDoubleSpinBox:
+def field(panel: DynamicsPanel, axis: int, parameter: EchoType) -> NumberField:
     return panel.fields[(axis, int(parameter))]
 
 
@@ -144,3 +145,48 @@ def test_read_and_apply_need_a_link(qtbot: QtBot, harness: StationHarness) -> No
     assert not panel.apply_button.isEnabled()
     harness.connect()
     assert panel.apply_button.isEnabled() and panel.read_button.isEnabled()
+
+
+def type_into(qtbot: QtBot, box: NumberField, text: str) -> None:
+    qtbot.mouseClick(box, Qt.MouseButton.LeftButton)
+    qtbot.keyClick(box, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClicks(box, text)
+
+
+def test_travel_beyond_the_mechanical_travel_is_shown_invalid_and_not_written(
+    qtbot: QtBot, harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    """Symptom 4: 999.999 mm of travel on a 50 mm stage went out without a word."""
+    travel = field(panel, X, EchoType.TRAVEL)
+    type_into(qtbot, travel, "999.999")
+    assert travel.text() == "999.999"  # kept as typed, not cut to another number
+    assert travel.value() is None
+    assert "outside 0.001…50 mm" in (travel.problem() or "")
+    assert "mechanical travel, 50 mm" in travel.toolTip()
+    assert "#d03030" in travel.styleSheet()
+    since = len(harness.written)
+    apply(qtbot, panel)
+    assert CommandId.WRITE_TRAVEL not in written_commands(harness, since)
+    assert state(panel, X, EchoType.TRAVEL).text() == "✗ not sent"
+    assert "outside 0.001…50 mm" in panel.summary.text()
+    harness.run(0.3)
+    assert harness.emulator.parameter(X, EchoType.TRAVEL) == 50_000
+
+    type_into(qtbot, travel, "40")
+    assert travel.value() == 40.0 and travel.styleSheet() == ""
+    apply(qtbot, panel)
+    harness.run_until(lambda: state(panel, X, EchoType.TRAVEL).text() == "✓ confirmed", 1)
+    assert harness.emulator.parameter(X, EchoType.TRAVEL) == 40_000
+
+
+def test_the_session_refuses_a_travel_beyond_the_mechanics_whoever_asks(
+    harness: StationHarness, panel: DynamicsPanel
+) -> None:
+    messages: list[str] = []
+    harness.station.model.message.connect(messages.append)
+    since = len(harness.written)
+    assert harness.session.write_parameter(Y, EchoType.TRAVEL, 999_999) is False
+    assert CommandId.WRITE_TRAVEL not in written_commands(harness, since)
+    assert messages == [
+        "Not written: Y Travel (soft limit) must not exceed the mechanical travel, 50 mm"
+    ]

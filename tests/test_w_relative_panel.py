@@ -65,3 +65,20 @@ def test_minus_moves_back(qtbot: QtBot, harness: StationHarness, panels: Panels)
     panel.increments[0].setValue(1.25)
     _step_and_settle(qtbot, harness, info, panel.minus_buttons[0])
     assert info.positions[0].text() == "2.750 mm"
+
+
+def test_an_increment_beyond_the_travel_stays_as_typed_and_moves_nothing(
+    qtbot: QtBot, harness: StationHarness, panels: Panels
+) -> None:
+    panel = panels.panel
+    box = panel.increments[0]
+    qtbot.mouseClick(box, Qt.MouseButton.LeftButton)
+    qtbot.keyClick(box, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClicks(box, "80")
+    assert box.text() == "80" and box.value() is None
+    assert "X increment: 80 is outside 0.001…50 mm" in panel.note.text()
+    assert not panel.plus_buttons[0].isEnabled() and not panel.minus_buttons[0].isEnabled()
+    assert panel.step(0, +1) is False
+    harness.run(1.0)
+    assert not harness.station.model.any_moving
+    assert harness.emulator.axes[0].position_um == 0

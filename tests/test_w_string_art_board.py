@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
@@ -20,6 +21,22 @@ def test_the_dialog_starts_at_the_least_nail_count_and_returns_the_board(qtbot: 
     dialog.nails.setValue(200)
     dialog.radius.setValue(20.04)
     assert dialog.params() == StringArtParams(6, 200, 20.0)
-    assert dialog.params().check() is None  # a board the loader accepts
-    dialog.radius.setValue(0.5)  # below the range: held at the least radius that has nails
-    assert dialog.params().radius_cm > 1.5
+    params = dialog.params()
+    assert params is not None and params.check() is None  # a board the loader accepts
+
+
+def test_a_board_outside_the_ranges_is_shown_invalid_and_cannot_be_accepted(
+    qtbot: QtBot,
+) -> None:
+    needs = NeedsNailCount(Path("cat.txt"), min_nails=160, entries=4001)
+    dialog = BoardDialog(needs)
+    qtbot.addWidget(dialog)
+    dialog.show()
+    qtbot.mouseClick(dialog.radius, Qt.MouseButton.LeftButton)
+    qtbot.keyClick(dialog.radius, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
+    qtbot.keyClicks(dialog.radius, "0.5")
+    assert dialog.radius.text() == "0.5"  # kept as typed, not raised to the least radius
+    assert "0.5 is outside 1.6…100 cm" in dialog.note.text()
+    assert dialog.params() is None and not dialog.ok_button.isEnabled()
+    qtbot.keyClick(dialog.radius, Qt.Key.Key_Return)
+    assert dialog.result() != dialog.DialogCode.Accepted and dialog.isVisible()

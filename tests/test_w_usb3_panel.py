@@ -13,7 +13,7 @@ from collections.abc import Iterator
 
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QAbstractSpinBox, QComboBox, QPushButton, QWidget
+from PySide6.QtWidgets import QComboBox, QLineEdit, QPushButton, QWidget
 from pytestqt.qtbot import QtBot
 
 from app.profiles import load_profile
@@ -45,7 +45,7 @@ def panel(qtbot: QtBot, usb3: StationHarness) -> Usb3Panel:
     return built
 
 
-def type_distance(qtbot: QtBot, box: QAbstractSpinBox, text: str) -> None:
+def type_distance(qtbot: QtBot, box: QWidget, text: str) -> None:
     """Click into the field, select what is there and type over it."""
     qtbot.mouseClick(box, Qt.MouseButton.LeftButton)
     qtbot.keyClick(box, Qt.Key.Key_A, Qt.KeyboardModifier.ControlModifier)
@@ -194,6 +194,25 @@ def test_garbage_typed_into_a_distance_is_ignored(
     assert sent_since(usb3, mark) == b"D+++;X000000000009600;"
 
 
+def test_a_distance_beyond_the_travel_stays_as_typed_and_sends_nothing(
+    qtbot: QtBot, usb3: StationHarness, panel: Usb3Panel
+) -> None:
+    """Issue 15: the unit was driven to 225…338 mm on a 200 mm axis."""
+    type_distance(qtbot, panel.distances[X], "338")
+    assert panel.distances[X].text() == "338"  # not cut to 33 or clamped to 200
+    assert panel.distances[X].value() is None
+    assert "X distance: 338 is outside \u2212200…200 mm" in panel.note.text()
+    assert not panel.send_buttons[X].isEnabled()
+    assert panel.reachable[X].text() == "—"
+    mark = len(usb3.written)
+    click(qtbot, panel.send_buttons[X])
+    qtbot.keyClick(panel.distances[X], Qt.Key.Key_Return)
+    assert panel.send(X) is False
+    usb3.run(0.5)
+    assert sent_since(usb3, mark) == b""
+    assert usb3.usb3_emulator.positions[X] == 0
+
+
 # --- the operator window on the usb3 profile -----------------------------------------
 
 
@@ -234,7 +253,7 @@ def test_page_up_and_page_down_jog_z(
 ) -> None:
     z = usb3.station.model.axes[Z]
     focus = QWidget.focusWidget(window)
-    assert not isinstance(focus, QAbstractSpinBox)  # keys go to the window, not a field
+    assert not isinstance(focus, QLineEdit)  # keys go to the window, not a field
 
     mark = len(usb3.written)
     qtbot.keyPress(window, Qt.Key.Key_PageUp)

@@ -16,7 +16,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QEvent, QObject, QSettings, QStandardPaths, Qt, Signal
+from PySide6.QtCore import (
+    QEvent,
+    QObject,
+    QSettings,
+    QStandardPaths,
+    Qt,
+    QTimer,
+    Signal,
+)
 from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -45,6 +53,7 @@ from app.telemetry import TelemetryRecorder
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
+from widgets.number_field import NumberField
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
 from widgets.panels.drill import DrillPanel
@@ -56,6 +65,7 @@ from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
+from widgets.stop_caption import stop_key_text
 from widgets.telemetry_dock import TelemetryDock
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
@@ -91,7 +101,7 @@ def _is_free_text(widget: QWidget | None) -> bool:
     """A field where any character is input (not a number field, whose keys we may take)."""
     if isinstance(widget, (QTextEdit, QPlainTextEdit)):
         return True
-    if not isinstance(widget, QLineEdit):
+    if not isinstance(widget, QLineEdit) or isinstance(widget, NumberField):
         return False
     parent = widget.parentWidget()
     return not isinstance(parent, QAbstractSpinBox)
@@ -126,6 +136,7 @@ class MainWindow(QMainWindow):
         #: The box listing settings the station could not use (None: there were none).
         self.settings_warning: QMessageBox | None = None
         self._filtering = False
+        self._close_after_stop = False
         self.setWindowTitle(f"StepDeck — {station.profile.title}")
 
         self.jog = JogInput(station, self)
@@ -278,13 +289,15 @@ class MainWindow(QMainWindow):
     def show_shortcuts(self) -> QDialog:
         """Show (non-modal) the list of keys; returns the dialog."""
         if self._help is None:
+            esc = stop_key_text(self.station.profile)
             rows = "".join(
-                f"<tr><td style='padding-right:16px'><b>{keys}</b></td><td>{what}</td></tr>"
+                f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
+                f"<td>{esc if keys == 'Esc' else what}</td></tr>"
                 for keys, what in SHORTCUTS
             )
             text = QLabel(
                 f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
-                "has focus: there they keep editing. Esc always stops.</p>"
+                "has focus: there they keep editing. Esc works from anywhere.</p>"
             )
             text.setWordWrap(True)
             buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
@@ -476,6 +489,12 @@ class MainWindow(QMainWindow):
         self._settings.set_job_options(self.jobs_dock.option_values())
         self._settings.sync()
 
+    def _close_when_stopped(self) -> None:
+        self.station.linkClosed.disconnect(self._close_when_stopped)
+        self._close_after_stop = False
+        # After the station's signal has returned: closing re-enters the station.
+        QTimer.singleShot(0, self.close)
+
     def showEvent(self, event: QShowEvent) -> None:
         self._install_filter()
         super().showEvent(event)
@@ -483,10 +502,22 @@ class MainWindow(QMainWindow):
             self.settings_warning.show()  # not exec(): the window stays usable behind it
 
     def closeEvent(self, event: QCloseEvent) -> None:
-        """Closing the operator window stops the machine and closes the link."""
+        """Closing the operator window stops the machine and closes the link.
+
+        While a move runs the window stays open until the device confirms the
+        stop (at most ``STOP_CONFIRM_S``), without blocking the event loop;
+        then it closes by itself.
+        """
+        self.jog.release_all()
+        if not self.station.stop_and_close():
+            if not self._close_after_stop:
+                self._close_after_stop = True
+                self.station.linkClosed.connect(self._close_when_stopped)
+            self._show_message("Stopping every axis before closing…")
+            event.ignore()
+            return
         self.save_settings()
         self._remove_filter()
-        self.jog.release_all()
         if self._help is not None:
             self._help.close()
         self.station.shutdown()

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from PySide6.QtGui import QFont, QFontDatabase
-from PySide6.QtWidgets import QDoubleSpinBox
 
 #: The typographic minus (U+2212) for button labels: wider and clearer than a hyphen.
 MINUS = "\u2212"
@@ -23,17 +22,3 @@ def monospace_font(point_delta: int = 0, *, bold: bool = False) -> QFont:
         font.setPointSize(font.pointSize() + point_delta)
     font.setBold(bold)
     return font
-
-
-def distance_box(name: str, unit: str, low: float, high: float, tooltip: str) -> QDoubleSpinBox:
-    """A millimetre field as every motion panel shows it: three decimals, fixed-width digits."""
-    box = QDoubleSpinBox()
-    box.setObjectName(name)
-    box.setRange(low, high)
-    box.setDecimals(3)
-    box.setSingleStep(1.0)
-    box.setSuffix(f" {unit}")
-    box.setFont(monospace_font())
-    box.setMinimumWidth(130)
-    box.setToolTip(tooltip)
-    return box

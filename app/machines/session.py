@@ -111,6 +111,10 @@ class MachineSession(QObject):
             self.model.message.emit(reason)
             self.jogEnded.emit(reason)
 
+    def motion_stopped(self) -> bool:
+        """Whether the device's reports show every axis still (a stop is confirmed by this)."""
+        return not self.model.any_moving
+
     def move_relative(self, axis: int, delta: float) -> bool:
         return self._unsupported("relative moves")
 

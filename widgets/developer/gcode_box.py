@@ -8,7 +8,6 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
     QPushButton,
-    QSpinBox,
     QVBoxLayout,
     QWidget,
 )
@@ -16,6 +15,7 @@ from PySide6.QtWidgets import (
 from app.developer.gcode import QUICK_REPLIES, GcodeEmulatorButtons, inject_reply
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
+from widgets.number_field import FieldGate, NumberField
 
 _ERROR_STYLE = "color: #b00020;"
 
@@ -76,10 +76,20 @@ class GcodeEmulatorBox(QGroupBox):
         self.hold_button.setToolTip("The board's feed-hold button")
         self.resume_button = QPushButton("Cycle start")
         self.resume_button.setToolTip("The board's cycle-start button")
-        self.alarm_code = QSpinBox()
-        self.alarm_code.setRange(1, 9)
-        self.alarm_code.setToolTip("ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)")
+        self.alarm_code = NumberField(
+            1,
+            9,
+            decimals=0,
+            value=1,
+            name="alarm_code",
+            tooltip="ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)",
+        )
+        self.alarm_code.setMinimumWidth(60)
         self.alarm_button = QPushButton("Raise alarm")
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
+        self.gate.watch(self.alarm_code, "ALARM code")
+        self.gate.bind(self.alarm_button, self.alarm_code)
         self.hold_button.clicked.connect(self.buttons.hold)
         self.resume_button.clicked.connect(self.buttons.resume)
         self.alarm_button.clicked.connect(self._alarm)
@@ -88,11 +98,17 @@ class GcodeEmulatorBox(QGroupBox):
         grid.addWidget(self.resume_button, 0, 1)
         grid.addWidget(self.alarm_code, 1, 0)
         grid.addWidget(self.alarm_button, 1, 1)
+        grid.addWidget(self.note, 2, 0, 1, 2)
 
     def _alarm(self) -> None:
-        self.buttons.alarm(self.alarm_code.value())
+        code = self.alarm_code.value()
+        if code is None:
+            self.gate.refusal(self.alarm_code)
+            return
+        self.buttons.alarm(round(code))
 
     def sync(self, *_args: object) -> None:
         enabled = self.buttons.available
-        for widget in (self.hold_button, self.resume_button, self.alarm_code, self.alarm_button):
+        for widget in (self.hold_button, self.resume_button, self.alarm_code):
             widget.setEnabled(enabled)
+        self.gate.set_enabled(enabled)

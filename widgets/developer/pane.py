@@ -22,7 +22,6 @@ from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QDockWidget,
-    QDoubleSpinBox,
     QFileDialog,
     QFormLayout,
     QFrame,
@@ -36,7 +35,6 @@ from PySide6.QtWidgets import (
     QScrollArea,
     QSizePolicy,
     QSlider,
-    QSpinBox,
     QSplitter,
     QVBoxLayout,
     QWidget,
@@ -56,6 +54,7 @@ from app.developer.stage import (
 from app.machines.stage.echoes import STATUS_TEXT
 from app.station import Station
 from widgets.developer.gcode_box import GcodeEmulatorBox, GcodeReplyBox
+from widgets.number_field import FieldGate, NumberField
 from widgets.style import MINUS, monospace_font
 
 #: How often the log view takes in what arrived: fast enough to feel live, slow
@@ -186,24 +185,28 @@ class EmulatorBox(QGroupBox):
         self.usb.toggled.connect(controls.set_usb)
         self.verification_fault.toggled.connect(controls.set_verification_fault)
 
-        self.battery = QSpinBox()
-        self.battery.setRange(0, 100)
-        self.battery.setSuffix(" %")
-        self.battery.setToolTip("State of charge; below 5 % the stage blocks motion")
-        self.temperature = QDoubleSpinBox()
-        self.temperature.setRange(-40.0, 125.0)
-        self.temperature.setSuffix(" °C")
-        self.temperature.setToolTip("Board temperature")
-        self.rotation = QDoubleSpinBox()
-        self.rotation.setRange(-720.0, 720.0)
-        self.rotation.setSuffix(" °/s")
-        self.rotation.setToolTip("Platform rotation rate; the IMU's yaw integrates it")
-        for spin in (self.battery, self.temperature, self.rotation):
-            # Applied on Enter, focus out or an arrow step, not at every keystroke of "12.5".
-            spin.setKeyboardTracking(False)
-        self.battery.valueChanged.connect(controls.set_battery)
-        self.temperature.valueChanged.connect(controls.set_temperature)
-        self.rotation.valueChanged.connect(controls.set_rotation_rate)
+        # Applied on Enter, focus out or an arrow step (committed), not at every keystroke
+        # of "12.5"; a value outside the range stays red and is not applied.
+        self.battery = NumberField(
+            0,
+            100,
+            decimals=0,
+            unit="%",
+            tooltip="State of charge; below 5 % the stage blocks motion",
+        )
+        self.temperature = NumberField(
+            -40.0, 125.0, decimals=2, unit="°C", tooltip="Board temperature"
+        )
+        self.rotation = NumberField(
+            -720.0,
+            720.0,
+            decimals=2,
+            unit="°/s",
+            tooltip="Platform rotation rate; the IMU's yaw integrates it",
+        )
+        self.battery.committed.connect(lambda value: controls.set_battery(round(value)))
+        self.temperature.committed.connect(controls.set_temperature)
+        self.rotation.committed.connect(controls.set_rotation_rate)
         form = QFormLayout()
         form.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.FieldsStayAtSizeHint)
         form.addRow("Battery", self.battery)
@@ -232,13 +235,22 @@ class EmulatorBox(QGroupBox):
         self.drop_button = QPushButton("Drop link")
         self.drop_button.setToolTip("Cut the emulated cable; the station reconnects with back-off")
         self.drop_button.clicked.connect(controls.drop_link)
-        self.corrupt_count = QSpinBox()
-        self.corrupt_count.setRange(1, 999)
-        self.corrupt_count.setValue(3)
-        self.corrupt_count.setSuffix(" frames")
+        self.corrupt_count = NumberField(
+            1, 999, decimals=0, unit="frames", value=3, name="corrupt_count"
+        )
         self.corrupt_button = QPushButton("Corrupt")
         self.corrupt_button.setToolTip("Flip a byte in each of the next frames from the device")
         self.corrupt_button.clicked.connect(self._corrupt)
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
+        for field, label in (
+            (self.battery, "Battery"),
+            (self.temperature, "Temperature"),
+            (self.rotation, "Rotation rate"),
+            (self.corrupt_count, "Corrupt"),
+        ):
+            self.gate.watch(field, label)
+        self.gate.bind(self.corrupt_button, self.corrupt_count)
         link = QHBoxLayout()
         link.addWidget(self.drop_button)
         link.addSpacing(12)
@@ -253,6 +265,7 @@ class EmulatorBox(QGroupBox):
         body.addLayout(form)
         body.addLayout(axes)
         body.addLayout(link)
+        body.addWidget(self.note)
         layout = QVBoxLayout(self)
         layout.addWidget(self.note)
         layout.addWidget(self.body)
@@ -279,7 +292,11 @@ class EmulatorBox(QGroupBox):
             self.rotation.setValue(state.rotation_dps)
 
     def _corrupt(self) -> None:
-        self._controls.corrupt_next(self.corrupt_count.value())
+        count = self.corrupt_count.value()
+        if count is None:
+            self.gate.refusal(self.corrupt_count)
+            return
+        self._controls.corrupt_next(round(count))
 
 
 JOYSTICK_CENTRE = 512

@@ -13,14 +13,13 @@ from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
     QDialogButtonBox,
-    QDoubleSpinBox,
     QFormLayout,
     QLabel,
-    QSpinBox,
     QWidget,
 )
 
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
+from widgets.number_field import FieldGate, NumberField
 
 DEFAULT_RADIUS_CM = 14.5
 
@@ -41,33 +40,52 @@ class BoardDialog(QDialog):
         self.shape.addItem("circle", 0)
         for sides in range(3, 13):
             self.shape.addItem(f"{sides}-gon", sides)
-        self.nails = QSpinBox()
-        self.nails.setObjectName("board_nails")
-        self.nails.setRange(max(3, needs.min_nails), 10_000)
-        self.nails.setValue(max(3, needs.min_nails))
         highest = needs.min_nails - 1
-        self.nails.setToolTip(f"At least {needs.min_nails}: the list names nail {highest}")
-        self.radius = QDoubleSpinBox()
-        self.radius.setObjectName("board_radius")
-        self.radius.setRange(1.6, 100.0)
-        self.radius.setDecimals(1)
-        self.radius.setSuffix(" cm")
-        self.radius.setValue(DEFAULT_RADIUS_CM)
-        self.radius.setToolTip("Board radius; the nails sit 1.5 cm inside its edge")
+        least = max(3, needs.min_nails)
+        self.nails = NumberField(
+            least,
+            10_000,
+            decimals=0,
+            value=least,
+            name="board_nails",
+            tooltip=f"At least {needs.min_nails}: the list names nail {highest}",
+        )
+        self.radius = NumberField(
+            1.6,
+            100.0,
+            decimals=1,
+            unit="cm",
+            value=DEFAULT_RADIUS_CM,
+            name="board_radius",
+            tooltip="Board radius; the nails sit 1.5 cm inside its edge",
+        )
         form.addRow("Shape", self.shape)
         form.addRow("Nails", self.nails)
         form.addRow("Board radius", self.radius)
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
+        self.gate.watch(self.nails, "Nails")
+        self.gate.watch(self.radius, "Board radius")
+        form.addRow(self.note)
         buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
         )
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
+        self.ok_button = buttons.button(QDialogButtonBox.StandardButton.Ok)
+        self.gate.bind(self.ok_button, self.nails, self.radius)
         form.addRow(buttons)
 
-    def params(self) -> StringArtParams:
-        return StringArtParams(
-            int(self.shape.currentData()), self.nails.value(), round(self.radius.value(), 1)
-        )
+    def params(self) -> StringArtParams | None:
+        """The board as set, or None while a field is not acceptable (OK is disabled then)."""
+        nails, radius = self.nails.value(), self.radius.value()
+        if nails is None or radius is None:
+            return None
+        return StringArtParams(int(self.shape.currentData()), round(nails), radius)
+
+    def accept(self) -> None:
+        if self.gate.refusal(self.nails, self.radius) is None:
+            super().accept()
 
 
 #: Asks for the board of a bare nail list; None when the operator cancels.
@@ -77,6 +95,7 @@ BoardAsker = Callable[[NeedsNailCount], StringArtParams | None]
 def ask_board(parent: QWidget | None) -> BoardAsker:
     def ask(needs: NeedsNailCount) -> StringArtParams | None:
         dialog = BoardDialog(needs, parent)
-        return dialog.params() if dialog.exec() == QDialog.DialogCode.Accepted else None
+        accepted = dialog.exec() == QDialog.DialogCode.Accepted
+        return dialog.params() if accepted else None
 
     return ask

@@ -1,16 +1,17 @@
 """Absolute panel: a target per axis and Go, the way the stage's own tool positions it.
 
-Spin boxes are limited to the axis travel from the profile, so the operator
-cannot type a target the device would only clamp; the device still has the
-last word on its soft limits.
+Targets are judged against the axis travel from the profile as they are
+typed: one outside it is framed red, named under the fields, and its Go is
+disabled — never clamped or cut to another number the machine would then go
+to.  The device still has the last word on its soft limits.
 """
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QDoubleSpinBox, QGridLayout, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
-from widgets.style import distance_box
+from widgets.number_field import FieldGate, NumberField, distance_box
 
 
 class AbsolutePanel(QWidget):
@@ -19,7 +20,9 @@ class AbsolutePanel(QWidget):
     def __init__(self, station: Station, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._station = station
-        self.targets: list[QDoubleSpinBox] = []
+        self.targets: list[NumberField] = []
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
         self.go_buttons: list[QPushButton] = []
 
         grid = QGridLayout(self)
@@ -42,23 +45,33 @@ class AbsolutePanel(QWidget):
             grid.addWidget(go, index + 1, 2)
             self.targets.append(target)
             self.go_buttons.append(go)
+            self.gate.watch(target, f"{axis.name} target")
+            self.gate.bind(go, target)
         self.go_all_button = QPushButton("Go all")
         self.go_all_button.setToolTip("Move every axis to its target at once")
         self.go_all_button.clicked.connect(self.go_all)
+        self.gate.bind(self.go_all_button, *self.targets)
         grid.addWidget(self.go_all_button, len(self.targets) + 1, 2)
+        grid.addWidget(self.note, len(self.targets) + 2, 0, 1, 4)
         grid.setColumnStretch(3, 1)
-        grid.setRowStretch(len(self.targets) + 2, 1)
+        grid.setRowStretch(len(self.targets) + 3, 1)
 
     def go(self, axis: int) -> bool:
-        """Send axis ``axis`` to its target; False when the session refused (locked)."""
+        """Send axis ``axis`` to its target; False when refused (bad target, locked)."""
+        target = self.targets[axis].value()
+        if target is None:
+            self.gate.refusal(self.targets[axis])
+            return False
         session = self._station.session
-        return session is not None and session.move_absolute(axis, self.targets[axis].value())
+        return session is not None and session.move_absolute(axis, target)
 
     def go_all(self) -> None:
+        """Every axis or none: one bad target holds them all back."""
+        if self.gate.refusal(*self.targets) is not None:
+            return
         for axis in range(len(self.targets)):
             if not self.go(axis):
                 break
 
     def set_motion_enabled(self, enabled: bool) -> None:
-        for button in (*self.go_buttons, self.go_all_button):
-            button.setEnabled(enabled)
+        self.gate.set_enabled(enabled)

@@ -93,7 +93,10 @@ class ConnectionPanel(QWidget):
         self.connect_button = QPushButton("Connect")
         self.connect_button.clicked.connect(self.connect_selected)
         self.disconnect_button = QPushButton("Disconnect")
-        self.disconnect_button.clicked.connect(self._station.close_link)
+        self.disconnect_button.setToolTip(
+            "Stop every axis, wait briefly for the machine to confirm, then close the link"
+        )
+        self.disconnect_button.clicked.connect(self._station.stop_and_close)
         buttons = QHBoxLayout()
         buttons.addWidget(self.connect_button)
         buttons.addWidget(self.disconnect_button)

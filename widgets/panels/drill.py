@@ -5,6 +5,11 @@ each with a target in microsteps and a send button, a terminal (a line
 entry with Send and Cls, the lines sent kept in a history walked with
 Up/Down, the device's replies shown), and the tool's two columns: "command
 received" and "command done", filled as the device says ``R`` and ``D``.
+
+The drill has no stop command: once a procedure starts it runs to its end.
+So an X or Y move expected to take longer than :data:`LONG_MOVE_S` (from the
+button or the terminal) is not sent at once; the page says how long it will
+run unstoppable and sends it only on "Send anyway".
 """
 
 from __future__ import annotations
@@ -17,15 +22,19 @@ from PySide6.QtWidgets import (
     QListWidget,
     QPlainTextEdit,
     QPushButton,
-    QSpinBox,
     QVBoxLayout,
     QWidget,
 )
 
 from app.machines.drill.session import DrillSession
 from app.station import Station
+from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
+from widgets.number_field import FieldGate, NumberField
 from widgets.style import monospace_font
+
+#: A move expected to run longer than this (seconds) asks first: it cannot be stopped.
+LONG_MOVE_S = 2.0
 
 #: Buttons of the procedures that take no value: letter, caption, tooltip.
 COMMAND_BUTTONS = (
@@ -43,7 +52,10 @@ class DrillPanel(QWidget):
         self._station = station
         self._watched: DrillSession | None = None
         self.command_buttons: dict[str, QPushButton] = {}
-        self.targets: list[QSpinBox] = []
+        self.targets: list[NumberField] = []
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
+        self._pending_line: str | None = None
         self._mm_labels: list[QLabel] = []
         self.send_buttons: list[QPushButton] = []
 
@@ -61,11 +73,15 @@ class DrillPanel(QWidget):
         grid = QGridLayout(axes)
         for index, axis in enumerate(station.profile.axes):
             per_mm = axis.steps_per_rev * axis.microsteps / axis.lead
-            target = QSpinBox()
-            target.setObjectName(f"target_{axis.name}")
-            target.setRange(0, round(axis.travel * per_mm))
-            target.setToolTip(f"{axis.name} target; {per_mm:g} microsteps a mm")
-            target.valueChanged.connect(lambda _v=0, i=index: self._show_mm(i))
+            target = NumberField(
+                0,
+                round(axis.travel * per_mm),
+                decimals=0,
+                unit="µsteps",
+                name=f"target_{axis.name}",
+                tooltip=f"{axis.name} target; {per_mm:g} microsteps a mm",
+            )
+            target.textChanged.connect(lambda _t="", i=index: self._show_mm(i))
             mm = QLabel()
             mm.setFont(monospace_font())
             send = QPushButton(f"Send {axis.name}")
@@ -75,6 +91,27 @@ class DrillPanel(QWidget):
             self.targets.append(target)
             self._mm_labels.append(mm)
             self.send_buttons.append(send)
+            self.gate.watch(target, f"{axis.name} target")
+            self.gate.bind(send, target)
+        grid.addWidget(self.note, len(self.targets), 0, 1, 4)
+
+        # Shown instead of sending a long move: it cannot be stopped once it runs.
+        self.long_move = QGroupBox()
+        self.long_move.setObjectName("long_move_warning")
+        self.long_move.setStyleSheet(
+            "QGroupBox#long_move_warning { background: #fff3cd; border: 1px solid #e0c060; }"
+        )
+        self.long_move_label = QLabel()
+        self.long_move_label.setWordWrap(True)
+        self.long_move_send = QPushButton("Send anyway")
+        self.long_move_send.clicked.connect(self.confirm_long_move)
+        self.long_move_cancel = QPushButton("Cancel")
+        self.long_move_cancel.clicked.connect(self.cancel_long_move)
+        warning_row = QHBoxLayout(self.long_move)
+        warning_row.addWidget(self.long_move_label, 1)
+        warning_row.addWidget(self.long_move_send)
+        warning_row.addWidget(self.long_move_cancel)
+        self.long_move.hide()
 
         terminal = QGroupBox("Terminal")
         box = QVBoxLayout(terminal)
@@ -119,6 +156,7 @@ class DrillPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.addWidget(commands)
         layout.addWidget(axes)
+        layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 
         for index in range(len(self.targets)):
@@ -139,16 +177,61 @@ class DrillPanel(QWidget):
         return session.send_line(letter)
 
     def send_axis(self, axis: int) -> bool:
+        """Send the axis to its target; a long move waits for "Send anyway" (False then)."""
         session = self.session
         if session is None:
             return False
+        target = self.targets[axis].value()
+        if target is None:
+            self.gate.refusal(self.targets[axis])
+            return False
         name = self._station.profile.axes[axis].name
-        return session.send_line(f"{name}{self.targets[axis].value()}")
+        return self._send_or_ask(f"{name}{round(target)}")
 
     def send_line(self) -> bool:
         text = self.entry.take()
         if not text:
             return False
+        if self.session is None:
+            self.output.appendPlainText(f"! {text}: not sent")
+            return False
+        return self._send_or_ask(text)
+
+    def long_move_s(self, text: str) -> float:
+        """How long the X or Y move ``text`` is expected to run (0 for anything else)."""
+        session = self.session
+        if session is None:
+            return 0.0
+        _used, command = decode_command(text.strip().encode("ascii", "replace") + b"\r")
+        if not isinstance(command, Command) or command.letter not in POSITION_LETTERS:
+            return 0.0
+        return session.expected_s(command)
+
+    def _send_or_ask(self, text: str) -> bool:
+        seconds = self.long_move_s(text)
+        if seconds <= LONG_MOVE_S:
+            return self._send_now(text)
+        self._pending_line = text.strip()
+        self.long_move_label.setText(
+            f"<b>{self._pending_line}</b> runs about {seconds:.0f} s, and the drill has no "
+            "stop command: once it starts, STOP and Esc only drop what is queued after it. "
+            "Send it?"
+        )
+        self.long_move.show()
+        self.long_move_send.setFocus()
+        return False
+
+    def confirm_long_move(self) -> bool:
+        """Send anyway: the operator has read that the move cannot be stopped."""
+        text, self._pending_line = self._pending_line, None
+        self.long_move.hide()
+        return text is not None and self._send_now(text)
+
+    def cancel_long_move(self) -> None:
+        self._pending_line = None
+        self.long_move.hide()
+
+    def _send_now(self, text: str) -> bool:
         session = self.session
         sent = session is not None and session.send_line(text)
         if not sent:
@@ -165,8 +248,10 @@ class DrillPanel(QWidget):
         return self.entry.history
 
     def set_motion_enabled(self, enabled: bool) -> None:
-        for button in (*self.command_buttons.values(), *self.send_buttons):
+        for button in self.command_buttons.values():
             button.setEnabled(enabled)
+        self.gate.set_enabled(enabled)
+        self.long_move_send.setEnabled(enabled)
 
     # --- the session's news ----------------------------------------------------------
 
@@ -203,7 +288,11 @@ class DrillPanel(QWidget):
         label = self._mm_labels[axis]
         profile_axis = self._station.profile.axes[axis]
         per_mm = profile_axis.steps_per_rev * profile_axis.microsteps / profile_axis.lead
-        label.setText(f"{self.targets[axis].value() / per_mm:8.3f} {profile_axis.unit}")
+        target = self.targets[axis].value()
+        if target is None:
+            label.setText("—")
+            return
+        label.setText(f"{target / per_mm:8.3f} {profile_axis.unit}")
 
 
 COLUMN_ROWS = 1000

@@ -5,14 +5,16 @@ assumes a write worked: each value shows what the device answered — confirmed,
 or refused together with the value the device kept.  Only values the operator
 actually edited are written, so Apply cannot overwrite a parameter with a
 field that was never filled from the device.
+
+A value outside what the machine may take is framed red as it is typed and
+is not sent; the travel (the device's soft limit) may not exceed the
+profile's mechanical travel, since beyond it the device would drive into its
+end switch believing it had room.
 """
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
-    QAbstractSpinBox,
-    QDoubleSpinBox,
     QGridLayout,
     QHBoxLayout,
     QLabel,
@@ -22,9 +24,16 @@ from PySide6.QtWidgets import (
 )
 
 from app.machine import LinkState, ParameterState
-from app.machines.stage.parameters import BY_TYPE, STAGE_PARAMETERS, StageParameter
+from app.machines.stage.parameters import (
+    BY_TYPE,
+    STAGE_PARAMETERS,
+    StageParameter,
+    check_for_axis,
+    wire_limits,
+)
 from app.station import Station
-from widgets.style import monospace_font
+from protocol.stage.codec import EchoType
+from widgets.number_field import NumberField
 
 _Key = tuple[int, int]  # (axis, parameter type)
 
@@ -39,9 +48,10 @@ class DynamicsPanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._model = station.model
-        self.fields: dict[_Key, QDoubleSpinBox] = {}
+        self.fields: dict[_Key, NumberField] = {}
         self.states: dict[_Key, QLabel] = {}
         self._edited: set[_Key] = set()
+        self._filling = False
 
         grid = QGridLayout()
         grid.setHorizontalSpacing(10)
@@ -88,21 +98,22 @@ class DynamicsPanel(QWidget):
             self._show_parameter(axis_index, type_)
         self._update_enabled()
 
-    def _field(self, parameter: StageParameter, key: _Key) -> QDoubleSpinBox:
-        field = QDoubleSpinBox()
-        field.setDecimals(parameter.decimals)
-        field.setRange(
-            parameter.to_shown(parameter.wire_min), parameter.to_shown(parameter.wire_max)
+    def _field(self, parameter: StageParameter, key: _Key) -> NumberField:
+        low, high = wire_limits(parameter, self._station.profile.axes[key[0]])
+        tip = "Read only: measured by the device" if not parameter.writable else parameter.label
+        if parameter.type == EchoType.TRAVEL:
+            tip += f"; at most the mechanical travel, {parameter.to_shown(high):g} mm"
+        field = NumberField(
+            parameter.to_shown(low),
+            parameter.to_shown(high),
+            decimals=parameter.decimals,
+            unit=parameter.unit,
+            tooltip=tip,
         )
-        field.setFont(monospace_font())
-        field.setAlignment(Qt.AlignmentFlag.AlignRight)
-        field.setMinimumWidth(110)
         if parameter.writable:
-            field.valueChanged.connect(lambda _value: self._mark_edited(key))
+            field.textChanged.connect(lambda _text: self._mark_edited(key))
         else:
             field.setReadOnly(True)
-            field.setButtonSymbols(QAbstractSpinBox.ButtonSymbols.NoButtons)
-            field.setToolTip("Read only: measured by the device")
         return field
 
     # --- operator actions ----------------------------------------------------
@@ -126,18 +137,24 @@ class DynamicsPanel(QWidget):
         for key in sorted(self._edited):
             axis, type_ = key
             parameter = BY_TYPE[type_]
-            wire = parameter.to_wire(self.fields[key].value())
+            shown = self.fields[key].value()
+            if shown is None:
+                problem = self.fields[key].problem() or "not a number"
+                self._set_state(key, "✗ not sent", _RED, problem)
+                reasons.append(f"{self._model.axes[axis].name} {parameter.label}: {problem}")
+                continue
+            wire = parameter.to_wire(shown)
             if wire == self._model.parameter(axis, type_).value:
                 self._edited.discard(key)
                 self._set_state(key, "", _GREY)
                 continue
-            reason = parameter.check(wire)
-            if reason is not None:
-                self._set_state(key, "✗ not sent", _RED, reason)
-                reasons.append(f"{self._model.axes[axis].name} {reason}")
+            refused = check_for_axis(parameter, wire, self._station.profile.axes[axis])
+            if refused is not None:
+                self._set_state(key, "✗ not sent", _RED, refused)
+                reasons.append(f"{self._model.axes[axis].name} {refused}")
                 continue
-            session.write_parameter(axis, parameter.type, wire)
-            sent += 1
+            if session.write_parameter(axis, parameter.type, wire):
+                sent += 1
         parts = [f"{sent} value(s) written"] if sent else []
         parts += [f"not sent: {reason}" for reason in reasons]
         self.summary.setText("; ".join(parts) or "Nothing changed")
@@ -146,6 +163,8 @@ class DynamicsPanel(QWidget):
     # --- model → fields ------------------------------------------------------
 
     def _mark_edited(self, key: _Key) -> None:
+        if self._filling:
+            return
         self._edited.add(key)
         self._set_state(key, "• edited", _AMBER)
 
@@ -170,10 +189,13 @@ class DynamicsPanel(QWidget):
             self._set_state(key, "", _GREY)
 
     def _fill(self, key: _Key, value: float) -> None:
-        field = self.fields[key]
-        field.blockSignals(True)
-        field.setValue(value)
-        field.blockSignals(False)
+        # Not blockSignals: the field must still judge what the device holds (a travel
+        # beyond the mechanics shows red), only the panel must not count it an edit.
+        self._filling = True
+        try:
+            self.fields[key].setValue(value)
+        finally:
+            self._filling = False
         self._edited.discard(key)
 
     def _set_state(self, key: _Key, text: str, colour: str, tooltip: str = "") -> None:

@@ -13,6 +13,7 @@ from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QPushButton, QVBoxLayout
 
 from app.station import Station
 from widgets.jog_input import JogInput
+from widgets.stop_caption import pad_stop_caption, stop_caption
 from widgets.style import MINUS
 
 #: (row, column) in the cross → (dx, dy, label, key hint)
@@ -56,8 +57,8 @@ class ManualPanel(QWidget):
             grid.addWidget(button, row, column)
             self.jog_buttons[(dx, dy)] = button
 
-        self.stop_button = QPushButton("■ Stop")
-        self.stop_button.setToolTip("Stop every axis (Esc)")
+        self.stop_button = QPushButton(pad_stop_caption(station.profile))
+        self.stop_button.setToolTip(stop_caption(station.profile)[1])
         self.stop_button.setFixedSize(_BUTTON_SIZE)
         self.stop_button.setStyleSheet("font-weight: bold; color: #b02020;")
         self.stop_button.clicked.connect(jog.stop_all)

@@ -6,10 +6,11 @@ an axis by exact amounts without working out the absolute target.
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QDoubleSpinBox, QGridLayout, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
-from widgets.style import MINUS, distance_box
+from widgets.number_field import FieldGate, NumberField, distance_box
+from widgets.style import MINUS
 
 
 class RelativePanel(QWidget):
@@ -18,7 +19,9 @@ class RelativePanel(QWidget):
     def __init__(self, station: Station, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._station = station
-        self.increments: list[QDoubleSpinBox] = []
+        self.increments: list[NumberField] = []
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
         self.minus_buttons: list[QPushButton] = []
         self.plus_buttons: list[QPushButton] = []
 
@@ -48,15 +51,21 @@ class RelativePanel(QWidget):
             self.increments.append(increment)
             self.minus_buttons.append(minus)
             self.plus_buttons.append(plus)
+            self.gate.watch(increment, f"{axis.name} increment")
+            self.gate.bind(minus, increment)
+            self.gate.bind(plus, increment)
+        grid.addWidget(self.note, len(self.increments) + 1, 0, 1, 5)
         grid.setColumnStretch(4, 1)
-        grid.setRowStretch(len(self.increments) + 1, 1)
+        grid.setRowStretch(len(self.increments) + 2, 1)
 
     def step(self, axis: int, sign: int) -> bool:
-        """Move ``axis`` by ``sign`` times its increment; False when the session refused."""
+        """Move ``axis`` by ``sign`` times its increment; False when refused."""
+        increment = self.increments[axis].value()
+        if increment is None:
+            self.gate.refusal(self.increments[axis])
+            return False
         session = self._station.session
-        delta = sign * self.increments[axis].value()
-        return session is not None and session.move_relative(axis, delta)
+        return session is not None and session.move_relative(axis, sign * increment)
 
     def set_motion_enabled(self, enabled: bool) -> None:
-        for button in (*self.minus_buttons, *self.plus_buttons):
-            button.setEnabled(enabled)
+        self.gate.set_enabled(enabled)

@@ -4,6 +4,10 @@ Speed choice, Sleep/Wake and Stop live outside the stacked pages so the
 operator never has to switch pages to stop the machine or wake it up.  Sleep
 is shown from the device's reports, not from what was asked, so the button
 always offers what will actually change the machine's state.
+
+On a machine that cannot stop a move (the PCB drill has no stop command) the
+Stop button says on its face what it and Esc do instead — drop the queued
+commands and let the running procedure finish — rather than promising a stop.
 """
 
 from __future__ import annotations
@@ -13,7 +17,14 @@ from PySide6.QtWidgets import QButtonGroup, QLabel, QPushButton, QVBoxLayout, QW
 from app.machine import LinkState
 from app.station import Station
 from widgets.jog_input import JogInput
+from widgets.stop_caption import stop_caption
 from widgets.style import CHECKED_BUTTON_STYLE
+
+_STOP_STYLE = (
+    "QPushButton {{ background: #c62828; color: white; font-size: {size}pt;"
+    " font-weight: bold; border-radius: 8px; padding: 6px; }}"
+    "QPushButton:pressed {{ background: #8e1b1b; }}"
+)
 
 
 class StaticPanel(QWidget):
@@ -45,14 +56,12 @@ class StaticPanel(QWidget):
         self.sleep_button.clicked.connect(self._toggle_sleep)
         self.sleep_button.setVisible(station.profile.capabilities.sleep)
 
-        self.stop_button = QPushButton("STOP")
-        self.stop_button.setToolTip("Stop every axis now (Esc, from anywhere in the window)")
+        caption, tip = stop_caption(station.profile)
+        self.stop_button = QPushButton(caption)
+        self.stop_button.setObjectName("stop_button")
+        self.stop_button.setToolTip(tip)
         self.stop_button.setMinimumSize(120, 80)
-        self.stop_button.setStyleSheet(
-            "QPushButton { background: #c62828; color: white; font-size: 18pt;"
-            " font-weight: bold; border-radius: 8px; }"
-            "QPushButton:pressed { background: #8e1b1b; }"
-        )
+        self.stop_button.setStyleSheet(_STOP_STYLE.format(size=18 if caption == "STOP" else 11))
         self.stop_button.clicked.connect(jog.stop_all)
 
         layout = QVBoxLayout(self)

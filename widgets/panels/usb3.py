@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from PySide6.QtWidgets import (
     QComboBox,
-    QDoubleSpinBox,
     QGridLayout,
     QLabel,
     QPushButton,
@@ -20,7 +19,8 @@ from PySide6.QtWidgets import (
 from app.machines.usb3.session import Usb3Session
 from app.station import Station
 from protocol.usb3.codec import StepSize, Thread
-from widgets.style import distance_box, monospace_font
+from widgets.number_field import FieldGate, NumberField, distance_box
+from widgets.style import monospace_font
 
 
 class Usb3Panel(QWidget):
@@ -28,7 +28,9 @@ class Usb3Panel(QWidget):
         super().__init__(parent)
         self._station = station
         self._watched: Usb3Session | None = None
-        self.distances: list[QDoubleSpinBox] = []
+        self.distances: list[NumberField] = []
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
         self.reachable: list[QLabel] = []
         self.step_combos: list[QComboBox] = []
         self.thread_combos: list[QComboBox] = []
@@ -48,7 +50,7 @@ class Usb3Panel(QWidget):
                 axis.travel,
                 f"Signed distance to move {axis.name} (fractions allowed)",
             )
-            distance.valueChanged.connect(lambda _v=0.0, i=index: self._show_reachable(i))
+            distance.textChanged.connect(lambda _t="", i=index: self._show_reachable(i))
             reachable = QLabel()
             reachable.setFont(monospace_font())
             reachable.setToolTip("The unit moves in whole steps: this is what it will really move")
@@ -71,12 +73,15 @@ class Usb3Panel(QWidget):
             self.step_combos.append(steps)
             self.thread_combos.append(threads)
             self.send_buttons.append(send)
+            self.gate.watch(distance, f"{axis.name} distance")
+            self.gate.bind(send, distance)
         self.zero_button = QPushButton("0 0 0")
         self.zero_button.setToolTip("Zero all positions (C;)")
         self.zero_button.clicked.connect(self.zero_all)
         grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
+        grid.addWidget(self.note, len(self.distances) + 2, 0, 1, 6)
         grid.setColumnStretch(6, 1)
-        grid.setRowStretch(len(self.distances) + 2, 1)
+        grid.setRowStretch(len(self.distances) + 3, 1)
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
 
@@ -85,16 +90,20 @@ class Usb3Panel(QWidget):
         return self._station.usb3_session
 
     def send(self, axis: int) -> bool:
+        """Move ``axis`` by its distance; False when refused (bad distance, locked)."""
+        distance = self.distances[axis].value()
+        if distance is None:
+            self.gate.refusal(self.distances[axis])
+            return False
         session = self.session
-        return session is not None and session.move_relative(axis, self.distances[axis].value())
+        return session is not None and session.move_relative(axis, distance)
 
     def zero_all(self) -> None:
         if self.session is not None:
             self.session.zero_all()
 
     def set_motion_enabled(self, enabled: bool) -> None:
-        for button in self.send_buttons:
-            button.setEnabled(enabled)
+        self.gate.set_enabled(enabled)
 
     def _step_chosen(self, axis: int) -> None:
         if self.session is not None:
@@ -127,7 +136,11 @@ class Usb3Panel(QWidget):
         if session is None:
             self.reachable[axis].setText("—")
             return
-        mm = session.reachable(axis, self.distances[axis].value())
+        distance = self.distances[axis].value()
+        if distance is None:
+            self.reachable[axis].setText("—")
+            return
+        mm = session.reachable(axis, distance)
         speed = session.speed_mm_s(axis)
         self.reachable[axis].setText(f"{mm:+.4f} mm")
         self.reachable[axis].setToolTip(

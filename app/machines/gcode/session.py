@@ -281,6 +281,10 @@ class GcodeSession(MachineSession):
         self._reset_requested_at = self.clock.now()
         self.query_status()
 
+    def motion_stopped(self) -> bool:
+        """Still, by the board's reports, and no stop waiting for its hold to complete."""
+        return not self.stopping and not self.model.any_moving
+
     @property
     def stopping(self) -> bool:
         """A stop was asked for and its reset has not gone out yet."""

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from app.profiles import AxisProfile
 from protocol.stage.codec import EchoType
 
 
@@ -57,3 +58,35 @@ STAGE_PARAMETERS: tuple[StageParameter, ...] = (
 )
 
 BY_TYPE: dict[int, StageParameter] = {p.type: p for p in STAGE_PARAMETERS}
+
+
+def wire_limits(parameter: StageParameter, axis: AxisProfile) -> tuple[int, int]:
+    """The wire range this machine may be given: the device's own, and for the travel
+    (the soft limit) no more than the profile's mechanical travel — beyond it the
+    device would drive into its end switch believing it has room."""
+    if parameter.type == EchoType.TRAVEL:
+        return parameter.wire_min, min(parameter.wire_max, round(axis.travel * parameter.scale))
+    return parameter.wire_min, parameter.wire_max
+
+
+def check_for_axis(parameter: StageParameter, wire: int, axis: AxisProfile) -> str | None:
+    """Why ``wire`` must not be written to ``axis``, or None: the device's rules, then the
+    machine's mechanical travel."""
+    return parameter.check(wire) or beyond_mechanics(parameter, wire, axis)
+
+
+def beyond_mechanics(parameter: StageParameter, wire: int, axis: AxisProfile) -> str | None:
+    """Why ``wire`` would let the axis past its mechanical travel, or None.
+
+    The device checks its own ranges (and says so when it refuses); it cannot
+    know the machine it is built into, so this one the station checks.
+    """
+    if parameter.type != EchoType.TRAVEL:
+        return None
+    _low, high = wire_limits(parameter, axis)
+    if wire > high:
+        return (
+            f"{parameter.label} must not exceed the mechanical travel, "
+            f"{parameter.to_shown(high):g} {parameter.unit}"
+        )
+    return None

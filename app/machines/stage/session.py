@@ -21,6 +21,7 @@ from app.machines.session import MachineSession
 from app.machines.stage.echoes import STATUS_TEXT as STATUS_TEXT  # re-exported for callers
 from app.machines.stage.echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
 from app.machines.stage.echoes import StageEchoes
+from app.machines.stage.parameters import BY_TYPE, beyond_mechanics
 from protocol.clock import Clock
 from protocol.stage.codec import (
     PARAMETERS,
@@ -207,10 +208,22 @@ class StageSession(MachineSession):
             queue.append(CommandPacket(CommandId.SLEEP, 1 if sleep else 0))
         self._send_now()
 
-    def write_parameter(self, axis: int, parameter: EchoType, value: int) -> None:
+    def write_parameter(self, axis: int, parameter: EchoType, value: int) -> bool:
+        """Write one stored parameter; a travel beyond the mechanics is refused here.
+
+        Values outside the device's own ranges go out: the device refuses them
+        and says which value it kept.
+        """
+        known = BY_TYPE.get(int(parameter))
+        if known is not None:
+            reason = beyond_mechanics(known, value, self.model.profile.axes[axis])
+            if reason is not None:
+                self.model.message.emit(f"Not written: {self.model.axes[axis].name} {reason}")
+                return False
         self.echoes.expect_write(axis, parameter, value)
         self._urgent[axis].append(CommandPacket(write_command(parameter), value))
         self._send_now()
+        return True
 
     def read_parameter(self, axis: int, parameter: EchoType) -> None:
         self._background[axis].append(CommandPacket(CommandId.READ, parameter))
