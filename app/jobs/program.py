@@ -19,6 +19,8 @@ from typing import ClassVar, Literal
 
 import numpy as np
 
+from app.jobs.names import shown
+
 
 class OpKind(enum.Enum):
     MOVE = "move"  # to absolute axis positions (mm or degrees), travel unless the pen is down
@@ -36,7 +38,7 @@ class SourceRef:
     line: int
 
     def __str__(self) -> str:
-        return f"{self.file}:{self.line}"
+        return f"{shown(self.file)}:{self.line}"
 
 
 @dataclass(frozen=True)
@@ -222,49 +224,7 @@ class JobFileError(ValueError):
     """A job file the station refuses, with the file, the line and the reason."""
 
     def __init__(self, file: str, line: int, reason: str) -> None:
-        super().__init__(f"{file}:{line}: {reason}")
+        super().__init__(f"{shown(file)}:{line}: {reason}")
         self.file = file
         self.line = line
         self.reason = reason
-
-
-def load_point_list(path: Path, axis_names: Sequence[str] = ("X", "Y")) -> Program:
-    """A list of positions to visit, one per line: ``x, y`` (mm), optional ``# comment`` lines.
-
-    The plainest job an XY stage runs (a scan, an inspection route); a line
-    ``wait: <message>`` makes the runner stop for the operator there.
-    """
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise JobFileError(str(path), 0, f"cannot read: {exc}") from exc
-    ops: list[Operation] = []
-    for number, raw in enumerate(text.splitlines(), start=1):
-        line = raw.strip()
-        where = SourceRef(path.name, number)
-        if not line:
-            continue
-        if line.startswith("#"):
-            ops.append(Operation(OpKind.COMMENT, where, message=line.lstrip("# ")))
-            continue
-        if line.lower().startswith("wait"):
-            message = line.partition(":")[2].strip() or "continue when ready"
-            ops.append(Operation(OpKind.WAIT, where, message=message))
-            continue
-        fields = [f.strip() for f in line.replace(";", ",").split(",")]
-        if len(fields) != len(axis_names):
-            raise JobFileError(
-                path.name, number, f"expected {len(axis_names)} numbers, found {len(fields)}"
-            )
-        try:
-            values = [float(f) for f in fields]
-        except ValueError:
-            raise JobFileError(path.name, number, f"not a number in {line!r}") from None
-        ops.append(
-            Operation(
-                OpKind.MOVE, where, MappingProxyType(dict(zip(axis_names, values, strict=True)))
-            )
-        )
-    if not any(op.kind is OpKind.MOVE for op in ops):
-        raise JobFileError(path.name, 0, "no positions in the file")
-    return Program(path.stem, tuple(ops), path)

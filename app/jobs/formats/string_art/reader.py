@@ -29,6 +29,12 @@ always does (it is the firmware's format, so a count that disagrees is an
 error on its line); any other file does when its first number equals the
 number of numbers after it, and is a bare list otherwise.
 
+Every number is bounded before it sizes anything: at most
+:data:`MAX_NAILS` nails, a polygon of at most :data:`MAX_TVAR` sides, a
+radius of at most :data:`MAX_RADIUS_CM`, nail indices of at most
+:data:`MAX_INDEX_DIGITS` digits (a longer one is out of range however many
+nails the board has) and at most :data:`MAX_ENTRIES` entries.
+
 Every refusal is a :class:`~app.jobs.program.JobFileError` naming the file
 and the line; a missing ``param.txt`` key is reported on line 0.
 """
@@ -46,11 +52,22 @@ import numpy as np
 
 from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail_positions
 from app.jobs.program import JobFileError, SourceRef
+from app.jobs.reading import decode_job_text, read_job_bytes, read_job_text
 
 PARAM_NAME = "param.txt"
 PORADI_NAME = "poradi.txt"
 PARAM_KEYS = ("tvar", "pocet_hrebiku", "polomer_matrice")
 MIN_NAILS = 3
+#: The most nails a board may have (boards are wound with a few hundred).
+MAX_NAILS = 10_000
+#: The most sides of a polygonal board.
+MAX_TVAR = 1_000
+#: The largest board radius, in cm (no winder turns a board of 10 m).
+MAX_RADIUS_CM = 500.0
+#: The most nail indices in a sequence.
+MAX_ENTRIES = 5_000_000
+#: A nail index with more digits is out of range on any board (MAX_NAILS has five).
+MAX_INDEX_DIGITS = 9
 
 _SEPARATORS = re.compile(r"[,;\s]+")
 _INTEGER = re.compile(r"[+-]?\d+")
@@ -164,10 +181,7 @@ class NeedsNailCount(JobFileError):
 
 
 def read_text(path: Path) -> str:
-    try:
-        return path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+    return read_job_text(path)
 
 
 def _number(text: str) -> float | None:
@@ -195,8 +209,10 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
             first = found[key][1]
             raise JobFileError(path.name, number, f"{key} given twice (first on line {first})")
         parsed = _number(value)
-        if parsed is None or not math.isfinite(parsed):
-            raise JobFileError(path.name, number, f"{key} = {value!r} is not a number")
+        if parsed is None:
+            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is not a number")
+        if not math.isfinite(parsed):
+            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is too large")
         if key != "polomer_matrice" and parsed != int(parsed):
             raise JobFileError(path.name, number, f"{key} = {value} is not a whole number")
         found[key] = (parsed, number, value)
@@ -220,20 +236,33 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
 
 
 def _check_tvar(tvar: int) -> str | None:
-    if tvar == 0 or tvar >= 3:
+    if tvar == 0 or 3 <= tvar <= MAX_TVAR:
         return None
+    if tvar > MAX_TVAR:
+        return f"tvar = {_short(tvar)}: a polygon has at most {MAX_TVAR} sides"
     return f"tvar = {tvar}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
 
 
 def _check_nails(nails: int) -> str | None:
-    if nails >= MIN_NAILS:
+    if MIN_NAILS <= nails <= MAX_NAILS:
         return None
+    if nails > MAX_NAILS:
+        return f"pocet_hrebiku = {_short(nails)}: a board has at most {MAX_NAILS} nails"
     return f"pocet_hrebiku = {nails}: a board needs at least {MIN_NAILS} nails"
 
 
+def _short(value: int) -> str:
+    """A whole number as a message shows it: a huge one by its size, not its 4000 digits."""
+    text = str(value) if abs(value) < 10**30 else f"{float(value):.3g}"
+    return text
+
+
 def _check_radius(radius_cm: float) -> str | None:
-    if math.isfinite(radius_cm) and radius_cm > NAIL_INSET_MM / 10:
+    if math.isfinite(radius_cm) and NAIL_INSET_MM / 10 < radius_cm <= MAX_RADIUS_CM:
         return None
+    if math.isfinite(radius_cm) and radius_cm > MAX_RADIUS_CM:
+        limit = f"{MAX_RADIUS_CM:g} cm"
+        return f"polomer_matrice = {radius_cm:g} cm: a board's radius is at most {limit}"
     return (
         f"polomer_matrice = {radius_cm:g} cm: the nails sit {NAIL_INSET_MM / 10:g} cm inside "
         f"the edge, so the radius must be larger than {NAIL_INSET_MM / 10:g} cm"
@@ -250,28 +279,76 @@ class NailList:
     count_line: int
 
 
+_SEPARATOR_BYTES = np.frombuffer(b" ,;\t\r\n\v\f", dtype=np.uint8)
+_DIGIT_0, _DIGIT_9 = ord("0"), ord("9")
+_SIGNS = np.frombuffer(b"+-", dtype=np.uint8)
+
+
 def read_nail_list(path: Path) -> NailList:
-    """The integers of ``path`` (see the module notes for separators and the count)."""
-    values: list[int] = []
-    lines: list[int] = []
-    for number, raw in enumerate(read_text(path).splitlines(), start=1):
-        for token in _SEPARATORS.split(raw.strip()):
-            if not token:
-                continue
-            if not _INTEGER.fullmatch(token):
-                raise JobFileError(
-                    path.name,
-                    number,
-                    f"number {len(values) + 1} of the file: {token!r} is not a whole number",
-                )
-            values.append(int(token))
-            lines.append(number)
-    if not values:
+    """The integers of ``path`` (see the module notes for separators and the count).
+
+    Read with numpy in a few passes over the bytes (a generator's list can
+    hold millions of entries): which bytes separate, where each number starts
+    and ends and on which line, the first byte that belongs to no number, the
+    first number too long for any board, then every value at once.
+    """
+    raw = read_job_bytes(path)
+    if not raw.isascii():
+        decode_job_text(raw, path.name)  # UTF-16 and malformed UTF-8 refused as such
+    raw = raw.removeprefix(b"\xef\xbb\xbf")
+    data = np.frombuffer(raw, dtype=np.uint8)
+    separator = np.isin(data, _SEPARATOR_BYTES)
+    digit = (data >= _DIGIT_0) & (data <= _DIGIT_9)
+    sign = np.isin(data, _SIGNS)
+    token = ~separator
+    before = np.concatenate(([True], separator[:-1]))
+    after = np.concatenate((separator[1:], [True]))
+    starts = np.flatnonzero(token & before)
+    ends = np.flatnonzero(token & after) + 1
+    newlines = np.flatnonzero(data == ord("\n"))
+    lines = np.searchsorted(newlines, starts) + 1
+    # A token is a whole number: an optional sign at its start, then digits only.
+    misplaced = (~digit & token) & ~(sign & before)
+    lone_sign = (ends - starts == 1) & sign[starts] if len(starts) else np.zeros(0, bool)
+    bad = np.zeros(len(starts), dtype=bool)
+    if misplaced.any():
+        bad[np.searchsorted(starts, np.flatnonzero(misplaced), side="right") - 1] = True
+    bad |= lone_sign
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        text = raw[starts[k] : min(ends[k], starts[k] + 40)].decode("utf-8", "replace")
+        raise JobFileError(
+            path.name, int(lines[k]), f"number {k + 1} of the file: {text!r} is not a whole number"
+        )
+    if not len(starts):
         raise JobFileError(path.name, 0, "no nail indices in the file")
-    counted = path.name.lower() == PORADI_NAME or values[0] == len(values) - 1
+    digits = ends - starts - sign[starts]
+    long = np.flatnonzero(digits > MAX_INDEX_DIGITS)
+    if len(long):
+        k = int(long[0])
+        what = "the count" if k == 0 and path.name.lower() == PORADI_NAME else f"number {k + 1}"
+        raise JobFileError(
+            path.name,
+            int(lines[k]),
+            f"{what} of the file has {int(digits[k])} digits: out of range on any board "
+            f"(at most {MAX_NAILS} nails, {MAX_ENTRIES} entries)",
+        )
+    if len(starts) > MAX_ENTRIES + 1:
+        raise JobFileError(
+            path.name, int(lines[MAX_ENTRIES + 1]), f"more than {MAX_ENTRIES} nail indices"
+        )
+    spaced = raw.translate(_TO_SPACES)
+    values = np.fromstring(spaced, dtype=np.int64, sep=" ")
+    if len(values) != len(starts):  # cannot happen: every token was checked above
+        raise JobFileError(path.name, 0, "could not read the nail indices")
+    line_tuple = tuple(lines.astype(np.int64).tolist())
+    counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
-        return NailList(tuple(values), tuple(lines), None, 0)
-    return NailList(tuple(values[1:]), tuple(lines[1:]), values[0], lines[0])
+        return NailList(tuple(values.tolist()), line_tuple, None, 0)
+    return NailList(tuple(values[1:].tolist()), line_tuple[1:], int(values[0]), line_tuple[0])
+
+
+_TO_SPACES = bytes.maketrans(b",;\t\r\n\v\f", b"       ")
 
 
 def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None:
