@@ -85,6 +85,35 @@ class PlainMoves:
         self.f = np.full(n, np.nan)
         self.f[has_f] = numbers[starts[has_f] + 3]
 
+    def check_feeds(self, k0: int, k1: int, feed: float, required: bool) -> None:
+        """Plain moves k0…k1-1 as GRBL checks them: F not negative (error:4), and a G1 only
+        once a feed rate is set (error:22, where the machine needs one); ``feed``: the feed
+        in force before the run (NaN: never set)."""
+        f = self.f[k0:k1]
+        negative = np.flatnonzero(f < 0)
+        if len(negative):
+            k = k0 + int(negative[0])
+            raise JobFileError(
+                self.file,
+                int(self.lines[k]),
+                f"negative value: F{f[negative[0]]:g} cannot be negative (error:4)",
+            )
+        if not required:
+            return
+        known = ~np.isnan(f)
+        steps = np.arange(len(f))
+        last = np.maximum.accumulate(np.where(known, steps, -1)) if len(f) else steps
+        in_force = np.where(last >= 0, f[np.maximum(last, 0)], feed)
+        with np.errstate(invalid="ignore"):
+            bad = np.flatnonzero((self.g[k0:k1] != 0) & ~(in_force > 0))
+        if len(bad):
+            k = k0 + int(bad[0])
+            raise JobFileError(
+                self.file,
+                int(self.lines[k]),
+                f"feed rate undefined: G1 before any F sets one (error:22): {self.texts[k]!r}",
+            )
+
     def place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
         """Plain moves k0…k1-1 as MOVE operations, placed by the modal state in force.
 
@@ -106,6 +135,9 @@ class PlainMoves:
                     values[k0:k1] = values[k0:k1] * scale + st.offset[column]
         if scale != 1.0:
             self.f[k0:k1] *= scale
+        given = np.flatnonzero(~np.isnan(self.f[k0:k1]))
+        if len(given):
+            st.feed = float(self.f[k0 + int(given[-1])])
         st.position[0] = float(self.x[k1 - 1])
         st.position[1] = float(self.y[k1 - 1])
         st.motion = int(self.g[k1 - 1])
