@@ -123,7 +123,11 @@ def test_open_button_uses_the_file_dialog(
     monkeypatch.setattr(QFileDialog, "getOpenFileName", fake_dialog)
     qtbot.mouseClick(dock.open_button, LEFT)
     assert "*.csv" in asked[0]
+    # Read on a worker thread: the bar is busy and Open is off until it arrives.
+    assert dock.progress.maximum() == 0 and not dock.open_button.isEnabled()
+    qtbot.waitUntil(lambda: dock.runner.program is not None)
     assert dock.runner.program is not None and dock.runner.program.name == "square"
+    assert dock.progress.maximum() > 0 and dock.open_button.isEnabled()
 
 
 def test_a_malformed_file_names_its_line_and_loads_nothing(dock: JobsDock, tmp_path: Path) -> None:

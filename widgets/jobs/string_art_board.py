@@ -7,6 +7,7 @@ least nail count the list allows and refuses a board the checks would refuse.
 
 from __future__ import annotations
 
+import html
 from collections.abc import Callable
 
 from PySide6.QtWidgets import (
@@ -20,7 +21,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
+from app.jobs.formats.string_art.reader import MAX_NAILS, NeedsNailCount, StringArtParams
+from app.jobs.names import shown
 
 DEFAULT_RADIUS_CM = 14.5
 
@@ -32,8 +34,8 @@ class BoardDialog(QDialog):
         form = QFormLayout(self)
         form.addRow(
             QLabel(
-                f"<b>{needs.path.name}</b> lists {needs.entries} nail visits without a "
-                "param.txt. Which board is it for?"
+                f"<b>{html.escape(shown(needs.path.name))}</b> lists {needs.entries} nail "
+                "visits without a param.txt. Which board is it for?"
             )
         )
         self.shape = QComboBox()
@@ -43,7 +45,7 @@ class BoardDialog(QDialog):
             self.shape.addItem(f"{sides}-gon", sides)
         self.nails = QSpinBox()
         self.nails.setObjectName("board_nails")
-        self.nails.setRange(max(3, needs.min_nails), 10_000)
+        self.nails.setRange(max(3, needs.min_nails), MAX_NAILS)
         self.nails.setValue(max(3, needs.min_nails))
         highest = needs.min_nails - 1
         self.nails.setToolTip(f"At least {needs.min_nails}: the list names nail {highest}")

@@ -408,6 +408,8 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
         if poradi.name.lower() == PORADI_NAME:
             param_path = _partner(poradi, PARAM_NAME)
         if param_path is None:
+            # What no board can take is refused before the operator is asked for one.
+            check_sequence(poradi, nails, StringArtParams(0, MAX_NAILS, MAX_RADIUS_CM))
             raise NeedsNailCount(poradi, max(nails.sequence) + 1, len(nails.sequence))
         param, lines = read_params(param_path)
     else:
