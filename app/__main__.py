@@ -1,15 +1,20 @@
 """``stepdeck`` / ``python -m app``: the station's entry point.
 
 Launched bare it opens on the emulated XY stage (in-process emulator, real
-time), so it is usable at once with nothing attached.
+time), so it is usable at once with nothing attached.  ``stepdeck JOB`` opens
+the window with the job loaded in the jobs dock (a file manager opens job
+files this way, resources/stepdeck.desktop); ``stepdeck check …`` and the
+other subcommands in :data:`SUBCOMMANDS` run without a window.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 import traceback
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from types import TracebackType
 from typing import TextIO
 
@@ -27,10 +32,25 @@ from app.profiles import (
 from app.settings import StationSettings, default_settings
 from app.station import Station
 
+#: ``stepdeck NAME …`` runs module's ``main(argv) -> int`` with the rest of the command line.
+SUBCOMMANDS = {
+    "check": "app.cli.check",
+}
+
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="stepdeck", description="Control station for small stepper-motor machines."
+        prog="stepdeck",
+        description="Control station for small stepper-motor machines.",
+        epilog="stepdeck check JOB… --profile P: check job files without a window "
+        "(stepdeck check --help).",
+    )
+    parser.add_argument(
+        "job",
+        nargs="?",
+        type=Path,
+        metavar="JOB",
+        help="a job file to open in the jobs dock (a string-art pair by either file)",
     )
     parser.add_argument(
         "--profile",
@@ -99,7 +119,8 @@ class Launcher:
         self.station: Station | None = None
         self.window: QMainWindow | None = None
 
-    def open(self, profile: MachineProfile) -> Station:
+    def open(self, profile: MachineProfile, job: Path | None = None) -> Station:
+        """The station and its window for ``profile``, with ``job`` being read into the dock."""
         from widgets.main_window import MainWindow
 
         self.settings.profile = profile.name
@@ -110,6 +131,8 @@ class Launcher:
         window.profileRequested.connect(self.switch)
         window.show()
         self.station, self.window = station, window
+        if job is not None:
+            window.jobs_dock.open_path(job, background=True)
         return station
 
     def switch(self, name: str) -> None:
@@ -150,6 +173,10 @@ def report_unexpected(launcher: Launcher) -> Callable[..., None]:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in SUBCOMMANDS:
+        command = importlib.import_module(SUBCOMMANDS[argv[0]])
+        return int(command.main(argv[1:]))
     args = build_parser().parse_args(argv)
     if args.list_ports:
         return print_ports(sys.stdout)
@@ -170,7 +197,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         settings.period_ms = max(20, min(1000, args.period))
     launcher = Launcher(store, settings.period_ms)
     sys.excepthook = report_unexpected(launcher)
-    station = launcher.open(profile)
+    station = launcher.open(profile, args.job)
     try:
         connect_as_asked(station, args, settings)
     except Exception as exc:  # whatever the link does, the window stays usable
