@@ -209,7 +209,7 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
             first = found[key][1]
             raise JobFileError(path.name, number, f"{key} given twice (first on line {first})")
         parsed = _number(value)
-        if parsed is None:
+        if parsed is None or math.isnan(parsed):
             raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is not a number")
         if not math.isfinite(parsed):
             raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is too large")
