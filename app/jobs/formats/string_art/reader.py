@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -103,8 +103,8 @@ class StringArtJob:
     sequence: tuple[int, ...]
     poradi_path: Path | None = field(default=None, compare=False)
     param_path: Path | None = field(default=None, compare=False)
-    #: The line of each sequence entry in ``poradi_path`` (1-based).
-    entry_lines: tuple[int, ...] = field(default=(), compare=False)
+    #: The line of each sequence entry in ``poradi_path`` (1-based; int32 for long lists).
+    entry_lines: Sequence[int] | np.ndarray = field(default=(), compare=False)
     #: The line of each ``param.txt`` key (absent: supplied by the operator).
     param_lines: Mapping[str, int] = field(
         default_factory=lambda: MappingProxyType({}), compare=False
@@ -137,7 +137,7 @@ class StringArtJob:
     def entry_source(self, entry: int) -> SourceRef:
         """Where sequence entry ``entry`` (0-based) is written."""
         name = self.poradi_path.name if self.poradi_path is not None else PORADI_NAME
-        line = self.entry_lines[entry] if entry < len(self.entry_lines) else 0
+        line = int(self.entry_lines[entry]) if entry < len(self.entry_lines) else 0
         return SourceRef(name, line)
 
     def param_source(self, key: str = "pocet_hrebiku") -> SourceRef:
@@ -274,46 +274,54 @@ class NailList:
     """The integers of a nail-order file: the sequence, its lines, and the count if written."""
 
     sequence: tuple[int, ...]
-    lines: tuple[int, ...]
+    lines: np.ndarray  # int32, the line of each entry
     count: int | None
     count_line: int
 
 
-_SEPARATOR_BYTES = np.frombuffer(b" ,;\t\r\n\v\f", dtype=np.uint8)
-_DIGIT_0, _DIGIT_9 = ord("0"), ord("9")
-_SIGNS = np.frombuffer(b"+-", dtype=np.uint8)
+#: Byte classes of a nail list: separators, digits, signs, anything else.
+_SEPARATOR, _DIGIT, _SIGN, _OTHER = 0, 1, 2, 3
+_CLASSES = np.full(256, _OTHER, dtype=np.uint8)
+_CLASSES[list(b" ,;\t\r\n\v\f")] = _SEPARATOR
+_CLASSES[list(b"0123456789")] = _DIGIT
+_CLASSES[list(b"+-")] = _SIGN
+_TO_SPACES = bytes.maketrans(b",;\t\r\n\v\f", b"       ")
 
 
 def read_nail_list(path: Path) -> NailList:
     """The integers of ``path`` (see the module notes for separators and the count).
 
     Read with numpy in a few passes over the bytes (a generator's list can
-    hold millions of entries): which bytes separate, where each number starts
-    and ends and on which line, the first byte that belongs to no number, the
-    first number too long for any board, then every value at once.
+    hold millions of entries): each byte's class, where each number starts
+    and ends and on which line, the first number that is not a whole number
+    or is too long for any board, then every value at once.
     """
     raw = read_job_bytes(path)
     if not raw.isascii():
         decode_job_text(raw, path.name)  # UTF-16 and malformed UTF-8 refused as such
     raw = raw.removeprefix(b"\xef\xbb\xbf")
-    data = np.frombuffer(raw, dtype=np.uint8)
-    separator = np.isin(data, _SEPARATOR_BYTES)
-    digit = (data >= _DIGIT_0) & (data <= _DIGIT_9)
-    sign = np.isin(data, _SIGNS)
-    token = ~separator
-    before = np.concatenate(([True], separator[:-1]))
-    after = np.concatenate((separator[1:], [True]))
-    starts = np.flatnonzero(token & before)
-    ends = np.flatnonzero(token & after) + 1
-    newlines = np.flatnonzero(data == ord("\n"))
-    lines = np.searchsorted(newlines, starts) + 1
-    # A token is a whole number: an optional sign at its start, then digits only.
-    misplaced = (~digit & token) & ~(sign & before)
-    lone_sign = (ends - starts == 1) & sign[starts] if len(starts) else np.zeros(0, bool)
+    classes = _CLASSES[np.frombuffer(raw, dtype=np.uint8)]
+    separator = (classes == _SEPARATOR).view(np.int8)
+    change = np.diff(separator, prepend=np.int8(1), append=np.int8(1))
+    del separator
+    starts = np.flatnonzero(change == -1)  # first byte of each number
+    ends = np.flatnonzero(change == 1)  # one past its last byte
+    del change
+    newlines = np.flatnonzero(np.frombuffer(raw, dtype=np.uint8) == ord("\n"))
+    lines = (np.searchsorted(newlines, starts) + 1).astype(np.int32)
+    del newlines
+    # A number is an optional sign at its start, then digits only: any other byte, or a sign
+    # further in, spoils the number it is in.
     bad = np.zeros(len(starts), dtype=bool)
-    if misplaced.any():
-        bad[np.searchsorted(starts, np.flatnonzero(misplaced), side="right") - 1] = True
-    bad |= lone_sign
+    other = np.flatnonzero(classes == _OTHER)
+    bad[np.searchsorted(starts, other, side="right") - 1] = True
+    signs = np.flatnonzero(classes == _SIGN)
+    owner = np.searchsorted(starts, signs, side="right") - 1
+    bad[owner[signs != starts[owner]]] = True
+    del other, signs, owner
+    signed = classes[starts] == _SIGN if len(starts) else np.zeros(0, dtype=bool)
+    bad |= signed & (ends - starts == 1)  # a sign alone
+    del classes
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         text = raw[starts[k] : min(ends[k], starts[k] + 40)].decode("utf-8", "replace")
@@ -322,7 +330,7 @@ def read_nail_list(path: Path) -> NailList:
         )
     if not len(starts):
         raise JobFileError(path.name, 0, "no nail indices in the file")
-    digits = ends - starts - sign[starts]
+    digits = ends - starts - signed
     long = np.flatnonzero(digits > MAX_INDEX_DIGITS)
     if len(long):
         k = int(long[0])
@@ -337,18 +345,14 @@ def read_nail_list(path: Path) -> NailList:
         raise JobFileError(
             path.name, int(lines[MAX_ENTRIES + 1]), f"more than {MAX_ENTRIES} nail indices"
         )
-    spaced = raw.translate(_TO_SPACES)
-    values = np.fromstring(spaced, dtype=np.int64, sep=" ")
-    if len(values) != len(starts):  # cannot happen: every token was checked above
+    del starts, ends, digits, signed
+    values = np.fromstring(raw.translate(_TO_SPACES), dtype=np.int64, sep=" ")
+    if len(values) != len(lines):  # cannot happen: every number was checked above
         raise JobFileError(path.name, 0, "could not read the nail indices")
-    line_tuple = tuple(lines.astype(np.int64).tolist())
     counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
-        return NailList(tuple(values.tolist()), line_tuple, None, 0)
-    return NailList(tuple(values[1:].tolist()), line_tuple[1:], int(values[0]), line_tuple[0])
-
-
-_TO_SPACES = bytes.maketrans(b",;\t\r\n\v\f", b"       ")
+        return NailList(tuple(values.tolist()), lines, None, 0)
+    return NailList(tuple(values[1:].tolist()), lines[1:], int(values[0]), int(lines[0]))
 
 
 def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None:
@@ -370,7 +374,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         more = f" ({len(bad) - 1} more out of range)" if len(bad) > 1 else ""
         raise JobFileError(
             name,
-            nails.lines[i],
+            int(nails.lines[i]),
             f"entry {i + 1}: nail {sequence[i]} is out of range 0…{params.nails - 1}{more}",
         )
     repeats = np.flatnonzero(array[1:] == array[:-1])
@@ -378,7 +382,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         i = int(repeats[0]) + 1
         raise JobFileError(
             name,
-            nails.lines[i],
+            int(nails.lines[i]),
             f"entries {i} and {i + 1}: nail {sequence[i]} twice in a row (a thread to itself)",
         )
 
