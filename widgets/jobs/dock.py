@@ -58,7 +58,7 @@ from app.jobs.program import JobFileError, Program
 from app.jobs.reading import read_job_text
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
-from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
+from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.style import monospace_font
@@ -446,7 +446,9 @@ class JobsDock(QDockWidget):
         axis_names = [axis.name for axis in self.station.profile.axes]
         self._path = path
         if background:  # even a small file can be slow (huge arcs), or be no file (a pipe)
-            self._loading = _Loading(path, axis_names, self.options, self)
+            self._loading = _Loading(
+                path, axis_names, self.options, self.preview.geometry_maker(), self
+            )
             self._loading.done.connect(self._loaded)
             self.file_label.setText(f"reading {_bold(path.name)}…")
             self.open_button.setEnabled(False)
@@ -467,8 +469,10 @@ class JobsDock(QDockWidget):
         self.progress.setRange(0, 1)
         if isinstance(result, JobFileError):
             self._refused(path, result, background=True)
-        elif isinstance(result, Program):
-            self._accept(path, result)
+        elif isinstance(result, tuple):
+            program, geometry = result
+            self.preview.prepare(program, geometry)
+            self._accept(path, program)
         else:
             self.say(f"{shown(path.name)}: not loaded — {result}")
         self._program_changed()
@@ -730,15 +734,22 @@ def _size(path: Path) -> int:
 class _Loading(QObject):
     """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
 
-    done = Signal(object, object)  # path, Program or JobFileError (or another exception)
+    #: path, then (Program, its preview geometry), a JobFileError, or another exception's text.
+    done = Signal(object, object)
 
     def __init__(
-        self, path: Path, axis_names: list[str], options: JobOptions, parent: QObject
+        self,
+        path: Path,
+        axis_names: list[str],
+        options: JobOptions,
+        geometry: Callable[[Program], ProgramGeometry | None],
+        parent: QObject,
     ) -> None:
         super().__init__(parent)
         self.path = path
         self._axis_names = axis_names
         self._options = options
+        self._geometry = geometry
         self._thread = threading.Thread(target=self._run, name="job-loader", daemon=True)
 
     def start(self) -> None:
@@ -750,7 +761,8 @@ class _Loading(QObject):
     def _run(self) -> None:
         result: object
         try:
-            result = load_job(self.path, self._axis_names, self._options)
+            program = load_job(self.path, self._axis_names, self._options)
+            result = (program, self._geometry(program))
         except JobFileError as exc:
             result = exc
         except Exception as exc:  # a loader bug must not take the window down
