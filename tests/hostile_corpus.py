@@ -582,6 +582,44 @@ def _cases() -> list[Case]:
         )
     )
 
+    add(
+        Case(
+            "tool-number-above-255",
+            "t.gcode",
+            "G0 X1 Y1\nT256 M6\n",
+            g,
+            Refused("t.gcode:2", "error:38"),
+        )
+    )
+    add(
+        Case(
+            "line-number-above-max",
+            "n.gcode",
+            "N10 G0 X1 Y1\nN10000001 G0 X2 Y2\n",
+            g,
+            Refused("n.gcode:2", "error:27"),
+        )
+    )
+    add(
+        Case(
+            "line-number-5000-digits",
+            "n.gcode",
+            "G0 X1 Y1\nN" + "9" * 5000 + " G0 X2 Y2\n",
+            g,
+            Refused("n.gcode:2", "error:27"),
+        )
+    )
+    add(
+        Case(
+            # The value is 7, and the N number is not sent: the line is short on the wire.
+            "line-number-leading-zeros",
+            "n.gcode",
+            "N" + "0" * 5000 + "7 G0 X2 Y2 F100\n",
+            g,
+            Loaded(1),
+        )
+    )
+
     # --- 10. huge arcs are refused fast, not drawn with millions of vertices -------------
     huge = "G0 X10 Y10 F600\n" + "G2 X10 Y10 I-900000 J0\n" * 2000
     add(Case("huge-arcs", "huge.gcode", huge, g, Refused("huge.gcode:2", "arc too long")))

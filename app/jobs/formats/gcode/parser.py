@@ -78,6 +78,9 @@ MOTION_NAMES = {code: word for word, code in MOTION_WORDS.items()}
 AXIS_LETTERS = "XYZABCUVWE"
 #: Words GRBL refuses negative (error:4).
 _NOT_NEGATIVE = frozenset("FNPTS")
+#: GRBL's largest tool number (error:38) and line number (error:27).
+MAX_TOOL_NUMBER = 255
+MAX_LINE_NUMBER = 10_000_000
 _LINEAR_AXES = frozenset("XYZUVWE")  # scaled by G20; A B C are degrees
 
 
@@ -177,6 +180,12 @@ class Parser:
                     number, f"word repeated: {word.letter} twice (error:25): {code!r}", code
                 )
             seen.add(word.letter)
+            if word.letter == "T" and word.value > MAX_TOOL_NUMBER:
+                self._refuse(
+                    number,
+                    f"max value exceeded: T{word.text} above T{MAX_TOOL_NUMBER} (error:38)",
+                    code,
+                )
             if word.letter in _NOT_NEGATIVE and word.value < 0:
                 self._refuse(
                     number,
@@ -208,6 +217,13 @@ class Parser:
             return
         match = LINE_NUMBER.match(code)
         if match:
+            digits = match.group().strip()[1:].strip()
+            significant = digits.lstrip("0") or "0"
+            if len(significant) > 8 or int(significant) > MAX_LINE_NUMBER:
+                shown = digits if len(digits) <= 20 else f"{digits[:12]}… ({len(digits)} digits)"
+                self._refuse(
+                    number, f"invalid line number: N{shown} above N{MAX_LINE_NUMBER} (error:27)"
+                )
             code = code[match.end() :]
         code = CHECKSUM.sub("", code).strip()
         if not code:
