@@ -135,6 +135,31 @@ def test_the_jobs_dock(case: Case, qtbot: QtBot, tmp_path: Path, docks: dict[str
         assert runner.program is None and "which format?" in messages
 
 
+def test_every_line_the_board_would_refuse_is_listed(tmp_path: Path, qtbot: QtBot) -> None:
+    """Not only the first: a CI job fixing a generator sees them all, in file order."""
+    job = tmp_path / "many.gcode"
+    lines = ["G0 X1 Y1", "G1 X2 Y2", "F-5", "G1 X3 Y3 F100", "G2 X9 Y3 I1 J0", "G1 X4 Y4"]
+    job.write_text("\n".join(lines) + "\n")
+    out = io.StringIO()
+    status = check.main([str(job), "--profile", "grbl-plotter"], out, io.StringIO())
+    assert status == check.REFUSED
+    assert [line.split(": ")[0] for line in out.getvalue().splitlines()] == [
+        "many.gcode:2",  # G1 before any feed (error:22)
+        "many.gcode:3",  # a negative F (error:4)
+        "many.gcode:5",  # an arc whose end is off its circle (error:33)
+    ]
+    harness = StationHarness(load_profile("grbl-plotter"))
+    try:
+        dock = JobsDock(harness.station, JobRunner(harness.station, tmp_path / "c"), throttle_ms=0)
+        qtbot.addWidget(dock)
+        assert not dock.open_path(job)
+        text = dock.messages.toPlainText()
+        assert "many.gcode:2: feed rate undefined" in text
+        assert "  many.gcode:3: negative value" in text and "  many.gcode:5: arc end" in text
+    finally:
+        harness.close()
+
+
 def test_check_needs_no_display(tmp_path: Path) -> None:
     """The command line runs where there is no display at all (a CI job)."""
     job = tmp_path / "ok.gcode"

@@ -136,7 +136,11 @@ def check_one(path: Path, profile: MachineProfile, options: JobOptions, out: Tex
         print(f"{exc} (give --format)", file=out)
         return False
     except JobFileError as exc:
-        print(exc, file=out)
+        refusals = (exc, *exc.more)
+        for refusal in refusals[:SHOWN_REFUSALS]:
+            print(refusal, file=out)
+        if len(refusals) > SHOWN_REFUSALS:
+            print(f"{shown(path.name)}: … and {len(refusals) - SHOWN_REFUSALS} more", file=out)
         return False
     refused: list[LimitViolation] = check_limits(program, profile.travel_limits())
     takes_gcode = bool(getattr(driver_for(profile.dialect), "takes_gcode", False))

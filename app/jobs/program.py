@@ -228,3 +228,5 @@ class JobFileError(ValueError):
         self.file = file
         self.line = line
         self.reason = reason
+        #: Further refusals of the same file, in file order (a G-code file's every bad line).
+        self.more: tuple[JobFileError, ...] = ()

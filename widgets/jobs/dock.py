@@ -64,6 +64,8 @@ from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.style import monospace_font
 
 MESSAGE_LINES = 200
+#: A refused file's further refused lines listed under the first one.
+MORE_REFUSALS_SHOWN = 20
 
 #: Asks which job type an ambiguous file is; the chosen type's key, None when cancelled.
 FormatAsker = Callable[[AmbiguousFormat], str | None]
@@ -489,6 +491,10 @@ class JobsDock(QDockWidget):
                 self._format = chosen
                 return self.open_path(path, background=background)
         self.say(f"{exc} — not loaded")
+        for more in exc.more[:MORE_REFUSALS_SHOWN]:
+            self.say(f"  {more}")
+        if len(exc.more) > MORE_REFUSALS_SHOWN:
+            self.say(f"  … and {len(exc.more) - MORE_REFUSALS_SHOWN} more lines refused")
         return False
 
     def _accept(self, path: Path, program: Program) -> bool:

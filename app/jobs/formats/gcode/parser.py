@@ -80,6 +80,8 @@ AXIS_LETTERS = "XYZABCUVWE"
 _NOT_NEGATIVE = frozenset("FNPTS")
 #: GRBL's largest tool number (error:38) and line number (error:27).
 MAX_TOOL_NUMBER = 255
+#: Refusals collected from one file before reading stops (the first ones are what matter).
+MAX_REFUSALS = 1000
 MAX_LINE_NUMBER = 10_000_000
 _LINEAR_AXES = frozenset("XYZUVWE")  # scaled by G20; A B C are degrees
 
@@ -116,6 +118,8 @@ class Parser:
         #: the pen state they set, their operations and the machine's objections.
         self.memo: dict[str, tuple[int | None, list[Pending], tuple[str, ...]]] = {}
 
+        #: Lines refused at load (GRBL's errors, malformed text), in file order.
+        self.refusals: list[JobFileError] = []
         # Output, in operation order.
         self.out = OperationColumns()
         self.problems: list[GcodeProblem] = []
@@ -142,7 +146,7 @@ class Parser:
         slow = np.flatnonzero(~plain)
         self.pens.prescan([lines[i] for i in slow.tolist()], self.tokens)
         plain_before = (np.cumsum(plain) - plain)[slow].tolist()
-        place, texts, line = self._place, self.out.texts, self._line
+        place, texts, line = self._place, self.out.texts, self._guarded
         done = 0
         for i, before in zip(slow.tolist(), plain_before, strict=True):
             if before > done:
@@ -151,10 +155,35 @@ class Parser:
             line(i + 1, lines[i])
         if done < len(self.plain.texts):
             place(done, len(self.plain.texts), self.state, texts)
+        self._raise_refusals()
+
+    def _guarded(self, number: int, raw: str) -> None:
+        """One line; refused, it changes nothing (as on GRBL) and reading goes on."""
+        saved = self.state.copy()
+        try:
+            self._line(number, raw)
+        except JobFileError as exc:
+            while len(saved.position) < len(self.columns):
+                saved.position.append(math.nan)
+                saved.offset.append(0.0)
+            self.state = saved
+            self._add_refusals([exc])
+
+    def _add_refusals(self, found: Sequence[JobFileError]) -> None:
+        self.refusals += found
+        if len(self.refusals) >= MAX_REFUSALS:
+            self._raise_refusals()
+
+    def _raise_refusals(self) -> None:
+        """The first refusal, carrying the others: the whole file is refused."""
+        if self.refusals:
+            first, *more = self.refusals[:MAX_REFUSALS]
+            first.more = tuple(more)
+            raise first
 
     def _place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
         """A run of plain moves, refused where GRBL would refuse one (feed rules)."""
-        self.plain.check_feeds(k0, k1, st.feed, self.feed_required)
+        self._add_refusals(self.plain.check_feeds(k0, k1, st.feed, self.feed_required))
         self.plain.place(k0, k1, st, texts)
 
     def _refuse(self, number: int, reason: str, code: str = "") -> None:
