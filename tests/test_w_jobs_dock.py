@@ -303,7 +303,7 @@ def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
     drill_file = shared_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
     assert dock.open_path(drill_file) is False  # the XY stage cannot drill: refused, listed
     dock.draw_check.setChecked(True)  # the same file as pen work: still refused (no pen) …
-    assert "has no pen" in dock.messages.toPlainText()
+    qtbot.waitUntil(lambda: "has no pen" in dock.messages.toPlainText())  # re-read on the worker
     options = dock.options
     assert options.draw and options.excellon_step_inch == 1e-4
     # … but the loader built pen crosses, which a machine with a pen would run.

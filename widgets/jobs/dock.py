@@ -142,6 +142,8 @@ class JobsDock(QDockWidget):
         self._ask_format: FormatAsker = ask_format or ask_format_dialog(self)
         #: The job type the operator chose for an ambiguous file (kept while it is re-read).
         self._format: str | None = None
+        #: An option changed while a file was being read: read it again when that ends.
+        self._reread = False
         self._loading: _Loading | None = None
         self.preview = JobPreview(
             station,
@@ -278,9 +280,14 @@ class JobsDock(QDockWidget):
         )
 
     def _options_changed(self, *_args: object) -> None:
-        """Re-read the open file with the new choice (not while it runs)."""
-        if self._path is not None and self.runner.state not in ACTIVE_STATES:
-            self.open_path(self._path)
+        """Re-read the open file with the new choice (not while it runs), on the worker.
+
+        A choice made while the file is being read is taken once that reading ends.
+        """
+        if self._loading is not None:
+            self._reread = True
+        elif self._path is not None and self.runner.state not in ACTIVE_STATES:
+            self.open_path(self._path, background=True)
 
     def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
         button = QPushButton(text)
@@ -478,6 +485,9 @@ class JobsDock(QDockWidget):
         else:
             self.say(f"{shown(path.name)}: not loaded — {result}")
         self._program_changed()
+        if self._reread and self._loading is None:
+            self._reread = False
+            self._options_changed()
 
     def _refused(self, path: Path, exc: JobFileError, *, background: bool = False) -> bool:
         if isinstance(exc, NeedsNailCount) and self._board is None:
