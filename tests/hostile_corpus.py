@@ -620,6 +620,17 @@ def _cases() -> list[Case]:
         )
     )
 
+    long_line = "G1 X1 Y1 Q" + "7" * 3_000_000 + "\n"
+    add(
+        Case(
+            "malformed-line-of-3-mb",
+            "long.gcode",
+            "G0 X1 Y1 F100\n" + long_line,
+            g,
+            Refused("long.gcode:2", "characters)"),
+        )
+    )
+
     # --- 10. huge arcs are refused fast, not drawn with millions of vertices -------------
     huge = "G0 X10 Y10 F600\n" + "G2 X10 Y10 I-900000 J0\n" * 2000
     add(Case("huge-arcs", "huge.gcode", huge, g, Refused("huge.gcode:2", "arc too long")))

@@ -51,6 +51,7 @@ def test_stepdeck_check(case: Case, tmp_path: Path) -> None:
     path = materialise(case, tmp_path / "job")
     status, out, err = _run_check(path, case)
     assert "\x1b" not in out and "\u202e" not in out  # names escaped, never raw
+    assert all(len(line) < 400 for line in out.splitlines())  # a hostile line is quoted cut
     expect = case.expect
     first = out.splitlines()[0] if out else ""
     if isinstance(expect, Refused) and not expect.where:  # a usage error

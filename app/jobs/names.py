@@ -14,3 +14,16 @@ def shown(name: str) -> str:
     if name.isprintable():
         return name
     return "".join(c if c.isprintable() else repr(c)[1:-1] for c in name)
+
+
+def quoted(text: str, limit: int = 60) -> str:
+    """``text`` quoted for a message, cut to ``limit`` characters: a hostile line may be
+    megabytes long, and a message is read by a person."""
+    if len(text) <= limit:
+        return repr(text)
+    return f"{text[:limit]!r}… ({len(text):,} characters)"
+
+
+def clipped(text: str, limit: int = 80) -> str:
+    """``text`` as shown unquoted in a message (an operation's G-code line), cut to ``limit``."""
+    return text if len(text) <= limit else f"{text[:limit]}… ({len(text):,} characters)"

@@ -19,7 +19,7 @@ from typing import ClassVar, Literal
 
 import numpy as np
 
-from app.jobs.names import shown
+from app.jobs.names import clipped, shown
 
 
 class OpKind(enum.Enum):
@@ -58,7 +58,7 @@ class Operation:
         if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
             return f"{self.kind.value}: {self.message}"
         if self.kind is OpKind.GCODE and self.line:
-            return self.line
+            return clipped(self.line)
         return str(self.kind.value)
 
 
@@ -75,7 +75,7 @@ class LineProblem:
     reason: str
 
     def __str__(self) -> str:
-        return f"line {self.line}: {self.text} — {self.reason}"
+        return f"line {self.line}: {clipped(self.text)} — {self.reason}"
 
 
 @dataclass(frozen=True)

@@ -47,7 +47,7 @@ from gerbonara.graphic_objects import Arc, Flash, Line
 from gerbonara.utils import MM, Inch
 
 from app.jobs.formats.excellon.hole_order import order_holes
-from app.jobs.names import shown
+from app.jobs.names import quoted, shown
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
 from app.jobs.reading import read_job_text
 
@@ -356,9 +356,9 @@ def read_drill_file(
         cause = exc.__cause__ or exc
         reason = str(cause.args[0] if cause.args else cause)
         if isinstance(cause, ValueError) and "Unknown excellon statement" in reason:
-            reason = f"not an Excellon statement: {lines[parser.lineno - 1].strip()!r}"
+            reason = f"not an Excellon statement: {quoted(lines[parser.lineno - 1].strip())}"
         elif "Undefined tool" in reason:
-            reason = f"unknown tool: {lines[parser.lineno - 1].strip()!r} is not defined"
+            reason = f"unknown tool: {quoted(lines[parser.lineno - 1].strip())} is not defined"
         elif "No number format" in reason:
             reason = "integer coordinates, but the file gives no number format (metric)"
         raise JobFileError(path.name, int(parser.lineno or 0), reason) from exc
@@ -372,10 +372,11 @@ def read_drill_file(
 
     for line, text_, message, state in parser.remarks:
         if "before first tool" in message:
-            raise JobFileError(path.name, line, f"coordinates before any tool is selected: {text_}")
+            reason = f"coordinates before any tool is selected: {quoted(text_)}"
+            raise JobFileError(path.name, line, reason)
         if message.startswith("Bare coordinate after end"):
             where = "before the header" if state is None else "after the end of the program"
-            raise JobFileError(path.name, line, f"coordinates {where}: {text_}")
+            raise JobFileError(path.name, line, f"coordinates {where}: {quoted(text_)}")
         if "implicit number format" not in message:  # we chose the format ourselves
             if "{index}" in message:  # gerbonara 1.5.0 forgets to fill it in
                 tool = _TOOL_LINE.match(text_.strip().upper())

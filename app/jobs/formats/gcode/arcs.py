@@ -21,6 +21,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 
 #: Largest chord error of a flattened arc (mm, GRBL's $12) and the fewest segments one gets.
@@ -70,7 +71,7 @@ def flatten_arc(
             raise JobFileError(
                 file,
                 number,
-                f"arc target invalid: an R arc needs distinct ends (error:33): {code!r}",
+                f"arc target invalid: an R arc needs distinct ends (error:33): {quoted(code)}",
             )
         h2 = 4 * radius * radius - dx * dx - dy * dy
         if h2 < -1e-6 * max(1.0, radius * radius):
@@ -78,7 +79,7 @@ def flatten_arc(
                 file,
                 number,
                 f"arc radius error: R {abs(radius):g} mm is less than half the chord "
-                f"{chord:g} mm (error:34): {code!r}",
+                f"{chord:g} mm (error:34): {quoted(code)}",
             )
         h = -math.sqrt(max(h2, 0.0)) / chord
         if not clockwise:
@@ -90,10 +91,10 @@ def flatten_arc(
         cx, cy = sx + offsets.get("I", 0.0), sy + offsets.get("J", 0.0)
     else:
         raise JobFileError(
-            file, number, f"arc without offsets: it needs I/J or R (error:35): {code!r}"
+            file, number, f"arc without offsets: it needs I/J or R (error:35): {quoted(code)}"
         )
     if not all(math.isfinite(v) for v in (sx, sy, ex, ey, cx, cy)):
-        raise JobFileError(file, number, f"arc coordinates too large to draw: {code!r}")
+        raise JobFileError(file, number, f"arc coordinates too large to draw: {quoted(code)}")
     r0 = math.hypot(sx - cx, sy - cy)
     r1 = math.hypot(ex - cx, ey - cy)
     if "R" not in offsets and grbl_rules:
@@ -105,7 +106,7 @@ def flatten_arc(
                 file,
                 number,
                 f"arc end not on its circle: radius {r0:.4g} mm at the start, {r1:.4g} mm at "
-                f"the end (error:33): {code!r}",
+                f"the end (error:33): {quoted(code)}",
             )
     a0 = math.atan2(sy - cy, sx - cx)
     a1 = math.atan2(ey - cy, ex - cx)

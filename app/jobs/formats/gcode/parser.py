@@ -65,6 +65,7 @@ from app.jobs.formats.gcode.words import (
     render,
     split_comment,
 )
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 from app.profiles import GcodeSettings
 
@@ -206,7 +207,7 @@ class Parser:
                 continue
             if word.letter in seen:
                 self._refuse(
-                    number, f"word repeated: {word.letter} twice (error:25): {code!r}", code
+                    number, f"word repeated: {word.letter} twice (error:25): {quoted(code)}", code
                 )
             seen.add(word.letter)
             if word.letter == "T" and word.value > MAX_TOOL_NUMBER:
@@ -223,7 +224,7 @@ class Parser:
                 )
         if motions > 1:
             self._refuse(
-                number, f"modal group violation: two motion words (error:21): {code!r}", code
+                number, f"modal group violation: two motion words (error:21): {quoted(code)}", code
             )
 
     # --- one line ------------------------------------------------------------------
@@ -294,7 +295,7 @@ class Parser:
             message = "? not sent: the station asks for the status itself"
             self._commit(number, code, [Pending(COMMENT, "", message=message)], ())
             return
-        reason = f"{what} ({code!r}) is a real-time command, not a line of a job"
+        reason = f"{what} ({quoted(code)}) is a real-time command, not a line of a job"
         self._commit(number, code, [Pending(GCODE, code, checked=True)], (reason,))
 
     def _words(self, number: int, code: str, words: tuple[Word, ...]) -> None:
@@ -402,7 +403,7 @@ class Parser:
             elif axes and not non_modal:
                 self._motion(number, code, words, params, commands, op, axes)
             elif {"G2", "G3"} & commands.keys() and not non_modal:
-                self._refuse(number, f"arc without axis words (error:26): {code!r}", code)
+                self._refuse(number, f"arc without axis words (error:26): {quoted(code)}", code)
             if whole:
                 op.pen = pen if pen is not None else -1
                 if op.kind != MOVE:
@@ -495,7 +496,7 @@ class Parser:
             name = MOTION_NAMES.get(op.motion, "G1")
             self._refuse(
                 number,
-                f"feed rate undefined: {name} before any F sets one (error:22): {code!r}",
+                f"feed rate undefined: {name} before any F sets one (error:22): {quoted(code)}",
                 code,
             )
         machine = "G53" in commands
@@ -549,7 +550,7 @@ class Parser:
             else:
                 found = self._check_words(op)
             if not op.text.isascii():
-                found += (f"{op.text!r} is not ASCII",)
+                found += (f"{quoted(op.text)} is not ASCII",)
             if len(op.text) > MAX_LINE_CHARS:
                 found += (f"{len(op.text)} characters; a line holds at most {MAX_LINE_CHARS}",)
             reasons += [r for r in found if r not in reasons]

@@ -51,6 +51,7 @@ from types import MappingProxyType
 import numpy as np
 
 from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail_positions
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError, SourceRef
 from app.jobs.reading import decode_job_text, read_job_bytes, read_job_text
 
@@ -202,7 +203,7 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
         key = key.strip().lower()
         value = value.partition("#")[0].strip().rstrip(";").strip()
         if not sep or not key:
-            raise JobFileError(path.name, number, f"expected 'key = value', found {line!r}")
+            raise JobFileError(path.name, number, f"expected 'key = value', found {quoted(line)}")
         if key not in PARAM_KEYS:
             continue  # the firmware ignores keys it does not know; so does the station
         if key in found:
