@@ -144,6 +144,8 @@ class JobsDock(QDockWidget):
         self._format: str | None = None
         #: An option changed while a file was being read: read it again when that ends.
         self._reread = False
+        #: The source lines the loading thread read with the program (None: read them here).
+        self._prepared_lines: tuple[Path | None, list[str]] | None = None
         self._loading: _Loading | None = None
         self.preview = JobPreview(
             station,
@@ -479,8 +481,9 @@ class JobsDock(QDockWidget):
         if isinstance(result, JobFileError):
             self._refused(path, result, background=True)
         elif isinstance(result, tuple):
-            program, geometry = result
+            program, geometry, lines = result
             self.preview.prepare(program, geometry)
+            self._prepared_lines = (program.source, lines)
             self._accept(path, program)
         else:
             self.say(f"{shown(path.name)}: not loaded — {result}")
@@ -604,7 +607,10 @@ class JobsDock(QDockWidget):
         estimate = self.runner.estimate if program is not None else None
         self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
         self.operation_label.setText("—")
-        self._source_lines = _read_lines(program.source if program is not None else None)
+        source = program.source if program is not None else None
+        prepared, self._prepared_lines = self._prepared_lines, None
+        read = prepared is not None and source is not None and prepared[0] == source
+        self._source_lines = prepared[1] if prepared is not None and read else _read_lines(source)
         self._state_changed()
 
     def _show_file(self, program: Program | None) -> None:
@@ -750,7 +756,8 @@ def _size(path: Path) -> int:
 class _Loading(QObject):
     """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
 
-    #: path, then (Program, its preview geometry), a JobFileError, or another exception's text.
+    #: path, then (Program, its preview geometry, its source lines), a JobFileError, or another
+    #: exception's text.
     done = Signal(object, object)
 
     def __init__(
@@ -778,7 +785,7 @@ class _Loading(QObject):
         result: object
         try:
             program = load_job(self.path, self._axis_names, self._options)
-            result = (program, self._geometry(program))
+            result = (program, self._geometry(program), _read_lines(program.source))
         except JobFileError as exc:
             result = exc
         except Exception as exc:  # a loader bug must not take the window down

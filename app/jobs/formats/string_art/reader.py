@@ -45,6 +45,7 @@ import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
 
@@ -132,6 +133,11 @@ class StringArtJob:
 
     def thread_length_mm(self) -> float:
         """Straight nail-to-nail thread from the first entry to the last (centres, no wraps)."""
+        return self._thread_length_mm
+
+    @cached_property
+    def _thread_length_mm(self) -> float:
+        # Once per job: a generator's list has millions of entries, and summaries repeat it.
         points = self.nail_positions()[np.asarray(self.sequence, dtype=np.int64)]
         return float(np.hypot(*np.diff(points, axis=0).T).sum())
 
