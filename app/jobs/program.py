@@ -1,7 +1,7 @@
 """A job as the station runs it: an ordered list of machine-independent operations.
 
-Every loader (point lists now; Excellon drill files, string-art files and
-G-code later) produces the same :class:`Program`, so the preview, the
+Every loader (point lists, Excellon drill files, string-art files, G-code)
+produces the same :class:`Program`, so the preview, the
 soft-limit check, the dry run and the runner exist once.  Each operation
 keeps the file and line it came from, so every message about it can point
 the operator at the source.

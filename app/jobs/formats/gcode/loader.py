@@ -23,8 +23,10 @@ Everything else a machine cannot execute (a word outside the profile's
 repertoire, an axis it lacks, a named parameter) is listed in
 :attr:`GcodeProgram.unsupported` with its line, so the runner refuses the job
 before it starts, or becomes a comment when the operator chose to skip such
-lines.  Malformed text (``X1..2``, non-UTF-8 bytes) is refused at load with
-file:line, like the other loaders.
+lines.  Malformed text (``X1..2``, non-UTF-8 bytes) and every line GRBL 1.1
+would answer with an error (the pre-flight, :mod:`app.jobs.formats.gcode.parser`)
+are refused at load with file:line, like the other loaders; the file is read
+through :mod:`app.jobs.reading` (regular files only, a size cap).
 """
 
 from __future__ import annotations
