@@ -81,6 +81,26 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def profile_for_job(job: Path, profile: MachineProfile) -> MachineProfile:
+    """The machine to open ``job`` on when none was named: the last one, unless the job is
+    string art and it is no winder (a file manager opening ``poradi.txt`` means the winder)."""
+    from app.jobs.formats.string_art.program import AXES as WINDER_AXES
+    from app.jobs.loaders import STRING_ART, type_for
+    from app.jobs.program import JobFileError
+
+    try:
+        kind = type_for(job)
+    except (JobFileError, KeyError):
+        return profile  # the dock says what is wrong with the file
+    names = {axis.name for axis in profile.axes}
+    if kind is STRING_ART and not set(WINDER_AXES) <= names:
+        try:
+            return load_profile("string-art")
+        except ProfileError:
+            return profile
+    return profile
+
+
 def print_ports(out: TextIO) -> int:
     """The serial ports, one per line, as the plotter's old sender script's ``-l`` did."""
     ports = serial_ports()
@@ -193,6 +213,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             print(f"stepdeck: {exc}", file=sys.stderr)
             return 2
         profile = load_profile(DEFAULT_PROFILE)  # a stale setting must not stop the launch
+    if args.job is not None and not args.profile:
+        profile = profile_for_job(args.job, profile)
     if args.period:
         settings.period_ms = max(20, min(1000, args.period))
     launcher = Launcher(store, settings.period_ms)

@@ -209,3 +209,18 @@ def test_the_desktop_entry_opens_the_job_types_the_loaders_read() -> None:
         for glob in mime.iter(glob_tag):
             pattern = glob.get("pattern", "")
             assert pattern in ("param.txt", "poradi.txt") or pattern[1:] in extensions, pattern
+
+
+def test_a_string_art_job_opens_on_the_winder_unless_a_machine_is_named(tmp_path: Path) -> None:
+    from app.__main__ import profile_for_job
+
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text("2\n0\n3\n")
+    plotter = load_profile("grbl-plotter")
+    assert profile_for_job(poradi, plotter).name == "string-art"
+    winder = load_profile("string-art")
+    assert profile_for_job(poradi, winder) is winder
+    drawing = tmp_path / "drawing.gcode"
+    drawing.write_text("G0 X1 Y1\n")
+    assert profile_for_job(drawing, plotter) is plotter  # any machine may take G-code
+    assert profile_for_job(tmp_path / "missing.txt", plotter) is plotter  # the dock says why
