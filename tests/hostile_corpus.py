@@ -823,6 +823,30 @@ def _cases() -> list[Case]:
         )
     )
 
+    # A PNG's signature ends its second line ("\r\n", "\x1a\n"): the first zero is on line 3.
+    png = b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR" + bytes(range(256))
+    add(Case("binary-gcode", "image.gcode", png, g, Refused("image.gcode:3", "binary")))
+    add(Case("binary-txt", "image.txt", png, "xy-stage", Refused("image.txt:3", "binary")))
+    add(
+        Case(
+            "binary-after-good-lines",
+            "tail.csv",
+            b"1, 2\n3, 4\n\x00\x01\x02\n",
+            "xy-stage",
+            Refused("tail.csv:3", "binary"),
+        )
+    )
+    add(
+        Case(
+            "utf16-without-bom-poradi",
+            "poradi.txt",
+            "2\n0\n3\n".encode("utf-16-le"),
+            sa,
+            Refused("poradi.txt:0", "UTF-16"),
+            {"param.txt": GOOD_PARAM},
+        )
+    )
+
     # --- 11. special files and sizes -----------------------------------------------------------
     add(Case("named-pipe", "pipe.gcode", PIPE, g, Refused("pipe.gcode:0", "pipe")))
     add(Case("named-pipe-txt", "pipe.txt", PIPE, "xy-stage", Refused("pipe.txt:0", "pipe")))

@@ -11,7 +11,9 @@ on line 0 with a reason that says what to do.
   between cannot block the open).
 * At most :data:`MAX_JOB_BYTES` are read; a larger file is refused by its size.
 * A UTF-8 byte-order mark is dropped; UTF-16 (with or without its mark) is
-  refused as UTF-16, because every job format here is ASCII at heart.
+  refused as UTF-16, because every job format here is ASCII at heart; a NUL
+  byte anywhere else marks binary data (an image, an archive), refused on
+  its line.
 """
 
 from __future__ import annotations
@@ -103,6 +105,14 @@ def utf16_reason(raw: bytes) -> str | None:
     return None
 
 
+def _binary(raw: bytes, name: str) -> None:
+    """Refuse ``raw`` when it holds a NUL byte: no job format has one; binary data has many."""
+    at = raw.find(b"\x00")
+    if at >= 0:
+        line = raw.count(b"\n", 0, at) + 1
+        raise JobFileError(name, line, f"binary data (a zero byte at offset {at}): not a job file")
+
+
 def decode_job_text(raw: bytes, name: str, *, latin1_fallback: bool = False) -> str:
     """``raw`` as text: UTF-8 (its byte-order mark dropped); UTF-16 refused as such.
 
@@ -112,6 +122,7 @@ def decode_job_text(raw: bytes, name: str, *, latin1_fallback: bool = False) -> 
     reason = utf16_reason(raw)
     if reason is not None:
         raise JobFileError(name, 0, reason)
+    _binary(raw, name)
     if raw.startswith(codecs.BOM_UTF8):
         raw = raw[len(codecs.BOM_UTF8) :]
     try:
@@ -135,4 +146,5 @@ def read_job_head(path: Path, chars: int = HEAD_BYTES) -> str:
     reason = utf16_reason(raw)
     if reason is not None:
         raise JobFileError(path.name or str(path), 0, reason)
+    _binary(raw, path.name or str(path))
     return raw.removeprefix(codecs.BOM_UTF8).decode("utf-8", errors="replace")[:chars]

@@ -304,8 +304,8 @@ def read_nail_list(path: Path) -> NailList:
     or is too long for any board, then every value at once.
     """
     raw = read_job_bytes(path)
-    if not raw.isascii():
-        decode_job_text(raw, path.name)  # UTF-16 and malformed UTF-8 refused as such
+    if not raw.isascii() or b"\x00" in raw:
+        decode_job_text(raw, path.name)  # UTF-16, binary data, malformed UTF-8: named as such
     raw = raw.removeprefix(b"\xef\xbb\xbf")
     classes = _CLASSES[np.frombuffer(raw, dtype=np.uint8)]
     separator = (classes == _SEPARATOR).view(np.int8)
