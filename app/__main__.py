@@ -1,15 +1,20 @@
 """``stepdeck`` / ``python -m app``: the station's entry point.
 
 Launched bare it opens on the emulated XY stage (in-process emulator, real
-time), so it is usable at once with nothing attached.
+time), so it is usable at once with nothing attached.  ``stepdeck JOB`` opens
+the window with the job loaded in the jobs dock (a file manager opens job
+files this way, resources/stepdeck.desktop); ``stepdeck check …`` and the
+other subcommands in :data:`SUBCOMMANDS` run without a window.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 import traceback
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from types import TracebackType
 from typing import TextIO
 
@@ -27,6 +32,12 @@ from app.profiles import (
 )
 from app.settings import BAUD_RANGE, StationSettings, default_settings
 from app.station import Station
+
+#: ``stepdeck NAME …`` runs module's ``main(argv) -> int`` with the rest of the command line.
+SUBCOMMANDS = {
+    "check": "app.cli.check",
+}
+
 
 #: Qt platforms with no screen to ask on: there, a missing choice is refused, not guessed.
 HEADLESS_PLATFORMS = frozenset({"offscreen", "minimal"})
@@ -46,7 +57,17 @@ def _baud(text: str) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="stepdeck", description="Control station for small stepper-motor machines."
+        prog="stepdeck",
+        description="Control station for small stepper-motor machines.",
+        epilog="stepdeck check JOB… --profile P: check job files without a window "
+        "(stepdeck check --help).",
+    )
+    parser.add_argument(
+        "job",
+        nargs="?",
+        type=Path,
+        metavar="JOB",
+        help="a job file to open in the jobs dock (a string-art pair by either file)",
     )
     parser.add_argument(
         "--profile",
@@ -79,6 +100,26 @@ def build_parser() -> argparse.ArgumentParser:
         help="print the serial ports present (device, description, hardware id) and exit",
     )
     return parser
+
+
+def profile_for_job(job: Path, profile: MachineProfile) -> MachineProfile:
+    """The machine to open ``job`` on when none was named: the last one, unless the job is
+    string art and it is no winder (a file manager opening ``poradi.txt`` means the winder)."""
+    from app.jobs.formats.string_art.program import AXES as WINDER_AXES
+    from app.jobs.loaders import STRING_ART, type_for
+    from app.jobs.program import JobFileError
+
+    try:
+        kind = type_for(job)
+    except (JobFileError, KeyError):
+        return profile  # the dock says what is wrong with the file
+    names = {axis.name for axis in profile.axes}
+    if kind is STRING_ART and not set(WINDER_AXES) <= names:
+        try:
+            return load_profile("string-art")
+        except ProfileError:
+            return profile
+    return profile
 
 
 def print_ports(out: TextIO) -> int:
@@ -118,7 +159,8 @@ class Launcher:
         self.station: Station | None = None
         self.window: QMainWindow | None = None
 
-    def open(self, profile: MachineProfile) -> Station:
+    def open(self, profile: MachineProfile, job: Path | None = None) -> Station:
+        """The station and its window for ``profile``, with ``job`` being read into the dock."""
         from widgets.main_window import MainWindow
 
         if profile.name in available_profiles():
@@ -132,6 +174,8 @@ class Launcher:
         window.profileRequested.connect(self.switch)
         window.show()
         self.station, self.window = station, window
+        if job is not None:
+            window.jobs_dock.open_path(job, background=True)
         return station
 
     def switch(self, name: str) -> None:
@@ -227,11 +271,13 @@ def start(
             print(f"stepdeck: {exc}", file=err)
             return 2
         profile = load_profile(DEFAULT_PROFILE)  # a stale setting must not stop the launch
+    if args.job is not None and not name:
+        profile = profile_for_job(args.job, profile)
     if args.period:
         settings.period_ms = max(20, min(1000, args.period))
     launcher = Launcher(settings, settings.period_ms)
     sys.excepthook = report_unexpected(launcher)
-    station = launcher.open(profile)
+    station = launcher.open(profile, args.job)
     try:
         connect_as_asked(station, args, settings)
     except Exception as exc:  # whatever the link does, the window stays usable
@@ -241,6 +287,10 @@ def start(
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] in SUBCOMMANDS:
+        command = importlib.import_module(SUBCOMMANDS[argv[0]])
+        return int(command.main(argv[1:]))
     args = build_parser().parse_args(argv)
     if args.list_ports:
         return print_ports(sys.stdout)

@@ -85,6 +85,8 @@ class GcodeSettings:
     z_is_pen: bool = False  # files' Z heights mean pen up (> 0) / down (≤ 0) on this machine
     kinematics: str = "cartesian"  # "cartesian", "corexy" or "cylindrical"
     status_ms: int = 200  # how often the station asks "?"
+    #: G1/G2/G3 need a feed rate set first (GRBL's error:22); False: the firmware has a default.
+    feed_required: bool = True
 
 
 @dataclass(frozen=True)

@@ -151,7 +151,7 @@ def test_an_error_reply_stops_the_job_at_its_line(
     connect(qtbot, station, path)
     source = tmp_path / "bad.gcode"
     body = [f"G1 X{10 + i} Y10 F3000" for i in range(20)]
-    body[12] = "G4 P-5"  # a negative dwell: the loader passes it, the plotter refuses it
+    body[12] = "M98 0"  # a zero step interval: no GRBL rule, so only the plotter refuses it
     source.write_text("M4\n" + "\n".join(body) + "\nM3\nG0 X0 Y0\n", encoding="utf-8")
     program = load_job(source, ["X", "Y"], JobOptions(gcode=PROFILE.gcode))
     messages: list[str] = []

@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from app.jobs.program import Operation, OpKind, Program, SourceRef, load_point_list, move
+from app.jobs.formats.points.reader import load_point_list
+from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.run.drivers import DRIVERS
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState

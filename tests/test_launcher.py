@@ -281,3 +281,80 @@ def test_a_profile_loaded_from_a_file_opens_and_leaves_the_remembered_one(
         launcher.shutdown()
         if launcher.window is not None:
             launcher.window.close()
+
+
+def test_a_job_named_on_the_command_line_is_read_into_the_jobs_dock(
+    qtbot: QtBot, store: QSettings, tmp_path: Path
+) -> None:
+    folder = tmp_path / "cat"
+    folder.mkdir()
+    (folder / "param.txt").write_text("tvar = 0\npocet_hrebiku = 6\npolomer_matrice = 10\n")
+    (folder / "poradi.txt").write_text("3\n0\n3\n1\n")
+    args = build_parser().parse_args([str(folder / "param.txt")])  # either file of the pair
+    launcher = Launcher(store, period_ms=None)
+    try:
+        launcher.open(load_profile("string-art"), args.job)
+        window = launcher.window
+        assert window is not None
+        qtbot.addWidget(window)
+        runner = window.job_runner  # type: ignore[attr-defined]
+        qtbot.waitUntil(lambda: runner.program is not None, timeout=10_000)
+        assert runner.program.name == "cat"
+        assert len(runner.program) == 4 * 6 + 4 * 3 + 3  # drill 6 nails, wind 3 entries
+    finally:
+        launcher.shutdown()
+        if launcher.window is not None:
+            launcher.window.close()
+
+
+def test_check_is_a_subcommand_that_opens_no_window(tmp_path: Path) -> None:
+    from app.__main__ import main
+
+    job = tmp_path / "ok.gcode"
+    job.write_text("G0 X1 Y1 F1000\nG1 X10 Y10\n")
+    assert main(["check", str(job), "--profile", "grbl-plotter"]) == 0
+    job.write_text("G0 X1 Y1\nG1 X10 Y10\n")
+    assert main(["check", str(job), "--profile", "grbl-plotter"]) == 2
+    assert main(["check", str(job)]) == 1  # no profile: a usage error
+
+
+def test_the_desktop_entry_opens_the_job_types_the_loaders_read() -> None:
+    """resources/stepdeck.desktop and stepdeck-mime.xml name only files StepDeck reads."""
+    import configparser
+    import xml.etree.ElementTree as ET
+
+    from app.jobs.loaders import JOB_TYPES
+
+    resources = Path(__file__).resolve().parent.parent / "resources"
+    desktop = configparser.ConfigParser(interpolation=None)
+    desktop.optionxform = str  # type: ignore[assignment,method-assign]
+    desktop.read(resources / "stepdeck.desktop")
+    entry = desktop["Desktop Entry"]
+    assert entry["Exec"] == "stepdeck %f"
+    assert build_parser().parse_args(["some.gcode"]).job == Path("some.gcode")
+    ns = "{http://www.freedesktop.org/standards/shared-mime-info}"
+    mime_tag, glob_tag = ns + "mime-type", ns + "glob"
+    tree = ET.parse(resources / "stepdeck-mime.xml")
+    defined = {m.get("type"): m for m in tree.getroot().iter(mime_tag)}
+    listed = [t for t in entry["MimeType"].split(";") if t]
+    assert set(defined) <= set(listed)
+    extensions = {e for t in JOB_TYPES for e in t.extensions}
+    for mime in defined.values():
+        for glob in mime.iter(glob_tag):
+            pattern = glob.get("pattern", "")
+            assert pattern in ("param.txt", "poradi.txt") or pattern[1:] in extensions, pattern
+
+
+def test_a_string_art_job_opens_on_the_winder_unless_a_machine_is_named(tmp_path: Path) -> None:
+    from app.__main__ import profile_for_job
+
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text("2\n0\n3\n")
+    plotter = load_profile("grbl-plotter")
+    assert profile_for_job(poradi, plotter).name == "string-art"
+    winder = load_profile("string-art")
+    assert profile_for_job(poradi, winder) is winder
+    drawing = tmp_path / "drawing.gcode"
+    drawing.write_text("G0 X1 Y1\n")
+    assert profile_for_job(drawing, plotter) is plotter  # any machine may take G-code
+    assert profile_for_job(tmp_path / "missing.txt", plotter) is plotter  # the dock says why

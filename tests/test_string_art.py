@@ -209,7 +209,7 @@ def test_tolerated_spellings(tmp_path: Path) -> None:
     job = read_string_art(pair(tmp_path, param, poradi))
     assert job.params == StringArtParams(6, 12, 10.5)
     assert job.sequence == (0, 3, 7, 1, 4)
-    assert job.entry_lines == (1, 1, 2, 4, 4)
+    assert tuple(job.entry_lines) == (1, 1, 2, 4, 4)
     assert job.param_lines == {"tvar": 2, "pocet_hrebiku": 3, "polomer_matrice": 5}
 
 

@@ -123,7 +123,11 @@ def test_open_button_uses_the_file_dialog(
     monkeypatch.setattr(QFileDialog, "getOpenFileName", fake_dialog)
     qtbot.mouseClick(dock.open_button, LEFT)
     assert "*.csv" in asked[0]
+    # Read on a worker thread: the bar is busy and Open is off until it arrives.
+    assert dock.progress.maximum() == 0 and not dock.open_button.isEnabled()
+    qtbot.waitUntil(lambda: dock.runner.program is not None)
     assert dock.runner.program is not None and dock.runner.program.name == "square"
+    assert dock.progress.maximum() > 0 and dock.open_button.isEnabled()
 
 
 def test_a_malformed_file_names_its_line_and_loads_nothing(dock: JobsDock, tmp_path: Path) -> None:
@@ -299,7 +303,7 @@ def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
     drill_file = shared_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
     assert dock.open_path(drill_file) is False  # the XY stage cannot drill: refused, listed
     dock.draw_check.setChecked(True)  # the same file as pen work: still refused (no pen) …
-    assert "has no pen" in dock.messages.toPlainText()
+    qtbot.waitUntil(lambda: "has no pen" in dock.messages.toPlainText())  # re-read on the worker
     options = dock.options
     assert options.draw and options.excellon_step_inch == 1e-4
     # … but the loader built pen crosses, which a machine with a pen would run.

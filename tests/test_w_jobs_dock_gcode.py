@@ -93,7 +93,7 @@ def test_a_file_the_plotter_cannot_run_is_refused_line_by_line_until_skipping_is
     assert dock.preview.program is not None and "preview only" in dock.file_label.text()
     assert dock.preview.path_geometry is not None and len(dock.preview.path_geometry.work.x)
     qtbot.mouseClick(dock.skip_check, LEFT)  # re-reads the file with the new choice
-    assert dock.runner.program is not None
+    qtbot.waitUntil(lambda: dock.runner.program is not None)  # on the worker thread
     assert dock.runner.state is JobState.READY
     assert "M18" in messages(dock).split("operations loaded")[-1]  # listed as left out
 
@@ -160,3 +160,15 @@ def test_a_large_file_is_read_in_the_background_and_the_window_keeps_working(
     assert ticks[0] > 3  # the event loop ran while the file was read
     assert len(dock.runner.program) == 150_002
     assert dock.open_button.isEnabled()
+
+
+def test_an_option_changed_while_the_file_is_read_is_taken_when_the_reading_ends(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    path = tmp_path / "bunny-like.gcode"
+    path.write_text("M4\nG1 X10 Y10 F3000\nM18\nM3\n")  # M18: not the CoreXY plotter's
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert dock.open_path(path, background=True)
+    qtbot.mouseClick(dock.skip_check, LEFT)  # while the first reading is under way
+    qtbot.waitUntil(lambda: dock.runner.program is not None)  # read again, M18 skipped
+    assert dock.options.skip_unsupported and "still reading" not in messages(dock)

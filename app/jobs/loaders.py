@@ -2,12 +2,22 @@
 
 The jobs dock opens whatever the operator picks; this registry decides how
 to read it, so adding a job type (Excellon, string art, G-code) is one
-``register_loader`` call in the new loader's module and no change to the
-dock.  The extension decides first, because it is what the operator chose
-the file by.  When several types share an extension (``.txt`` is a point
-list, a string-art ``param.txt`` and many a drill export) their sniffers
-choose among them; when the extension is unknown (an extension-less export)
-every sniffer is asked, and the first to recognise the text wins.
+``register_loader`` call here and no change to the dock.  The decision, in
+order (never a silent guess):
+
+1. the format the operator chose (``JobOptions.format``, ``--format``);
+2. the file's name: ``param.txt`` and ``poradi.txt`` are the string-art
+   pair whatever they hold (so a malformed one is refused as string art,
+   not read as something else);
+3. the extension, when only one type claims it;
+4. the content: the sniffers of the types that share the extension (every
+   type's, for an unknown extension) look at the head of the file.  One
+   answer decides; several, or none among types that claim the extension,
+   raise :class:`AmbiguousFormat`, and the dock (or ``stepdeck check
+   --format``) asks.
+
+Files are read through :mod:`app.jobs.reading` (regular files only, a size
+cap, UTF-8 with or without a byte-order mark).
 """
 
 from __future__ import annotations
@@ -23,10 +33,19 @@ from app.jobs.formats.excellon.reader import (
     sniff_excellon,
 )
 from app.jobs.formats.gcode.loader import load_gcode, sniff_gcode
+from app.jobs.formats.points.reader import load_points, sniff_point_list
 from app.jobs.formats.string_art.program import load_string_art_program
-from app.jobs.formats.string_art.reader import StringArtParams, sniff_string_art
-from app.jobs.program import JobFileError, Program, load_point_list
+from app.jobs.formats.string_art.reader import (
+    PARAM_NAME,
+    PORADI_NAME,
+    StringArtParams,
+    sniff_string_art,
+)
+from app.jobs.program import JobFileError, Program
+from app.jobs.reading import read_job_head
 from app.profiles import GcodeSettings
+
+__all__ = ["sniff_point_list"]
 
 
 @dataclass(frozen=True)
@@ -45,6 +64,8 @@ class JobOptions:
     machine_title: str = ""
     #: String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount).
     string_art: StringArtParams | None = None
+    #: The job type's key when the operator chose it (an ambiguous file); None: detected.
+    format: str | None = None
 
 
 #: Reads ``path`` for a machine with these axis names; raises JobFileError with file:line.
@@ -63,6 +84,23 @@ class JobType:
     extensions: tuple[str, ...]
     load: JobLoader
     sniff: Sniffer | None = None
+    #: The short name ``--format`` takes and a chosen format is stored as.
+    key: str = ""
+
+
+class AmbiguousFormat(JobFileError):
+    """The name and the content leave more than one job type (or none): the operator chooses."""
+
+    def __init__(self, path: Path, choices: Sequence[JobType], why: str) -> None:
+        keys = "|".join(t.key for t in choices)
+        super().__init__(
+            path.name,
+            0,
+            f"which format? {why}: "
+            f"{' or '.join(t.description for t in choices)} (choose one: {keys})",
+        )
+        self.path = path
+        self.choices = tuple(choices)
 
 
 #: Lower-case extension (with the dot) → loader; the dock's first choice.
@@ -76,37 +114,63 @@ def register_loader(
     extensions: Sequence[str],
     load: JobLoader,
     sniff: Sniffer | None = None,
+    key: str = "",
 ) -> JobType:
     """Make ``load`` the reader for ``extensions`` (".csv"…) and, with ``sniff``, for content."""
-    job_type = JobType(description, tuple(e.lower() for e in extensions), load, sniff)
+    job_type = JobType(
+        description,
+        tuple(e.lower() for e in extensions),
+        load,
+        sniff,
+        key or description.split()[0].lower(),
+    )
     JOB_TYPES.append(job_type)
     for extension in job_type.extensions:
         JOB_LOADERS.setdefault(extension, load)  # the first registered keeps a shared extension
     return job_type
 
 
-def loader_for(path: Path) -> JobLoader:
-    """The loader by extension (sniffing among types that share it), else by content alone."""
+def job_type(key: str) -> JobType:
+    """The job type ``--format`` names; KeyError lists the keys."""
+    for candidate in JOB_TYPES:
+        if candidate.key == key:
+            return candidate
+    raise KeyError(f"no job format {key!r} (known: {', '.join(t.key for t in JOB_TYPES)})")
+
+
+def type_for(path: Path, chosen: str | None = None) -> JobType:
+    """The job type of ``path``: chosen, by name, by extension, else by content (module notes)."""
+    if chosen is not None:
+        return job_type(chosen)
+    if path.name.lower() in (PARAM_NAME, PORADI_NAME):
+        return STRING_ART
     extension = path.suffix.lower()
     candidates = [t for t in JOB_TYPES if extension in t.extensions]
     if len(candidates) == 1:
-        return candidates[0].load
-    try:
-        with path.open(encoding="utf-8", errors="replace") as handle:
-            head = handle.read(SNIFF_CHARS)
-    except OSError as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
-    for job_type in candidates or JOB_TYPES:
-        if job_type.sniff is not None and job_type.sniff(head):
-            return job_type.load
+        return candidates[0]
+    head = read_job_head(path, SNIFF_CHARS)
+    if not head.strip():
+        raise JobFileError(path.name, 0, "the file is empty")
+    pool = candidates or JOB_TYPES
+    matches = [t for t in pool if t.sniff is not None and t.sniff(head)]
+    if len(matches) == 1:
+        return matches[0]
+    if matches:
+        raise AmbiguousFormat(path, matches, "its content fits several job types")
     if candidates:
-        return JOB_LOADERS[extension]  # its own errors name the line that is wrong
+        raise AmbiguousFormat(path, candidates, f"its content fits no {extension} job type")
     raise JobFileError(path.name, 0, "not a job file this station knows (unknown type)")
+
+
+def loader_for(path: Path) -> JobLoader:
+    """The loader of ``path``'s job type (see :func:`type_for`)."""
+    return type_for(path).load
 
 
 def load_job(path: Path, axis_names: Sequence[str], options: JobOptions | None = None) -> Program:
     """Read any known job file for a machine with ``axis_names``; JobFileError says why not."""
-    return loader_for(path)(path, axis_names, options or JobOptions())
+    options = options or JobOptions()
+    return type_for(path, options.format).load(path, axis_names, options)
 
 
 def file_dialog_filter() -> str:
@@ -121,60 +185,19 @@ def file_dialog_filter() -> str:
 # --- point lists ---------------------------------------------------------------
 
 
-def _data_lines(text: str) -> list[str]:
-    """Lines that are neither blank, comments nor operator waits: the positions."""
-    lines = (line.strip() for line in text.splitlines())
-    return [line for line in lines if line and not line.startswith("#") and not _is_wait(line)]
+def load_point_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
+    """A point list on the machine's first axes (as many as its columns)."""
+    return load_points(path, axis_names)
 
 
-def _is_wait(line: str) -> bool:
-    return line.lower().startswith("wait")
-
-
-def _fields(line: str) -> list[str]:
-    return [f.strip() for f in line.replace(";", ",").split(",")]
-
-
-def _numbers(line: str) -> bool:
-    try:
-        [float(f) for f in _fields(line)]
-    except ValueError:
-        return False
-    return True
-
-
-def sniff_point_list(head: str) -> bool:
-    """Two or three comma/semicolon-separated numbers per line, the first few lines agreeing."""
-    lines = _data_lines(head)[:5]
-    if not lines:
-        return False
-    counts = {len(_fields(line)) for line in lines}
-    return len(counts) == 1 and counts <= {2, 3} and all(_numbers(line) for line in lines)
-
-
-def load_points(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
-    """A point list for this machine: as many axes as the first position line has numbers.
-
-    A 2-column list on a 3-axis machine moves X and Y only; a column count
-    the machine cannot take falls through to ``load_point_list``, which names
-    the line.
-    """
-    try:
-        head = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
-    lines = _data_lines(head)
-    columns = len(_fields(lines[0])) if lines else len(axis_names)
-    axes = tuple(axis_names[:columns]) if columns <= len(axis_names) else tuple(axis_names)
-    return load_point_list(path, axes)
-
-
-POINT_LIST = register_loader("Point lists", (".csv", ".txt"), load_points, sniff_point_list)
+POINT_LIST = register_loader(
+    "Point lists", (".csv", ".txt"), load_point_job, sniff_point_list, key="points"
+)
 
 
 # --- Excellon drill files ------------------------------------------------------------
-# After the point lists, so a ``.txt`` is a point list unless it sniffs as a drill file;
-# extension-less EAGLE drill files are found by the sniffer alone.
+# A ``.txt`` is a drill file when its sniffer alone recognises it; extension-less EAGLE
+# drill files are found by the sniffer alone.
 
 
 def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
@@ -189,16 +212,22 @@ def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
 
 
 EXCELLON = register_loader(
-    "Excellon drill files", (".drl", ".drd", ".txt", ".xln"), load_drill_job, sniff_excellon
+    "Excellon drill files",
+    (".drl", ".drd", ".txt", ".xln"),
+    load_drill_job,
+    sniff_excellon,
+    key="excellon",
 )
-EAGLE_DRILL_INFO = register_loader("EAGLE drill info (.dri)", (".dri",), load_drill_job, sniff_dri)
+EAGLE_DRILL_INFO = register_loader(
+    "EAGLE drill info (.dri)", (".dri",), load_drill_job, sniff_dri, key="dri"
+)
 
 
 # --- string-art jobs ---------------------------------------------------------------------
-# param.txt / poradi.txt (either file of the pair) and bare nail lists from generators.  After
-# the point lists and drill files: their sniffers see a .txt first, and neither takes a
+# param.txt / poradi.txt (either file of the pair, chosen by name) and bare nail lists from
+# generators (chosen by content: neither the point-list nor the drill sniffer takes a
 # "key = value" file or a long run of whole numbers; a nail list too short to tell from a point
-# list (fewer than four numbers) stays a point list.
+# list, fewer than four numbers, is a point list).
 
 
 def load_string_art_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
@@ -211,6 +240,7 @@ STRING_ART = register_loader(
     (".txt",),
     load_string_art_job,
     sniff_string_art,
+    key="string-art",
 )
 
 
@@ -230,5 +260,9 @@ def load_gcode_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
 
 
 GCODE = register_loader(
-    "G-code", (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap"), load_gcode_job, sniff_gcode
+    "G-code",
+    (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap"),
+    load_gcode_job,
+    sniff_gcode,
+    key="gcode",
 )

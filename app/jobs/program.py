@@ -1,7 +1,7 @@
 """A job as the station runs it: an ordered list of machine-independent operations.
 
-Every loader (point lists now; Excellon drill files, string-art files and
-G-code later) produces the same :class:`Program`, so the preview, the
+Every loader (point lists, Excellon drill files, string-art files, G-code)
+produces the same :class:`Program`, so the preview, the
 soft-limit check, the dry run and the runner exist once.  Each operation
 keeps the file and line it came from, so every message about it can point
 the operator at the source.
@@ -18,6 +18,8 @@ from types import MappingProxyType
 from typing import ClassVar, Literal
 
 import numpy as np
+
+from app.jobs.names import clipped, shown
 
 
 class OpKind(enum.Enum):
@@ -36,7 +38,7 @@ class SourceRef:
     line: int
 
     def __str__(self) -> str:
-        return f"{self.file}:{self.line}"
+        return f"{shown(self.file)}:{self.line}"
 
 
 @dataclass(frozen=True)
@@ -56,7 +58,7 @@ class Operation:
         if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
             return f"{self.kind.value}: {self.message}"
         if self.kind is OpKind.GCODE and self.line:
-            return self.line
+            return clipped(self.line)
         return str(self.kind.value)
 
 
@@ -73,7 +75,7 @@ class LineProblem:
     reason: str
 
     def __str__(self) -> str:
-        return f"line {self.line}: {self.text} — {self.reason}"
+        return f"line {self.line}: {clipped(self.text)} — {self.reason}"
 
 
 @dataclass(frozen=True)
@@ -226,49 +228,9 @@ class JobFileError(ValueError):
     """A job file the station refuses, with the file, the line and the reason."""
 
     def __init__(self, file: str, line: int, reason: str) -> None:
-        super().__init__(f"{file}:{line}: {reason}")
+        super().__init__(f"{shown(file)}:{line}: {reason}")
         self.file = file
         self.line = line
         self.reason = reason
-
-
-def load_point_list(path: Path, axis_names: Sequence[str] = ("X", "Y")) -> Program:
-    """A list of positions to visit, one per line: ``x, y`` (mm), optional ``# comment`` lines.
-
-    The plainest job an XY stage runs (a scan, an inspection route); a line
-    ``wait: <message>`` makes the runner stop for the operator there.
-    """
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise JobFileError(str(path), 0, f"cannot read: {exc}") from exc
-    ops: list[Operation] = []
-    for number, raw in enumerate(text.splitlines(), start=1):
-        line = raw.strip()
-        where = SourceRef(path.name, number)
-        if not line:
-            continue
-        if line.startswith("#"):
-            ops.append(Operation(OpKind.COMMENT, where, message=line.lstrip("# ")))
-            continue
-        if line.lower().startswith("wait"):
-            message = line.partition(":")[2].strip() or "continue when ready"
-            ops.append(Operation(OpKind.WAIT, where, message=message))
-            continue
-        fields = [f.strip() for f in line.replace(";", ",").split(",")]
-        if len(fields) != len(axis_names):
-            raise JobFileError(
-                path.name, number, f"expected {len(axis_names)} numbers, found {len(fields)}"
-            )
-        try:
-            values = [float(f) for f in fields]
-        except ValueError:
-            raise JobFileError(path.name, number, f"not a number in {line!r}") from None
-        ops.append(
-            Operation(
-                OpKind.MOVE, where, MappingProxyType(dict(zip(axis_names, values, strict=True)))
-            )
-        )
-    if not any(op.kind is OpKind.MOVE for op in ops):
-        raise JobFileError(path.name, 0, "no positions in the file")
-    return Program(path.stem, tuple(ops), path)
+        #: Further refusals of the same file, in file order (a G-code file's every bad line).
+        self.more: tuple[JobFileError, ...] = ()

@@ -24,7 +24,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QTimer
 
-from app.jobs.program import load_point_list
+from app.jobs.formats.points.reader import load_point_list
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile

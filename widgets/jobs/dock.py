@@ -6,8 +6,11 @@ it (Run, Pause, Resume, Step, Abort, Continue) and shows what it says.
 Buttons are enabled from the runner's state alone, so a button the operator
 can press is one the runner will honour.
 
-Opening goes through :mod:`app.jobs.loaders` (the extension or the content
-chooses the reader) and then ``runner.load``.  A malformed file shows
+Opening goes through :mod:`app.jobs.loaders` (the name, the extension or the
+content chooses the reader; when they leave the format open the dock asks)
+and then ``runner.load``.  Opened from the dialog (or the command line), a
+file is read on a worker thread with a busy bar, so a slow or hostile file
+never freezes the window.  A malformed file shows
 ``file:line: reason`` and loads nothing: the runner is not even asked, so a
 job loaded before stays as it was.  A program that leaves the machine's
 travel (or needs a tool the machine lacks) is refused by the runner, which
@@ -22,8 +25,9 @@ message with a Continue button.
 
 from __future__ import annotations
 
+import html
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from PySide6.QtCore import QObject, Qt, Signal
@@ -34,6 +38,7 @@ from PySide6.QtWidgets import (
     QFileDialog,
     QFrame,
     QHBoxLayout,
+    QInputDialog,
     QLabel,
     QMenu,
     QPlainTextEdit,
@@ -47,18 +52,48 @@ from PySide6.QtWidgets import (
 from app.jobs.formats.string_art.export import export_gcode, export_sd_files
 from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
-from app.jobs.loaders import JobOptions, file_dialog_filter, load_job
+from app.jobs.loaders import AmbiguousFormat, JobOptions, JobType, file_dialog_filter, load_job
+from app.jobs.names import shown
 from app.jobs.program import JobFileError, Program
+from app.jobs.reading import read_job_text
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
-from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
+from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.style import monospace_font
 
 MESSAGE_LINES = 200
-#: Files larger than this are read on a worker thread when opened from the dialog.
-BACKGROUND_BYTES = 2_000_000
+#: A refused file's further refused lines listed under the first one.
+MORE_REFUSALS_SHOWN = 20
+
+#: Asks which job type an ambiguous file is; the chosen type's key, None when cancelled.
+FormatAsker = Callable[[AmbiguousFormat], str | None]
+
+
+def ask_format_dialog(parent: QWidget | None) -> FormatAsker:
+    def ask(ambiguous: AmbiguousFormat) -> str | None:
+        choices: Sequence[JobType] = ambiguous.choices
+        item, ok = QInputDialog.getItem(
+            parent,
+            "Which kind of job?",
+            f"{shown(ambiguous.path.name)}: the name and the content do not tell.\nRead it as:",
+            [t.description for t in choices],
+            0,
+            False,
+        )
+        if not ok:
+            return None
+        return next((t.key for t in choices if t.description == item), None)
+
+    return ask
+
+
+def _bold(name: str) -> str:
+    """A file or job name for a rich-text label: escaped, never markup."""
+    return f"<b>{html.escape(shown(name))}</b>"
+
+
 #: Files larger than this are not kept in memory for showing source lines.
 SOURCE_LINES_MAX_BYTES = 8_000_000
 
@@ -93,6 +128,7 @@ class JobsDock(QDockWidget):
         confirm: Callable[[str], bool] | None = None,
         throttle_ms: float | None = None,
         ask_board: BoardAsker | None = None,
+        ask_format: FormatAsker | None = None,
     ) -> None:
         super().__init__("Jobs", parent)
         self.setObjectName("jobs_dock")
@@ -103,6 +139,13 @@ class JobsDock(QDockWidget):
         self._ask_board: BoardAsker = ask_board or ask_board_dialog(self)
         #: The board the operator gave for a bare nail list (kept while the file is re-read).
         self._board: StringArtParams | None = None
+        self._ask_format: FormatAsker = ask_format or ask_format_dialog(self)
+        #: The job type the operator chose for an ambiguous file (kept while it is re-read).
+        self._format: str | None = None
+        #: An option changed while a file was being read: read it again when that ends.
+        self._reread = False
+        #: The source lines the loading thread read with the program (None: read them here).
+        self._prepared_lines: tuple[Path | None, list[str]] | None = None
         self._loading: _Loading | None = None
         self.preview = JobPreview(
             station,
@@ -188,8 +231,8 @@ class JobsDock(QDockWidget):
         )
         gcode = self.station.profile.dialect == "gcode"
         pen = self.station.profile.capabilities.pen
-        for check, shown in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
-            check.setVisible(shown)
+        for check, visible in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
+            check.setVisible(visible)
             check.toggled.connect(self._options_changed)
             row.insertWidget(row.count() - 3, check)
         return row
@@ -235,12 +278,18 @@ class JobsDock(QDockWidget):
             gcode=profile.gcode,
             machine_title=profile.title,
             string_art=self._board,
+            format=self._format,
         )
 
     def _options_changed(self, *_args: object) -> None:
-        """Re-read the open file with the new choice (not while it runs)."""
-        if self._path is not None and self.runner.state not in ACTIVE_STATES:
-            self.open_path(self._path)
+        """Re-read the open file with the new choice (not while it runs), on the worker.
+
+        A choice made while the file is being read is taken once that reading ends.
+        """
+        if self._loading is not None:
+            self._reread = True
+        elif self._path is not None and self.runner.state not in ACTIVE_STATES:
+            self.open_path(self._path, background=True)
 
     def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
         button = QPushButton(text)
@@ -395,21 +444,26 @@ class JobsDock(QDockWidget):
         take seconds) and the window stays responsive; the result arrives later, and True
         only means the reading began.
         """
+        name = shown(path.name)
         if self.runner.state in ACTIVE_STATES:
-            self.say(f"{path.name}: not opened — a job is under way (abort it first)")
+            self.say(f"{name}: not opened — a job is under way (abort it first)")
             return False
         if self._loading is not None:
-            self.say(f"{path.name}: not opened — still reading {self._loading.path.name}")
+            self.say(f"{name}: not opened — still reading {shown(self._loading.path.name)}")
             return False
         if path != self._path:
             self._board = None
+            self._format = None
         axis_names = [axis.name for axis in self.station.profile.axes]
         self._path = path
-        if background and _size(path) > BACKGROUND_BYTES:
-            self._loading = _Loading(path, axis_names, self.options, self)
+        if background:  # even a small file can be slow (huge arcs), or be no file (a pipe)
+            self._loading = _Loading(
+                path, axis_names, self.options, self.preview.geometry_maker(), self
+            )
             self._loading.done.connect(self._loaded)
-            self.file_label.setText(f"reading <b>{path.name}</b>…")
+            self.file_label.setText(f"reading {_bold(path.name)}…")
             self.open_button.setEnabled(False)
+            self.progress.setRange(0, 0)  # busy until the worker answers
             self._loading.start()
             return True
         try:
@@ -423,21 +477,37 @@ class JobsDock(QDockWidget):
         loading, self._loading = self._loading, None
         if loading is not None:
             loading.join()
+        self.progress.setRange(0, 1)
         if isinstance(result, JobFileError):
-            self._refused(path, result)
-        elif isinstance(result, Program):
-            self._accept(path, result)
+            self._refused(path, result, background=True)
+        elif isinstance(result, tuple):
+            program, geometry, lines = result
+            self.preview.prepare(program, geometry)
+            self._prepared_lines = (program.source, lines)
+            self._accept(path, program)
         else:
-            self.say(f"{path.name}: not loaded — {result}")
+            self.say(f"{shown(path.name)}: not loaded — {result}")
         self._program_changed()
+        if self._reread and self._loading is None:
+            self._reread = False
+            self._options_changed()
 
-    def _refused(self, path: Path, exc: JobFileError) -> bool:
+    def _refused(self, path: Path, exc: JobFileError, *, background: bool = False) -> bool:
         if isinstance(exc, NeedsNailCount) and self._board is None:
             board = self._ask_board(exc)
             if board is not None:
                 self._board = board
-                return self.open_path(path)
+                return self.open_path(path, background=background)
+        if isinstance(exc, AmbiguousFormat) and self._format is None:
+            chosen = self._ask_format(exc)
+            if chosen is not None:
+                self._format = chosen
+                return self.open_path(path, background=background)
         self.say(f"{exc} — not loaded")
+        for more in exc.more[:MORE_REFUSALS_SHOWN]:
+            self.say(f"  {more}")
+        if len(exc.more) > MORE_REFUSALS_SHOWN:
+            self.say(f"  … and {len(exc.more) - MORE_REFUSALS_SHOWN} more lines refused")
         return False
 
     def _accept(self, path: Path, program: Program) -> bool:
@@ -446,10 +516,10 @@ class JobsDock(QDockWidget):
             # still worth seeing — where it leaves the travel, what it would do — so the
             # preview shows it while Run stays off.
             self.preview.set_program(program)
-            self.file_label.setText(f"<b>{program.name}</b> — refused, preview only")
+            self.file_label.setText(f"{_bold(program.name)} — refused, preview only")
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
             return False
-        self.say(f"{path.name}: {len(program)} operations loaded")
+        self.say(f"{shown(path.name)}: {len(program)} operations loaded")
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
             # The totals with this machine's time for them (the loader knew no machine).
@@ -458,7 +528,7 @@ class JobsDock(QDockWidget):
             notes = [n for n in notes if n != plain]
             notes.insert(0, program.job.summary(estimate.total_s if estimate else None))
         for note in notes:
-            self.say(f"{path.name}: {note}")
+            self.say(f"{shown(path.name)}: {note}")
         self._program_changed()
         return True
 
@@ -537,7 +607,10 @@ class JobsDock(QDockWidget):
         estimate = self.runner.estimate if program is not None else None
         self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
         self.operation_label.setText("—")
-        self._source_lines = _read_lines(program.source if program is not None else None)
+        source = program.source if program is not None else None
+        prepared, self._prepared_lines = self._prepared_lines, None
+        read = prepared is not None and source is not None and prepared[0] == source
+        self._source_lines = prepared[1] if prepared is not None and read else _read_lines(source)
         self._state_changed()
 
     def _show_file(self, program: Program | None) -> None:
@@ -546,7 +619,7 @@ class JobsDock(QDockWidget):
             self.file_label.setToolTip("")
             return
         source = str(program.source) if program.source else program.name
-        self.file_label.setText(f"<b>{program.name}</b> — {len(program)} operations")
+        self.file_label.setText(f"{_bold(program.name)} — {len(program)} operations")
         self.file_label.setToolTip(source)
 
     def _state_changed(self, *_args: object) -> None:
@@ -683,15 +756,23 @@ def _size(path: Path) -> int:
 class _Loading(QObject):
     """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
 
-    done = Signal(object, object)  # path, Program or JobFileError (or another exception)
+    #: path, then (Program, its preview geometry, its source lines), a JobFileError, or another
+    #: exception's text.
+    done = Signal(object, object)
 
     def __init__(
-        self, path: Path, axis_names: list[str], options: JobOptions, parent: QObject
+        self,
+        path: Path,
+        axis_names: list[str],
+        options: JobOptions,
+        geometry: Callable[[Program], ProgramGeometry | None],
+        parent: QObject,
     ) -> None:
         super().__init__(parent)
         self.path = path
         self._axis_names = axis_names
         self._options = options
+        self._geometry = geometry
         self._thread = threading.Thread(target=self._run, name="job-loader", daemon=True)
 
     def start(self) -> None:
@@ -703,7 +784,8 @@ class _Loading(QObject):
     def _run(self) -> None:
         result: object
         try:
-            result = load_job(self.path, self._axis_names, self._options)
+            program = load_job(self.path, self._axis_names, self._options)
+            result = (program, self._geometry(program), _read_lines(program.source))
         except JobFileError as exc:
             result = exc
         except Exception as exc:  # a loader bug must not take the window down
@@ -720,6 +802,6 @@ def _read_lines(path: Path | None) -> list[str]:
     if path is None or _size(path) > SOURCE_LINES_MAX_BYTES:
         return []
     try:
-        return path.read_text(encoding="utf-8", errors="replace").splitlines()
-    except OSError:
+        return read_job_text(path, SOURCE_LINES_MAX_BYTES, latin1_fallback=True).splitlines()
+    except JobFileError:
         return []

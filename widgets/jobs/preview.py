@@ -71,6 +71,8 @@ DEFAULT_THROTTLE_MS = 33.0
 ARC_STEP_DEG = 5.0
 #: At most this many steps per move, so a move spinning the base many turns stays cheap.
 MAX_ARC_STEPS = 720
+#: A path with more points than this is drawn without a dot on each.
+MAX_MARKERS = 50_000
 #: Points of the drawn reach circle.
 CIRCLE_POINTS = 361
 
@@ -225,7 +227,10 @@ class ProgramGeometry:
             at, drills = at[valid], drills[valid]
             return PathArrays(xs[at], ys[at], drills)
         uses_pen = bool(kinds & {OpKind.PEN_DOWN, OpKind.PEN_UP})
-        if uses_pen or not len(xs):
+        # A job drawn in its own plane (string art) marks its nails itself; and past
+        # MAX_MARKERS the dots would only bury the path (and take seconds to build).
+        own_plane = program.preview_plane == "board"
+        if uses_pen or own_plane or not len(xs) or len(xs) > MAX_MARKERS:
             return PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
         return PathArrays(xs, ys, ops)
 
@@ -258,6 +263,7 @@ class JobPreview(QWidget):
         self.path_geometry: ProgramGeometry | None = None
         #: Wall seconds the last :meth:`set_program` took to build the curves.
         self.build_seconds = 0.0
+        self._prepared: tuple[Program, ProgramGeometry] | None = None
         self.done = 0
         self.last_message = ""
         axes = station.profile.axes
@@ -433,9 +439,29 @@ class JobPreview(QWidget):
         y = y if y is not None else 0.0
         return self.polar.project(x, y) if self.polar is not None else (x, y)
 
+    def geometry_maker(self) -> Callable[[Program], ProgramGeometry | None]:
+        """What :meth:`set_program` computes for a program, as a function of the program
+        alone: the dock's loading thread runs it, so millions of operations are laid out
+        off the GUI thread (hand the result to :meth:`prepare`)."""
+        names = tuple(self.axis_names)
+        polar = self.polar is not None
+
+        def make(program: Program) -> ProgramGeometry | None:
+            if not names:
+                return None
+            y_axis = names[1] if len(names) > 1 else None
+            return ProgramGeometry(program, names[0], y_axis, polar=polar)
+
+        return make
+
+    def prepare(self, program: Program, geometry: ProgramGeometry | None) -> None:
+        """The geometry :meth:`set_program` uses for ``program`` instead of computing it."""
+        self._prepared = (program, geometry) if geometry is not None else None
+
     def set_program(self, program: Program | None) -> None:
         """Draw ``program`` (None clears); times the build in ``build_seconds``."""
         start = time.perf_counter()
+        prepared, self._prepared = self._prepared, None
         self.program = program
         self.done = 0
         self.question_marker.setData(x=_EMPTY, y=_EMPTY)
@@ -446,9 +472,12 @@ class JobPreview(QWidget):
             self.work_markers.setData(x=_EMPTY, y=_EMPTY)
         else:
             y_axis = self.axis_names[1] if len(self.axis_names) > 1 else None
-            geometry = ProgramGeometry(
-                program, self.axis_names[0], y_axis, polar=self.polar is not None
-            )
+            if prepared is not None and prepared[0] is program:
+                geometry = prepared[1]
+            else:
+                geometry = ProgramGeometry(
+                    program, self.axis_names[0], y_axis, polar=self.polar is not None
+                )
             self.path_geometry = geometry
             self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
             self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")

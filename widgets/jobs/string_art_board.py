@@ -7,6 +7,7 @@ least nail count the list allows and refuses a board the checks would refuse.
 
 from __future__ import annotations
 
+import html
 from collections.abc import Callable
 
 from PySide6.QtWidgets import (
@@ -18,7 +19,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
+from app.jobs.formats.string_art.reader import MAX_NAILS, NeedsNailCount, StringArtParams
+from app.jobs.names import shown
 from widgets.number_field import FieldGate, NumberField
 
 DEFAULT_RADIUS_CM = 14.5
@@ -31,8 +33,8 @@ class BoardDialog(QDialog):
         form = QFormLayout(self)
         form.addRow(
             QLabel(
-                f"<b>{needs.path.name}</b> lists {needs.entries} nail visits without a "
-                "param.txt. Which board is it for?"
+                f"<b>{html.escape(shown(needs.path.name))}</b> lists {needs.entries} nail "
+                "visits without a param.txt. Which board is it for?"
             )
         )
         self.shape = QComboBox()
@@ -44,7 +46,7 @@ class BoardDialog(QDialog):
         least = max(3, needs.min_nails)
         self.nails = NumberField(
             least,
-            10_000,
+            MAX_NAILS,
             decimals=0,
             value=least,
             name="board_nails",

@@ -17,6 +17,9 @@ in a fraction of a second:
   of its most demanding segment;
 * ``G4`` dwells add their time; pen commands and other lines cost nothing
   here (the file's own dwells after pen moves are what the servo needs).
+
+A string-art program moves one axis per operation, millions of them: it is
+timed from its own columns (the same trapezoids, without building the path).
 """
 
 from __future__ import annotations
@@ -27,6 +30,8 @@ import numpy as np
 
 from app.jobs.estimate.model import Estimate
 from app.jobs.formats.gcode.loader import HOME, LINEAR, NO_MOTION, RAPID, GcodeProgram
+from app.jobs.formats.string_art.program import AXES as WINDER_AXES
+from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.program import Program
 from app.profiles import MachineProfile
 
@@ -46,6 +51,8 @@ def estimate_gcode(
     n = len(program)
     if n == 0:
         return Estimate(0.0, np.zeros(0))
+    if isinstance(program, StringArtProgram):
+        return _one_axis_moves(program, profile, start or {})
     axes = tuple(axis.name for axis in profile.axes)
     top_speed = np.array([axis.max_speed for axis in profile.axes], dtype=np.float64)
     top_accel = np.array([axis.max_acceleration for axis in profile.axes], dtype=np.float64)
@@ -90,3 +97,25 @@ def estimate_gcode(
     np.add.at(seconds, dwell_ops, dwell_s)
     cumulative = np.cumsum(seconds)
     return Estimate(float(cumulative[-1]), cumulative)
+
+
+def _one_axis_moves(
+    program: StringArtProgram, profile: MachineProfile, start: Mapping[str, float]
+) -> Estimate:
+    """Each move a trapezoid on its one axis at that axis' limits, from the axis' last value."""
+    seconds = np.zeros(len(program))
+    for axis in profile.axes:
+        if axis.name not in WINDER_AXES:
+            continue
+        ops = np.flatnonzero(program.move_axis == WINDER_AXES.index(axis.name))
+        values = program.move_values[ops]
+        previous = np.concatenate(([start.get(axis.name, 0.0)], values[:-1]))
+        distance = np.abs(values - previous)
+        v, a = axis.max_speed, axis.max_acceleration
+        with np.errstate(invalid="ignore"):
+            seconds[ops] = np.where(
+                distance >= v * v / a, distance / v + v / a, 2.0 * np.sqrt(distance / a)
+            )
+    seconds[~np.isfinite(seconds)] = 0.0
+    cumulative = np.cumsum(seconds)
+    return Estimate(float(cumulative[-1]) if len(cumulative) else 0.0, cumulative)

@@ -26,7 +26,33 @@ from app.jobs.program import LimitViolation, Operation, OpKind, Program, SourceR
 from app.jobs.run.states import JobState
 from app.machine import LinkState
 from app.machines.session import MachineSession
+from app.profiles import MachineProfile
 from app.station import Station
+
+
+def capability_refusals(
+    program: Program, profile: MachineProfile, *, takes_gcode: bool
+) -> list[LimitViolation]:
+    """Operations ``profile``'s machine cannot do at all (no link needed: ``stepdeck check``)."""
+    capabilities = profile.capabilities
+    problems: dict[OpKind, str] = {}
+    if not capabilities.drill:
+        problems[OpKind.DRILL] = f"{profile.title} cannot drill"
+    if not capabilities.pen:
+        problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
+    if not takes_gcode:
+        problems[OpKind.GCODE] = f"{profile.title} does not take G-code"
+    refused: list[LimitViolation] = []
+    for kind in sorted(program.kinds() & problems.keys(), key=lambda k: k.value):
+        for index in program.indices_of(kind):
+            op = program[int(index)]
+            refused.append(UnsupportedOperation.of(int(index), op, problems[kind]))
+    name = program.source.name if program.source is not None else program.name
+    for problem in program.unexecutable_lines():
+        op = Operation(OpKind.GCODE, SourceRef(name, problem.line), line=problem.text)
+        refused.append(UnsupportedOperation.of(problem.line, op, problem.reason))
+    return refused
+
 
 #: Link states in which nothing can be sent.
 LINK_DOWN = (LinkState.LOST, LinkState.DISCONNECTED, LinkState.CONNECTING)
@@ -131,25 +157,7 @@ class JobDriver:
 
     def refusals(self, program: Program) -> list[LimitViolation]:
         """Operations this machine cannot do at all; scans only when such a kind is used."""
-        profile = self.station.profile
-        capabilities = profile.capabilities
-        problems: dict[OpKind, str] = {}
-        if not capabilities.drill:
-            problems[OpKind.DRILL] = f"{profile.title} cannot drill"
-        if not capabilities.pen:
-            problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
-        if not self.takes_gcode:
-            problems[OpKind.GCODE] = f"{profile.title} does not take G-code"
-        refused: list[LimitViolation] = []
-        for kind in sorted(program.kinds() & problems.keys(), key=lambda k: k.value):
-            for index in program.indices_of(kind):
-                op = program[int(index)]
-                refused.append(UnsupportedOperation.of(int(index), op, problems[kind]))
-        name = program.source.name if program.source is not None else program.name
-        for problem in program.unexecutable_lines():
-            op = Operation(OpKind.GCODE, SourceRef(name, problem.line), line=problem.text)
-            refused.append(UnsupportedOperation.of(problem.line, op, problem.reason))
-        return refused
+        return capability_refusals(program, self.station.profile, takes_gcode=self.takes_gcode)
 
     # --- the runner's requests -----------------------------------------------
 

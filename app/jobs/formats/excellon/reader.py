@@ -19,13 +19,21 @@ would write.  This module only does what gerbonara 1.5.0 does not:
   number settings;
 * **refusals**: holes gerbonara drops with a mere warning (coordinates before
   any tool, or outside the header/body) are refused here with file, line and
-  reason, because a silently missing hole is a ruined board.
+  reason, because a silently missing hole is a ruined board.  So are lines
+  gerbonara 1.5.0 mishandles, found before it sees them: a ``G85`` with no
+  end point (it would drop the slot), routed arcs ``G02``/``G03`` (it fails
+  with an internal error), a tool with a zero or negative diameter, a tool
+  number above :data:`MAX_TOOL_NUMBER`, and coordinates too large for a number;
+* **warnings**: everything else gerbonara warns about (a tool defined twice,
+  commands after the end…) is kept with its line in ``DrillJob.notes`` and
+  shown to the operator with the program's notes.
 """
 
 from __future__ import annotations
 
 import math
 import re
+import warnings
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,9 +47,13 @@ from gerbonara.graphic_objects import Arc, Flash, Line
 from gerbonara.utils import MM, Inch
 
 from app.jobs.formats.excellon.hole_order import order_holes
+from app.jobs.names import quoted, shown
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
+from app.jobs.reading import read_job_text
 
 DEFAULT_EXCELLON_STEP_INCH = 1e-4
+#: The highest tool number a drill file may use (Excellon writes two or three digits).
+MAX_TOOL_NUMBER = 999
 MM_PER_INCH = 25.4
 
 
@@ -216,13 +228,47 @@ _G85 = re.compile(r"^(?P<start>(?:X[-+]?[0-9.]*)?(?:Y[-+]?[0-9.]*)?)G85(?P<end>.
 _COORD = re.compile(r"(?:X([-+]?)([0-9.]*))?(?:Y([-+]?)([0-9.]*))?")
 
 
+_TOOL_LINE = re.compile(r"^T0*(\d+)(?![\d])(.*)$")
+_TOOL_DIAMETER = re.compile(r"C([-+]?[0-9.]*)")
+_ROUTED_ARC = re.compile(r"^G0?[23](?![0-9])")
+
+
 def _read_text(path: Path) -> str:
-    try:
-        return path.read_text(encoding="utf-8", errors="strict")
-    except UnicodeDecodeError:
-        return path.read_text(encoding="latin-1")
-    except OSError as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+    return read_job_text(path, latin1_fallback=True)
+
+
+def _prescan(name: str, lines: Sequence[str]) -> None:
+    """Refuse what gerbonara 1.5.0 would drop, mangle or fail on (see the module notes)."""
+    for number, raw in enumerate(lines, start=1):
+        line = raw.strip().upper()
+        if not line or line.startswith(";"):
+            continue
+        if (tool := _TOOL_LINE.match(line)) is not None:
+            index = tool[1]
+            if len(index) > 6 or int(index) > MAX_TOOL_NUMBER:
+                shown = index if len(index) <= 12 else f"{index[:6]}… ({len(index)} digits)"
+                raise JobFileError(
+                    name, number, f"tool number T{shown} is above T{MAX_TOOL_NUMBER}"
+                )
+            diameter = _TOOL_DIAMETER.search(tool[2])
+            if diameter is not None:
+                try:
+                    value = float(diameter[1])
+                except ValueError:
+                    raise JobFileError(
+                        name, number, f"tool diameter {diameter[1]!r} is not a number"
+                    ) from None
+                if not value > 0 or not math.isfinite(value):
+                    raise JobFileError(
+                        name,
+                        number,
+                        f"tool diameter of T{int(index):02d} is {value:g}: a drill must be wider "
+                        "than 0",
+                    )
+        elif _ROUTED_ARC.match(line):
+            raise JobFileError(name, number, "routed arcs (G02/G03) cannot be drilled")
+        elif (slot := _G85.match(line)) is not None and not slot["end"].strip():
+            raise JobFileError(name, number, "G85 slot without an end point: nothing to cut to")
 
 
 def _step_format(step: float, unit: str) -> tuple[int, int]:
@@ -256,6 +302,7 @@ def read_drill_file(
     text = _read_text(path)
     lines = text.splitlines()
     notes: list[str] = []
+    _prescan(path.name, lines)
 
     # Decide the number format before gerbonara does (see the module docstring).
     explicit = any(_FORMAT_IN_FILE.search(line.strip()) for line in lines[:200])
@@ -302,25 +349,38 @@ def read_drill_file(
         external = {n: ExcellonTool(diameter=d, unit=unit) for n, (d, _, _) in info.tools.items()}
     parser = _Parser(settings, external)
     try:
-        parser.do_parse("\n".join(fed), filename=path.name)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            parser.do_parse("\n".join(fed), filename=path.name)
     except SyntaxError as exc:
         cause = exc.__cause__ or exc
         reason = str(cause.args[0] if cause.args else cause)
         if isinstance(cause, ValueError) and "Unknown excellon statement" in reason:
-            reason = f"not an Excellon statement: {lines[parser.lineno - 1].strip()!r}"
+            reason = f"not an Excellon statement: {quoted(lines[parser.lineno - 1].strip())}"
         elif "Undefined tool" in reason:
-            reason = f"unknown tool: {lines[parser.lineno - 1].strip()!r} is not defined"
+            reason = f"unknown tool: {quoted(lines[parser.lineno - 1].strip())} is not defined"
         elif "No number format" in reason:
             reason = "integer coordinates, but the file gives no number format (metric)"
         raise JobFileError(path.name, int(parser.lineno or 0), reason) from exc
+    except Exception as exc:  # gerbonara's own failure: the line it was on, and what it said
+        line = int(parser.lineno or 0)
+        text_ = lines[line - 1].strip()[:60] if 0 < line <= len(lines) else ""
+        raise JobFileError(
+            path.name, line, f"the Excellon reader cannot read {text_!r} ({exc})"
+        ) from exc
+    notes += [f"0: {warning.message}" for warning in caught]
 
     for line, text_, message, state in parser.remarks:
         if "before first tool" in message:
-            raise JobFileError(path.name, line, f"coordinates before any tool is selected: {text_}")
+            reason = f"coordinates before any tool is selected: {quoted(text_)}"
+            raise JobFileError(path.name, line, reason)
         if message.startswith("Bare coordinate after end"):
             where = "before the header" if state is None else "after the end of the program"
-            raise JobFileError(path.name, line, f"coordinates {where}: {text_}")
+            raise JobFileError(path.name, line, f"coordinates {where}: {quoted(text_)}")
         if "implicit number format" not in message:  # we chose the format ourselves
+            if "{index}" in message:  # gerbonara 1.5.0 forgets to fill it in
+                tool = _TOOL_LINE.match(text_.strip().upper())
+                message = message.replace("{index}", f"T{int(tool[1]):02d}" if tool else "")
             notes.append(f"{line}: {message}")
 
     return _assemble(path, dri, info, parser, lines, slot_starts, format_from, notes)
@@ -362,8 +422,11 @@ def _assemble(
         where = SourceRef(path.name, line)
         unit = obj.unit or file_unit
 
-        def mm(value: float, unit: Any = unit) -> float:
-            return float(unit.convert_to(MM, value))
+        def mm(value: float, unit: Any = unit, line: int = line) -> float:
+            converted = float(unit.convert_to(MM, value))
+            if not math.isfinite(converted):
+                raise JobFileError(path.name, line, "a coordinate too large for a number")
+            return converted
 
         if isinstance(obj, Flash) and line in slot_starts:
             if not settings.is_absolute:
@@ -582,4 +645,7 @@ def build_drill_program(
         f"travel between holes: {plan.file_travel_mm:.1f} mm in file order, "
         f"{plan.travel_mm:.1f} mm optimised ({saved:.1f} mm saved)"
     )
-    return Program(job.name, tuple(ops), job.path, notes=(note,))
+    # gerbonara's warnings and our remarks, "line: text", as file:line: text for the operator.
+    name = shown(job.path.name)
+    remarks = tuple(f"{name}:{text.replace(': ', ': warning: ', 1)}" for text in job.notes)
+    return Program(job.name, tuple(ops), job.path, notes=(*remarks, note))

@@ -1,4 +1,18 @@
-"""G2/G3 arcs flattened for the preview and the limit check: their inner vertices."""
+"""G2/G3 arcs checked as GRBL 1.1 checks them, and flattened for the preview and the limit check.
+
+GRBL refuses an arc whose end is not on its circle (``error:33``), an
+``R`` arc whose radius is shorter than half its chord (``error:34``), an
+``R`` arc to where it starts (``error:33``) and an ``I``/``J`` arc without
+an offset in its plane (``error:35``); so does the loader, on the arc's line,
+before anything moves (gcode.c, "Arc definition error").
+
+The flattening follows GRBL's model: chords at most ``ARC_TOLERANCE_MM``
+(GRBL's ``$12`` default, 0.002 mm) from the arc.  Its vertex count is
+bounded: an arc needing more than ``MAX_ARC_SEGMENTS`` chords is longer
+than any machine's travel (over 50 m at a 1 m radius) and is refused, and a
+file's arcs together get at most ``MAX_ARC_VERTICES`` vertices (the budget
+the caller passes), so no file can make the preview allocate gigabytes.
+"""
 
 from __future__ import annotations
 
@@ -7,12 +21,21 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 
-#: Largest chord error of a flattened arc (mm) and the fewest segments one gets.
-ARC_TOLERANCE_MM = 0.02
+#: Largest chord error of a flattened arc (mm, GRBL's $12) and the fewest segments one gets.
+ARC_TOLERANCE_MM = 0.002
 MIN_ARC_SEGMENTS = 4
+#: The most chords one arc becomes; an arc needing more is refused.
 MAX_ARC_SEGMENTS = 20_000
+#: The most inner vertices all the arcs of one file become.
+MAX_ARC_VERTICES = 4_000_000
+#: GRBL's arc definition check: the end's radius may differ from the start's by this much…
+ARC_RADIUS_SLACK_MM = 0.005
+#: …and beyond it by at most 0.5 mm and 0.1 % of the radius (gcode.c).
+ARC_RADIUS_ERROR_MM = 0.5
+ARC_RADIUS_ERROR_RATIO = 0.001
 
 
 def flatten_arc(
@@ -24,11 +47,18 @@ def flatten_arc(
     offsets: Mapping[str, float],
     clockwise: bool,
     columns: int,
+    budget: int = MAX_ARC_VERTICES,
+    *,
+    grbl_rules: bool = True,
 ) -> np.ndarray:
     """The inner vertices of an XY arc, chord error at most ARC_TOLERANCE_MM.
 
     ``start`` and ``target`` are machine positions by column (0: X, 1: Y), the
     result has ``columns`` columns; the other axes move linearly along the arc.
+    ``budget`` is how many vertices the file's arcs may still have; ``grbl_rules``:
+    the end must be on the circle (on a machine that runs the arc).  Raises
+    JobFileError on the arc's line where GRBL would refuse it or the bounds
+    are exceeded.
     """
     sx = 0.0 if math.isnan(start[0]) else start[0]
     sy = 0.0 if math.isnan(start[1]) else start[1]
@@ -38,10 +68,19 @@ def flatten_arc(
         dx, dy = ex - sx, ey - sy
         chord = math.hypot(dx, dy)
         if chord == 0.0:
-            raise JobFileError(file, number, f"an R arc needs distinct ends: {code!r}")
+            raise JobFileError(
+                file,
+                number,
+                f"arc target invalid: an R arc needs distinct ends (error:33): {quoted(code)}",
+            )
         h2 = 4 * radius * radius - dx * dx - dy * dy
         if h2 < -1e-6 * max(1.0, radius * radius):
-            raise JobFileError(file, number, f"arc radius too small: {code!r}")
+            raise JobFileError(
+                file,
+                number,
+                f"arc radius error: R {abs(radius):g} mm is less than half the chord "
+                f"{chord:g} mm (error:34): {quoted(code)}",
+            )
         h = -math.sqrt(max(h2, 0.0)) / chord
         if not clockwise:
             h = -h
@@ -51,11 +90,24 @@ def flatten_arc(
     elif "I" in offsets or "J" in offsets:
         cx, cy = sx + offsets.get("I", 0.0), sy + offsets.get("J", 0.0)
     else:
-        raise JobFileError(file, number, f"an arc needs I/J or R: {code!r}")
+        raise JobFileError(
+            file, number, f"arc without offsets: it needs I/J or R (error:35): {quoted(code)}"
+        )
     if not all(math.isfinite(v) for v in (sx, sy, ex, ey, cx, cy)):
-        raise JobFileError(file, number, f"arc coordinates too large to draw: {code!r}")
+        raise JobFileError(file, number, f"arc coordinates too large to draw: {quoted(code)}")
     r0 = math.hypot(sx - cx, sy - cy)
     r1 = math.hypot(ex - cx, ey - cy)
+    if "R" not in offsets and grbl_rules:
+        delta = abs(r1 - r0)
+        if delta > ARC_RADIUS_SLACK_MM and (
+            delta > ARC_RADIUS_ERROR_MM or delta > ARC_RADIUS_ERROR_RATIO * r0
+        ):
+            raise JobFileError(
+                file,
+                number,
+                f"arc end not on its circle: radius {r0:.4g} mm at the start, {r1:.4g} mm at "
+                f"the end (error:33): {quoted(code)}",
+            )
     a0 = math.atan2(sy - cy, sx - cx)
     a1 = math.atan2(ey - cy, ex - cx)
     if clockwise:
@@ -68,10 +120,25 @@ def flatten_arc(
     if radius > ARC_TOLERANCE_MM:
         step = 2 * math.acos(1 - ARC_TOLERANCE_MM / radius)
         # A radius so large that the step rounds to nothing gets the most segments.
-        segments = math.ceil(sweep / step) if step > 0 else MAX_ARC_SEGMENTS
+        segments = math.ceil(sweep / step) if step > 0 else MAX_ARC_SEGMENTS + 1
     else:
         segments = 1
-    segments = min(max(segments, MIN_ARC_SEGMENTS), MAX_ARC_SEGMENTS)
+    if segments > MAX_ARC_SEGMENTS:
+        raise JobFileError(
+            file,
+            number,
+            f"arc too long: {radius * sweep / 1000:.4g} m of radius {radius:.4g} mm needs "
+            f"{segments} chords at {ARC_TOLERANCE_MM:g} mm (at most {MAX_ARC_SEGMENTS}); "
+            f"no machine's travel holds it",
+        )
+    segments = max(segments, MIN_ARC_SEGMENTS)
+    if segments - 1 > budget:
+        raise JobFileError(
+            file,
+            number,
+            f"arcs too many: the file's arcs need more than {MAX_ARC_VERTICES:,} vertices "
+            f"at {ARC_TOLERANCE_MM:g} mm",
+        )
     t = np.arange(1, segments) / segments
     angles = a0 + (-sweep if clockwise else sweep) * t
     radii = r0 + (r1 - r0) * t

@@ -23,8 +23,10 @@ Everything else a machine cannot execute (a word outside the profile's
 repertoire, an axis it lacks, a named parameter) is listed in
 :attr:`GcodeProgram.unsupported` with its line, so the runner refuses the job
 before it starts, or becomes a comment when the operator chose to skip such
-lines.  Malformed text (``X1..2``, non-UTF-8 bytes) is refused at load with
-file:line, like the other loaders.
+lines.  Malformed text (``X1..2``, non-UTF-8 bytes) and every line GRBL 1.1
+would answer with an error (the pre-flight, :mod:`app.jobs.formats.gcode.parser`)
+are refused at load with file:line, like the other loaders; the file is read
+through :mod:`app.jobs.reading` (regular files only, a size cap).
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from app.jobs.formats.gcode.program import (
 )
 from app.jobs.formats.gcode.words import MAX_LINE_CHARS, split_comment
 from app.jobs.program import JobFileError
+from app.jobs.reading import read_job_text
 from app.profiles import GcodeSettings
 
 __all__ = [
@@ -97,19 +100,7 @@ def load_gcode(
     is G-code but beyond this machine is returned in ``unsupported`` (or, with
     ``skip_unsupported``, as comments listed in the notes).
     """
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        line = raw.count(b"\n", 0, exc.start) + 1
-        raise JobFileError(
-            path.name, line, f"not UTF-8 text (byte 0x{raw[exc.start]:02x})"
-        ) from None
-    del raw
-    text = text.removeprefix("\ufeff")
+    text = read_job_text(path)
     if "\r" in text:
         text = text.replace("\r\n", "\n").replace("\r", "\n")
     parser = Parser(

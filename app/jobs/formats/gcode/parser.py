@@ -9,6 +9,17 @@ Plain ``G0``/``G1`` moves take the fast path (:mod:`app.jobs.formats.gcode.plain
 every other line is read here, one at a time, into the modal state and the
 operations it makes, checked against the machine's repertoire, and kept in
 :class:`~app.jobs.formats.gcode.columns.OperationColumns`.
+
+The pre-flight: a line GRBL 1.1 would answer with an error is refused at
+load time on its line (``file:N: reason (error:n)``), because on the board
+it would fail mid-job after the lines before it had moved the machine:
+a negative F, N, P, T or S (``error:4``), two motion words on a line
+(``error:21``), G1/G2/G3 before any feed rate where the machine needs one
+(``error:22``), a word given twice (``error:25``), an arc without an axis
+word (``error:26``) and the arc checks of :mod:`app.jobs.formats.gcode.arcs`.
+Words outside the machine's repertoire (GRBL's ``error:20``) and lines too
+long (``error:11``) are listed per line for the runner to refuse, or skipped
+at the operator's choice.
 """
 
 from __future__ import annotations
@@ -18,7 +29,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from app.jobs.formats.gcode.arcs import flatten_arc
+from app.jobs.formats.gcode.arcs import MAX_ARC_VERTICES, flatten_arc
 from app.jobs.formats.gcode.columns import OperationColumns
 from app.jobs.formats.gcode.pen import DOWN, UP, PenRules
 from app.jobs.formats.gcode.plain_moves import PlainMoves
@@ -54,6 +65,8 @@ from app.jobs.formats.gcode.words import (
     render,
     split_comment,
 )
+from app.jobs.names import quoted
+from app.jobs.program import JobFileError
 from app.profiles import GcodeSettings
 
 INCH_MM = 25.4
@@ -64,6 +77,13 @@ MOTION_WORDS = {"G0": RAPID, "G1": LINEAR, "G2": CW_ARC, "G3": CCW_ARC}
 MOTION_NAMES = {code: word for word, code in MOTION_WORDS.items()}
 
 AXIS_LETTERS = "XYZABCUVWE"
+#: Words GRBL refuses negative (error:4).
+_NOT_NEGATIVE = frozenset("FNPTS")
+#: GRBL's largest tool number (error:38) and line number (error:27).
+MAX_TOOL_NUMBER = 255
+#: Refusals collected from one file before reading stops (the first ones are what matter).
+MAX_REFUSALS = 1000
+MAX_LINE_NUMBER = 10_000_000
 _LINEAR_AXES = frozenset("XYZUVWE")  # scaled by G20; A B C are degrees
 
 
@@ -87,6 +107,9 @@ class Parser:
         self.who = f"the {machine_title}" if machine_title else "this machine"
         self.title = machine_title or "machine"
         self.z_is_pen = settings.z_is_pen
+        self.feed_required = settings.feed_required
+        #: Inner arc vertices the file's arcs may still have (arcs.MAX_ARC_VERTICES in all).
+        self.arc_budget = MAX_ARC_VERTICES
         self.pens = PenRules(settings)
 
         self.columns: list[str] = ["X", "Y"]
@@ -96,6 +119,8 @@ class Parser:
         #: the pen state they set, their operations and the machine's objections.
         self.memo: dict[str, tuple[int | None, list[Pending], tuple[str, ...]]] = {}
 
+        #: Lines refused at load (GRBL's errors, malformed text), in file order.
+        self.refusals: list[JobFileError] = []
         # Output, in operation order.
         self.out = OperationColumns()
         self.problems: list[GcodeProblem] = []
@@ -125,15 +150,85 @@ class Parser:
         slow = np.flatnonzero(~plain)
         self.pens.prescan([lines[i] for i in slow.tolist()], self.tokens)
         plain_before = (np.cumsum(plain) - plain)[slow].tolist()
-        place, texts, line = self.plain.place, self.out.texts, self._line
+        place, texts, line = self._place, self.out.texts, self._guarded
         done = 0
         for i, before in zip(slow.tolist(), plain_before, strict=True):
             if before > done:
-                place(done, before, self.state, texts, self.start_relative)
+                place(done, before, self.state, texts)
                 done = before
             line(i + 1, lines[i])
         if done < len(self.plain.texts):
-            place(done, len(self.plain.texts), self.state, texts, self.start_relative)
+            place(done, len(self.plain.texts), self.state, texts)
+        self._raise_refusals()
+
+    def _guarded(self, number: int, raw: str) -> None:
+        """One line; refused, it changes nothing (as on GRBL) and reading goes on."""
+        saved = self.state.copy()
+        try:
+            self._line(number, raw)
+        except JobFileError as exc:
+            while len(saved.position) < len(self.columns):
+                saved.position.append(math.nan)
+                saved.offset.append(0.0)
+            self.state = saved
+            self._add_refusals([exc])
+
+    def _add_refusals(self, found: Sequence[JobFileError]) -> None:
+        self.refusals += found
+        if len(self.refusals) >= MAX_REFUSALS:
+            self._raise_refusals()
+
+    def _raise_refusals(self) -> None:
+        """The first refusal, carrying the others: the whole file is refused."""
+        if self.refusals:
+            first, *more = self.refusals[:MAX_REFUSALS]
+            first.more = tuple(more)
+            raise first
+
+    def _place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
+        """A run of plain moves, refused where GRBL would refuse one (feed rules)."""
+        self._add_refusals(self.plain.check_feeds(k0, k1, st.feed, self.feed_required))
+        self.plain.place(k0, k1, st, texts, self.start_relative)
+
+    def _refuse(self, number: int, reason: str, code: str = "") -> None:
+        """A line GRBL would answer with an error: the whole job is refused at load.
+
+        A line too long for the board is refused as that (it is listed with the
+        unsupported lines): GRBL never parses it, so it has no other error.
+        """
+        if len(code) > MAX_LINE_CHARS:
+            return
+        raise JobFileError(self.file, number, reason)
+
+    def _grbl_rules(self, number: int, code: str, words: Sequence[Word]) -> None:
+        """GRBL's word-level errors on one line: negative values, repeats, motion conflicts."""
+        seen: set[str] = set()
+        motions = 0
+        for word in words:
+            if word.letter in "GM":
+                motions += word.letter == "G" and normal("G", word.value) in MOTION_WORDS
+                continue
+            if word.letter in seen:
+                self._refuse(
+                    number, f"word repeated: {word.letter} twice (error:25): {quoted(code)}", code
+                )
+            seen.add(word.letter)
+            if word.letter == "T" and word.value > MAX_TOOL_NUMBER:
+                self._refuse(
+                    number,
+                    f"max value exceeded: T{word.text} above T{MAX_TOOL_NUMBER} (error:38)",
+                    code,
+                )
+            if word.letter in _NOT_NEGATIVE and word.value < 0:
+                self._refuse(
+                    number,
+                    f"negative value: {word.letter}{word.text} cannot be negative (error:4)",
+                    code,
+                )
+        if motions > 1:
+            self._refuse(
+                number, f"modal group violation: two motion words (error:21): {quoted(code)}", code
+            )
 
     # --- one line ------------------------------------------------------------------
 
@@ -155,6 +250,13 @@ class Parser:
             return
         match = LINE_NUMBER.match(code)
         if match:
+            digits = match.group().strip()[1:].strip()
+            significant = digits.lstrip("0") or "0"
+            if len(significant) > 8 or int(significant) > MAX_LINE_NUMBER:
+                shown = digits if len(digits) <= 20 else f"{digits[:12]}… ({len(digits)} digits)"
+                self._refuse(
+                    number, f"invalid line number: N{shown} above N{MAX_LINE_NUMBER} (error:27)"
+                )
             code = code[match.end() :]
         code = CHECKSUM.sub("", code).strip()
         if not code:
@@ -196,13 +298,14 @@ class Parser:
             message = "? not sent: the station asks for the status itself"
             self._commit(number, code, [Pending(COMMENT, "", message=message)], ())
             return
-        reason = f"{what} ({code!r}) is a real-time command, not a line of a job"
+        reason = f"{what} ({quoted(code)}) is a real-time command, not a line of a job"
         self._commit(number, code, [Pending(GCODE, code, checked=True)], (reason,))
 
     def _words(self, number: int, code: str, words: tuple[Word, ...]) -> None:
         """A line of words: modal changes, pen commands, then what remains as one operation."""
         st = self.state
         saved = st.copy()
+        self._grbl_rules(number, code, words)
         commands: dict[str, int] = {}
         params: dict[str, int] = {}
         for index, word in enumerate(words):
@@ -283,6 +386,8 @@ class Parser:
             text = code if whole or not removed else render(code, removed)
             sent = [words[i] for i in rest]
             op = Pending(GCODE, text, sent)
+            if "F" in params:
+                st.feed = value("F") * st.scale
             if "F" in params and params["F"] in rest:
                 op.feed = value("F") * st.scale
             axes = [i for i in rest if self._is_axis(words[i].letter)]
@@ -300,6 +405,8 @@ class Parser:
                 )
             elif axes and not non_modal:
                 self._motion(number, code, words, params, commands, op, axes)
+            elif {"G2", "G3"} & commands.keys() and not non_modal:
+                self._refuse(number, f"arc without axis words (error:26): {quoted(code)}", code)
             if whole:
                 op.pen = pen if pen is not None else -1
                 if op.kind != MOVE:
@@ -390,6 +497,13 @@ class Parser:
         st = self.state
         op.kind = MOVE
         op.motion = st.motion
+        if op.motion != RAPID and self.feed_required and not st.feed > 0:
+            name = MOTION_NAMES.get(op.motion, "G1")
+            self._refuse(
+                number,
+                f"feed rate undefined: {name} before any F sets one (error:22): {quoted(code)}",
+                code,
+            )
         machine = "G53" in commands
         start = list(st.position)
         for index in axes:
@@ -414,8 +528,19 @@ class Parser:
             offsets = {k: words[params[k]].value * st.scale for k in "IJR" if k in params}
             clockwise = op.motion == CW_ARC
             op.arc = flatten_arc(
-                self.file, number, code, start, op.target, offsets, clockwise, len(self.columns)
+                self.file,
+                number,
+                code,
+                start,
+                op.target,
+                offsets,
+                clockwise,
+                len(self.columns),
+                self.arc_budget,
+                # A machine without arcs refuses (or skips) the line anyway: no board rule.
+                grbl_rules=MOTION_NAMES[op.motion] in self.words,
             )
+            self.arc_budget -= len(op.arc)
         for c, target in op.target.items():
             st.position[c] = target
 
@@ -432,7 +557,7 @@ class Parser:
             else:
                 found = self._check_words(op)
             if not op.text.isascii():
-                found += (f"{op.text!r} is not ASCII",)
+                found += (f"{quoted(op.text)} is not ASCII",)
             if len(op.text) > MAX_LINE_CHARS:
                 found += (f"{len(op.text)} characters; a line holds at most {MAX_LINE_CHARS}",)
             reasons += [r for r in found if r not in reasons]

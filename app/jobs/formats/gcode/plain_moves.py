@@ -85,6 +85,35 @@ class PlainMoves:
         self.f = np.full(n, np.nan)
         self.f[has_f] = numbers[starts[has_f] + 3]
 
+    def check_feeds(
+        self, k0: int, k1: int, feed: float, required: bool, limit: int = 1000
+    ) -> list[JobFileError]:
+        """Plain moves k0…k1-1 as GRBL checks them: F not negative (error:4), and a G1 only
+        once a feed rate is set (error:22, where the machine needs one); ``feed``: the feed
+        in force before the run (NaN: never set).  The first ``limit`` refusals, in order."""
+        f = self.f[k0:k1]
+        refused: dict[int, str] = {}
+        for k in np.flatnonzero(f < 0)[:limit].tolist():
+            refused[k] = f"negative value: F{f[k]:g} cannot be negative (error:4)"
+        if required:
+            # The feed in force at each line: its own F, else the last one before it.
+            known = ~np.isnan(f) & (f >= 0)
+            steps = np.arange(len(f))
+            last = np.maximum.accumulate(np.where(known, steps, -1)) if len(f) else steps
+            in_force = np.where(last >= 0, f[np.maximum(last, 0)], feed)
+            with np.errstate(invalid="ignore"):
+                bad = np.flatnonzero((self.g[k0:k1] != 0) & ~(in_force > 0))
+            for k in bad[:limit].tolist():
+                refused.setdefault(
+                    k,
+                    f"feed rate undefined: G1 before any F sets one (error:22): "
+                    f"{self.texts[k0 + k]!r}",
+                )
+        return [
+            JobFileError(self.file, int(self.lines[k0 + k]), refused[k])
+            for k in sorted(refused)[:limit]
+        ]
+
     def place(
         self, k0: int, k1: int, st: State, texts: list[str], start_relative: set[int] | None = None
     ) -> None:
@@ -110,6 +139,9 @@ class PlainMoves:
                     values[k0:k1] = values[k0:k1] * scale + st.offset[column]
         if scale != 1.0:
             self.f[k0:k1] *= scale
+        given = np.flatnonzero(~np.isnan(self.f[k0:k1]))
+        if len(given):
+            st.feed = float(self.f[k0 + int(given[-1])])
         st.position[0] = float(self.x[k1 - 1])
         st.position[1] = float(self.y[k1 - 1])
         st.motion = int(self.g[k1 - 1])

@@ -233,10 +233,22 @@ class GcodeProgram(Program):
             if len(d.arc_ops):
                 inner = d.arc_points[:, c]
                 with np.errstate(invalid="ignore"):
-                    out = ((arc_named & bit) != 0) & ~((inner >= low) & (inner <= high))
-                for k in np.flatnonzero(out).tolist():
-                    key = (int(d.arc_ops[k]), c)
-                    value = float(inner[k])
+                    out = np.flatnonzero(
+                        ((arc_named & bit) != 0) & ~((inner >= low) & (inner <= high))
+                    )
+                # Per arc, its vertex farthest outside (in numpy: an arc has many vertices).
+                if not len(out):
+                    continue
+                ops, values = d.arc_ops[out], inner[out]
+                if math.isnan(low) or math.isnan(high):
+                    beyond = np.full(len(values), math.inf)
+                else:
+                    beyond = np.maximum(low - values, values - high)
+                order = np.lexsort((beyond, ops))
+                last = np.flatnonzero(np.append(ops[order][1:] != ops[order][:-1], True))
+                for k in order[last].tolist():
+                    key = (int(ops[k]), c)
+                    value = float(values[k])
                     if key not in found or _beyond(value, low, high) > _beyond(
                         found[key], low, high
                     ):

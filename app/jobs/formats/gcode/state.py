@@ -24,6 +24,7 @@ class State:
     plane: int = 17
     z_work: float = math.nan
     pen: int = -1  # unknown, shown as up
+    feed: float = math.nan  # mm/min, as last set by F (NaN: never)
 
     def copy(self) -> State:
         return State(
@@ -35,6 +36,7 @@ class State:
             self.plane,
             self.z_work,
             self.pen,
+            self.feed,
         )
 
 

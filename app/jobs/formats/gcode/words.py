@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 
 #: The longest line a board takes, without its line end (PROTOCOLS.md section 4: 80 bytes).
@@ -132,5 +133,7 @@ class Tokenizer:
             while (match := WORD.match(upper, at)) is not None:
                 at = match.end()
             rest = code[at:].strip()
-            raise JobFileError(self.file, number, f"malformed G-code at {rest[:20]!r} in {code!r}")
+            raise JobFileError(
+                self.file, number, f"malformed G-code at {rest[:20]!r} in {quoted(code)}"
+            )
         return words

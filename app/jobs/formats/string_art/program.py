@@ -31,16 +31,24 @@ where the base is, so none is longer than 180°.
 Every operation records the nail it serves (``nail_of_op``) and the
 sequence entry (``entry_of_op``, -1 in the drill phase), so the preview
 can show the current nail while the job runs.
+
+A generator's sequence may hold millions of entries, four operations each:
+the winding phase is computed with numpy (which way round each nail is
+wrapped is a two-state recurrence, the only loop) and kept as columns; its
+operations are made when asked for (:class:`StringArtOperations`), and the
+limit check and the fingerprint read the columns.
 """
 
 from __future__ import annotations
 
+import hashlib
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
-from typing import ClassVar, Literal
+from typing import ClassVar, Literal, overload
 
 import numpy as np
 
@@ -48,6 +56,7 @@ from app.jobs.formats.string_art.geometry import DRILL_DEPTH_MM, half_gaps, shor
 from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams, read_string_art
 from app.jobs.program import (
     JobFileError,
+    LimitViolation,
     Operation,
     OpKind,
     Program,
@@ -81,8 +90,9 @@ class StringArtProgram(Program):
     nail_of_op: np.ndarray = field(compare=False, repr=False)
     #: The sequence entry each operation winds to (-1: drill phase).
     entry_of_op: np.ndarray = field(compare=False, repr=False)
-    #: (operations, 3): A, X, Z after each operation (NaN until first set).
-    axis_positions: np.ndarray = field(compare=False, repr=False)
+    #: The axis each MOVE sets (0 A, 1 X, 2 Z; -1 for other operations) and its value.
+    move_axis: np.ndarray = field(compare=False, repr=False)
+    move_values: np.ndarray = field(compare=False, repr=False)
     kind_codes: np.ndarray = field(compare=False, repr=False)
     #: Index of the operator's WAIT between drilling and winding.
     wait_index: int = -1
@@ -92,8 +102,43 @@ class StringArtProgram(Program):
     needle_out_radius_mm: float = 0.0
     preview_plane: ClassVar[Literal["axes", "board"]] = "board"
 
+    @cached_property
+    def axis_positions(self) -> np.ndarray:
+        """(operations, 3): A, X, Z after each operation (NaN until first set)."""
+        n = len(self.move_axis)
+        positions = np.full((n, len(AXES)), np.nan)
+        steps = np.arange(n)
+        for column in range(len(AXES)):
+            last = np.maximum.accumulate(np.where(self.move_axis == column, steps, -1))
+            known = last >= 0
+            positions[known, column] = self.move_values[last[known]]
+        return positions
+
     def _move_indices(self) -> np.ndarray:
         return np.flatnonzero(self.kind_codes == _KIND_CODES[OpKind.MOVE])
+
+    def fingerprint(self) -> str:
+        """The columns hashed: every operation's kind, axis and value, and what it serves."""
+        digest = hashlib.sha256()
+        for column in (self.kind_codes, self.move_axis, self.move_values, self.nail_of_op):
+            digest.update(np.ascontiguousarray(column).tobytes())
+        digest.update(np.ascontiguousarray(self.entry_of_op).tobytes())
+        return digest.hexdigest()[:16]
+
+    def limit_violations(self, limits: Mapping[str, tuple[float, float]]) -> list[LimitViolation]:
+        """Every move outside the travel, from the columns (millions of moves, no loop)."""
+        found: list[LimitViolation] = []
+        for column, axis in enumerate(AXES):
+            low, high = limits.get(axis, (math.nan, math.nan))
+            values = self.move_values
+            with np.errstate(invalid="ignore"):
+                bad = (self.move_axis == column) & ~((values >= low) & (values <= high))
+            for index in np.flatnonzero(bad).tolist():
+                found.append(
+                    LimitViolation(index, self[index], axis, float(values[index]), low, high)
+                )
+        found.sort(key=lambda v: v.index)
+        return found
 
     def path(self, axes: Sequence[str]) -> ProgramPath:
         names = tuple(axes)
@@ -165,6 +210,128 @@ class _Builder:
         self.move(source, "A", self.angle, message, nail, entry)
 
 
+def _turn(current: np.ndarray, target: np.ndarray) -> np.ndarray:
+    """:func:`shortest_turn` on arrays."""
+    result: np.ndarray = (target - current + 180.0) % 360.0 - 180.0
+    return result
+
+
+def _winding_turns(
+    sequence: np.ndarray, angles: np.ndarray, before: np.ndarray, after: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per further entry, the turn to the gap beside its nail and the wrap round it (degrees).
+
+    Entry ``k`` is approached counter-clockwise when the shortest turn from
+    where the base is (the gap the previous wrap ended in) to the nail is
+    not negative; where that gap is depends on which way the previous nail
+    was wrapped, so the direction is a two-state recurrence.  Both answers
+    are computed for every entry; an entry whose two answers agree fixes the
+    direction whatever came before, and between two such entries each one
+    keeps or flips it, so the chain is a running parity (no Python loop).
+    """
+    first = sequence[0]
+    nails = sequence[1:]
+    angle = angles[nails]
+    end_ccw = angle + after[nails]  # where a wrap approached counter-clockwise ends
+    end_cw = angle - before[nails]
+    start = angles[first] + after[first]  # where the needle stepped in
+    from_ccw = np.concatenate(([start], end_ccw[:-1]))
+    from_cw = np.concatenate(([start], end_cw[:-1]))
+    if_ccw = _turn(from_ccw, angle) >= 0  # the direction after a counter-clockwise wrap
+    if_cw = _turn(from_cw, angle) >= 0  # … after a clockwise one
+    fixed = if_ccw == if_cw
+    flips = np.cumsum(~if_ccw & if_cw, dtype=np.int64)
+    steps = np.arange(len(nails))
+    reset = np.maximum.accumulate(np.where(fixed, steps, -1))
+    at = np.maximum(reset, 0)
+    # The step-in leaves the needle where a counter-clockwise wrap would have.
+    base = np.where(reset >= 0, if_ccw[at], True)
+    since = flips - np.where(reset >= 0, flips[at], 0)
+    counter = base ^ ((since & 1) == 1)
+    del fixed, flips, steps, reset, at, base, since, if_ccw, if_cw
+    previous = np.where(np.concatenate(([True], counter[:-1])), from_ccw, from_cw)
+    del from_ccw, from_cw
+    gap = np.where(counter, end_cw, end_ccw)  # the gap on the side it is approached from
+    span = before[nails] + after[nails]
+    return _turn(previous, gap), np.where(counter, span, -span)
+
+
+def _unwrapped(start: float, turns: np.ndarray, wraps: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The base's unwrapped angle after each turn and after each wrap, from ``start``."""
+    steps = np.empty(2 * len(turns) + 1)
+    steps[0] = start
+    steps[1::2], steps[2::2] = turns, wraps
+    angles = np.cumsum(steps)  # added in order, as turn after turn on the machine
+    return angles[1::2], angles[2::2]
+
+
+class StringArtOperations(Sequence[Operation]):
+    """A string-art program's operations: the drill phase kept, the winding made on demand."""
+
+    _STEPS = ("turn beside it", "needle out", "round the nail", "needle in")
+
+    def __init__(
+        self,
+        job: StringArtJob,
+        head: tuple[Operation, ...],
+        a_turn: np.ndarray,
+        a_wrap: np.ndarray,
+        r_in: float,
+        r_out: float,
+        tail: Operation,
+    ) -> None:
+        self.job = job
+        self.head = head
+        self.a_turn = a_turn
+        self.a_wrap = a_wrap
+        self.r_in = r_in
+        self.r_out = r_out
+        self.tail = tail
+        self.size = len(head) + 4 * len(a_turn) + 1
+
+    def __len__(self) -> int:
+        return self.size
+
+    @overload
+    def __getitem__(self, index: int) -> Operation: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Operation]: ...
+
+    def __getitem__(self, index: int | slice) -> Operation | Sequence[Operation]:
+        if isinstance(index, slice):
+            return [self._make(i) for i in range(*index.indices(self.size))]
+        if index < 0:
+            index += self.size
+        if not 0 <= index < self.size:
+            raise IndexError(index)
+        return self._make(index)
+
+    def __iter__(self) -> Iterator[Operation]:
+        return (self._make(i) for i in range(self.size))
+
+    def _make(self, index: int) -> Operation:
+        winding = index - len(self.head)
+        if winding < 0:
+            return self.head[index]
+        if index == self.size - 1:
+            return self.tail
+        entry, step = divmod(winding, 4)
+        entry += 1
+        total = len(self.job.sequence)
+        nail = self.job.sequence[entry]
+        message = f"nail {nail} ({entry + 1}/{total}): {self._STEPS[step]}"
+        if step == 0:
+            target = {"A": float(self.a_turn[entry - 1])}
+        elif step == 2:
+            target = {"A": float(self.a_wrap[entry - 1])}
+        else:
+            target = {"X": self.r_out if step == 1 else self.r_in}
+        return Operation(
+            OpKind.MOVE, self.job.entry_source(entry), MappingProxyType(target), message
+        )
+
+
 def build_program(
     job: StringArtJob,
     profile: MachineProfile | None = None,
@@ -218,41 +385,55 @@ def build_program(
     step_in = f"start at nail {first}"
     b.turn_to(float(angles[first] + after[first]), at_first, f"{step_in}: turn", first, 0)
     b.move(at_first, "X", r_in, f"{step_in}: needle in", first, 0)
-    for entry in range(1, total):
-        nail = sequence[entry]
-        where = job.entry_source(entry)
-        label = f"nail {nail} ({entry + 1}/{total})"
-        span = float(before[nail] + after[nail])
-        if shortest_turn(b.angle, float(angles[nail])) >= 0:  # approached counter-clockwise
-            gap, wrap = float(angles[nail] - before[nail]), span
-        else:
-            gap, wrap = float(angles[nail] + after[nail]), -span
-        b.turn_to(gap, where, f"{label}: turn beside it", nail, entry)
-        b.move(where, "X", r_out, f"{label}: needle out", nail, entry)
-        b.turn_by(wrap, where, f"{label}: round the nail", nail, entry)
-        b.move(where, "X", r_in, f"{label}: needle in", nail, entry)
+    turns, wraps = _winding_turns(np.asarray(sequence, dtype=np.int64), angles, before, after)
+    a_turn, a_wrap = _unwrapped(b.angle, turns, wraps)
     last = sequence[-1]
-    b.add(
-        Operation(
-            OpKind.COMMENT,
-            job.entry_source(total - 1),
-            message=f"winding done: tie the thread off at nail {last}",
-        ),
-        last,
-        total - 1,
+    tail = Operation(
+        OpKind.COMMENT,
+        job.entry_source(total - 1),
+        message=f"winding done: tie the thread off at nail {last}",
     )
-
-    operations = tuple(b.ops)
+    winding = total - 1
+    nails_wound = np.asarray(sequence[1:], dtype=np.int32)
+    head_axis = [_COLUMN[next(iter(op.target))] if op.target else -1 for op in b.ops]
+    head_values = [next(iter(op.target.values())) if op.target else math.nan for op in b.ops]
+    move_values = np.empty(4 * winding)
+    move_values[0::4], move_values[1::4] = a_turn, r_out
+    move_values[2::4], move_values[3::4] = a_wrap, r_in
+    operations = StringArtOperations(job, tuple(b.ops), a_turn, a_wrap, r_in, r_out, tail)
     program = StringArtProgram(
         name=job.name,
         operations=operations,
         source=job.poradi_path,
         notes=(job.summary(),),
         job=job,
-        nail_of_op=np.array(b.nails, dtype=np.int64),
-        entry_of_op=np.array(b.entries, dtype=np.int64),
-        axis_positions=np.array(b.rows, dtype=np.float64).reshape(len(b.rows), 3),
-        kind_codes=np.array([_KIND_CODES[op.kind] for op in operations], dtype=np.int8),
+        nail_of_op=np.concatenate(
+            (np.array(b.nails, dtype=np.int32), np.repeat(nails_wound, 4), [last])
+        ).astype(np.int32),
+        entry_of_op=np.concatenate(
+            (
+                np.array(b.entries, dtype=np.int32),
+                np.repeat(np.arange(1, total, dtype=np.int32), 4),
+                [total - 1],
+            )
+        ).astype(np.int32),
+        move_axis=np.concatenate(
+            (
+                np.array(head_axis, dtype=np.int8),
+                np.tile(np.array([0, 1, 0, 1], np.int8), winding),
+                [-1],
+            )
+        ).astype(np.int8),
+        move_values=np.concatenate(
+            (np.array(head_values, dtype=np.float64), move_values, [math.nan])
+        ),
+        kind_codes=np.concatenate(
+            (
+                np.array([_KIND_CODES[op.kind] for op in b.ops], dtype=np.int8),
+                np.full(4 * winding, _KIND_CODES[OpKind.MOVE], dtype=np.int8),
+                [_KIND_CODES[OpKind.COMMENT]],
+            )
+        ).astype(np.int8),
         wait_index=wait_index,
         needle_in_radius_mm=r_in,
         needle_out_radius_mm=r_out,

@@ -29,6 +29,12 @@ always does (it is the firmware's format, so a count that disagrees is an
 error on its line); any other file does when its first number equals the
 number of numbers after it, and is a bare list otherwise.
 
+Every number is bounded before it sizes anything: at most
+:data:`MAX_NAILS` nails, a polygon of at most :data:`MAX_TVAR` sides, a
+radius of at most :data:`MAX_RADIUS_CM`, nail indices of at most
+:data:`MAX_INDEX_DIGITS` digits (a longer one is out of range however many
+nails the board has) and at most :data:`MAX_ENTRIES` entries.
+
 Every refusal is a :class:`~app.jobs.program.JobFileError` naming the file
 and the line; a missing ``param.txt`` key is reported on line 0.
 """
@@ -37,20 +43,33 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
 
 import numpy as np
 
 from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail_positions
+from app.jobs.names import quoted
 from app.jobs.program import JobFileError, SourceRef
+from app.jobs.reading import decode_job_text, read_job_bytes, read_job_text
 
 PARAM_NAME = "param.txt"
 PORADI_NAME = "poradi.txt"
 PARAM_KEYS = ("tvar", "pocet_hrebiku", "polomer_matrice")
 MIN_NAILS = 3
+#: The most nails a board may have (boards are wound with a few hundred).
+MAX_NAILS = 10_000
+#: The most sides of a polygonal board.
+MAX_TVAR = 1_000
+#: The largest board radius, in cm (no winder turns a board of 10 m).
+MAX_RADIUS_CM = 500.0
+#: The most nail indices in a sequence.
+MAX_ENTRIES = 5_000_000
+#: A nail index with more digits is out of range on any board (MAX_NAILS has five).
+MAX_INDEX_DIGITS = 9
 
 _SEPARATORS = re.compile(r"[,;\s]+")
 _INTEGER = re.compile(r"[+-]?\d+")
@@ -86,8 +105,8 @@ class StringArtJob:
     sequence: tuple[int, ...]
     poradi_path: Path | None = field(default=None, compare=False)
     param_path: Path | None = field(default=None, compare=False)
-    #: The line of each sequence entry in ``poradi_path`` (1-based).
-    entry_lines: tuple[int, ...] = field(default=(), compare=False)
+    #: The line of each sequence entry in ``poradi_path`` (1-based; int32 for long lists).
+    entry_lines: Sequence[int] | np.ndarray = field(default=(), compare=False)
     #: The line of each ``param.txt`` key (absent: supplied by the operator).
     param_lines: Mapping[str, int] = field(
         default_factory=lambda: MappingProxyType({}), compare=False
@@ -114,13 +133,18 @@ class StringArtJob:
 
     def thread_length_mm(self) -> float:
         """Straight nail-to-nail thread from the first entry to the last (centres, no wraps)."""
+        return self._thread_length_mm
+
+    @cached_property
+    def _thread_length_mm(self) -> float:
+        # Once per job: a generator's list has millions of entries, and summaries repeat it.
         points = self.nail_positions()[np.asarray(self.sequence, dtype=np.int64)]
         return float(np.hypot(*np.diff(points, axis=0).T).sum())
 
     def entry_source(self, entry: int) -> SourceRef:
         """Where sequence entry ``entry`` (0-based) is written."""
         name = self.poradi_path.name if self.poradi_path is not None else PORADI_NAME
-        line = self.entry_lines[entry] if entry < len(self.entry_lines) else 0
+        line = int(self.entry_lines[entry]) if entry < len(self.entry_lines) else 0
         return SourceRef(name, line)
 
     def param_source(self, key: str = "pocet_hrebiku") -> SourceRef:
@@ -164,10 +188,7 @@ class NeedsNailCount(JobFileError):
 
 
 def read_text(path: Path) -> str:
-    try:
-        return path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise JobFileError(path.name, 0, f"cannot read: {exc}") from exc
+    return read_job_text(path)
 
 
 def _number(text: str) -> float | None:
@@ -188,15 +209,17 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
         key = key.strip().lower()
         value = value.partition("#")[0].strip().rstrip(";").strip()
         if not sep or not key:
-            raise JobFileError(path.name, number, f"expected 'key = value', found {line!r}")
+            raise JobFileError(path.name, number, f"expected 'key = value', found {quoted(line)}")
         if key not in PARAM_KEYS:
             continue  # the firmware ignores keys it does not know; so does the station
         if key in found:
             first = found[key][1]
             raise JobFileError(path.name, number, f"{key} given twice (first on line {first})")
         parsed = _number(value)
-        if parsed is None or not math.isfinite(parsed):
-            raise JobFileError(path.name, number, f"{key} = {value!r} is not a number")
+        if parsed is None or math.isnan(parsed):
+            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is not a number")
+        if not math.isfinite(parsed):
+            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is too large")
         if key != "polomer_matrice" and parsed != int(parsed):
             raise JobFileError(path.name, number, f"{key} = {value} is not a whole number")
         found[key] = (parsed, number, value)
@@ -220,20 +243,33 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
 
 
 def _check_tvar(tvar: int) -> str | None:
-    if tvar == 0 or tvar >= 3:
+    if tvar == 0 or 3 <= tvar <= MAX_TVAR:
         return None
+    if tvar > MAX_TVAR:
+        return f"tvar = {_short(tvar)}: a polygon has at most {MAX_TVAR} sides"
     return f"tvar = {tvar}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
 
 
 def _check_nails(nails: int) -> str | None:
-    if nails >= MIN_NAILS:
+    if MIN_NAILS <= nails <= MAX_NAILS:
         return None
+    if nails > MAX_NAILS:
+        return f"pocet_hrebiku = {_short(nails)}: a board has at most {MAX_NAILS} nails"
     return f"pocet_hrebiku = {nails}: a board needs at least {MIN_NAILS} nails"
 
 
+def _short(value: int) -> str:
+    """A whole number as a message shows it: a huge one by its size, not its 4000 digits."""
+    text = str(value) if abs(value) < 10**30 else f"{float(value):.3g}"
+    return text
+
+
 def _check_radius(radius_cm: float) -> str | None:
-    if math.isfinite(radius_cm) and radius_cm > NAIL_INSET_MM / 10:
+    if math.isfinite(radius_cm) and NAIL_INSET_MM / 10 < radius_cm <= MAX_RADIUS_CM:
         return None
+    if math.isfinite(radius_cm) and radius_cm > MAX_RADIUS_CM:
+        limit = f"{MAX_RADIUS_CM:g} cm"
+        return f"polomer_matrice = {radius_cm:g} cm: a board's radius is at most {limit}"
     return (
         f"polomer_matrice = {radius_cm:g} cm: the nails sit {NAIL_INSET_MM / 10:g} cm inside "
         f"the edge, so the radius must be larger than {NAIL_INSET_MM / 10:g} cm"
@@ -245,33 +281,85 @@ class NailList:
     """The integers of a nail-order file: the sequence, its lines, and the count if written."""
 
     sequence: tuple[int, ...]
-    lines: tuple[int, ...]
+    lines: np.ndarray  # int32, the line of each entry
     count: int | None
     count_line: int
 
 
+#: Byte classes of a nail list: separators, digits, signs, anything else.
+_SEPARATOR, _DIGIT, _SIGN, _OTHER = 0, 1, 2, 3
+_CLASSES = np.full(256, _OTHER, dtype=np.uint8)
+_CLASSES[list(b" ,;\t\r\n\v\f")] = _SEPARATOR
+_CLASSES[list(b"0123456789")] = _DIGIT
+_CLASSES[list(b"+-")] = _SIGN
+_TO_SPACES = bytes.maketrans(b",;\t\r\n\v\f", b"       ")
+
+
 def read_nail_list(path: Path) -> NailList:
-    """The integers of ``path`` (see the module notes for separators and the count)."""
-    values: list[int] = []
-    lines: list[int] = []
-    for number, raw in enumerate(read_text(path).splitlines(), start=1):
-        for token in _SEPARATORS.split(raw.strip()):
-            if not token:
-                continue
-            if not _INTEGER.fullmatch(token):
-                raise JobFileError(
-                    path.name,
-                    number,
-                    f"number {len(values) + 1} of the file: {token!r} is not a whole number",
-                )
-            values.append(int(token))
-            lines.append(number)
-    if not values:
+    """The integers of ``path`` (see the module notes for separators and the count).
+
+    Read with numpy in a few passes over the bytes (a generator's list can
+    hold millions of entries): each byte's class, where each number starts
+    and ends and on which line, the first number that is not a whole number
+    or is too long for any board, then every value at once.
+    """
+    raw = read_job_bytes(path)
+    if not raw.isascii() or b"\x00" in raw:
+        decode_job_text(raw, path.name)  # UTF-16, binary data, malformed UTF-8: named as such
+    raw = raw.removeprefix(b"\xef\xbb\xbf")
+    classes = _CLASSES[np.frombuffer(raw, dtype=np.uint8)]
+    separator = (classes == _SEPARATOR).view(np.int8)
+    change = np.diff(separator, prepend=np.int8(1), append=np.int8(1))
+    del separator
+    starts = np.flatnonzero(change == -1)  # first byte of each number
+    ends = np.flatnonzero(change == 1)  # one past its last byte
+    del change
+    newlines = np.flatnonzero(np.frombuffer(raw, dtype=np.uint8) == ord("\n"))
+    lines = (np.searchsorted(newlines, starts) + 1).astype(np.int32)
+    del newlines
+    # A number is an optional sign at its start, then digits only: any other byte, or a sign
+    # further in, spoils the number it is in.
+    bad = np.zeros(len(starts), dtype=bool)
+    other = np.flatnonzero(classes == _OTHER)
+    bad[np.searchsorted(starts, other, side="right") - 1] = True
+    signs = np.flatnonzero(classes == _SIGN)
+    owner = np.searchsorted(starts, signs, side="right") - 1
+    bad[owner[signs != starts[owner]]] = True
+    del other, signs, owner
+    signed = classes[starts] == _SIGN if len(starts) else np.zeros(0, dtype=bool)
+    bad |= signed & (ends - starts == 1)  # a sign alone
+    del classes
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        text = raw[starts[k] : min(ends[k], starts[k] + 40)].decode("utf-8", "replace")
+        raise JobFileError(
+            path.name, int(lines[k]), f"number {k + 1} of the file: {text!r} is not a whole number"
+        )
+    if not len(starts):
         raise JobFileError(path.name, 0, "no nail indices in the file")
-    counted = path.name.lower() == PORADI_NAME or values[0] == len(values) - 1
+    digits = ends - starts - signed
+    long = np.flatnonzero(digits > MAX_INDEX_DIGITS)
+    if len(long):
+        k = int(long[0])
+        what = "the count" if k == 0 and path.name.lower() == PORADI_NAME else f"number {k + 1}"
+        raise JobFileError(
+            path.name,
+            int(lines[k]),
+            f"{what} of the file has {int(digits[k])} digits: out of range on any board "
+            f"(at most {MAX_NAILS} nails, {MAX_ENTRIES} entries)",
+        )
+    if len(starts) > MAX_ENTRIES + 1:
+        raise JobFileError(
+            path.name, int(lines[MAX_ENTRIES + 1]), f"more than {MAX_ENTRIES} nail indices"
+        )
+    del starts, ends, digits, signed
+    values = np.fromstring(raw.translate(_TO_SPACES), dtype=np.int64, sep=" ")
+    if len(values) != len(lines):  # cannot happen: every number was checked above
+        raise JobFileError(path.name, 0, "could not read the nail indices")
+    counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
-        return NailList(tuple(values), tuple(lines), None, 0)
-    return NailList(tuple(values[1:]), tuple(lines[1:]), values[0], lines[0])
+        return NailList(tuple(values.tolist()), lines, None, 0)
+    return NailList(tuple(values[1:].tolist()), lines[1:], int(values[0]), int(lines[0]))
 
 
 def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None:
@@ -293,7 +381,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         more = f" ({len(bad) - 1} more out of range)" if len(bad) > 1 else ""
         raise JobFileError(
             name,
-            nails.lines[i],
+            int(nails.lines[i]),
             f"entry {i + 1}: nail {sequence[i]} is out of range 0…{params.nails - 1}{more}",
         )
     repeats = np.flatnonzero(array[1:] == array[:-1])
@@ -301,7 +389,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         i = int(repeats[0]) + 1
         raise JobFileError(
             name,
-            nails.lines[i],
+            int(nails.lines[i]),
             f"entries {i} and {i + 1}: nail {sequence[i]} twice in a row (a thread to itself)",
         )
 
@@ -331,6 +419,8 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
         if poradi.name.lower() == PORADI_NAME:
             param_path = _partner(poradi, PARAM_NAME)
         if param_path is None:
+            # What no board can take is refused before the operator is asked for one.
+            check_sequence(poradi, nails, StringArtParams(0, MAX_NAILS, MAX_RADIUS_CM))
             raise NeedsNailCount(poradi, max(nails.sequence) + 1, len(nails.sequence))
         param, lines = read_params(param_path)
     else:
