@@ -150,6 +150,11 @@ def report_unexpected(launcher: Launcher) -> Callable[..., None]:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["string-art"]:  # a subcommand: no window
+        from app.cli.string_art import main as string_art
+
+        return string_art(argv[1:])
     args = build_parser().parse_args(argv)
     if args.list_ports:
         return print_ports(sys.stdout)
