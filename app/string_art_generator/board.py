@@ -47,10 +47,14 @@ class BoardRaster:
     @cached_property
     def mask(self) -> np.ndarray:
         """(size, size) bool: the pixels inside the nails' outline (what the thread can cover)."""
-        nails = self.nails_px
         rows, columns = np.mgrid[0 : self.size, 0 : self.size].astype(np.float64)
+        centre = (self.size - 1) / 2.0
+        if self.params.tvar == 0:
+            radius = self.nail_radius_mm / self.pixel_mm
+            inside: np.ndarray = np.hypot(rows - centre, columns - centre) <= radius + 0.5
+            return inside
         inside = np.ones((self.size, self.size), dtype=bool)
-        corners = nails if self.params.tvar == 0 else self._corners_px()
+        corners = self._corners_px()
         # A convex outline, counter-clockwise on the board (clockwise in image rows).
         for (x0, y0), (x1, y1) in zip(corners, np.roll(corners, -1, axis=0), strict=True):
             cross = (x1 - x0) * (rows - y0) - (y1 - y0) * (columns - x0)

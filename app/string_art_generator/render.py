@@ -36,7 +36,9 @@ def render_darkness(
         lines = rasterise(
             nails[low[begin:end]], nails[high[begin:end]], size, thread_mm / raster.pixel_mm
         )
-        np.add.at(log_light, lines.pixels, np.log1p(-lines.alpha.astype(np.float64)))
+        log_light += np.bincount(
+            lines.pixels, weights=np.log1p(-lines.alpha.astype(np.float64)), minlength=size * size
+        )
     result: np.ndarray = (1.0 - np.exp(log_light)).reshape(size, size).astype(np.float32)
     return result
 

@@ -17,6 +17,8 @@ from PIL import Image, ImageOps, UnidentifiedImageError
 
 #: Photos larger than this (in pixels) are refused: a decompression bomb, not a photo.
 MAX_PIXELS = 80_000_000
+#: The longest side of the copy the station works from (the board raster is far smaller).
+WORKING_SIDE = 1200
 
 
 class ImageError(ValueError):
@@ -47,6 +49,19 @@ def load_image(path: Path) -> np.ndarray:
     if grey.width < 2 or grey.height < 2:
         raise ImageError(f"{path.name}: {grey.width} x {grey.height} pixels is too small")
     return np.asarray(grey, dtype=np.float32) / 255.0
+
+
+def working_copy(lightness: np.ndarray, max_side: int = WORKING_SIDE) -> np.ndarray:
+    """The photo shrunk to at most ``max_side`` pixels a side: enough for any board raster,
+    and small enough that cropping it again as the operator turns a knob takes milliseconds."""
+    rows, columns = lightness.shape[:2]
+    scale = max_side / max(rows, columns)
+    if scale >= 1.0:
+        return lightness
+    image = Image.fromarray(np.asarray(lightness * 255.0 + 0.5, dtype=np.uint8))
+    size = (max(2, round(columns * scale)), max(2, round(rows * scale)))
+    small = image.resize(size, Image.Resampling.LANCZOS)
+    return np.asarray(small, dtype=np.float32) / 255.0
 
 
 def crop_box(shape: tuple[int, int], adjust: Adjust) -> tuple[float, float, float, float]:
