@@ -170,6 +170,10 @@ def test_weighted_greedy_beats_plain_greedy_and_random_threads(which: str) -> No
         target, render_darkness(params, random_order, 128, settings.thread_mm), result.mask
     )
     assert weighted.mae < baseline.mae and weighted.ssim > baseline.ssim, (weighted, baseline)
+    # Also against plain greedy stopped at the weighted method's thread count.
+    cut = render_darkness(params, plain[: result.lines + 1], 128, settings.thread_mm)
+    short = measure(target, cut, result.mask)
+    assert weighted.mae < short.mae and weighted.ssim > short.ssim, (weighted, short)
     assert weighted.mae < chance.mae and weighted.ssim > chance.ssim, (weighted, chance)
 
 
