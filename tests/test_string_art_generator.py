@@ -147,6 +147,8 @@ def test_settings_that_cannot_make_a_sequence_are_refused_before_any_work() -> N
             run(SMALL, target, bad)
     with pytest.raises(ValueError, match="raster"):
         run(SMALL, target_of(face(100), 64), Settings(resolution=RES))
+    with pytest.raises(ValueError, match=r"about 8\.6 GB for the lines"):
+        run(StringArtParams(0, 1000, 30.0), target, Settings(resolution=1000))
 
 
 # --- quality ----------------------------------------------------------------------------------
@@ -205,6 +207,19 @@ def test_a_thread_lays_its_width_along_its_length_whatever_its_slope(angle: floa
     offset = np.column_stack((columns - start[0, 0], rows - start[0, 1]))
     distance = np.abs(offset[:, 0] * direction[1] - offset[:, 1] * direction[0])
     assert distance[lines.alpha > 0].max() < 1.0 + 1e-9
+
+
+def test_the_table_size_estimate_is_near_the_real_size() -> None:
+    """The memory guard's estimate: close on a circle, on the safe side on a polygon."""
+    for params, chosen, low, high in (
+        (StringArtParams(0, 60, 10.0), Settings(resolution=96), 0.9, 1.1),
+        (StringArtParams(0, 150, 10.0), Settings(resolution=160), 0.9, 1.1),
+        (StringArtParams(6, 90, 10.0), Settings(resolution=128, min_skip=3), 1.0, 1.3),
+    ):
+        raster = BoardRaster(params, chosen.resolution)
+        key = LineKey(raster, chosen.thread_mm, chosen.skip_for(params.nails))
+        real = line_table(key).entries
+        assert low * real <= chosen.table_entries(params) <= high * real
 
 
 def test_the_opacity_is_the_real_thread_width_over_the_real_pixel() -> None:

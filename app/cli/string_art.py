@@ -5,7 +5,8 @@ nail sequence for the board, writes ``param.txt`` + ``poradi.txt`` (the
 winder's SD-card pair) and ``string-art.png`` (the thread picture at the
 board's real thread width) into DIR, and prints the quality figures and the
 time taken.  Nothing is written unless the whole sequence was made; the
-exit code is 0 on success, 2 on bad arguments or an unreadable image.
+exit code is 0 on success, 2 on bad arguments or an unreadable image, 1
+when the folder cannot be written, 130 when interrupted (Ctrl+C).
 """
 
 from __future__ import annotations
@@ -121,7 +122,11 @@ def main(argv: Sequence[str] | None = None, out: TextIO | None = None) -> int:
         print(f"stepdeck string-art: {exc}", file=sys.stderr)
         return 2
     target = target_darkness(lightness, adjust, settings.resolution)
-    result = run(params, target, settings)
+    try:
+        result = run(params, target, settings)
+    except KeyboardInterrupt:
+        print("stepdeck string-art: interrupted, nothing written", file=sys.stderr)
+        return 130
     generated = time.perf_counter()
     quality = measure(result.target, result.darkness, result.mask)
     job = job_of(result)

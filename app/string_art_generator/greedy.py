@@ -35,6 +35,8 @@ from app.string_art_generator.lines import LineKey, LineTable, NailLines, build_
 CHUNK_LINES = 8
 #: The default least skip: a twentieth of the board's nails, at least 2.
 SKIP_FRACTION = 20
+#: The largest line table built (pixel entries; 8 bytes each, twice over: ~1.3 GB).
+MAX_TABLE_ENTRIES = 80_000_000
 
 
 def default_skip(nails: int) -> int:
@@ -57,6 +59,16 @@ class Settings:
     def skip_for(self, nails: int) -> int:
         return default_skip(nails) if self.min_skip is None else self.min_skip
 
+    def table_entries(self, params: StringArtParams) -> int:
+        """About how many (pixel, opacity) pairs the line table holds: its memory / 8 bytes.
+
+        Each nail has a line to every nail but its skipped neighbours; a line
+        has two pixels per raster step along its longer axis, on average about
+        0.6 of the raster across.
+        """
+        per_nail = max(0, params.nails - 1 - 2 * (self.skip_for(params.nails) - 1))
+        return round(params.nails * per_nail * 1.2 * self.resolution)
+
     def check(self, params: StringArtParams) -> str | None:
         """Why these settings cannot make a sequence for ``params``, or None."""
         skip = self.skip_for(params.nails)
@@ -73,6 +85,12 @@ class Settings:
             )
         if not 0 <= self.start_nail < params.nails:
             return f"start nail {self.start_nail} is not on a board of {params.nails} nails"
+        if self.table_entries(params) > MAX_TABLE_ENTRIES:
+            return (
+                f"{params.nails} nails on a raster of {self.resolution} px would need about "
+                f"{self.table_entries(params) * 8 / 1e9:.1f} GB for the lines between them: "
+                "fewer nails or a smaller raster"
+            )
         return None
 
 
@@ -210,7 +228,3 @@ def run(params: StringArtParams, target: np.ndarray, settings: Settings) -> Resu
         if progress.result is not None:
             return progress.result
     raise AssertionError("generate always ends with a result")
-
-
-def raster_for(params: StringArtParams, settings: Settings) -> BoardRaster:
-    return BoardRaster(params, settings.resolution)

@@ -145,7 +145,10 @@ class Worker(QObject):
             result = self._work(self.stop)
         except Exception as exc:  # shown to the operator; the window stays
             result = exc
-        self.done.emit(result)
+        try:
+            self.done.emit(result)
+        except RuntimeError:  # the dialog was deleted with the window: nobody to tell
+            pass
 
 
 class Cancelled(Exception):
