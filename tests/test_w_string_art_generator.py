@@ -149,8 +149,8 @@ def test_cancel_keeps_nothing_and_export_writes_the_pair_the_dock_loads(
     before = generated_folders()
     dialog = opened(qtbot, dock)
     # A large board: preparing its lines takes seconds, so Cancel comes in the middle.
-    type_value(qtbot, dialog.nails, "500")
-    type_value(qtbot, dialog.resolution, "400")
+    type_value(qtbot, dialog.nails, "300")
+    type_value(qtbot, dialog.resolution, "300")
     qtbot.mouseClick(dialog.generate_button, LEFT)
     assert dialog.running
     qtbot.mouseClick(dialog.cancel_button, LEFT)
@@ -182,8 +182,8 @@ def test_closing_while_it_generates_stops_the_worker(
     qtbot: QtBot, dock: JobsDock, photo: Path
 ) -> None:
     dialog = opened(qtbot, dock)
-    type_value(qtbot, dialog.nails, "500")
-    type_value(qtbot, dialog.resolution, "400")
+    type_value(qtbot, dialog.nails, "300")
+    type_value(qtbot, dialog.resolution, "300")
     qtbot.mouseClick(dialog.generate_button, LEFT)
     assert dialog.running
     qtbot.mouseClick(dialog.close_button, LEFT)
@@ -204,3 +204,16 @@ def test_an_unreadable_photo_is_named_and_nothing_can_be_generated(
     qtbot.waitUntil(lambda: dialog.status.text().startswith("Not opened"), timeout=WAIT_MS)
     assert "scan.jpg" in dialog.status.text()
     assert not dialog.generate_button.isEnabled()
+
+
+def test_a_board_too_big_for_memory_cannot_be_generated_and_says_why(
+    qtbot: QtBot, dock: JobsDock, photo: Path
+) -> None:
+    dialog = opened(qtbot, dock)
+    type_value(qtbot, dialog.nails, "2000")
+    type_value(qtbot, dialog.resolution, "600")
+    assert not dialog.generate_button.isEnabled()
+    assert "Cannot generate" in dialog.scale_label.text()
+    assert "fewer nails or a smaller raster" in dialog.scale_label.text()
+    type_value(qtbot, dialog.nails, "200")
+    assert dialog.generate_button.isEnabled()

@@ -176,17 +176,24 @@ class Generation(Worker):
                 raise Cancelled()
             now = time.monotonic()
             if progress.result is not None:
-                result = progress.result
-                quality = measure(result.target, result.darkness, result.mask)
-                return Finished(
-                    result, quality, picture(result, PREVIEW_PX), picture(result, EXPORT_PX)
-                )
+                return self._finish(progress.result, stop)
             if progress.phase != phase or now - last >= PROGRESS_MS / 1000:
                 phase, last = progress.phase, now
                 self.progressed.emit(
                     progress.phase, progress.done, progress.total, progress.darkness
                 )
         raise AssertionError("generate always ends with a result")
+
+    @staticmethod
+    def _finish(result: Result, stop: threading.Event) -> Finished:
+        """The figures and both pictures, still cancellable between them."""
+        quality = measure(result.target, result.darkness, result.mask)
+        pictures = []
+        for size in (PREVIEW_PX, EXPORT_PX):
+            if stop.is_set():
+                raise Cancelled()
+            pictures.append(picture(result, size))
+        return Finished(result, quality, pictures[0], pictures[1])
 
 
 class StringArtGeneratorDialog(QDialog):
