@@ -217,3 +217,18 @@ def test_a_board_too_big_for_memory_cannot_be_generated_and_says_why(
     assert "fewer nails or a smaller raster" in dialog.scale_label.text()
     type_value(qtbot, dialog.nails, "200")
     assert dialog.generate_button.isEnabled()
+
+
+def test_a_board_the_winder_cannot_reach_is_named_but_can_still_be_exported(
+    qtbot: QtBot, dock: JobsDock, photo: Path
+) -> None:
+    """X travel 250 mm, needle 5 mm outside the nails, nails 15 mm inside the edge: 26 cm."""
+    dialog = opened(qtbot, dock)
+    assert "reaches" not in dialog.scale_label.text()
+    type_value(qtbot, dialog.radius, "26")
+    assert "reaches" not in dialog.scale_label.text()
+    type_value(qtbot, dialog.radius, "26.5")
+    assert "needle reaches 250 mm from the centre: boards up to 26.0 cm" in (
+        dialog.scale_label.text()
+    )
+    assert dialog.generate_button.isEnabled()

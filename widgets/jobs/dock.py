@@ -409,7 +409,8 @@ class JobsDock(QDockWidget):
             return self.generator_dialog
         program = self.runner.program
         board = program.job.params if isinstance(program, StringArtProgram) else None
-        dialog = StringArtGeneratorDialog(self.open_path, self, board=board)
+        reach = next((a.travel for a in self.station.profile.axes if a.name == "X"), None)
+        dialog = StringArtGeneratorDialog(self.open_path, self, board=board, reach_mm=reach)
         dialog.finished.connect(self._generator_closed)
         self.generator_dialog = dialog
         dialog.show()

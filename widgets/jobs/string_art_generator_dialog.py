@@ -43,6 +43,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.jobs.formats.string_art.geometry import NAIL_INSET_MM
+from app.jobs.formats.string_art.program import WindingSettings
 from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.string_art_generator.board import BoardRaster
 from app.string_art_generator.greedy import Settings, default_skip
@@ -111,6 +113,7 @@ class StringArtGeneratorDialog(QDialog):
         parent: QWidget | None = None,
         *,
         board: StringArtParams | None = None,
+        reach_mm: float | None = None,
         choose_image: PathAsker | None = None,
         choose_folder: PathAsker | None = None,
     ) -> None:
@@ -118,6 +121,8 @@ class StringArtGeneratorDialog(QDialog):
         self.setObjectName("string_art_generator")
         self.setWindowTitle("String art from a photo")
         self._open_job = open_job
+        #: How far from the centre the winder's needle goes (its X travel), if known.
+        self._reach_mm = reach_mm
         self._choose_image = choose_image
         self._choose_folder = choose_folder
         self._image_path: Path | None = None
@@ -392,11 +397,25 @@ class StringArtGeneratorDialog(QDialog):
                 f"{PREVIEW_PX} px wide (1 px = {across_mm / PREVIEW_PX:.2f} mm).\nThread "
                 f"{width:g} mm = 1/{across_mm / width:.0f} of it; "
                 f"chosen on a raster of {raster.pixel_mm:.2f} mm pixels."
+                + self._reach_warning(raster.nail_radius_mm)
             )
         else:
             self.scale_label.setText(f"Cannot generate: {problem}")
         self._show_photo()
         self._update_buttons()
+
+    def _reach_warning(self, nail_radius_mm: float) -> str:
+        """A line when the winder's needle cannot get round the outermost nails of this board
+        (the SD-card files are still good for a larger machine; the dock refuses the job)."""
+        reach = self._reach_mm
+        needle_out = WindingSettings().needle_out_mm
+        if reach is None or nail_radius_mm + needle_out <= reach:
+            return ""
+        largest_cm = (reach - needle_out + NAIL_INSET_MM) / 10
+        return (
+            f"\nThis winder's needle reaches {reach:g} mm from the centre: boards up to "
+            f"{largest_cm:.1f} cm radius fit it (export the files for a larger one)."
+        )
 
     # --- generating ----------------------------------------------------------
 
