@@ -43,7 +43,7 @@ def bench_quality() -> list[str]:
         f"{settings.lines}, thread {settings.thread_mm:g} mm, skip {skip}, raster "
         f"{settings.resolution} px; error of the thread picture against the target on the board"
     ]
-    for name, make in TEST_IMAGES.items():
+    for name, make in {**TEST_IMAGES, "camera photo": _camera}.items():
         target = target_darkness(make(SOURCE_PX), Adjust(), settings.resolution)
         result = run(BOARD, target, settings)
         weighted = measure(target, result.darkness, result.mask)
@@ -61,6 +61,14 @@ def bench_quality() -> list[str]:
             f" | weighted {'better' if better else 'NOT better'}"
         )
     return lines
+
+
+def _camera(_size: int) -> np.ndarray:
+    """A real photo: scikit-image's bundled "camera" (512², a man with a camera on a tripod)."""
+    from skimage import data
+
+    photo: np.ndarray = data.camera().astype(np.float32) / 255.0
+    return photo
 
 
 def _measured(
