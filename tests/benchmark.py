@@ -22,6 +22,7 @@ if str(ROOT) not in sys.path:
 
 from protocol.clock import ManualClock  # noqa: E402
 from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
+from tests.bench_string_art_generator import bench_string_art_generator  # noqa: E402
 
 if TYPE_CHECKING:
     from app.jobs.program import Program
@@ -837,6 +838,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_string_art_2m,
     bench_huge_arcs,
     bench_gcode_streaming,
+    bench_string_art_generator,
 ]
 
 

@@ -61,6 +61,7 @@ from app.station import Station
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
+from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
 from widgets.style import monospace_font
 
 MESSAGE_LINES = 200
@@ -147,6 +148,8 @@ class JobsDock(QDockWidget):
         #: The source lines the loading thread read with the program (None: read them here).
         self._prepared_lines: tuple[Path | None, list[str]] | None = None
         self._loading: _Loading | None = None
+        #: The "From photo…" dialog while it is open.
+        self.generator_dialog: StringArtGeneratorDialog | None = None
         self.preview = JobPreview(
             station,
             runner,
@@ -313,6 +316,15 @@ class JobsDock(QDockWidget):
             "Write the loaded job out: G-code, or a string-art job's SD-card files",
             self.ask_export,
         )
+        self.photo_button = self._button(
+            "From photo…",
+            "job_from_photo",
+            "String art from a photo: make a nail sequence, see it, load it as a job",
+            self.open_generator,
+        )
+        # Only the winder winds thread (its axes: base A, needle X, drill Z).
+        axes = {axis.name for axis in self.station.profile.axes}
+        self.photo_button.setVisible({"A", "X", "Z"} <= axes)
         self.file_label = QLabel("no job loaded")
         self.file_label.setObjectName("job_file")
         self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -336,6 +348,7 @@ class JobsDock(QDockWidget):
         )
         bar.addWidget(self.open_button)
         bar.addWidget(self.export_button)
+        bar.addWidget(self.photo_button)
         bar.addWidget(self.file_label, 1)
         for button in (
             self.run_button,
@@ -436,6 +449,26 @@ class JobsDock(QDockWidget):
         path, _ = QFileDialog.getOpenFileName(self, "Open a job", "", file_dialog_filter())
         if path:
             self.open_path(Path(path), background=True)
+
+    def open_generator(self) -> StringArtGeneratorDialog:
+        """The string-art generator, on the board of the loaded string-art job if there is one."""
+        if self.generator_dialog is not None:
+            self.generator_dialog.raise_()
+            self.generator_dialog.activateWindow()
+            return self.generator_dialog
+        program = self.runner.program
+        board = program.job.params if isinstance(program, StringArtProgram) else None
+        reach = next((a.travel for a in self.station.profile.axes if a.name == "X"), None)
+        dialog = StringArtGeneratorDialog(self.open_path, self, board=board, reach_mm=reach)
+        dialog.finished.connect(self._generator_closed)
+        self.generator_dialog = dialog
+        dialog.show()
+        return dialog
+
+    def _generator_closed(self, *_args: object) -> None:
+        dialog, self.generator_dialog = self.generator_dialog, None
+        if dialog is not None:
+            dialog.deleteLater()
 
     def open_path(self, path: Path, *, background: bool = False) -> bool:
         """Load the job in ``path`` into the runner; False (and says why) when it is not loaded.
