@@ -186,9 +186,13 @@ JOB_OPTIONS: Mapping[str, Spec[object]] = {
         _number_choice(EXCELLON_STEPS),
     ),
 }
+#: What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous.
+JOG_STEPS = (0.0, 0.1, 1.0, 10.0)
+JOG_STEP = Spec("jog/key_step", 0.0, "one of 0 (continuous), 0.1, 1, 10", _number_choice(JOG_STEPS))
 #: Every key, for the tests (and for anyone wondering what the file may hold).
 ALL_SPECS: tuple[Spec[object], ...] = (
     PROFILE,
+    JOG_STEP,
     PERIOD_MS,
     TRANSPORT,
     DEVICE,
@@ -344,6 +348,15 @@ class StationSettings:
     @baud.setter
     def baud(self, value: int) -> None:
         self.write(BAUD, int(value))
+
+    @property
+    def jog_step(self) -> float:
+        """What a tap of an arrow key moves; 0: the key jogs while held."""
+        return self.read(JOG_STEP)
+
+    @jog_step.setter
+    def jog_step(self, value: float) -> None:
+        self.write(JOG_STEP, float(value))
 
     def job_options(self) -> dict[str, object]:
         """The jobs dock's reading options that are stored (and valid), by option name."""

@@ -197,3 +197,38 @@ def test_arcs_go_as_written_and_the_board_ends_each_where_the_preview_does(
         if op.kind is OpKind.MOVE and op.line[:3] in ("G02", "G03"):
             target = (round(op.target["X"], 3), round(op.target["Y"], 3))
             assert any(end == target for end in ends), f"{op.source}: never reached {target}"
+
+
+@pytest.mark.parametrize(
+    ("emulator", "station"),
+    [("grbl-plotter", "grbl-plotter"), ("corexy-plotter", "corexy-plotter")],
+    indirect=True,
+)
+def test_a_jog_then_a_square_without_g90_ends_where_the_file_says(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    """The issue's probe over a pty: one tap of →, then a square whose file never says G90.
+
+    Once a jog left the plotter in G91 and this square was drawn 105 mm off and
+    reported done; the jog must leave the distance mode alone and the job must
+    set it up before its first line.
+    """
+    path, log = emulator
+    connect(qtbot, station, path)
+    session = station.gcode_session
+    assert session is not None
+    session.set_jog((1, 0))
+    qtbot.wait(150)
+    session.set_jog((0, 0))
+    qtbot.waitUntil(lambda: session.settled and not session.stopping, timeout=5000)
+    job = tmp_path / "square.gcode"
+    job.write_text("G0 X10 Y10\nG1 X40 Y10 F3000\nG1 X40 Y40\nG1 X10 Y40\nG1 X10 Y10\n")
+    program = load_job(job, [a.name for a in station.profile.axes])
+    runner = run(qtbot, station, program, tmp_path, [])
+    assert runner.state is JobState.DONE
+    qtbot.waitUntil(lambda: any(e.get("event") == "move" for e in events(log)), timeout=5000)
+    moves = [e for e in events(log) if e.get("event") == "move"]
+    last = moves[-1]["pos"]
+    assert (last["X"], last["Y"]) == pytest.approx((10.0, 10.0), abs=1e-3)
+    corners = {(round(m["pos"]["X"], 3), round(m["pos"]["Y"], 3)) for m in moves[-4:]}
+    assert corners == {(40.0, 10.0), (40.0, 40.0), (10.0, 40.0), (10.0, 10.0)}

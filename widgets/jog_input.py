@@ -47,6 +47,9 @@ class JogInput(QObject):
         self._shift = False
         self._enabled = True
         self._sent: tuple[int, ...] = (0,) * self._axes
+        #: What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).
+        self.key_step = 0.0
+        self._stepped: set[int] = set()  # keys down in step mode: their release is ours too
         # A held button sends no repeats: the mouse's state is looked at instead.
         self._button_poll = QTimer(self)
         self._button_poll.setInterval(BUTTON_POLL_MS)
@@ -72,14 +75,25 @@ class JogInput(QObject):
         return key in JOG_KEYS and JOG_KEYS[key][0] < self._axes
 
     def is_held(self, key: int) -> bool:
-        return key in self._keys
+        return key in self._keys or key in self._stepped
 
     # --- input ---------------------------------------------------------------
+
+    def set_key_step(self, step: float) -> None:
+        """Arrow keys jog while held (0) or move ``step`` per tap (UGS's and CNCjs's choice)."""
+        self.key_step = max(0.0, float(step))
 
     def key_press(self, key: int) -> bool:
         """A jog key went down; returns whether the key is a jog key at all."""
         if not self.is_jog_key(key):
             return False
+        if self.key_step > 0:
+            session = self._station.session
+            if self._enabled and session is not None and key not in self._stepped:
+                self._stepped.add(key)
+                axis, direction = JOG_KEYS[key]
+                session.step_jog(axis, direction, self.key_step)
+            return True
         if self._enabled and key not in self._keys:
             self._keys.add(key)
             self._push()
@@ -87,6 +101,8 @@ class JogInput(QObject):
 
     def key_repeat(self, key: int) -> bool:
         """An auto-repeat of a held key: the sign the station's dead-man waits for."""
+        if key in self._stepped:
+            return True  # a step per tap, never per repeat
         if key not in self._keys:
             return False
         session = self._station.session
@@ -96,6 +112,9 @@ class JogInput(QObject):
 
     def key_release(self, key: int) -> bool:
         """A key came up; returns whether it was a held jog key."""
+        if key in self._stepped:
+            self._stepped.discard(key)
+            return True
         if key not in self._keys:
             return False
         self._keys.discard(key)
@@ -130,6 +149,7 @@ class JogInput(QObject):
     def release_all(self) -> None:
         """Forget everything held and stop every jog (the runaway-jog guard)."""
         self._keys.clear()
+        self._stepped.clear()
         self._buttons.clear()
         self.set_shift(False)
         session = self._station.session

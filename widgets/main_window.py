@@ -151,6 +151,8 @@ class MainWindow(QMainWindow):
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
+        self.manual_panel.set_key_step(self._settings.jog_step)
+        self.manual_panel.keyStepChanged.connect(self._remember_key_step)
         self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
         #: Every page with motion controls, for the motion lock.
         self.motion_panels: list[
@@ -500,6 +502,9 @@ class MainWindow(QMainWindow):
         super().showEvent(event)
         if self.settings_warning is not None and not self.settings_warning.isVisible():
             self.settings_warning.show()  # not exec(): the window stays usable behind it
+
+    def _remember_key_step(self, step: float) -> None:
+        self._settings.jog_step = step
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Closing the operator window stops the machine and closes the link.

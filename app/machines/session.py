@@ -84,6 +84,23 @@ class MachineSession(QObject):
     def stop_all(self) -> None:
         self._unsupported("stop command")
 
+    def step_jog(self, axis: int, direction: int, step: float) -> bool:
+        """One tap of an arrow key in step mode: ``step`` that way, or what is left of the travel.
+
+        Sent as a relative move, so it passes the motion gate like any other;
+        at the travel's end it says so instead of moving.
+        """
+        if not 0 <= axis < self.axis_count or direction not in (-1, 1) or step <= 0:
+            return False
+        if self._refuse_motion():
+            return False
+        distance = min(step, self.gate.room(axis, direction))
+        if distance <= 1e-6:
+            name = self.model.axes[axis].name
+            self.model.message.emit(f"{name} is at the end of its travel")
+            return False
+        return self.move_relative(axis, direction * distance)
+
     # --- the dead-man: a held jog needs signs that it is still held -------------------
 
     def keep_jogging(self) -> None:

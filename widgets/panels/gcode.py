@@ -14,6 +14,7 @@ from PySide6.QtWidgets import (
     QGroupBox,
     QHBoxLayout,
     QLabel,
+    QMessageBox,
     QPlainTextEdit,
     QPushButton,
     QVBoxLayout,
@@ -126,7 +127,19 @@ class GcodePanel(QWidget):
         if not text:
             return False
         session = self.session
-        sent = session is not None and session.send_line(text, "console")
+        refusal = session.beyond_travel(text) if session is not None else None
+        if session is not None and refusal is not None:
+            answer = QMessageBox.warning(
+                self,
+                "Beyond the travel",
+                f"{refusal}.\n\nSend it to the machine anyway?",
+                QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
+                QMessageBox.StandardButton.Cancel,
+            )
+            if answer != QMessageBox.StandardButton.Yes:
+                self.output.appendPlainText(f"! {text}: not sent (beyond the travel)")
+                return False
+        sent = session is not None and session.send_line(text, "console", confirmed=True)
         if not sent:
             self.output.appendPlainText(f"! {text}: not sent")
         return sent

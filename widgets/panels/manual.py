@@ -8,23 +8,33 @@ buttons and arrow keys from cancelling each other.
 
 from __future__ import annotations
 
-from PySide6.QtCore import QSize, Qt
-from PySide6.QtWidgets import QGridLayout, QHBoxLayout, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtCore import QSize, Qt, Signal
+from PySide6.QtWidgets import (
+    QComboBox,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
 
+from app.settings import JOG_STEPS
 from app.station import Station
 from widgets.jog_input import JogInput
 from widgets.stop_caption import pad_stop_caption, stop_caption
 from widgets.style import MINUS
 
-#: (row, column) in the cross → (dx, dy, label, key hint)
+#: (row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the
+#: profile's first two axes (X and Y on a plotter, A and X on the string-art winder).
 _CROSS: dict[tuple[int, int], tuple[int, int, str, str]] = {
     (0, 0): (-1, +1, "↖", "← + ↑"),
-    (0, 1): (0, +1, "Y+ ↑", "↑"),
+    (0, 1): (0, +1, "{1}+ ↑", "↑"),
     (0, 2): (+1, +1, "↗", "→ + ↑"),
-    (1, 0): (-1, 0, f"← X{MINUS}", "←"),
-    (1, 2): (+1, 0, "X+ →", "→"),
+    (1, 0): (-1, 0, "← {0}" + MINUS, "←"),
+    (1, 2): (+1, 0, "{0}+ →", "→"),
     (2, 0): (-1, -1, "↙", "← + ↓"),
-    (2, 1): (0, -1, f"Y{MINUS} ↓", "↓"),
+    (2, 1): (0, -1, "{1}" + MINUS + " ↓", "↓"),
     (2, 2): (+1, -1, "↘", "→ + ↓"),
 }
 
@@ -32,13 +42,18 @@ _CROSS: dict[tuple[int, int], tuple[int, int, str, str]] = {
 _BUTTON_SIZE = QSize(96, 64)
 
 
-def _describe(dx: int, dy: int) -> str:
-    parts = [f"{'+' if d > 0 else MINUS}{name}" for name, d in (("X", dx), ("Y", dy)) if d]
+def _describe(dx: int, dy: int, names: tuple[str, str]) -> str:
+    parts = [
+        f"{'+' if d > 0 else MINUS}{name}" for name, d in zip(names, (dx, dy), strict=True) if d
+    ]
     return " ".join(parts)
 
 
 class ManualPanel(QWidget):
     """Hold-to-jog buttons and Home; all motion goes through ``jog`` or the session."""
+
+    #: The arrow keys' step was chosen (0: continuous): the window stores it.
+    keyStepChanged = Signal(float)
 
     def __init__(self, station: Station, jog: JogInput, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -49,10 +64,14 @@ class ManualPanel(QWidget):
 
         grid = QGridLayout()
         grid.setSpacing(6)
+        axes = station.profile.axes
+        names = (axes[0].name, axes[1].name if len(axes) > 1 else "")
         for (row, column), (dx, dy, label, keys) in _CROSS.items():
-            button = self._jog_button(label, (dx, dy))
+            if dy and len(axes) < 2:
+                continue  # a one-axis machine: left and right only
+            button = self._jog_button(label.format(*names), (dx, dy))
             button.setToolTip(
-                f"Hold to jog {_describe(dx, dy)}  (keys: {keys}; Shift = other speed)"
+                f"Hold to jog {_describe(dx, dy, names)}  (keys: {keys}; Shift = other speed)"
             )
             grid.addWidget(button, row, column)
             self.jog_buttons[(dx, dy)] = button
@@ -63,6 +82,23 @@ class ManualPanel(QWidget):
         self.stop_button.setStyleSheet("font-weight: bold; color: #b02020;")
         self.stop_button.clicked.connect(jog.stop_all)
         grid.addWidget(self.stop_button, 1, 1)
+
+        first = axes[0]
+        self.key_step = QComboBox()
+        self.key_step.setObjectName("key_step")
+        self.key_step.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # arrows stay the machine's
+        for step in JOG_STEPS:
+            text = "continuous (hold)" if step == 0 else f"{step:g} {first.unit} per tap"
+            self.key_step.addItem(text, step)
+        self.key_step.setToolTip(
+            "What a tap of an arrow key does: jog while held, or move one step "
+            "(never past the travel)"
+        )
+        self.key_step.currentIndexChanged.connect(self._key_step_chosen)
+        steps = QHBoxLayout()
+        steps.addWidget(QLabel("Arrow keys:"))
+        steps.addWidget(self.key_step)
+        steps.addStretch(1)
 
         homes = QHBoxLayout()
         homes.setSpacing(6)
@@ -85,6 +121,7 @@ class ManualPanel(QWidget):
         layout.setContentsMargins(12, 12, 12, 12)
         layout.addLayout(cross)
         layout.addSpacing(12)
+        layout.addLayout(steps)
         layout.addLayout(homes)
         layout.addStretch(1)
 
@@ -116,6 +153,16 @@ class ManualPanel(QWidget):
         button.pressed.connect(lambda: self._jog.button_press(button, directions))
         button.released.connect(lambda: self._jog.button_release(button))
         return button
+
+    def set_key_step(self, step: float) -> None:
+        """Show (and use) a stored choice; one the list lacks means continuous."""
+        index = self.key_step.findData(step)
+        self.key_step.setCurrentIndex(max(0, index))
+        self._key_step_chosen()
+
+    def _key_step_chosen(self) -> None:
+        self._jog.set_key_step(float(self.key_step.currentData()))
+        self.keyStepChanged.emit(self._jog.key_step)
 
     def _home(self, axis: int) -> None:
         session = self._station.session

@@ -176,11 +176,7 @@ class DrillSession(MachineSession):
         name = self.model.profile.axes[axis].name
         if name not in POSITION_LETTERS:
             return self._unsupported(f"moves of {name}")
-        travel = self.model.profile.axes[axis].travel
-        if not 0 <= position <= travel:
-            self.model.message.emit(
-                f"{name} {position:g} mm refused: outside the travel 0…{travel:g} mm"
-            )
+        if self.gate.refuse(self.gate.refuse_target(axis, position)):
             return False
         return self._enqueue(Command(name, self.to_microsteps(axis, position)))
 
@@ -233,8 +229,15 @@ class DrillSession(MachineSession):
         return False
 
     def _enqueue(self, command: Command) -> bool:
+        """Every command reaches the queue here: a position outside the travel never does."""
         if self._refuse_motion():
             return False
+        if command.letter in POSITION_LETTERS and command.value is not None:
+            axis = self._axes_named(command.letter)
+            if axis:
+                target = self.to_mm(axis[0], command.value)
+                if self.gate.refuse(self.gate.refuse_target(axis[0], target)):
+                    return False
         self._queue.append(command)
         self._send_next()
         return True

@@ -28,6 +28,8 @@ from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.gcode.line_targets import line_motion
+from app.machines.motion_gate import Refusal
 from app.machines.session import MachineSession
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
@@ -137,6 +139,8 @@ class GcodeSession(MachineSession):
         self._last_heard = clock.now()
         self._jog_unanswered = 0
         self._jog_status_fresh = False
+        #: Whether the board is in G91 after the lines sent (a reset brings back G90).
+        self._relative = False
         #: Where the steps sent so far take each axis (None: no jog under way).
         self._jog_target: list[float] | None = None
         self._jog_told_end = False
@@ -187,11 +191,46 @@ class GcodeSession(MachineSession):
 
     # --- lines --------------------------------------------------------------------
 
-    def send_line(self, text: str, origin: str = "console", op_index: int | None = None) -> bool:
-        """Queue one line for the device; a line it could never take is refused here."""
+    def beyond_travel(self, text: str) -> Refusal | None:
+        """Why a console line would move the machine past its travel (None: it would not).
+
+        A line the board could never take is no motion: :meth:`send_line` refuses it.
+        """
+        try:
+            encode_line(text.strip())
+        except ValueError:
+            return None
+        axes = tuple(a.name for a in self.model.profile.axes)
+        position = {a.name: a.position for a in self.model.axes}
+        motion = line_motion(text, self._relative, position, axes)
+        for name, target in motion.targets.items():
+            refusal = self.gate.refuse_target(axes.index(name), target)
+            if refusal is not None:
+                return Refusal(f"{text.strip()!r} would move {refusal}")
+        return None
+
+    def send_line(
+        self,
+        text: str,
+        origin: str = "console",
+        op_index: int | None = None,
+        *,
+        confirmed: bool = False,
+    ) -> bool:
+        """Queue one line for the device; a line it could never take is refused here.
+
+        A console line that would move past the travel goes only ``confirmed``
+        (the console asks the operator first): the console is raw access, not
+        a way around the gate.
+        """
         line = text.strip()
         if not line:
             return False
+        if origin == "console" and not confirmed:
+            refusal = self.beyond_travel(line)
+            if refusal is not None:
+                self.model.message.emit(f"Not sent without confirmation: {refusal}")
+                return False
         try:
             raw = encode_line(line)
         except ValueError as exc:
@@ -206,6 +245,10 @@ class GcodeSession(MachineSession):
         except ValueError as exc:
             self.model.message.emit(f"Not sent: {line!r} ({exc})")
             return False
+        # The distance mode the board will be in: console lines are judged in it.  (A line
+        # without a 9 names neither G90 nor G91: job lines skip the parse on that.)
+        if origin != "job" or "9" in line:
+            self._relative = line_motion(line, self._relative, {}, ()).relative_after
         self._seen_idle = False
         self._pump()
         return True
@@ -444,6 +487,7 @@ class GcodeSession(MachineSession):
     # --- link events and replies -------------------------------------------------------
 
     def _forget_stream(self) -> list[SentLine]:
+        self._relative = False  # GRBL's power-on and reset mode is G90
         lost = self.streamer.clear()
         self._seen_idle = False
         self._jog_unanswered = 0

@@ -1,0 +1,62 @@
+"""Where a typed G-code line would send the machine: the motion gate's view of a console line.
+
+The console is the operator's raw access to the board, so its lines are not
+rewritten; but a line that would move beyond the travel is first shown to
+the operator for confirmation.  This reads just enough G-code for that: the
+distance mode in force (tracked from every line the station sent), G90/G91
+and G20/G21 on the line itself, ``$J=`` jogs and G53.  Lines that set
+coordinates (G92, G10) or home (G28, ``$H``) move nothing this check can
+place, and are let through.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+_COMMENT = re.compile(r"\([^)]*\)|;.*")
+_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+_INCH = 25.4
+#: Words after which axis letters are not a destination.
+_NOT_A_MOVE = frozenset({"G4", "G10", "G28", "G30", "G92"})
+
+
+@dataclass(frozen=True)
+class LineMotion:
+    """Where a line ends, per axis named on it, and the distance mode it leaves in force."""
+
+    targets: Mapping[str, float]
+    relative_after: bool
+
+
+def line_motion(
+    line: str, relative: bool, position: Mapping[str, float], axes: tuple[str, ...]
+) -> LineMotion:
+    """The targets of ``line`` for a machine at ``position`` in the given distance mode."""
+    text = line.strip().upper()
+    jog = text.startswith("$J=")
+    if jog:
+        text = text[3:]
+    elif text.startswith("$"):
+        return LineMotion({}, relative)
+    words = [(letter, float(number)) for letter, number in _WORD.findall(_COMMENT.sub("", text))]
+    codes = {f"{letter}{number:g}" for letter, number in words if letter in "GM"}
+    mode = relative
+    if "G90" in codes:
+        mode = False
+    if "G91" in codes:
+        mode = True
+    after = relative if jog else mode  # a jog leaves the modal state as it was
+    if codes & _NOT_A_MOVE:
+        return LineMotion({}, after)
+    scale = _INCH if "G20" in codes else 1.0
+    machine = "G53" in codes
+    targets: dict[str, float] = {}
+    for letter, number in words:
+        if letter not in axes:
+            continue
+        value = number * scale
+        here = position.get(letter, 0.0)
+        targets[letter] = here + value if mode and not machine else value
+    return LineMotion(targets, after)
