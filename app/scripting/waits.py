@@ -1,0 +1,33 @@
+"""One operation of the API as a generator of waits, run blocking or awaited.
+
+Each operation sends its intent, then *yields* what it waits for; the
+blocking form pumps the station until the wait is over, the asyncio form
+awaits between pumps.  So both forms share one implementation, and a
+failure seen while waiting (an end switch, a lost link) is raised by the
+wait's condition itself, in the caller's frame.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Generator
+from dataclasses import dataclass
+from typing import TypeVar
+
+T = TypeVar("T")
+
+
+@dataclass
+class Wait:
+    """Pump until ``until()`` is true; it may raise to end the wait with the device's reason."""
+
+    until: Callable[[], bool]
+    timeout: float
+    #: What is awaited, for the timeout's message ("X to reach 10.000 mm").
+    what: str
+    #: A motion is awaited: when the time is up, the machine is stopped before the raise.
+    motion: bool = True
+    #: The error raised when the time is up, instead of the generic one.
+    on_timeout: Callable[[], Exception] | None = None
+
+
+Operation = Generator[Wait, None, T]
