@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from app.scripting import aio
 from app.scripting.errors import (
+    CheckpointWaiting,
     ConnectionFailed,
     JobAborted,
     JobFailed,
@@ -28,6 +29,7 @@ from app.scripting.parameters import Difference
 
 __all__ = [
     "AxisStatus",
+    "CheckpointWaiting",
     "ConnectionFailed",
     "Difference",
     "JobAborted",

@@ -37,7 +37,14 @@ class MotionTimeout(StepdeckError):
 
 
 class ParameterRefused(StepdeckError):
-    """A parameter write was refused, by the station (the mechanics) or by the device."""
+    """A parameter write was refused, by the station (the mechanics) or by the device.
+
+    ``written`` holds the writes of the same call that the device confirmed.
+    """
+
+    def __init__(self, message: str, written: dict[str, dict[str, float]] | None = None) -> None:
+        super().__init__(message)
+        self.written = written or {}
 
 
 class WrongMachine(StepdeckError):
@@ -47,6 +54,15 @@ class WrongMachine(StepdeckError):
 class JobRefused(StepdeckError):
     """The job was not started: an unreadable file, an operation out of travel, a checkpoint
     waiting for a decision."""
+
+
+class CheckpointWaiting(JobRefused):
+    """An interrupted run of this job left a checkpoint: resume from it or start over."""
+
+    def __init__(self, message: str, done: int, total: int) -> None:
+        super().__init__(message)
+        self.done = done
+        self.total = total
 
 
 class JobAborted(StepdeckError):

@@ -26,7 +26,7 @@ from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import JobFileError
 from app.jobs.run.runner import JobRunner
 from app.jobs.run.states import ACTIVE, JobState
-from app.scripting.errors import JobAborted, JobFailed, JobRefused
+from app.scripting.errors import CheckpointWaiting, JobAborted, JobFailed, JobRefused
 from app.scripting.waits import Operation, Wait
 
 if TYPE_CHECKING:
@@ -130,9 +130,11 @@ def run_job(
         resumed_from = runner.resume_available
         if resumed_from is not None:
             if resume is None:
-                raise JobRefused(
+                raise CheckpointWaiting(
                     f"{program.name}: a checkpoint says {resumed_from} of {len(program)} "
-                    "operations are done; resume=True continues there, resume=False starts over"
+                    "operations are done; resume=True continues there, resume=False starts over",
+                    resumed_from,
+                    len(program),
                 )
             if resume:
                 runner.resume_from_checkpoint()
@@ -148,6 +150,7 @@ def run_job(
         progress_due = [0.0]
         clock = station.clock
         paused_by_script = [False]
+        why: list[str] = []  # why this module ended the job, when it did
 
         def report() -> None:
             if on_progress is None:
@@ -185,12 +188,12 @@ def run_job(
                     if on_prompt is not None and on_prompt(str(args[0])):
                         runner.confirm()
                     else:
-                        tell("The job asks for the operator and no one answered: aborting")
+                        why.append(f"the job asked {str(args[0])!r} and no one answered")
                         runner.abort()
                 elif kind == "decision":
                     question, again, done = (str(a) for a in args)
                     if on_decision is None:
-                        tell("Only the operator can tell whether it ran: aborting")
+                        why.append(f"{question} (no on_decision to answer it)")
                         runner.abort()
                     else:
                         runner.decide(again=on_decision(question, again, done))
@@ -211,7 +214,7 @@ def run_job(
         if state is JobState.DONE:
             report()
             return JobResult(program.name, len(program), runner.elapsed_s, resumed_from)
-        reason = said[-1] if said else state.value
+        reason = "; ".join([*why, said[-1] if said else state.value])
         error = JobFailed if state is JobState.FAILED else JobAborted
         raise error(reason, runner.done, len(program))
     except (GeneratorExit, KeyboardInterrupt):

@@ -34,6 +34,7 @@ from app.scripting.errors import (
     MotionFailed,
     MotionRefused,
     MotionTimeout,
+    ParameterRefused,
     StepdeckError,
     Unsupported,
 )
@@ -536,12 +537,18 @@ class Machine:
         self, values: Mapping[str, Mapping[str, float]], timeout: float, *, remember: bool = True
     ) -> Operation[dict[str, dict[str, float]]]:
         before = params.values_of(self.station.model)
-        written = yield from params.write(self, values, timeout)
-        if remember and written:
-            self._undo = {
-                axis: {name: before[axis][name] for name in names if name in before.get(axis, {})}
-                for axis, names in written.items()
-            }
+        written: dict[str, dict[str, float]] = {}
+        try:
+            written = yield from params.write(self, values, timeout)
+        except ParameterRefused as refused:
+            written = refused.written  # the writes that went through can be undone too
+            raise
+        finally:
+            if remember and written:
+                self._undo = {
+                    axis: {n: before[axis][n] for n in names if n in before.get(axis, {})}
+                    for axis, names in written.items()
+                }
         return written
 
     def _await_close(self) -> Operation[None]:

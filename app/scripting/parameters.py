@@ -131,9 +131,7 @@ def write(
                 f"and keeps {kept} {parameter.unit}".rstrip()
             )
     if refusals:
-        error = ParameterRefused("; ".join(refusals))
-        error.written = written  # type: ignore[attr-defined]
-        raise error
+        raise ParameterRefused("; ".join(refusals), written)
     return written
 
 
@@ -187,7 +185,10 @@ class Difference:
 
 def firmware_of(station: Station) -> str:
     value = station.model.telemetry.get("firmware_version")
-    return "unknown" if value is None else f"{value:g}"
+    if value is None:
+        return "unknown"
+    number = round(value)  # 010200 is 1.2.0 (PROTOCOLS.md 1.5)
+    return f"{number // 10000}.{number // 100 % 100}.{number % 100}"
 
 
 def save_snapshot(path: Path, station: Station, values: Mapping[str, Mapping[str, float]]) -> Path:
