@@ -77,7 +77,7 @@ def test_a_move_outside_the_travel_is_refused_by_the_gate_and_moves_nothing(
     stage.move_to(X=5, Y=5)
     with pytest.raises(stepdeck.MotionRefused, match=r"outside the travel 0…50 mm"):
         stage.move_to(Y=20, X=60)  # Y alone would be fine: nothing at all is sent
-    with pytest.raises(stepdeck.MotionRefused, match="from 5.000"):
+    with pytest.raises(stepdeck.MotionRefused, match=r"from 5\.000"):
         stage.move_by(X=-6)
     with pytest.raises(stepdeck.MotionRefused, match="no axis 'Q'"):
         stage.move_to(Q=1)
@@ -100,7 +100,7 @@ def test_home_returns_the_axis_to_its_origin(stage: Machine) -> None:
 
 
 def test_a_move_that_runs_out_of_time_stops_the_machine(stage: Machine) -> None:
-    with pytest.raises(stepdeck.MotionTimeout, match="not done within 0.2 s; stopped"):
+    with pytest.raises(stepdeck.MotionTimeout, match=r"not done within 0\.2 s; stopped"):
         stage.move_to(X=40, timeout=0.2)
     assert stage.stop()
     here = emulated_position(stage)[0]
@@ -264,9 +264,7 @@ def test_a_prompt_nobody_answers_aborts_the_job(stage: Machine, tmp_path: Path) 
     assert not stage.status.moving
 
 
-def test_a_job_leaving_the_travel_is_refused_with_its_line(
-    stage: Machine, tmp_path: Path
-) -> None:
+def test_a_job_leaving_the_travel_is_refused_with_its_line(stage: Machine, tmp_path: Path) -> None:
     job = tmp_path / "far.txt"
     job.write_text("1, 1\n80, 1\n", encoding="utf-8")
     with pytest.raises(stepdeck.JobRefused, match=r"far.txt:2"):

@@ -75,7 +75,10 @@ def build_parser() -> argparse.ArgumentParser:
         "--restart", action="store_true", help="discard an interrupted run's checkpoint"
     )
     parser.add_argument(
-        "--checkpoints", type=Path, metavar="DIR", help="checkpoint directory (default: the window's)"
+        "--checkpoints",
+        type=Path,
+        metavar="DIR",
+        help="checkpoint directory (default: the window's)",
     )
     parser.add_argument(
         "--yes", action="store_true", help="answer every wait: prompt with Enter (unattended)"
@@ -171,12 +174,18 @@ def main(argv: Sequence[str], out: TextIO | None = None, err: TextIO | None = No
             checkpoint_dir=args.checkpoints,
         )
         terminal.close()
-        print(f"done: {result.name}, {result.operations} operations in {result.elapsed_s:.1f} s", file=out)
+        print(
+            f"done: {result.name}, {result.operations} operations in {result.elapsed_s:.1f} s",
+            file=out,
+        )
         return DONE
     except KeyboardInterrupt:
         terminal.close()
-        print("stepdeck run: interrupted; the machine was stopped, the checkpoint kept "
-              "(--resume carries on)", file=err)
+        print(
+            "stepdeck run: interrupted; the machine was stopped, the checkpoint kept "
+            "(--resume carries on)",
+            file=err,
+        )
         return INTERRUPTED
     except CheckpointWaiting as exc:
         terminal.close()

@@ -44,19 +44,29 @@ class AsyncMachine:
         return self.machine.status
 
     async def move_to(
-        self, target: Mapping[str, float] | None = None, *, timeout: float | None = None, **axes: float
+        self,
+        target: Mapping[str, float] | None = None,
+        *,
+        timeout: float | None = None,
+        **axes: float,
     ) -> dict[str, float]:
         return await self._drive(self.machine._move(dict(target or {}, **axes), False, timeout))  # noqa: SLF001
 
     async def move_by(
-        self, delta: Mapping[str, float] | None = None, *, timeout: float | None = None, **axes: float
+        self,
+        delta: Mapping[str, float] | None = None,
+        *,
+        timeout: float | None = None,
+        **axes: float,
     ) -> dict[str, float]:
         return await self._drive(self.machine._move(dict(delta or {}, **axes), True, timeout))  # noqa: SLF001
 
     async def jog(self, direction: str | Mapping[str, int], seconds: float) -> dict[str, float]:
         return await self._drive(self.machine._jog(direction, seconds))  # noqa: SLF001
 
-    async def home(self, axis: str | None = None, *, timeout: float | None = None) -> dict[str, float]:
+    async def home(
+        self, axis: str | None = None, *, timeout: float | None = None
+    ) -> dict[str, float]:
         return await self._drive(self.machine._home(axis, timeout))  # noqa: SLF001
 
     async def stop(self) -> bool:

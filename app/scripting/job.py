@@ -18,7 +18,6 @@ from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QStandardPaths
 
@@ -27,10 +26,7 @@ from app.jobs.program import JobFileError
 from app.jobs.run.runner import JobRunner
 from app.jobs.run.states import ACTIVE, JobState
 from app.scripting.errors import CheckpointWaiting, JobAborted, JobFailed, JobRefused
-from app.scripting.waits import Operation, Wait
-
-if TYPE_CHECKING:
-    from app.scripting.machine import Machine
+from app.scripting.waits import MachinePort, Operation, Wait
 
 #: Seconds between progress calls while nothing else happens (the ETA moves on).
 PROGRESS_EVERY_S = 0.5
@@ -77,7 +73,7 @@ def default_checkpoint_dir() -> Path:
 
 
 def run_job(
-    machine: Machine,
+    machine: MachinePort,
     path: Path,
     *,
     on_progress: Callable[[Progress], None] | None = None,

@@ -38,6 +38,7 @@ from app.scripting.errors import (
     StepdeckError,
     Unsupported,
 )
+from app.scripting.job import JobResult, run_job
 from app.scripting.pump import Pump, RealtimePump, SimulatedPump, ensure_qt
 from app.scripting.waits import Operation, Wait
 from app.station import STOP_CONFIRM_S, Station
@@ -90,9 +91,7 @@ class Status:
 class Machine:
     """A connected machine; see the module docstring.  Build it with :func:`connect`."""
 
-    def __init__(
-        self, station: Station, pump: Pump, *, timeout: float = DEFAULT_TIMEOUT_S
-    ) -> None:
+    def __init__(self, station: Station, pump: Pump, *, timeout: float = DEFAULT_TIMEOUT_S) -> None:
         self.station = station
         self.timeout = timeout
         self._pump = pump
@@ -245,10 +244,8 @@ class Machine:
 
     # --- jobs ---------------------------------------------------------------------
 
-    def run(self, job_path: str | Path, **options: Any) -> Any:
+    def run(self, job_path: str | Path, **options: Any) -> JobResult:
         """Run a job file to its end; see :func:`app.scripting.job.run_job` for the options."""
-        from app.scripting.job import run_job
-
         return self._drive(run_job(self, Path(job_path), **options))
 
     # --- the end ------------------------------------------------------------------
@@ -321,7 +318,7 @@ class Machine:
         del self._messages[:-MESSAGES_KEPT]
 
     @contextmanager
-    def _explained(self) -> Iterator[list[str]]:
+    def explained(self) -> Iterator[list[str]]:
         """The station's messages while an intent is given: the reason when it is refused."""
         start = self._heard_count
         heard: list[str] = []
@@ -337,7 +334,7 @@ class Machine:
             raise LinkLost(f"not connected{f': {detail}' if detail else ''}")
         return session
 
-    def _axis(self, name: str) -> int:
+    def axis_index(self, name: str) -> int:
         names = [n.upper() for n in self.axes]
         try:
             return names.index(name.upper())
@@ -346,7 +343,7 @@ class Machine:
                 f"{self.profile.title} has no axis {name!r} (it has {', '.join(self.axes)})"
             ) from None
 
-    def _check_link(self) -> None:
+    def check_link(self) -> None:
         model = self.station.model
         if model.link_state in LINK_DOWN:
             raise LinkLost(f"link {model.link_state.value}: {model.link_detail}")
@@ -361,10 +358,10 @@ class Machine:
         gate = session.gate
         plan: list[tuple[int, float]] = []
         for name, value in wanted.items():
-            axis = self._axis(name)
+            axis = self.axis_index(name)
             value = float(value)
-            refusal = gate.refuse_relative(axis, value) if relative else gate.refuse_target(
-                axis, value
+            refusal = (
+                gate.refuse_relative(axis, value) if relative else gate.refuse_target(axis, value)
             )
             if refusal is not None:
                 raise MotionRefused(f"Motion refused: {refusal}")
@@ -373,7 +370,7 @@ class Machine:
         ends: dict[int, float] = {}
         for axis, delta in plan:
             here = gate.position(axis)
-            with self._explained() as heard:
+            with self.explained() as heard:
                 if relative or not _has_absolute(session):
                     sent = session.move_relative(axis, delta)
                 else:
@@ -397,7 +394,7 @@ class Machine:
         seen_moving: set[int] = set()
 
         def arrived() -> bool:
-            self._check_link()
+            self.check_link()
             now = clock.now()
             done = True
             for axis, end in ends.items():
@@ -429,18 +426,20 @@ class Machine:
         targets = ", ".join(f"{model.axes[a].name} {e:.3f}" for a, e in ends.items())
         yield Wait(arrived, timeout or self.timeout, f"moving to {targets}")
 
-    def _jog(self, direction: str | Mapping[str, int], seconds: float) -> Operation[dict[str, float]]:
+    def _jog(
+        self, direction: str | Mapping[str, int], seconds: float
+    ) -> Operation[dict[str, float]]:
         session = self._session()
         vector = [0] * len(self.axes)
         items = _parse_direction(direction) if isinstance(direction, str) else direction.items()
         for name, sign in items:
-            vector[self._axis(name)] = max(-1, min(1, int(sign)))
+            vector[self.axis_index(name)] = max(-1, min(1, int(sign)))
         if not any(vector):
             raise MotionRefused(f"no direction in {direction!r}")
         if not math.isfinite(seconds) or seconds < 0:
             raise MotionRefused(f"{seconds} s is not a jog's length")
         clock = self.station.clock
-        with self._explained() as heard:
+        with self.explained() as heard:
             session.set_jog(vector)
         if session.jog_vector != tuple(vector):
             raise MotionRefused("; ".join(heard) or "jog refused")
@@ -448,7 +447,7 @@ class Machine:
         fed = [clock.now()]
 
         def held() -> bool:
-            self._check_link()
+            self.check_link()
             now = clock.now()
             if now - fed[0] >= JOG_KEEPALIVE_S:
                 fed[0] = now
@@ -468,7 +467,7 @@ class Machine:
         since: list[float | None] = [None]
 
         def still() -> bool:
-            self._check_link()
+            self.check_link()
             session = self.station.session
             if session is None or not session.motion_stopped():
                 since[0] = None
@@ -483,8 +482,8 @@ class Machine:
 
     def _home(self, axis_name: str | None, timeout: float | None) -> Operation[dict[str, float]]:
         session = self._session()
-        axis = 0 if axis_name is None else self._axis(axis_name)
-        with self._explained() as heard:
+        axis = 0 if axis_name is None else self.axis_index(axis_name)
+        with self.explained() as heard:
             sent = session.home(axis)
         if not sent:
             raise (Unsupported if any("has no" in h for h in heard) else MotionRefused)(
@@ -496,7 +495,7 @@ class Machine:
         model = self.station.model
 
         def started() -> bool:
-            self._check_link()
+            self.check_link()
             if model.any_moving or any(a.status_text == "homing" for a in model.axes):
                 seen[0] = True
             return seen[0] or clock.now() - sent_at > 2.0
@@ -522,7 +521,7 @@ class Machine:
 
     def _sleep(self, asleep: bool, timeout: float) -> Operation[None]:
         session = self._session()
-        with self._explained() as heard:
+        with self.explained() as heard:
             session.set_sleep(asleep)
         if any("has no" in h for h in heard):
             raise Unsupported("; ".join(heard))

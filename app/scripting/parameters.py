@@ -19,18 +19,15 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from app.machine import MachineModel, ParameterState
 from app.machines.stage.parameters import BY_TYPE, STAGE_PARAMETERS, StageParameter
 from app.profiles import MachineProfile
 from app.scripting.errors import ParameterRefused, StepdeckError, Unsupported, WrongMachine
-from app.scripting.waits import Operation, Wait
+from app.scripting.waits import MachinePort, Operation, Wait
 from app.station import Station
 from protocol.stage.codec import PARAMETERS, Subscriber
-
-if TYPE_CHECKING:
-    from app.scripting.machine import Machine
 
 #: The snapshot format's version, written into every file.
 SNAPSHOT_FORMAT = 1
@@ -62,14 +59,14 @@ def values_of(model: MachineModel) -> dict[str, dict[str, float]]:
     return out
 
 
-def _stage(machine: Machine) -> Any:
+def _stage(machine: MachinePort) -> Any:
     session = machine.station.stage_session
     if session is None:
         raise Unsupported(f"{machine.profile.title} has no stored parameters the station reads")
     return session
 
 
-def read_all(machine: Machine, timeout: float) -> Operation[None]:
+def read_all(machine: MachinePort, timeout: float) -> Operation[None]:
     """Ask every parameter of every axis again; wait until each one has answered."""
     session = _stage(machine)
     model = machine.station.model
@@ -87,7 +84,7 @@ def read_all(machine: Machine, timeout: float) -> Operation[None]:
 
 
 def write(
-    machine: Machine, values: Mapping[str, Mapping[str, float]], timeout: float
+    machine: MachinePort, values: Mapping[str, Mapping[str, float]], timeout: float
 ) -> Operation[dict[str, dict[str, float]]]:
     """Write each value and wait for the device's verdict; refusals raise after all were tried."""
     session = _stage(machine)
@@ -95,7 +92,7 @@ def write(
     refusals: list[str] = []
     pending: list[tuple[int, StageParameter, int]] = []
     for axis_name, row in values.items():
-        axis = machine._axis(axis_name)  # noqa: SLF001 - the machine's own helper
+        axis = machine.axis_index(axis_name)
         for key, value in row.items():
             parameter = BY_NAME.get(key.lower())
             if parameter is None:
@@ -110,14 +107,14 @@ def write(
     written: dict[str, dict[str, float]] = {}
     for axis, parameter, wire in pending:
         name = model.axes[axis].name
-        with machine._explained() as heard:  # noqa: SLF001
+        with machine.explained() as heard:
             sent = session.write_parameter(axis, parameter.type, wire)
         if not sent:
             refusals.append("; ".join(heard) or f"{name} {parameter.label}: not written")
             continue
 
         def answered(axis: int = axis, parameter: StageParameter = parameter) -> bool:
-            machine._check_link()  # noqa: SLF001
+            machine.check_link()
             return model.parameter(axis, parameter.type).state is not ParameterState.PENDING
 
         yield Wait(answered, timeout, f"{name} {parameter.label} to be confirmed", motion=False)
@@ -135,7 +132,7 @@ def write(
     return written
 
 
-def read_firmware(machine: Machine, timeout: float) -> Operation[None]:
+def read_firmware(machine: MachinePort, timeout: float) -> Operation[None]:
     """Have the stage report its firmware version (a subscriber asked for once)."""
     session = _stage(machine)
     model = machine.station.model

@@ -10,8 +10,12 @@ wait's condition itself, in the caller's frame.
 from __future__ import annotations
 
 from collections.abc import Callable, Generator
+from contextlib import AbstractContextManager
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import Protocol, TypeVar
+
+from app.profiles import MachineProfile
+from app.station import Station
 
 T = TypeVar("T")
 
@@ -31,3 +35,25 @@ class Wait:
 
 
 Operation = Generator[Wait, None, T]
+
+
+class MachinePort(Protocol):
+    """What the API's parameter and job modules need of a machine (so they need not import it)."""
+
+    @property
+    def station(self) -> Station: ...
+
+    @property
+    def profile(self) -> MachineProfile: ...
+
+    def axis_index(self, name: str) -> int:
+        """The axis called ``name`` (any case); MotionRefused naming the axes if none is."""
+        ...
+
+    def explained(self) -> AbstractContextManager[list[str]]:
+        """The station's messages said while the block runs (a refusal's reason)."""
+        ...
+
+    def check_link(self) -> None:
+        """Raise LinkLost when the link is down."""
+        ...
