@@ -317,3 +317,37 @@ def test_stepdeck_imports_without_a_display_and_without_widgets() -> None:
     )
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "[]"
+
+
+# --- the other machines ----------------------------------------------------------------
+
+
+DRILL_FILE = "M48\nMETRIC,TZ\nT01C0.8\n%\nT01\nX5.0Y5.0\nX10.0Y5.0\nX10.0Y12.0\nM30\n"
+
+
+def test_the_drill_moves_in_whole_microsteps_and_runs_a_drill_file(
+    qapp: object, tmp_path: Path
+) -> None:
+    job = tmp_path / "holes.drl"
+    job.write_text(DRILL_FILE, encoding="utf-8")
+    with stepdeck.connect("pcb-drill", emulator=True, simulated=True) as drill:
+        where = drill.move_to(X=10, Y=5)  # 19.7 microsteps to the mm: Y ends at 5.025
+        assert where["X"] == pytest.approx(10.0, abs=0.06)
+        assert where["Y"] == pytest.approx(5.0, abs=0.06)
+        assert drill.home() == pytest.approx({"X": 0.0, "Y": 0.0})
+        done: list[int] = []
+        result = drill.run(
+            job, on_progress=lambda p: done.append(p.done), checkpoint_dir=tmp_path / "ck"
+        )
+    assert result.operations == 7  # pen/tool operations around the three holes
+    assert done == sorted(done) and done[-1] == 7
+
+
+def test_a_gcode_board_moves_through_the_gate_and_homes(qapp: object) -> None:
+    with stepdeck.connect("grbl-plotter", emulator=True, simulated=True) as plotter:
+        assert plotter.move_to(X=10, Y=5) == pytest.approx({"X": 10.0, "Y": 5.0}, abs=0.01)
+        with pytest.raises(stepdeck.MotionRefused, match="outside the travel"):
+            plotter.move_by(X=-20)
+        assert plotter.home() == pytest.approx({"X": 0.0, "Y": 0.0}, abs=0.01)
+        with pytest.raises(stepdeck.Unsupported, match="has no sleep"):
+            plotter.sleep()

@@ -24,6 +24,8 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from app.machine import LinkState
+from app.machines.drill.session import DrillSession
+from app.machines.gcode.session import GcodeSession
 from app.machines.session import MachineSession
 from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile, ProfileError, load_profile
@@ -380,6 +382,8 @@ class Machine:
                 raise MotionRefused("; ".join(heard) or f"{self.axes[axis]} move refused")
             if isinstance(session, Usb3Session):
                 ends[axis] = here + session.reachable(axis, delta)
+            elif isinstance(session, DrillSession):  # whole microsteps, 19.7 to the mm
+                ends[axis] = session.to_mm(axis, session.to_microsteps(axis, here + delta))
             else:
                 ends[axis] = here + delta
         yield from self._settle(ends, timeout)
@@ -395,7 +399,13 @@ class Machine:
 
         def arrived() -> bool:
             self.check_link()
+            session = self._session()
+            _raise_alarm(session, self._messages)
             now = clock.now()
+            if _busy(session):  # a queue still runs: the axes wait their turn
+                for axis in still_since:
+                    still_since[axis] = None
+                return False
             done = True
             for axis, end in ends.items():
                 state = model.axes[axis]
@@ -469,7 +479,9 @@ class Machine:
         def still() -> bool:
             self.check_link()
             session = self.station.session
-            if session is None or not session.motion_stopped():
+            if session is not None:
+                _raise_alarm(session, self._messages)
+            if session is None or not session.motion_stopped() or _busy(session):
                 since[0] = None
                 return False
             started = since[0]
@@ -558,6 +570,22 @@ class Machine:
             "the stop before closing",
             motion=False,
         )
+
+
+def _busy(session: MachineSession) -> bool:
+    """Whether commands the session sent (or queued) are still being carried out."""
+    if isinstance(session, DrillSession):
+        return session.busy
+    if isinstance(session, GcodeSession):
+        return not session.settled
+    return False
+
+
+def _raise_alarm(session: MachineSession, messages: list[str]) -> None:
+    """A G-code board in alarm has stopped whatever it was doing: say so with its words."""
+    if isinstance(session, GcodeSession) and session.machine_state.startswith("Alarm"):
+        said = f": {messages[-1]}" if messages else ""
+        raise MotionFailed(f"the machine is in alarm{said}")
 
 
 def _has_absolute(session: MachineSession) -> bool:
