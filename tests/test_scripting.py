@@ -336,11 +336,16 @@ def test_the_drill_moves_in_whole_microsteps_and_runs_a_drill_file(
         assert where["Y"] == pytest.approx(5.0, abs=0.06)
         assert drill.home() == pytest.approx({"X": 0.0, "Y": 0.0})
         done: list[int] = []
+        asked: list[str] = []
         result = drill.run(
-            job, on_progress=lambda p: done.append(p.done), checkpoint_dir=tmp_path / "ck"
+            job,
+            on_progress=lambda p: done.append(p.done),
+            on_prompt=lambda text: asked.append(text) is None,
+            checkpoint_dir=tmp_path / "ck",
         )
     assert result.operations == 7  # pen/tool operations around the three holes
     assert done == sorted(done) and done[-1] == 7
+    assert asked == ["insert T01, 0.80 mm (3 holes)"]
 
 
 def test_a_gcode_board_moves_through_the_gate_and_homes(qapp: object) -> None:
