@@ -356,3 +356,42 @@ def test_a_gcode_board_moves_through_the_gate_and_homes(qapp: object) -> None:
         assert plotter.home() == pytest.approx({"X": 0.0, "Y": 0.0}, abs=0.01)
         with pytest.raises(stepdeck.Unsupported, match="has no sleep"):
             plotter.sleep()
+
+
+def test_a_job_paused_from_the_progress_callback_waits_until_resumed(
+    stage: Machine, tmp_path: Path
+) -> None:
+    job = tmp_path / "route.txt"
+    job.write_text("1, 1\n5, 1\n5, 5\n1, 5\n", encoding="utf-8")
+    states: list[tuple[int, str]] = []
+
+    def progress(p: stepdeck.Progress) -> None:
+        states.append((p.done, p.state))
+        if p.done == 2 and p.state == "running":
+            p.pause()
+        elif p.state == "paused" and sum(s == "paused" for _, s in states) == 3:
+            p.resume()
+
+    result = stage.run(job, on_progress=progress, checkpoint_dir=tmp_path / "ck")
+    assert result.operations == 4
+    paused = [done for done, state in states if state == "paused"]
+    # The operation under way when the pause was asked finished; nothing ran while paused.
+    assert paused == [3, 3, 3]
+    assert states[-1] == (4, "done")
+
+
+def test_an_error_in_a_callback_stops_the_job_and_reaches_the_script(
+    stage: Machine, tmp_path: Path
+) -> None:
+    job = tmp_path / "route.txt"
+    job.write_text("1, 1\n30, 1\n30, 30\n", encoding="utf-8")
+
+    def progress(p: stepdeck.Progress) -> None:
+        if p.done == 1:
+            raise RuntimeError("the camera is gone")
+
+    with pytest.raises(RuntimeError, match="camera"):
+        stage.run(job, on_progress=progress, checkpoint_dir=tmp_path / "ck")
+    assert not stage.status.moving
+    with pytest.raises(stepdeck.CheckpointWaiting):  # the checkpoint was kept
+        stage.run(job, checkpoint_dir=tmp_path / "ck")
