@@ -395,3 +395,24 @@ def test_an_error_in_a_callback_stops_the_job_and_reaches_the_script(
     assert not stage.status.moving
     with pytest.raises(stepdeck.CheckpointWaiting):  # the checkpoint was kept
         stage.run(job, checkpoint_dir=tmp_path / "ck")
+
+
+def test_cancelling_an_awaited_move_stops_the_machine(qapp: object) -> None:
+    async def scenario() -> tuple[float, bool]:
+        machine = await stepdeck.aio.connect("xy-stage", emulator=True, simulated=True)
+        try:
+            task = asyncio.create_task(machine.move_to(X=40))
+            while not machine.status.moving:
+                await asyncio.sleep(0)
+            task.cancel()
+            with pytest.raises(asyncio.CancelledError):
+                await task
+            for _ in range(400):  # two emulated seconds: time to reach 40 had it run on
+                machine.machine._pump.step()
+            return machine.position["X"], machine.status.moving
+        finally:
+            machine.close()
+
+    where, moving = asyncio.run(scenario())
+    assert not moving
+    assert 0 < where < 40

@@ -72,6 +72,12 @@ class AsyncMachine:
     async def stop(self) -> bool:
         return await self._drive(self.machine._stop())  # noqa: SLF001
 
+    async def sleep(self, asleep: bool = True, *, timeout: float = 5.0) -> None:
+        await self._drive(self.machine._sleep(asleep, timeout))  # noqa: SLF001
+
+    async def wake(self, *, timeout: float = 5.0) -> None:
+        await self._drive(self.machine._sleep(False, timeout))  # noqa: SLF001
+
     async def read_parameters(self, *, timeout: float = 10.0) -> dict[str, dict[str, float]]:
         return await self._drive(self.machine._read_parameters(timeout))  # noqa: SLF001
 

@@ -259,6 +259,7 @@ class Machine:
             self._drive(self._await_close())
         station.shutdown()
         station.model.message.disconnect(self._heard)
+        self._pump.close()
 
     def __enter__(self) -> Machine:
         return self

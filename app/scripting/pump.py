@@ -43,6 +43,9 @@ class Pump(Protocol):
     def step(self, *, block: bool = True) -> None:
         """Let the station run a little: deliver what arrived, fire due timers."""
 
+    def close(self) -> None:
+        """The machine is closed: nothing is waited for any more."""
+
 
 class RealtimePump:
     """Real time: Qt's own timers tick the session; a wait sleeps until something happens."""
@@ -59,6 +62,9 @@ class RealtimePump:
             else QEventLoop.ProcessEventsFlag.AllEvents
         )
         QCoreApplication.processEvents(flag)
+
+    def close(self) -> None:
+        self._wake.stop()
 
 
 class SimulatedPump:
@@ -80,3 +86,6 @@ class SimulatedPump:
         if loopback is not None:
             loopback.pump()
         QCoreApplication.processEvents()
+
+    def close(self) -> None:
+        """Nothing runs on its own on a manual clock."""
