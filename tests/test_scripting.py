@@ -407,7 +407,7 @@ def test_cancelling_an_awaited_move_stops_the_machine(qapp: object) -> None:
             task.cancel()
             with pytest.raises(asyncio.CancelledError):
                 await task
-            for _ in range(400):  # two emulated seconds: time to reach 40 had it run on
+            for _ in range(1000):  # five emulated seconds: 40 mm at 10 mm/s would be reached
                 machine.machine._pump.step()
             return machine.position["X"], machine.status.moving
         finally:
