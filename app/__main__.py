@@ -36,6 +36,7 @@ from app.station import Station
 #: ``stepdeck NAME …`` runs module's ``main(argv) -> int`` with the rest of the command line.
 SUBCOMMANDS = {
     "check": "app.cli.check",
+    "run": "app.cli.run",
     "string-art": "app.cli.string_art",
 }
 

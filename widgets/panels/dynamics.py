@@ -6,6 +6,11 @@ or refused together with the value the device kept.  Only values the operator
 actually edited are written, so Apply cannot overwrite a parameter with a
 field that was never filled from the device.
 
+Snapshots save every stored parameter to a TOML file (machine, firmware,
+date); loading one shows what differs from the device and writes only that,
+after the operator confirms (and confirms again for another machine's file).
+Undo writes back what the last Apply or load replaced.
+
 A value outside what the machine may take is framed red as it is typed and
 is not sent; the travel (the device's soft limit) may not exceed the
 profile's mechanical travel, since beyond it the device would drive into its
@@ -14,10 +19,14 @@ end switch believing it had room.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from PySide6.QtWidgets import (
+    QFileDialog,
     QGridLayout,
     QHBoxLayout,
     QLabel,
+    QMessageBox,
     QPushButton,
     QVBoxLayout,
     QWidget,
@@ -30,6 +39,16 @@ from app.machines.stage.parameters import (
     StageParameter,
     check_for_axis,
     wire_limits,
+)
+from app.scripting.errors import StepdeckError
+from app.scripting.parameters import (
+    BY_NAME,
+    Difference,
+    check_machine,
+    diff,
+    load_snapshot,
+    save_snapshot,
+    values_of,
 )
 from app.station import Station
 from protocol.stage.codec import EchoType
@@ -52,6 +71,10 @@ class DynamicsPanel(QWidget):
         self.states: dict[_Key, QLabel] = {}
         self._edited: set[_Key] = set()
         self._filling = False
+        #: What the last Apply or snapshot load replaced: (axis, parameter type, wire value).
+        self._undo: list[tuple[int, int, int]] = []
+        #: The open "write these differences?" question, while it is asked.
+        self.confirm_box: QMessageBox | None = None
 
         grid = QGridLayout()
         grid.setHorizontalSpacing(10)
@@ -79,11 +102,23 @@ class DynamicsPanel(QWidget):
         self.apply_button = QPushButton("Apply")
         self.apply_button.setToolTip("Write the edited values to the device; it confirms each one")
         self.apply_button.clicked.connect(self.apply)
+        self.save_button = QPushButton("Save snapshot…")
+        self.save_button.setToolTip("Save every stored parameter to a TOML file")
+        self.save_button.clicked.connect(self._ask_save)
+        self.load_button = QPushButton("Load snapshot…")
+        self.load_button.setToolTip("Show what a snapshot changes, then write only that")
+        self.load_button.clicked.connect(self._ask_load)
+        self.undo_button = QPushButton("Undo last write")
+        self.undo_button.setToolTip("Write back what the last Apply or load replaced")
+        self.undo_button.clicked.connect(self.undo)
         self.summary = QLabel()
         self.summary.setWordWrap(True)
         buttons = QHBoxLayout()
         buttons.addWidget(self.read_button)
         buttons.addWidget(self.apply_button)
+        buttons.addWidget(self.save_button)
+        buttons.addWidget(self.load_button)
+        buttons.addWidget(self.undo_button)
         buttons.addWidget(self.summary, 1)
 
         layout = QVBoxLayout(self)
@@ -134,6 +169,7 @@ class DynamicsPanel(QWidget):
             return 0
         sent = 0
         reasons: list[str] = []
+        replaced: list[tuple[int, int, int]] = []
         for key in sorted(self._edited):
             axis, type_ = key
             parameter = BY_TYPE[type_]
@@ -153,11 +189,136 @@ class DynamicsPanel(QWidget):
                 self._set_state(key, "✗ not sent", _RED, refused)
                 reasons.append(f"{self._model.axes[axis].name} {refused}")
                 continue
+            previous = self._model.parameter(axis, type_).value
             if session.write_parameter(axis, parameter.type, wire):
                 sent += 1
+                if previous is not None:
+                    replaced.append((axis, type_, previous))
+        if replaced:
+            self._undo = replaced
+        self._update_enabled()
         parts = [f"{sent} value(s) written"] if sent else []
         parts += [f"not sent: {reason}" for reason in reasons]
         self.summary.setText("; ".join(parts) or "Nothing changed")
+        return sent
+
+    # --- snapshots ------------------------------------------------------------
+
+    def _ask_save(self) -> None:
+        path, _ = QFileDialog.getSaveFileName(
+            self, "Save parameter snapshot", "", "Parameter snapshots (*.toml)"
+        )
+        if path:
+            self.save_snapshot(Path(path))
+
+    def _ask_load(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(
+            self, "Load parameter snapshot", "", "Parameter snapshots (*.toml)"
+        )
+        if path:
+            self.load_snapshot(Path(path))
+
+    def save_snapshot(self, path: Path) -> bool:
+        """Save what the device answered (the fields' last reads and confirmed writes)."""
+        values = values_of(self._model)
+        missing = [
+            f"{axis} {name}"
+            for axis, row in values.items()
+            for name in BY_NAME
+            if BY_NAME[name].writable and name not in row
+        ]
+        if missing:
+            self.summary.setText(f"Not saved: not read yet: {', '.join(missing[:4])} — press Read")
+            return False
+        try:
+            save_snapshot(path, self._station, values)
+        except OSError as exc:
+            self.summary.setText(f"Not saved: {exc}")
+            return False
+        self.summary.setText(f"Snapshot saved to {path.name}")
+        return True
+
+    def load_snapshot(self, path: Path) -> list[Difference]:
+        """Show what ``path`` changes and ask before writing it; returns the differences."""
+        try:
+            snapshot = load_snapshot(path)
+            other = False
+            try:
+                check_machine(snapshot, self._station.profile, other_machine=False)
+            except StepdeckError:
+                other = True
+            differences = [d for d in diff(snapshot, values_of(self._model)) if d.writable]
+        except StepdeckError as exc:
+            self.summary.setText(f"Not loaded: {exc}")
+            return []
+        if not differences:
+            self.summary.setText(f"{path.name}: the device already holds every value")
+            return []
+        box = QMessageBox(self)
+        box.setObjectName("snapshot_confirm")
+        box.setWindowTitle("Load parameter snapshot")
+        lines = "\n".join(str(d) for d in differences)
+        text = f"{len(differences)} value(s) of {path.name} differ from the device:\n\n{lines}"
+        if other:
+            box.setIcon(QMessageBox.Icon.Warning)
+            text = (
+                f"This snapshot is of another machine ({snapshot.title or snapshot.profile}, "
+                f"firmware {snapshot.firmware}, {snapshot.date}), not "
+                f"{self._station.profile.title}.\n\n" + text
+            )
+        box.setText(text)
+        write = box.addButton(
+            "Write anyway" if other else f"Write {len(differences)}",
+            QMessageBox.ButtonRole.AcceptRole,
+        )
+        box.addButton(QMessageBox.StandardButton.Cancel)
+        box.setModal(True)
+
+        def answered() -> None:
+            if box.clickedButton() is write:
+                self._write_differences(differences)
+            else:
+                self.summary.setText("Snapshot not loaded")
+            self.confirm_box = None
+            box.deleteLater()
+
+        box.finished.connect(lambda _result: answered())
+        self.confirm_box = box
+        box.open()  # never blocks: the answer arrives as a click
+        return differences
+
+    def _write_differences(self, differences: list[Difference]) -> None:
+        session = self._station.stage_session
+        if session is None:
+            self.summary.setText("Not written: not connected")
+            return
+        names = [axis.name for axis in self._model.axes]
+        replaced: list[tuple[int, int, int]] = []
+        sent = 0
+        for difference in differences:
+            axis = names.index(difference.axis)
+            parameter = BY_NAME[difference.name]
+            previous = self._model.parameter(axis, int(parameter.type)).value
+            if session.write_parameter(axis, parameter.type, parameter.to_wire(difference.wanted)):
+                sent += 1
+                if previous is not None:
+                    replaced.append((axis, int(parameter.type), previous))
+        if replaced:
+            self._undo = replaced
+        self._update_enabled()
+        self.summary.setText(f"{sent} value(s) written from the snapshot; the device confirms each")
+
+    def undo(self) -> int:
+        """Write back what the last Apply or load replaced; returns how many were sent."""
+        session = self._station.stage_session
+        if session is None or not self._undo:
+            return 0
+        undo, self._undo = self._undo, []
+        sent = sum(
+            1 for axis, type_, wire in undo if session.write_parameter(axis, EchoType(type_), wire)
+        )
+        self._update_enabled()
+        self.summary.setText(f"{sent} value(s) written back")
         return sent
 
     # --- model → fields ------------------------------------------------------
@@ -213,3 +374,6 @@ class DynamicsPanel(QWidget):
         live = self._model.link_state in (LinkState.CONNECTED, LinkState.STALE)
         self.read_button.setEnabled(live)
         self.apply_button.setEnabled(live)
+        self.load_button.setEnabled(live)
+        self.save_button.setEnabled(live)
+        self.undo_button.setEnabled(live and bool(self._undo))

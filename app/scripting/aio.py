@@ -1,0 +1,122 @@
+"""The asyncio form: ``m = await stepdeck.aio.connect(...)``, then ``await m.move_to(X=5)``.
+
+The same operations as the blocking :class:`~app.scripting.machine.Machine`
+(one implementation, :mod:`app.scripting.waits`), awaited instead of
+blocked on: between two looks at the device the coroutine yields to the
+asyncio loop, so other tasks (a camera, a measurement) run while the
+machine moves.  Qt still runs in the loop's thread, pumped without blocking,
+so the machine must be used from the thread that runs the asyncio loop.
+Cancelling a task that waits for a motion stops the machine.
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any, TypeVar
+
+from app.profiles import MachineProfile
+from app.scripting.job import run_job
+from app.scripting.machine import Machine, Status
+from app.scripting.machine import connect as connect_blocking
+from app.scripting.pump import SimulatedPump
+from app.scripting.waits import Operation
+
+T = TypeVar("T")
+
+#: Seconds the loop is given between two pumps in real time.
+POLL_S = 0.005
+
+
+class AsyncMachine:
+    """A :class:`Machine` whose waits are awaited; ``.machine`` is the blocking one."""
+
+    def __init__(self, machine: Machine) -> None:
+        self.machine = machine
+
+    @property
+    def position(self) -> dict[str, float]:
+        return self.machine.position
+
+    @property
+    def status(self) -> Status:
+        return self.machine.status
+
+    async def move_to(
+        self,
+        target: Mapping[str, float] | None = None,
+        *,
+        timeout: float | None = None,
+        **axes: float,
+    ) -> dict[str, float]:
+        return await self._drive(self.machine._move(dict(target or {}, **axes), False, timeout))  # noqa: SLF001
+
+    async def move_by(
+        self,
+        delta: Mapping[str, float] | None = None,
+        *,
+        timeout: float | None = None,
+        **axes: float,
+    ) -> dict[str, float]:
+        return await self._drive(self.machine._move(dict(delta or {}, **axes), True, timeout))  # noqa: SLF001
+
+    async def jog(self, direction: str | Mapping[str, int], seconds: float) -> dict[str, float]:
+        return await self._drive(self.machine._jog(direction, seconds))  # noqa: SLF001
+
+    async def home(
+        self, axis: str | None = None, *, timeout: float | None = None
+    ) -> dict[str, float]:
+        return await self._drive(self.machine._home(axis, timeout))  # noqa: SLF001
+
+    async def stop(self) -> bool:
+        return await self._drive(self.machine._stop())  # noqa: SLF001
+
+    async def sleep(self, asleep: bool = True, *, timeout: float = 5.0) -> None:
+        await self._drive(self.machine._sleep(asleep, timeout))  # noqa: SLF001
+
+    async def wake(self, *, timeout: float = 5.0) -> None:
+        await self._drive(self.machine._sleep(False, timeout))  # noqa: SLF001
+
+    async def read_parameters(self, *, timeout: float = 10.0) -> dict[str, dict[str, float]]:
+        return await self._drive(self.machine._read_parameters(timeout))  # noqa: SLF001
+
+    async def write_parameters(
+        self, values: Mapping[str, Mapping[str, float]], *, timeout: float = 10.0
+    ) -> dict[str, dict[str, float]]:
+        return await self._drive(self.machine._write_parameters(values, timeout))  # noqa: SLF001
+
+    async def run(self, job_path: str | Path, **options: Any) -> Any:
+        return await self._drive(run_job(self.machine, Path(job_path), **options))
+
+    def close(self) -> None:
+        self.machine.close()
+
+    async def _drive(self, operation: Operation[T]) -> T:
+        machine = self.machine
+        clock = machine.station.clock
+        pump = machine._pump  # noqa: SLF001 - the same station, pumped without blocking
+        simulated = isinstance(pump, SimulatedPump)
+        try:
+            wait = next(operation)
+            while True:
+                deadline = clock.now() + wait.timeout
+                while not wait.until():
+                    if clock.now() > deadline:
+                        operation.close()
+                        raise machine._timed_out(wait)  # noqa: SLF001
+                    pump.step(block=False)
+                    await asyncio.sleep(0 if simulated else POLL_S)
+                wait = operation.send(None)
+        except StopIteration as stop:
+            value: T = stop.value
+            return value
+        except (asyncio.CancelledError, KeyboardInterrupt):
+            operation.close()
+            machine._stop_after_interrupt()  # noqa: SLF001
+            raise
+
+
+async def connect(profile: str | MachineProfile, **link: Any) -> AsyncMachine:
+    """As :func:`stepdeck.connect`; the wait for the device's first answer blocks briefly."""
+    return AsyncMachine(connect_blocking(profile, **link))
