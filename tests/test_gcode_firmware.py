@@ -189,6 +189,22 @@ def test_string_art_rapid_is_limited_to_2000_steps_and_500_per_second_squared() 
     assert move["t"] == pytest.approx(START + t0 + 8.8)
 
 
+def test_the_winder_switches_drivers_off_until_their_axis_moves() -> None:
+    """FIDELITY S0-25: the firmware disables its drivers while waiting and the drill's driver
+    while winding (``digitalWrite(enablePinVrtani, LOW)``); emulated as ``M18 [axes]``."""
+    bench = Bench(string_art_config())
+    assert bench.do("G0 A10 X20 Z5", "M18") == [Ok(), Ok()]
+    assert bench.fw.drivers_off == {"A", "X", "Z"}
+    assert bench.fw.position() == {"A": 10.0, "X": 20.0, "Z": 5.0}  # nothing moved
+    assert bench.do("G0 X30") == [Ok()]
+    assert bench.fw.drivers_off == {"A", "Z"}  # a move switches on only what it moves
+    assert bench.do("G0 A20 Z0", "M18 Z0") == [Ok(), Ok()]
+    assert bench.fw.drivers_off == {"Z"} and bench.fw.position()["Z"] == 0.0
+    assert [e["axes"] for e in bench.events("drivers off")] == ["AXZ", "Z"]
+    assert bench.do("M18 G0 X1") == [ErrorReply(24)]  # motion on a driver line: refused
+    assert Bench(corexy_plotter_config()).do("M18") == [ErrorReply(20)]  # the winder's only
+
+
 # -- timing ----------------------------------------------------------------------------------
 
 

@@ -69,6 +69,7 @@ from protocol.emulator.gcode_machine import (
 )
 from protocol.emulator.gcode_planner import (
     Block,
+    DriversOff,
     Dwell,
     HoldState,
     Move,
@@ -153,6 +154,8 @@ class GcodeFirmware(ControlCycles):
         self._lost_booting = 0
         #: 0x85 came during a jog: brake, then drop the jog's blocks once it stands.
         self._jog_cancelling = False
+        #: Axes whose drivers ``M18`` switched off (a move switches them on again).
+        self._drivers_off: set[str] = set()
         self._send_banner()
 
     # -- EmulatedDevice --------------------------------------------------------------------
@@ -326,6 +329,12 @@ class GcodeFirmware(ControlCycles):
         """The last ``M99`` level, if any."""
         with self._lock:
             return self._interpreter.servo_level
+
+    @property
+    def drivers_off(self) -> frozenset[str]:
+        """The axes whose drivers are off (``M18``) until a move of that axis."""
+        with self._lock:
+            return frozenset(self._drivers_off)
 
     @property
     def event_log(self) -> tuple[GcodeEvent, ...]:
@@ -502,9 +511,21 @@ class GcodeFirmware(ControlCycles):
         t = self.time + into
         match block:
             case Move():
+                moved = {
+                    axis
+                    for axis, a, b in zip(self.config.axes, block.start, block.end, strict=True)
+                    if a != b
+                }
+                if moved & self._drivers_off:
+                    self._log("drivers on", t, axes="".join(sorted(moved & self._drivers_off)))
+                    self._drivers_off -= moved
                 self._log(
                     "move", t, kind=block.kind, pos=self._where(block.end), pen=self._pen_down
                 )
+            case DriversOff():
+                names = [self.config.axes[i] for i in block.axes]
+                self._drivers_off.update(names)
+                self._log("drivers off", t, axes="".join(names))
             case PenChange():
                 self._set_pen(block.down, block.spindle, t)
             case Dwell():

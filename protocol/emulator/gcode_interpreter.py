@@ -18,6 +18,10 @@ Decisions the contract leaves open, made here:
 - ``M98``/``M99`` take their number bare (``M98 500``) or as ``P``; a step
   interval of 0 or less, or a negative servo level, is ``error:4``.
 - ``M2``/``M30`` end the program: G1 and G90 again, and the pen up.
+- ``M18`` (the winder only) switches off the drivers of the axes it names
+  (``M18 Z0``: an axis word's value is not used, but this parser's words
+  need one), every driver when it names none (Marlin's form); it moves
+  nothing, and the next move of an axis switches its driver on again.
 """
 
 from __future__ import annotations
@@ -26,7 +30,15 @@ import math
 from dataclasses import dataclass, replace
 
 from protocol.emulator.gcode_machine import GcodeConfig, PenMapping
-from protocol.emulator.gcode_planner import Block, Dwell, Move, Pause, PenChange, SetPosition
+from protocol.emulator.gcode_planner import (
+    Block,
+    DriversOff,
+    Dwell,
+    Move,
+    Pause,
+    PenChange,
+    SetPosition,
+)
 from protocol.gcode.words import EXPECTED_COMMAND_LETTER, Word
 
 # GRBL's error codes the parser gives.
@@ -59,6 +71,7 @@ _M_GROUPS = {
     **dict.fromkeys((0, 1, 2, 30), "flow"),
     **dict.fromkeys((3, 4, 5), "spindle"),
     **dict.fromkeys((98, 99), "plotter"),
+    18: "drivers",
 }
 #: Value words besides the axes; each may appear once per line.
 _VALUE_LETTERS = "FSPIJR"
@@ -180,6 +193,8 @@ class Interpreter:
             return self.config.arcs
         if letter == "M" and code in (98, 99):
             return self.config.plotter_codes
+        if letter == "M" and code == 18:
+            return self.config.drivers_off
         return True
 
     # -- planning the line -------------------------------------------------------------------
@@ -260,6 +275,12 @@ class Interpreter:
             return AXIS_COMMAND_CONFLICT
         axis_words = {a: v for a, v in values.items() if a in cfg.axes}
         position = self.position
+        if "drivers" in line.m:
+            if motion_given is not None or nonmodal in (28, 92):
+                return AXIS_COMMAND_CONFLICT
+            named = [cfg.index(a) for a in cfg.axes if a in axis_words]
+            blocks.append(DriversOff(tuple(named) or tuple(range(len(cfg.axes)))))
+            axis_words = {}
         if nonmodal == 92:
             if not axis_words:
                 return NO_AXIS_WORDS

@@ -78,6 +78,8 @@ class GcodeConfig:
     plotter_codes: bool = False
     #: GRBL 1.1's ``$J=`` jog lines and the 0x85 jog cancel.
     jogging: bool = False
+    #: ``M18 [axes]`` switches drivers off (the winder while it waits, its drill while winding).
+    drivers_off: bool = False
     #: Units/min a G1 runs at before any F; None refuses it (``error:22``).
     default_feed: float | None = None
     #: Largest distance of an arc's chord from the arc (GRBL's $12).
@@ -176,4 +178,5 @@ def string_art_config() -> GcodeConfig:
         acceleration=500.0,
         pen=PenMapping.SPINDLE,
         default_feed=60_000.0,
+        drivers_off=True,
     )
