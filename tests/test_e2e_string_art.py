@@ -234,7 +234,12 @@ def run_to_end(winder: StationHarness, runner: JobRunner) -> None:
 def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
     winder: StationHarness, runner: JobRunner, shared_dir: Path, sample: str
 ) -> None:
-    """Drill every nail, wait untouched, wind the first connections with a pause half way."""
+    """Drill every nail, wait untouched, wind the first connections with a pause half way.
+
+    On the emulated winder, as its firmware (FIDELITY S0-15, S0-16, S0-18, S0-25): each
+    plunge to 20 mm / sin 74.333°, the wait at nail 0 with every driver off, the drill's
+    driver off after the winding.
+    """
     wall = time.perf_counter()
     begun = winder.clock.now()
     full = read_string_art(shared_dir / "samples" / f"string-art-{sample}" / "poradi.txt")

@@ -18,6 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.profiles import load_profile
 from protocol.clock import ManualClock
 from protocol.emulator.gcode_firmware import (
     GcodeConfig,
@@ -189,6 +190,16 @@ def test_a_bare_g92_sets_the_corexy_plotters_origin() -> None:
     assert bench.do("G1 X5") == [Ok()]
     assert bench.fw.position() == {"X": 5.0, "Y": 0.0, "Z": 0.0}
     assert Bench(grbl_plotter_config()).do("G92") == [ErrorReply(26)]
+
+
+def test_the_corexy_plotter_draws_on_a_whole_a4_sheet() -> None:
+    """FIDELITY S1-16: "Kreslící plocha plotteru bude rozměru alespoň A4" (297 by 210 mm)."""
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("G1 X297 Y210") == [Ok()]
+    assert bench.fw.position() == {"X": 297.0, "Y": 210.0, "Z": 0.0}
+    assert bench.do("G1 Y210.5") == [ErrorReply(15)]
+    profile = load_profile("corexy-plotter")  # the station's profile agrees
+    assert [a.travel for a in profile.axes] == [300.0, 210.0]
 
 
 def test_m99_lifts_the_corexy_pen_to_its_pwm_level() -> None:

@@ -315,6 +315,8 @@ def replay(program: StringArtProgram) -> list[dict[str, float]]:
 @settings(max_examples=150, deadline=None)
 @given(data=st.data())
 def test_no_turn_exceeds_half_a_turn_and_the_nails_come_in_file_order(data: st.DataObject) -> None:
+    """Any board and sequence: turns within half a turn, the nails in file order, the needle
+    2 cm inside the innermost nail and 2 cm outside the nail it wraps (FIDELITY S0-20)."""
     nails = data.draw(st.integers(3, 400), label="nails")
     tvar = data.draw(st.sampled_from([0, *range(3, 13)]), label="tvar")
     # Room for the needle 2 cm inside a triangle's mid-edge nails: 8 cm and more.
