@@ -1,7 +1,8 @@
 """The emulated usb3 unit against PROTOCOLS.md section 2, driven through encoded commands.
 
 Every number asserted here is worked out by hand from the defaults: a speed
-table from 9.375 to 300 pulses/s (index i: 300 (i + 1) / 32), 600 pulses/s²,
+table from 9.375 to 300 pulses/s (index i: 9.375 + 290.625 (i / 31)², slow at low
+deflections as the original's, FIDELITY S4-13), 600 pulses/s²,
 1/8 step (4 counts a pulse) and M6 thread (6400 counts a mm).  A move from
 rest jumps to 9.375 pulses/s and ramps to 300 in (300 - 9.375) / 600 =
 0.484375 s, covering (300² - 9.375²) / 1200 = 74.9267578125 pulses; it brakes
@@ -10,10 +11,12 @@ the same way.  Cycles are 5 ms, reports every 100 ms.
 
 from __future__ import annotations
 
+from itertools import pairwise
+
 import pytest
 
 from protocol.clock import ManualClock
-from protocol.emulator.usb3_firmware import Usb3Firmware, joystick_deflection
+from protocol.emulator.usb3_firmware import SPEED_TABLE, Usb3Firmware, joystick_deflection
 from protocol.usb3.codec import (
     AxisId,
     Command,
@@ -322,12 +325,17 @@ def test_joystick_in_the_dead_zone_does_nothing(bench: Bench) -> None:
 
 
 def test_joystick_speed_grows_with_deflection_and_release_stops(bench: Bench) -> None:
-    bench.fw.set_joystick(Y, 600)  # index 4: 300 x 5/32 pulses/s
+    """FIDELITY S4-13: the speed grows slowly at small deflections (a parabola), fast near
+    the end, for a precise joystick."""
+    bench.fw.set_joystick(Y, 600)  # index 4: 9.375 + 290.625 x (4/31)² pulses/s
     bench.run(1.0)
-    assert bench.fw.pulse_rate(Y) == pytest.approx(46.875)
-    bench.fw.set_joystick(Y, 774)  # index 15
+    assert bench.fw.pulse_rate(Y) == pytest.approx(9.375 + 290.625 * 16 / 961)
+    bench.fw.set_joystick(Y, 774)  # index 15: not yet a third of the top speed
     bench.run(1.0)
-    assert bench.fw.pulse_rate(Y) == pytest.approx(150.0)
+    assert bench.fw.pulse_rate(Y) == pytest.approx(9.375 + 290.625 * 225 / 961)
+    assert bench.fw.pulse_rate(Y) < 300.0 / 3
+    steps = [b - a for a, b in pairwise(SPEED_TABLE)]
+    assert all(b > a for a, b in pairwise(steps))  # each index adds more than the one before
     bench.fw.set_joystick(Y, 1023)  # index 31
     replies = bench.run(1.0)
     assert bench.fw.pulse_rate(Y) == pytest.approx(300.0)

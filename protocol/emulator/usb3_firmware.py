@@ -74,9 +74,12 @@ from protocol.usb3.codec import (
 )
 
 SPEED_TABLE_SIZE = 32
-#: Pulses per second of each speed index: evenly spaced up to the unit's ~300.
+#: Pulses per second of each speed index, from 9.375 to the unit's ~300 along a parabola:
+#: "v nízkých rychlostech motory akcelerují mnohem pomaleji než ve vyšších rychlostech"
+#: (FIDELITY S4-13): a small deflection of the joystick changes the speed little, for
+#: precise positioning; the original's table values are not given, only this shape.
 SPEED_TABLE: tuple[float, ...] = tuple(
-    300.0 * (i + 1) / SPEED_TABLE_SIZE for i in range(SPEED_TABLE_SIZE)
+    9.375 + (300.0 - 9.375) * (i / (SPEED_TABLE_SIZE - 1)) ** 2 for i in range(SPEED_TABLE_SIZE)
 )
 
 ADC_MAX = 1023
