@@ -16,7 +16,12 @@ from itertools import pairwise
 import pytest
 
 from protocol.clock import ManualClock
-from protocol.emulator.usb3_firmware import SPEED_TABLE, Usb3Firmware, joystick_deflection
+from protocol.emulator.usb3_firmware import (
+    SPEED_TABLE,
+    Usb3Eeprom,
+    Usb3Firmware,
+    joystick_deflection,
+)
 from protocol.usb3.codec import (
     AxisId,
     Command,
@@ -271,6 +276,25 @@ def test_get_settings_replies_with_step_sizes_and_threads(bench: Bench) -> None:
     assert bench.exchange(encode(GetSettings())) == b"M015;T063;"
     assert bench.fw.step_sizes == setting.sizes
     assert bench.fw.threads == threads.threads
+
+
+def test_step_sizes_and_threads_survive_a_power_cycle_in_eeprom() -> None:
+    """FIDELITY S4-19: the original keeps step sizes and threads in EEPROM, so the operator
+    need not set them at every power-on; a blank EEPROM gives the defaults."""
+    clock = ManualClock(start=START)
+    eeprom = Usb3Eeprom()
+    first = Usb3Firmware(clock, eeprom=eeprom)
+    assert first.step_sizes == (StepSize.EIGHTH,) * 3 and first.threads == (Thread.M6,) * 3
+    first.receive(encode(StepSizes((StepSize.FULL, StepSize.HALF, StepSize.QUARTER))))
+    clock.advance(CYCLE)
+    first.run_until(clock.now())
+    first.menu_set(threads=(Thread.M2, Thread.M8, Thread.M10))
+    first.menu_set(threads=(Thread.M2, Thread.M8, Thread.M10))  # no change: no write
+    assert eeprom.writes == 2
+    again = Usb3Firmware(clock, eeprom=eeprom)  # switched off and on
+    assert again.step_sizes == (StepSize.FULL, StepSize.HALF, StepSize.QUARTER)
+    assert again.threads == (Thread.M2, Thread.M8, Thread.M10)
+    assert Usb3Firmware(clock).step_sizes == (StepSize.EIGHTH,) * 3  # no EEPROM: defaults
 
 
 def test_the_menu_reports_its_changes_unprompted(bench: Bench) -> None:

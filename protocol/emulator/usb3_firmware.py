@@ -15,7 +15,11 @@ mm/s, as on the real unit.
 Decisions the contract leaves open, made here:
 
 - Power-on settings: 1/8 step (a common DRV8825 setting) and M6 thread
-  (1.0 mm pitch, so 6400 counts are 1 mm) on every axis.
+  (1.0 mm pitch, so 6400 counts are 1 mm) on every axis, on a unit whose
+  EEPROM is blank.  The original keeps step sizes and threads in EEPROM "aby
+  obsluha zařízení nemusela při každém zapnutí nastavovat" (FIDELITY S4-19):
+  given a :class:`Usb3Eeprom`, the unit powers on with what it holds and
+  writes every change (``M``, ``T``, the menu) to it.
 - A move's count that is not a whole number of pulses is rounded *down* to
   whole pulses, as integer division on the unit would; the station avoids it
   with :func:`~protocol.usb3.codec.nearest_reachable_count`.
@@ -95,6 +99,16 @@ _PULSE_EPS = 1e-6
 _EPS = 1e-9
 #: Commands kept for inspection, bounded for an emulator left running for days.
 COMMAND_LOG_LENGTH = 1000
+
+
+@dataclass
+class Usb3Eeprom:
+    """The unit's EEPROM: the step sizes and threads it powers on with (None: blank)."""
+
+    step_sizes: Triple[StepSize] | None = None
+    threads: Triple[Thread] | None = None
+    #: Writes so far (the part wears: the firmware writes only on a change).
+    writes: int = 0
 
 
 @dataclass(frozen=True)
@@ -184,8 +198,11 @@ class Usb3Firmware(ControlCycles):
     the same re-entrant lock.
     """
 
-    def __init__(self, clock: Clock, config: Usb3Config | None = None) -> None:
+    def __init__(
+        self, clock: Clock, config: Usb3Config | None = None, eeprom: Usb3Eeprom | None = None
+    ) -> None:
         self.config = config if config is not None else Usb3Config()
+        self.eeprom = eeprom
         super().__init__(clock, self.config.control_cycle)
         self._decoder = CommandDecoder()
         self._queue: deque[Command | Rejected] = deque()
@@ -201,7 +218,21 @@ class Usb3Firmware(ControlCycles):
             start_speed=self.config.speed_table[0],
             position_um=_FAR,
         )
-        return _Motor(mechanism, self.config.step_sizes[axis], self.config.threads[axis])
+        sizes, threads = self.config.step_sizes, self.config.threads
+        if self.eeprom is not None:
+            sizes = self.eeprom.step_sizes or sizes
+            threads = self.eeprom.threads or threads
+        return _Motor(mechanism, sizes[axis], threads[axis])
+
+    def _save_settings(self) -> None:
+        """Keep the step sizes and threads in EEPROM, as the original does, when they changed."""
+        if self.eeprom is None:
+            return
+        sizes = (self._motors[0].step_size, self._motors[1].step_size, self._motors[2].step_size)
+        threads = (self._motors[0].thread, self._motors[1].thread, self._motors[2].thread)
+        if (sizes, threads) != (self.eeprom.step_sizes, self.eeprom.threads):
+            self.eeprom.step_sizes, self.eeprom.threads = sizes, threads
+            self.eeprom.writes += 1
 
     # -- EmulatedDevice --------------------------------------------------------
 
@@ -289,6 +320,7 @@ class Usb3Firmware(ControlCycles):
                     motor.step_size = StepSize(step_sizes[index])
                 if threads is not None:
                     motor.thread = Thread(threads[index])
+            self._save_settings()
             self._outbox.append(self._settings())
 
     def set_joystick(self, axis: AxisId, adc: int) -> None:
@@ -358,9 +390,11 @@ class Usb3Firmware(ControlCycles):
             case StepSizes(sizes):
                 for motor, size in zip(self._motors, sizes, strict=True):
                     motor.step_size = size
+                self._save_settings()
             case Threads(threads):
                 for motor, thread in zip(self._motors, threads, strict=True):
                     motor.thread = thread
+                self._save_settings()
             case ZeroAll():
                 self._zero_all()
             case GetSettings():
