@@ -18,6 +18,7 @@ import pytest
 from protocol.clock import ManualClock
 from protocol.emulator.usb3_firmware import (
     SPEED_TABLE,
+    Usb3Config,
     Usb3Eeprom,
     Usb3Firmware,
     joystick_deflection,
@@ -295,6 +296,27 @@ def test_step_sizes_and_threads_survive_a_power_cycle_in_eeprom() -> None:
     assert again.step_sizes == (StepSize.FULL, StepSize.HALF, StepSize.QUARTER)
     assert again.threads == (Thread.M2, Thread.M8, Thread.M10)
     assert Usb3Firmware(clock).step_sizes == (StepSize.EIGHTH,) * 3  # no EEPROM: defaults
+
+
+def test_an_end_switch_stops_its_motor_and_the_others_go_on() -> None:
+    """FIDELITY S4-18: six end-stop inputs; one pressed interrupts the program and stops
+    the right motor."""
+    clock = ManualClock(start=START)
+    ends = ((1000.0, 2000.0), (50_000.0, 50_000.0), (50_000.0, 50_000.0))
+    fw = Usb3Firmware(clock, Usb3Config(end_switches=ends))
+    out = bytearray()
+    fw.set_output(out.extend)
+    fw.receive(encode(Move(X, 8000)) + encode(Move(Y, 8000)))
+    for _ in range(round(40 / CYCLE)):
+        clock.advance(CYCLE)
+        fw.run_until(clock.now())
+    assert fw.positions[0] == 2000  # stopped at the high switch, 2000 counts on
+    assert fw.axes[0].end_switch_high and not fw.axes[0].moving
+    assert fw.positions[1] == 8000  # Y went on to its target
+    replies = ReplyDecoder().feed(bytes(out))
+    assert Position(X, 2000) in replies  # and the unit said where X stopped
+    with pytest.raises(ValueError):
+        Usb3Config(end_switches=((0.0, 1.0), (1.0, 1.0), (1.0, 1.0)))
 
 
 def test_the_menu_reports_its_changes_unprompted(bench: Bench) -> None:

@@ -36,8 +36,14 @@ Decisions the contract leaves open, made here:
 - Position reports come on one 100 ms timer for all moving axes (X, Y, Z
   order); an axis that stops reports once more, as does every axis after
   ``C;`` and an axis given a move of less than one pulse.
-- The unit has no end switches; the mechanism's sit ``2**30`` counts (tens of
-  kilometres of thread) either side of the power-on position, out of reach.
+- End switches: the original has six end-stop inputs, and "při stisku
+  tlačítka koncového dorazu dojde … k přerušení programu a zastaví se
+  správný motor" (FIDELITY S4-18).  :attr:`Usb3Config.end_switches` places
+  them, per axis, that many counts below and above the power-on position;
+  the axis that reaches one stops dead there (the interrupt), reports where
+  it stands, and the others go on.  By default they sit ``2**30`` counts
+  (tens of kilometres of thread) away, out of reach, since the reference
+  unit's mechanics are not given.
 
 Time only moves in :meth:`Usb3Firmware.run_until`, in whole control cycles:
 commands that arrived since the previous cycle are handled at its start, the
@@ -123,8 +129,12 @@ class Usb3Config:
     acceleration: float = 600.0
     control_cycle: float = 0.005
     report_interval: float = 0.1
+    #: Counts from the power-on position to each axis' low and high end switch.
+    end_switches: Triple[tuple[float, float]] = ((_FAR, _FAR), (_FAR, _FAR), (_FAR, _FAR))
 
     def __post_init__(self) -> None:
+        if any(not (low > 0 and high > 0) for low, high in self.end_switches):
+            raise ValueError(f"end switches lie either side of power-on, got {self.end_switches}")
         table = self.speed_table
         if len(table) != SPEED_TABLE_SIZE:
             raise ValueError(f"the speed table needs {SPEED_TABLE_SIZE} entries, got {len(table)}")
@@ -212,17 +222,18 @@ class Usb3Firmware(ControlCycles):
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
 
     def _make_motor(self, axis: AxisId) -> _Motor:
+        low, high = self.config.end_switches[axis]
         mechanism = Axis(
-            AxisLimits(travel_um=2 * _FAR, microstep_um=1.0),
+            AxisLimits(travel_um=low + high, microstep_um=1.0),
             acceleration=self.config.acceleration,
             start_speed=self.config.speed_table[0],
-            position_um=_FAR,
+            position_um=low,
         )
         sizes, threads = self.config.step_sizes, self.config.threads
         if self.eeprom is not None:
             sizes = self.eeprom.step_sizes or sizes
             threads = self.eeprom.threads or threads
-        return _Motor(mechanism, sizes[axis], threads[axis])
+        return _Motor(mechanism, sizes[axis], threads[axis], zero=low)
 
     def _save_settings(self) -> None:
         """Keep the step sizes and threads in EEPROM, as the original does, when they changed."""
