@@ -284,6 +284,17 @@ def test_a_profile_loaded_from_a_file_opens_and_leaves_the_remembered_one(
             launcher.window.close()
 
 
+def test_the_plotters_sender_arguments_port_and_file_are_taken() -> None:
+    """FIDELITY S1-15: the CoreXY plotter's sender takes the serial port and the file;
+    ``stepdeck --port DEVICE --profile corexy-plotter FILE`` names both (the job then waits
+    in the jobs dock for Start: a machine never moves without the operator)."""
+    args = build_parser().parse_args(
+        ["--port", "/dev/ttyACM0", "--profile", "corexy-plotter", "unicorn.gcode"]
+    )
+    assert args.port == "/dev/ttyACM0" and args.profile == "corexy-plotter"
+    assert args.job == Path("unicorn.gcode")
+
+
 def test_a_job_named_on_the_command_line_is_read_into_the_jobs_dock(
     qtbot: QtBot, store: QSettings, tmp_path: Path
 ) -> None:
