@@ -64,9 +64,11 @@ class Case:
 
 
 def winder_operations(nails: int, entries: int) -> int:
-    """A string-art program: a comment, four moves per nail, the tool out; a comment, the
-    wait, turn and needle in; four moves per further entry; the closing comment."""
-    return 1 + 4 * nails + 1 + 1 + 1 + 2 + 4 * (entries - 1) + 1
+    """A string-art program as the firmware runs it: a comment, the drill to 1 cm above the
+    board, per nail four moves and the 250 ms dwell, back to nail 0 (turn, radius); a
+    comment, drivers off, the wait, out, turn, in, turn back, the drill's driver off; four
+    moves per further entry; the closing comment."""
+    return 1 + 1 + 5 * nails + 2 + 1 + 1 + 1 + 4 + 1 + 4 * (entries - 1) + 1
 
 
 def materialise(case: Case, folder: Path) -> Path:

@@ -160,11 +160,13 @@ def test_homing_runs_x_then_y_to_the_switches_and_on_to_the_offsets() -> None:
 
 
 def test_after_homing_the_far_ends_of_the_travel_are_the_other_switches() -> None:
+    """FIDELITY S2-27: X 4200 and Y 3000 microsteps, 212 by 152 mm, hold an A5 board."""
     bench = Bench()
     bench.home()
-    bench.send(move_x(4000), move_y(3000))
+    bench.send(move_x(4200), move_y(3000))
     bench.run_until_done()
-    assert bench.fw.positions == (4000, 3000, 0)
+    assert bench.fw.positions == (4200, 3000, 0)
+    assert 4200 / 19.8 >= 210.0 and 3000 / 19.7 >= 148.0
     x_axis, y_axis, _ = bench.fw.axes
     assert x_axis.end_switch_high and y_axis.end_switch_high
 
@@ -174,7 +176,7 @@ def test_a_target_beyond_the_travel_is_clamped_to_it() -> None:
     bench.home()
     bench.send(move_x(5000))
     replies = bench.run_until_done()
-    assert bench.fw.positions == (4000, 0, 0)
+    assert bench.fw.positions == (4200, 0, 0)
     assert replies[-1][1] == done("X")
 
 

@@ -44,7 +44,8 @@ def test_profile_constants_are_the_reference_machines() -> None:
     assert profile.dialect == "drill"
     assert profile.link.baud == 19200
     assert [a.name for a in profile.axes] == ["X", "Y"]
-    assert [a.travel for a in profile.axes] == [200.0, 150.0]
+    # FIDELITY S2-27: the original drills boards up to A5 (148 x 210 mm).
+    assert [a.travel for a in profile.axes] == [210.0, 150.0]
     caps = profile.capabilities
     assert (caps.home, caps.drill, caps.pen, caps.stop_command) == (True, True, True, False)
 
@@ -103,10 +104,10 @@ def test_move_x_rounds_on_the_host_and_the_model_follows_the_done(
 
 def test_moves_outside_the_travel_are_refused(drill: StationHarness, messages: list[str]) -> None:
     mark = len(drill.written)
-    assert not drill.drill_session.move_absolute(X, 200.5)
+    assert not drill.drill_session.move_absolute(X, 210.5)
     assert not drill.drill_session.move_absolute(Y, -0.1)
     assert drill.written[mark:] == []
-    assert any("200.5" in m and "travel" in m for m in messages)
+    assert any("210.5" in m and "travel" in m for m in messages)
     assert drill.drill_session.move_absolute(Y, 150.0)
     assert drill.written[mark:] == [b"Y2955\r"]
 

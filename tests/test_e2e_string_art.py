@@ -29,7 +29,7 @@ import numpy as np
 import pytest
 from pytestqt.qtbot import QtBot
 
-from app.jobs.formats.string_art.geometry import DRILL_DEPTH_MM, shortest_turn
+from app.jobs.formats.string_art.geometry import along_drill_axis_mm, shortest_turn
 from app.jobs.formats.string_art.program import StringArtProgram, build_program
 from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams, read_string_art
 from app.jobs.program import OpKind
@@ -46,6 +46,10 @@ ANGLE_TOLERANCE_DEG = 0.01
 RADIUS_TOLERANCE_MM = 0.01
 #: Generous bounds on emulated time, so that a hang fails instead of spinning.
 DRILL_TIMEOUT_S = 2500.0
+#: Z at a hole's bottom: 1 cm above the board plus 1 cm deep, along the 74.333° axis (S0-15).
+DRILL_BOTTOM_Z = along_drill_axis_mm(20.0)
+#: Z resolution: 133.3 microsteps a mm.
+Z_STEP = 1 / 133.3
 WIND_TIMEOUT_S = 1500.0
 
 Position = dict[str, float]
@@ -142,7 +146,10 @@ class Board:
 
 
 def drilled(log: list[GcodeEvent], board: Board) -> list[int]:
-    """Each plunge (Z down to the drill depth, then straight back to 0) as the nail it made."""
+    """Each plunge (Z down to the hole's bottom, then straight back to 0) as the nail it made.
+
+    FIDELITY S0-15/S0-16: the bottom is 20 mm / sin 74.333° from Z 0 (1 cm above the board).
+    """
     found: list[int] = []
     previous: Position = {"A": 0.0, "X": 0.0, "Z": 0.0}
     for n, event in enumerate(log):
@@ -151,7 +158,7 @@ def drilled(log: list[GcodeEvent], board: Board) -> list[int]:
             # Z moves on its own, only down to the depth and straight back.
             assert (pos["A"], pos["X"]) == (previous["A"], previous["X"]), event
             if pos["Z"] != 0.0:
-                assert pos["Z"] == pytest.approx(DRILL_DEPTH_MM, abs=1e-6), event
+                assert pos["Z"] == pytest.approx(DRILL_BOTTOM_Z, abs=Z_STEP), event
                 assert previous["Z"] == 0.0, event
                 assert log[n + 1]["pos"] == {**pos, "Z": 0.0}, "no straight way back out"
                 at = board.at(pos["A"], pos["X"])
@@ -169,9 +176,11 @@ def wound(places: list[Position], board: Board) -> list[int]:
     one angle) and coming back in (at another) it turns across exactly one
     nail: the one the thread wraps.  Out and back in at the same angle
     wraps nothing (a resumed job may do that), and the first move in — the
-    start, beside the first nail — wraps nothing either.
+    start, beside the first nail, out and in at different angles — wraps
+    nothing either.
     """
     out_at: float | None = None
+    started = False
     side = board.side(places[0]["X"])
     visited: list[int] = []
     for previous, pos in pairwise(places):
@@ -185,6 +194,8 @@ def wound(places: list[Position], board: Board) -> list[int]:
             continue
         if now == "out":
             out_at = pos["A"]
+        elif not started:
+            started = True
         elif out_at is not None and abs(out_at - pos["A"]) > 1e-6:
             across = board.inside(out_at, pos["A"])
             assert len(across) == 1, f"a wrap from A {out_at} to {pos['A']} crosses {across}"
@@ -223,7 +234,12 @@ def run_to_end(winder: StationHarness, runner: JobRunner) -> None:
 def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
     winder: StationHarness, runner: JobRunner, shared_dir: Path, sample: str
 ) -> None:
-    """Drill every nail, wait untouched, wind the first connections with a pause half way."""
+    """Drill every nail, wait untouched, wind the first connections with a pause half way.
+
+    On the emulated winder, as its firmware (FIDELITY S0-15, S0-16, S0-18, S0-25): each
+    plunge to 20 mm / sin 74.333°, the wait at nail 0 with every driver off, the drill's
+    driver off after the winding.
+    """
     wall = time.perf_counter()
     begun = winder.clock.now()
     full = read_string_art(shared_dir / "samples" / f"string-art-{sample}" / "poradi.txt")
@@ -245,11 +261,14 @@ def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
     assert holes == list(range(job.params.nails))
     assert Counter(holes).most_common(1)[0][1] == 1
 
-    # Waiting: the machine stands idle out beyond the nails and nothing moves, however long.
+    # Waiting (FIDELITY S0-18, S0-25): the machine stands idle at nail 0, its drivers off,
+    # and nothing moves, however long.
     assert winder.gcode_emulator.state == "Idle"
     standing = winder.gcode_emulator.position()
-    assert standing["X"] == pytest.approx(program.needle_out_radius_mm, abs=1e-3)
+    assert standing["A"] % 360 == pytest.approx(0.0, abs=1e-3)
+    assert standing["X"] == pytest.approx(float(board.radii[0]), abs=1e-3)
     assert standing["Z"] == pytest.approx(0.0, abs=1e-6)
+    assert winder.gcode_emulator.drivers_off == {"A", "X", "Z"}
     logged = len(winder.gcode_emulator.event_log)
     winder.run(LEFT_ALONE_S)
     assert runner.state is JobState.WAITING
@@ -273,6 +292,7 @@ def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
     run_to_end(winder, runner)
     assert runner.state is JobState.DONE
     assert winder.gcode_emulator.state == "Idle"
+    assert winder.gcode_emulator.drivers_off == {"Z"}  # the drill's, off while winding
 
     # The winding starts beside the first nail, then goes round the nails in file order.
     places = [drill_log[-1]["pos"], *track(winder, confirmed_at)]

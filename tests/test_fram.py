@@ -16,9 +16,11 @@ def fram() -> Fram:
 
 
 def test_addresses_follow_the_documented_map(fram: Fram) -> None:
-    assert fram.address_of(0, EchoType.FAST_SPEED) == 0x00
-    assert fram.address_of(0, EchoType.ACCELERATION) == 0x08
-    assert fram.address_of(1, EchoType.ACCELERATION) == 0x48
+    """FIDELITY S3-14: the original stores the acceleration from address 0x0000."""
+    assert fram.address_of(0, EchoType.ACCELERATION) == 0x00
+    assert fram.address_of(0, EchoType.FAST_SPEED) == 0x08
+    assert fram.address_of(0, EchoType.SLOW_SPEED) == 0x04
+    assert fram.address_of(1, EchoType.ACCELERATION) == 0x40
     assert fram.address_of(1, EchoType.TRAVEL) == 0x64
     assert fram.address_of(0, EchoType.IRUN) == fram.address_of(0, EchoType.IHOLD) == 0x10
 
@@ -32,7 +34,7 @@ def test_encoder_and_missing_axes_have_no_address(fram: Fram) -> None:
 
 def test_words_are_stored_lsb_first(fram: Fram) -> None:
     assert fram.write(1, EchoType.ACCELERATION, 20000)
-    assert fram.dump(0x48, 4) == bytes([0x20, 0x4E, 0x00, 0x00])
+    assert fram.dump(0x40, 4) == bytes([0x20, 0x4E, 0x00, 0x00])
     assert fram.read(1, EchoType.ACCELERATION) == 20000
     assert fram.read(0, EchoType.ACCELERATION) == 0
 

@@ -18,6 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.profiles import load_profile
 from protocol.clock import ManualClock
 from protocol.emulator.gcode_firmware import (
     GcodeConfig,
@@ -112,7 +113,9 @@ class Bench:
 
 
 def corexy_counts(x: float, y: float) -> tuple[int, int]:
-    return round((x - y) / MM_PER_STEP), round((x + y) / MM_PER_STEP)
+    """Motor a = x - y, b = x + y, of each axis' whole steps (truncated, FIDELITY S1-03)."""
+    sx, sy = math.trunc(x / MM_PER_STEP), math.trunc(y / MM_PER_STEP)
+    return sx - sy, sx + sy
 
 
 # -- kinematics ------------------------------------------------------------------------------
@@ -125,9 +128,10 @@ def test_corexy_square_moves_the_motors_a_x_minus_y_and_b_x_plus_y() -> None:
         assert bench.do(f"G1 X{x} Y{y}") == [Ok()]
         assert bench.fw.position() == {"X": x, "Y": y, "Z": 0.0}
         assert bench.fw.motor_counts() == (*corexy_counts(x, y), 0)
-    # By hand: 100 / 0.00245 = 40816.3 and 200 / 0.00245 = 81632.7.
+    # By hand: 100 / 0.00245 = 40816.3, truncated 40816 on each axis (FIDELITY S1-03:
+    # rounding 200 / 0.00245 = 81632.7 would give 81633).
     assert corexy_counts(100, 0) == (40816, 40816)
-    assert corexy_counts(100, 100) == (0, 81633)
+    assert corexy_counts(100, 100) == (0, 81632)
     assert corexy_counts(0, 100) == (-40816, 40816)
 
 
@@ -149,9 +153,63 @@ def test_the_corexy_plotter_answers_OK_and_ERROR() -> None:
     clock.advance(CYCLE)
     board.run_until(clock.now())
     board.receive(b"G0 X1\nG7\n")
-    clock.advance(CYCLE)
+    clock.advance(0.05)  # OK once the 1 mm is drawn (408 steps at 40 000 a second)
     board.run_until(clock.now())
     assert bytes(out) == b"\r\n" + PLOTTER_BANNER.encode() + b"\r\nOK\r\nERROR:20\r\n"
+
+
+def test_the_corexy_plotter_answers_OK_when_the_move_is_done_and_parses_after_it() -> None:
+    """FIDELITY S1-04 (the original executes a line, then prints OK) and S1-03/S1-04: a
+    move runs at one step interval from its first step to its last, mm → steps truncated."""
+    bench = Bench(corexy_plotter_config())
+    bench.send("G1 X10", "G1 X0")
+    t0 = bench.elapsed
+    got = bench.run(1.0)
+    # 10 / 0.00245 = 4081.6: 4081 steps at 40 000 a second (25 µs), no ramp up or down.
+    first = 4081 / 40_000
+    oks = [t for t, reply in got if reply == Ok()]
+    assert len(oks) == 2
+    assert t0 + first <= oks[0] <= t0 + first + CYCLE
+    (go, back) = bench.events("move")
+    assert go["t"] == pytest.approx(START + t0 + first)
+    # The second line is parsed only after the first's OK: at the next control cycle.
+    assert first <= back["t"] - go["t"] <= first + CYCLE
+    assert back["t"] - START <= oks[1] <= back["t"] - START + CYCLE
+    assert Bench(corexy_plotter_config()).fw.config.motor_counts((0.00489, 0.0, 0.0)) == (
+        1,
+        1,
+        0,
+    )  # 1.996 steps: one whole step (rounding would make two)
+
+
+def test_a_bare_g92_sets_the_corexy_plotters_origin() -> None:
+    """FIDELITY S1-07: "G92 ; nastav aktuální pozici jako počátek" (GRBL refuses it)."""
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("G1 X20 Y10", "G92") == [Ok(), Ok()]
+    assert bench.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert bench.do("G1 X5") == [Ok()]
+    assert bench.fw.position() == {"X": 5.0, "Y": 0.0, "Z": 0.0}
+    assert Bench(grbl_plotter_config()).do("G92") == [ErrorReply(26)]
+
+
+def test_the_corexy_plotter_draws_on_a_whole_a4_sheet() -> None:
+    """FIDELITY S1-16: "Kreslící plocha plotteru bude rozměru alespoň A4" (297 by 210 mm)."""
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("G1 X297 Y210") == [Ok()]
+    assert bench.fw.position() == {"X": 297.0, "Y": 210.0, "Z": 0.0}
+    assert bench.do("G1 Y210.5") == [ErrorReply(15)]
+    profile = load_profile("corexy-plotter")  # the station's profile agrees
+    assert [a.travel for a in profile.axes] == [300.0, 210.0]
+
+
+def test_m99_lifts_the_corexy_pen_to_its_pwm_level() -> None:
+    """FIDELITY S1-10: "Zdvihni popisovač do polohy odpovídající úrovni PWM z parametru"."""
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("M4") == [Ok()]
+    assert bench.fw.pen_down
+    assert bench.do("M99 4000") == [Ok()]
+    assert not bench.fw.pen_down and bench.fw.servo_level == 4000.0
+    assert [e["down"] for e in bench.events("pen")] == [True, False]
 
 
 def test_bytes_sent_before_the_board_has_booted_are_lost() -> None:
@@ -187,6 +245,22 @@ def test_string_art_rapid_is_limited_to_2000_steps_and_500_per_second_squared() 
     # 9600 steps: 4 s up to 2000 steps/s (4000 steps), 1600 steps at speed (0.8 s), 4 s down.
     (move,) = bench.events("move")
     assert move["t"] == pytest.approx(START + t0 + 8.8)
+
+
+def test_the_winder_switches_drivers_off_until_their_axis_moves() -> None:
+    """FIDELITY S0-25: the firmware disables its drivers while waiting and the drill's driver
+    while winding (``digitalWrite(enablePinVrtani, LOW)``); emulated as ``M18 [axes]``."""
+    bench = Bench(string_art_config())
+    assert bench.do("G0 A10 X20 Z5", "M18") == [Ok(), Ok()]
+    assert bench.fw.drivers_off == {"A", "X", "Z"}
+    assert bench.fw.position() == {"A": 10.0, "X": 20.0, "Z": 5.0}  # nothing moved
+    assert bench.do("G0 X30") == [Ok()]
+    assert bench.fw.drivers_off == {"A", "Z"}  # a move switches on only what it moves
+    assert bench.do("G0 A20 Z0", "M18 Z0") == [Ok(), Ok()]
+    assert bench.fw.drivers_off == {"Z"} and bench.fw.position()["Z"] == 0.0
+    assert [e["axes"] for e in bench.events("drivers off")] == ["AXZ", "Z"]
+    assert bench.do("M18 G0 X1") == [ErrorReply(24)]  # motion on a driver line: refused
+    assert Bench(corexy_plotter_config()).do("M18") == [ErrorReply(20)]  # the winder's only
 
 
 # -- timing ----------------------------------------------------------------------------------
@@ -228,10 +302,10 @@ def test_the_plotters_step_interval_sets_its_speed() -> None:
     t0 = bench.elapsed
     bench.run_until_idle()
     assert bench.fw.step_rate == 10_000.0 and bench.fw.servo_level == 1500.0
-    # 10 mm: 4082 steps on both motors at 10 000 steps/s (100 µs), 400 000 steps/s²:
-    # 125 steps in 0.025 s each way and 3832 steps at speed.
+    # 10 mm: 4081 whole steps on both motors, every one 100 µs apart (FIDELITY S1-04: no
+    # ramps on the original), begun in the control cycle after M99's OK (the servo's).
     (move,) = bench.events("move")
-    assert move["t"] == pytest.approx(START + t0 + 0.05 + 3832 / 10_000)
+    assert move["t"] == pytest.approx(START + t0 + CYCLE + 4081 / 10_000)
 
 
 def test_a_dwell_holds_the_next_move_in_order() -> None:

@@ -22,6 +22,7 @@ from app.__main__ import (
 from app.machine import LinkState
 from app.profiles import available_profiles, load_profile
 from app.settings import StationSettings
+from tests.hostile_corpus import winder_operations
 
 
 @pytest.fixture
@@ -283,6 +284,17 @@ def test_a_profile_loaded_from_a_file_opens_and_leaves_the_remembered_one(
             launcher.window.close()
 
 
+def test_the_plotters_sender_arguments_port_and_file_are_taken() -> None:
+    """FIDELITY S1-15: the CoreXY plotter's sender takes the serial port and the file;
+    ``stepdeck --port DEVICE --profile corexy-plotter FILE`` names both (the job then waits
+    in the jobs dock for Start: a machine never moves without the operator)."""
+    args = build_parser().parse_args(
+        ["--port", "/dev/ttyACM0", "--profile", "corexy-plotter", "unicorn.gcode"]
+    )
+    assert args.port == "/dev/ttyACM0" and args.profile == "corexy-plotter"
+    assert args.job == Path("unicorn.gcode")
+
+
 def test_a_job_named_on_the_command_line_is_read_into_the_jobs_dock(
     qtbot: QtBot, store: QSettings, tmp_path: Path
 ) -> None:
@@ -300,7 +312,9 @@ def test_a_job_named_on_the_command_line_is_read_into_the_jobs_dock(
         runner = window.job_runner  # type: ignore[attr-defined]
         qtbot.waitUntil(lambda: runner.program is not None, timeout=10_000)
         assert runner.program.name == "cat"
-        assert len(runner.program) == 4 * 6 + 4 * 3 + 3  # drill 6 nails, wind 3 entries
+        # Drill 6 nails (5 operations each with the 250 ms dwell), wind 3 entries: the
+        # firmware's sequence (tests/hostile_corpus.py counts it).
+        assert len(runner.program) == winder_operations(6, 3)
     finally:
         launcher.shutdown()
         if launcher.window is not None:

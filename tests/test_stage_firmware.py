@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from protocol.clock import ManualClock
 from protocol.emulator.fram import DEFAULT_IHOLDDELAY
-from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+from protocol.emulator.stage_firmware import Led, StageConfig, StageFirmware
 from protocol.stage.codec import (
     AxisStatus,
     CommandFrame,
@@ -592,6 +592,42 @@ def test_the_battery_running_flat_blocks_the_stage_while_it_moves() -> None:
     bench.idle(0.01)
     assert not bench.fw.axes[0].moving
     assert x_status(bench.exchange()) == AxisStatus.BLOCKED_BATTERY
+
+
+def test_the_led_ring_shows_the_originals_states(bench: Bench) -> None:
+    """FIDELITY S3-33, table 7-4: charger red on, low battery red fast blink, standby green,
+    pairing blue slow blink, talking blue on."""
+    assert bench.fw.led is Led.PAIRING  # no host yet: advertising
+    bench.exchange()
+    assert bench.fw.led is Led.TALKING
+    bench.exchange(cmd(CommandId.SLEEP, 1), cmd(CommandId.SLEEP, 1))
+    assert bench.fw.led is Led.STANDBY
+    bench.fw.battery_charge = 10.0  # below the 15 % low mark
+    assert bench.fw.led is Led.LOW_BATTERY
+    bench.fw.charger_connected = True
+    assert bench.fw.led is Led.CHARGING
+    bench.fw.press_button()
+    assert bench.fw.led is Led.OFF
+
+
+def test_the_button_switches_off_stopping_everything_and_on_afresh(bench: Bench) -> None:
+    """FIDELITY S3-36: the user button switches the stage off (the shutdown sequence: axes
+    stop, drivers off, parameters kept in FRAM) and on again."""
+    bench.exchange(cmd(CommandId.WRITE_ACCELERATION, 12_345))
+    bench.exchange(cmd(CommandId.JOG, 1))
+    bench.idle(0.2)
+    assert bench.fw.axes[0].moving
+    bench.fw.press_button()
+    assert not bench.fw.powered and not bench.fw.motors_enabled
+    assert not any(axis.moving for axis in bench.fw.axes)
+    bench.send(cmd(CommandId.JOG, 1))
+    assert bench.step(20) == []  # off: nothing heard, nothing answered
+    assert not bench.fw.axes[0].moving
+    bench.fw.press_button()
+    assert bench.fw.powered and bench.fw.motors_enabled
+    assert bench.fw.axes[0].position_um == 0.0  # the counters start afresh
+    assert bench.fw.parameter(0, EchoType.ACCELERATION) == 12_345  # FRAM kept it
+    assert len(bench.step()) == 0 and len([bench.exchange()]) == 1
 
 
 def test_sleep_refuses_motion_until_woken(bench: Bench) -> None:

@@ -17,6 +17,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from app.jobs.estimate.gcode import estimate_gcode
 from app.jobs.formats.string_art.geometry import (
     nail_positions,
     polygon_min_radius_mm,
@@ -314,9 +315,12 @@ def replay(program: StringArtProgram) -> list[dict[str, float]]:
 @settings(max_examples=150, deadline=None)
 @given(data=st.data())
 def test_no_turn_exceeds_half_a_turn_and_the_nails_come_in_file_order(data: st.DataObject) -> None:
+    """Any board and sequence: turns within half a turn, the nails in file order, the needle
+    2 cm inside the innermost nail and 2 cm outside the nail it wraps (FIDELITY S0-20)."""
     nails = data.draw(st.integers(3, 400), label="nails")
     tvar = data.draw(st.sampled_from([0, *range(3, 13)]), label="tvar")
-    radius = data.draw(st.floats(3.0, 30.0), label="radius_cm")
+    # Room for the needle 2 cm inside a triangle's mid-edge nails: 8 cm and more.
+    radius = data.draw(st.floats(8.0, 30.0), label="radius_cm")
     first = data.draw(st.integers(0, nails - 1), label="first")
     hops = data.draw(st.lists(st.integers(1, nails - 1), min_size=1, max_size=80), label="hops")
     sequence = [first]
@@ -335,8 +339,8 @@ def test_no_turn_exceeds_half_a_turn_and_the_nails_come_in_file_order(data: st.D
     order = [n for i, n in enumerate(visited) if i == 0 or n != visited[i - 1]]
     assert order == sequence
 
-    # And each visit really wraps its nail: out beyond every nail, across the nail's angle,
-    # back in inside every nail.
+    # And each visit really wraps its nail: out 2 cm beyond it, across the nail's angle,
+    # back in 2 cm inside every nail (FIDELITY S0-20: the firmware's radii).
     angles, radii = job.nail_polar()
     states = replay(program)
     moves = np.zeros(len(program), dtype=bool)
@@ -345,36 +349,73 @@ def test_no_turn_exceeds_half_a_turn_and_the_nails_come_in_file_order(data: st.D
         ops = np.flatnonzero((program.entry_of_op == entry) & moves)
         turn, out, wrap, back = (states[i] for i in ops)
         nail = sequence[entry]
-        assert turn["X"] < radii.min() and back["X"] < radii.min()
-        assert out["X"] > radii.max() and wrap["X"] > radii.max()
+        assert turn["X"] == back["X"] == pytest.approx(radii.min() - 20.0)
+        assert out["X"] == wrap["X"] == pytest.approx(radii[nail] + 20.0)
         swept = wrap["A"] - out["A"]
         to_nail = shortest_turn(out["A"], float(angles[nail]))
         assert 0 < abs(to_nail) < abs(swept) < 180 and to_nail * swept > 0
 
 
-def test_drill_phase_drills_each_nail_once_then_waits_then_starts_between_0_and_1(
+def test_drill_phase_as_the_firmware_then_drivers_off_wait_and_start_back_at_angle_0(
     shared_dir: Path,
 ) -> None:
+    """FIDELITY S0-15, S0-16, S0-18, S0-19, S0-25: the firmware's drilling and winding start.
+
+    The drill starts 1 cm above the board (Z 0), goes 1 cm above plus 1 cm deep
+    along the axis tilted 74.333° (20 / sin 74.333° = 20.773 mm of Z, of which
+    10.386 mm past the surface), waits 250 ms, comes back; then the base turns
+    back to nail 0 and the tool goes to its radius, every driver is switched off
+    while the operator works, and the winding starts: needle out 2 cm beyond the
+    first nail, turn between it and the next one, needle in, turn back to angle 0,
+    the drill's driver off.
+    """
     job = read_string_art(sample(shared_dir, "hexagon") / "poradi.txt")
     program = build_program(job)
     angles, radii = job.nail_polar()
     states = replay(program)
-    plunges = [i for i, op in enumerate(program) if op.target.get("Z") == 10.0]
+    bottom = 20.0 / math.sin(math.radians(74.333))
+    assert bottom - 10.0 / math.sin(math.radians(74.333)) == pytest.approx(10.386, abs=5e-4)
+    first_move = program[program.indices_of(OpKind.MOVE)[0]]
+    assert first_move.target == {"Z": 0.0}
+    assert first_move.message == "drill 10 mm above the board"
+    plunges = [i for i, op in enumerate(program) if "Z" in op.target and op.target["Z"] > 0]
     assert len(plunges) == 120
     for nail, i in enumerate(plunges):
+        assert program[i].target["Z"] == pytest.approx(bottom)
         assert states[i]["A"] % 360 == pytest.approx(angles[nail] % 360, abs=1e-9)
         assert states[i]["X"] == pytest.approx(radii[nail])
-        assert program[i + 1].target == {"Z": 0.0}  # back out at once
+        assert program[i + 1].kind is OpKind.GCODE and program[i + 1].line == "G4 S0.25"
+        assert program[i + 2].target == {"Z": 0.0}  # back to 1 cm above at once
         assert program.nail_of_op[i] == nail
+    assert np.array_equal(program.dwell_ops, [i + 1 for i in plunges])
     waits = program.indices_of(OpKind.WAIT)
-    assert len(waits) == 1 and waits[0] > plunges[-1] == program.wait_index - 4
+    assert len(waits) == 1 and waits[0] == program.wait_index > plunges[-1]
+    # Back to nail 0 (a whole turn on, the short way from the last nail) at its radius.
+    assert states[waits[0]]["A"] == pytest.approx(360.0)
+    assert states[waits[0]]["X"] == pytest.approx(radii[0])
+    assert program[waits[0] - 1].line == "M18"  # every driver off while waiting
     assert program[waits[0]].message == "Insert the nails, tie the thread to nail 0"
-    after = [op for op in program.operations[waits[0] + 1 :] if op.kind is OpKind.MOVE]
+    after = program.operations[waits[0] + 1 : waits[0] + 6]
+    assert after[0].target["X"] == pytest.approx(radii[0] + 20.0)
     # 0° and 2.543° (nail 1 on the hexagon's first edge): halfway is 1.2715° (a whole turn on).
-    assert after[0].target["A"] % 360 == pytest.approx((angles[0] + angles[1]) / 2)
-    assert after[1].target["X"] == pytest.approx(radii.min() - 5.0)
-    assert states[waits[0]]["X"] == pytest.approx(radii.max() + 5.0)  # tool out of the way
+    assert after[1].target["A"] == pytest.approx(360.0 + (angles[0] + angles[1]) / 2)
+    assert after[2].target["X"] == pytest.approx(radii.min() - 20.0)
+    assert after[3].target["A"] == pytest.approx(360.0)  # back to angle 0
+    assert after[4].line == "M18 Z0"  # the drill's driver off while winding
     assert all(op.target.get("Z", 0.0) == 0.0 for op in program.operations[waits[0] :])
+
+
+def test_every_connection_is_wound_once_not_the_firmwares_off_by_one() -> None:
+    """FIDELITY S0-22, a deliberate deviation: the firmware's loop winds entries 1…count-1
+    (the tie nail, never the last); StepDeck ties to the first and winds all the others."""
+    sequence = [0, 5, 2, 7, 3]
+    program = build_program(job_of(0, 10, 12.0, sequence))
+    winding = program.entry_of_op > 0
+    wound = [int(n) for n in program.nail_of_op[winding]]
+    order = [n for i, n in enumerate(wound) if i == 0 or n != wound[i - 1]]
+    assert order == sequence[1:]  # the last nail (3) wound, the tie nail (0) not wrapped
+    wraps = [op for op in program if op.message.endswith("round the nail")]
+    assert len(wraps) == len(sequence) - 1
 
 
 def test_sources_point_at_the_files(shared_dir: Path) -> None:
@@ -383,7 +424,8 @@ def test_sources_point_at_the_files(shared_dir: Path) -> None:
     drill = program[program.indices_of(OpKind.MOVE)[0]]
     assert str(drill.source) == "param.txt:2"  # pocet_hrebiku
     assert str(program[-1].source) == "poradi.txt:1"
-    assert program.kinds() == {OpKind.MOVE, OpKind.WAIT, OpKind.COMMENT}
+    # G-code lines: the drill's dwells and the drivers switched off (FIDELITY S0-16, S0-25).
+    assert program.kinds() == {OpKind.MOVE, OpKind.WAIT, OpKind.COMMENT, OpKind.GCODE}
 
 
 def test_program_arrays_agree_with_the_operations(shared_dir: Path) -> None:
@@ -411,6 +453,7 @@ def test_winding_settings_and_a_board_too_small_for_the_needle() -> None:
     job = job_of(0, 10, 10.0, [0, 5])
     program = build_program(job, settings=WindingSettings(needle_in_mm=10, needle_out_mm=3))
     assert program.needle_in_radius_mm == 75.0 and program.needle_out_radius_mm == 88.0
+    assert WindingSettings() == WindingSettings(needle_in_mm=20.0, needle_out_mm=20.0)
     with pytest.raises(JobFileError, match="no room for the needle"):
         build_program(job_of(3, 10, 2.0, [0, 5]))  # corners at 5 mm, mid-edges at 2.5 mm
 
@@ -440,6 +483,21 @@ def test_profile_axes_and_the_estimate() -> None:
     assert "about" in program.summary()
     with pytest.raises(ValueError, match="lacks the winder's axes"):
         build_program(job, load_profile("xy-stage"))
+
+
+def test_the_estimate_counts_the_drills_dwells() -> None:
+    """FIDELITY S0-16: the 250 ms at each hole's bottom is machine time, so it is estimated."""
+    profile = load_profile("string-art")
+    job = job_of(0, 12, 10.0, [0, 5, 9])
+    program = build_program(job, profile)
+    without = build_program(job, profile, WindingSettings(drill_dwell_s=0.0))
+    assert program.estimate_s is not None and without.estimate_s is not None
+    assert program.estimate_s - without.estimate_s == pytest.approx(12 * 0.25)
+    timed = estimate_gcode(program, profile)
+    assert timed.total_s == pytest.approx(program.estimate_s)
+    first_dwell = int(program.dwell_ops[0])
+    step = timed.cumulative_s[first_dwell] - timed.cumulative_s[first_dwell - 1]
+    assert step == pytest.approx(0.25)
 
 
 def test_summary_shows_the_totals(shared_dir: Path) -> None:

@@ -1,7 +1,8 @@
 """The emulated usb3 unit against PROTOCOLS.md section 2, driven through encoded commands.
 
 Every number asserted here is worked out by hand from the defaults: a speed
-table from 9.375 to 300 pulses/s (index i: 300 (i + 1) / 32), 600 pulses/s²,
+table from 9.375 to 300 pulses/s (index i: 9.375 + 290.625 (i / 31)², slow at low
+deflections as the original's, FIDELITY S4-13), 600 pulses/s²,
 1/8 step (4 counts a pulse) and M6 thread (6400 counts a mm).  A move from
 rest jumps to 9.375 pulses/s and ramps to 300 in (300 - 9.375) / 600 =
 0.484375 s, covering (300² - 9.375²) / 1200 = 74.9267578125 pulses; it brakes
@@ -10,10 +11,18 @@ the same way.  Cycles are 5 ms, reports every 100 ms.
 
 from __future__ import annotations
 
+from itertools import pairwise
+
 import pytest
 
 from protocol.clock import ManualClock
-from protocol.emulator.usb3_firmware import Usb3Firmware, joystick_deflection
+from protocol.emulator.usb3_firmware import (
+    SPEED_TABLE,
+    Usb3Config,
+    Usb3Eeprom,
+    Usb3Firmware,
+    joystick_deflection,
+)
 from protocol.usb3.codec import (
     AxisId,
     Command,
@@ -270,6 +279,46 @@ def test_get_settings_replies_with_step_sizes_and_threads(bench: Bench) -> None:
     assert bench.fw.threads == threads.threads
 
 
+def test_step_sizes_and_threads_survive_a_power_cycle_in_eeprom() -> None:
+    """FIDELITY S4-19: the original keeps step sizes and threads in EEPROM, so the operator
+    need not set them at every power-on; a blank EEPROM gives the defaults."""
+    clock = ManualClock(start=START)
+    eeprom = Usb3Eeprom()
+    first = Usb3Firmware(clock, eeprom=eeprom)
+    assert first.step_sizes == (StepSize.EIGHTH,) * 3 and first.threads == (Thread.M6,) * 3
+    first.receive(encode(StepSizes((StepSize.FULL, StepSize.HALF, StepSize.QUARTER))))
+    clock.advance(CYCLE)
+    first.run_until(clock.now())
+    first.menu_set(threads=(Thread.M2, Thread.M8, Thread.M10))
+    first.menu_set(threads=(Thread.M2, Thread.M8, Thread.M10))  # no change: no write
+    assert eeprom.writes == 2
+    again = Usb3Firmware(clock, eeprom=eeprom)  # switched off and on
+    assert again.step_sizes == (StepSize.FULL, StepSize.HALF, StepSize.QUARTER)
+    assert again.threads == (Thread.M2, Thread.M8, Thread.M10)
+    assert Usb3Firmware(clock).step_sizes == (StepSize.EIGHTH,) * 3  # no EEPROM: defaults
+
+
+def test_an_end_switch_stops_its_motor_and_the_others_go_on() -> None:
+    """FIDELITY S4-18: six end-stop inputs; one pressed interrupts the program and stops
+    the right motor."""
+    clock = ManualClock(start=START)
+    ends = ((1000.0, 2000.0), (50_000.0, 50_000.0), (50_000.0, 50_000.0))
+    fw = Usb3Firmware(clock, Usb3Config(end_switches=ends))
+    out = bytearray()
+    fw.set_output(out.extend)
+    fw.receive(encode(Move(X, 8000)) + encode(Move(Y, 8000)))
+    for _ in range(round(40 / CYCLE)):
+        clock.advance(CYCLE)
+        fw.run_until(clock.now())
+    assert fw.positions[0] == 2000  # stopped at the high switch, 2000 counts on
+    assert fw.axes[0].end_switch_high and not fw.axes[0].moving
+    assert fw.positions[1] == 8000  # Y went on to its target
+    replies = ReplyDecoder().feed(bytes(out))
+    assert Position(X, 2000) in replies  # and the unit said where X stopped
+    with pytest.raises(ValueError):
+        Usb3Config(end_switches=((0.0, 1.0), (1.0, 1.0), (1.0, 1.0)))
+
+
 def test_the_menu_reports_its_changes_unprompted(bench: Bench) -> None:
     bench.fw.menu_set(step_sizes=(StepSize.FULL, StepSize.HALF, StepSize.THIRTY_SECOND))
     assert bench.step() == [
@@ -322,12 +371,17 @@ def test_joystick_in_the_dead_zone_does_nothing(bench: Bench) -> None:
 
 
 def test_joystick_speed_grows_with_deflection_and_release_stops(bench: Bench) -> None:
-    bench.fw.set_joystick(Y, 600)  # index 4: 300 x 5/32 pulses/s
+    """FIDELITY S4-13: the speed grows slowly at small deflections (a parabola), fast near
+    the end, for a precise joystick."""
+    bench.fw.set_joystick(Y, 600)  # index 4: 9.375 + 290.625 x (4/31)² pulses/s
     bench.run(1.0)
-    assert bench.fw.pulse_rate(Y) == pytest.approx(46.875)
-    bench.fw.set_joystick(Y, 774)  # index 15
+    assert bench.fw.pulse_rate(Y) == pytest.approx(9.375 + 290.625 * 16 / 961)
+    bench.fw.set_joystick(Y, 774)  # index 15: not yet a third of the top speed
     bench.run(1.0)
-    assert bench.fw.pulse_rate(Y) == pytest.approx(150.0)
+    assert bench.fw.pulse_rate(Y) == pytest.approx(9.375 + 290.625 * 225 / 961)
+    assert bench.fw.pulse_rate(Y) < 300.0 / 3
+    steps = [b - a for a, b in pairwise(SPEED_TABLE)]
+    assert all(b > a for a, b in pairwise(steps))  # each index adds more than the one before
     bench.fw.set_joystick(Y, 1023)  # index 31
     replies = bench.run(1.0)
     assert bench.fw.pulse_rate(Y) == pytest.approx(300.0)

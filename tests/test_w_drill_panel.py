@@ -244,9 +244,9 @@ def test_a_long_move_typed_in_the_terminal_asks_too(
 def test_a_target_beyond_the_travel_is_shown_invalid_and_not_sent(
     qtbot: QtBot, drill: StationHarness, panel: DrillPanel
 ) -> None:
-    type_target(qtbot, panel.targets[0], "5000")  # X travel: 200 mm = 3960 microsteps
+    type_target(qtbot, panel.targets[0], "5000")  # X travel: 210 mm = 4158 microsteps
     assert panel.targets[0].text() == "5000" and panel.targets[0].value() is None
-    assert "5000 is outside 0…3960 µsteps" in panel.note.text()
+    assert "5000 is outside 0…4158 µsteps" in panel.note.text()
     assert not panel.send_buttons[0].isEnabled()
     mark = len(drill.written)
     assert panel.send_axis(0) is False

@@ -68,8 +68,9 @@ def test_progress_shows_drilled_nails_wound_thread_and_the_current_nail(
     extras = preview.string_art
     nails = job([0, 1]).nail_positions()
 
-    # Operation 0 is the drill phase's comment; 1…4 drill nail 0; 5…8 nail 1.
-    preview.set_done(6)  # nail 0 drilled, nail 1 under way
+    # Operation 0 is the drill phase's comment, 1 the drill to 1 cm above the board; 2…6
+    # drill nail 0 (turn, radius, down, 250 ms, up); 7…11 nail 1.
+    preview.set_done(8)  # nail 0 drilled, nail 1 under way
     assert np.allclose(points(extras.drilled), nails[:1])
     assert np.allclose(points(extras.current), nails[[1]])
     assert len(points(extras.done_thread)) == 0

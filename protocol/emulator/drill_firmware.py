@@ -91,11 +91,12 @@ class DrillConfig:
     """What differs between machines; the defaults describe the reference plotter.
 
     Lengths are microsteps, times seconds.  ``travel`` is the range of
-    positions reachable from the machine's zero (X 4000 and Y 3000 are about
-    200 by 150 mm at 19.8 and 19.7 microsteps per mm).
+    positions reachable from the machine's zero (X 4200 and Y 3000 are about
+    212 by 152 mm at 19.8 and 19.7 microsteps per mm: the original drills
+    boards "do velikosti A5 (148mm x 210mm)", FIDELITY S2-27).
     """
 
-    travel: tuple[int, int] = (4000, 3000)
+    travel: tuple[int, int] = (4200, 3000)
     #: Seconds per microstep of X, Y and Z.
     step_periods: tuple[float, float, float] = (0.0013, 0.0015, 0.0025)
     #: Microsteps from where each end switch opens to the zero, X and Y.

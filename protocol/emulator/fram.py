@@ -8,9 +8,9 @@ wrong when it is careless can be reproduced: the shared IHOLD_IRUN register
 
 Memory map (one 64-byte block per axis, base ``0x40 * axis``)::
 
-    base + 0x00  TYPE 2  fast speed        µm/s    int32 LSB first
+    base + 0x00  TYPE 4  acceleration      µm/s²   int32 LSB first
     base + 0x04  TYPE 3  slow speed        µm/s
-    base + 0x08  TYPE 4  acceleration      µm/s²
+    base + 0x08  TYPE 2  fast speed        µm/s
     base + 0x0C  TYPE 5  start speed       µm/s
     base + 0x10  TYPE 6  IHOLD_IRUN        TMC2130 register: IHOLD bits 0-4,
                  TYPE 7                    IRUN bits 8-12, IHOLDDELAY bits 16-19
@@ -21,6 +21,11 @@ Memory map (one 64-byte block per axis, base ``0x40 * axis``)::
     base + 0x24  TYPE B  travel            µm
 
 TYPE C (encoder position) is measured, not stored, and has no address.
+
+The original names one address: "Začiatočná adresa … maximálnej akcelerácie
+… 0x0000" (FIDELITY S3-14), so the acceleration starts the block; the rest
+of its map is not given, and the other words keep their places (the fast
+speed takes the word the acceleration left).
 """
 
 from __future__ import annotations
@@ -46,6 +51,12 @@ _INT32_MAX = 2**31 - 1
 
 _CURRENT_SHIFTS = {EchoType.IHOLD: IHOLD_SHIFT, EchoType.IRUN: IRUN_SHIFT}
 _STORED = tuple(t for t in EchoType if EchoType.FAST_SPEED <= t <= EchoType.TRAVEL)
+#: Word offsets within an axis block (see the map above); IHOLD shares IRUN's word.
+_OFFSETS = {
+    **{t: WORD * (t - EchoType.FAST_SPEED) for t in _STORED},
+    EchoType.ACCELERATION: 0x00,
+    EchoType.FAST_SPEED: 0x08,
+}
 
 
 class Fram:
@@ -74,7 +85,7 @@ class Fram:
             raise ValueError(f"parameter TYPE {parameter:X} is not stored in FRAM")
         if parameter == EchoType.IHOLD:
             parameter = EchoType.IRUN
-        return AXIS_STRIDE * axis + WORD * (parameter - EchoType.FAST_SPEED)
+        return AXIS_STRIDE * axis + _OFFSETS[EchoType(parameter)]
 
     def dump(self, address: int, length: int) -> bytes:
         """Raw bytes, as a logic analyser on the I²C bus would see them."""

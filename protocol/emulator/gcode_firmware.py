@@ -27,7 +27,10 @@ How a byte travels:
   ``ok`` when its blocks are queued (a line that makes more blocks than
   there is room for, an arc, is answered when its last block is queued),
   ``error:<n>`` when refused.  So a full planner withholds the replies, and
-  a host that counts characters sees its window close.
+  a host that counts characters sees its window close.  A machine that
+  answers once the motion is done (``ok_when_done``, the CoreXY plotter's
+  firmware: it executes a line, then prints ``OK``) parses the next line
+  only after that answer.
 - A line longer than ``max_line`` bytes is answered ``error:11`` (GRBL's
   line overflow) once its end arrives; its bytes leave the buffer as they
   come, so it cannot block the buffer.  A ``\\r`` is whitespace, not a line
@@ -69,6 +72,7 @@ from protocol.emulator.gcode_machine import (
 )
 from protocol.emulator.gcode_planner import (
     Block,
+    DriversOff,
     Dwell,
     HoldState,
     Move,
@@ -140,6 +144,8 @@ class GcodeFirmware(ControlCycles):
         #: Blocks of the line being queued that did not fit yet, and its answer.
         self._pending: deque[Block] = deque()
         self._pending_line: tuple[int, str] | None = None
+        #: ``ok_when_done``: the line whose blocks run, answered when the planner is empty.
+        self._running_line: tuple[int, str] | None = None
         self._status_wanted = False
         self._alarm: int | None = None
         self._pen_down = False
@@ -153,6 +159,8 @@ class GcodeFirmware(ControlCycles):
         self._lost_booting = 0
         #: 0x85 came during a jog: brake, then drop the jog's blocks once it stands.
         self._jog_cancelling = False
+        #: Axes whose drivers ``M18`` switched off (a move switches them on again).
+        self._drivers_off: set[str] = set()
         self._send_banner()
 
     # -- EmulatedDevice --------------------------------------------------------------------
@@ -238,8 +246,9 @@ class GcodeFirmware(ControlCycles):
     def trigger_alarm(self, code: int = 1) -> None:
         """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
         with self._lock:
-            if self._pending_line is not None:
-                self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *self._pending_line)
+            for line in (self._pending_line, self._running_line):
+                if line is not None:
+                    self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *line)
             self._stop()
             self._interpreter.position = self._planner.position()
             self._interpreter.pen_down = False
@@ -279,7 +288,8 @@ class GcodeFirmware(ControlCycles):
                 return "Hold"
             if isinstance(current, Move) and current.kind == "home":
                 return "Home"
-            return "Run" if len(self._planner) or self._pending else "Idle"
+            busy = len(self._planner) or self._pending or self._running_line
+            return "Run" if busy else "Idle"
 
     @property
     def alarm(self) -> int | None:
@@ -328,6 +338,12 @@ class GcodeFirmware(ControlCycles):
             return self._interpreter.servo_level
 
     @property
+    def drivers_off(self) -> frozenset[str]:
+        """The axes whose drivers are off (``M18``) until a move of that axis."""
+        with self._lock:
+            return frozenset(self._drivers_off)
+
+    @property
     def event_log(self) -> tuple[GcodeEvent, ...]:
         """Lines, replies, moves, pen changes, dwells, holds and resets, in order (``--log``)."""
         with self._lock:
@@ -365,7 +381,7 @@ class GcodeFirmware(ControlCycles):
 
     def _take_lines(self) -> None:
         self._queue_pending(self.time)
-        while not self._pending and self._planner.free > 0:
+        while not self._pending and self._planner.free > 0 and self._running_line is None:
             line = self._next_line()
             if line is None:
                 return
@@ -496,15 +512,30 @@ class GcodeFirmware(ControlCycles):
         if not self._pending and self._pending_line is not None:
             length, text = self._pending_line
             self._pending_line = None
-            self._answer(self.config.reply_ok, length, text, t)
+            if self.config.ok_when_done and len(self._planner):
+                self._running_line = (length, text)  # OK once its motion is done
+            else:
+                self._answer(self.config.reply_ok, length, text, t)
 
     def _block_done(self, block: Block, into: float) -> None:
         t = self.time + into
         match block:
             case Move():
+                moved = {
+                    axis
+                    for axis, a, b in zip(self.config.axes, block.start, block.end, strict=True)
+                    if a != b
+                }
+                if moved & self._drivers_off:
+                    self._log("drivers on", t, axes="".join(sorted(moved & self._drivers_off)))
+                    self._drivers_off -= moved
                 self._log(
                     "move", t, kind=block.kind, pos=self._where(block.end), pen=self._pen_down
                 )
+            case DriversOff():
+                names = [self.config.axes[i] for i in block.axes]
+                self._drivers_off.update(names)
+                self._log("drivers off", t, axes="".join(names))
             case PenChange():
                 self._set_pen(block.down, block.spindle, t)
             case Dwell():
@@ -513,6 +544,10 @@ class GcodeFirmware(ControlCycles):
                 self._log("pause", t)
             case SetPosition():
                 self._log("setpos", t, pos=self._where(block.position))
+        if self._running_line is not None and not len(self._planner):
+            length, text = self._running_line
+            self._running_line = None
+            self._answer(self.config.reply_ok, length, text, t)
         self._queue_pending(t)
 
     def _stop(self) -> None:
@@ -520,6 +555,7 @@ class GcodeFirmware(ControlCycles):
         self._planner.stop()
         self._pending.clear()
         self._pending_line = None
+        self._running_line = None
         self._set_pen(False, 0.0, self.time)
 
     def _set_pen(self, down: bool, spindle: float, t: float) -> None:

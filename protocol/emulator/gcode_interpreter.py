@@ -16,8 +16,15 @@ Decisions the contract leaves open, made here:
 - ``G4 P`` is milliseconds (the contract's, and Marlin's; GRBL reads
   seconds); ``G4 S`` seconds.
 - ``M98``/``M99`` take their number bare (``M98 500``) or as ``P``; a step
-  interval of 0 or less, or a negative servo level, is ``error:4``.
+  interval of 0 or less, or a negative servo level, is ``error:4``.  ``M99``
+  lifts the pen to that servo level (the plotter's "Zdvihni popisovač …").
+- A bare ``G92`` is ``error:26`` as in GRBL, except on the CoreXY plotter
+  (``bare_g92``), whose firmware makes the current position the origin.
 - ``M2``/``M30`` end the program: G1 and G90 again, and the pen up.
+- ``M18`` (the winder only) switches off the drivers of the axes it names
+  (``M18 Z0``: an axis word's value is not used, but this parser's words
+  need one), every driver when it names none (Marlin's form); it moves
+  nothing, and the next move of an axis switches its driver on again.
 """
 
 from __future__ import annotations
@@ -26,7 +33,15 @@ import math
 from dataclasses import dataclass, replace
 
 from protocol.emulator.gcode_machine import GcodeConfig, PenMapping
-from protocol.emulator.gcode_planner import Block, Dwell, Move, Pause, PenChange, SetPosition
+from protocol.emulator.gcode_planner import (
+    Block,
+    DriversOff,
+    Dwell,
+    Move,
+    Pause,
+    PenChange,
+    SetPosition,
+)
 from protocol.gcode.words import EXPECTED_COMMAND_LETTER, Word
 
 # GRBL's error codes the parser gives.
@@ -59,6 +74,7 @@ _M_GROUPS = {
     **dict.fromkeys((0, 1, 2, 30), "flow"),
     **dict.fromkeys((3, 4, 5), "spindle"),
     **dict.fromkeys((98, 99), "plotter"),
+    18: "drivers",
 }
 #: Value words besides the axes; each may appear once per line.
 _VALUE_LETTERS = "FSPIJR"
@@ -180,6 +196,8 @@ class Interpreter:
             return self.config.arcs
         if letter == "M" and code in (98, 99):
             return self.config.plotter_codes
+        if letter == "M" and code == 18:
+            return self.config.drivers_off
         return True
 
     # -- planning the line -------------------------------------------------------------------
@@ -209,6 +227,7 @@ class Interpreter:
             used.add("S")
 
         step_rate, servo = self.step_rate, self.servo_level
+        servo_moved = False
         plotter = line.m.get("plotter")
         if plotter is not None:
             argument = line.bare if line.bare is not None else values.get("P")
@@ -223,6 +242,7 @@ class Interpreter:
                 if argument < 0:
                     return NEGATIVE_VALUE
                 servo = argument
+                servo_moved = True
         elif line.bare is not None:
             return EXPECTED_COMMAND_LETTER
 
@@ -238,7 +258,12 @@ class Interpreter:
                 spindle_on = code != 5
             pen = spindle_on and spindle > 0
             level = spindle if spindle_on else 0.0
-        if pen != self.pen_down or level != self.spindle_level:
+        if servo_moved and code is None:
+            # "Zdvihni popisovač do polohy odpovídající úrovni PWM z parametru": M99 lifts
+            # the pen to that servo level, so the servo moves even if the pen was up.
+            pen = False
+            blocks.append(PenChange(False, cfg.pen_time, level))
+        elif pen != self.pen_down or level != self.spindle_level:
             blocks.append(PenChange(pen, cfg.pen_time if pen != self.pen_down else 0.0, level))
 
         if nonmodal == 4:
@@ -260,10 +285,19 @@ class Interpreter:
             return AXIS_COMMAND_CONFLICT
         axis_words = {a: v for a, v in values.items() if a in cfg.axes}
         position = self.position
+        if "drivers" in line.m:
+            if motion_given is not None or nonmodal in (28, 92):
+                return AXIS_COMMAND_CONFLICT
+            named = [cfg.index(a) for a in cfg.axes if a in axis_words]
+            blocks.append(DriversOff(tuple(named) or tuple(range(len(cfg.axes)))))
+            axis_words = {}
         if nonmodal == 92:
-            if not axis_words:
+            if not axis_words and not cfg.bare_g92:
                 return NO_AXIS_WORDS
-            position = self._target(position, axis_words, True, scale)
+            if axis_words:
+                position = self._target(position, axis_words, True, scale)
+            else:  # the CoreXY plotter: "set the current position as origin"
+                position = (0.0,) * len(cfg.axes)
             blocks.append(SetPosition(position))
         elif nonmodal == 28:
             stops = [self._target(position, axis_words, absolute, scale)] if axis_words else []

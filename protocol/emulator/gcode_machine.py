@@ -7,11 +7,13 @@ description.
 
 Decisions the contract leaves open, made here:
 
-- Travel runs from 0 to the profile's length on X and Y (300 by 200 mm, as
-  the station's profiles say); the plotters' Z, which only a job that does
+- Travel runs from 0 to the profile's length on X and Y (the CoreXY
+  plotter's 300 by 210 mm holds the original's "at least A4"; the GRBL
+  plotter keeps 300 by 200 mm); the plotters' Z, which only a job that does
   not map Z to the pen would use, may go 20 mm either way; the winder's A
   turns freely.
-- Every motor shares one top step rate and one acceleration; a move is
+- Every motor shares one top step rate and one acceleration (infinite on
+  the CoreXY plotter, which has no ramps); a move is
   timed on the motor that makes the most steps, so the others never exceed
   either.  The CoreXY plotter's power-on step interval is 25 µs (40 000
   steps/s, about 98 mm/s per motor); ``M98`` changes it.
@@ -78,6 +80,16 @@ class GcodeConfig:
     plotter_codes: bool = False
     #: GRBL 1.1's ``$J=`` jog lines and the 0x85 jog cancel.
     jogging: bool = False
+    #: A bare ``G92`` makes the current position the origin (the CoreXY plotter's firmware:
+    #: "G92 ; nastav aktuální pozici jako počátek"); GRBL refuses it (error:26).
+    bare_g92: bool = False
+    #: Answer a line only once its motion is done (the CoreXY plotter's firmware executes a
+    #: line, then prints ``OK``); GRBL answers when the line is planned.
+    ok_when_done: bool = False
+    #: mm → steps by truncation (the CoreXY firmware's integer division), not rounding.
+    truncate_steps: bool = False
+    #: ``M18 [axes]`` switches drivers off (the winder while it waits, its drill while winding).
+    drivers_off: bool = False
     #: Units/min a G1 runs at before any F; None refuses it (``error:22``).
     default_feed: float | None = None
     #: Largest distance of an arc's chord from the arc (GRBL's $12).
@@ -114,7 +126,17 @@ class GcodeConfig:
         return self.axes.index(axis)
 
     def motor_counts(self, position: tuple[float, ...]) -> tuple[int, ...]:
-        """Each motor's step counter at ``position``: CoreXY mixes X and Y, the others do not."""
+        """Each motor's step counter at ``position``: CoreXY mixes X and Y, the others do not.
+
+        With ``truncate_steps`` each axis is first made whole steps towards zero (the
+        CoreXY firmware's integer division), and the motors mix those.
+        """
+        if self.truncate_steps:
+            steps = [math.trunc(p * s) for p, s in zip(position, self.steps_per_unit, strict=True)]
+            if self.kinematics == "corexy":
+                sx, sy = steps[0], steps[1]
+                steps[0], steps[1] = sx - sy, sx + sy
+            return tuple(steps)
         counts = [round(p * s) for p, s in zip(position, self.steps_per_unit, strict=True)]
         if self.kinematics == "corexy":
             x, y = position[0], position[1]
@@ -132,21 +154,31 @@ class GcodeConfig:
 
 
 def corexy_plotter_config() -> GcodeConfig:
-    """The RP2040 CoreXY pen plotter: ``OK`` replies, M3 lifts and M4 lowers, M98/M99."""
+    """The RP2040 CoreXY pen plotter as its own firmware, not GRBL.
+
+    ``OK`` once a line's motion is done; M3 lifts and M4 lowers the pen, M99 lifts
+    it to a PWM level, M98 sets the step interval; one step interval from a move's
+    first step to its last (no acceleration: the thesis names ramps as future work);
+    mm → steps truncated; a bare ``G92`` sets the origin.  Travel 300 by 210 mm: the
+    original's drawing area is "at least A4" (297 by 210 mm).
+    """
     per_mm = 1.0 / COREXY_MM_PER_STEP
     return GcodeConfig(
         kinematics="corexy",
         axes=("X", "Y", "Z"),
         steps_per_unit=(per_mm, per_mm, 100.0),
-        travel=((0.0, 300.0), (0.0, 200.0), (-20.0, 20.0)),
+        travel=((0.0, 300.0), (0.0, 210.0), (-20.0, 20.0)),
         max_rate=40_000.0,
-        acceleration=400_000.0,
+        acceleration=math.inf,
         reply_ok="OK",
         reply_error="ERROR",
         banner=PLOTTER_BANNER,
         pen=PenMapping.M3_UP_M4_DOWN,
         plotter_codes=True,
         default_feed=6000.0,
+        bare_g92=True,
+        ok_when_done=True,
+        truncate_steps=True,
     )
 
 
@@ -176,4 +208,5 @@ def string_art_config() -> GcodeConfig:
         acceleration=500.0,
         pen=PenMapping.SPINDLE,
         default_feed=60_000.0,
+        drivers_off=True,
     )

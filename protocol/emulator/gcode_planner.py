@@ -58,9 +58,13 @@ def trapezoid(steps: float, top_rate: float, accel: float) -> Ramp:
     """From rest to rest over ``steps``: ramp up to ``top_rate``, cruise, ramp down.
 
     Too short to reach the top rate it is a triangle peaking at ``sqrt(steps * accel)``.
+    An infinite ``accel`` is a machine without ramps (the CoreXY plotter's firmware steps
+    at one interval from the first step to the last): the top rate throughout.
     """
     if steps <= 0:
         return Ramp(())
+    if math.isinf(accel):
+        return Ramp(((top_rate, 0.0, steps / top_rate),))
     ramp_steps = top_rate * top_rate / (2.0 * accel)
     if 2.0 * ramp_steps <= steps:
         t_ramp = top_rate / accel
@@ -72,7 +76,9 @@ def trapezoid(steps: float, top_rate: float, accel: float) -> Ramp:
 
 
 def brake(speed: float, accel: float) -> Ramp:
-    """From ``speed`` to rest at ``accel``."""
+    """From ``speed`` to rest at ``accel`` (at once without ramps)."""
+    if math.isinf(accel):
+        return Ramp(())
     return Ramp(((speed, -accel, speed / accel),)) if speed > 0 else Ramp(())
 
 
@@ -122,7 +128,14 @@ class SetPosition:
     position: tuple[float, ...]
 
 
-Block = Move | Dwell | PenChange | Pause | SetPosition
+@dataclass(frozen=True, slots=True)
+class DriversOff:
+    """``M18``: the drivers of these axes (indices) lose their holding current until a move."""
+
+    axes: tuple[int, ...]
+
+
+Block = Move | Dwell | PenChange | Pause | SetPosition | DriversOff
 
 
 class HoldState(enum.Enum):

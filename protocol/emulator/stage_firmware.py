@@ -15,6 +15,7 @@ cycle, and each accepted frame is answered by one echo at its end.  On a
 
 from __future__ import annotations
 
+import enum
 from collections import deque
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -186,6 +187,17 @@ def _fit(value: float) -> int:
     return max(DATA_MIN, min(DATA_MAX, round(value)))
 
 
+class Led(enum.Enum):
+    """The RGB LED ring's states (the original's table 7-4)."""
+
+    OFF = "off"
+    CHARGING = "red on"
+    LOW_BATTERY = "red, fast blink"
+    STANDBY = "green on"
+    PAIRING = "blue, slow blink"
+    TALKING = "blue on"
+
+
 @dataclass
 class _AxisControl:
     """Firmware-side state of one axis besides the mechanism itself."""
@@ -241,6 +253,7 @@ class StageFirmware(ControlCycles):
         self._host_echoes = 0
         self._last_frame: float | None = None
         self._sleeping = False
+        self._powered = True
         self._usb_connected = False
         self._battery = Battery(self.config)
         self._imu = Imu()
@@ -268,6 +281,8 @@ class StageFirmware(ControlCycles):
 
     def receive(self, data: bytes) -> None:
         with self._lock:
+            if not self._powered:
+                return  # switched off: the radio hears nothing
             for frame in self._decoder.feed(data):
                 if isinstance(frame, CommandFrame):
                     self._queue.append(frame)
@@ -288,15 +303,63 @@ class StageFirmware(ControlCycles):
             return self._sleeping
 
     @property
+    def powered(self) -> bool:
+        with self._lock:
+            return self._powered
+
+    @property
+    def led(self) -> Led:
+        """What the LED ring shows (FIDELITY S3-33, table 7-4), the first that applies:
+        the charger (red on), a low battery (red, fast blink), asleep (standby: green),
+        a host talking (a data session: blue on), else advertising for a host (pairing:
+        blue, slow blink)."""
+        with self._lock:
+            if not self._powered:
+                return Led.OFF
+            if self._battery.charger_connected:
+                return Led.CHARGING
+            if self._battery.charge < self.config.low_battery_percent:
+                return Led.LOW_BATTERY
+            if self._sleeping:
+                return Led.STANDBY
+            return Led.TALKING if self._session_open() else Led.PAIRING
+
+    def press_button(self) -> None:
+        """The user button (FIDELITY S3-36): switch off, or on again.
+
+        Switching off is the original's shutdown sequence: every axis stops dead,
+        the drivers are disabled, and the parameters stay in FRAM (they are written
+        there as they change); then the board hears nothing and answers nothing.
+        Switching on starts afresh: the step counters from 0, not homed, awake.
+        """
+        with self._lock:
+            if self._powered:
+                for axis in self._axes:
+                    axis.estop()
+                for control in self._controls:
+                    control.jog_direction = 0
+                self._queue.clear()
+                self._decoder = StageDecoder(self.config.axes)
+                self._last_frame = None
+                self._powered = False
+                return
+            self._powered = True
+            self._sleeping = False
+            for axis, control in zip(self._axes, self._controls, strict=True):
+                axis.set_position(0.0)
+                control.homed = False
+                control.fast = False
+
+    @property
     def rejected_frames(self) -> int:
         with self._lock:
             return self._rejected_frames()
 
     @property
     def motors_enabled(self) -> bool:
-        """False while blocked or asleep (a faulted driver disables only its own axis)."""
+        """False while blocked, asleep or off (a faulted driver disables only its own axis)."""
         with self._lock:
-            return self._block_status() is None and not self._sleeping
+            return self._block_status() is None and not self._sleeping and self._powered
 
     @property
     def session_open(self) -> bool:
@@ -414,6 +477,12 @@ class StageFirmware(ControlCycles):
     def _run_cycle(self) -> None:
         now = self._cycle_time(self._cycles)
         dt = self.config.control_cycle
+        if not self._powered:
+            for axis in self._axes:
+                axis.advance(dt)  # standing: the estop left nothing to run
+            self._battery.step(dt, 0.0)
+            self._cycles += 1
+            return
         self._enforce_interlocks()
         pending = [self._handle_frame(frame, now) for frame in self._queue]
         self._queue.clear()

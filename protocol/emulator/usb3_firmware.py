@@ -15,7 +15,11 @@ mm/s, as on the real unit.
 Decisions the contract leaves open, made here:
 
 - Power-on settings: 1/8 step (a common DRV8825 setting) and M6 thread
-  (1.0 mm pitch, so 6400 counts are 1 mm) on every axis.
+  (1.0 mm pitch, so 6400 counts are 1 mm) on every axis, on a unit whose
+  EEPROM is blank.  The original keeps step sizes and threads in EEPROM "aby
+  obsluha zařízení nemusela při každém zapnutí nastavovat" (FIDELITY S4-19):
+  given a :class:`Usb3Eeprom`, the unit powers on with what it holds and
+  writes every change (``M``, ``T``, the menu) to it.
 - A move's count that is not a whole number of pulses is rounded *down* to
   whole pulses, as integer division on the unit would; the station avoids it
   with :func:`~protocol.usb3.codec.nearest_reachable_count`.
@@ -32,8 +36,14 @@ Decisions the contract leaves open, made here:
 - Position reports come on one 100 ms timer for all moving axes (X, Y, Z
   order); an axis that stops reports once more, as does every axis after
   ``C;`` and an axis given a move of less than one pulse.
-- The unit has no end switches; the mechanism's sit ``2**30`` counts (tens of
-  kilometres of thread) either side of the power-on position, out of reach.
+- End switches: the original has six end-stop inputs, and "při stisku
+  tlačítka koncového dorazu dojde … k přerušení programu a zastaví se
+  správný motor" (FIDELITY S4-18).  :attr:`Usb3Config.end_switches` places
+  them, per axis, that many counts below and above the power-on position;
+  the axis that reaches one stops dead there (the interrupt), reports where
+  it stands, and the others go on.  By default they sit ``2**30`` counts
+  (tens of kilometres of thread) away, out of reach, since the reference
+  unit's mechanics are not given.
 
 Time only moves in :meth:`Usb3Firmware.run_until`, in whole control cycles:
 commands that arrived since the previous cycle are handled at its start, the
@@ -74,9 +84,12 @@ from protocol.usb3.codec import (
 )
 
 SPEED_TABLE_SIZE = 32
-#: Pulses per second of each speed index: evenly spaced up to the unit's ~300.
+#: Pulses per second of each speed index, from 9.375 to the unit's ~300 along a parabola:
+#: "v nízkých rychlostech motory akcelerují mnohem pomaleji než ve vyšších rychlostech"
+#: (FIDELITY S4-13): a small deflection of the joystick changes the speed little, for
+#: precise positioning; the original's table values are not given, only this shape.
 SPEED_TABLE: tuple[float, ...] = tuple(
-    300.0 * (i + 1) / SPEED_TABLE_SIZE for i in range(SPEED_TABLE_SIZE)
+    9.375 + (300.0 - 9.375) * (i / (SPEED_TABLE_SIZE - 1)) ** 2 for i in range(SPEED_TABLE_SIZE)
 )
 
 ADC_MAX = 1023
@@ -94,6 +107,16 @@ _EPS = 1e-9
 COMMAND_LOG_LENGTH = 1000
 
 
+@dataclass
+class Usb3Eeprom:
+    """The unit's EEPROM: the step sizes and threads it powers on with (None: blank)."""
+
+    step_sizes: Triple[StepSize] | None = None
+    threads: Triple[Thread] | None = None
+    #: Writes so far (the part wears: the firmware writes only on a change).
+    writes: int = 0
+
+
 @dataclass(frozen=True)
 class Usb3Config:
     """What differs between units; the defaults describe the reference unit."""
@@ -106,8 +129,12 @@ class Usb3Config:
     acceleration: float = 600.0
     control_cycle: float = 0.005
     report_interval: float = 0.1
+    #: Counts from the power-on position to each axis' low and high end switch.
+    end_switches: Triple[tuple[float, float]] = ((_FAR, _FAR), (_FAR, _FAR), (_FAR, _FAR))
 
     def __post_init__(self) -> None:
+        if any(not (low > 0 and high > 0) for low, high in self.end_switches):
+            raise ValueError(f"end switches lie either side of power-on, got {self.end_switches}")
         table = self.speed_table
         if len(table) != SPEED_TABLE_SIZE:
             raise ValueError(f"the speed table needs {SPEED_TABLE_SIZE} entries, got {len(table)}")
@@ -181,8 +208,11 @@ class Usb3Firmware(ControlCycles):
     the same re-entrant lock.
     """
 
-    def __init__(self, clock: Clock, config: Usb3Config | None = None) -> None:
+    def __init__(
+        self, clock: Clock, config: Usb3Config | None = None, eeprom: Usb3Eeprom | None = None
+    ) -> None:
         self.config = config if config is not None else Usb3Config()
+        self.eeprom = eeprom
         super().__init__(clock, self.config.control_cycle)
         self._decoder = CommandDecoder()
         self._queue: deque[Command | Rejected] = deque()
@@ -192,13 +222,28 @@ class Usb3Firmware(ControlCycles):
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
 
     def _make_motor(self, axis: AxisId) -> _Motor:
+        low, high = self.config.end_switches[axis]
         mechanism = Axis(
-            AxisLimits(travel_um=2 * _FAR, microstep_um=1.0),
+            AxisLimits(travel_um=low + high, microstep_um=1.0),
             acceleration=self.config.acceleration,
             start_speed=self.config.speed_table[0],
-            position_um=_FAR,
+            position_um=low,
         )
-        return _Motor(mechanism, self.config.step_sizes[axis], self.config.threads[axis])
+        sizes, threads = self.config.step_sizes, self.config.threads
+        if self.eeprom is not None:
+            sizes = self.eeprom.step_sizes or sizes
+            threads = self.eeprom.threads or threads
+        return _Motor(mechanism, sizes[axis], threads[axis], zero=low)
+
+    def _save_settings(self) -> None:
+        """Keep the step sizes and threads in EEPROM, as the original does, when they changed."""
+        if self.eeprom is None:
+            return
+        sizes = (self._motors[0].step_size, self._motors[1].step_size, self._motors[2].step_size)
+        threads = (self._motors[0].thread, self._motors[1].thread, self._motors[2].thread)
+        if (sizes, threads) != (self.eeprom.step_sizes, self.eeprom.threads):
+            self.eeprom.step_sizes, self.eeprom.threads = sizes, threads
+            self.eeprom.writes += 1
 
     # -- EmulatedDevice --------------------------------------------------------
 
@@ -286,6 +331,7 @@ class Usb3Firmware(ControlCycles):
                     motor.step_size = StepSize(step_sizes[index])
                 if threads is not None:
                     motor.thread = Thread(threads[index])
+            self._save_settings()
             self._outbox.append(self._settings())
 
     def set_joystick(self, axis: AxisId, adc: int) -> None:
@@ -355,9 +401,11 @@ class Usb3Firmware(ControlCycles):
             case StepSizes(sizes):
                 for motor, size in zip(self._motors, sizes, strict=True):
                     motor.step_size = size
+                self._save_settings()
             case Threads(threads):
                 for motor, thread in zip(self._motors, threads, strict=True):
                     motor.thread = thread
+                self._save_settings()
             case ZeroAll():
                 self._zero_all()
             case GetSettings():

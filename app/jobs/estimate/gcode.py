@@ -117,5 +117,6 @@ def _one_axis_moves(
                 distance >= v * v / a, distance / v + v / a, 2.0 * np.sqrt(distance / a)
             )
     seconds[~np.isfinite(seconds)] = 0.0
+    seconds[program.dwell_ops] += program.dwell_s  # the drill's 250 ms at each hole's bottom
     cumulative = np.cumsum(seconds)
     return Estimate(float(cumulative[-1]) if len(cumulative) else 0.0, cumulative)

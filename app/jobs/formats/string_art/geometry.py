@@ -26,10 +26,27 @@ import numpy as np
 
 #: How far inside the board's edge the nails sit (the original firmware's 1.5 cm).
 NAIL_INSET_MM = 15.0
-#: How deep each nail hole is drilled, along the tool axis.
+#: How deep each nail hole is drilled, measured square to the board (the firmware's 1 cm).
 DRILL_DEPTH_MM = 10.0
 #: The drill (Z) axis' tilt to the board; Z is measured along it.
 DRILL_AXIS_TILT_DEG = 74.333
+#: How high above the board the drill tip waits before and between holes (the firmware's
+#: "Vrták se zvedne na výšku 1 cm nad matricí"); Z = 0 is that height.
+DRILL_CLEARANCE_MM = 10.0
+#: The firmware's ``delay(250)`` at the bottom of every hole.
+DRILL_DWELL_S = 0.25
+#: How far the needle passes inside the innermost nail and outside the nail it wraps (the
+#: firmware's ``min_polomer - 2.0`` and ``modul(f) + 2.0``, in cm).
+NEEDLE_CLEARANCE_MM = 20.0
+
+
+def along_drill_axis_mm(square_mm: float) -> float:
+    """A distance square to the board as travel along the tilted Z axis.
+
+    The firmware drills ``moveTo(round(hloubka_cm / sin(uhel_vrtani_stupne·π/180)·…))``:
+    a 10 mm deep hole is 10.386 mm of Z.
+    """
+    return square_mm / math.sin(math.radians(DRILL_AXIS_TILT_DEG))
 
 
 def nail_circle_radius_mm(radius_cm: float) -> float:

@@ -7,26 +7,44 @@ the board).  The program assumes the base at A = 0 when it starts (after
 homing) and keeps A unwrapped: every turn is the shortest signed one from
 where the base is, so none is longer than 180°.
 
-1. **Drill phase**, per nail in index order: turn the base to the nail's
-   angle, move the tool to the nail's radius, drill ``drill_depth_mm`` deep
-   along the tool axis (Z), back out (Z 0).  X is where the tool meets the
-   board's surface: the 74.333° tilt moves the hole's bottom about
-   ``10·cos(74.333°) ≈ 2.7 mm`` radially from it, which leans the nails as
-   the original machine did; no offset is modelled.  Then the tool moves
-   out beyond the nails, clear of the holes.
+1. **Drill phase**, as the firmware's ``vrt_cm``: Z 0 is the drill tip
+   1 cm above the board (``DRILL_CLEARANCE_MM``), where the firmware raises
+   it before drilling; the program starts by going there.  Per nail in
+   index order: turn the base to the nail's angle, move the tool to the
+   nail's radius, drill 1 cm above plus ``drill_depth_mm`` deep, measured
+   square to the board and travelled along the axis tilted 74.333° to it
+   (``along_drill_axis_mm``: 10 mm deep is 10.386 mm of Z past the
+   surface, 20.773 mm of Z in all), wait 250 ms at the bottom (``G4``),
+   back to Z 0.  X is where the tool meets the board's surface: the tilt
+   moves the hole's bottom about ``10·cos(74.333°) ≈ 2.7 mm`` radially
+   from it, which leans the nails as the original machine did; no offset
+   is modelled.  Then, as the firmware, the base turns back to nail 0 and
+   the tool goes to nail 0's radius.
 2. **Wait** for the operator: "Insert the nails, tie the thread to nail 0"
-   (the sequence's first nail).
+   (the sequence's first nail).  Every driver is switched off (``M18``)
+   while the machine waits, as the firmware does; the next move switches
+   them on again.
 3. **Winding**, as the original firmware did it.  The needle works between
-   an inner radius (``needle_in_mm`` inside the innermost nail) and an
-   outer one (``needle_out_mm`` outside the outermost); it crosses the nail
-   ring only halfway between two neighbouring nails.  It steps in once
-   between the first nail and the next one; then for each next nail ``k``
-   it turns (inside) the shorter way round to the gap beside ``k`` on the
-   side it approaches from, moves out, turns across ``k`` to the gap on the
-   other side — the thread wraps the nail — and moves in.  One radius
-   inside and one outside for the whole board keep the needle clear of
-   every nail while it turns, also on a polygon whose mid-edge nails are
-   nearer the centre than its corners.
+   an inner radius (``needle_in_mm``, 2 cm, inside the innermost nail, for
+   the whole board) and, per nail wrapped, an outer one (``needle_out_mm``,
+   2 cm, outside that nail: the firmware's ``modul(f) + 2.0``); it crosses
+   the nail ring only halfway between two neighbouring nails, and while
+   outside it turns only across the nail it wraps.  To start it goes out
+   beyond the first nail, turns to the gap between the first nail and the
+   next one, moves in and turns back to the first nail's angle (nail 0:
+   angle 0); the drill's driver is then switched off for the winding
+   (``M18 Z0``, against overheating).  Then for each next nail ``k`` it turns
+   (inside) the shorter way round to the gap beside ``k`` on the side it
+   approaches from, moves out, turns across ``k`` to the gap on the other
+   side — the thread wraps the nail — and moves in.
+
+   Which entries are wound differs from the firmware on purpose (FIDELITY
+   S0-22): its loop ``for(i=0; i<count-1; i++) omotej_hrebik(entry i+1)``
+   wraps the 1st…(count-1)th entries, so it wraps the nail the thread is
+   tied to (nothing gained: the thread is anchored there) and never the
+   last one (a connection of the picture lost).  StepDeck ties the thread
+   to the first entry and wraps the 2nd…last: every connection of the file
+   is made once.
 
 Every operation records the nail it serves (``nail_of_op``) and the
 sequence entry (``entry_of_op``, -1 in the drill phase), so the preview
@@ -52,7 +70,15 @@ from typing import ClassVar, Literal, overload
 
 import numpy as np
 
-from app.jobs.formats.string_art.geometry import DRILL_DEPTH_MM, half_gaps, shortest_turn
+from app.jobs.formats.string_art.geometry import (
+    DRILL_CLEARANCE_MM,
+    DRILL_DEPTH_MM,
+    DRILL_DWELL_S,
+    NEEDLE_CLEARANCE_MM,
+    along_drill_axis_mm,
+    half_gaps,
+    shortest_turn,
+)
 from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams, read_string_art
 from app.jobs.program import (
     JobFileError,
@@ -76,9 +102,16 @@ _KINDS = tuple(OpKind)
 class WindingSettings:
     """Where the needle goes round the nails and how deep the drill goes."""
 
-    needle_in_mm: float = 5.0  # inside the innermost nail while turning
-    needle_out_mm: float = 5.0  # outside the outermost nail while wrapping one
-    drill_depth_mm: float = DRILL_DEPTH_MM
+    needle_in_mm: float = NEEDLE_CLEARANCE_MM  # inside the innermost nail while turning
+    needle_out_mm: float = NEEDLE_CLEARANCE_MM  # outside the nail it wraps
+    drill_depth_mm: float = DRILL_DEPTH_MM  # square to the board
+    drill_clearance_mm: float = DRILL_CLEARANCE_MM  # the tip above the board at Z 0
+    drill_dwell_s: float = DRILL_DWELL_S
+
+    @property
+    def drill_bottom_z(self) -> float:
+        """Z at a hole's bottom: clearance and depth, along the tilted axis."""
+        return along_drill_axis_mm(self.drill_clearance_mm + self.drill_depth_mm)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -99,7 +132,13 @@ class StringArtProgram(Program):
     #: Model seconds on the profile it was built for (None without a profile).
     estimate_s: float | None = None
     needle_in_radius_mm: float = 0.0
+    #: The largest outer radius (each nail's own is its radius plus ``needle_out_mm``).
     needle_out_radius_mm: float = 0.0
+    #: The dwells at the holes' bottoms (``G4`` operations) and how long each is.
+    dwell_ops: np.ndarray = field(
+        default_factory=lambda: np.zeros(0, dtype=np.int64), compare=False, repr=False
+    )
+    dwell_s: float = 0.0
     preview_plane: ClassVar[Literal["axes", "board"]] = "board"
 
     @cached_property
@@ -217,7 +256,7 @@ def _turn(current: np.ndarray, target: np.ndarray) -> np.ndarray:
 
 
 def _winding_turns(
-    sequence: np.ndarray, angles: np.ndarray, before: np.ndarray, after: np.ndarray
+    sequence: np.ndarray, angles: np.ndarray, before: np.ndarray, after: np.ndarray, start: float
 ) -> tuple[np.ndarray, np.ndarray]:
     """Per further entry, the turn to the gap beside its nail and the wrap round it (degrees).
 
@@ -229,12 +268,11 @@ def _winding_turns(
     direction whatever came before, and between two such entries each one
     keeps or flips it, so the chain is a running parity (no Python loop).
     """
-    first = sequence[0]
     nails = sequence[1:]
     angle = angles[nails]
     end_ccw = angle + after[nails]  # where a wrap approached counter-clockwise ends
     end_cw = angle - before[nails]
-    start = angles[first] + after[first]  # where the needle stepped in
+    # ``start``: where the base stands after the step in (the first nail's angle).
     from_ccw = np.concatenate(([start], end_ccw[:-1]))
     from_cw = np.concatenate(([start], end_cw[:-1]))
     if_ccw = _turn(from_ccw, angle) >= 0  # the direction after a counter-clockwise wrap
@@ -277,7 +315,7 @@ class StringArtOperations(Sequence[Operation]):
         a_turn: np.ndarray,
         a_wrap: np.ndarray,
         r_in: float,
-        r_out: float,
+        r_out: np.ndarray,
         tail: Operation,
     ) -> None:
         self.job = job
@@ -326,7 +364,7 @@ class StringArtOperations(Sequence[Operation]):
         elif step == 2:
             target = {"A": float(self.a_wrap[entry - 1])}
         else:
-            target = {"X": self.r_out if step == 1 else self.r_in}
+            target = {"X": float(self.r_out[entry - 1]) if step == 1 else self.r_in}
         return Operation(
             OpKind.MOVE, self.job.entry_source(entry), MappingProxyType(target), message
         )
@@ -347,7 +385,6 @@ def build_program(
     angles, radii = job.nail_polar()
     before, after = half_gaps(angles)
     r_in = float(radii.min()) - settings.needle_in_mm
-    r_out = float(radii.max()) + settings.needle_out_mm
     if r_in < 0:
         where = job.param_source("polomer_matrice")
         raise JobFileError(
@@ -361,19 +398,32 @@ def build_program(
     sequence = job.sequence
     total = len(sequence)
     at_param = job.param_source("pocet_hrebiku")
+    bottom = settings.drill_bottom_z
+    dwell = f"G4 S{settings.drill_dwell_s:g}"
+    dwell_ops: list[int] = []
 
     b.add(Operation(OpKind.COMMENT, at_param, message=f"drill phase: {nails} nails"), -1, -1)
+    above = f"{settings.drill_clearance_mm:g} mm above the board"
+    b.move(at_param, "Z", 0.0, f"drill {above}", -1, -1)
     for nail in range(nails):
         label = f"drill nail {nail}"
         b.turn_to(float(angles[nail]), at_param, f"{label}: turn the base", nail, -1)
         b.move(at_param, "X", float(radii[nail]), f"{label}: tool to its radius", nail, -1)
-        b.move(at_param, "Z", settings.drill_depth_mm, f"{label}: drill", nail, -1)
-        b.move(at_param, "Z", 0.0, f"{label}: back out", nail, -1)
-    b.move(at_param, "X", r_out, "tool out beyond the nails", -1, -1)
+        b.move(at_param, "Z", bottom, f"{label}: drill", nail, -1)
+        dwell_ops.append(len(b.ops))
+        b.add(Operation(OpKind.GCODE, at_param, message=f"{label}: at the bottom", line=dwell),
+              nail, -1)  # fmt: skip
+        b.move(at_param, "Z", 0.0, f"{label}: back {above}", nail, -1)
+    zero = "back to nail 0"
+    b.turn_to(float(angles[0]), at_param, f"{zero}: turn the base", 0, -1)
+    b.move(at_param, "X", float(radii[0]), f"{zero}: tool to its radius", 0, -1)
 
     first = sequence[0]
     at_first = job.entry_source(0)
     b.add(Operation(OpKind.COMMENT, at_first, message=f"winding: {total} connections"), -1, -1)
+    b.add(
+        Operation(OpKind.GCODE, at_first, message="drivers off while waiting", line="M18"), -1, -1
+    )
     wait_index = len(b.ops)
     b.add(
         Operation(
@@ -383,9 +433,19 @@ def build_program(
         0,
     )
     step_in = f"start at nail {first}"
+    first_out = float(radii[first]) + settings.needle_out_mm
+    b.move(at_first, "X", first_out, f"{step_in}: needle out", first, 0)
     b.turn_to(float(angles[first] + after[first]), at_first, f"{step_in}: turn", first, 0)
     b.move(at_first, "X", r_in, f"{step_in}: needle in", first, 0)
-    turns, wraps = _winding_turns(np.asarray(sequence, dtype=np.int64), angles, before, after)
+    b.turn_to(float(angles[first]), at_first, f"{step_in}: turn back", first, 0)
+    b.add(
+        Operation(OpKind.GCODE, at_first, message="drill driver off while winding", line="M18 Z0"),
+        first,
+        0,
+    )
+    turns, wraps = _winding_turns(
+        np.asarray(sequence, dtype=np.int64), angles, before, after, b.angle
+    )
     a_turn, a_wrap = _unwrapped(b.angle, turns, wraps)
     last = sequence[-1]
     tail = Operation(
@@ -395,6 +455,8 @@ def build_program(
     )
     winding = total - 1
     nails_wound = np.asarray(sequence[1:], dtype=np.int32)
+    r_out = radii[nails_wound] + settings.needle_out_mm
+    r_out_max = float(max(first_out, float(r_out.max()) if len(r_out) else first_out))
     head_axis = [_COLUMN[next(iter(op.target))] if op.target else -1 for op in b.ops]
     head_values = [next(iter(op.target.values())) if op.target else math.nan for op in b.ops]
     move_values = np.empty(4 * winding)
@@ -436,7 +498,9 @@ def build_program(
         ).astype(np.int8),
         wait_index=wait_index,
         needle_in_radius_mm=r_in,
-        needle_out_radius_mm=r_out,
+        needle_out_radius_mm=r_out_max,
+        dwell_ops=np.array(dwell_ops, dtype=np.int64),
+        dwell_s=settings.drill_dwell_s,
     )
     if profile is None:
         return program
@@ -470,8 +534,9 @@ def winder_seconds(program: Program, profile: MachineProfile) -> float:
     """Model time of ``program``'s moves on ``profile``: one trapezoid per axis and move,
     axes of one move together (the longest counts), moves one after the other, from 0.
 
-    A closed-form estimate from the profile's top speed and acceleration; the
-    operator's waits and the link's round trips are not counted.
+    A closed-form estimate from the profile's top speed and acceleration, plus
+    the drill's dwells; the operator's waits and the link's round trips are
+    not counted.
     """
     names = [axis.name for axis in profile.axes]
     path = program.path(names)
@@ -484,7 +549,8 @@ def winder_seconds(program: Program, profile: MachineProfile) -> float:
         times = np.maximum(
             times, move_seconds(steps[:, column], axis.max_speed, axis.max_acceleration)
         )
-    return float(times.sum())
+    dwells = getattr(program, "dwell_ops", ())
+    return float(times.sum()) + len(dwells) * float(getattr(program, "dwell_s", 0.0))
 
 
 def load_string_art_program(
