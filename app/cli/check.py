@@ -18,10 +18,11 @@ import math
 import sys
 from collections.abc import Sequence
 from pathlib import Path
-from typing import NoReturn, TextIO
+from typing import TextIO
 
 import numpy as np
 
+from app.cli.usage import UsageError, UsageParser
 from app.jobs.estimate import estimate
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
 from app.jobs.loaders import JOB_TYPES, AmbiguousFormat, JobOptions, load_job
@@ -36,17 +37,8 @@ OK, USAGE, REFUSED = 0, 1, 2
 SHOWN_REFUSALS = 50
 
 
-class UsageError(Exception):
-    """The command line itself is wrong: exit status 1."""
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> NoReturn:
-        raise UsageError(message)
-
-
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(
+    parser = UsageParser(
         prog="stepdeck check",
         description="Load and check job files against a machine profile (no window).",
         epilog="Exit status: 0 fine, 2 refused, 1 usage error.",

@@ -17,10 +17,11 @@ import argparse
 import sys
 from collections.abc import Sequence
 from pathlib import Path
-from typing import NoReturn, TextIO
+from typing import TextIO
 
 from tqdm import tqdm
 
+from app.cli.usage import UsageError, UsageParser
 from app.profiles import available_profiles
 from app.scripting.errors import (
     CheckpointWaiting,
@@ -36,17 +37,8 @@ from app.scripting.machine import Machine, connect
 DONE, USAGE, REFUSED, FAILED, INTERRUPTED = 0, 1, 2, 3, 130
 
 
-class UsageError(Exception):
-    pass
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str) -> NoReturn:
-        raise UsageError(message)
-
-
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(
+    parser = UsageParser(
         prog="stepdeck run",
         description="Run a job file on a machine without a window.",
         epilog="Exit status: 0 done, 2 refused, 3 failed or aborted, 130 interrupted (Ctrl+C).",
