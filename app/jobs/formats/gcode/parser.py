@@ -108,6 +108,7 @@ class Parser:
         self.title = machine_title or "machine"
         self.z_is_pen = settings.z_is_pen
         self.feed_required = settings.feed_required
+        self.dwell_p_seconds = settings.dwell_p_seconds
         #: Inner arc vertices the file's arcs may still have (arcs.MAX_ARC_VERTICES in all).
         self.arc_budget = MAX_ARC_VERTICES
         self.pens = PenRules(settings)
@@ -399,9 +400,13 @@ class Parser:
                 for c in op.target:
                     st.position[c] = 0.0
             elif "G4" in commands:
-                # PROTOCOLS.md section 4: P in milliseconds, S in seconds.
+                # P in the machine's unit (GRBL: seconds; the profile's dwell_p), S in seconds.
                 op.dwell = (
-                    value("P") / 1000 if "P" in params else value("S") if "S" in params else 0.0
+                    value("P") * self.dwell_p_seconds
+                    if "P" in params
+                    else value("S")
+                    if "S" in params
+                    else 0.0
                 )
             elif axes and not non_modal:
                 self._motion(number, code, words, params, commands, op, axes)
