@@ -136,6 +136,8 @@ class GcodeSession(MachineSession):
         self._status_asked_at: float | None = None  # an unanswered "?", for request_status
         self._last_heard = clock.now()
         self._jog_unanswered = 0
+        #: Without ``Bf:`` in the reports: when each planned jog step should be done (clock).
+        self._jog_ends: list[float] = []
         self._jog_status_fresh = False
         #: Where the steps sent so far take each axis (None: no jog under way).
         self._jog_target: list[float] | None = None
@@ -352,6 +354,7 @@ class GcodeSession(MachineSession):
     def _end_jog(self) -> None:
         """The operator let go (or changed direction): the machine brakes now."""
         self._jog_target = None
+        self._jog_ends = []
         self._jog_told_end = False
         if not self.link.is_open or not (self._jog_unanswered or self._machine_moving()):
             return
@@ -377,8 +380,13 @@ class GcodeSession(MachineSession):
             return
         if report.planner_free is not None and self._planner_size:
             planned = self._planner_size - report.planner_free
+        elif report.state == "Idle":
+            planned, self._jog_ends = 0, []
         else:
-            planned = 0 if report.state == "Idle" else JOG_BLOCKS_AHEAD
+            # No Bf: (GRBL's default $10=1): the steps are timed, each JOG_STEP_S long.
+            now = self.clock.now()
+            self._jog_ends = [end for end in self._jog_ends if end > now]
+            planned = len(self._jog_ends)
         if planned < JOG_BLOCKS_AHEAD:
             self._send_jog_step()
 
@@ -523,6 +531,9 @@ class GcodeSession(MachineSession):
         self._seen_idle = False
         if sent.origin == "jog":
             self._jog_unanswered = max(0, self._jog_unanswered - 1)
+            if error is None:
+                now = self.clock.now()
+                self._jog_ends.append(max([now, *self._jog_ends]) + JOG_STEP_S)
             if any(self._jog):
                 self.query_status()  # its Bf says whether the next step may go
         if error is None:
@@ -537,6 +548,7 @@ class GcodeSession(MachineSession):
             if sent.origin != "job":
                 self.model.message.emit(
                     f"{sent.text!r} refused: error {error.code}, {error.meaning}"
+                    + _hint(sent.text, error.code)
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
         self._pump()
@@ -625,6 +637,21 @@ class GcodeSession(MachineSession):
         self._check_lost_answers(report, planner_empty)
         self.statusChanged.emit(report)
         self._feed_jog()
+
+
+#: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).
+SETTING_DISABLED = 5
+
+
+def _hint(line: str, code: int) -> str:
+    """What the operator can do about a refusal the error's meaning alone does not explain."""
+    if code == SETTING_DISABLED and line.replace(" ", "").upper().startswith("$H"):
+        return (
+            ". Homing is switched off on the board ($22=0, GRBL's default): with end "
+            "switches fitted, send $22=1 from the console; without them, move the machine "
+            "to its origin by hand and set it there"
+        )
+    return ""
 
 
 def _pauses(line: str) -> bool:
