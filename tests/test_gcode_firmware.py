@@ -330,7 +330,7 @@ def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
 
 
 def test_grbl_counts_only_what_it_keeps_of_a_line_towards_its_80_bytes() -> None:
-    """S-GRBL-lines: GRBL drops spaces and comments as they arrive; 79 characters fit."""
+    """G7-06, G7-07: GRBL drops spaces and comments as they arrive; 79 characters fit."""
     bench = Bench()
     bench.fw.receive(b"G1 X1" + b" " * 100 + b"F100\n")  # spaces never count
     assert [reply for _, reply in bench.run(CYCLE)] == [Ok()]
@@ -350,6 +350,7 @@ def test_grbl_counts_only_what_it_keeps_of_a_line_towards_its_80_bytes() -> None
 
 
 def test_grbl_ends_a_line_at_a_lone_cr_and_answers_an_empty_line_ok() -> None:
+    """G7-05: GRBL ends a line at CR or LF."""
     bench = Bench()
     bench.fw.receive(b"G0 X1\rG0 X2\r\n")
     # CR ends the first two lines; the LF after it ends an empty one, which GRBL answers ok.
@@ -359,6 +360,7 @@ def test_grbl_ends_a_line_at_a_lone_cr_and_answers_an_empty_line_ok() -> None:
 
 
 def test_grbl_extended_real_time_bytes_never_enter_a_line() -> None:
+    """G7-02: bytes 0x80-0xFF are real-time commands (overrides) in GRBL 1.1."""
     bench = Bench()
     bench.fw.receive(b"G0 X\x91\x9e1\n")  # feed override and spindle stop bytes mid-line
     assert [reply for _, reply in bench.run(CYCLE)] == [Ok()]
@@ -367,6 +369,7 @@ def test_grbl_extended_real_time_bytes_never_enter_a_line() -> None:
 
 
 def test_grbl_takes_coolant_and_tool_words_and_shows_them_in_its_modes() -> None:
+    """G7-04: GRBL 1.1 takes M8/M9 and a T word (it has no tool changer: M6 is error:20)."""
     bench = Bench()
     assert bench.do("M8", "T2", "G0 X1 T3") == [Ok()] * 3
     assert bench.do("$G")[0] == Feedback("[GC:G0 G54 G17 G21 G90 G94 M5 M8 T3 F0 S0]")
@@ -375,6 +378,7 @@ def test_grbl_takes_coolant_and_tool_words_and_shows_them_in_its_modes() -> None
 
 
 def test_grbl_check_mode_parses_without_moving_and_leaving_it_resets() -> None:
+    """G7-03: $C as GRBL 1.1 does it (seen on grbl-sim: Disabled, ok, then the banner)."""
     bench = Bench()
     assert bench.do("$C") == [Feedback("[MSG:Enabled]"), Ok()]
     assert bench.fw.state == "Check"
@@ -388,7 +392,7 @@ def test_grbl_check_mode_parses_without_moving_and_leaving_it_resets() -> None:
 
 
 def test_grbl_soft_limits_are_off_by_default_and_settable() -> None:
-    """GRBL's $20=0: a move beyond the travel runs; with $20=1 it is error:15."""
+    """G7-08: GRBL's $20=0: a move beyond the travel runs; with $20=1 it is error:15."""
     bench = Bench()
     assert bench.do("G0 X301") == [Ok()]
     bench.run_until_idle()
@@ -404,6 +408,7 @@ def test_grbl_soft_limits_are_off_by_default_and_settable() -> None:
 
 
 def test_grbl_rates_and_accelerations_are_settable() -> None:
+    """G7-08: $110… and $120… change the motion."""
     bench = Bench()
     assert bench.do("$110=1200", "$111=1200", "$112=1200") == [Ok()] * 3
     bench.send("G0 X10")
@@ -414,11 +419,13 @@ def test_grbl_rates_and_accelerations_are_settable() -> None:
 
 
 def test_grbl_home_with_homing_disabled_is_error_5() -> None:
+    """G8-06: GRBL's $22=0 answers $H with error:5 (setting disabled)."""
     bench = Bench()
     assert bench.do("$22=0", "$H") == [Ok(), ErrorReply(5)]
 
 
 def test_grbl_status_mask_leaves_out_the_buffers_as_a_fresh_board_does() -> None:
+    """G8-02: $10=1, GRBL's default, leaves Bf: out of the status reports."""
     bench = Bench()
     assert bench.status().planner_free == 15
     assert bench.do("$10=1") == [Ok()]

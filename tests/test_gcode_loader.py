@@ -689,7 +689,7 @@ def test_estimate_triangle_rapid_and_dwell(tmp_path: Path) -> None:
 def test_g4_p_is_read_in_the_unit_of_the_machines_firmware(
     tmp_path: Path, profile: str, seconds: float
 ) -> None:
-    """S-GRBL-G4: GRBL 1.1 reads ``G4 P`` as seconds; the plotters' own firmwares as ms."""
+    """G8-01: GRBL 1.1 reads ``G4 P`` as seconds; the plotters' own firmwares as ms."""
     program = load_for(write(tmp_path, "G4 P150\nG4 S2\n"), profile)
     assert program.data.dwell_s.tolist() == pytest.approx([seconds, 2.0])
     result = estimate(program, load_profile(profile), {}, 0.1)

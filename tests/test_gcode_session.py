@@ -249,7 +249,7 @@ def held_jog_distance(harness: StationHarness) -> float:
 def test_a_held_jog_runs_as_far_on_a_board_without_bf_in_its_reports(
     qtbot: QtBot, fresh_grbl: StationHarness
 ) -> None:
-    """S-GRBL-Bf: without ``Bf:`` the next jog step goes before the last is done, timed."""
+    """G8-02: without ``Bf:`` the next jog step goes before the last is done, timed."""
     without = held_jog_distance(fresh_grbl)
     assert [m for m in fresh_grbl.messages if "refused" in m] == []  # type: ignore[attr-defined]
     with_bf = grbl_board(3)
@@ -264,7 +264,7 @@ def test_a_held_jog_runs_as_far_on_a_board_without_bf_in_its_reports(
 def test_home_refused_for_disabled_homing_says_why_and_what_to_do(
     fresh_grbl: StationHarness,
 ) -> None:
-    """S-GRBL-H: GRBL's default $22=0 answers $H with error:5; the station explains it."""
+    """G8-06: GRBL's default $22=0 answers $H with error:5; the station explains it."""
     session = fresh_grbl.gcode_session
     assert session.send_line("$22=0")
     fresh_grbl.run_until(lambda: session.settled, timeout=5)

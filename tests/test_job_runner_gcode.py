@@ -374,7 +374,7 @@ def _stream_through(text: str, tmp_path: Path, answered: int) -> GcodeStream:
 def test_without_bf_the_executed_boundary_follows_where_the_board_stands(
     tmp_path: Path,
 ) -> None:
-    """S-GRBL-Bf: a board reporting no ``Bf:`` (``$10=1``) still shows what has run.
+    """G8-02: a board reporting no ``Bf:`` (``$10=1``) still shows what has run.
 
     Without it the boundary stayed at the start until the board stood idle, so a
     resume after a lost link redrew everything since (313 pen-down moves on the
