@@ -391,6 +391,19 @@ def test_grbl_check_mode_parses_without_moving_and_leaving_it_resets() -> None:
     assert bench.fw.position()["X"] == 1.0
 
 
+def test_a_jog_line_behind_a_jog_cancel_waits_for_the_stop_then_runs() -> None:
+    """G7-01: GRBL reads no line while a cancelled jog brakes; the next jog then runs."""
+    bench = Bench()
+    bench.send("$J=G91 X20 F3000")
+    bench.run(0.1)
+    assert bench.fw.state == "Jog"
+    bench.fw.receive(b"\x85" + encode_line("$J=G91 X1 F3000"))
+    replies = bench.run_until_idle()
+    assert replies == [Ok()]  # the line behind the cancel: taken, not refused
+    cancelled = bench.events("jog cancelled")[0]["pos"]["X"]
+    assert bench.fw.position()["X"] == pytest.approx(cancelled + 1.0)
+
+
 def test_grbl_soft_limits_are_off_by_default_and_settable() -> None:
     """G7-08: GRBL's $20=0: a move beyond the travel runs; with $20=1 it is error:15."""
     bench = Bench()

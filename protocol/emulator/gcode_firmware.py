@@ -426,6 +426,10 @@ class GcodeFirmware(ControlCycles):
         self._flush()
 
     def _take_lines(self) -> None:
+        if self._jog_cancelling:
+            # GRBL reads no line while a cancelled jog brakes (its suspend loop): a jog line
+            # that came behind the 0x85 waits, then runs as a new jog.
+            return
         self._queue_pending(self.time)
         while not self._pending and self._planner.free > 0:
             line = self._next_line()
@@ -628,7 +632,7 @@ class GcodeFirmware(ControlCycles):
         Only G20/G21, G90/G91 and G53 may stand in it, and F is required; it is
         taken while idle or jogging, and its blocks report the ``Jog`` state.
         """
-        if self.state not in ("Idle", "Jog") or self._jog_cancelling:
+        if self.state not in ("Idle", "Jog"):
             return NOT_IDLE
         words = split_words(body)
         if isinstance(words, WordError):

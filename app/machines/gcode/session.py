@@ -534,6 +534,12 @@ class GcodeSession(MachineSession):
             if error is None:
                 now = self.clock.now()
                 self._jog_ends.append(max([now, *self._jog_ends]) + JOG_STEP_S)
+                if not any(self._jog) and self.jogs_with_command and self.link.is_open:
+                    # A step still on its way when the key was let go: GRBL read it after
+                    # the cancel and runs it as a new jog; cancel that one too.
+                    self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
+                    self._jog_cancelling = True
+                    self.query_status()
             if any(self._jog):
                 self.query_status()  # its Bf says whether the next step may go
         if error is None:
