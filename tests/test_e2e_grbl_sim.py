@@ -42,6 +42,8 @@ SLOW = pytest.mark.skipif(
     os.environ.get("STEPDECK_SLOW") != "1", reason="whole real files: set STEPDECK_SLOW=1"
 )
 JOB_TIMEOUT_MS = 240_000
+#: The whole file: about 4 min of GRBL's machine time, several times that on grbl-sim.
+SLOW_JOB_TIMEOUT_MS = 1_800_000
 #: The profile's speeds and accelerations, in GRBL's units (mm/min, mm/s²).
 BOARD_SETUP = [
     f"${setting + k}={value:g}"
@@ -161,10 +163,10 @@ def start(station: Station, program: Program, tmp_path: Path) -> JobRunner:
     return runner
 
 
-def finish(qtbot: QtBot, runner: JobRunner) -> None:
+def finish(qtbot: QtBot, runner: JobRunner, timeout_ms: int = JOB_TIMEOUT_MS) -> None:
     qtbot.waitUntil(
         lambda: runner.state in (JobState.DONE, JobState.FAILED, JobState.ABORTED),
-        timeout=JOB_TIMEOUT_MS,
+        timeout=timeout_ms,
     )
 
 
@@ -235,12 +237,17 @@ def _real_file_head(shared_dir: Path, tmp_path: Path, lines: int | None) -> Path
 
 
 def _run_real_file(
-    qtbot: QtBot, board: Board, station: Station, source: Path, tmp_path: Path
+    qtbot: QtBot,
+    board: Board,
+    station: Station,
+    source: Path,
+    tmp_path: Path,
+    timeout_ms: int = JOB_TIMEOUT_MS,
 ) -> tuple[tuple[float, float], list[str]]:
     session, answers = connect(qtbot, station, board)
     program = load(source)
     runner = start(station, program, tmp_path)
-    finish(qtbot, runner)
+    finish(qtbot, runner, timeout_ms)
     assert runner.state is JobState.DONE, answers.messages[-3:]
     end = standing(qtbot, session)
     last = program.path(("X", "Y")).coords[-1]
@@ -264,7 +271,8 @@ def test_the_whole_gcodetools_file_streams_and_ends_at_its_last_point(
     qtbot: QtBot, board: Board, station: Station, shared_dir: Path, tmp_path: Path
 ) -> None:
     source = _real_file_head(shared_dir, tmp_path, None)
-    record("real file", board, *_run_real_file(qtbot, board, station, source, tmp_path))
+    ran = _run_real_file(qtbot, board, station, source, tmp_path, SLOW_JOB_TIMEOUT_MS)
+    record("real file", board, *ran)
 
 
 def test_a_paused_job_stands_and_resumes_to_the_same_end(
