@@ -272,3 +272,25 @@ def test_home_refused_for_disabled_homing_says_why_and_what_to_do(
     fresh_grbl.run_until(lambda: session.settled, timeout=5)
     told = [m for m in fresh_grbl.messages if "'$H' refused" in m]  # type: ignore[attr-defined]
     assert told and "Homing is switched off on the board ($22=0" in told[-1], told
+
+
+def test_an_answer_after_a_soft_reset_belongs_to_no_line_and_new_lines_wait_for_the_banner(
+    qtbot: QtBot,
+) -> None:
+    """G8-05: GRBL may answer the line it was parsing after the reset (a stray ok)."""
+    harness = grbl_board(3)
+    try:
+        session = harness.gcode_session
+        acknowledged: list[str] = []
+        session.lineAcknowledged.connect(lambda sent: acknowledged.append(sent.text))
+        session.soft_reset()
+        assert session.send_line("G0 X2")
+        session.receive_injected(b"ok\r\n")  # the stray ok, before the banner
+        assert acknowledged == []
+        assert b"G0 X2" not in b"".join(harness.written)  # held until the board is back
+        harness.run_until(lambda: session.settled, timeout=5)
+        assert acknowledged == ["G0 X2"]
+        harness.run_until(lambda: harness.gcode_emulator.state == "Idle", timeout=5)
+        assert harness.gcode_emulator.position()["X"] == 2.0
+    finally:
+        harness.close()

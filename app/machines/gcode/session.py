@@ -61,6 +61,8 @@ JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
+#: After a soft reset, answers are dropped and lines held until the banner, this long at most.
+BANNER_AFTER_RESET_S = 1.0
 #: Reports in a row, at least this far apart, that show every sent byte consumed and the
 #: machine idle with an empty planner while lines are unanswered: their answers were lost.
 LOST_ANSWER_REPORTS = 2
@@ -147,6 +149,8 @@ class GcodeSession(MachineSession):
         #: The stop under way ends a jog: no "lines not run" message for it.
         self._quiet_stop = False
         self._reset_requested_at: float | None = None
+        #: A soft reset was sent at this time and its banner has not come yet.
+        self._reset_sent_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
         #: Since when (station clock) reports show the board done with everything sent, while
@@ -223,6 +227,8 @@ class GcodeSession(MachineSession):
         return self.streamer.in_flight
 
     def _pump(self) -> None:
+        if self._awaiting_banner():
+            return  # bytes sent while the board restarts are lost by the board itself
         for raw, sent in self.streamer.sendable():
             self.link.write(raw)
             self.frameSent.emit(sent.text, raw)
@@ -254,9 +260,21 @@ class GcodeSession(MachineSession):
     def cycle_start(self) -> None:
         self._realtime(CYCLE_START, "~ (resume)")
 
+    def _awaiting_banner(self) -> bool:
+        sent = self._reset_sent_at
+        if sent is not None and self.clock.now() - sent > BANNER_AFTER_RESET_S:
+            self._reset_sent_at = sent = None  # a board that says nothing when it resets
+        return sent is not None
+
     def soft_reset(self) -> list[SentLine]:
-        """Reset the device: its buffers are emptied, so nothing unanswered will be answered."""
+        """Reset the device: its buffers are emptied, so nothing unanswered will be answered.
+
+        GRBL may still answer a line it was parsing (a stray ``ok`` after the reset):
+        until its banner, answers belong to no line and new lines wait.
+        """
         self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+        if self.link.is_open:
+            self._reset_sent_at = self.clock.now()
         return self._forget_stream()
 
     def discard_queued(self) -> list[SentLine]:
@@ -432,6 +450,8 @@ class GcodeSession(MachineSession):
             return
         self._check_answer()
         self._check_deadman()
+        if self._reset_sent_at is not None and not self._awaiting_banner():
+            self._pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
         requested = self._reset_requested_at
         if requested is not None and now - requested > RESET_AFTER_S:
@@ -464,6 +484,7 @@ class GcodeSession(MachineSession):
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
+        self._reset_sent_at = None
         self._last_heard = self.clock.now()
         self._await_device()
         if self._autotick:
@@ -473,6 +494,7 @@ class GcodeSession(MachineSession):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         self._reset_requested_at = None
+        self._reset_sent_at = None
         self._jog = [0] * self.axis_count
         self._jog_target = None
         self._jog_cancelling = False
@@ -501,6 +523,8 @@ class GcodeSession(MachineSession):
             self._last_heard = self.clock.now()
             self._device_answered()
             self.frameReceived.emit(reply, reply_bytes(reply))
+            if isinstance(reply, Ok | ErrorReply) and self._awaiting_banner():
+                continue  # an answer from before the reset: the line it was for is gone
             if isinstance(reply, Ok):
                 self._answered(None)
             elif isinstance(reply, ErrorReply):
@@ -511,9 +535,13 @@ class GcodeSession(MachineSession):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(f"Machine alarm {reply.code}: {reply.meaning}")
             elif isinstance(reply, Banner):
+                ours, self._reset_sent_at = self._reset_sent_at is not None, None
                 self.replyText.emit(reply.text)
-                lost = self._forget_stream()
                 self.query_status()  # a board that just started: where is it, how big its planner
+                if ours:
+                    self._pump()  # our reset's banner: what waited for it goes now
+                    continue
+                lost = self._forget_stream()
                 if lost:
                     self.model.message.emit(
                         f"The device reset: {len(lost)} unanswered line(s) were not run"
