@@ -696,6 +696,18 @@ def test_g4_p_is_read_in_the_unit_of_the_machines_firmware(
     assert result.total_s == pytest.approx(seconds + 2.0)
 
 
+def test_the_unicorn_files_dwells_are_seconds_on_grbl_and_the_operator_is_told(
+    shared_dir: Path,
+) -> None:
+    """G8-01: 369 x G4 P150 (meant as ms) wait over 15 hours on a GRBL board."""
+    program = load_for(real(shared_dir, BUNNY), "grbl-plotter", skip_unsupported=True)
+    assert program.data.dwell_s.sum() == pytest.approx(369 * 150)
+    assert any("G4 P is seconds" in note and "15 h 22 min" in note for note in program.notes)
+    assert not any(
+        "G4 P" in note for note in load_for(real(shared_dir, BUNNY), "corexy-plotter").notes
+    )
+
+
 def test_estimate_diagonal_is_limited_per_axis(tmp_path: Path) -> None:
     program = grbl(write(tmp_path, "G0 X300 Y300\n"))
     # Each axis at 200 mm/s: the diagonal at 200·√2 mm/s, accelerating at 500·√2 mm/s².
