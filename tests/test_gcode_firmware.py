@@ -780,3 +780,12 @@ def test_every_log_entry_is_small_json() -> None:
         assert "\n" not in text and len(text) < 200
         assert json.loads(text) == entry
         assert entry["t"] >= START
+
+
+def test_grbl_lists_its_settings_as_grbl_1_1h_does() -> None:
+    """The ``$$`` of grbl-sim (GRBL 1.1h), with this plotter's own axis settings."""
+    bench = Bench()
+    listed = [r.text for r in bench.do("$$") if isinstance(r, Feedback)]
+    assert listed[:8] == ["$0=10", "$1=25", "$2=0", "$3=0", "$4=0", "$5=0", "$6=0", "$10=3"]
+    assert {"$11=0.010", "$12=0.002", "$20=0", "$22=1", "$24=25.000", "$27=1.000"} <= set(listed)
+    assert "$100=80.000" in listed and "$110=6000.000" in listed and "$130=300.000" in listed

@@ -129,6 +129,8 @@ _GRBL_DEFAULTS: dict[int, float] = {
     0: 10, 1: 25, 2: 0, 3: 0, 4: 0, 5: 0, 6: 0, 10: 1, 11: 0.010, 12: 0.002, 13: 0,
     20: 0, 21: 0, 22: 0, 23: 0, 24: 25.0, 25: 500.0, 26: 250, 27: 1.0, 30: 1000, 31: 0, 32: 0,
 }  # fmt: skip
+#: The settings GRBL lists with three decimals (the others are whole numbers).
+_GRBL_DECIMAL = frozenset({11, 12, 24, 25, 27})
 
 _LINE_END = 0x0A
 _HELP = "[HLP:$$ $G $I $H $X ~ ! ? ctrl-x]"
@@ -623,8 +625,7 @@ class GcodeFirmware(ControlCycles):
             homing=bool(table[22]),
         )
         self._interpreter.config = self.config
-        if self._interpreter.step_rate > self.config.max_rate or rate > 0:
-            self._interpreter.step_rate = self.config.max_rate
+        self._interpreter.step_rate = self.config.max_rate
 
     def _jog(self, body: str) -> list[Block] | int:
         """``$J=``: a move run as a jog, which leaves the parser's modal state as it was.
@@ -654,7 +655,7 @@ class GcodeFirmware(ControlCycles):
         """``$$``: a few GRBL settings, per axis in the machine's axis order; all on GRBL."""
         if self._settings_table:
             return [
-                f"${k}={v:.3f}" if k >= 100 or not float(v).is_integer() else f"${k}={v:.0f}"
+                f"${k}={v:.3f}" if k >= 100 or k in _GRBL_DECIMAL else f"${k}={v:.0f}"
                 for k, v in sorted(self._settings_table.items())
             ]
         cfg = self.config
