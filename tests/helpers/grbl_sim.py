@@ -53,6 +53,8 @@ def build(shared_grbl: Path) -> Path:
     with open(out / "build.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if exe.is_file():
+            if not (out / "EEPROM.DAT").is_file():
+                _write_default_eeprom(exe, out / "EEPROM.DAT")
             return exe
         tree = out / "grbl"
         if tree.exists():
@@ -66,6 +68,7 @@ def build(shared_grbl: Path) -> Path:
         )
         if result.returncode != 0 or not exe.is_file():
             raise RuntimeError(f"grbl-sim did not build:\n{result.stdout[-2000:]}{result.stderr}")
+        _write_default_eeprom(exe, out / "EEPROM.DAT")
         return exe
 
 
@@ -179,10 +182,7 @@ def serve(exe: Path, workdir: Path) -> int:
 
 def start(exe: Path, workdir: Path) -> subprocess.Popen[bytes]:
     """The bridge in its own process, its first output line the device path."""
-    defaults = cache_dir() / "EEPROM.DAT"
-    if not defaults.is_file():
-        _write_default_eeprom(exe, defaults)
-    shutil.copyfile(defaults, workdir / "EEPROM.DAT")
+    shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
     root = Path(__file__).resolve().parent.parent.parent
     return subprocess.Popen(
         [sys.executable, "-m", "tests.helpers.grbl_sim", str(exe), str(workdir)],
