@@ -87,6 +87,14 @@ class GcodeSettings:
     status_ms: int = 200  # how often the station asks "?"
     #: G1/G2/G3 need a feed rate set first (GRBL's error:22); False: the firmware has a default.
     feed_required: bool = True
+    #: The unit of ``G4 P``: "s" on GRBL (P150 is two and a half minutes), "ms" on firmwares
+    #: that read it as Marlin does.  The loader, the estimate and the emulator follow it.
+    dwell_p: str = "s"
+
+    @property
+    def dwell_p_seconds(self) -> float:
+        """Seconds one unit of ``G4 P`` is on this machine."""
+        return 0.001 if self.dwell_p == "ms" else 1.0
 
 
 @dataclass(frozen=True)
@@ -173,6 +181,8 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         if "words" in values:
             values["words"] = tuple(str(w).upper() for w in values["words"])
         gcode = _build(GcodeSettings, values, path, "[gcode]")
+        if gcode.dwell_p not in ("s", "ms"):
+            raise ProfileError(f"{path}: [gcode] dwell_p must be 's' or 'ms'")
         if gcode.streaming not in ("counting", "ping-pong"):
             raise ProfileError(f"{path}: [gcode] streaming must be 'counting' or 'ping-pong'")
         if gcode.kinematics not in ("cartesian", "corexy", "cylindrical"):

@@ -310,7 +310,7 @@ def test_the_plotters_step_interval_sets_its_speed() -> None:
 
 def test_a_dwell_holds_the_next_move_in_order() -> None:
     bench = Bench()
-    bench.send("G4 P500", "G0 X10", "G4 S0.25", "G0 X0")
+    bench.send("G4 P0.5", "G0 X10", "G4 S0.25", "G0 X0")  # GRBL: P in seconds
     t0 = bench.elapsed
     bench.run_until_idle()
     # G0 X10 is 800 steps: 400 up to 8000 steps/s and 400 down, 0.2 s.
@@ -392,7 +392,7 @@ def test_the_log_records_each_line_with_the_bytes_then_unacknowledged() -> None:
 
 
 def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
-    bench = Bench()
+    bench = Bench(corexy_plotter_config())
     bench.fw.receive(b"G1 X1" + b" " * 100 + b"\n")  # 106 bytes: never fits a line
     assert bench.replies() == [ErrorReply(11)]
     assert bench.fw.unacknowledged == 0
@@ -401,6 +401,124 @@ def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
     bench.fw.receive(b"x" * 50 + b")\nG0 X1\n")
     assert bench.replies() == [ErrorReply(11), Ok()]
     assert bench.fw.overflows == 0
+
+
+def test_grbl_counts_only_what_it_keeps_of_a_line_towards_its_80_bytes() -> None:
+    """G7-06, G7-07: GRBL drops spaces and comments as they arrive; 79 characters fit."""
+    bench = Bench()
+    bench.fw.receive(b"G1 X1" + b" " * 100 + b"F100\n")  # spaces never count
+    assert [reply for _, reply in bench.run(CYCLE)] == [Ok()]
+    bench.fw.receive(b"(" + b"x" * 110)  # a long comment: read on, never counted
+    bench.run(CYCLE)
+    bench.fw.receive(b"x" * 50 + b") G0 X2 ; and more words: ")
+    bench.run(CYCLE)
+    bench.fw.receive(b"y" * 80 + b"\n")
+    assert bench.replies() == [Ok()]
+    assert bench.fw.overflows == 0
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 2.0
+    bench.fw.receive(b"G0X3" + b"0" * 76 + b"\n")  # 80 kept characters: one too many
+    assert bench.replies() == [ErrorReply(11)]
+    assert bench.do("G0X" + "0" * 75 + "3") == [Ok()]  # 79 fit
+    assert bench.do("$I ; build info")[-1] == Ok()
+
+
+def test_grbl_ends_a_line_at_a_lone_cr_and_answers_an_empty_line_ok() -> None:
+    """G7-05: GRBL ends a line at CR or LF."""
+    bench = Bench()
+    bench.fw.receive(b"G0 X1\rG0 X2\r\n")
+    # CR ends the first two lines; the LF after it ends an empty one, which GRBL answers ok.
+    assert [reply for _, reply in bench.run(CYCLE)] == [Ok(), Ok(), Ok()]
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 2.0
+
+
+def test_grbl_extended_real_time_bytes_never_enter_a_line() -> None:
+    """G7-02: bytes 0x80-0xFF are real-time commands (overrides) in GRBL 1.1."""
+    bench = Bench()
+    bench.fw.receive(b"G0 X\x91\x9e1\n")  # feed override and spindle stop bytes mid-line
+    assert [reply for _, reply in bench.run(CYCLE)] == [Ok()]
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 1.0
+
+
+def test_grbl_takes_coolant_and_tool_words_and_shows_them_in_its_modes() -> None:
+    """G7-04: GRBL 1.1 takes M8/M9 and a T word (it has no tool changer: M6 is error:20)."""
+    bench = Bench()
+    assert bench.do("M8", "T2", "G0 X1 T3") == [Ok()] * 3
+    assert bench.do("$G")[0] == Feedback("[GC:G0 G54 G17 G21 G90 G94 M5 M8 T3 F0 S0]")
+    assert bench.do("M9", "M6") == [Ok(), ErrorReply(20)]  # no tool changer in GRBL 1.1
+    assert bench.do("$G")[0] == Feedback("[GC:G0 G54 G17 G21 G90 G94 M5 M9 T3 F0 S0]")
+
+
+def test_grbl_check_mode_parses_without_moving_and_leaving_it_resets() -> None:
+    """G7-03: $C as GRBL 1.1 does it (seen on grbl-sim: Disabled, ok, then the banner)."""
+    bench = Bench()
+    assert bench.do("$C") == [Feedback("[MSG:Enabled]"), Ok()]
+    assert bench.fw.state == "Check"
+    assert bench.do("G0 X10", "G1 X5", "G0 X1 Y2") == [Ok(), ErrorReply(22), Ok()]
+    assert bench.events("move") == []
+    assert bench.do("$C")[:3] == [Feedback("[MSG:Disabled]"), Ok(), Banner(GRBL_BANNER)]
+    assert bench.fw.state == "Idle" and bench.fw.position()["X"] == 0.0
+    assert bench.do("G0 X1") == [Ok()]
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 1.0
+
+
+def test_a_jog_line_behind_a_jog_cancel_waits_for_the_stop_then_runs() -> None:
+    """G7-01: GRBL reads no line while a cancelled jog brakes; the next jog then runs."""
+    bench = Bench()
+    bench.send("$J=G91 X20 F3000")
+    bench.run(0.1)
+    assert bench.fw.state == "Jog"
+    bench.fw.receive(b"\x85" + encode_line("$J=G91 X1 F3000"))
+    replies = bench.run_until_idle()
+    assert replies == [Ok()]  # the line behind the cancel: taken, not refused
+    cancelled = bench.events("jog cancelled")[0]["pos"]["X"]
+    assert bench.fw.position()["X"] == pytest.approx(cancelled + 1.0)
+
+
+def test_grbl_soft_limits_are_off_by_default_and_settable() -> None:
+    """G7-08: GRBL's $20=0: a move beyond the travel runs; with $20=1 it is error:15."""
+    bench = Bench()
+    assert bench.do("G0 X301") == [Ok()]
+    bench.run_until_idle()
+    assert bench.fw.position()["X"] == 301.0
+    assert bench.do("G0 X0") == [Ok()]
+    bench.run_until_idle()
+    assert bench.do("$20=1", "$130=250") == [Ok()] * 2
+    assert bench.do("G0 X251") == [ErrorReply(15)]
+    assert bench.do("G3 X20 Y0 I10 J0 F3000") == [ErrorReply(15)]  # an arc under Y = 0
+    assert bench.do("G0 X250") == [Ok()]
+    assert Feedback("$130=250.000") in bench.do("$$")
+    assert bench.do("$999=1", "$20=-1") == [ErrorReply(3), ErrorReply(4)]
+
+
+def test_grbl_rates_and_accelerations_are_settable() -> None:
+    """G7-08: $110… and $120… change the motion."""
+    bench = Bench()
+    assert bench.do("$110=1200", "$111=1200", "$112=1200") == [Ok()] * 3
+    bench.send("G0 X10")
+    t0 = bench.elapsed
+    bench.run_until_idle()
+    # 1200 mm/min = 20 mm/s (1600 steps/s), reached in 0.02 s at 1000 mm/s²: 0.52 s for 10 mm.
+    assert bench.events("move")[0]["t"] == pytest.approx(START + t0 + 0.52, abs=0.006)
+
+
+def test_grbl_home_with_homing_disabled_is_error_5() -> None:
+    """G8-06: GRBL's $22=0 answers $H with error:5 (setting disabled)."""
+    bench = Bench()
+    assert bench.do("$22=0", "$H") == [Ok(), ErrorReply(5)]
+
+
+def test_grbl_status_mask_leaves_out_the_buffers_as_a_fresh_board_does() -> None:
+    """G8-02: $10=1, GRBL's default, leaves Bf: out of the status reports."""
+    bench = Bench()
+    assert bench.status().planner_free == 15
+    assert bench.do("$10=1") == [Ok()]
+    report = bench.status()
+    assert report.planner_free is None
+    assert report.mpos == (0.0, 0.0, 0.0)
 
 
 # -- errors ----------------------------------------------------------------------------------
@@ -413,7 +531,7 @@ def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
         ("G5 X1", 20),
         ("M98 100", 20),  # the plotter's code, not GRBL's
         ("A10", 20),  # no A on a plotter
-        ("T1", 20),
+        ("T1.5", 20),
         ("G1 X1.2.3 F100", 1),
         ("10", 1),
         ("G1 X F100", 2),
@@ -431,8 +549,6 @@ def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
         ("G2 X10 Y0 R2 F100", 34),
         ("G2 X10 Y0 I1 J1 F100", 33),
         ("G2 X0 Y0 I1000000000 F100", 33),  # a circle of a thousand km: not flattened
-        ("G0 X301", 15),
-        ("G0 Y-0.1", 15),
         ("$Q", 3),
     ],
 )
@@ -673,6 +789,7 @@ def test_radius_arcs_and_full_circles() -> None:
 
 def test_an_arc_leaving_the_travel_is_refused_whole() -> None:
     bench = Bench()
+    assert bench.do("$20=1") == [Ok()]  # soft limits on
     assert bench.do("G3 X20 Y0 I10 J0 F3000") == [ErrorReply(15)]  # under Y = 0
     assert bench.events("move") == []
 
@@ -737,3 +854,12 @@ def test_every_log_entry_is_small_json() -> None:
         assert "\n" not in text and len(text) < 200
         assert json.loads(text) == entry
         assert entry["t"] >= START
+
+
+def test_grbl_lists_its_settings_as_grbl_1_1h_does() -> None:
+    """The ``$$`` of grbl-sim (GRBL 1.1h), with this plotter's own axis settings."""
+    bench = Bench()
+    listed = [r.text for r in bench.do("$$") if isinstance(r, Feedback)]
+    assert listed[:8] == ["$0=10", "$1=25", "$2=0", "$3=0", "$4=0", "$5=0", "$6=0", "$10=3"]
+    assert {"$11=0.010", "$12=0.002", "$20=0", "$22=1", "$24=25.000", "$27=1.000"} <= set(listed)
+    assert "$100=80.000" in listed and "$110=6000.000" in listed and "$130=300.000" in listed

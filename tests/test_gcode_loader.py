@@ -432,7 +432,7 @@ def test_a_single_servo_level_says_nothing_about_the_pen(tmp_path: Path) -> None
 
 
 def test_repeated_lines_follow_the_units_in_force(tmp_path: Path) -> None:
-    program = grbl(write(tmp_path, "F100\nG20\nF100\nG1 X1 Y1\nG4 P100\nG4 P100\n"))
+    program = grbl(write(tmp_path, "F100\nG20\nF100\nG1 X1 Y1\nG4 P0.1\nG4 P0.1\n"))
     assert program.data.feed.tolist() == pytest.approx([100, 100, 2540, 2540, 2540, 2540])
     assert program.data.dwell_s.tolist() == [0.1, 0.1]
 
@@ -673,13 +673,39 @@ def test_estimate_single_move_is_a_trapezoid(tmp_path: Path) -> None:
 
 
 def test_estimate_triangle_rapid_and_dwell(tmp_path: Path) -> None:
-    text = "G1 X4 F6000\nG4 P500\nG0 X104\nG1 Y3 F60\n"
+    text = "G1 X4 F6000\nG4 P0.5\nG0 X104\nG1 Y3 F60\n"  # GRBL: P in seconds
     result = estimate_gcode(grbl(write(tmp_path, text)), plotter())
     short = 2 * math.sqrt(4 / 500)  # never reaches 100 mm/s within 4 mm
     rapid = 100 / 200 + 200 / 500  # at the axis limit: 0.4 s ramps, 60 mm at 200 mm/s
     slow = 3 / 1 + 1 / 500
     steps = np.diff(np.concatenate([[0.0], result.cumulative_s]))
     np.testing.assert_allclose(steps, [short, 0.5, rapid, slow])
+
+
+@pytest.mark.parametrize(
+    ("profile", "seconds"),
+    [("grbl-plotter", 150.0), ("corexy-plotter", 0.15), ("string-art", 0.15)],
+)
+def test_g4_p_is_read_in_the_unit_of_the_machines_firmware(
+    tmp_path: Path, profile: str, seconds: float
+) -> None:
+    """G8-01: GRBL 1.1 reads ``G4 P`` as seconds; the plotters' own firmwares as ms."""
+    program = load_for(write(tmp_path, "G4 P150\nG4 S2\n"), profile)
+    assert program.data.dwell_s.tolist() == pytest.approx([seconds, 2.0])
+    result = estimate(program, load_profile(profile), {}, 0.1)
+    assert result.total_s == pytest.approx(seconds + 2.0)
+
+
+def test_the_unicorn_files_dwells_are_seconds_on_grbl_and_the_operator_is_told(
+    shared_dir: Path,
+) -> None:
+    """G8-01: 369 x G4 P150 (meant as ms) wait over 15 hours on a GRBL board."""
+    program = load_for(real(shared_dir, BUNNY), "grbl-plotter", skip_unsupported=True)
+    assert program.data.dwell_s.sum() == pytest.approx(369 * 150)
+    assert any("G4 P is seconds" in note and "15 h 22 min" in note for note in program.notes)
+    assert not any(
+        "G4 P" in note for note in load_for(real(shared_dir, BUNNY), "corexy-plotter").notes
+    )
 
 
 def test_estimate_diagonal_is_limited_per_axis(tmp_path: Path) -> None:

@@ -208,3 +208,89 @@ def test_a_silent_device_is_noticed_and_the_station_reconnects(plotter: StationH
     assert LinkState.LOST in states
     plotter.loopback.set_manipulator(None)
     plotter.run_until(lambda: plotter.station.model.link_state is LinkState.CONNECTED, timeout=10)
+
+
+def grbl_board(status_mask: int) -> StationHarness:
+    """The GRBL plotter with ``$10`` set: 1 as on a new board (no ``Bf:``), 3 with it."""
+    harness = StationHarness(load_profile("grbl-plotter"))
+    harness.messages = []  # type: ignore[attr-defined]
+    harness.station.model.message.connect(harness.messages.append)  # type: ignore[attr-defined]
+    harness.connect()
+    session = harness.gcode_session
+    assert session.send_line(f"$10={status_mask}")
+    harness.run_until(lambda: session.settled, timeout=5)
+    harness.run(0.5)
+    return harness
+
+
+@pytest.fixture
+def fresh_grbl(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = grbl_board(1)
+    status = harness.gcode_session.status
+    assert status is not None and status.planner_free is None
+    try:
+        yield harness
+    finally:
+        harness.close()
+
+
+def held_jog_distance(harness: StationHarness) -> float:
+    """How far a right arrow held for a second (key repeats every 0.1 s) takes X."""
+    session = harness.gcode_session
+    session.set_jog((1, 0))
+    for _ in range(10):
+        harness.run(0.1)
+        session.keep_jogging()
+    session.set_jog((0, 0))
+    harness.run_until(lambda: session.settled and session.machine_state == "Idle", timeout=5)
+    return harness.station.model.axes[0].position
+
+
+def test_a_held_jog_runs_as_far_on_a_board_without_bf_in_its_reports(
+    qtbot: QtBot, fresh_grbl: StationHarness
+) -> None:
+    """G8-02: without ``Bf:`` the next jog step goes before the last is done, timed."""
+    without = held_jog_distance(fresh_grbl)
+    assert [m for m in fresh_grbl.messages if "refused" in m] == []  # type: ignore[attr-defined]
+    with_bf = grbl_board(3)
+    try:
+        reference = held_jog_distance(with_bf)
+    finally:
+        with_bf.close()
+    # Steps held back until an idle report would leave the machine standing between them.
+    assert reference > 20 and without == pytest.approx(reference, rel=0.1)
+
+
+def test_home_refused_for_disabled_homing_says_why_and_what_to_do(
+    fresh_grbl: StationHarness,
+) -> None:
+    """G8-06: GRBL's default $22=0 answers $H with error:5; the station explains it."""
+    session = fresh_grbl.gcode_session
+    assert session.send_line("$22=0")
+    fresh_grbl.run_until(lambda: session.settled, timeout=5)
+    assert session.home(0)
+    fresh_grbl.run_until(lambda: session.settled, timeout=5)
+    told = [m for m in fresh_grbl.messages if "'$H' refused" in m]  # type: ignore[attr-defined]
+    assert told and "Homing is switched off on the board ($22=0" in told[-1], told
+
+
+def test_an_answer_after_a_soft_reset_belongs_to_no_line_and_new_lines_wait_for_the_banner(
+    qtbot: QtBot,
+) -> None:
+    """G8-05: GRBL may answer the line it was parsing after the reset (a stray ok)."""
+    harness = grbl_board(3)
+    try:
+        session = harness.gcode_session
+        acknowledged: list[str] = []
+        session.lineAcknowledged.connect(lambda sent: acknowledged.append(sent.text))
+        session.soft_reset()
+        assert session.send_line("G0 X2")
+        session.receive_injected(b"ok\r\n")  # the stray ok, before the banner
+        assert acknowledged == []
+        assert b"G0 X2" not in b"".join(harness.written)  # held until the board is back
+        harness.run_until(lambda: session.settled, timeout=5)
+        assert acknowledged == ["G0 X2"]
+        harness.run_until(lambda: harness.gcode_emulator.state == "Idle", timeout=5)
+        assert harness.gcode_emulator.position()["X"] == 2.0
+    finally:
+        harness.close()

@@ -12,9 +12,12 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.run.gcode_stream import GcodeStream
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
+from app.machines.gcode.session import SentLine
 from app.profiles import load_profile
 from protocol.transport.loopback import Direction
 from tests.helpers.harness import StationHarness
@@ -364,3 +367,47 @@ def test_a_lost_ok_does_not_stall_the_job_and_nothing_is_drawn_twice(
         assert drawn(grbl) == EXPECTED
     finally:
         grbl.close()
+
+
+def _stream_through(text: str, tmp_path: Path, answered: int) -> GcodeStream:
+    """A GRBL job whose first ``answered`` lines went out and came back ok."""
+    profile = load_profile("grbl-plotter")
+    source = tmp_path / "job.gcode"
+    source.write_text(text, encoding="utf-8")
+    program = load_job(source, ["X", "Y"], JobOptions(gcode=profile.gcode))
+    stream = GcodeStream(program, profile, 0)
+    for index in range(answered):
+        stream.pending.append(index)
+        stream.next_index = index + 1
+        assert stream.acknowledge(SentLine(index + 1, program[index].line, "job", index))
+    stream.status("Run", None, 0, (0.0, 0.0))  # the answers are before the next report
+    return stream
+
+
+def test_without_bf_the_executed_boundary_follows_where_the_board_stands(
+    tmp_path: Path,
+) -> None:
+    """G8-02: a board reporting no ``Bf:`` (``$10=1``) still shows what has run.
+
+    Without it the boundary stayed at the start until the board stood idle, so a
+    resume after a lost link redrew everything since (313 pen-down moves on the
+    Unicorn file).
+    """
+    lines = ["G90 G21", *(f"G1 X{10 * k} Y0 F3000" for k in range(1, 9))]
+    stream = _stream_through("\n".join(lines) + "\n", tmp_path, 9)
+    assert stream.executed == 0
+    stream.status("Run", None, 0, (45.0, 0.0))  # halfway along X40 → X50: line 6
+    assert stream.executed == 5  # operations 0-4 ran; the one under way has not
+    stream.status("Run", None, 0, (41.0, 3.0))  # off the path: proves nothing more
+    assert stream.executed == 5
+    stream.status("Run", None, 0, (75.0, 0.0))
+    assert stream.executed == 8
+
+
+def test_without_bf_a_path_that_comes_back_makes_the_boundary_lag_never_lead(
+    tmp_path: Path,
+) -> None:
+    lines = ["G90 G21", "G0 X0 Y0", "G1 X20 Y0 F3000", "G1 X0 Y0", "G1 X20 Y0", "G1 X20 Y10"]
+    stream = _stream_through("\n".join(lines) + "\n", tmp_path, 6)
+    stream.status("Run", None, 0, (10.0, 0.0))  # on the way out, back, or out again
+    assert stream.executed == 2  # the earliest: nothing it cannot prove

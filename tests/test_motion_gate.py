@@ -171,6 +171,19 @@ def test_grbl_jogs_with_dollar_j_cancels_on_release_and_keeps_g90(grbl: StationH
     assert "G90" in grbl.gcode_emulator._interpreter.modes()
 
 
+def test_a_jog_step_still_on_its_way_at_the_release_is_cancelled_too(
+    grbl: StationHarness,
+) -> None:
+    """G7-01: GRBL reads a jog line that came behind the 0x85 afterwards and runs it."""
+    session = grbl.gcode_session
+    session.set_jog((1, 0))
+    session.set_jog((0, 0))  # at once: the step is on the wire, not yet answered
+    grbl.run_until(lambda: session.settled and grbl.gcode_emulator.state == "Idle", timeout=2)
+    stopped = grbl.gcode_emulator.position()["X"]
+    assert 0 < stopped < 2.5  # braked early in the 5 mm step, not run to its end
+    assert b"".join(grbl.written).count(JOG_CANCEL) >= 1
+
+
 def test_grbl_jog_ends_at_the_travel_end(grbl: StationHarness) -> None:
     session = grbl.gcode_session
     assert session.move_absolute(0, 297.0)

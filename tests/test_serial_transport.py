@@ -283,6 +283,9 @@ class FakePort:
     def cancel_read(self) -> None:
         self._wake.set()
 
+    def flush(self) -> None:
+        pass
+
     def cancel_write(self) -> None:
         pass
 
@@ -542,3 +545,16 @@ def test_list_ports_is_sorted_and_never_raises(monkeypatch: pytest.MonkeyPatch) 
 
     monkeypatch.setattr(serial.tools.list_ports, "comports", broken)
     assert list_ports() == []
+
+
+def test_what_was_written_just_before_a_close_still_reaches_the_device(pty: Pty) -> None:
+    """G8-04: a stop's reset is written right before the close; it must not be dropped."""
+    transport = SerialTransport(pty.path)
+    connect(transport)
+    for _ in range(20):
+        transport.write(b"!")
+        transport.write(b"\x18")
+        transport.close()
+        assert pty.read(2) == b"!\x18"
+        connect(transport)
+    transport.close()

@@ -34,7 +34,10 @@ How a byte travels:
 - A line longer than ``max_line`` bytes is answered ``error:11`` (GRBL's
   line overflow) once its end arrives; its bytes leave the buffer as they
   come, so it cannot block the buffer.  A ``\\r`` is whitespace, not a line
-  end, so ``\\r\\n`` is one line.
+  end, so ``\\r\\n`` is one line — except on a GRBL board (``grbl``), which
+  reads as GRBL 1.1 does: ``\\r`` and ``\\n`` each end a line (an empty line is
+  answered ``ok``), and spaces and comments are dropped as they arrive, so
+  only the rest counts towards its 80-byte line (``error:11`` beyond 79).
 - :attr:`GcodeFirmware.unacknowledged` counts the bytes received and kept
   whose line has not been answered yet; its maximum is kept.
 
@@ -47,10 +50,19 @@ Decisions the contract leaves open, made here:
   pen and locks G-code out (``error:9``) until ``$X`` or ``$H``.
 - ``$H`` goes to 0 on every axis at the rapid rate (state ``Home``) and is
   answered when queued; like ``$I`` and ``$$`` it needs the machine idle
-  (``error:8``).  Unknown ``$`` commands are ``error:3``; settings cannot be
-  written.
-- Status reports always carry ``MPos``, ``FS`` and ``Bf`` (free planner
-  blocks, free receive-buffer bytes, as GRBL counts them).
+  (``error:8``).  Unknown ``$`` commands are ``error:3``.  A GRBL board
+  takes ``$N=value`` for its settings, idle: ``$10`` (status mask), ``$12``
+  (arc tolerance), ``$20`` (soft limits, off by default as in GRBL), ``$22``
+  (homing: off, ``$H`` is ``error:5``), ``$110…`` (rates, mm/min),
+  ``$120…`` (accelerations, mm/s²) and ``$130…`` (travel, mm) act; the
+  rest are kept and listed.  Every motor still shares one rate and one
+  acceleration: the least the settings allow.  ``$C`` toggles check mode
+  (lines parsed and answered, nothing moves); leaving it resets the board.
+- Status reports carry ``MPos`` (``WPos`` with ``$10`` bit 0 clear; the same
+  here, as there are no work offsets), ``FS`` and, with ``$10`` bit 1,
+  ``Bf`` (free planner blocks, free receive-buffer bytes, as GRBL counts
+  them).  The emulated GRBL plotter is set ``$10=3``, ``$22=1`` (it has
+  end switches); a fresh GRBL board has ``$10=1``, ``$22=0``.
 """
 
 from __future__ import annotations
@@ -112,9 +124,48 @@ INVALID_JOG = 16
 _JOG_G_WORDS = frozenset({20.0, 21.0, 53.0, 90.0, 91.0})
 GCODE_LOCKED = 9
 LINE_OVERFLOW = 11
+SETTING_DISABLED = 5
+NEGATIVE_VALUE = 4
+#: GRBL 1.1's line buffer (LINE_BUFFER_SIZE): at most 79 characters kept per line.
+GRBL_LINE = 80
+#: GRBL 1.1h's default settings, those the emulated board does not derive from its machine.
+_GRBL_DEFAULTS: dict[int, float] = {
+    0: 10, 1: 25, 2: 0, 3: 0, 4: 0, 5: 0, 6: 0, 10: 1, 11: 0.010, 12: 0.002, 13: 0,
+    20: 0, 21: 0, 22: 0, 23: 0, 24: 25.0, 25: 500.0, 26: 250, 27: 1.0, 30: 1000, 31: 0, 32: 0,
+}  # fmt: skip
+#: The settings GRBL lists with three decimals (the others are whole numbers).
+_GRBL_DECIMAL = frozenset({11, 12, 24, 25, 27})
 
 _LINE_END = 0x0A
 _HELP = "[HLP:$$ $G $I $H $X ~ ! ? ctrl-x]"
+
+
+def grbl_line(raw: bytes) -> str | None:
+    """What GRBL 1.1 keeps of a received line, upper-cased; None when it overflows its buffer.
+
+    Whitespace and control characters, ``/`` and comments (``(...)`` and ``;``
+    to the end) are dropped as they arrive and never count towards the line.
+    """
+    kept: list[str] = []
+    in_parens = in_semicolon = False
+    for byte in raw:
+        char = chr(byte)
+        if char in "\r\n":
+            break
+        if in_parens or in_semicolon:
+            in_parens = in_parens and char != ")"
+            continue
+        if byte <= 0x20 or char == "/":
+            continue
+        if char == "(":
+            in_parens = True
+        elif char == ";":
+            in_semicolon = True
+        elif len(kept) >= GRBL_LINE - 1:
+            return None
+        else:
+            kept.append(char.upper())
+    return "".join(kept)
 
 
 def event_log_line(event: GcodeEvent) -> str:
@@ -161,6 +212,13 @@ class GcodeFirmware(ControlCycles):
         self._jog_cancelling = False
         #: Axes whose drivers ``M18`` switched off (a move switches them on again).
         self._drivers_off: set[str] = set()
+        #: GRBL's settings ($$), kept only on a GRBL board; its check mode ($C).
+        self._settings_table = self._initial_settings()
+        self._check_mode = False
+        self._reset_after_answer = False
+        self._raw_text = ""
+        #: A GRBL board's line so far, past what the receive buffer holds (it reads on).
+        self._partial = bytearray()
         self._send_banner()
 
     # -- EmulatedDevice --------------------------------------------------------------------
@@ -181,13 +239,15 @@ class GcodeFirmware(ControlCycles):
                     self.soft_reset()
                 elif byte == JOG_CANCEL[0] and self.config.jogging:
                     self.jog_cancel()
+                elif byte >= 0x80 and self.config.grbl:
+                    pass  # GRBL's other extended real-time bytes (overrides): never in a line
                 elif len(self._rx) >= self._rx_capacity:
                     self._overflows += 1
                 else:
                     self._rx.append(byte)
                     self._unacked += 1
                     self._max_unacked = max(self._max_unacked, self._unacked)
-                    if byte == _LINE_END:
+                    if byte == _LINE_END or (byte == 0x0D and self.config.grbl):
                         self._log_arrival()
 
     # -- the machine's own controls, and the real-time commands ---------------------------
@@ -234,6 +294,8 @@ class GcodeFirmware(ControlCycles):
             self._stop()
             self._jog_cancelling = False
             self._rx.clear()
+            self._partial.clear()
+            self._check_mode = False
             self._overlong = 0
             self._unacked = 0
             self._status_wanted = False
@@ -280,6 +342,8 @@ class GcodeFirmware(ControlCycles):
         with self._lock:
             if self._alarm is not None:
                 return "Alarm"
+            if self._check_mode:
+                return "Check"
             current = self._planner.current
             jogging = isinstance(current, Move) and current.kind == "jog"
             if self._jog_cancelling or (jogging and self._planner.hold_state is HoldState.RUNNING):
@@ -359,10 +423,10 @@ class GcodeFirmware(ControlCycles):
             where = ",".join(f"{round(p, 3) + 0.0:.3f}" for p in self._planner.position())
             feed = self._planner.feed()
             free_rx = self.config.rx_buffer - len(self._rx)
-            return (
-                f"<{state}|MPos:{where}|FS:{feed:.0f},{self._spindle:.0f}"
-                f"|Bf:{self._planner.free},{free_rx}>"
-            )
+            mask = self.config.status_mask
+            kind = "MPos" if mask & 1 else "WPos"
+            buffers = f"|Bf:{self._planner.free},{free_rx}" if mask & 2 else ""
+            return f"<{state}|{kind}:{where}|FS:{feed:.0f},{self._spindle:.0f}{buffers}>"
 
     # -- the control cycle -----------------------------------------------------------------
 
@@ -380,6 +444,10 @@ class GcodeFirmware(ControlCycles):
         self._flush()
 
     def _take_lines(self) -> None:
+        if self._jog_cancelling:
+            # GRBL reads no line while a cancelled jog brakes (its suspend loop): a jog line
+            # that came behind the 0x85 waits, then runs as a new jog.
+            return
         self._queue_pending(self.time)
         while not self._pending and self._planner.free > 0 and self._running_line is None:
             line = self._next_line()
@@ -389,6 +457,8 @@ class GcodeFirmware(ControlCycles):
 
     def _next_line(self) -> tuple[int, bytes | None] | None:
         """The next complete line and its length; None as the line of a too-long one."""
+        if self.config.grbl:
+            return self._next_grbl_line()
         end = self._rx.find(_LINE_END)
         if end < 0:
             if len(self._rx) >= self.config.max_line:
@@ -405,21 +475,46 @@ class GcodeFirmware(ControlCycles):
             return length, None
         return len(raw), raw
 
+    def _next_grbl_line(self) -> tuple[int, bytes | None] | None:
+        """GRBL 1.1's reading: CR or LF ends a line; spaces and comments never count."""
+        ends = [i for i in (self._rx.find(b"\n"), self._rx.find(b"\r")) if i >= 0]
+        if not ends:
+            # GRBL reads its buffer byte by byte into the line: a long line never blocks it.
+            self._partial += self._rx
+            self._rx.clear()
+            return None
+        end = min(ends)
+        raw = bytes(self._partial + self._rx[: end + 1])
+        del self._rx[: end + 1]
+        self._partial.clear()
+        line = grbl_line(raw)
+        self._raw_text = raw.decode("ascii", errors="replace").strip()  # for the log
+        return len(raw), (None if line is None else line.encode("ascii", "replace"))
+
     def _execute(self, length: int, raw: bytes | None) -> None:
         text = "" if raw is None else raw.decode("ascii", errors="replace").strip()
         result: list[Block] | int
-        if raw is None or length > self.config.max_line:
+        if self.config.grbl and raw is None:
+            result = LINE_OVERFLOW
+        elif self.config.grbl and not text:
+            result = []  # an empty or comment line: ok, for syncing
+        elif raw is None or (length > self.config.max_line and not self.config.grbl):
             result = LINE_OVERFLOW
         elif text.startswith("$"):
             result = self._system(text.replace(" ", "").upper())
         else:
             result = self._gcode(text)
+        if self.config.grbl:
+            text = self._raw_text  # the log shows the line as sent
         if isinstance(result, int):
             self._answer(f"{self.config.reply_error}:{result}", length, text)
             return
         self._pending.extend(result)
         self._pending_line = (length, text)
         self._queue_pending(self.time)
+        if self._reset_after_answer:
+            self._reset_after_answer = False
+            self.soft_reset()
 
     def _gcode(self, text: str) -> list[Block] | int:
         body = strip_comments(text).strip()
@@ -430,7 +525,8 @@ class GcodeFirmware(ControlCycles):
         words = split_words(body)
         if isinstance(words, WordError):
             return words.code
-        return self._interpreter.execute(words)
+        result = self._interpreter.execute(words)
+        return [] if self._check_mode and not isinstance(result, int) else result
 
     def _system(self, command: str) -> list[Block] | int:
         """A ``$`` line; feedback lines go out before its ``ok``."""
@@ -457,6 +553,8 @@ class GcodeFirmware(ControlCycles):
                 self._send_line("[MSG:Caution: Unlocked]")
                 self._log("unlock")
         elif command == "$H":
+            if not self.config.homing:
+                return SETTING_DISABLED
             if not idle:
                 return NOT_IDLE
             self._alarm = None
@@ -464,9 +562,86 @@ class GcodeFirmware(ControlCycles):
             home = (0.0,) * len(start)
             self._interpreter.position = home
             return [] if start == home else [self._interpreter.move(start, home, "home", None)]
+        elif command == "$C" and self.config.grbl:
+            return self._toggle_check_mode()
+        elif self.config.grbl and command[1:2].isdigit() and "=" in command:
+            return self._set(command[1:])
         else:
             return INVALID_STATEMENT
         return []
+
+    def _toggle_check_mode(self) -> list[Block] | int:
+        """``$C``: parse without moving; leaving check mode resets the board, as GRBL does."""
+        if self._check_mode:
+            self._check_mode = False
+            self._send_line("[MSG:Disabled]")
+            self._reset_after_answer = True
+        elif self.state != "Idle":
+            return NOT_IDLE
+        else:
+            self._check_mode = True
+            self._send_line("[MSG:Enabled]")
+        return []
+
+    def _set(self, assignment: str) -> list[Block] | int:
+        """``$N=value``: GRBL's settings; those that shape the machine act at once."""
+        number, _, text = assignment.partition("=")
+        try:
+            key, value = int(number), float(text)
+        except ValueError:
+            return INVALID_STATEMENT
+        if key not in self._settings_table:
+            return INVALID_STATEMENT
+        if value < 0:
+            return NEGATIVE_VALUE
+        if self.state not in ("Idle", "Alarm"):
+            return NOT_IDLE
+        self._settings_table[key] = value
+        self._apply_settings()
+        return []
+
+    def _initial_settings(self) -> dict[int, float]:
+        if not self.config.grbl:
+            return {}
+        cfg = self.config
+        table = dict(_GRBL_DEFAULTS)
+        table.update({10: cfg.status_mask, 12: cfg.arc_tolerance})
+        table.update({20: float(cfg.soft_limits), 22: float(cfg.homing)})
+        for i, steps in enumerate(cfg.steps_per_unit):
+            limits = cfg.travel[i]
+            table[100 + i] = steps
+            table[110 + i] = cfg.max_rate / steps * 60.0
+            table[120 + i] = cfg.acceleration / steps
+            table[130 + i] = 0.0 if limits is None else limits[1] - limits[0]
+        return table
+
+    def _apply_settings(self) -> None:
+        table, cfg = self._settings_table, self.config
+        count = len(cfg.axes)
+        steps = tuple(table[100 + i] or cfg.steps_per_unit[i] for i in range(count))
+        rate = min(table[110 + i] * s / 60.0 for i, s in enumerate(steps))
+        acceleration = min(table[120 + i] * s for i, s in enumerate(steps))
+        travel = tuple(
+            None
+            if cfg.travel[i] is None
+            else (0.0, table[130 + i])
+            if table[130 + i] > 0
+            else cfg.travel[i]
+            for i in range(count)
+        )
+        self.config = replace(
+            cfg,
+            steps_per_unit=steps,
+            max_rate=rate if rate > 0 else cfg.max_rate,
+            acceleration=acceleration if acceleration > 0 else cfg.acceleration,
+            travel=travel,
+            status_mask=int(table[10]),
+            arc_tolerance=table[12] or cfg.arc_tolerance,
+            soft_limits=bool(table[20]),
+            homing=bool(table[22]),
+        )
+        self._interpreter.config = self.config
+        self._interpreter.step_rate = self.config.max_rate
 
     def _jog(self, body: str) -> list[Block] | int:
         """``$J=``: a move run as a jog, which leaves the parser's modal state as it was.
@@ -474,7 +649,7 @@ class GcodeFirmware(ControlCycles):
         Only G20/G21, G90/G91 and G53 may stand in it, and F is required; it is
         taken while idle or jogging, and its blocks report the ``Jog`` state.
         """
-        if self.state not in ("Idle", "Jog") or self._jog_cancelling:
+        if self.state not in ("Idle", "Jog"):
             return NOT_IDLE
         words = split_words(body)
         if isinstance(words, WordError):
@@ -493,7 +668,12 @@ class GcodeFirmware(ControlCycles):
         return [replace(b, kind="jog") if isinstance(b, Move) else b for b in result]
 
     def _settings(self) -> list[str]:
-        """``$$``: a few GRBL settings, per axis in the machine's axis order."""
+        """``$$``: a few GRBL settings, per axis in the machine's axis order; all on GRBL."""
+        if self._settings_table:
+            return [
+                f"${k}={v:.3f}" if k >= 100 or k in _GRBL_DECIMAL else f"${k}={v:.0f}"
+                for k, v in sorted(self._settings_table.items())
+            ]
         cfg = self.config
         lines = [f"$12={cfg.arc_tolerance:.3f}", "$13=0", "$20=1", "$22=1"]
         for group, values in (
@@ -589,7 +769,8 @@ class GcodeFirmware(ControlCycles):
         return {axis: round(p, 6) + 0.0 for axis, p in zip(self.config.axes, where, strict=True)}
 
     def _log_arrival(self) -> None:
-        start = self._rx.rfind(_LINE_END, 0, len(self._rx) - 1) + 1
+        ends = b"\r\n" if self.config.grbl else bytes([_LINE_END])
+        start = max(self._rx.rfind(end, 0, len(self._rx) - 1) for end in ends) + 1
         text = self._rx[start:-1].decode("ascii", errors="replace").strip()
         self._log("line", text=text, unacknowledged=self._unacked)
 

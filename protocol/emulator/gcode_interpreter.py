@@ -13,8 +13,9 @@ Decisions the contract leaves open, made here:
 - ``G28`` goes to 0 on every axis at the rapid rate, through the given
   point first when the line has axis words; ``$H`` (the firmware's) does the
   same without the point.
-- ``G4 P`` is milliseconds (the contract's, and Marlin's; GRBL reads
-  seconds); ``G4 S`` seconds.
+- ``G4 P`` is in the machine's unit (:attr:`GcodeConfig.dwell_p_seconds`):
+  seconds on GRBL, milliseconds on the plotters' own firmwares (the
+  contract's); ``G4 S`` seconds.
 - ``M98``/``M99`` take their number bare (``M98 500``) or as ``P``; a step
   interval of 0 or less, or a negative servo level, is ``error:4``.  ``M99``
   lifts the pen to that servo level (the plotter's "Zdvihni popisovač …").
@@ -73,6 +74,7 @@ _G_GROUPS = {
 _M_GROUPS = {
     **dict.fromkeys((0, 1, 2, 30), "flow"),
     **dict.fromkeys((3, 4, 5), "spindle"),
+    **dict.fromkeys((8, 9), "coolant"),
     **dict.fromkeys((98, 99), "plotter"),
     18: "drivers",
 }
@@ -81,6 +83,8 @@ _VALUE_LETTERS = "FSPIJR"
 #: Letters of axes no machine here has: GRBL calls them unsupported.
 _OTHER_AXES = "BCUVW"
 _MAX_LINE_NUMBER = 9_999_999
+#: GRBL 1.1's largest tool number (MAX_TOOL_NUMBER).
+_MAX_TOOL = 255
 _MM_PER_INCH = 25.4
 #: Radians: GRBL's margin that makes a full circle of an arc ending where it starts.
 _ARC_EPS = 5e-7
@@ -99,6 +103,8 @@ class Modal:
     feed: float | None = None
     spindle_on: bool = False
     spindle: float = 0.0
+    coolant: bool = False  # GRBL's M8 (flood) on, M9 off
+    tool: int = 0
 
 
 @dataclass
@@ -141,7 +147,8 @@ class Interpreter:
             "G90" if m.absolute else "G91",
             "G94",
             spindle or ("M4" if self.pen_down else "M3"),
-            "M9 T0",
+            "M8" if m.coolant else "M9",
+            f"T{m.tool}",
             f"F{(m.feed or 0.0) / (_MM_PER_INCH if m.inches else 1.0):g}",
             f"S{m.spindle:g}",
         ]
@@ -187,6 +194,10 @@ class Interpreter:
                 if letter in line.values:
                     return WORD_REPEATED
                 line.values[letter] = value
+            elif letter == "T" and self.config.grbl:
+                if not value.is_integer() or not 0 <= value <= _MAX_TOOL:
+                    return NEGATIVE_VALUE if value < 0 else UNSUPPORTED
+                line.values[letter] = value  # GRBL takes a tool number and does nothing with it
             else:
                 return UNSUPPORTED  # T, H, L, another machine's axis...
         return line
@@ -198,6 +209,8 @@ class Interpreter:
             return self.config.plotter_codes
         if letter == "M" and code == 18:
             return self.config.drivers_off
+        if letter == "M" and code in (8, 9):
+            return self.config.grbl  # coolant: GRBL switches a pin, a plotter has none
         return True
 
     # -- planning the line -------------------------------------------------------------------
@@ -210,7 +223,7 @@ class Interpreter:
         inches = line.g["units"] == 20 if "units" in line.g else modal.inches
         absolute = line.g["distance"] == 90 if "distance" in line.g else modal.absolute
         scale = _MM_PER_INCH if inches else 1.0
-        used: set[str] = set(cfg.axes) | {"F"}
+        used: set[str] = set(cfg.axes) | {"F", "T"}
         blocks: list[Block] = []
 
         feed = modal.feed
@@ -268,7 +281,7 @@ class Interpreter:
 
         if nonmodal == 4:
             if "P" in values:
-                seconds = values["P"] / 1000.0
+                seconds = values["P"] * cfg.dwell_p_seconds
                 used.add("P")
             elif dwell_in_s:
                 seconds = values["S"]
@@ -340,8 +353,11 @@ class Interpreter:
         elif flow == 0:
             blocks.append(Pause())
 
+        coolant = line.m.get("coolant")
         self.modal = replace(
             modal,
+            coolant=modal.coolant if coolant is None else coolant == 8 and flow not in (2, 30),
+            tool=int(values["T"]) if "T" in values else modal.tool,
             motion=motion,
             absolute=absolute,
             inches=inches,

@@ -95,6 +95,18 @@ class GcodeConfig:
     #: Largest distance of an arc's chord from the arc (GRBL's $12).
     arc_tolerance: float = 0.002
     control_cycle: float = 0.005
+    #: Seconds one unit of ``G4 P`` is: GRBL reads P as seconds, the plotters' firmwares as ms.
+    dwell_p_seconds: float = 0.001
+    #: Moves beyond the travel are refused (``error:15``); GRBL's ``$20``, off by default.
+    soft_limits: bool = True
+    #: GRBL 1.1's line handling and ``$`` settings: a lone CR ends a line, comments and
+    #: spaces are dropped as they arrive (not counted towards the line limit), ``$N=v``,
+    #: ``$C``, ``M8``/``M9`` and ``T`` words are taken.
+    grbl: bool = False
+    #: GRBL's ``$10`` status mask: 1 = MPos (0: WPos), 2 = ``Bf:`` in reports.
+    status_mask: int = 3
+    #: GRBL's ``$22``: with homing off ``$H`` is ``error:5``.
+    homing: bool = True
 
     def __post_init__(self) -> None:
         count = len(self.axes)
@@ -145,6 +157,8 @@ class GcodeConfig:
         return tuple(counts)
 
     def within_travel(self, position: tuple[float, ...]) -> bool:
+        if not self.soft_limits:
+            return True
         # A hair of tolerance, so that a target computed in inches or along an
         # arc that should land on the edge is not refused for rounding.
         return all(
@@ -194,6 +208,9 @@ def grbl_plotter_config() -> GcodeConfig:
         pen=PenMapping.SPINDLE,
         arcs=True,
         jogging=True,
+        dwell_p_seconds=1.0,
+        soft_limits=False,
+        grbl=True,
     )
 
 

@@ -39,6 +39,12 @@ READ_TIMEOUT_S = 0.05
 WRITE_TIMEOUT_S = 1.0
 #: Closing waits this long for each thread; they notice a stop within one read.
 JOIN_TIMEOUT_S = 2.0
+#: A close first lets the writer hand over what was written before it, this long at most:
+#: the reset that ends a stop is written just before the close, and a board that never
+#: gets it stays in feed hold (GUI thread: well under the 100 ms it may be held).
+FLUSH_TIMEOUT_S = 0.05
+#: The writer's marker in the outbox: everything before it has gone to the port.
+_FLUSHED = b""
 
 _NOT_FOUND = frozenset({errno.ENOENT})
 _PERMISSION = frozenset({errno.EACCES, errno.EPERM})
@@ -130,6 +136,7 @@ class _Attempt:
     ended: bool = False
     write_error: BaseException | None = None
     threads: list[threading.Thread] = field(default_factory=list)
+    flushed: threading.Event = field(default_factory=threading.Event)
 
 
 class SerialTransport(Transport):
@@ -191,6 +198,9 @@ class SerialTransport(Transport):
         attempt = self._attempt
         if attempt is None:
             return
+        if attempt.port is not None and not attempt.ended and attempt.write_error is None:
+            attempt.outbox.put(_FLUSHED)  # what was written goes out before the port closes
+            attempt.flushed.wait(FLUSH_TIMEOUT_S)
         ours = self._end(attempt)
         self._join(attempt)
         if ours:
@@ -259,6 +269,10 @@ class SerialTransport(Transport):
             if port is None:
                 continue
             try:
+                if data == _FLUSHED:
+                    _quietly(port.flush)
+                    attempt.flushed.set()
+                    continue
                 port.write(data)
             except (serial.SerialException, OSError) as exc:
                 attempt.write_error = exc

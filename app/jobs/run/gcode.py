@@ -241,12 +241,12 @@ class GcodeDriver(JobDriver):
             # While a lost link is unresolved an idle machine proves nothing: it may have
             # lost what it had.  The recheck on resume decides.
             if stream is not None and not self._recheck:
-                stream.status(report.state, report.planner_free, planner_size)
+                stream.status(report.state, report.planner_free, planner_size, report.mpos)
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(report.state, report.planner_free, planner_size)
+        stream.status(report.state, report.planner_free, planner_size, report.mpos)
         self._write_checkpoint(force=False)
         if not stream.in_flight:
             self.proceed()

@@ -11,8 +11,13 @@ planner.  So two boundaries are kept:
   Any line may hold a block (the plotter plans its pen changes too; GRBL
   answers a spindle change only once the planner has drained, and an arc is
   one line but many blocks), so counting every line as one block can make the
-  boundary lag, never lead.  A device that does not report its planner only
-  advances it when it is seen idle.
+  boundary lag, never lead.  A device that does not report its planner (GRBL's
+  default ``$10=1`` leaves ``Bf:`` out) is read by where it stands instead:
+  the first answered operation whose stretch of path holds the reported
+  position is the one under way, so every one before it has run (the first,
+  so a path that comes back over itself can only make the boundary lag; the
+  file's first move, whose start is wherever the machine stood, counts only
+  from its end).
 
 The checkpoint holds the executed boundary.  When the link comes back (or the
 station restarts) the runner first looks at the machine: standing idle where
@@ -244,15 +249,32 @@ class GcodeStream:
         self._planned.append(index)
         return True
 
-    def status(self, state: str, planner_free: int | None, planner_size: int) -> None:
+    def status(
+        self,
+        state: str,
+        planner_free: int | None,
+        planner_size: int,
+        mpos: Sequence[float] | None = None,
+    ) -> None:
         """A status report: advance the executed boundary as far as it proves.
 
         ``planner_size`` is what the device reported free when idle (0: unknown,
-        then only an idle machine with nothing pending proves anything).
+        then only an idle machine with nothing pending, or ``mpos`` on the path
+        of an answered operation, proves anything).
         """
         if state == "Idle" and not self.pending:
             self._planned.clear()
             self.executed = self.answered
+        elif (planner_free is None or not planner_size) and mpos is not None:
+            answered = self._answered_at_last_report
+            for k, index in enumerate(self._planned):
+                if index >= answered:
+                    break
+                if self._stands_on(index, mpos):
+                    for _ in range(k):
+                        self._planned.popleft()
+                    self.executed = index
+                    break
         elif planner_free is not None and planner_size:
             in_planner = max(planner_size - planner_free, 0)
             answered = self._answered_at_last_report
@@ -263,6 +285,31 @@ class GcodeStream:
                 self._planned.popleft()
             self.executed = self._planned[0] if self._planned else self.answered
         self._answered_at_last_report = self.answered
+
+    def _stands_on(self, index: int, mpos: Sequence[float]) -> bool:
+        """Whether ``mpos`` lies on operation ``index``'s stretch of path (or its point)."""
+        path = self.program.path(self._axis_order)
+        first = int(np.searchsorted(path.ops, index, side="left"))
+        last = int(np.searchsorted(path.ops, index, side="right"))
+        # The file's first move starts wherever the machine stood: only its end is known.
+        vertices = path.coords[max(first - 1, 0) : max(last, first)]
+        if len(vertices) == 0:
+            return False  # a line before any move holds no position
+        count = min(len(mpos), vertices.shape[1])
+        here = np.array([float(mpos[i]) for i in range(count)])
+        for k in range(len(vertices)):
+            a = vertices[k][:count]
+            b = vertices[min(k + 1, len(vertices) - 1)][:count]
+            known = ~(np.isnan(a) | np.isnan(b))
+            if not known.any():
+                continue
+            a, b, point = a[known], b[known], here[known]
+            span = b - a
+            length2 = float(span @ span)
+            t = 0.0 if length2 == 0 else min(max(float((point - a) @ span) / length2, 0.0), 1.0)
+            if float(np.linalg.norm(a + t * span - point)) <= ON_PATH:
+                return True
+        return False
 
     @property
     def in_flight(self) -> bool:

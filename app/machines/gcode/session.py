@@ -63,6 +63,8 @@ JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
+#: After a soft reset, answers are dropped and lines held until the banner, this long at most.
+BANNER_AFTER_RESET_S = 1.0
 #: Reports in a row, at least this far apart, that show every sent byte consumed and the
 #: machine idle with an empty planner while lines are unanswered: their answers were lost.
 LOST_ANSWER_REPORTS = 2
@@ -138,6 +140,8 @@ class GcodeSession(MachineSession):
         self._status_asked_at: float | None = None  # an unanswered "?", for request_status
         self._last_heard = clock.now()
         self._jog_unanswered = 0
+        #: Without ``Bf:`` in the reports: when each planned jog step should be done (clock).
+        self._jog_ends: list[float] = []
         self._jog_status_fresh = False
         #: Whether the board is in G91 after the lines sent (a reset brings back G90).
         self._relative = False
@@ -149,6 +153,8 @@ class GcodeSession(MachineSession):
         #: The stop under way ends a jog: no "lines not run" message for it.
         self._quiet_stop = False
         self._reset_requested_at: float | None = None
+        #: A soft reset was sent at this time and its banner has not come yet.
+        self._reset_sent_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
         #: Since when (station clock) reports show the board done with everything sent, while
@@ -264,6 +270,8 @@ class GcodeSession(MachineSession):
         return self.streamer.in_flight
 
     def _pump(self) -> None:
+        if self._awaiting_banner():
+            return  # bytes sent while the board restarts are lost by the board itself
         for raw, sent in self.streamer.sendable():
             self.link.write(raw)
             self.frameSent.emit(sent.text, raw)
@@ -295,9 +303,21 @@ class GcodeSession(MachineSession):
     def cycle_start(self) -> None:
         self._realtime(CYCLE_START, "~ (resume)")
 
+    def _awaiting_banner(self) -> bool:
+        sent = self._reset_sent_at
+        if sent is not None and self.clock.now() - sent > BANNER_AFTER_RESET_S:
+            self._reset_sent_at = sent = None  # a board that says nothing when it resets
+        return sent is not None
+
     def soft_reset(self) -> list[SentLine]:
-        """Reset the device: its buffers are emptied, so nothing unanswered will be answered."""
+        """Reset the device: its buffers are emptied, so nothing unanswered will be answered.
+
+        GRBL may still answer a line it was parsing (a stray ``ok`` after the reset):
+        until its banner, answers belong to no line and new lines wait.
+        """
         self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+        if self.link.is_open:
+            self._reset_sent_at = self.clock.now()
         return self._forget_stream()
 
     def discard_queued(self) -> list[SentLine]:
@@ -395,6 +415,7 @@ class GcodeSession(MachineSession):
     def _end_jog(self) -> None:
         """The operator let go (or changed direction): the machine brakes now."""
         self._jog_target = None
+        self._jog_ends = []
         self._jog_told_end = False
         if not self.link.is_open or not (self._jog_unanswered or self._machine_moving()):
             return
@@ -420,8 +441,13 @@ class GcodeSession(MachineSession):
             return
         if report.planner_free is not None and self._planner_size:
             planned = self._planner_size - report.planner_free
+        elif report.state == "Idle":
+            planned, self._jog_ends = 0, []
         else:
-            planned = 0 if report.state == "Idle" else JOG_BLOCKS_AHEAD
+            # No Bf: (GRBL's default $10=1): the steps are timed, each JOG_STEP_S long.
+            now = self.clock.now()
+            self._jog_ends = [end for end in self._jog_ends if end > now]
+            planned = len(self._jog_ends)
         if planned < JOG_BLOCKS_AHEAD:
             self._send_jog_step()
 
@@ -467,6 +493,8 @@ class GcodeSession(MachineSession):
             return
         self._check_answer()
         self._check_deadman()
+        if self._reset_sent_at is not None and not self._awaiting_banner():
+            self._pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
         requested = self._reset_requested_at
         if requested is not None and now - requested > RESET_AFTER_S:
@@ -500,6 +528,7 @@ class GcodeSession(MachineSession):
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
+        self._reset_sent_at = None
         self._last_heard = self.clock.now()
         self._await_device()
         if self._autotick:
@@ -509,6 +538,7 @@ class GcodeSession(MachineSession):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         self._reset_requested_at = None
+        self._reset_sent_at = None
         self._jog = [0] * self.axis_count
         self._jog_target = None
         self._jog_cancelling = False
@@ -537,6 +567,8 @@ class GcodeSession(MachineSession):
             self._last_heard = self.clock.now()
             self._device_answered()
             self.frameReceived.emit(reply, reply_bytes(reply))
+            if isinstance(reply, Ok | ErrorReply) and self._awaiting_banner():
+                continue  # an answer from before the reset: the line it was for is gone
             if isinstance(reply, Ok):
                 self._answered(None)
             elif isinstance(reply, ErrorReply):
@@ -547,9 +579,13 @@ class GcodeSession(MachineSession):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(f"Machine alarm {reply.code}: {reply.meaning}")
             elif isinstance(reply, Banner):
+                ours, self._reset_sent_at = self._reset_sent_at is not None, None
                 self.replyText.emit(reply.text)
-                lost = self._forget_stream()
                 self.query_status()  # a board that just started: where is it, how big its planner
+                if ours:
+                    self._pump()  # our reset's banner: what waited for it goes now
+                    continue
+                lost = self._forget_stream()
                 if lost:
                     self.model.message.emit(
                         f"The device reset: {len(lost)} unanswered line(s) were not run"
@@ -567,6 +603,15 @@ class GcodeSession(MachineSession):
         self._seen_idle = False
         if sent.origin == "jog":
             self._jog_unanswered = max(0, self._jog_unanswered - 1)
+            if error is None:
+                now = self.clock.now()
+                self._jog_ends.append(max([now, *self._jog_ends]) + JOG_STEP_S)
+                if not any(self._jog) and self.jogs_with_command and self.link.is_open:
+                    # A step still on its way when the key was let go: GRBL read it after
+                    # the cancel and runs it as a new jog; cancel that one too.
+                    self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
+                    self._jog_cancelling = True
+                    self.query_status()
             if any(self._jog):
                 self.query_status()  # its Bf says whether the next step may go
         if error is None:
@@ -581,6 +626,7 @@ class GcodeSession(MachineSession):
             if sent.origin != "job":
                 self.model.message.emit(
                     f"{sent.text!r} refused: error {error.code}, {error.meaning}"
+                    + _hint(sent.text, error.code)
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
         self._pump()
@@ -669,6 +715,21 @@ class GcodeSession(MachineSession):
         self._check_lost_answers(report, planner_empty)
         self.statusChanged.emit(report)
         self._feed_jog()
+
+
+#: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).
+SETTING_DISABLED = 5
+
+
+def _hint(line: str, code: int) -> str:
+    """What the operator can do about a refusal the error's meaning alone does not explain."""
+    if code == SETTING_DISABLED and line.replace(" ", "").upper().startswith("$H"):
+        return (
+            ". Homing is switched off on the board ($22=0, GRBL's default): with end "
+            "switches fitted, send $22=1 from the console; without them, move the machine "
+            "to its origin by hand and set it there"
+        )
+    return ""
 
 
 def _pauses(line: str) -> bool:

@@ -108,6 +108,9 @@ class Parser:
         self.title = machine_title or "machine"
         self.z_is_pen = settings.z_is_pen
         self.feed_required = settings.feed_required
+        self.dwell_p_seconds = settings.dwell_p_seconds
+        #: A G4 with P was read (its unit is worth a note where it is seconds).
+        self.dwell_p_seen = False
         #: Inner arc vertices the file's arcs may still have (arcs.MAX_ARC_VERTICES in all).
         self.arc_budget = MAX_ARC_VERTICES
         self.pens = PenRules(settings)
@@ -399,9 +402,14 @@ class Parser:
                 for c in op.target:
                     st.position[c] = 0.0
             elif "G4" in commands:
-                # PROTOCOLS.md section 4: P in milliseconds, S in seconds.
+                # P in the machine's unit (GRBL: seconds; the profile's dwell_p), S in seconds.
+                self.dwell_p_seen = self.dwell_p_seen or "P" in params
                 op.dwell = (
-                    value("P") / 1000 if "P" in params else value("S") if "S" in params else 0.0
+                    value("P") * self.dwell_p_seconds
+                    if "P" in params
+                    else value("S")
+                    if "S" in params
+                    else 0.0
                 )
             elif axes and not non_modal:
                 self._motion(number, code, words, params, commands, op, axes)
@@ -629,6 +637,13 @@ class Parser:
             notes.append(f"{self.g21_dropped} G21 {plural} not sent: the machine works in mm")
         if self.realtime_dropped:
             notes.append("? not sent: the station asks for the status itself")
+        if self.dwell_p_seen and self.dwell_p_seconds == 1.0:
+            total = float(data.dwell_s.sum())
+            notes.append(
+                f"G4 P is seconds on the {self.title} (GRBL): {len(data.dwell_s)} dwell(s) "
+                f"wait {_duration(total)} in all; a file written for milliseconds "
+                "(Marlin, Inkscape Unicorn) waits a thousand times too long here"
+            )
         if not data.pen_info and (data.kinds == MOVE).any():
             notes.append("no pen commands: G0 moves are shown as travel, G1/G2/G3 as work")
         by_reason: dict[str, list[int]] = {}
@@ -640,3 +655,14 @@ class Parser:
             more = f" and {len(numbers) - 10} more" if len(numbers) > 10 else ""
             notes.append(f"skipped {len(numbers)} line(s): {reason} (lines {shown}{more})")
         return tuple(notes)
+
+
+def _duration(seconds: float) -> str:
+    """Seconds as the operator reads them: "2.5 s", "4 min 10 s", "15 h 23 min"."""
+    if seconds < 60:
+        return f"{seconds:g} s"
+    minutes, rest = divmod(round(seconds), 60)
+    if minutes < 60:
+        return f"{minutes} min {rest} s"
+    hours, minutes = divmod(minutes, 60)
+    return f"{hours} h {minutes} min"

@@ -1,0 +1,364 @@
+"""End to end against real GRBL 1.1h (grbl-sim), and the same scenarios against the emulator.
+
+GRBL's own source, compiled for the PC (``../shared/grbl``, built once into a
+cache outside the repository by :mod:`tests.helpers.grbl_sim`), is served on
+a pty with a fresh board's defaults: ``$10=1`` (no ``Bf:`` in its reports),
+``$20=0`` and ``$22=0``.  The station connects to it as to a board and runs
+its G-code path: a small job, the head of a real file, pause and resume,
+abort, a held jog and a link cut mid-job.  Every line's answer is judged
+(no ``error:``, no ``ALARM``), and each scenario also runs against the
+emulated ``grbl-plotter``; the two runs must end at the same place with the
+same answers, or the emulator is wrong.
+
+The simulator runs at a fraction of real time on a loaded machine, so the
+board is given the profile's speeds (``$110``…) first, as an operator sets up
+a new board, and whole real files run only with ``STEPDECK_SLOW=1``.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QTimer
+from pytestqt.qtbot import QtBot
+
+from app.jobs.loaders import JobOptions, load_job
+from app.jobs.program import Program
+from app.jobs.run.runner import JobRunner, JobState
+from app.machine import LinkState
+from app.machines.gcode.session import GcodeSession, SentLine
+from app.profiles import load_profile
+from app.station import Station
+from tests.helpers import grbl_sim
+from tests.helpers.emulator_process import device_path, start_emulator, stop
+
+PROFILE = load_profile("grbl-plotter")
+SLOW = pytest.mark.skipif(
+    os.environ.get("STEPDECK_SLOW") != "1", reason="whole real files: set STEPDECK_SLOW=1"
+)
+JOB_TIMEOUT_MS = 240_000
+#: The whole file: about 4 min of GRBL's machine time, several times that on grbl-sim.
+SLOW_JOB_TIMEOUT_MS = 1_800_000
+#: The profile's speeds and accelerations, in GRBL's units (mm/min, mm/s²).
+BOARD_SETUP = [
+    f"${setting + k}={value:g}"
+    for k, axis in enumerate(PROFILE.axes)
+    for setting, value in ((110, axis.max_speed * 60), (120, axis.max_acceleration))
+]
+
+
+@pytest.fixture(scope="session")
+def grbl_sim_exe() -> Path:
+    """grbl-sim built once per machine; the tests skip only when no C compiler is there."""
+    if grbl_sim.compiler() is None:
+        pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
+    shared = Path(__file__).resolve().parent.parent.parent / "shared" / "grbl"
+    assert shared.is_dir(), f"{shared} is missing: clone the repo beside shared/"
+    return grbl_sim.build(shared)
+
+
+@dataclass
+class Board:
+    """A device on a pty: its path, its wire log, and how to cut it off."""
+
+    name: str
+    path: str
+    log: Path
+    cut: Callable[[], None]
+
+    def replies(self) -> list[str]:
+        if not self.log.exists():
+            return []
+        found = []
+        for line in self.log.read_text(encoding="utf-8").splitlines():
+            try:
+                event = json.loads(line)
+            except ValueError:
+                continue
+            if event["event"] in ("reply", "line"):
+                found.append(event)
+        return found
+
+
+@pytest.fixture(params=["grbl-sim", "emulator"])
+def board(request: pytest.FixtureRequest, tmp_path: Path) -> Iterator[Board]:
+    """Real GRBL or the emulated grbl-plotter on a pty; always stopped afterwards."""
+    if request.param == "grbl-sim":
+        exe = request.getfixturevalue("grbl_sim_exe")
+        workdir = tmp_path / "grbl"
+        workdir.mkdir()
+        process = grbl_sim.start(exe, workdir)
+        log = workdir / "wire.log"
+    else:
+        log = tmp_path / "emulator.log"
+        process = start_emulator(
+            "--profile", "grbl-plotter", "--time-scale", "5", "--log", str(log)
+        )
+    try:
+        yield Board(request.param, device_path(process), log, lambda: stop(process))
+    finally:
+        stop(process)
+
+
+@pytest.fixture
+def station(qtbot: QtBot) -> Iterator[Station]:
+    built = Station(PROFILE)
+    try:
+        yield built
+    finally:
+        built.shutdown()
+
+
+@dataclass
+class Answers:
+    """Every line the station sent and how the board answered it, in order."""
+
+    lines: list[tuple[str, str]] = field(default_factory=list)
+    messages: list[str] = field(default_factory=list)
+
+    def errors(self) -> list[tuple[str, str]]:
+        return [entry for entry in self.lines if entry[1] != "ok"]
+
+
+def connect(qtbot: QtBot, station: Station, board: Board) -> tuple[GcodeSession, Answers]:
+    """Connected, a status heard, and the board given the profile's speeds."""
+    station.connect_serial(board.path)
+    qtbot.waitUntil(lambda: station.model.link_state is LinkState.CONNECTED, timeout=15_000)
+    session = station.gcode_session
+    assert session is not None
+    answers = Answers()
+
+    def ok(sent: SentLine) -> None:
+        answers.lines.append((sent.text, "ok"))
+
+    def failed(sent: SentLine, code: int, meaning: str) -> None:
+        answers.lines.append((sent.text, f"error:{code}"))
+
+    session.lineAcknowledged.connect(ok)
+    session.lineFailed.connect(failed)
+    station.model.message.connect(answers.messages.append)
+    qtbot.waitUntil(lambda: session.status is not None, timeout=15_000)
+    for line in BOARD_SETUP:
+        assert session.send_line(line)
+    qtbot.waitUntil(lambda: session.settled, timeout=15_000)
+    assert answers.errors() == []
+    return session, answers
+
+
+def load(source: Path) -> Program:
+    options = JobOptions(gcode=PROFILE.gcode, machine_title=PROFILE.title, skip_unsupported=True)
+    return load_job(source, ["X", "Y"], options)
+
+
+def start(station: Station, program: Program, tmp_path: Path) -> JobRunner:
+    runner = JobRunner(station, tmp_path / "checkpoints")
+    runner.waitingForOperator.connect(lambda _: QTimer.singleShot(0, runner.confirm))
+    assert runner.load(program) == []
+    runner.start()
+    return runner
+
+
+def finish(qtbot: QtBot, runner: JobRunner, timeout_ms: int = JOB_TIMEOUT_MS) -> None:
+    qtbot.waitUntil(
+        lambda: runner.state in (JobState.DONE, JobState.FAILED, JobState.ABORTED),
+        timeout=timeout_ms,
+    )
+
+
+def standing(qtbot: QtBot, session: GcodeSession) -> tuple[float, float]:
+    """Where the board stands once it reports Idle with everything answered."""
+    qtbot.waitUntil(lambda: session.settled and session.machine_state == "Idle", timeout=30_000)
+    status = session.status
+    assert status is not None
+    return round(status.mpos[0], 3), round(status.mpos[1], 3)
+
+
+def no_alarm(board: Board) -> None:
+    texts = [e["text"] for e in board.replies() if e["event"] == "reply"]
+    assert not [t for t in texts if t.upper().startswith("ALARM")], texts
+
+
+SMALL_JOB = """G21 G90
+G0 X2 Y2
+M3 S1000
+G1 X12 Y2 F3000
+G1 X12 Y9
+G2 X7 Y14 I-5 J0
+G1 X2 Y2
+M5
+G0 X5 Y5
+"""
+
+#: What each scenario ended with, per board, for the comparison after both ran.
+OUTCOMES: dict[str, dict[str, tuple[object, ...]]] = {}
+#: Real GRBL reports positions in whole steps ($100=250: 0.004 mm); the emulator exactly.
+STEP = 0.005
+
+
+def record(scenario: str, board: Board, end: tuple[float, float], *rest: object) -> None:
+    """Keep where ``board`` ended and what it answered; once both ran, they must agree."""
+    seen = OUTCOMES.setdefault(scenario, {})
+    seen[board.name] = (end, *rest)
+    if len(seen) == 2:
+        real, emulated = seen["grbl-sim"], seen["emulator"]
+        assert emulated[0] == pytest.approx(real[0], abs=STEP), f"{scenario}: ends elsewhere"
+        assert emulated[1:] == real[1:], f"{scenario}: the emulator answers otherwise"
+
+
+def test_a_small_job_runs_to_its_end_with_every_line_answered_ok(
+    qtbot: QtBot, board: Board, station: Station, tmp_path: Path
+) -> None:
+    session, answers = connect(qtbot, station, board)
+    source = tmp_path / "small.gcode"
+    source.write_text(SMALL_JOB, encoding="utf-8")
+    runner = start(station, load(source), tmp_path)
+    finish(qtbot, runner)
+    assert runner.state is JobState.DONE, answers.messages
+    end = standing(qtbot, session)
+    assert end == pytest.approx((5.0, 5.0), abs=STEP)
+    assert answers.errors() == []
+    no_alarm(board)
+    record("small job", board, end, [text for text, _ in answers.lines])
+
+
+def _real_file_head(shared_dir: Path, tmp_path: Path, lines: int | None) -> Path:
+    source = shared_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
+    if lines is None:
+        return source
+    head = tmp_path / "head.gcode"
+    text = source.read_text(encoding="utf-8").splitlines()[:lines]
+    head.write_text("\n".join(text) + "\n", encoding="utf-8")
+    return head
+
+
+def _run_real_file(
+    qtbot: QtBot,
+    board: Board,
+    station: Station,
+    source: Path,
+    tmp_path: Path,
+    timeout_ms: int = JOB_TIMEOUT_MS,
+) -> tuple[tuple[float, float], list[str]]:
+    session, answers = connect(qtbot, station, board)
+    program = load(source)
+    runner = start(station, program, tmp_path)
+    finish(qtbot, runner, timeout_ms)
+    assert runner.state is JobState.DONE, answers.messages[-3:]
+    end = standing(qtbot, session)
+    last = program.path(("X", "Y")).coords[-1]
+    assert end == pytest.approx((float(last[0]), float(last[1])), abs=STEP)
+    assert answers.errors() == []
+    lines = [e for e in board.replies() if e["event"] == "line"]
+    assert max(e["unacknowledged"] for e in lines) <= PROFILE.gcode.rx_buffer - 1
+    no_alarm(board)
+    return end, [text for text, _ in answers.lines]
+
+
+def test_the_head_of_a_real_file_with_arcs_streams_and_ends_at_its_last_point(
+    qtbot: QtBot, board: Board, station: Station, shared_dir: Path, tmp_path: Path
+) -> None:
+    source = _real_file_head(shared_dir, tmp_path, 120)
+    record("real file head", board, *_run_real_file(qtbot, board, station, source, tmp_path))
+
+
+@SLOW
+def test_the_whole_gcodetools_file_streams_and_ends_at_its_last_point(
+    qtbot: QtBot, board: Board, station: Station, shared_dir: Path, tmp_path: Path
+) -> None:
+    source = _real_file_head(shared_dir, tmp_path, None)
+    ran = _run_real_file(qtbot, board, station, source, tmp_path, SLOW_JOB_TIMEOUT_MS)
+    record("real file", board, *ran)
+
+
+def test_a_paused_job_stands_and_resumes_to_the_same_end(
+    qtbot: QtBot, board: Board, station: Station, tmp_path: Path
+) -> None:
+    session, answers = connect(qtbot, station, board)
+    source = tmp_path / "small.gcode"
+    source.write_text(SMALL_JOB, encoding="utf-8")
+    runner = start(station, load(source), tmp_path)
+    qtbot.waitUntil(lambda: runner.done >= 3, timeout=JOB_TIMEOUT_MS)
+    runner.pause()
+    qtbot.waitUntil(lambda: runner.state is JobState.PAUSED, timeout=JOB_TIMEOUT_MS)
+    paused_at = runner.done
+    standing(qtbot, session)  # everything it had is done and it stands
+    assert runner.done == paused_at
+    runner.resume()
+    finish(qtbot, runner)
+    assert runner.state is JobState.DONE, answers.messages
+    end = standing(qtbot, session)
+    assert end == pytest.approx((5.0, 5.0), abs=STEP)
+    assert answers.errors() == []
+    no_alarm(board)
+    record("pause", board, end, [text for text, _ in answers.lines])
+
+
+def test_an_aborted_job_stops_the_board_without_an_alarm_and_it_takes_new_lines(
+    qtbot: QtBot, board: Board, station: Station, tmp_path: Path
+) -> None:
+    session, answers = connect(qtbot, station, board)
+    source = tmp_path / "long.gcode"
+    source.write_text(
+        "G21 G90\n" + "".join(f"G1 X{40 * (k % 2)} Y{k} F3000\n" for k in range(1, 30)),
+        encoding="utf-8",
+    )
+    runner = start(station, load(source), tmp_path)
+    qtbot.waitUntil(lambda: session.machine_state == "Run", timeout=JOB_TIMEOUT_MS)
+    runner.abort()
+    assert runner.state is JobState.ABORTED
+    qtbot.waitUntil(lambda: not session.stopping, timeout=30_000)
+    qtbot.waitUntil(lambda: session.machine_state == "Idle", timeout=30_000)
+    stopped_at = standing(qtbot, session)
+    assert stopped_at[1] < 29  # it did not run to the end
+    no_alarm(board)
+    # The reset emptied its buffers but kept its position: a new line runs from there.
+    assert session.send_line("G90 G0 X1 Y1")
+    end = standing(qtbot, session)
+    assert end == pytest.approx((1.0, 1.0), abs=STEP)
+    assert answers.errors() == []
+    record("abort", board, end)
+
+
+def test_a_held_jog_moves_and_stops_on_release_without_an_alarm(
+    qtbot: QtBot, board: Board, station: Station
+) -> None:
+    session, answers = connect(qtbot, station, board)
+    session.set_jog([1, 0])
+    qtbot.waitUntil(
+        lambda: session.status is not None and session.status.mpos[0] > 1.0, timeout=30_000
+    )
+    session.set_jog([0, 0])
+    x, y = standing(qtbot, session)
+    assert x > 1.0 and y == 0.0
+    sent = [text for text, _ in answers.lines if text.startswith("$J=")]
+    assert sent and answers.errors() == [], answers.lines
+    no_alarm(board)
+    # The jog left the board's modal state alone: a plain absolute move goes where it says.
+    assert session.send_line("G0 X3 Y0")
+    end = standing(qtbot, session)
+    assert end == pytest.approx((3.0, 0.0), abs=STEP)
+    record("jog", board, end)
+
+
+def test_a_link_cut_mid_job_pauses_the_job_and_says_so(
+    qtbot: QtBot, board: Board, station: Station, tmp_path: Path
+) -> None:
+    _, answers = connect(qtbot, station, board)
+    source = tmp_path / "long.gcode"
+    source.write_text(
+        "G21 G90\n" + "".join(f"G1 X{40 * (k % 2)} Y{k} F3000\n" for k in range(1, 30)),
+        encoding="utf-8",
+    )
+    runner = start(station, load(source), tmp_path)
+    qtbot.waitUntil(lambda: runner.done >= 2, timeout=JOB_TIMEOUT_MS)
+    board.cut()
+    qtbot.waitUntil(lambda: runner.state is JobState.PAUSED, timeout=30_000)
+    assert station.model.link_state is not LinkState.CONNECTED
+    assert any("Link lost" in m or "lost" in m.lower() for m in answers.messages), answers.messages
+    assert answers.errors() == []
+    record("cut link", board, (0.0, 0.0), runner.state)
