@@ -256,6 +256,9 @@ class MainWindow(QMainWindow):
         """Shift+V shows and hides it, from any focus, like the original tool's extension."""
         self.developer_pane = DeveloperPane(self.station, self)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.developer_pane)
+        # Tabbed with the plots rather than beside them: side by side the two need more
+        # than a 1280 px screen.  Either can still be dragged out to float.
+        self.tabifyDockWidget(self.telemetry_dock, self.developer_pane)
         self.developer_pane.hide()
         self.developer_action = self.developer_pane.toggleViewAction()
         self.developer_action.setShortcut(QKeySequence("Shift+V"))

@@ -241,7 +241,7 @@ class TelemetryDock(QDockWidget):
     def _build_plots(self) -> pg.GraphicsLayoutWidget:
         self.graphics = pg.GraphicsLayoutWidget()
         self.graphics.setBackground("w")
-        self.graphics.setMinimumSize(360, 240)
+        self.graphics.setMinimumSize(360, 180)
         self.graphics.ci.layout.setSpacing(2)
         axes = self.recorder.model.axes
         units = _common_unit([a.unit for a in axes])

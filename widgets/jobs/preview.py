@@ -332,7 +332,7 @@ class JobPreview(QWidget):
 
         self.plot_widget = pg.PlotWidget(background="w")
         self.plot_widget.setObjectName("job_preview_plot")
-        self.plot_widget.setMinimumSize(260, 200)
+        self.plot_widget.setMinimumSize(240, 150)
         self.plot = self.plot_widget.getPlotItem()
         self.plot.setAspectLocked(True, ratio=1.0)
         self.plot.showGrid(x=True, y=True, alpha=0.2)
