@@ -1,6 +1,6 @@
-"""The operator window fits a 1280×800 screen with every dock open, on every profile.
+"""The operator window fits a 1280x800 screen with every dock open, on every profile.
 
-A laptop screen of 1280×800 is what the workshop machines have.  The window's
+A laptop screen of 1280x800 is what the workshop machines have.  The window's
 minimum size must fit it with the jobs dock, the telemetry plots and the
 developer pane all open, and at that size every run control — and the
 Continue of an operator prompt — must be on screen, not clipped and not
@@ -62,7 +62,7 @@ def test_minimum_size_fits_1280_by_800_with_every_dock(
     window = _every_dock_open(qtbot, profile_harness, tmp_path)
     hint = window.minimumSizeHint()
     assert hint.width() <= SCREEN.width() and hint.height() <= SCREEN.height(), (
-        f"{profile_harness.station.profile.title}: {hint.width()}×{hint.height()}"
+        f"{profile_harness.station.profile.title}: {hint.width()}x{hint.height()}"
     )
 
 

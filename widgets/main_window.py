@@ -6,7 +6,10 @@ status bar.  Besides layout, the window owns the two safety rules that no
 single panel can enforce:
 
 * keys are routed application-wide, so arrows jog and Esc stops whatever
-  widget has focus — except that arrows keep editing inside text fields;
+  widget of the window has focus — except that arrows keep editing inside
+  text fields, Esc also closes an open menu or list, and a dialog (a file
+  dialog, the list of keys…) keeps its keys: there Esc closes the dialog and
+  never runs the stop;
 * whenever the window may stop seeing key releases (deactivated, focus gone,
   application inactive) every jog is released, so a jog can never run away
   because its key-up went to another window.
@@ -105,6 +108,27 @@ def _is_free_text(widget: QWidget | None) -> bool:
         return False
     parent = widget.parentWidget()
     return not isinstance(parent, QAbstractSpinBox)
+
+
+def _in_dialog(widget: QObject) -> bool:
+    """Whether ``widget`` is in a dialog, or in a popup (a combo's list…) opened from one.
+
+    A dialog owns its keys: Esc cancels it and arrows move in it.  Neither may reach
+    the machine — Esc in a file dialog's type list once ran the stop, and arrows in
+    its file list would have jogged.
+    """
+    current = widget if isinstance(widget, QWidget) else None
+    while current is not None:
+        if isinstance(current, QDialog):
+            return True
+        current = current.parentWidget()
+    return False
+
+
+def _in_popup(widget: QWidget) -> bool:
+    """Whether ``widget`` is in the popup (menu, combo list) that has the keyboard now."""
+    popup = QApplication.activePopupWidget()
+    return popup is not None and (widget is popup or popup.isAncestorOf(widget))
 
 
 class MainWindow(QMainWindow):
@@ -300,7 +324,9 @@ class MainWindow(QMainWindow):
             )
             text = QLabel(
                 f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
-                "has focus: there they keep editing. Esc works from anywhere.</p>"
+                "has focus: there they keep editing. Esc works from anywhere in the window "
+                "and also closes an open menu; in a dialog (like this one) Esc closes the "
+                "dialog only.</p>"
             )
             text.setWordWrap(True)
             buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
@@ -323,7 +349,7 @@ class MainWindow(QMainWindow):
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         kind = event.type()
         if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease):
-            if isinstance(event, QKeyEvent) and self._owns(watched):
+            if isinstance(event, QKeyEvent) and self._owns(watched) and not _in_dialog(watched):
                 assert isinstance(watched, QWidget)
                 return self._route_key(watched, event)
         elif kind == QEvent.Type.WindowDeactivate:
@@ -362,7 +388,9 @@ class MainWindow(QMainWindow):
         if key == Qt.Key.Key_Escape:
             if press and not event.isAutoRepeat():
                 self.jog.stop_all()
-            return True
+            # A menu or combo list of this window that is open closes too: the stop is
+            # never a reason to leave it hanging over the window.
+            return not _in_popup(receiver)
         if key == Qt.Key.Key_Shift:
             if not event.isAutoRepeat():
                 self.jog.set_shift(press)

@@ -175,9 +175,7 @@ class JobsDock(QDockWidget):
         self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.operation_label.setToolTip("The operation being executed and the line it came from")
         # A long source line must not widen the dock past the screen: it is cut instead.
-        self.operation_label.setSizePolicy(
-            QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred
-        )
+        self.operation_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         layout.addWidget(self.operation_label)
         self.messages = QPlainTextEdit()
         self.messages.setObjectName("job_messages")
