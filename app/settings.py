@@ -186,6 +186,15 @@ JOB_OPTIONS: Mapping[str, Spec[object]] = {
         _number_choice(EXCELLON_STEPS),
     ),
 }
+#: How many job files File → Recent jobs lists.
+RECENT_JOBS_KEPT = 8
+#: The job files opened last, newest first ("" where there is none).
+RECENT_JOBS: tuple[Spec[str], ...] = tuple(
+    Spec(f"recent_jobs/{index}", "", "a file path", _text) for index in range(RECENT_JOBS_KEPT)
+)
+#: The window's colours: as the desktop says, or always light or dark.
+THEMES = ("system", "light", "dark")
+THEME = Spec("view/theme", "system", f"one of {', '.join(THEMES)}", _choice(lambda: THEMES))
 #: Every key, for the tests (and for anyone wondering what the file may hold).
 ALL_SPECS: tuple[Spec[object], ...] = (
     PROFILE,
@@ -197,6 +206,8 @@ ALL_SPECS: tuple[Spec[object], ...] = (
     WINDOW_STATE,
     PAGE,
     *JOB_OPTIONS.values(),
+    *RECENT_JOBS,
+    THEME,
 )
 
 
@@ -356,6 +367,35 @@ class StationSettings:
     def set_job_options(self, values: Mapping[str, object]) -> None:
         for name, value in values.items():
             self.write(JOB_OPTIONS[name], value)
+
+    def recent_jobs(self) -> list[str]:
+        """The job files opened last, newest first (unusable entries left out)."""
+        paths = (self.read(spec) for spec in RECENT_JOBS)
+        return [path for path in paths if path]
+
+    def add_recent_job(self, path: str) -> None:
+        """Put ``path`` first in the list; the oldest falls off.  Too long a path is not kept."""
+        try:
+            _text(path)
+        except BadValue:
+            return
+        paths = [path, *(p for p in self.recent_jobs() if p != path)]
+        self.set_recent_jobs(paths)
+
+    def set_recent_jobs(self, paths: list[str]) -> None:
+        for index, spec in enumerate(RECENT_JOBS):
+            if index < len(paths):
+                self.write(spec, paths[index])
+            else:
+                self.store.remove(spec.key)
+
+    @property
+    def theme(self) -> str:
+        return self.read(THEME)
+
+    @theme.setter
+    def theme(self, value: str) -> None:
+        self.write(THEME, value)
 
     def sync(self) -> None:
         self.store.sync()

@@ -17,6 +17,7 @@ single panel can enforce:
 
 from __future__ import annotations
 
+import html
 from pathlib import Path
 
 from PySide6.QtCore import (
@@ -41,6 +42,7 @@ from PySide6.QtWidgets import (
     QMainWindow,
     QMessageBox,
     QPlainTextEdit,
+    QPushButton,
     QScrollArea,
     QStackedWidget,
     QTextEdit,
@@ -48,11 +50,13 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.jobs.names import shown
 from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
 from app.settings import GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
+from app.version import station_version
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
@@ -68,7 +72,7 @@ from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
-from widgets.stop_caption import stop_key_text
+from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.telemetry_dock import TelemetryDock
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
@@ -84,6 +88,8 @@ SHORTCUTS: tuple[tuple[str, str], ...] = (
         "Alt+M / A / R / D / L / X / G",
         "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page",
     ),
+    ("Ctrl+O", "Open a job (File → Open job…)"),
+    ("Ctrl+Q", "Quit (stops the machine first)"),
     ("Ctrl+J", "Show or hide the jobs dock"),
     ("Ctrl+T", "Show or hide the telemetry plots"),
     ("Shift+V", "Show or hide the developer pane"),
@@ -227,6 +233,7 @@ class MainWindow(QMainWindow):
 
         self.model.lockChanged.connect(self._update_lock)
         self.model.linkStateChanged.connect(self._show_link_status)
+        self.model.linkStateChanged.connect(self._update_machine_menu)
         self.model.message.connect(self._show_message)
         station.sessionChanged.connect(self._attach_session)
         self._attach_session()
@@ -263,6 +270,7 @@ class MainWindow(QMainWindow):
         self.jobs_dock = JobsDock(self.station, self.job_runner, self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
         self.jobs_dock.hide()
+        self.jobs_dock.jobOpened.connect(self._remember_job)
         action = self.jobs_dock.toggleViewAction()
         action.setShortcut(QKeySequence("Ctrl+J"))
         self.view_menu.addAction(action)
@@ -302,14 +310,136 @@ class MainWindow(QMainWindow):
         self._show_rejected()
 
     def _build_menus(self) -> None:
-        self.view_menu = self.menuBar().addMenu("&View")
-        help_menu = self.menuBar().addMenu("&Help")
-        self.shortcuts_action = QAction("&Keyboard shortcuts", self)
+        """File, Machine, View and Help: where a user of other senders looks first.
+
+        Machine's entries press the page buttons they stand for, so the menu can do
+        nothing the page would not (a locked button ignores the click).
+        """
+        bar = self.menuBar()
+        file_menu = bar.addMenu("&File")
+        self.open_action = QAction("&Open job…", self)
+        self.open_action.setShortcut(QKeySequence.StandardKey.Open)
+        self.open_action.triggered.connect(self._ask_open_job)
+        file_menu.addAction(self.open_action)
+        self.recent_menu = file_menu.addMenu("&Recent jobs")
+        self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
+        self._fill_recent_menu()
+        file_menu.addSeparator()
+        self.quit_action = QAction("&Quit", self)
+        self.quit_action.setShortcut(QKeySequence("Ctrl+Q"))
+        self.quit_action.triggered.connect(self.close)
+        file_menu.addAction(self.quit_action)
+
+        machine_menu = bar.addMenu("&Machine")
+        self.connect_action = QAction("&Connect", self)
+        self.connect_action.triggered.connect(self.connection_panel.connect_selected)
+        self.disconnect_action = QAction("&Disconnect", self)
+        self.disconnect_action.triggered.connect(self.station.stop_and_close)
+        machine_menu.addAction(self.connect_action)
+        machine_menu.addAction(self.disconnect_action)
+        machine_menu.addSeparator()
+        self.home_actions: list[tuple[QAction, QPushButton]] = []
+        for button in self._home_buttons():
+            action = QAction(button.text().replace("  ", " "), self)
+            action.setToolTip(button.toolTip())
+            action.triggered.connect(button.click)
+            machine_menu.addAction(action)
+            self.home_actions.append((action, button))
+        machine_menu.addSeparator()
+        caption, tip = stop_caption(self.station.profile)
+        stop_text = "&Stop" if caption == "STOP" else "&Drop the queue"
+        # Esc is routed by the window (see _route_key), not a shortcut: shown, not bound.
+        self.stop_action = QAction(f"{stop_text}\tEsc", self)
+        self.stop_action.setToolTip(tip)
+        self.stop_action.triggered.connect(self.stop_all)
+        machine_menu.addAction(self.stop_action)
+        machine_menu.setToolTipsVisible(True)
+
+        self.view_menu = bar.addMenu("&View")
+        help_menu = bar.addMenu("&Help")
+        self.shortcuts_action = QAction("&Keys", self)
         self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
         self.shortcuts_action.triggered.connect(self.show_shortcuts)
         help_menu.addAction(self.shortcuts_action)
         self.addAction(self.shortcuts_action)
+        self.about_action = QAction("&About StepDeck", self)
+        self.about_action.triggered.connect(self.show_about)
+        help_menu.addAction(self.about_action)
         self._help: QDialog | None = None
+        self._about: QMessageBox | None = None
+
+    def _home_buttons(self) -> list[QPushButton]:
+        """The page buttons that home this machine, as the machine means "home"."""
+        if self.station.profile.dialect == "gcode":
+            return [self.gcode_panel.home_button]  # $H homes every axis at once
+        if self.station.profile.dialect == "drill":
+            return [self.drill_panel.command_buttons["N"]]
+        return list(self.manual_panel.home_buttons)
+
+    def _ask_open_job(self) -> None:
+        self.jobs_dock.show()
+        self.jobs_dock.raise_()
+        self.jobs_dock.ask_open()
+
+    def _remember_job(self, path: object) -> None:
+        if isinstance(path, Path):
+            self._settings.add_recent_job(str(path))
+            if self._remembers:
+                self._settings.sync()
+
+    def _fill_recent_menu(self) -> None:
+        """The list as stored now: another StepDeck window may have added to it."""
+        self.recent_menu.clear()
+        paths = self._settings.recent_jobs()
+        for number, text in enumerate(paths, start=1):
+            path = Path(text)
+            action = self.recent_menu.addAction(f"&{number} {shown(path.name)}")
+            action.setToolTip(shown(text))
+            action.setData(text)
+            action.triggered.connect(lambda _=False, p=path: self.open_recent(p))
+        if not paths:
+            self.recent_menu.addAction("(none yet)").setEnabled(False)
+            return
+        self.recent_menu.addSeparator()
+        self.recent_menu.addAction("&Clear the list", self._clear_recent)
+        self.recent_menu.setToolTipsVisible(True)
+
+    def _clear_recent(self) -> None:
+        self._settings.set_recent_jobs([])
+        if self._remembers:
+            self._settings.sync()
+
+    def open_recent(self, path: Path) -> bool:
+        """Open a job from the recent list (the dock says why when it cannot)."""
+        self.jobs_dock.show()
+        if not path.is_file():
+            self.jobs_dock.say(f"{shown(path.name)}: not opened — the file is no longer there")
+            return False
+        return self.jobs_dock.open_path(path, background=True)
+
+    def _update_machine_menu(self, *_args: object) -> None:
+        linked = self.model.link_state is not LinkState.DISCONNECTED
+        self.connect_action.setEnabled(not linked)
+        self.disconnect_action.setEnabled(linked)
+        for action, button in self.home_actions:
+            action.setEnabled(button.isEnabled())
+
+    def show_about(self) -> QMessageBox:
+        """Name, version and what this is (non-modal; returns the box)."""
+        if self._about is None:
+            self._about = QMessageBox(
+                QMessageBox.Icon.Information,
+                "About StepDeck",
+                f"<b>StepDeck {station_version()}</b><p>A control station for small "
+                "stepper machines: XY stages, a PCB drill, G-code plotters, the "
+                f"usb3 unit and the string-art winder.</p><p>Machine: "
+                f"{html.escape(self.station.profile.title)}</p>",
+                parent=self,
+            )
+            self._about.setObjectName("about_box")
+            self._about.setWindowModality(Qt.WindowModality.NonModal)
+        self._about.show()
+        return self._about
 
     # --- public --------------------------------------------------------------
 
@@ -446,6 +576,7 @@ class MainWindow(QMainWindow):
         self.jog.set_enabled(enabled)
         for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
+        self._update_machine_menu()
         self.lock_label.setText(f"Motion locked: {reason}")
         self.lock_label.setVisible(not enabled)
 
@@ -551,5 +682,7 @@ class MainWindow(QMainWindow):
         self._remove_filter()
         if self._help is not None:
             self._help.close()
+        if self._about is not None:
+            self._about.close()
         self.station.shutdown()
         super().closeEvent(event)

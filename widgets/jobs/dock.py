@@ -121,6 +121,9 @@ def clock_text(seconds: float | None) -> str:
 class JobsDock(QDockWidget):
     """Open…, preview, Run / Pause / Resume / Step / Abort, progress, ETA, operator prompts."""
 
+    #: A job file was loaded (its path): the window lists it under File → Recent jobs.
+    jobOpened = Signal(object)
+
     def __init__(
         self,
         station: Station,
@@ -579,6 +582,7 @@ class JobsDock(QDockWidget):
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
             return False
         self.say(f"{shown(path.name)}: {len(program)} operations loaded")
+        self.jobOpened.emit(path)
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
             # The totals with this machine's time for them (the loader knew no machine).
