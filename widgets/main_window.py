@@ -29,7 +29,15 @@ from PySide6.QtCore import (
     QTimer,
     Signal,
 )
-from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
+from PySide6.QtGui import (
+    QAction,
+    QActionGroup,
+    QCloseEvent,
+    QFocusEvent,
+    QKeyEvent,
+    QKeySequence,
+    QShowEvent,
+)
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
     QApplication,
@@ -74,6 +82,7 @@ from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.telemetry_dock import TelemetryDock
+from widgets.theme import PlotColours, ThemeController
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
@@ -242,6 +251,7 @@ class MainWindow(QMainWindow):
         self._build_jobs_dock(checkpoint_dir)
         self._build_telemetry_dock()
         self._build_developer_pane()
+        self._build_theme_menu()
         self._restore_settings()
         self._install_filter()
 
@@ -297,6 +307,39 @@ class MainWindow(QMainWindow):
         self.developer_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
         self.addAction(self.developer_action)
         self.view_menu.addAction(self.developer_action)
+
+    def _build_theme_menu(self) -> None:
+        """View → Colours: as the desktop says (and when it changes), light or dark; kept."""
+        self.theme = ThemeController(self._settings.theme, self)
+        self.theme.coloursChanged.connect(self._apply_colours)
+        self._apply_colours(self.theme.colours)
+        self.view_menu.addSeparator()
+        menu = self.view_menu.addMenu("&Colours")
+        group = QActionGroup(self)
+        self.theme_actions: dict[str, QAction] = {}
+        for choice, caption in (
+            ("system", "As the &system"),
+            ("light", "&Light"),
+            ("dark", "&Dark"),
+        ):
+            action = QAction(caption, self, checkable=True)
+            action.setChecked(choice == self.theme.choice)
+            action.triggered.connect(lambda _=False, c=choice: self.set_theme(c))
+            group.addAction(action)
+            menu.addAction(action)
+            self.theme_actions[choice] = action
+
+    def set_theme(self, choice: str) -> None:
+        """Use and remember the colours chosen ("system", "light" or "dark")."""
+        self._settings.theme = choice
+        if self._remembers:
+            self._settings.sync()
+        self.theme_actions[choice].setChecked(True)
+        self.theme.set_choice(choice)
+
+    def _apply_colours(self, colours: PlotColours) -> None:
+        self.jobs_dock.preview.apply_colours(colours)
+        self.telemetry_dock.apply_colours(colours)
 
     def _build_status_bar(self) -> None:
         self.link_status = QLabel()
@@ -680,6 +723,7 @@ class MainWindow(QMainWindow):
             return
         self.save_settings()
         self._remove_filter()
+        self.theme.release()
         if self._help is not None:
             self._help.close()
         if self._about is not None:

@@ -102,9 +102,10 @@ SOURCE_LINES_MAX_BYTES = 8_000_000
 
 def _banner_style(name: str, background: str, border: str) -> str:
     """A coloured band for one named frame only (its labels and buttons keep their looks)."""
+    # Its own text colour too: on the light band the dark theme's light text was unreadable.
     return (
         f"QFrame#{name} {{ background: {background}; border: 1px solid {border};"
-        " border-radius: 4px; }"
+        f" border-radius: 4px; }} QFrame#{name} QLabel {{ color: #1d1d1d; }}"
     )
 
 

@@ -101,6 +101,7 @@ class DrillPanel(QWidget):
         self.long_move.setObjectName("long_move_warning")
         self.long_move.setStyleSheet(
             "QGroupBox#long_move_warning { background: #fff3cd; border: 1px solid #e0c060; }"
+            " QGroupBox#long_move_warning QLabel { color: #1d1d1d; }"
         )
         self.long_move_label = QLabel()
         self.long_move_label.setWordWrap(True)
