@@ -38,12 +38,13 @@ def test_link_lamp_follows_the_link_state(harness: StationHarness, info: InfoPan
 
 
 def test_battery_and_temperature(harness: StationHarness, info: InfoPanel) -> None:
-    assert info.battery.format() == "battery —"
+    assert info.battery.format() == info.battery_text.text() == "battery —"
+    assert not info.battery.isTextVisible()  # the words beside the gauge, never over its edge
     harness.connect()
     harness.emulator.board_temperature_c = 31.25
     harness.run(1.5)
     assert info.battery.value() == 80
-    assert info.battery.format() == "battery 80 % · 4.02 V"
+    assert info.battery_text.text() == "battery 80 % · 4.02 V"
     assert info.temperature.text() == "board 31.2 °C"
 
 

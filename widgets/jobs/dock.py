@@ -173,7 +173,7 @@ class JobsDock(QDockWidget):
         layout.addWidget(self._build_prompt())
         layout.addWidget(self.preview, 1)
         layout.addLayout(self._build_progress())
-        self.operation_label = QLabel("—")
+        self.operation_label = QLabel("")
         self.operation_label.setObjectName("job_operation")
         self.operation_label.setFont(monospace_font())
         self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -194,6 +194,7 @@ class JobsDock(QDockWidget):
 
         runner.stateChanged.connect(self._state_changed)
         runner.progressChanged.connect(self._show_progress)
+        runner.executedChanged.connect(self._show_progress)
         runner.etaChanged.connect(self._show_eta)
         runner.operationStarted.connect(self._show_operation)
         runner.waitingForOperator.connect(self._show_prompt)
@@ -666,11 +667,10 @@ class JobsDock(QDockWidget):
         if program is not self.preview.program:
             self.preview.set_program(program)
         self._show_file(program)
-        total = len(program) if program is not None else 0
-        self._show_progress(self.runner.done if program is not None else 0, total)
+        self._show_progress()
         estimate = self.runner.estimate if program is not None else None
         self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
-        self.operation_label.setText("—")
+        self.operation_label.setText("")  # no lone dash where no operation is under way
         source = program.source if program is not None else None
         prepared, self._prepared_lines = self._prepared_lines, None
         read = prepared is not None and source is not None and prepared[0] == source
@@ -748,10 +748,26 @@ class JobsDock(QDockWidget):
         why = f" — motion locked: {lock}" if lock else ""
         self.run_button.setToolTip(f"Run the job from the start{why}")
 
-    def _show_progress(self, done: int, total: int) -> None:
+    def _show_progress(self, *_args: object) -> None:
+        """The bar and count say what the machine ran; what is sent ahead is said beside it.
+
+        A G-code machine answers lines long before it runs them (its planner holds a
+        dozen or so), so counting answers showed a finished job on its first edge.
+        """
+        program = self.runner.program
+        total = len(program) if program is not None else 0
+        executed = self.runner.executed if program is not None else 0
+        sent = self.runner.done if program is not None else 0
         self.progress.setRange(0, max(1, total))
-        self.progress.setValue(min(done, max(1, total)))
-        self.count_label.setText(f"{done} / {total} ops")
+        self.progress.setValue(min(executed, max(1, total)))
+        text = f"{executed} / {total} ops"
+        if sent > executed:
+            text += f" · {sent} sent"
+        self.count_label.setText(text)
+        self.count_label.setToolTip(
+            "Operations the machine reported as run, of all; and how many were sent to it "
+            "(a G-code machine holds sent lines in its planner before it runs them)"
+        )
 
     def _show_eta(self, elapsed_s: float, remaining_s: float) -> None:
         self._set_times(elapsed_s, remaining_s)

@@ -293,7 +293,9 @@ class JobPreview(QWidget):
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
         if runner is not None:
-            runner.progressChanged.connect(self._progress)
+            # Green is what the machine ran, not what it was sent: a G-code planner holds
+            # answered lines the pen has not drawn yet.
+            runner.executedChanged.connect(self._progress)
             runner.stateChanged.connect(self._update_enabled)
         self._draw_position()
         self._update_enabled()

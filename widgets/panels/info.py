@@ -106,8 +106,15 @@ class InfoPanel(QFrame):
 
         self.battery = QProgressBar()
         self.battery.setRange(0, 100)
-        self.battery.setMinimumWidth(200)
+        self.battery.setMinimumWidth(160)
+        self.battery.setMaximumHeight(8)
         self.battery.setToolTip("Battery charge and voltage")
+        # The words beside a thin gauge, not on it: text over the fill's edge was split in
+        # two colours and half unreadable.
+        self.battery.setTextVisible(False)
+        self.battery_text = QLabel()
+        self.battery_text.setObjectName("battery_text")
+        column.addWidget(self.battery_text)
         column.addWidget(self.battery)
 
         self.temperature = QLabel()
@@ -118,7 +125,7 @@ class InfoPanel(QFrame):
         # Battery and temperature come from subscriber variables; machines without
         # them (mains-powered units) do not show empty gauges.
         has_telemetry = self._model.profile.capabilities.subscribers
-        for widget in (self.battery, self.temperature, self.power_note):
+        for widget in (self.battery, self.battery_text, self.temperature, self.power_note):
             widget.setVisible(has_telemetry)
         return column
 
@@ -155,6 +162,7 @@ class InfoPanel(QFrame):
             self.battery.setValue(round(charge))
             volts = f" · {voltage:.2f} V" if voltage is not None else ""
             self.battery.setFormat(f"battery {charge:.0f} %{volts}")
+        self.battery_text.setText(self.battery.format())
         temperature = telemetry.get("board_temperature")
         self.temperature.setText(
             "board —" if temperature is None else f"board {temperature:.1f} °C"
