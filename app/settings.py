@@ -195,6 +195,14 @@ RECENT_JOBS: tuple[Spec[str], ...] = tuple(
 #: The window's colours: as the desktop says, or always light or dark.
 THEMES = ("system", "light", "dark")
 THEME = Spec("view/theme", "system", f"one of {', '.join(THEMES)}", _choice(lambda: THEMES))
+#: The language: the system locale's (English where it is none of these) or a fixed one.
+LANGUAGE_CHOICES = ("system", "en", "cs", "sk")
+LANGUAGE = Spec(
+    "view/language",
+    "system",
+    f"one of {', '.join(LANGUAGE_CHOICES)}",
+    _choice(lambda: LANGUAGE_CHOICES),
+)
 #: Every key, for the tests (and for anyone wondering what the file may hold).
 ALL_SPECS: tuple[Spec[object], ...] = (
     PROFILE,
@@ -208,6 +216,7 @@ ALL_SPECS: tuple[Spec[object], ...] = (
     *JOB_OPTIONS.values(),
     *RECENT_JOBS,
     THEME,
+    LANGUAGE,
 )
 
 
@@ -396,6 +405,14 @@ class StationSettings:
     @theme.setter
     def theme(self, value: str) -> None:
         self.write(THEME, value)
+
+    @property
+    def language(self) -> str:
+        return self.read(LANGUAGE)
+
+    @language.setter
+    def language(self, value: str) -> None:
+        self.write(LANGUAGE, value)
 
     def sync(self) -> None:
         self.store.sync()

@@ -21,6 +21,7 @@ import html
 from pathlib import Path
 
 from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
     QEvent,
     QObject,
     QSettings,
@@ -58,6 +59,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.i18n import LANGUAGES
 from app.jobs.names import shown
 from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
@@ -87,22 +89,28 @@ from widgets.theme import PlotColours, ThemeController
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
 
-SHORTCUTS: tuple[tuple[str, str], ...] = (
-    ("← →", "Jog X while held"),
-    ("↑ ↓", "Jog Y while held (two arrows at once = diagonal)"),
-    ("PageUp / PageDown", "Jog Z while held, on machines with a Z axis"),
-    ("Shift (held)", "Jog and move at the other speed"),
-    ("Esc", "Stop everything, from anywhere in the window"),
+#: Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).
+SHORTCUTS: tuple[tuple[str, object], ...] = (
+    ("← →", QT_TRANSLATE_NOOP("MainWindow", "Jog X while held")),
+    ("↑ ↓", QT_TRANSLATE_NOOP("MainWindow", "Jog Y while held (two arrows at once = diagonal)")),
+    (
+        "PageUp / PageDown",
+        QT_TRANSLATE_NOOP("MainWindow", "Jog Z while held, on machines with a Z axis"),
+    ),
+    ("Shift (held)", QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed")),
+    ("Esc", QT_TRANSLATE_NOOP("MainWindow", "Stop everything, from anywhere in the window")),
     (
         "Alt+M / A / R / D / L / X / G",
-        "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page",
+        QT_TRANSLATE_NOOP(
+            "MainWindow", "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page"
+        ),
     ),
-    ("Ctrl+O", "Open a job (File → Open job…)"),
-    ("Ctrl+Q", "Quit (stops the machine first)"),
-    ("Ctrl+J", "Show or hide the jobs dock"),
-    ("Ctrl+T", "Show or hide the telemetry plots"),
-    ("Shift+V", "Show or hide the developer pane"),
-    ("F1", "This list"),
+    ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),
+    ("Ctrl+Q", QT_TRANSLATE_NOOP("MainWindow", "Quit (stops the machine first)")),
+    ("Ctrl+J", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the jobs dock")),
+    ("Ctrl+T", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the telemetry plots")),
+    ("Shift+V", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the developer pane")),
+    ("F1", QT_TRANSLATE_NOOP("MainWindow", "This list")),
 )
 
 
@@ -176,7 +184,7 @@ class MainWindow(QMainWindow):
         self.settings_warning: QMessageBox | None = None
         self._filtering = False
         self._close_after_stop = False
-        self.setWindowTitle(f"StepDeck — {station.profile.title}")
+        self.setWindowTitle(self.tr("StepDeck — {0}").format(station.profile.title))
 
         self.jog = JogInput(station, self)
         self.info_panel = InfoPanel(self.model)
@@ -190,7 +198,9 @@ class MainWindow(QMainWindow):
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
-        self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
+        self.menu_panel.add_page(
+            self.tr("&Manual"), self.manual_panel, self.tr("Hold-to-jog buttons, Home (Alt+M)")
+        )
         #: Every page with motion controls, for the motion lock.
         self.motion_panels: list[
             ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel
@@ -199,27 +209,33 @@ class MainWindow(QMainWindow):
             # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
             self.drill_panel = DrillPanel(station)
             self.menu_panel.add_page(
-                "D&rill", self.drill_panel, "Command buttons, X/Y, terminal (Alt+R)"
+                self.tr("D&rill"),
+                self.drill_panel,
+                self.tr("Command buttons, X/Y, terminal (Alt+R)"),
             )
             self.motion_panels.append(self.drill_panel)
         elif station.profile.dialect == "usb3":
             self.usb3_panel = Usb3Panel(station)
             self.menu_panel.add_page(
-                "A&xes", self.usb3_panel, "Move by mm, step size, thread (Alt+X)"
+                self.tr("A&xes"), self.usb3_panel, self.tr("Move by mm, step size, thread (Alt+X)")
             )
             self.motion_panels.append(self.usb3_panel)
         else:
             self.absolute_panel = AbsolutePanel(station)
             self.relative_panel = RelativePanel(station)
-            self.menu_panel.add_page("&Absolute", self.absolute_panel, "Move to a target (Alt+A)")
             self.menu_panel.add_page(
-                "&Relative", self.relative_panel, "Move by an increment (Alt+R)"
+                self.tr("&Absolute"), self.absolute_panel, self.tr("Move to a target (Alt+A)")
+            )
+            self.menu_panel.add_page(
+                self.tr("&Relative"), self.relative_panel, self.tr("Move by an increment (Alt+R)")
             )
             self.motion_panels += [self.absolute_panel, self.relative_panel]
         if station.profile.dialect == "gcode":
             self.gcode_panel = GcodePanel(station)
             self.menu_panel.add_page(
-                "&G-code", self.gcode_panel, "Console, pen, hold/resume/reset (Alt+G)"
+                self.tr("&G-code"),
+                self.gcode_panel,
+                self.tr("Console, pen, hold/resume/reset (Alt+G)"),
             )
             self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
@@ -229,11 +245,15 @@ class MainWindow(QMainWindow):
             dynamics_page.setWidget(self.dynamics_panel)
             dynamics_page.setWidgetResizable(True)
             dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
-            self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
+            self.menu_panel.add_page(
+                self.tr("&Dynamics"), dynamics_page, self.tr("Device parameters (Alt+D)")
+            )
         self.connection_panel = ConnectionPanel(station, self._settings)
         self.connection_panel.profileRequested.connect(self.profileRequested)
         self.menu_panel.add_page(
-            "&Link", self.connection_panel, "Connect: emulator, serial port or BLE (Alt+L)"
+            self.tr("&Link"),
+            self.connection_panel,
+            self.tr("Connect: emulator, serial port or BLE (Alt+L)"),
         )
         self.static_panel = StaticPanel(station, self.jog)
         self._build_layout()
@@ -252,6 +272,7 @@ class MainWindow(QMainWindow):
         self._build_telemetry_dock()
         self._build_developer_pane()
         self._build_theme_menu()
+        self._build_language_menu()
         self._restore_settings()
         self._install_filter()
 
@@ -314,13 +335,13 @@ class MainWindow(QMainWindow):
         self.theme.coloursChanged.connect(self._apply_colours)
         self._apply_colours(self.theme.colours)
         self.view_menu.addSeparator()
-        menu = self.view_menu.addMenu("&Colours")
+        menu = self.view_menu.addMenu(self.tr("&Colours"))
         group = QActionGroup(self)
         self.theme_actions: dict[str, QAction] = {}
         for choice, caption in (
-            ("system", "As the &system"),
-            ("light", "&Light"),
-            ("dark", "&Dark"),
+            ("system", self.tr("As the &system")),
+            ("light", self.tr("&Light")),
+            ("dark", self.tr("&Dark")),
         ):
             action = QAction(caption, self, checkable=True)
             action.setChecked(choice == self.theme.choice)
@@ -328,6 +349,29 @@ class MainWindow(QMainWindow):
             group.addAction(action)
             menu.addAction(action)
             self.theme_actions[choice] = action
+
+    def _build_language_menu(self) -> None:
+        """View → Language: the system's or a fixed one; kept, used from the next start."""
+        menu = self.view_menu.addMenu(self.tr("L&anguage"))
+        group = QActionGroup(self)
+        self.language_actions: dict[str, QAction] = {}
+        choices = [("system", self.tr("As the &system"))]
+        choices += [(code, name) for code, name in LANGUAGES.items()]
+        for choice, caption in choices:
+            action = QAction(caption, self, checkable=True)
+            action.setChecked(choice == self._settings.language)
+            action.triggered.connect(lambda _=False, c=choice: self.set_language(c))
+            group.addAction(action)
+            menu.addAction(action)
+            self.language_actions[choice] = action
+
+    def set_language(self, choice: str) -> None:
+        """Remember the language chosen; the window speaks it from the next start."""
+        self._settings.language = choice
+        if self._remembers:
+            self._settings.sync()
+        self.language_actions[choice].setChecked(True)
+        self._show_message(self.tr("The language changes when StepDeck starts again"))
 
     def set_theme(self, choice: str) -> None:
         """Use and remember the colours chosen ("system", "light" or "dark")."""
@@ -345,7 +389,7 @@ class MainWindow(QMainWindow):
         self.link_status = QLabel()
         self.message_label = QLabel()
         self.rejected_label = QLabel()
-        self.rejected_label.setToolTip("Frames from the device that failed to decode")
+        self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
         bar = self.statusBar()
         bar.addWidget(self.link_status)
         bar.addWidget(self.message_label, 1)
@@ -359,24 +403,24 @@ class MainWindow(QMainWindow):
         nothing the page would not (a locked button ignores the click).
         """
         bar = self.menuBar()
-        file_menu = bar.addMenu("&File")
-        self.open_action = QAction("&Open job…", self)
+        file_menu = bar.addMenu(self.tr("&File"))
+        self.open_action = QAction(self.tr("&Open job…"), self)
         self.open_action.setShortcut(QKeySequence.StandardKey.Open)
         self.open_action.triggered.connect(self._ask_open_job)
         file_menu.addAction(self.open_action)
-        self.recent_menu = file_menu.addMenu("&Recent jobs")
+        self.recent_menu = file_menu.addMenu(self.tr("&Recent jobs"))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
         self._fill_recent_menu()
         file_menu.addSeparator()
-        self.quit_action = QAction("&Quit", self)
+        self.quit_action = QAction(self.tr("&Quit"), self)
         self.quit_action.setShortcut(QKeySequence("Ctrl+Q"))
         self.quit_action.triggered.connect(self.close)
         file_menu.addAction(self.quit_action)
 
-        machine_menu = bar.addMenu("&Machine")
-        self.connect_action = QAction("&Connect", self)
+        machine_menu = bar.addMenu(self.tr("&Machine"))
+        self.connect_action = QAction(self.tr("&Connect"), self)
         self.connect_action.triggered.connect(self.connection_panel.connect_selected)
-        self.disconnect_action = QAction("&Disconnect", self)
+        self.disconnect_action = QAction(self.tr("&Disconnect"), self)
         self.disconnect_action.triggered.connect(self.station.stop_and_close)
         machine_menu.addAction(self.connect_action)
         machine_menu.addAction(self.disconnect_action)
@@ -390,7 +434,7 @@ class MainWindow(QMainWindow):
             self.home_actions.append((action, button))
         machine_menu.addSeparator()
         caption, tip = stop_caption(self.station.profile)
-        stop_text = "&Stop" if caption == "STOP" else "&Drop the queue"
+        stop_text = self.tr("&Stop") if caption == "STOP" else self.tr("&Drop the queue")
         # Esc is routed by the window (see _route_key), not a shortcut: shown, not bound.
         self.stop_action = QAction(f"{stop_text}\tEsc", self)
         self.stop_action.setToolTip(tip)
@@ -398,14 +442,14 @@ class MainWindow(QMainWindow):
         machine_menu.addAction(self.stop_action)
         machine_menu.setToolTipsVisible(True)
 
-        self.view_menu = bar.addMenu("&View")
-        help_menu = bar.addMenu("&Help")
-        self.shortcuts_action = QAction("&Keys", self)
+        self.view_menu = bar.addMenu(self.tr("&View"))
+        help_menu = bar.addMenu(self.tr("&Help"))
+        self.shortcuts_action = QAction(self.tr("&Keys"), self)
         self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
         self.shortcuts_action.triggered.connect(self.show_shortcuts)
         help_menu.addAction(self.shortcuts_action)
         self.addAction(self.shortcuts_action)
-        self.about_action = QAction("&About StepDeck", self)
+        self.about_action = QAction(self.tr("&About StepDeck"), self)
         self.about_action.triggered.connect(self.show_about)
         help_menu.addAction(self.about_action)
         self._help: QDialog | None = None
@@ -441,10 +485,10 @@ class MainWindow(QMainWindow):
             action.setData(text)
             action.triggered.connect(lambda _=False, p=path: self.open_recent(p))
         if not paths:
-            self.recent_menu.addAction("(none yet)").setEnabled(False)
+            self.recent_menu.addAction(self.tr("(none yet)")).setEnabled(False)
             return
         self.recent_menu.addSeparator()
-        self.recent_menu.addAction("&Clear the list", self._clear_recent)
+        self.recent_menu.addAction(self.tr("&Clear the list"), self._clear_recent)
         self.recent_menu.setToolTipsVisible(True)
 
     def _clear_recent(self) -> None:
@@ -470,13 +514,15 @@ class MainWindow(QMainWindow):
     def show_about(self) -> QMessageBox:
         """Name, version and what this is (non-modal; returns the box)."""
         if self._about is None:
+            what = self.tr(
+                "A control station for small stepper machines: XY stages, a PCB drill, "
+                "G-code plotters, the usb3 unit and the string-art winder."
+            )
+            machine = self.tr("Machine: {0}").format(html.escape(self.station.profile.title))
             self._about = QMessageBox(
                 QMessageBox.Icon.Information,
-                "About StepDeck",
-                f"<b>StepDeck {station_version()}</b><p>A control station for small "
-                "stepper machines: XY stages, a PCB drill, G-code plotters, the "
-                f"usb3 unit and the string-art winder.</p><p>Machine: "
-                f"{html.escape(self.station.profile.title)}</p>",
+                self.tr("About StepDeck"),
+                f"<b>StepDeck {station_version()}</b><p>{what}</p><p>{machine}</p>",
                 parent=self,
             )
             self._about.setObjectName("about_box")
@@ -492,19 +538,19 @@ class MainWindow(QMainWindow):
             esc = stop_key_text(self.station.profile)
             rows = "".join(
                 f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
-                f"<td>{esc if keys == 'Esc' else what}</td></tr>"
+                f"<td>{esc if keys == 'Esc' else self.tr(str(what))}</td></tr>"
                 for keys, what in SHORTCUTS
             )
-            text = QLabel(
-                f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
-                "has focus: there they keep editing. Esc works from anywhere in the window "
-                "and also closes an open menu; in a dialog (like this one) Esc closes the "
-                "dialog only.</p>"
+            note = self.tr(
+                "Arrows do not jog while a text or number field has focus: there they keep "
+                "editing. Esc works from anywhere in the window and also closes an open menu; "
+                "in a dialog (like this one) Esc closes the dialog only."
             )
+            text = QLabel(f"<table>{rows}</table><p>{note}</p>")
             text.setWordWrap(True)
             buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
             self._help = QDialog(self)
-            self._help.setWindowTitle("StepDeck — keyboard shortcuts")
+            self._help.setWindowTitle(self.tr("StepDeck — keyboard shortcuts"))
             buttons.rejected.connect(self._help.close)
             layout = QVBoxLayout(self._help)
             layout.addWidget(text)
@@ -620,7 +666,7 @@ class MainWindow(QMainWindow):
         for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
         self._update_machine_menu()
-        self.lock_label.setText(f"Motion locked: {reason}")
+        self.lock_label.setText(self.tr("Motion locked: {0}").format(reason))
         self.lock_label.setVisible(not enabled)
 
     def _show_link_status(self, _state: object = None) -> None:
@@ -641,7 +687,7 @@ class MainWindow(QMainWindow):
     def _show_rejected(self, *_args: object) -> None:
         session = self.station.session
         count = session.rejected if session is not None else 0
-        self.rejected_label.setText(f"rejected frames: {count}")
+        self.rejected_label.setText(self.tr("rejected frames: %n", "", count))
 
     def _attach_session(self) -> None:
         # The count changes with what arrives: refresh on every received frame.
@@ -675,10 +721,15 @@ class MainWindow(QMainWindow):
         self._show_message(
             warnings[0]
             if len(warnings) == 1
-            else f"{len(warnings)} settings could not be used; defaults are used instead"
+            else self.tr(
+                "%n settings could not be used; defaults are used instead", "", len(warnings)
+            )
         )
         box = QMessageBox(
-            QMessageBox.Icon.Warning, "StepDeck — settings", "\n\n".join(warnings), parent=self
+            QMessageBox.Icon.Warning,
+            self.tr("StepDeck — settings"),
+            "\n\n".join(warnings),
+            parent=self,
         )
         box.setObjectName("settings_warning")
         box.setWindowModality(Qt.WindowModality.NonModal)
@@ -718,7 +769,7 @@ class MainWindow(QMainWindow):
             if not self._close_after_stop:
                 self._close_after_stop = True
                 self.station.linkClosed.connect(self._close_when_stopped)
-            self._show_message("Stopping every axis before closing…")
+            self._show_message(self.tr("Stopping every axis before closing…"))
             event.ignore()
             return
         self.save_settings()

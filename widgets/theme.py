@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 from PySide6.QtCore import QObject, Qt, Signal
 from PySide6.QtGui import QColor, QGuiApplication, QPalette
-from PySide6.QtWidgets import QApplication
+from PySide6.QtWidgets import QApplication, QWidget
 
 
 @dataclass(frozen=True)
@@ -105,6 +105,21 @@ def _is_dark(palette: QPalette) -> bool:
     return palette.color(QPalette.ColorRole.Window).lightness() < 128
 
 
+def _repolish_style_sheets() -> None:
+    """Polish again every shown window's widgets that carry a style sheet.
+
+    A widget with a style sheet took its colours when it was polished, so its
+    buttons would stay light in the dark.  Only live windows are walked (a widget
+    waiting for deletion must not be touched), and only when light and dark swap.
+    """
+    for window in QApplication.topLevelWidgets():
+        for widget in (window, *window.findChildren(QWidget)):
+            sheet = widget.styleSheet()
+            if sheet:
+                widget.setStyleSheet("")
+                widget.setStyleSheet(sheet)
+
+
 class ThemeController(QObject):
     """Keeps the application palette and the plot colours on the operator's choice."""
 
@@ -120,6 +135,7 @@ class ThemeController(QObject):
         self._choice = choice
         self.colours = LIGHT
         QGuiApplication.styleHints().colorSchemeChanged.connect(self._scheme_changed)
+        self._following = True
         self.apply()
 
     @property
@@ -143,14 +159,10 @@ class ThemeController(QObject):
             palette = self._platform
         else:
             palette = dark_palette() if dark else QApplication.style().standardPalette()
+        repolish = _is_dark(QApplication.palette()) != dark
         QApplication.setPalette(palette)
-        # A widget with a style sheet took its colours when it was polished; polish it
-        # again, or its buttons stay light in the dark (a few dozen widgets: cheap).
-        for widget in QApplication.allWidgets():
-            sheet = widget.styleSheet()
-            if sheet:
-                widget.setStyleSheet("")
-                widget.setStyleSheet(sheet)
+        if repolish:
+            _repolish_style_sheets()
         colours = DARK if dark else LIGHT
         changed = colours is not self.colours
         self.colours = colours
@@ -163,4 +175,6 @@ class ThemeController(QObject):
 
     def release(self) -> None:
         """Stop following the desktop (the window closes; the palette stays as it is)."""
-        QGuiApplication.styleHints().colorSchemeChanged.disconnect(self._scheme_changed)
+        if self._following:
+            self._following = False
+            QGuiApplication.styleHints().colorSchemeChanged.disconnect(self._scheme_changed)
