@@ -14,6 +14,7 @@ from PySide6.QtGui import QFocusEvent, QKeyEvent
 from PySide6.QtWidgets import QApplication, QComboBox, QFileDialog, QWidget
 from pytestqt.qtbot import QtBot
 
+from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus, CommandFrame, CommandId, CommandPacket, decode
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -334,12 +335,27 @@ def test_geometry_and_page_survive_a_restart(
     assert second.stack.currentWidget() is second.relative_panel
 
 
-def test_job_reading_options_survive_a_restart(
-    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+def test_job_reading_options_survive_a_restart(qtbot: QtBot, tmp_path: Path) -> None:
+    harness = StationHarness(load_profile("grbl-plotter"))  # a pen: the drill options show
+    try:
+        _options_survive_a_restart(qtbot, harness, tmp_path)
+    finally:
+        harness.close()
+
+
+def test_drill_options_are_not_offered_without_a_drill_or_a_pen(
+    qtbot: QtBot, window: MainWindow
 ) -> None:
+    window.jobs_dock.show()
+    assert not window.jobs_dock.draw_check.isVisible()
+    assert not window.jobs_dock.step_combo.isVisible()
+
+
+def _options_survive_a_restart(qtbot: QtBot, harness: StationHarness, tmp_path: Path) -> None:
     settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     first = _open_window(qtbot, harness, settings=settings)
     dock = first.jobs_dock
+    dock.show()
     assert not dock.draw_check.isChecked() and dock.translate_pen_check.isChecked()
     qtbot.mouseClick(dock.draw_check, Qt.MouseButton.LeftButton)
     dock.translate_pen_check.setChecked(False)
@@ -471,8 +487,6 @@ def test_ctrl_j_shows_the_jobs_dock_whose_checkpoints_go_where_asked(
 
 @pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter", "string-art"])
 def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(qtbot: QtBot, name: str) -> None:
-    from app.profiles import load_profile
-
     plotter = StationHarness(load_profile(name))
     try:
         window = _open_window(qtbot, plotter)

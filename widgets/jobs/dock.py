@@ -226,7 +226,8 @@ class JobsDock(QDockWidget):
         self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
         step = QHBoxLayout()
         step.setSpacing(4)
-        step.addWidget(QLabel("Excellon step"))
+        self.step_label = QLabel("Excellon step")
+        step.addWidget(self.step_label)
         step.addWidget(self.step_combo)
         step.addStretch(1)
         self.draw_check.toggled.connect(self._options_changed)
@@ -247,6 +248,12 @@ class JobsDock(QDockWidget):
         )
         gcode = self.station.profile.dialect == "gcode"
         pen = self.station.profile.capabilities.pen
+        # Drill files are drilled or drawn: where the machine has neither tool they are
+        # refused whatever these say, so they are not offered.
+        holes = pen or self.station.profile.capabilities.drill
+        self.draw_check.setVisible(holes)
+        self.step_label.setVisible(holes)
+        self.step_combo.setVisible(holes)
         for check, visible in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
             check.setVisible(visible)
             check.toggled.connect(self._options_changed)
