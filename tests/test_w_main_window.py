@@ -314,6 +314,10 @@ def test_status_bar_shows_link_messages_and_rejects(
     assert window.rejected_label.text() == "rejected frames: 0"
     harness.station.model.message.emit("hello operator")
     assert window.message_label.text() == "hello operator"
+    assert window.message_timer.isActive()  # and it goes, rather than standing for good
+    window.message_timer.setInterval(20)
+    window.message_timer.start()
+    qtbot.waitUntil(lambda: window.message_label.text() == "")
     assert harness.station.link is not None
     harness.station.link.dataReceived.emit(b"<garbage\n")
     assert window.rejected_label.text() == "rejected frames: 1"

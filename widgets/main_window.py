@@ -86,6 +86,9 @@ from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.telemetry_dock import TelemetryDock
 from widgets.theme import PlotColours, ThemeController
 
+#: How long a status-bar message stays (ms): long enough to read twice.
+MESSAGE_SHOWN_MS = 15_000
+
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
 
@@ -388,6 +391,10 @@ class MainWindow(QMainWindow):
     def _build_status_bar(self) -> None:
         self.link_status = QLabel()
         self.message_label = QLabel()
+        self.message_timer = QTimer(self)
+        self.message_timer.setSingleShot(True)
+        self.message_timer.setInterval(MESSAGE_SHOWN_MS)
+        self.message_timer.timeout.connect(self._expire_message)
         self.rejected_label = QLabel()
         self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
         bar = self.statusBar()
@@ -681,8 +688,18 @@ class MainWindow(QMainWindow):
         self.link_status.setText(f"Link {state.value}{detail}{period}")
 
     def _show_message(self, text: str) -> None:
+        """Show ``text`` until the next message or for MESSAGE_SHOWN_MS, whichever comes first.
+
+        A message left standing reads as the current state long after it stopped being
+        true ("stopping…" an hour later).  The same text again only restarts the clock.
+        """
         self.message_label.setText(text)
         self.message_label.setToolTip(text)
+        self.message_timer.start()
+
+    def _expire_message(self) -> None:
+        self.message_label.clear()
+        self.message_label.setToolTip("")
 
     def _show_rejected(self, *_args: object) -> None:
         session = self.station.session
