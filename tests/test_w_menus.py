@@ -11,7 +11,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QSettings
+from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QFileDialog
 from pytestqt.qtbot import QtBot
 
@@ -141,3 +141,19 @@ def test_quit_closes_the_window(qtbot: QtBot, harness: StationHarness, tmp_path:
     window = _window(qtbot, harness, tmp_path)
     window.quit_action.trigger()
     qtbot.waitUntil(lambda: not window.isVisible())
+
+
+def test_a_machine_that_homes_every_axis_at_once_has_one_home_all_button(
+    qtbot: QtBot, gcode_harness: StationHarness, tmp_path: Path
+) -> None:
+    window = _window(qtbot, gcode_harness, tmp_path)
+    buttons = window.manual_panel.home_buttons
+    assert [b.text() for b in buttons] == ["Home all"]
+    gcode_harness.connect()
+    gcode_harness.run(1.0)
+    assert buttons[0].isEnabled()
+    sent_before = len(gcode_harness.written)
+    qtbot.mouseClick(buttons[0], Qt.MouseButton.LeftButton)
+    gcode_harness.run(0.2)
+    sent = b"".join(gcode_harness.written[sent_before:])
+    assert b"$H" in sent or b"G28" in sent
