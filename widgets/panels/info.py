@@ -139,6 +139,8 @@ class InfoPanel(QFrame):
         colour = _STATUS_COLOURS.get(axis.status_text)
         if axis.status_text.startswith("blocked") or axis.status_text == "sleeping":
             colour = "#c06000"
+        if self._model.link_state is not LinkState.CONNECTED:
+            colour = None  # the disabled grey: not a live state
         status.setStyleSheet(f"color: {colour};" if colour else "")
 
     def _show_link(self, _state: object = None) -> None:
@@ -150,6 +152,15 @@ class InfoPanel(QFrame):
         detail = f" — {self._model.link_detail}" if self._model.link_detail else ""
         self.link_text.setText(f"{state.value}{detail}")
         self.link_lamp.setToolTip(f"Link {state.value}")
+        # Positions and states are live only while the device answers: otherwise they are
+        # the last ones heard, greyed so that nobody reads them as where the machine is.
+        live = state is LinkState.CONNECTED
+        tip = "" if live else f"Last known — the link is {state.value}"
+        for index, (position, status) in enumerate(zip(self.positions, self.statuses, strict=True)):
+            position.setEnabled(live)
+            status.setEnabled(live)
+            position.setToolTip(tip)
+            self._show_axis(index)
 
     def _show_telemetry(self, _key: str = "") -> None:
         telemetry = self._model.telemetry
