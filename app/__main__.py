@@ -22,6 +22,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QApplication, QDialog, QInputDialog, QMainWindow, QMessageBox
 
+from app import i18n
 from app.discovery import serial_ports
 from app.profiles import (
     DEFAULT_PROFILE,
@@ -300,7 +301,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     assert isinstance(app, QApplication)
     app.setApplicationName("StepDeck")
     app.setOrganizationName("StepDeck")
-    launcher = start(args, StationSettings(default_settings()))
+    settings = StationSettings(default_settings())
+    i18n.install(settings.language)  # before any widget is built
+    launcher = start(args, settings)
     if isinstance(launcher, int):
         return launcher
     code = app.exec()

@@ -189,6 +189,23 @@ JOB_OPTIONS: Mapping[str, Spec[object]] = {
 #: What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous.
 JOG_STEPS = (0.0, 0.1, 1.0, 10.0)
 JOG_STEP = Spec("jog/key_step", 0.0, "one of 0 (continuous), 0.1, 1, 10", _number_choice(JOG_STEPS))
+#: How many job files File → Recent jobs lists.
+RECENT_JOBS_KEPT = 8
+#: The job files opened last, newest first ("" where there is none).
+RECENT_JOBS: tuple[Spec[str], ...] = tuple(
+    Spec(f"recent_jobs/{index}", "", "a file path", _text) for index in range(RECENT_JOBS_KEPT)
+)
+#: The window's colours: as the desktop says, or always light or dark.
+THEMES = ("system", "light", "dark")
+THEME = Spec("view/theme", "system", f"one of {', '.join(THEMES)}", _choice(lambda: THEMES))
+#: The language: the system locale's (English where it is none of these) or a fixed one.
+LANGUAGE_CHOICES = ("system", "en", "cs", "sk")
+LANGUAGE = Spec(
+    "view/language",
+    "system",
+    f"one of {', '.join(LANGUAGE_CHOICES)}",
+    _choice(lambda: LANGUAGE_CHOICES),
+)
 #: Every key, for the tests (and for anyone wondering what the file may hold).
 ALL_SPECS: tuple[Spec[object], ...] = (
     PROFILE,
@@ -201,6 +218,9 @@ ALL_SPECS: tuple[Spec[object], ...] = (
     WINDOW_STATE,
     PAGE,
     *JOB_OPTIONS.values(),
+    *RECENT_JOBS,
+    THEME,
+    LANGUAGE,
 )
 
 
@@ -369,6 +389,43 @@ class StationSettings:
     def set_job_options(self, values: Mapping[str, object]) -> None:
         for name, value in values.items():
             self.write(JOB_OPTIONS[name], value)
+
+    def recent_jobs(self) -> list[str]:
+        """The job files opened last, newest first (unusable entries left out)."""
+        paths = (self.read(spec) for spec in RECENT_JOBS)
+        return [path for path in paths if path]
+
+    def add_recent_job(self, path: str) -> None:
+        """Put ``path`` first in the list; the oldest falls off.  Too long a path is not kept."""
+        try:
+            _text(path)
+        except BadValue:
+            return
+        paths = [path, *(p for p in self.recent_jobs() if p != path)]
+        self.set_recent_jobs(paths)
+
+    def set_recent_jobs(self, paths: list[str]) -> None:
+        for index, spec in enumerate(RECENT_JOBS):
+            if index < len(paths):
+                self.write(spec, paths[index])
+            else:
+                self.store.remove(spec.key)
+
+    @property
+    def theme(self) -> str:
+        return self.read(THEME)
+
+    @theme.setter
+    def theme(self, value: str) -> None:
+        self.write(THEME, value)
+
+    @property
+    def language(self) -> str:
+        return self.read(LANGUAGE)
+
+    @language.setter
+    def language(self, value: str) -> None:
+        self.write(LANGUAGE, value)
 
     def sync(self) -> None:
         self.store.sync()

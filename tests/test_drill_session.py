@@ -156,7 +156,7 @@ def test_terminal_lines_are_parsed_and_garbage_is_refused_locally(
         assert not session.send_line(bad), bad
     assert session.refused_lines == 8
     assert drill.written[mark:] == []
-    assert any("'E'" in m and "no drill command" in m for m in messages)
+    assert any("'E'" in m and "is not a drill command" in m for m in messages)
     assert session.send_line("  X100 ")
     assert drill.written[mark:] == [b"X100\r"]
     wait_idle(drill)

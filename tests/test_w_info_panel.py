@@ -37,13 +37,27 @@ def test_link_lamp_follows_the_link_state(harness: StationHarness, info: InfoPan
     assert LINK_COLOURS[LinkState.LOST] != LINK_COLOURS[LinkState.STALE]
 
 
+def test_the_dro_is_greyed_whenever_it_is_not_live(
+    harness: StationHarness, info: InfoPanel
+) -> None:
+    assert not info.positions[0].isEnabled()  # nothing heard yet
+    harness.connect()
+    assert all(p.isEnabled() for p in info.positions) and info.positions[0].toolTip() == ""
+    harness.loopback.set_manipulator(lambda _direction, _data: b"")  # the device goes silent
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.LOST, timeout=5)
+    assert not any(p.isEnabled() for p in info.positions + info.statuses)
+    assert info.positions[0].toolTip() == "Last known — the link is lost"
+    assert "color" not in info.statuses[0].styleSheet()  # no live state colour either
+
+
 def test_battery_and_temperature(harness: StationHarness, info: InfoPanel) -> None:
-    assert info.battery.format() == "battery —"
+    assert info.battery.format() == info.battery_text.text() == "battery —"
+    assert not info.battery.isTextVisible()  # the words beside the gauge, never over its edge
     harness.connect()
     harness.emulator.board_temperature_c = 31.25
     harness.run(1.5)
     assert info.battery.value() == 80
-    assert info.battery.format() == "battery 80 % · 4.02 V"
+    assert info.battery_text.text() == "battery 80 % · 4.02 V"
     assert info.temperature.text() == "board 31.2 °C"
 
 

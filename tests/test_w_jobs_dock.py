@@ -401,3 +401,17 @@ def test_a_hole_perhaps_drilled_is_asked_with_it_marked_and_again_drills_it_once
         assert len(dock.preview.question_marker.getData()[0]) == 0
     finally:
         drill.close()
+
+
+def test_the_open_dialog_names_each_pattern_once() -> None:
+    from app.jobs.loaders import file_dialog_filter
+
+    first = file_dialog_filter().split(";;")[0]
+    patterns = first[first.index("(") + 1 : first.index(")")].split()
+    assert "*.txt" in patterns and len(patterns) == len(set(patterns))
+
+
+def test_no_lone_dash_under_the_progress_bar(dock: JobsDock, tmp_path: Path) -> None:
+    assert dock.operation_label.text() == ""
+    dock.open_path(square(tmp_path))
+    assert dock.operation_label.text().startswith("square.csv:1")  # ready: the first shown

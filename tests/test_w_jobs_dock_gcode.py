@@ -172,3 +172,48 @@ def test_an_option_changed_while_the_file_is_read_is_taken_when_the_reading_ends
     qtbot.mouseClick(dock.skip_check, LEFT)  # while the first reading is under way
     qtbot.waitUntil(lambda: dock.runner.program is not None)  # read again, M18 skipped
     assert dock.options.skip_unsupported and "still reading" not in messages(dock)
+
+
+def test_progress_counts_what_the_machine_ran_and_says_what_was_sent_ahead(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    # Nine long edges: the plotter answers lines far ahead of drawing them.
+    lines = ["G21", "G90"] + [f"G1 X{40 * (k % 2) + 5} Y{5 * k + 5} F600" for k in range(9)]
+    job = tmp_path / "edges.gcode"
+    job.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert dock.open_path(job)
+    runner = dock.runner
+    total = len(runner.program or [])
+    qtbot.mouseClick(dock.run_button, LEFT)
+    plotter.run_until(lambda: runner.done > runner.executed, timeout=10)
+    # Everything sent, the machine still on its way: not shown as done.
+    plotter.run_until(lambda: runner.done == total, timeout=10)
+    assert runner.executed < total and runner.state is not JobState.DONE
+    assert dock.progress.value() == runner.executed < dock.progress.maximum()
+    assert dock.count_label.text() == f"{runner.executed} / {total} ops · {total} sent"
+    assert dock.preview.done == runner.executed  # green only what was drawn
+    plotter.run_until(lambda: runner.state is JobState.DONE, timeout=120)
+    assert plotter.gcode_session.settled
+    assert dock.count_label.text() == f"{total} / {total} ops"
+    assert dock.progress.value() == dock.progress.maximum()
+
+
+def test_an_abort_reports_one_count_the_one_the_resume_offer_holds(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    lines = [f"G1 X{40 * (k % 2) + 5} Y{5 * k + 5} F600" for k in range(9)]
+    job = tmp_path / "edges.gcode"
+    job.write_text("G21\nG90\n" + "\n".join(lines) + "\n", encoding="utf-8")
+    dock = make_dock(qtbot, plotter, tmp_path)
+    assert dock.open_path(job)
+    runner = dock.runner
+    qtbot.mouseClick(dock.run_button, LEFT)
+    plotter.run_until(lambda: runner.done > runner.executed >= 3, timeout=60)
+    qtbot.mouseClick(dock.abort_button, LEFT)
+    plotter.run(1.0)
+    executed = runner.executed
+    assert f"Job aborted after {executed} of" in messages(dock)
+    assert runner.resume_available == executed
+    assert f"completed {executed} of" in dock.resume_offer_label.text()
+    assert dock.count_label.text().startswith(f"{executed} / ")

@@ -11,9 +11,10 @@ from pathlib import Path
 import pytest
 from PySide6.QtCore import QEvent, QSettings, Qt
 from PySide6.QtGui import QFocusEvent, QKeyEvent
-from PySide6.QtWidgets import QApplication, QWidget
+from PySide6.QtWidgets import QApplication, QComboBox, QFileDialog, QWidget
 from pytestqt.qtbot import QtBot
 
+from app.profiles import load_profile
 from protocol.stage.codec import AxisStatus, CommandFrame, CommandId, CommandPacket, decode
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -313,6 +314,10 @@ def test_status_bar_shows_link_messages_and_rejects(
     assert window.rejected_label.text() == "rejected frames: 0"
     harness.station.model.message.emit("hello operator")
     assert window.message_label.text() == "hello operator"
+    assert window.message_timer.isActive()  # and it goes, rather than standing for good
+    window.message_timer.setInterval(20)
+    window.message_timer.start()
+    qtbot.waitUntil(lambda: window.message_label.text() == "")
     assert harness.station.link is not None
     harness.station.link.dataReceived.emit(b"<garbage\n")
     assert window.rejected_label.text() == "rejected frames: 1"
@@ -334,12 +339,27 @@ def test_geometry_and_page_survive_a_restart(
     assert second.stack.currentWidget() is second.relative_panel
 
 
-def test_job_reading_options_survive_a_restart(
-    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+def test_job_reading_options_survive_a_restart(qtbot: QtBot, tmp_path: Path) -> None:
+    harness = StationHarness(load_profile("grbl-plotter"))  # a pen: the drill options show
+    try:
+        _options_survive_a_restart(qtbot, harness, tmp_path)
+    finally:
+        harness.close()
+
+
+def test_drill_options_are_not_offered_without_a_drill_or_a_pen(
+    qtbot: QtBot, window: MainWindow
 ) -> None:
+    window.jobs_dock.show()
+    assert not window.jobs_dock.draw_check.isVisible()
+    assert not window.jobs_dock.step_combo.isVisible()
+
+
+def _options_survive_a_restart(qtbot: QtBot, harness: StationHarness, tmp_path: Path) -> None:
     settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     first = _open_window(qtbot, harness, settings=settings)
     dock = first.jobs_dock
+    dock.show()
     assert not dock.draw_check.isChecked() and dock.translate_pen_check.isChecked()
     qtbot.mouseClick(dock.draw_check, Qt.MouseButton.LeftButton)
     dock.translate_pen_check.setChecked(False)
@@ -471,8 +491,6 @@ def test_ctrl_j_shows_the_jobs_dock_whose_checkpoints_go_where_asked(
 
 @pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter", "string-art"])
 def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(qtbot: QtBot, name: str) -> None:
-    from app.profiles import load_profile
-
     plotter = StationHarness(load_profile(name))
     try:
         window = _open_window(qtbot, plotter)
@@ -497,3 +515,63 @@ def test_a_gcode_machine_gets_its_page_and_the_arrow_keys_jog_it(qtbot: QtBot, n
         assert plotter.station.model.axes[0].position > 0, f"{axis.name} did not move"
     finally:
         plotter.close()
+
+
+def _start_absolute_move(qtbot: QtBot, harness: StationHarness, window: MainWindow) -> None:
+    """A move that goes on by itself (unlike a jog, it needs no held key or focus)."""
+    window.menu_panel.set_page(1)
+    absolute = window.absolute_panel
+    absolute.targets[0].setValue(40.0)
+    absolute.targets[1].setValue(40.0)
+    qtbot.mouseClick(absolute.go_all_button, Qt.MouseButton.LeftButton)
+    harness.run_until(lambda: all(a.moving for a in harness.station.model.axes), timeout=1)
+
+
+@pytest.mark.qt_log_ignore("does not support (raise|grabbing the keyboard)")  # offscreen popups
+def test_escape_in_a_menu_closes_it_and_stops(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _start_absolute_move(qtbot, harness, window)
+    menu = window.view_menu
+    menu.popup(window.mapToGlobal(window.rect().center()))
+    qtbot.waitUntil(menu.isVisible)
+    assert QApplication.activePopupWidget() is menu
+    qtbot.keyClick(menu, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not menu.isVisible())
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    assert x_position(harness) < 30
+
+
+@pytest.mark.qt_log_ignore("does not support (raise|grabbing the keyboard)")  # offscreen popups
+def test_escape_in_a_file_dialog_closes_its_popup_then_the_dialog_and_never_stops(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    _start_absolute_move(qtbot, harness, window)
+    dialog = QFileDialog(window.jobs_dock, "Open a job", "", "Jobs (*.csv);;All files (*)")
+    dialog.setOption(QFileDialog.Option.DontUseNativeDialog)
+    dialog.open()
+    qtbot.waitUntil(dialog.isVisible)
+    types = dialog.findChild(QComboBox, "fileTypeCombo")
+    assert types is not None
+    types.showPopup()
+    popup = QApplication.activePopupWidget()
+    assert popup is not None and popup.isVisible()
+    target = popup.focusWidget() or popup
+    qtbot.keyClick(target, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not popup.isVisible())
+    assert dialog.isVisible()  # only the list closed
+    harness.run(0.2)
+    assert all(a.moving for a in harness.station.model.axes)  # and the machine went on
+
+    qtbot.keyClick(dialog, Qt.Key.Key_Escape)
+    qtbot.waitUntil(lambda: not dialog.isVisible())  # the dialog is cancelled …
+    harness.run(0.2)
+    assert all(a.moving for a in harness.station.model.axes)  # … the move goes on
+    x_before = x_position(harness)
+    qtbot.keyClick(dialog, Qt.Key.Key_Down)  # arrows in a dialog never jog
+    assert x_position(harness) >= x_before
+
+    window.activateWindow()
+    qtbot.keyClick(window, Qt.Key.Key_Escape)  # from the window, Esc stops
+    harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
+    assert x_position(harness) < 40

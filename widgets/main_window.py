@@ -6,7 +6,10 @@ status bar.  Besides layout, the window owns the two safety rules that no
 single panel can enforce:
 
 * keys are routed application-wide, so arrows jog and Esc stops whatever
-  widget has focus — except that arrows keep editing inside text fields;
+  widget of the window has focus — except that arrows keep editing inside
+  text fields, Esc also closes an open menu or list, and a dialog (a file
+  dialog, the list of keys…) keeps its keys: there Esc closes the dialog and
+  never runs the stop;
 * whenever the window may stop seeing key releases (deactivated, focus gone,
   application inactive) every jog is released, so a jog can never run away
   because its key-up went to another window.
@@ -14,9 +17,11 @@ single panel can enforce:
 
 from __future__ import annotations
 
+import html
 from pathlib import Path
 
 from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
     QEvent,
     QObject,
     QSettings,
@@ -25,7 +30,15 @@ from PySide6.QtCore import (
     QTimer,
     Signal,
 )
-from PySide6.QtGui import QAction, QCloseEvent, QFocusEvent, QKeyEvent, QKeySequence, QShowEvent
+from PySide6.QtGui import (
+    QAction,
+    QActionGroup,
+    QCloseEvent,
+    QFocusEvent,
+    QKeyEvent,
+    QKeySequence,
+    QShowEvent,
+)
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
     QApplication,
@@ -38,6 +51,7 @@ from PySide6.QtWidgets import (
     QMainWindow,
     QMessageBox,
     QPlainTextEdit,
+    QPushButton,
     QScrollArea,
     QStackedWidget,
     QTextEdit,
@@ -45,11 +59,14 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.i18n import LANGUAGES
+from app.jobs.names import shown
 from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
 from app.settings import GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
+from app.version import station_version
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
@@ -65,26 +82,38 @@ from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
-from widgets.stop_caption import stop_key_text
+from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.telemetry_dock import TelemetryDock
+from widgets.theme import PlotColours, ThemeController
+
+#: How long a status-bar message stays (ms): long enough to read twice.
+MESSAGE_SHOWN_MS = 15_000
 
 #: Widgets in which arrow keys move a text cursor or step a value, so they must not jog.
 TEXT_EDITING = (QLineEdit, QAbstractSpinBox, QTextEdit, QPlainTextEdit)
 
-SHORTCUTS: tuple[tuple[str, str], ...] = (
-    ("← →", "Jog X while held"),
-    ("↑ ↓", "Jog Y while held (two arrows at once = diagonal)"),
-    ("PageUp / PageDown", "Jog Z while held, on machines with a Z axis"),
-    ("Shift (held)", "Jog and move at the other speed"),
-    ("Esc", "Stop everything, from anywhere in the window"),
+#: Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).
+SHORTCUTS: tuple[tuple[str, object], ...] = (
+    ("← →", QT_TRANSLATE_NOOP("MainWindow", "Jog X while held")),
+    ("↑ ↓", QT_TRANSLATE_NOOP("MainWindow", "Jog Y while held (two arrows at once = diagonal)")),
+    (
+        "PageUp / PageDown",
+        QT_TRANSLATE_NOOP("MainWindow", "Jog Z while held, on machines with a Z axis"),
+    ),
+    ("Shift (held)", QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed")),
+    ("Esc", QT_TRANSLATE_NOOP("MainWindow", "Stop everything, from anywhere in the window")),
     (
         "Alt+M / A / R / D / L / X / G",
-        "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page",
+        QT_TRANSLATE_NOOP(
+            "MainWindow", "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page"
+        ),
     ),
-    ("Ctrl+J", "Show or hide the jobs dock"),
-    ("Ctrl+T", "Show or hide the telemetry plots"),
-    ("Shift+V", "Show or hide the developer pane"),
-    ("F1", "This list"),
+    ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),
+    ("Ctrl+Q", QT_TRANSLATE_NOOP("MainWindow", "Quit (stops the machine first)")),
+    ("Ctrl+J", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the jobs dock")),
+    ("Ctrl+T", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the telemetry plots")),
+    ("Shift+V", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the developer pane")),
+    ("F1", QT_TRANSLATE_NOOP("MainWindow", "This list")),
 )
 
 
@@ -105,6 +134,27 @@ def _is_free_text(widget: QWidget | None) -> bool:
         return False
     parent = widget.parentWidget()
     return not isinstance(parent, QAbstractSpinBox)
+
+
+def _in_dialog(widget: QObject) -> bool:
+    """Whether ``widget`` is in a dialog, or in a popup (a combo's list…) opened from one.
+
+    A dialog owns its keys: Esc cancels it and arrows move in it.  Neither may reach
+    the machine — Esc in a file dialog's type list once ran the stop, and arrows in
+    its file list would have jogged.
+    """
+    current = widget if isinstance(widget, QWidget) else None
+    while current is not None:
+        if isinstance(current, QDialog):
+            return True
+        current = current.parentWidget()
+    return False
+
+
+def _in_popup(widget: QWidget) -> bool:
+    """Whether ``widget`` is in the popup (menu, combo list) that has the keyboard now."""
+    popup = QApplication.activePopupWidget()
+    return popup is not None and (widget is popup or popup.isAncestorOf(widget))
 
 
 class MainWindow(QMainWindow):
@@ -137,7 +187,7 @@ class MainWindow(QMainWindow):
         self.settings_warning: QMessageBox | None = None
         self._filtering = False
         self._close_after_stop = False
-        self.setWindowTitle(f"StepDeck — {station.profile.title}")
+        self.setWindowTitle(self.tr("StepDeck — {0}").format(station.profile.title))
 
         self.jog = JogInput(station, self)
         self.info_panel = InfoPanel(self.model)
@@ -153,7 +203,9 @@ class MainWindow(QMainWindow):
         self.manual_panel = ManualPanel(station, self.jog)
         self.manual_panel.set_key_step(self._settings.jog_step)
         self.manual_panel.keyStepChanged.connect(self._remember_key_step)
-        self.menu_panel.add_page("&Manual", self.manual_panel, "Hold-to-jog buttons, Home (Alt+M)")
+        self.menu_panel.add_page(
+            self.tr("&Manual"), self.manual_panel, self.tr("Hold-to-jog buttons, Home (Alt+M)")
+        )
         #: Every page with motion controls, for the motion lock.
         self.motion_panels: list[
             ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel
@@ -162,27 +214,33 @@ class MainWindow(QMainWindow):
             # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
             self.drill_panel = DrillPanel(station)
             self.menu_panel.add_page(
-                "D&rill", self.drill_panel, "Command buttons, X/Y, terminal (Alt+R)"
+                self.tr("D&rill"),
+                self.drill_panel,
+                self.tr("Command buttons, X/Y, terminal (Alt+R)"),
             )
             self.motion_panels.append(self.drill_panel)
         elif station.profile.dialect == "usb3":
             self.usb3_panel = Usb3Panel(station)
             self.menu_panel.add_page(
-                "A&xes", self.usb3_panel, "Move by mm, step size, thread (Alt+X)"
+                self.tr("A&xes"), self.usb3_panel, self.tr("Move by mm, step size, thread (Alt+X)")
             )
             self.motion_panels.append(self.usb3_panel)
         else:
             self.absolute_panel = AbsolutePanel(station)
             self.relative_panel = RelativePanel(station)
-            self.menu_panel.add_page("&Absolute", self.absolute_panel, "Move to a target (Alt+A)")
             self.menu_panel.add_page(
-                "&Relative", self.relative_panel, "Move by an increment (Alt+R)"
+                self.tr("&Absolute"), self.absolute_panel, self.tr("Move to a target (Alt+A)")
+            )
+            self.menu_panel.add_page(
+                self.tr("&Relative"), self.relative_panel, self.tr("Move by an increment (Alt+R)")
             )
             self.motion_panels += [self.absolute_panel, self.relative_panel]
         if station.profile.dialect == "gcode":
             self.gcode_panel = GcodePanel(station)
             self.menu_panel.add_page(
-                "&G-code", self.gcode_panel, "Console, pen, hold/resume/reset (Alt+G)"
+                self.tr("&G-code"),
+                self.gcode_panel,
+                self.tr("Console, pen, hold/resume/reset (Alt+G)"),
             )
             self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
@@ -192,11 +250,15 @@ class MainWindow(QMainWindow):
             dynamics_page.setWidget(self.dynamics_panel)
             dynamics_page.setWidgetResizable(True)
             dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
-            self.menu_panel.add_page("&Dynamics", dynamics_page, "Device parameters (Alt+D)")
+            self.menu_panel.add_page(
+                self.tr("&Dynamics"), dynamics_page, self.tr("Device parameters (Alt+D)")
+            )
         self.connection_panel = ConnectionPanel(station, self._settings)
         self.connection_panel.profileRequested.connect(self.profileRequested)
         self.menu_panel.add_page(
-            "&Link", self.connection_panel, "Connect: emulator, serial port or BLE (Alt+L)"
+            self.tr("&Link"),
+            self.connection_panel,
+            self.tr("Connect: emulator, serial port or BLE (Alt+L)"),
         )
         self.static_panel = StaticPanel(station, self.jog)
         self._build_layout()
@@ -205,6 +267,7 @@ class MainWindow(QMainWindow):
 
         self.model.lockChanged.connect(self._update_lock)
         self.model.linkStateChanged.connect(self._show_link_status)
+        self.model.linkStateChanged.connect(self._update_machine_menu)
         self.model.message.connect(self._show_message)
         station.sessionChanged.connect(self._attach_session)
         self._attach_session()
@@ -213,6 +276,8 @@ class MainWindow(QMainWindow):
         self._build_jobs_dock(checkpoint_dir)
         self._build_telemetry_dock()
         self._build_developer_pane()
+        self._build_theme_menu()
+        self._build_language_menu()
         self._restore_settings()
         self._install_filter()
 
@@ -241,6 +306,7 @@ class MainWindow(QMainWindow):
         self.jobs_dock = JobsDock(self.station, self.job_runner, self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
         self.jobs_dock.hide()
+        self.jobs_dock.jobOpened.connect(self._remember_job)
         action = self.jobs_dock.toggleViewAction()
         action.setShortcut(QKeySequence("Ctrl+J"))
         self.view_menu.addAction(action)
@@ -258,6 +324,9 @@ class MainWindow(QMainWindow):
         """Shift+V shows and hides it, from any focus, like the original tool's extension."""
         self.developer_pane = DeveloperPane(self.station, self)
         self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.developer_pane)
+        # Tabbed with the plots rather than beside them: side by side the two need more
+        # than a 1280 px screen.  Either can still be dragged out to float.
+        self.tabifyDockWidget(self.telemetry_dock, self.developer_pane)
         self.developer_pane.hide()
         self.developer_action = self.developer_pane.toggleViewAction()
         self.developer_action.setShortcut(QKeySequence("Shift+V"))
@@ -265,11 +334,71 @@ class MainWindow(QMainWindow):
         self.addAction(self.developer_action)
         self.view_menu.addAction(self.developer_action)
 
+    def _build_theme_menu(self) -> None:
+        """View → Colours: as the desktop says (and when it changes), light or dark; kept."""
+        self.theme = ThemeController(self._settings.theme, self)
+        self.theme.coloursChanged.connect(self._apply_colours)
+        self._apply_colours(self.theme.colours)
+        self.view_menu.addSeparator()
+        menu = self.view_menu.addMenu(self.tr("&Colours"))
+        group = QActionGroup(self)
+        self.theme_actions: dict[str, QAction] = {}
+        for choice, caption in (
+            ("system", self.tr("As the &system")),
+            ("light", self.tr("&Light")),
+            ("dark", self.tr("&Dark")),
+        ):
+            action = QAction(caption, self, checkable=True)
+            action.setChecked(choice == self.theme.choice)
+            action.triggered.connect(lambda _=False, c=choice: self.set_theme(c))
+            group.addAction(action)
+            menu.addAction(action)
+            self.theme_actions[choice] = action
+
+    def _build_language_menu(self) -> None:
+        """View → Language: the system's or a fixed one; kept, used from the next start."""
+        menu = self.view_menu.addMenu(self.tr("L&anguage"))
+        group = QActionGroup(self)
+        self.language_actions: dict[str, QAction] = {}
+        choices = [("system", self.tr("As the &system"))]
+        choices += [(code, name) for code, name in LANGUAGES.items()]
+        for choice, caption in choices:
+            action = QAction(caption, self, checkable=True)
+            action.setChecked(choice == self._settings.language)
+            action.triggered.connect(lambda _=False, c=choice: self.set_language(c))
+            group.addAction(action)
+            menu.addAction(action)
+            self.language_actions[choice] = action
+
+    def set_language(self, choice: str) -> None:
+        """Remember the language chosen; the window speaks it from the next start."""
+        self._settings.language = choice
+        if self._remembers:
+            self._settings.sync()
+        self.language_actions[choice].setChecked(True)
+        self._show_message(self.tr("The language changes when StepDeck starts again"))
+
+    def set_theme(self, choice: str) -> None:
+        """Use and remember the colours chosen ("system", "light" or "dark")."""
+        self._settings.theme = choice
+        if self._remembers:
+            self._settings.sync()
+        self.theme_actions[choice].setChecked(True)
+        self.theme.set_choice(choice)
+
+    def _apply_colours(self, colours: PlotColours) -> None:
+        self.jobs_dock.preview.apply_colours(colours)
+        self.telemetry_dock.apply_colours(colours)
+
     def _build_status_bar(self) -> None:
         self.link_status = QLabel()
         self.message_label = QLabel()
+        self.message_timer = QTimer(self)
+        self.message_timer.setSingleShot(True)
+        self.message_timer.setInterval(MESSAGE_SHOWN_MS)
+        self.message_timer.timeout.connect(self._expire_message)
         self.rejected_label = QLabel()
-        self.rejected_label.setToolTip("Frames from the device that failed to decode")
+        self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
         bar = self.statusBar()
         bar.addWidget(self.link_status)
         bar.addWidget(self.message_label, 1)
@@ -277,14 +406,138 @@ class MainWindow(QMainWindow):
         self._show_rejected()
 
     def _build_menus(self) -> None:
-        self.view_menu = self.menuBar().addMenu("&View")
-        help_menu = self.menuBar().addMenu("&Help")
-        self.shortcuts_action = QAction("&Keyboard shortcuts", self)
+        """File, Machine, View and Help: where a user of other senders looks first.
+
+        Machine's entries press the page buttons they stand for, so the menu can do
+        nothing the page would not (a locked button ignores the click).
+        """
+        bar = self.menuBar()
+        file_menu = bar.addMenu(self.tr("&File"))
+        self.open_action = QAction(self.tr("&Open job…"), self)
+        self.open_action.setShortcut(QKeySequence.StandardKey.Open)
+        self.open_action.triggered.connect(self._ask_open_job)
+        file_menu.addAction(self.open_action)
+        self.recent_menu = file_menu.addMenu(self.tr("&Recent jobs"))
+        self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
+        self._fill_recent_menu()
+        file_menu.addSeparator()
+        self.quit_action = QAction(self.tr("&Quit"), self)
+        self.quit_action.setShortcut(QKeySequence("Ctrl+Q"))
+        self.quit_action.triggered.connect(self.close)
+        file_menu.addAction(self.quit_action)
+
+        machine_menu = bar.addMenu(self.tr("&Machine"))
+        self.connect_action = QAction(self.tr("&Connect"), self)
+        self.connect_action.triggered.connect(self.connection_panel.connect_selected)
+        self.disconnect_action = QAction(self.tr("&Disconnect"), self)
+        self.disconnect_action.triggered.connect(self.station.stop_and_close)
+        machine_menu.addAction(self.connect_action)
+        machine_menu.addAction(self.disconnect_action)
+        machine_menu.addSeparator()
+        self.home_actions: list[tuple[QAction, QPushButton]] = []
+        for button in self._home_buttons():
+            action = QAction(button.text().replace("  ", " "), self)
+            action.setToolTip(button.toolTip())
+            action.triggered.connect(button.click)
+            machine_menu.addAction(action)
+            self.home_actions.append((action, button))
+        machine_menu.addSeparator()
+        caption, tip = stop_caption(self.station.profile)
+        stop_text = self.tr("&Stop") if caption == "STOP" else self.tr("&Drop the queue")
+        # Esc is routed by the window (see _route_key), not a shortcut: shown, not bound.
+        self.stop_action = QAction(f"{stop_text}\tEsc", self)
+        self.stop_action.setToolTip(tip)
+        self.stop_action.triggered.connect(self.stop_all)
+        machine_menu.addAction(self.stop_action)
+        machine_menu.setToolTipsVisible(True)
+
+        self.view_menu = bar.addMenu(self.tr("&View"))
+        help_menu = bar.addMenu(self.tr("&Help"))
+        self.shortcuts_action = QAction(self.tr("&Keys"), self)
         self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
         self.shortcuts_action.triggered.connect(self.show_shortcuts)
         help_menu.addAction(self.shortcuts_action)
         self.addAction(self.shortcuts_action)
+        self.about_action = QAction(self.tr("&About StepDeck"), self)
+        self.about_action.triggered.connect(self.show_about)
+        help_menu.addAction(self.about_action)
         self._help: QDialog | None = None
+        self._about: QMessageBox | None = None
+
+    def _home_buttons(self) -> list[QPushButton]:
+        """The page buttons that home this machine, as the machine means "home"."""
+        if self.station.profile.dialect == "gcode":
+            return [self.gcode_panel.home_button]  # $H homes every axis at once
+        if self.station.profile.dialect == "drill":
+            return [self.drill_panel.command_buttons["N"]]
+        return list(self.manual_panel.home_buttons)
+
+    def _ask_open_job(self) -> None:
+        self.jobs_dock.show()
+        self.jobs_dock.raise_()
+        self.jobs_dock.ask_open()
+
+    def _remember_job(self, path: object) -> None:
+        if isinstance(path, Path):
+            self._settings.add_recent_job(str(path))
+            if self._remembers:
+                self._settings.sync()
+
+    def _fill_recent_menu(self) -> None:
+        """The list as stored now: another StepDeck window may have added to it."""
+        self.recent_menu.clear()
+        paths = self._settings.recent_jobs()
+        for number, text in enumerate(paths, start=1):
+            path = Path(text)
+            action = self.recent_menu.addAction(f"&{number} {shown(path.name)}")
+            action.setToolTip(shown(text))
+            action.setData(text)
+            action.triggered.connect(lambda _=False, p=path: self.open_recent(p))
+        if not paths:
+            self.recent_menu.addAction(self.tr("(none yet)")).setEnabled(False)
+            return
+        self.recent_menu.addSeparator()
+        self.recent_menu.addAction(self.tr("&Clear the list"), self._clear_recent)
+        self.recent_menu.setToolTipsVisible(True)
+
+    def _clear_recent(self) -> None:
+        self._settings.set_recent_jobs([])
+        if self._remembers:
+            self._settings.sync()
+
+    def open_recent(self, path: Path) -> bool:
+        """Open a job from the recent list (the dock says why when it cannot)."""
+        self.jobs_dock.show()
+        if not path.is_file():
+            self.jobs_dock.say(f"{shown(path.name)}: not opened — the file is no longer there")
+            return False
+        return self.jobs_dock.open_path(path, background=True)
+
+    def _update_machine_menu(self, *_args: object) -> None:
+        linked = self.model.link_state is not LinkState.DISCONNECTED
+        self.connect_action.setEnabled(not linked)
+        self.disconnect_action.setEnabled(linked)
+        for action, button in self.home_actions:
+            action.setEnabled(button.isEnabled())
+
+    def show_about(self) -> QMessageBox:
+        """Name, version and what this is (non-modal; returns the box)."""
+        if self._about is None:
+            what = self.tr(
+                "A control station for small stepper machines: XY stages, a PCB drill, "
+                "G-code plotters, the usb3 unit and the string-art winder."
+            )
+            machine = self.tr("Machine: {0}").format(html.escape(self.station.profile.title))
+            self._about = QMessageBox(
+                QMessageBox.Icon.Information,
+                self.tr("About StepDeck"),
+                f"<b>StepDeck {station_version()}</b><p>{what}</p><p>{machine}</p>",
+                parent=self,
+            )
+            self._about.setObjectName("about_box")
+            self._about.setWindowModality(Qt.WindowModality.NonModal)
+        self._about.show()
+        return self._about
 
     # --- public --------------------------------------------------------------
 
@@ -294,17 +547,19 @@ class MainWindow(QMainWindow):
             esc = stop_key_text(self.station.profile)
             rows = "".join(
                 f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
-                f"<td>{esc if keys == 'Esc' else what}</td></tr>"
+                f"<td>{esc if keys == 'Esc' else self.tr(str(what))}</td></tr>"
                 for keys, what in SHORTCUTS
             )
-            text = QLabel(
-                f"<table>{rows}</table><p>Arrows do not jog while a text or number field "
-                "has focus: there they keep editing. Esc works from anywhere.</p>"
+            note = self.tr(
+                "Arrows do not jog while a text or number field has focus: there they keep "
+                "editing. Esc works from anywhere in the window and also closes an open menu; "
+                "in a dialog (like this one) Esc closes the dialog only."
             )
+            text = QLabel(f"<table>{rows}</table><p>{note}</p>")
             text.setWordWrap(True)
             buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
             self._help = QDialog(self)
-            self._help.setWindowTitle("StepDeck — keyboard shortcuts")
+            self._help.setWindowTitle(self.tr("StepDeck — keyboard shortcuts"))
             buttons.rejected.connect(self._help.close)
             layout = QVBoxLayout(self._help)
             layout.addWidget(text)
@@ -322,7 +577,7 @@ class MainWindow(QMainWindow):
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         kind = event.type()
         if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease):
-            if isinstance(event, QKeyEvent) and self._owns(watched):
+            if isinstance(event, QKeyEvent) and self._owns(watched) and not _in_dialog(watched):
                 assert isinstance(watched, QWidget)
                 return self._route_key(watched, event)
         elif kind == QEvent.Type.WindowDeactivate:
@@ -361,7 +616,9 @@ class MainWindow(QMainWindow):
         if key == Qt.Key.Key_Escape:
             if press and not event.isAutoRepeat():
                 self.jog.stop_all()
-            return True
+            # A menu or combo list of this window that is open closes too: the stop is
+            # never a reason to leave it hanging over the window.
+            return not _in_popup(receiver)
         if key == Qt.Key.Key_Shift:
             if not event.isAutoRepeat():
                 self.jog.set_shift(press)
@@ -417,7 +674,8 @@ class MainWindow(QMainWindow):
         self.jog.set_enabled(enabled)
         for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
-        self.lock_label.setText(f"Motion locked: {reason}")
+        self._update_machine_menu()
+        self.lock_label.setText(self.tr("Motion locked: {0}").format(reason))
         self.lock_label.setVisible(not enabled)
 
     def _show_link_status(self, _state: object = None) -> None:
@@ -432,13 +690,23 @@ class MainWindow(QMainWindow):
         self.link_status.setText(f"Link {state.value}{detail}{period}")
 
     def _show_message(self, text: str) -> None:
+        """Show ``text`` until the next message or for MESSAGE_SHOWN_MS, whichever comes first.
+
+        A message left standing reads as the current state long after it stopped being
+        true ("stopping…" an hour later).  The same text again only restarts the clock.
+        """
         self.message_label.setText(text)
         self.message_label.setToolTip(text)
+        self.message_timer.start()
+
+    def _expire_message(self) -> None:
+        self.message_label.clear()
+        self.message_label.setToolTip("")
 
     def _show_rejected(self, *_args: object) -> None:
         session = self.station.session
         count = session.rejected if session is not None else 0
-        self.rejected_label.setText(f"rejected frames: {count}")
+        self.rejected_label.setText(self.tr("rejected frames: %n", "", count))
 
     def _attach_session(self) -> None:
         # The count changes with what arrives: refresh on every received frame.
@@ -472,10 +740,15 @@ class MainWindow(QMainWindow):
         self._show_message(
             warnings[0]
             if len(warnings) == 1
-            else f"{len(warnings)} settings could not be used; defaults are used instead"
+            else self.tr(
+                "%n settings could not be used; defaults are used instead", "", len(warnings)
+            )
         )
         box = QMessageBox(
-            QMessageBox.Icon.Warning, "StepDeck — settings", "\n\n".join(warnings), parent=self
+            QMessageBox.Icon.Warning,
+            self.tr("StepDeck — settings"),
+            "\n\n".join(warnings),
+            parent=self,
         )
         box.setObjectName("settings_warning")
         box.setWindowModality(Qt.WindowModality.NonModal)
@@ -518,12 +791,15 @@ class MainWindow(QMainWindow):
             if not self._close_after_stop:
                 self._close_after_stop = True
                 self.station.linkClosed.connect(self._close_when_stopped)
-            self._show_message("Stopping every axis before closing…")
+            self._show_message(self.tr("Stopping every axis before closing…"))
             event.ignore()
             return
         self.save_settings()
         self._remove_filter()
+        self.theme.release()
         if self._help is not None:
             self._help.close()
+        if self._about is not None:
+            self._about.close()
         self.station.shutdown()
         super().closeEvent(event)

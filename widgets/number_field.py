@@ -27,7 +27,7 @@ from widgets.style import MINUS, monospace_font
 
 #: A number being typed: optional sign, digits, one decimal point or comma, digits.
 _PARTIAL = re.compile(r"[+\-\u2212]?\d*(?:[.,]\d*)?")
-_INVALID_STYLE = "QLineEdit { border: 2px solid #d03030; background: #fff0f0; }"
+_INVALID_STYLE = "QLineEdit { border: 2px solid #d03030; background: #fff0f0; color: #1d1d1d; }"
 _UNIT_COLOUR = QColor("#707070")
 #: The note under a page's fields that says which one is wrong.
 NOTE_STYLE = "color: #d03030;"

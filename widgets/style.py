@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from PySide6.QtGui import QFont, QFontDatabase
+from PySide6.QtWidgets import QPushButton, QStyle
 
 #: The typographic minus (U+2212) for button labels: wider and clearer than a hyphen.
 MINUS = "\u2212"
@@ -22,3 +23,15 @@ def monospace_font(point_delta: int = 0, *, bold: bool = False) -> QFont:
         font.setPointSize(font.pointSize() + point_delta)
     font.setBold(bold)
     return font
+
+
+def compact(button: QPushButton) -> QPushButton:
+    """Let a button shrink to its caption instead of the style's wide default.
+
+    Styles give every text button a minimum of about 80 px; a row of five short
+    commands then outgrows a 1280 px screen beside the docks.
+    """
+    margin = button.style().pixelMetric(QStyle.PixelMetric.PM_ButtonMargin, None, button)
+    width = button.fontMetrics().horizontalAdvance(button.text().replace("&", "")) + 2 * margin
+    button.setMinimumWidth(width + 2)
+    return button

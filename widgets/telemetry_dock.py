@@ -42,6 +42,7 @@ from PySide6.QtWidgets import (
 
 from app.telemetry import ROTATION_KEY, VARIABLES, WINDOW_CHOICES_S, TelemetryRecorder
 from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
+from widgets.theme import LIGHT, PlotColours
 
 #: Curve colours per axis (X, Y, Z, then whatever else a profile has).
 AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b")
@@ -68,6 +69,7 @@ class RotationCross(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._angle: float | None = None
+        self.colours = LIGHT
         self.setMinimumSize(120, 120)
         self.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
         self.setToolTip("Platform rotation relative to the last Zero (counter-clockwise positive)")
@@ -95,16 +97,16 @@ class RotationCross(QWidget):
         radius = side / 2 - 6
         painter.translate(self.width() / 2, self.height() / 2)
 
-        painter.setPen(QPen(QColor("#c8c8c8"), 1))
-        painter.setBrush(QColor("#fafafa"))
+        painter.setPen(QPen(QColor(self.colours.rim), 1))
+        painter.setBrush(QColor(self.colours.face))
         painter.drawEllipse(QPointF(0, 0), radius, radius)
-        reference = QPen(QColor("#b0b0b0"), 1, Qt.PenStyle.DashLine)
+        reference = QPen(QColor(self.colours.reference), 1, Qt.PenStyle.DashLine)
         painter.setPen(reference)
         painter.drawLine(QPointF(-radius, 0), QPointF(radius, 0))
         painter.drawLine(QPointF(0, -radius), QPointF(0, radius))
 
         if self._angle is None:
-            painter.setPen(QColor("#909090"))
+            painter.setPen(QColor(self.colours.axis))
             painter.drawText(
                 QRectF(-radius, -radius, 2 * radius, 2 * radius),
                 Qt.AlignmentFlag.AlignCenter,
@@ -117,10 +119,10 @@ class RotationCross(QWidget):
         arm = radius * 0.85
         self._draw_arm(painter, arm, 0, QColor(AXIS_COLOURS[0]), "x")
         self._draw_arm(painter, 0, -arm, QColor(AXIS_COLOURS[1]), "y")
-        painter.setPen(QPen(QColor("#606060"), 1.5))
+        painter.setPen(QPen(QColor(self.colours.axis), 1.5))
         painter.drawLine(QPointF(-arm, 0), QPointF(0, 0))
         painter.drawLine(QPointF(0, arm), QPointF(0, 0))
-        painter.setBrush(QColor("#404040"))
+        painter.setBrush(QColor(self.colours.text))
         painter.drawEllipse(QPointF(0, 0), 3, 3)
         painter.end()
 
@@ -240,8 +242,7 @@ class TelemetryDock(QDockWidget):
 
     def _build_plots(self) -> pg.GraphicsLayoutWidget:
         self.graphics = pg.GraphicsLayoutWidget()
-        self.graphics.setBackground("w")
-        self.graphics.setMinimumSize(360, 240)
+        self.graphics.setMinimumSize(360, 180)
         self.graphics.ci.layout.setSpacing(2)
         axes = self.recorder.model.axes
         units = _common_unit([a.unit for a in axes])
@@ -261,7 +262,31 @@ class TelemetryDock(QDockWidget):
             self._curves[position] = self._add_curve(self.position_plot, colour, name)
             self._curves[velocity] = self._add_curve(self.velocity_plot, colour, name)
         self.variable_curve = self._add_curve(self.variable_plot, VARIABLE_COLOUR, None)
+        self.apply_colours(LIGHT)
         return self.graphics
+
+    def apply_colours(self, colours: PlotColours) -> None:
+        """Background, axes, titles and legends for the light or the dark theme."""
+        self.colours = colours
+        self.graphics.setBackground(colours.background)
+        for plot in self.plots:
+            for side in ("left", "bottom"):
+                axis = plot.getAxis(side)
+                axis.setPen(pg.mkPen(colours.axis))
+                axis.setTextPen(pg.mkPen(colours.text))
+                if axis.labelText:
+                    axis.setLabel(axis.labelText, axis.labelUnits, color=colours.text)
+            legend = plot.legend
+            if legend is not None:
+                legend.setBrush(pg.mkBrush(colours.legend))
+                legend.setPen(pg.mkPen(colours.legend_border))
+                legend.setLabelTextColor(colours.text)
+                for _sample, label in legend.items:
+                    label.setText(label.text)  # pyqtgraph keeps the new colour for the next text
+        cross: RotationCross | None = getattr(self, "cross", None)  # built after the plots
+        if cross is not None:
+            cross.colours = colours
+            cross.update()
 
     def _add_plot(self, row: int, title: str, unit: str) -> pg.PlotItem:
         plot = self.graphics.addPlot(row=row, col=0)
@@ -311,6 +336,7 @@ class TelemetryDock(QDockWidget):
         title = QLabel("Rotation")
         title.setAlignment(Qt.AlignmentFlag.AlignHCenter)
         self.cross = RotationCross()
+        self.cross.colours = self.colours
         self.cross.setObjectName("rotation_cross")
         self.angle_label = QLabel("—")
         self.angle_label.setObjectName("rotation_angle")

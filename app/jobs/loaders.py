@@ -175,7 +175,10 @@ def load_job(path: Path, axis_names: Sequence[str], options: JobOptions | None =
 
 def file_dialog_filter() -> str:
     """The Open dialog's filter list: every job type, then all files (sniffed)."""
-    patterns = " ".join(f"*{e}" for t in JOB_TYPES for e in t.extensions)
+    # Each pattern once: several types read .txt, and a list naming it three times reads
+    # as a mistake.
+    unique = dict.fromkeys(f"*{e}" for t in JOB_TYPES for e in t.extensions)
+    patterns = " ".join(unique)
     parts = [f"Job files ({patterns})"] if patterns else []
     parts += [f"{t.description} ({' '.join('*' + e for e in t.extensions)})" for t in JOB_TYPES]
     parts.append("All files (*)")

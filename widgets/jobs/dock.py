@@ -37,6 +37,7 @@ from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
     QFrame,
+    QGridLayout,
     QHBoxLayout,
     QInputDialog,
     QLabel,
@@ -101,9 +102,10 @@ SOURCE_LINES_MAX_BYTES = 8_000_000
 
 def _banner_style(name: str, background: str, border: str) -> str:
     """A coloured band for one named frame only (its labels and buttons keep their looks)."""
+    # Its own text colour too: on the light band the dark theme's light text was unreadable.
     return (
         f"QFrame#{name} {{ background: {background}; border: 1px solid {border};"
-        " border-radius: 4px; }"
+        f" border-radius: 4px; }} QFrame#{name} QLabel {{ color: #1d1d1d; }}"
     )
 
 
@@ -119,6 +121,9 @@ def clock_text(seconds: float | None) -> str:
 
 class JobsDock(QDockWidget):
     """Open…, preview, Run / Pause / Resume / Step / Abort, progress, ETA, operator prompts."""
+
+    #: A job file was loaded (its path): the window lists it under File → Recent jobs.
+    jobOpened = Signal(object)
 
     def __init__(
         self,
@@ -168,11 +173,13 @@ class JobsDock(QDockWidget):
         layout.addWidget(self._build_prompt())
         layout.addWidget(self.preview, 1)
         layout.addLayout(self._build_progress())
-        self.operation_label = QLabel("—")
+        self.operation_label = QLabel("")
         self.operation_label.setObjectName("job_operation")
         self.operation_label.setFont(monospace_font())
         self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.operation_label.setToolTip("The operation being executed and the line it came from")
+        # A long source line must not widen the dock past the screen: it is cut instead.
+        self.operation_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         layout.addWidget(self.operation_label)
         self.messages = QPlainTextEdit()
         self.messages.setObjectName("job_messages")
@@ -181,12 +188,13 @@ class JobsDock(QDockWidget):
         self.messages.setFont(monospace_font(-1))
         self.messages.setPlaceholderText("Messages about the job appear here")
         self.messages.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Preferred)
-        self.messages.setFixedHeight(self.messages.fontMetrics().lineSpacing() * 5 + 12)
+        self.messages.setFixedHeight(self.messages.fontMetrics().lineSpacing() * 4 + 12)
         layout.addWidget(self.messages)
         self.setWidget(content)
 
         runner.stateChanged.connect(self._state_changed)
         runner.progressChanged.connect(self._show_progress)
+        runner.executedChanged.connect(self._show_progress)
         runner.etaChanged.connect(self._show_eta)
         runner.operationStarted.connect(self._show_operation)
         runner.waitingForOperator.connect(self._show_prompt)
@@ -199,27 +207,33 @@ class JobsDock(QDockWidget):
 
     # --- building ------------------------------------------------------------
 
-    def _build_options(self) -> QHBoxLayout:
+    def _build_options(self) -> QGridLayout:
         """How drill files are read: drill or draw (the original tool's two run modes), and
         the Excellon step for files whose integer coordinates carry no format."""
-        row = QHBoxLayout()
-        row.setSpacing(8)
-        self.draw_check = QCheckBox("Draw holes with the pen instead of drilling")
+        grid = QGridLayout()
+        grid.setHorizontalSpacing(8)
+        grid.setVerticalSpacing(2)
+        grid.setContentsMargins(0, 0, 0, 0)
+        self.draw_check = QCheckBox("Draw holes with the pen")
         self.draw_check.setObjectName("job_draw")
-        self.draw_check.setToolTip("Drill files: a pen cross the size of each hole (K / Z)")
+        self.draw_check.setToolTip(
+            "Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling"
+        )
         self.step_combo = QComboBox()
         self.step_combo.setObjectName("job_excellon_step")
         for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
             self.step_combo.addItem(label, inch)
         self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
-        row.addWidget(self.draw_check)
-        row.addStretch(1)
-        row.addWidget(QLabel("Excellon step"))
-        row.addWidget(self.step_combo)
+        step = QHBoxLayout()
+        step.setSpacing(4)
+        self.step_label = QLabel("Excellon step")
+        step.addWidget(self.step_label)
+        step.addWidget(self.step_combo)
+        step.addStretch(1)
         self.draw_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
         # G-code files: other flavours' pen commands, and lines the machine cannot run.
-        self.translate_pen_check = QCheckBox("Pen lines as this machine's")
+        self.translate_pen_check = QCheckBox("Use this machine's pen commands")
         self.translate_pen_check.setObjectName("job_translate_pen")
         self.translate_pen_check.setChecked(True)
         self.translate_pen_check.setToolTip(
@@ -234,11 +248,23 @@ class JobsDock(QDockWidget):
         )
         gcode = self.station.profile.dialect == "gcode"
         pen = self.station.profile.capabilities.pen
+        # Drill files are drilled or drawn: where the machine has neither tool they are
+        # refused whatever these say, so they are not offered.
+        holes = pen or self.station.profile.capabilities.drill
+        self.draw_check.setVisible(holes)
+        self.step_label.setVisible(holes)
+        self.step_combo.setVisible(holes)
         for check, visible in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
             check.setVisible(visible)
             check.toggled.connect(self._options_changed)
-            row.insertWidget(row.count() - 3, check)
-        return row
+        # Two short columns rather than one long row: the dock must fit beside the window's
+        # pages on a 1280 px screen, so no option may set a width of its own.
+        grid.addWidget(self.draw_check, 0, 0)
+        grid.addLayout(step, 0, 1)
+        grid.addWidget(self.translate_pen_check, 1, 0)
+        grid.addWidget(self.skip_check, 1, 1)
+        grid.setColumnStretch(2, 1)  # spare width beside, so a click on a check's caption hits it
+        return grid
 
     def option_values(self) -> dict[str, object]:
         """The operator's reading options, to keep across launches (the main window stores)."""
@@ -301,9 +327,9 @@ class JobsDock(QDockWidget):
         button.clicked.connect(lambda _=False: slot())
         return button
 
-    def _build_toolbar(self) -> QHBoxLayout:
-        bar = QHBoxLayout()
-        bar.setSpacing(6)
+    def _build_toolbar(self) -> QVBoxLayout:
+        bar = QVBoxLayout()
+        bar.setSpacing(4)
         self.open_button = self._button(
             "Open…",
             "job_open",
@@ -328,6 +354,9 @@ class JobsDock(QDockWidget):
         self.file_label = QLabel("no job loaded")
         self.file_label.setObjectName("job_file")
         self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        # A long file name is cut at the dock's edge (the tooltip has it whole) instead of
+        # widening the dock past the screen.
+        self.file_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.run_button = self._button(
             "Run", "job_run", "Run the job from the start", self.runner.start
         )
@@ -346,10 +375,16 @@ class JobsDock(QDockWidget):
         self.abort_button.setStyleSheet(
             "QPushButton:enabled { color: #b00020; font-weight: bold; }"
         )
-        bar.addWidget(self.open_button)
-        bar.addWidget(self.export_button)
-        bar.addWidget(self.photo_button)
-        bar.addWidget(self.file_label, 1)
+        files = QHBoxLayout()
+        files.setSpacing(6)
+        files.addWidget(self.open_button)
+        files.addWidget(self.export_button)
+        files.addWidget(self.photo_button)
+        files.addWidget(self.file_label, 1)
+        # The run controls on a row of their own: beside the file row they made the dock too
+        # wide for a 1280 px screen, and Abort was the first thing pushed off it.
+        controls = QHBoxLayout()
+        controls.setSpacing(6)
         for button in (
             self.run_button,
             self.pause_button,
@@ -357,7 +392,10 @@ class JobsDock(QDockWidget):
             self.step_button,
             self.abort_button,
         ):
-            bar.addWidget(button)
+            controls.addWidget(button)
+        controls.addStretch(1)
+        bar.addLayout(files)
+        bar.addLayout(controls)
         return bar
 
     def _build_resume_offer(self) -> QFrame:
@@ -553,6 +591,7 @@ class JobsDock(QDockWidget):
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
             return False
         self.say(f"{shown(path.name)}: {len(program)} operations loaded")
+        self.jobOpened.emit(path)
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
             # The totals with this machine's time for them (the loader knew no machine).
@@ -635,11 +674,10 @@ class JobsDock(QDockWidget):
         if program is not self.preview.program:
             self.preview.set_program(program)
         self._show_file(program)
-        total = len(program) if program is not None else 0
-        self._show_progress(self.runner.done if program is not None else 0, total)
+        self._show_progress()
         estimate = self.runner.estimate if program is not None else None
         self._set_times(0.0 if estimate else None, estimate.total_s if estimate else None)
-        self.operation_label.setText("—")
+        self.operation_label.setText("")  # no lone dash where no operation is under way
         source = program.source if program is not None else None
         prepared, self._prepared_lines = self._prepared_lines, None
         read = prepared is not None and source is not None and prepared[0] == source
@@ -717,10 +755,26 @@ class JobsDock(QDockWidget):
         why = f" — motion locked: {lock}" if lock else ""
         self.run_button.setToolTip(f"Run the job from the start{why}")
 
-    def _show_progress(self, done: int, total: int) -> None:
+    def _show_progress(self, *_args: object) -> None:
+        """The bar and count say what the machine ran; what is sent ahead is said beside it.
+
+        A G-code machine answers lines long before it runs them (its planner holds a
+        dozen or so), so counting answers showed a finished job on its first edge.
+        """
+        program = self.runner.program
+        total = len(program) if program is not None else 0
+        executed = self.runner.executed if program is not None else 0
+        sent = self.runner.done if program is not None else 0
         self.progress.setRange(0, max(1, total))
-        self.progress.setValue(min(done, max(1, total)))
-        self.count_label.setText(f"{done} / {total} ops")
+        self.progress.setValue(min(executed, max(1, total)))
+        text = f"{executed} / {total} ops"
+        if sent > executed:
+            text += f" · {sent} sent"
+        self.count_label.setText(text)
+        self.count_label.setToolTip(
+            "Operations the machine reported as run, of all; and how many were sent to it "
+            "(a G-code machine holds sent lines in its planner before it runs them)"
+        )
 
     def _show_eta(self, elapsed_s: float, remaining_s: float) -> None:
         self._set_times(elapsed_s, remaining_s)

@@ -59,6 +59,7 @@ from app.jobs.program import OpKind, Program, ProgramPath
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile
 from app.station import Station
+from widgets.theme import LIGHT, PlotColours
 
 TRAVEL_COLOUR = "#9a9a9a"
 WORK_COLOUR = "#1f4fb4"
@@ -292,7 +293,9 @@ class JobPreview(QWidget):
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
         if runner is not None:
-            runner.progressChanged.connect(self._progress)
+            # Green is what the machine ran, not what it was sent: a G-code planner holds
+            # answered lines the pen has not drawn yet.
+            runner.executedChanged.connect(self._progress)
             runner.stateChanged.connect(self._update_enabled)
         self._draw_position()
         self._update_enabled()
@@ -332,7 +335,7 @@ class JobPreview(QWidget):
 
         self.plot_widget = pg.PlotWidget(background="w")
         self.plot_widget.setObjectName("job_preview_plot")
-        self.plot_widget.setMinimumSize(260, 200)
+        self.plot_widget.setMinimumSize(240, 150)
         self.plot = self.plot_widget.getPlotItem()
         self.plot.setAspectLocked(True, ratio=1.0)
         self.plot.showGrid(x=True, y=True, alpha=0.2)
@@ -346,11 +349,9 @@ class JobPreview(QWidget):
         self.plot.setLabel("bottom", names[0], units=unit)
         self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
         for side in ("left", "bottom"):
-            axis = self.plot.getAxis(side)
-            axis.setPen(pg.mkPen("#909090"))
-            axis.setTextPen(pg.mkPen("#404040"))
             # pyqtgraph would otherwise show "(kmm)" or "(µmm)": these are machine millimetres.
-            axis.enableAutoSIPrefix(False)
+            self.plot.getAxis(side).enableAutoSIPrefix(False)
+        self.apply_colours(LIGHT)
         layout.addWidget(self.plot_widget, 1)
 
         if self.polar is not None:
@@ -457,6 +458,15 @@ class JobPreview(QWidget):
     def prepare(self, program: Program, geometry: ProgramGeometry | None) -> None:
         """The geometry :meth:`set_program` uses for ``program`` instead of computing it."""
         self._prepared = (program, geometry) if geometry is not None else None
+
+    def apply_colours(self, colours: PlotColours) -> None:
+        """Background, axes and their text for the light or the dark theme."""
+        self.plot_widget.setBackground(colours.background)
+        for side in ("left", "bottom"):
+            axis = self.plot.getAxis(side)
+            axis.setPen(pg.mkPen(colours.axis))
+            axis.setTextPen(pg.mkPen(colours.text))
+            axis.setLabel(axis.labelText, axis.labelUnits, color=colours.text)
 
     def set_program(self, program: Program | None) -> None:
         """Draw ``program`` (None clears); times the build in ``build_seconds``."""

@@ -31,7 +31,7 @@ from app.station import Station
 from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField
-from widgets.style import monospace_font
+from widgets.style import compact, monospace_font
 
 #: A move expected to run longer than this (seconds) asks first: it cannot be stopped.
 LONG_MOVE_S = 2.0
@@ -66,7 +66,8 @@ class DrillPanel(QWidget):
             button.setObjectName(f"command_{letter}")
             button.setToolTip(f"{tip} ({letter})")
             button.clicked.connect(lambda _=False, c=letter: self.send_command(c))
-            row.addWidget(button)
+            # Each as wide as its caption: at the style's width the row outgrew a 1280 px screen.
+            row.addWidget(compact(button))
             self.command_buttons[letter] = button
 
         axes = QGroupBox("Move to (microsteps from zero)")
@@ -100,6 +101,7 @@ class DrillPanel(QWidget):
         self.long_move.setObjectName("long_move_warning")
         self.long_move.setStyleSheet(
             "QGroupBox#long_move_warning { background: #fff3cd; border: 1px solid #e0c060; }"
+            " QGroupBox#long_move_warning QLabel { color: #1d1d1d; }"
         )
         self.long_move_label = QLabel()
         self.long_move_label.setWordWrap(True)
@@ -122,11 +124,11 @@ class DrillPanel(QWidget):
         self.entry = HistoryLineEdit()
         self.entry.setObjectName("terminal_entry")
         self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
-        self.entry.setMinimumWidth(160)
+        self.entry.setMinimumWidth(110)
         self.entry.returnPressed.connect(self.send_line)
         self.send_button = QPushButton("Send")
         self.send_button.clicked.connect(self.send_line)
-        self.clear_button = QPushButton("Cls")
+        self.clear_button = QPushButton("Clear")
         self.clear_button.setToolTip("Clear the terminal and the columns")
         self.clear_button.clicked.connect(self.clear)
         line = QHBoxLayout()
@@ -145,8 +147,10 @@ class DrillPanel(QWidget):
             listing.setMaximumWidth(150)
             listing.setFont(monospace_font())
         columns = QGridLayout()
-        columns.addWidget(QLabel("<b>command received</b>"), 0, 0)
-        columns.addWidget(QLabel("<b>command done</b>"), 0, 1)
+        for column, title in enumerate(("command received", "command done")):
+            header = QLabel(f"<b>{title}</b>")
+            header.setWordWrap(True)  # two short lines rather than a page too wide
+            columns.addWidget(header, 0, column)
         columns.addWidget(self.received_list, 1, 0)
         columns.addWidget(self.done_list, 1, 1)
 

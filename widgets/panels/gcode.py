@@ -62,20 +62,18 @@ class GcodePanel(QWidget):
         self.reset_button = self._button(
             "Reset", "Soft reset (Ctrl-X): stop and drop everything buffered", self.soft_reset
         )
-        buttons = QHBoxLayout()
-        for button in (
-            self.home_button,
-            self.pen_up_button,
-            self.pen_down_button,
-            self.hold_button,
-            self.resume_button,
-            self.reset_button,
-        ):
-            buttons.addWidget(button)
-        grid.addLayout(buttons, 2, 0, 1, 4)
-        if not station.profile.capabilities.pen:
+        pen = station.profile.capabilities.pen
+        if not pen:
             self.pen_up_button.hide()
             self.pen_down_button.hide()
+        shown = [self.home_button]
+        shown += [self.pen_up_button, self.pen_down_button] if pen else []
+        shown += [self.hold_button, self.resume_button, self.reset_button]
+        # Three to a row, so the page fits beside the jobs dock on a 1280 px screen.
+        buttons = QGridLayout()
+        for number, button in enumerate(shown):
+            buttons.addWidget(button, number // 3, number % 3)
+        grid.addLayout(buttons, 2, 0, 1, 4)
 
         console = QGroupBox("Console")
         box = QVBoxLayout(console)
@@ -90,7 +88,7 @@ class GcodePanel(QWidget):
         self.entry.returnPressed.connect(self.send_line)
         self.send_button = QPushButton("Send")
         self.send_button.clicked.connect(self.send_line)
-        self.clear_button = QPushButton("Cls")
+        self.clear_button = QPushButton("Clear")
         self.clear_button.setToolTip("Clear the console")
         self.clear_button.clicked.connect(self.output.clear)
         line = QHBoxLayout()

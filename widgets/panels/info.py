@@ -106,8 +106,15 @@ class InfoPanel(QFrame):
 
         self.battery = QProgressBar()
         self.battery.setRange(0, 100)
-        self.battery.setMinimumWidth(200)
+        self.battery.setMinimumWidth(160)
+        self.battery.setMaximumHeight(8)
         self.battery.setToolTip("Battery charge and voltage")
+        # The words beside a thin gauge, not on it: text over the fill's edge was split in
+        # two colours and half unreadable.
+        self.battery.setTextVisible(False)
+        self.battery_text = QLabel()
+        self.battery_text.setObjectName("battery_text")
+        column.addWidget(self.battery_text)
         column.addWidget(self.battery)
 
         self.temperature = QLabel()
@@ -118,7 +125,7 @@ class InfoPanel(QFrame):
         # Battery and temperature come from subscriber variables; machines without
         # them (mains-powered units) do not show empty gauges.
         has_telemetry = self._model.profile.capabilities.subscribers
-        for widget in (self.battery, self.temperature, self.power_note):
+        for widget in (self.battery, self.battery_text, self.temperature, self.power_note):
             widget.setVisible(has_telemetry)
         return column
 
@@ -132,6 +139,8 @@ class InfoPanel(QFrame):
         colour = _STATUS_COLOURS.get(axis.status_text)
         if axis.status_text.startswith("blocked") or axis.status_text == "sleeping":
             colour = "#c06000"
+        if self._model.link_state is not LinkState.CONNECTED:
+            colour = None  # the disabled grey: not a live state
         status.setStyleSheet(f"color: {colour};" if colour else "")
 
     def _show_link(self, _state: object = None) -> None:
@@ -143,6 +152,15 @@ class InfoPanel(QFrame):
         detail = f" — {self._model.link_detail}" if self._model.link_detail else ""
         self.link_text.setText(f"{state.value}{detail}")
         self.link_lamp.setToolTip(f"Link {state.value}")
+        # Positions and states are live only while the device answers: otherwise they are
+        # the last ones heard, greyed so that nobody reads them as where the machine is.
+        live = state is LinkState.CONNECTED
+        tip = "" if live else f"Last known — the link is {state.value}"
+        for index, (position, status) in enumerate(zip(self.positions, self.statuses, strict=True)):
+            position.setEnabled(live)
+            status.setEnabled(live)
+            position.setToolTip(tip)
+            self._show_axis(index)
 
     def _show_telemetry(self, _key: str = "") -> None:
         telemetry = self._model.telemetry
@@ -155,6 +173,7 @@ class InfoPanel(QFrame):
             self.battery.setValue(round(charge))
             volts = f" · {voltage:.2f} V" if voltage is not None else ""
             self.battery.setFormat(f"battery {charge:.0f} %{volts}")
+        self.battery_text.setText(self.battery.format())
         temperature = telemetry.get("board_temperature")
         self.temperature.setText(
             "board —" if temperature is None else f"board {temperature:.1f} °C"

@@ -49,6 +49,10 @@ def _describe(dx: int, dy: int, names: tuple[str, str]) -> str:
     return " ".join(parts)
 
 
+#: Dialects whose home command homes every axis at once ($H / G28; the drill's N).
+HOMES_ALL_AXES = ("gcode", "drill")
+
+
 class ManualPanel(QWidget):
     """Hold-to-jog buttons and Home; all motion goes through ``jog`` or the session."""
 
@@ -102,7 +106,15 @@ class ManualPanel(QWidget):
 
         homes = QHBoxLayout()
         homes.setSpacing(6)
-        if station.profile.capabilities.home:
+        if station.profile.capabilities.home and station.profile.dialect in HOMES_ALL_AXES:
+            # One command homes every axis here: per-axis buttons that all did the same
+            # thing promised what the machine cannot do.
+            button = QPushButton("Home all")
+            button.setToolTip("Home every axis: the machine's home command does them all")
+            button.clicked.connect(lambda _=False: self._home(0))
+            homes.addWidget(button)
+            self.home_buttons.append(button)
+        elif station.profile.capabilities.home:
             for index, axis in enumerate(station.profile.axes):
                 button = QPushButton(f"Home {axis.name}")
                 button.setToolTip(f"Seek the {axis.name} home switch and set {axis.name} = 0")

@@ -60,8 +60,12 @@ class StaticPanel(QWidget):
         self.stop_button = QPushButton(caption)
         self.stop_button.setObjectName("stop_button")
         self.stop_button.setToolTip(tip)
-        self.stop_button.setMinimumSize(120, 80)
         self.stop_button.setStyleSheet(_STOP_STYLE.format(size=18 if caption == "STOP" else 11))
+        # At least the big target it always was, and never narrower than its caption: a
+        # fixed minimum cut the drill's three-line "DROP QUEUE" caption at both edges.
+        self.stop_button.ensurePolished()
+        hint = self.stop_button.sizeHint()
+        self.stop_button.setMinimumSize(max(120, hint.width()), max(80, hint.height()))
         self.stop_button.clicked.connect(jog.stop_all)
 
         layout = QVBoxLayout(self)

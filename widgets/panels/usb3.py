@@ -1,7 +1,7 @@
 """The three-axis unit's page, as its own C# tool had it: move by millimetres per axis.
 
 Per axis a signed distance, the step size and the thread (what the unit
-needs to turn millimetres into steps), and Send; one "0 0 0" button zeroes
+needs to turn millimetres into steps), and Send; one "Zero all" button zeroes
 all positions.  Because the unit moves in whole steps, the page shows the
 distance that will really be moved next to the one typed.
 """
@@ -75,8 +75,8 @@ class Usb3Panel(QWidget):
             self.send_buttons.append(send)
             self.gate.watch(distance, f"{axis.name} distance")
             self.gate.bind(send, distance)
-        self.zero_button = QPushButton("0 0 0")
-        self.zero_button.setToolTip("Zero all positions (C;)")
+        self.zero_button = QPushButton("Zero all")
+        self.zero_button.setToolTip("Set every axis' position to 0 where it stands (C;)")
         self.zero_button.clicked.connect(self.zero_all)
         grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
         grid.addWidget(self.note, len(self.distances) + 2, 0, 1, 6)

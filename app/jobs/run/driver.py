@@ -106,8 +106,9 @@ class RunnerPort(Protocol):
     def complete(self, index: int) -> None:
         """``mark_done``, then the driver's next ``proceed`` if the job goes on."""
 
-    def advance(self, done: int) -> None:
-        """A streaming driver's progress: the first ``done`` operations are answered."""
+    def advance(self, done: int, executed: int | None = None) -> None:
+        """A streaming driver's progress: the first ``done`` operations are answered, the
+        first ``executed`` (default: ``done``) known to have run."""
 
     def record(self, completed: int) -> None:
         """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace)."""

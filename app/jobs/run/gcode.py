@@ -321,7 +321,7 @@ class GcodeDriver(JobDriver):
             # all be shown, so at most ten a second are.
             self._shown, self._shown_at = current, now
             runner.announce(current)
-        runner.advance(stream.answered)
+        runner.advance(stream.answered, stream.executed)
         self._write_checkpoint(force=False)
 
     def _write_checkpoint(self, *, force: bool) -> None:

@@ -45,6 +45,9 @@ START_TOLERANCE = 0.01
 class JobRunner(QObject):
     stateChanged = Signal(object)  # JobState
     progressChanged = Signal(int, int)  # done, total
+    #: Operations the machine reported as run, and the total.  Equal to ``done`` where one
+    #: operation is sent at a time; behind it on G-code, whose planner holds answered lines.
+    executedChanged = Signal(int, int)
     etaChanged = Signal(float, float)  # elapsed_s, remaining_s
     operationStarted = Signal(int)
     operationDone = Signal(int)
@@ -65,6 +68,7 @@ class JobRunner(QObject):
         self._program: Program | None = None
         self._estimate: Estimate | None = None
         self._done = 0  # operations [0, done) are complete
+        self._executed = 0  # operations [0, executed) are reported run by the machine
         self._resume_available: int | None = None
         self._single_step = False
         self._pause_requested = False
@@ -100,6 +104,21 @@ class JobRunner(QObject):
     def done(self) -> int:
         """Count of completed operations (always the first ``done`` of the program)."""
         return self._done
+
+    @property
+    def executed(self) -> int:
+        """Count of operations the machine reported as run (≤ ``done``).
+
+        On a G-code machine ``done`` counts the lines the device answered, many of
+        which may still wait in its planner; ``executed`` only those known to have run.
+        """
+        return self._executed
+
+    def _set_executed(self, executed: int) -> None:
+        executed = min(executed, self._done)
+        if executed != self._executed:
+            self._executed = executed
+            self.executedChanged.emit(executed, self._total())
 
     @property
     def single_step(self) -> bool:
@@ -180,6 +199,7 @@ class JobRunner(QObject):
         self.programChanged.emit()
         self._set_state(JobState.READY)
         self.progressChanged.emit(self._done, len(program))
+        self.executedChanged.emit(self._executed, len(program))
         self.emit_eta()
         if self._resume_available is not None:
             op = program[self._resume_available]
@@ -260,7 +280,8 @@ class JobRunner(QObject):
         # The resume offer first, so views reacting to the state change see it.
         self._offer_checkpoint()
         self._set_state(JobState.ABORTED)
-        self.message.emit(f"Job aborted after {self._done} of {self._total()} operations")
+        # The count the checkpoint (and the resume offer) holds: what the machine ran.
+        self.message.emit(f"Job aborted after {self._executed} of {self._total()} operations")
 
     def confirm(self) -> None:
         """The operator has done what the WAIT asked for."""
@@ -312,6 +333,7 @@ class JobRunner(QObject):
         """Operations up to ``index`` are done; whether the next one starts now."""
         assert self._program is not None
         self._done = index + 1
+        self._set_executed(self._done)  # reported done by the machine: it ran
         if not self._write_checkpoint(self._program, index):  # before anything else is sent
             return False
         self.operationDone.emit(index)
@@ -323,13 +345,15 @@ class JobRunner(QObject):
         if self.mark_done(index):
             self._driver.proceed()
 
-    def advance(self, done: int) -> None:
-        if self._program is None or done == self._done:
+    def advance(self, done: int, executed: int | None = None) -> None:
+        if self._program is None:
             return
-        self._done = done
-        if done:
-            self.operationDone.emit(done - 1)
-        self.progressChanged.emit(done, len(self._program))
+        if done != self._done:
+            self._done = done
+            if done:
+                self.operationDone.emit(done - 1)
+            self.progressChanged.emit(done, len(self._program))
+        self._set_executed(done if executed is None else executed)
 
     def record(self, completed: int) -> None:
         if self._program is not None and self._state in ACTIVE:
@@ -384,6 +408,7 @@ class JobRunner(QObject):
             self._checkpoints.discard(self._program)
         except OSError as exc:
             self.message.emit(f"The finished job's checkpoint could not be removed: {exc}")
+        self._set_executed(len(self._program))  # drivers finish only once the machine is idle
         self._set_state(JobState.DONE)
         self.emit_eta()
         self.message.emit(
@@ -399,6 +424,7 @@ class JobRunner(QObject):
         if self._refuse_for_link():
             return
         self._done = index
+        self._set_executed(index)
         self._elapsed_before = 0.0
         self._running_since = None
         self._single_step = single_step
@@ -504,6 +530,7 @@ class JobRunner(QObject):
 
     def _reset(self) -> None:
         self._done = 0
+        self._set_executed(0)
         self._question = None
         self._driver.forget()
         self._resume_available = None

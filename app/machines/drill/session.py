@@ -225,7 +225,7 @@ class DrillSession(MachineSession):
 
     def _refuse_line(self, line: str, reason: str) -> bool:
         self._refused_lines += 1
-        self.model.message.emit(f"Not sent: {line!r} is no drill command ({reason})")
+        self.model.message.emit(f"Not sent: {line!r} is not a drill command ({reason})")
         return False
 
     def _enqueue(self, command: Command) -> bool:

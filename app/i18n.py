@@ -1,0 +1,94 @@
+"""Which language the station speaks, and loading its translation.
+
+The ``.ts`` sources live in ``resources/i18n`` (edited with Qt Linguist and
+kept current with ``pyside6-lupdate``).  The compiled ``.qm`` files are not
+kept in the repository: the first start in a language compiles its ``.ts``
+with the ``lrelease`` PySide6 ships, into the station's cache, and later
+starts reuse it until the ``.ts`` changes.  English is the source language;
+its own ``.ts`` carries only the plural forms ("1 setting", "2 settings").
+"""
+
+from __future__ import annotations
+
+import logging
+import subprocess
+from pathlib import Path
+
+import PySide6
+from PySide6.QtCore import QCoreApplication, QLocale, QStandardPaths, QTranslator
+
+from app.profiles import RESOURCES
+
+I18N_DIR = RESOURCES / "i18n"
+#: The languages offered, by code, each named in itself (a user who cannot read the
+#: current language still finds their own).
+LANGUAGES = {"en": "English", "cs": "Čeština", "sk": "Slovenčina"}
+#: Compiling one file takes a few tens of milliseconds; more means something is wrong.
+LRELEASE_TIMEOUT_S = 10.0
+
+_log = logging.getLogger(__name__)
+_installed: list[QTranslator] = []
+
+
+def chosen_language(choice: str, system: QLocale | None = None) -> str:
+    """The language for ``choice``: one of LANGUAGES, or "system" (the locale's, else English)."""
+    if choice in LANGUAGES:
+        return choice
+    name = (system or QLocale.system()).name().split("_")[0]
+    return name if name in LANGUAGES else "en"
+
+
+def _cache_dir() -> Path:
+    location = QStandardPaths.StandardLocation.CacheLocation
+    return Path(QStandardPaths.writableLocation(location)) / "i18n"
+
+
+def compiled(language: str, cache_dir: Path | None = None) -> Path | None:
+    """The ``.qm`` of ``language``, compiled now if it is missing or older than its ``.ts``."""
+    source = I18N_DIR / f"stepdeck_{language}.ts"
+    if not source.is_file():
+        return None
+    target = (cache_dir or _cache_dir()) / f"stepdeck_{language}.qm"
+    if target.is_file() and target.stat().st_mtime >= source.stat().st_mtime:
+        return target
+    lrelease = Path(PySide6.__file__).resolve().parent / "lrelease"
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        subprocess.run(
+            [str(lrelease), "-silent", str(source), "-qm", str(target)],
+            check=True,
+            capture_output=True,
+            timeout=LRELEASE_TIMEOUT_S,
+        )
+    except (OSError, subprocess.SubprocessError) as exc:
+        # The station still works, in English: a missing tool must not stop it.
+        _log.warning("Translation %s not compiled: %s", source, exc)
+        return None
+    return target if target.is_file() else None
+
+
+def remove() -> None:
+    """Back to the source language (English, with its plain plural fallbacks)."""
+    app = QCoreApplication.instance()
+    while _installed and app is not None:
+        app.removeTranslator(_installed.pop())
+
+
+def install(choice: str, cache_dir: Path | None = None) -> str:
+    """Make the application speak ``choice`` from now on; returns the language used.
+
+    Widgets built afterwards are in that language; the window is built after this.
+    """
+    app = QCoreApplication.instance()
+    assert app is not None
+    remove()
+    language = chosen_language(choice)
+    path = compiled(language, cache_dir)
+    if path is None:
+        return "en"
+    translator = QTranslator(app)
+    if not translator.load(str(path)):
+        return "en"
+    app.installTranslator(translator)
+    _installed.append(translator)
+    return language

@@ -1,0 +1,132 @@
+"""The operator window fits a 1280x800 screen with every dock open, on every profile.
+
+A laptop screen of 1280x800 is what the workshop machines have.  The window's
+minimum size must fit it with the jobs dock, the telemetry plots and the
+developer pane all open, and at that size every run control — and the
+Continue of an operator prompt — must be on screen, not clipped and not
+under another dock.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QPoint, QRect, QSize, Qt
+from PySide6.QtWidgets import QApplication, QWidget
+from pytestqt.qtbot import QtBot
+
+from app.jobs.run.runner import JobState
+from app.profiles import available_profiles, load_profile
+from tests.helpers.harness import StationHarness
+from widgets.main_window import MainWindow
+
+SCREEN = QSize(1280, 800)
+LEFT = Qt.MouseButton.LeftButton
+
+
+@pytest.fixture(params=available_profiles())
+def profile_harness(request: pytest.FixtureRequest, qapp: object) -> Iterator[StationHarness]:
+    h = StationHarness(load_profile(request.param))
+    yield h
+    h.close()
+
+
+def _every_dock_open(qtbot: QtBot, harness: StationHarness, tmp_path: Path) -> MainWindow:
+    window = MainWindow(harness.station, checkpoint_dir=tmp_path / "checkpoints")
+    qtbot.addWidget(window)
+    window.show()
+    for dock in (window.jobs_dock, window.telemetry_dock, window.developer_pane):
+        dock.show()
+    QApplication.processEvents()
+    return window
+
+
+def _rect_in(window: QWidget, widget: QWidget) -> QRect:
+    return QRect(widget.mapTo(window, QPoint(0, 0)), widget.size())
+
+
+def _fully_shown(window: QWidget, widget: QWidget) -> bool:
+    """On the window, wholly inside it, and not clipped by the widgets it sits in."""
+    if not widget.isVisible() or widget.width() <= 0 or widget.height() <= 0:
+        return False
+    if not window.rect().contains(_rect_in(window, widget)):
+        return False
+    return widget.visibleRegion().boundingRect().size() == widget.size()
+
+
+def test_minimum_size_fits_1280_by_800_with_every_dock(
+    qtbot: QtBot, profile_harness: StationHarness, tmp_path: Path
+) -> None:
+    window = _every_dock_open(qtbot, profile_harness, tmp_path)
+    hint = window.minimumSizeHint()
+    assert hint.width() <= SCREEN.width() and hint.height() <= SCREEN.height(), (
+        f"{profile_harness.station.profile.title}: {hint.width()}x{hint.height()}"
+    )
+
+
+def test_at_1280_by_800_every_run_control_is_on_screen_and_docks_do_not_overlap(
+    qtbot: QtBot, profile_harness: StationHarness, tmp_path: Path
+) -> None:
+    window = _every_dock_open(qtbot, profile_harness, tmp_path)
+    window.resize(SCREEN)
+    QApplication.processEvents()
+    assert window.size() == SCREEN  # the docks did not force it wider or taller
+    dock = window.jobs_dock
+    for button in (
+        dock.open_button,
+        dock.run_button,
+        dock.pause_button,
+        dock.resume_button,
+        dock.step_button,
+        dock.abort_button,
+    ):
+        assert _fully_shown(window, button), button.objectName()
+    assert _fully_shown(window, window.static_panel.stop_button)
+    parts = [window.centralWidget(), dock]
+    parts += [d for d in (window.telemetry_dock, window.developer_pane) if d.isVisible()]
+    shown = [p for p in parts if not p.visibleRegion().isEmpty()]
+    assert len(shown) == 3  # the central widget, the jobs dock and one bottom tab
+    for i, first in enumerate(shown):
+        for second in shown[i + 1 :]:
+            assert not _rect_in(window, first).intersects(_rect_in(window, second))
+
+
+def test_opening_and_closing_docks_keeps_the_size_the_user_chose(
+    qtbot: QtBot, profile_harness: StationHarness, tmp_path: Path
+) -> None:
+    window = _every_dock_open(qtbot, profile_harness, tmp_path)
+    window.resize(SCREEN)
+    QApplication.processEvents()
+    docks = (window.jobs_dock, window.telemetry_dock, window.developer_pane)
+    for dock in docks:
+        dock.toggleViewAction().trigger()
+        QApplication.processEvents()
+    for dock in docks:
+        dock.toggleViewAction().trigger()
+        QApplication.processEvents()
+    assert all(dock.isVisible() for dock in docks)
+    assert window.size() == SCREEN
+
+
+def test_continue_of_a_wait_is_on_screen_at_1280_by_800(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    window = _every_dock_open(qtbot, harness, tmp_path)
+    window.resize(SCREEN)
+    harness.connect()
+    harness.run(1.0)
+    job = tmp_path / "probe.csv"
+    long_prompt = "swap the probe for the 0.8 mm drill, tighten the chuck and close the guard"
+    job.write_text(f"wait: {long_prompt}\n5, 5\n", encoding="utf-8")
+    dock = window.jobs_dock
+    assert dock.open_path(job)
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: dock.runner.state is JobState.WAITING, timeout=30)
+    QApplication.processEvents()
+    assert window.size() == SCREEN
+    assert _fully_shown(window, dock.continue_button)
+    assert _fully_shown(window, dock.prompt_label)
+    qtbot.mouseClick(dock.continue_button, LEFT)
+    harness.run_until(lambda: dock.runner.state is JobState.DONE, timeout=30)
