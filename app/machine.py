@@ -67,6 +67,8 @@ class MachineModel(QObject):
         self.telemetry: dict[str, float] = {}
         self.block_reason: str | None = None
         self.sleeping = False
+        #: Why the operator may not jog now though the machine may move (a job under way).
+        self.jog_lock_reason: str | None = None
 
     # --- written by sessions -------------------------------------------------
 
@@ -138,6 +140,12 @@ class MachineModel(QObject):
         self.block_reason = reason
         self.sleeping = sleeping
         self.lockChanged.emit()
+
+    def set_jog_lock(self, reason: str | None) -> None:
+        """A job under way owns the machine: jogs are refused (the job's own moves are not)."""
+        if reason != self.jog_lock_reason:
+            self.jog_lock_reason = reason
+            self.lockChanged.emit()
 
     # --- read by widgets -----------------------------------------------------
 

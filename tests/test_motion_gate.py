@@ -284,3 +284,28 @@ def test_usb3_relative_move_past_the_travel_is_refused(qtbot: QtBot) -> None:
         assert harness.usb3_session.move_relative(0, 10.0)
     finally:
         harness.close()
+
+
+def test_no_jog_while_a_job_owns_the_machine(stage: StationHarness, tmp_path: Path) -> None:
+    """A jog under a running (or paused) job would move the machine beneath it."""
+    job = tmp_path / "route.csv"
+    job.write_text("10, 10\n20, 20\n30, 30\n")
+    runner = JobRunner(stage.station, tmp_path / "checkpoints")
+    assert runner.load(load_job(job, ["X", "Y"])) == []
+    messages: list[str] = []
+    stage.station.model.message.connect(messages.append)
+    runner.start()
+    stage.run(0.2)
+    stage.session.set_jog((1, 0))
+    assert stage.session.jog_vector == (0, 0)
+    assert not stage.session.step_jog(0, +1, 1.0)
+    assert any(m.startswith("Jog refused: a job is under way") for m in messages)
+    runner.pause()
+    stage.run_until(lambda: runner.state is JobState.PAUSED, timeout=10)
+    stage.session.set_jog((1, 0))
+    assert stage.session.jog_vector == (0, 0)  # paused: it resumes from where the machine is
+    runner.abort()
+    stage.run(0.2)
+    stage.session.set_jog((1, 0))
+    assert stage.session.jog_vector == (1, 0)  # the job ended: the machine is the operator's
+    stage.session.set_jog((0, 0))

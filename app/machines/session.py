@@ -92,7 +92,7 @@ class MachineSession(QObject):
         """
         if not 0 <= axis < self.axis_count or direction not in (-1, 1) or step <= 0:
             return False
-        if self._refuse_motion():
+        if self._refuse_jog():
             return False
         distance = min(step, self.gate.room(axis, direction))
         if distance <= 1e-6:
@@ -234,6 +234,14 @@ class MachineSession(QObject):
     def _unsupported(self, what: str) -> bool:
         self.model.message.emit(f"{self.model.profile.title} has no {what}")
         return False
+
+    def _refuse_jog(self) -> bool:
+        """A jog is the operator's alone: refused while a job owns the machine, too."""
+        reason = self.model.jog_lock_reason
+        if reason is not None:
+            self.model.message.emit(f"Jog refused: {reason}")
+            return True
+        return self._refuse_motion()
 
     def _refuse_motion(self) -> bool:
         reason = self.model.motion_lock_reason()

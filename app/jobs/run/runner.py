@@ -520,6 +520,11 @@ class JobRunner(QObject):
         elif runs and not was_running:
             self._running_since = now
         self._state = state
+        # While a job is under way (paused and waiting included: its resume goes on from
+        # where the machine was), a jog would move the machine under it.
+        self.station.model.set_jog_lock(
+            "a job is under way: pause and abort it, or let it finish" if state in ACTIVE else None
+        )
         if runs and self.station.realtime:
             self._eta_timer.start()
         elif not runs:

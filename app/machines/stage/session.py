@@ -142,7 +142,7 @@ class StageSession(MachineSession):
         """The jog directions of all axes as the operator holds them right now."""
         wanted = [max(-1, min(1, int(d))) for d in directions]
         wanted += [0] * (self.axis_count - len(wanted))
-        if any(wanted) and self._refuse_motion():
+        if any(wanted) and self._refuse_jog():
             wanted = [0] * self.axis_count
         if wanted == self._jog:
             return
