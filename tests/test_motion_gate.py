@@ -309,3 +309,66 @@ def test_no_jog_while_a_job_owns_the_machine(stage: StationHarness, tmp_path: Pa
     stage.session.set_jog((1, 0))
     assert stage.session.jog_vector == (1, 0)  # the job ended: the machine is the operator's
     stage.session.set_jog((0, 0))
+
+
+# --- every entry point, any position, any input: nothing past the travel on the wire -----
+
+MOVES = st.sampled_from(["absolute", "relative", "step"])
+
+
+@settings(
+    max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(entry=MOVES, start=st.floats(0, 50), value=FINITE, axis=st.integers(0, 1))
+def test_no_stage_frame_moves_past_the_travel(
+    stage: StationHarness, entry: str, start: float, value: float, axis: int
+) -> None:
+    session = stage.session
+    stage.station.model.update_axis(axis, position=start)
+    before = len(stage.written)
+    if entry == "absolute":
+        session.move_absolute(axis, value)
+    elif entry == "relative":
+        session.move_relative(axis, value)
+    else:
+        session.step_jog(axis, 1 if value >= 0 else -1, min(abs(value), 10.0) or 0.1)
+    for frame in _stage_frames(stage, before):
+        packet = frame.packets[axis]
+        if packet.command == CommandId.MOVE_ABS:
+            assert 0 <= packet.data <= 50_000
+        elif packet.command == CommandId.MOVE_REL:
+            assert -1 <= start * 1000 + packet.data <= 50_001  # µm rounding
+    session.stop_all()
+    stage.run(0.05)
+
+
+@pytest.fixture
+def drill(qtbot: QtBot) -> Iterator[StationHarness]:
+    harness = _harness("pcb-drill")
+    yield harness
+    harness.close()
+
+
+@settings(
+    max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(
+    letter=st.sampled_from("XY"),
+    microsteps=st.integers(0, 99_999),
+    mm=FINITE,
+)
+def test_no_drill_command_moves_past_the_travel(
+    drill: StationHarness, letter: str, microsteps: int, mm: float
+) -> None:
+    session = drill.drill_session
+    axis = "XY".index(letter)
+    travel = drill.station.profile.axes[axis].travel
+    before = len(drill.written)
+    session.send_line(f"{letter}{microsteps}")  # the terminal
+    session.move_absolute(axis, mm)  # the Drill page
+    for chunk in drill.written[before:]:
+        text = chunk.decode("ascii").strip()
+        if text[:1] in "XY" and text[1:].isdigit():
+            index = "XY".index(text[0])
+            assert session.to_mm(index, int(text[1:])) <= travel + 1e-9
+    session.stop_all()
