@@ -401,3 +401,39 @@ def test_a_hole_perhaps_drilled_is_asked_with_it_marked_and_again_drills_it_once
         assert len(dock.preview.question_marker.getData()[0]) == 0
     finally:
         drill.close()
+
+
+def test_smallest_bit_first_reloads_the_drill_job_with_the_prompts_by_size(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.show()
+    try:
+        drill.connect()
+        excellon = (
+            "M48\nMETRIC\nT01C1.2\nT02C0.6\nT03C1.2\n%\n"
+            "T01\nX10.0Y10.0\nT02\nX20.0Y15.0\nX30.0Y15.0\nT03\nX40.0Y20.0\nM30\n"
+        )
+        assert dock.open_path(write(tmp_path, "bits.drl", excellon))
+
+        def prompts() -> list[str]:
+            program = runner.program
+            return [op.message for op in program or () if op.kind is OpKind.WAIT]
+
+        assert prompts() == [
+            "insert T01, 1.20 mm, 2 holes (also T03)",
+            "insert T02, 0.60 mm, 2 holes",
+        ]
+        assert "T03 is 1.20 mm like T01" in dock.messages.toPlainText()
+        qtbot.mouseClick(dock.smallest_check, LEFT)
+        qtbot.waitUntil(lambda: prompts()[0].startswith("insert T02"))
+        assert prompts() == [
+            "insert T02, 0.60 mm, 2 holes",
+            "insert T01, 1.20 mm, 2 holes (also T03)",
+        ]
+        assert dock.option_values()["smallest_first"] is True
+    finally:
+        drill.close()

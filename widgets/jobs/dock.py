@@ -207,16 +207,23 @@ class JobsDock(QDockWidget):
         self.draw_check = QCheckBox("Draw holes with the pen instead of drilling")
         self.draw_check.setObjectName("job_draw")
         self.draw_check.setToolTip("Drill files: a pen cross the size of each hole (K / Z)")
+        self.smallest_check = QCheckBox("Smallest bit first")
+        self.smallest_check.setObjectName("job_smallest_first")
+        self.smallest_check.setToolTip(
+            "Drill files: the bit changes ordered from the smallest drill to the largest"
+        )
         self.step_combo = QComboBox()
         self.step_combo.setObjectName("job_excellon_step")
         for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
             self.step_combo.addItem(label, inch)
         self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
         row.addWidget(self.draw_check)
+        row.addWidget(self.smallest_check)
         row.addStretch(1)
         row.addWidget(QLabel("Excellon step"))
         row.addWidget(self.step_combo)
         self.draw_check.toggled.connect(self._options_changed)
+        self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
         # G-code files: other flavours' pen commands, and lines the machine cannot run.
         self.translate_pen_check = QCheckBox("Pen lines as this machine's")
@@ -244,6 +251,7 @@ class JobsDock(QDockWidget):
         """The operator's reading options, to keep across launches (the main window stores)."""
         return {
             "draw": self.draw_check.isChecked(),
+            "smallest_first": self.smallest_check.isChecked(),
             "excellon_step_inch": float(self.step_combo.currentData()),
             "translate_pen": self.translate_pen_check.isChecked(),
             "skip_unsupported": self.skip_check.isChecked(),
@@ -253,6 +261,7 @@ class JobsDock(QDockWidget):
         """Set the reading options from ``values`` (unknown or malformed entries are ignored)."""
         checks = {
             "draw": self.draw_check,
+            "smallest_first": self.smallest_check,
             "translate_pen": self.translate_pen_check,
             "skip_unsupported": self.skip_check,
         }
@@ -275,6 +284,7 @@ class JobsDock(QDockWidget):
         profile = self.station.profile
         return JobOptions(
             draw=self.draw_check.isChecked(),
+            smallest_first=self.smallest_check.isChecked(),
             excellon_step_inch=float(self.step_combo.currentData()),
             translate_pen=self.translate_pen_check.isChecked(),
             skip_unsupported=self.skip_check.isChecked(),
