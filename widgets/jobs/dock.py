@@ -59,6 +59,7 @@ from app.jobs.reading import read_job_text
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
+from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
@@ -164,6 +165,8 @@ class JobsDock(QDockWidget):
         layout.setSpacing(4)
         layout.addLayout(self._build_toolbar())
         layout.addLayout(self._build_options())
+        self.registration = RegistrationBar(station, self._load_registered, self.say)
+        layout.addWidget(self.registration)
         layout.addWidget(self._build_resume_offer())
         layout.addWidget(self._build_prompt())
         layout.addWidget(self.preview, 1)
@@ -561,7 +564,9 @@ class JobsDock(QDockWidget):
             self.preview.set_program(program)
             self.file_label.setText(f"{_bold(program.name)} — refused, preview only")
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
+            self.registration.set_job(None)
             return False
+        self.registration.set_job(program)
         self.say(f"{shown(path.name)}: {len(program)} operations loaded")
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
@@ -573,6 +578,13 @@ class JobsDock(QDockWidget):
         for note in notes:
             self.say(f"{shown(path.name)}: {note}")
         self._program_changed()
+        return True
+
+    def _load_registered(self, program: Program) -> bool:
+        """A registered (or cleared) job replaces the loaded one; the runner checks its travel."""
+        if self.runner.load(program):
+            return False  # the runner listed the holes off the bed
+        self.say(f"{program.name}: {program.notes[-1] if program.notes else 'loaded'}")
         return True
 
     def ask_export(self) -> None:
