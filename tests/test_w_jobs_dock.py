@@ -482,3 +482,31 @@ def test_registering_on_two_jogged_holes_loads_the_job_moved_onto_the_board(
         assert runner.program is original
     finally:
         drill.close()
+
+
+def test_the_bottom_side_loads_the_job_mirrored_about_its_extent_and_back(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.show()
+    try:
+        drill.connect()
+        excellon = "M48\nMETRIC\nT01C0.8\n%\nT01\nX10.0Y10.0\nX60.0Y10.0\nX30.0Y40.0\nM30\n"
+        assert dock.open_path(write(tmp_path, "side.drl", excellon))
+        original = runner.program
+        assert original is not None
+        combo = dock.registration.side_combo
+        combo.setFocus()
+        qtbot.keyClick(combo, Qt.Key.Key_Down)  # "Bottom, mirrored in X"
+        flipped = runner.program
+        assert flipped is not None and combo.currentData() == "X"
+        assert sorted(reference_holes(flipped)) == sorted(
+            [(60.0, 10.0), (10.0, 10.0), (40.0, 40.0)]
+        )
+        qtbot.keyClick(combo, Qt.Key.Key_Up)  # back to the top side
+        assert runner.program is original
+    finally:
+        drill.close()

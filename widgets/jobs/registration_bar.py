@@ -13,10 +13,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QSpinBox, QWidget
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QSpinBox, QWidget
 
 from app.jobs.program import OpKind, Program
-from app.jobs.registration import Point, RegistrationError, register, registered
+from app.jobs.registration import Point, RegistrationError, mirrored, register, registered
 from app.station import Station
 
 
@@ -50,6 +50,19 @@ class RegistrationBar(QWidget):
         self.measured: list[Point | None] = [None, None]
         row = QHBoxLayout(self)
         row.setContentsMargins(0, 0, 0, 0)
+        self.side_combo = QComboBox()
+        self.side_combo.setObjectName("job_side")
+        self.side_combo.setToolTip(
+            "The bottom side of a double-sided board: the job mirrored about its own extent"
+        )
+        for label, about in (
+            ("Top side", ""),
+            ("Bottom, mirrored in X", "X"),
+            ("Bottom, mirrored in Y", "Y"),
+        ):
+            self.side_combo.addItem(label, about)
+        self.side_combo.activated.connect(self._side_changed)
+        row.addWidget(self.side_combo)
         row.addWidget(QLabel("Register on holes"))
         self.hole_spins: list[QSpinBox] = []
         self.here_buttons: list[QPushButton] = []
@@ -80,7 +93,31 @@ class RegistrationBar(QWidget):
     def set_job(self, program: Program | None) -> None:
         """A job as read from its file: its holes become the choices, measurements are dropped."""
         self.original = program
-        self._holes = reference_holes(program) if program is not None else []
+        self.side_combo.setCurrentIndex(0)
+        self._choose_holes()
+
+    @property
+    def base(self) -> Program | None:
+        """The job on the chosen side (mirrored for the bottom): what registration moves."""
+        about = self.side_combo.currentData()
+        if self.original is None or about not in ("X", "Y"):
+            return self.original
+        return mirrored(self.original, "X" if about == "X" else "Y")
+
+    def _side_changed(self, *_args: object) -> None:
+        try:
+            base = self.base
+        except RegistrationError as exc:
+            self._say(f"cannot mirror: {exc}")
+            self.side_combo.setCurrentIndex(0)
+            return
+        if base is not None:
+            self._load(base)
+            self._choose_holes()
+
+    def _choose_holes(self) -> None:
+        base = self.base
+        self._holes = reference_holes(base) if base is not None else []
         count = len(self._holes)
         for spin in self.hole_spins:
             spin.blockSignals(True)
@@ -108,12 +145,13 @@ class RegistrationBar(QWidget):
 
     def apply(self) -> None:
         first, second = self.measured
-        if self.original is None or first is None or second is None:
+        base = self.base
+        if base is None or first is None or second is None:
             return
         refs = [self._holes[spin.value() - 1] for spin in self.hole_spins]
         try:
             fit = register(refs, [first, second])
-            moved = registered(self.original, fit)
+            moved = registered(base, fit)
         except RegistrationError as exc:
             self._say(f"registration refused: {exc}")
             return
@@ -123,8 +161,10 @@ class RegistrationBar(QWidget):
         self._load(moved)
 
     def clear(self) -> None:
-        if self.original is not None:
-            self._load(self.original)
+        """Back to the job as the file says on the chosen side, unregistered."""
+        base = self.base
+        if base is not None:
+            self._load(base)
         self.measured = [None, None]
         self._update()
 
