@@ -508,5 +508,10 @@ def test_the_bottom_side_loads_the_job_mirrored_about_its_extent_and_back(
         )
         qtbot.keyClick(combo, Qt.Key.Key_Up)  # back to the top side
         assert runner.program is original
+        runner.start()  # the first bit's prompt: the job is under way
+        assert runner.state is JobState.WAITING
+        assert not dock.registration.isEnabled()
+        runner.abort()
+        qtbot.waitUntil(lambda: dock.registration.isEnabled())
     finally:
         drill.close()

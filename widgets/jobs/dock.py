@@ -712,6 +712,8 @@ class JobsDock(QDockWidget):
         can_move = lock is None
         offer = self.runner.resume_available is not None
         self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        # Registering replaces the loaded job: not while it runs.
+        self.registration.setEnabled(state not in ACTIVE_STATES and self._loading is None)
         self.export_button.setEnabled(loaded)
         # With an interrupted run on offer, Run from the start would repeat operations:
         # the operator chooses Resume or Discard first.
