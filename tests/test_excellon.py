@@ -179,9 +179,9 @@ def test_drill_program_waits_for_each_tool_then_moves_and_drills(shared_dir: Pat
     program = build_drill_program(job, mode="drill")
     waits = [op.message for op in program if op.kind is OpKind.WAIT]
     assert waits == [
-        "insert T01, 0.40 mm (10 holes)",
-        "insert T02, 1.00 mm (16 holes)",  # 12 holes + two slots drilled at their ends
-        "insert T03, 3.00 mm (2 holes)",
+        "insert T01, 0.40 mm, 10 holes",
+        "insert T02, 1.00 mm, 16 holes",  # 12 holes + two slots drilled at their ends
+        "insert T03, 3.00 mm, 2 holes",
     ]
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     assert len(drills) == len(job.holes) + 2 * len(job.slots)

@@ -8,6 +8,7 @@ half away from zero), also when the link is cut in the middle of the job.
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from collections.abc import Iterator
 from pathlib import Path
@@ -18,6 +19,7 @@ from pytestqt.qtbot import QtBot
 from app.jobs.estimate.drill import DRILL_CYCLE_S, estimate_drill
 from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.registration import Registration, register, registered
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
@@ -395,3 +397,40 @@ def test_a_silent_link_mid_drill_is_noticed_paused_and_recovered_without_reconne
     assert runner.state is JobState.DONE
     assert drilled(drill) == expected_holes(drill, program)
     assert len(drill.drill_emulator.drill_log) == SAMPLE_HOLES
+
+
+def test_a_registered_board_is_drilled_every_hole_once_at_its_transformed_position(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    """Jogged points → registration → the runner's travel check → holes where the board is."""
+    program = sample_program(shared_dir)
+    # The board lies 1.5° askew, 20 mm right and 15 mm up; the operator "jogs" over two holes.
+    truth = Registration(math.radians(1.5), (20.0, 15.0))
+    moves = [op.target for op in program if op.kind is OpKind.MOVE]
+    refs = [(moves[0]["X"], moves[0]["Y"]), (moves[-1]["X"], moves[-1]["Y"])]
+    fit = register(refs, [truth.apply(*p) for p in refs])
+    board = registered(program, fit)
+
+    assert runner.load(board) == []
+    auto_confirm(runner)
+    runner.start()
+    run_to_end(drill, runner)
+
+    assert runner.state is JobState.DONE
+    expected = expected_holes(drill, board)
+    assert sum(expected.values()) == SAMPLE_HOLES
+    assert drilled(drill) == expected
+    assert expected != expected_holes(drill, program)
+    session = drill.drill_session
+    first = truth.apply(25.654, 11.684)
+    assert (session.to_microsteps(X, first[0]), session.to_microsteps(Y, first[1])) in expected
+
+
+def test_a_registration_that_puts_holes_off_the_bed_is_refused_by_the_travel_check(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir)
+    off_bed = registered(program, Registration(0.0, (-30.0, 0.0)))
+    refused = runner.load(off_bed)
+    assert refused and all(v.axis == "X" and v.value < 0 for v in refused)
+    assert runner.program is None

@@ -345,7 +345,7 @@ def test_the_drill_moves_in_whole_microsteps_and_runs_a_drill_file(
         )
     assert result.operations == 7  # pen/tool operations around the three holes
     assert done == sorted(done) and done[-1] == 7
-    assert asked == ["insert T01, 0.80 mm (3 holes)"]
+    assert asked == ["insert T01, 0.80 mm, 3 holes"]
 
 
 def test_a_gcode_board_moves_through_the_gate_and_homes(qapp: object) -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -13,10 +14,12 @@ from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JOB_LOADERS, load_job, sniff_point_list
 from app.jobs.program import JobFileError, OpKind
+from app.jobs.registration import Registration
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.jobs.dock import JobsDock, clock_text
+from widgets.jobs.registration_bar import reference_holes
 
 LEFT = Qt.MouseButton.LeftButton
 
@@ -415,3 +418,114 @@ def test_no_lone_dash_under_the_progress_bar(dock: JobsDock, tmp_path: Path) -> 
     assert dock.operation_label.text() == ""
     dock.open_path(square(tmp_path))
     assert dock.operation_label.text().startswith("square.csv:1")  # ready: the first shown
+
+
+def test_smallest_bit_first_reloads_the_drill_job_with_the_prompts_by_size(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.show()
+    try:
+        drill.connect()
+        excellon = (
+            "M48\nMETRIC\nT01C1.2\nT02C0.6\nT03C1.2\n%\n"
+            "T01\nX10.0Y10.0\nT02\nX20.0Y15.0\nX30.0Y15.0\nT03\nX40.0Y20.0\nM30\n"
+        )
+        assert dock.open_path(write(tmp_path, "bits.drl", excellon))
+
+        def prompts() -> list[str]:
+            program = runner.program
+            return [op.message for op in program or () if op.kind is OpKind.WAIT]
+
+        assert prompts() == [
+            "insert T01, 1.20 mm, 2 holes (also T03)",
+            "insert T02, 0.60 mm, 2 holes",
+        ]
+        assert "T03 is 1.20 mm like T01" in dock.messages.toPlainText()
+        qtbot.mouseClick(dock.smallest_check, LEFT)
+        qtbot.waitUntil(lambda: prompts()[0].startswith("insert T02"))
+        assert prompts() == [
+            "insert T02, 0.60 mm, 2 holes",
+            "insert T01, 1.20 mm, 2 holes (also T03)",
+        ]
+        assert dock.option_values()["smallest_first"] is True
+    finally:
+        drill.close()
+
+
+def test_registering_on_two_jogged_holes_loads_the_job_moved_onto_the_board(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """Jog over two holes, press Here for each, Register: every hole moves with the board."""
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.show()
+    try:
+        drill.connect()
+        session = drill.drill_session
+        for axis in (0, 1):
+            assert session.home(axis)
+            drill.run_until(lambda: not session.busy, timeout=60)
+        excellon = "M48\nMETRIC\nT01C0.8\n%\nT01\nX10.0Y10.0\nX60.0Y10.0\nX30.0Y40.0\nM30\n"
+        assert dock.open_path(write(tmp_path, "reg.drl", excellon))
+        original = runner.program
+        assert original is not None and dock.registration.isVisible()
+        assert not dock.registration.register_button.isEnabled()
+        holes = reference_holes(original)
+        refs = [holes[spin.value() - 1] for spin in dock.registration.hole_spins]
+        truth = Registration(math.radians(2.0), (20.0, 15.0))
+        for k, hole in enumerate(refs):
+            x, y = truth.apply(*hole)
+            assert session.move_absolute(0, x) and session.move_absolute(1, y)
+            drill.run_until(lambda: not session.busy, timeout=60)
+            qtbot.mouseClick(dock.registration.here_buttons[k], LEFT)
+        qtbot.mouseClick(dock.registration.register_button, LEFT)
+
+        moved = runner.program
+        assert moved is not None and moved is not original
+        assert "registered: rotation +2.0" in dock.messages.toPlainText()
+        # Jogging lands on whole microsteps (~0.05 mm): every hole within that of the truth.
+        for hole, where in zip(reference_holes(original), reference_holes(moved), strict=True):
+            assert math.dist(truth.apply(*hole), where) < 0.1
+        qtbot.mouseClick(dock.registration.clear_button, LEFT)
+        assert runner.program is original
+    finally:
+        drill.close()
+
+
+def test_the_bottom_side_loads_the_job_mirrored_about_its_extent_and_back(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    drill = StationHarness(load_profile("pcb-drill"))
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    dock = JobsDock(drill.station, runner, throttle_ms=0)
+    qtbot.addWidget(dock)
+    dock.show()
+    try:
+        drill.connect()
+        excellon = "M48\nMETRIC\nT01C0.8\n%\nT01\nX10.0Y10.0\nX60.0Y10.0\nX30.0Y40.0\nM30\n"
+        assert dock.open_path(write(tmp_path, "side.drl", excellon))
+        original = runner.program
+        assert original is not None
+        combo = dock.registration.side_combo
+        combo.setFocus()
+        qtbot.keyClick(combo, Qt.Key.Key_Down)  # "Bottom, mirrored in X"
+        flipped = runner.program
+        assert flipped is not None and combo.currentData() == "X"
+        assert sorted(reference_holes(flipped)) == sorted(
+            [(60.0, 10.0), (10.0, 10.0), (40.0, 40.0)]
+        )
+        qtbot.keyClick(combo, Qt.Key.Key_Up)  # back to the top side
+        assert runner.program is original
+        runner.start()  # the first bit's prompt: the job is under way
+        assert runner.state is JobState.WAITING
+        assert not dock.registration.isEnabled()
+        runner.abort()
+        qtbot.waitUntil(lambda: dock.registration.isEnabled())
+    finally:
+        drill.close()

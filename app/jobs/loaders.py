@@ -25,6 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Literal
 
 from app.jobs.formats.excellon.reader import (
     build_drill_program,
@@ -54,6 +55,8 @@ class JobOptions:
 
     draw: bool = False  # drill files: draw each hole with the pen instead of drilling it
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
+    #: Drill files: prompt the bits smallest first instead of in the file's tool order.
+    smallest_first: bool = False
     #: G-code: pen lines of another flavour are sent as the machine's own pen commands.
     translate_pen: bool = True
     #: G-code: lines the machine cannot execute become comments instead of refusing the job.
@@ -209,9 +212,8 @@ def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
         raise JobFileError(path.name, 0, "a drill job needs a machine with X and Y axes")
     job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
     axes = (axis_names[0], axis_names[1])
-    if options.draw:
-        return build_drill_program(job, mode="draw", axes=axes)
-    return build_drill_program(job, mode="drill", axes=axes)
+    mode: Literal["drill", "draw"] = "draw" if options.draw else "drill"
+    return build_drill_program(job, mode=mode, axes=axes, smallest_first=options.smallest_first)
 
 
 EXCELLON = register_loader(

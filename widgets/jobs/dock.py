@@ -60,6 +60,7 @@ from app.jobs.reading import read_job_text
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
+from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
@@ -169,6 +170,8 @@ class JobsDock(QDockWidget):
         layout.setSpacing(4)
         layout.addLayout(self._build_toolbar())
         layout.addLayout(self._build_options())
+        self.registration = RegistrationBar(station, self._load_registered, self.say)
+        layout.addWidget(self.registration)
         layout.addWidget(self._build_resume_offer())
         layout.addWidget(self._build_prompt())
         layout.addWidget(self.preview, 1)
@@ -219,6 +222,11 @@ class JobsDock(QDockWidget):
         self.draw_check.setToolTip(
             "Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling"
         )
+        self.smallest_check = QCheckBox("Smallest bit first")
+        self.smallest_check.setObjectName("job_smallest_first")
+        self.smallest_check.setToolTip(
+            "Drill files: the bit changes ordered from the smallest drill to the largest"
+        )
         self.step_combo = QComboBox()
         self.step_combo.setObjectName("job_excellon_step")
         for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
@@ -231,6 +239,7 @@ class JobsDock(QDockWidget):
         step.addWidget(self.step_combo)
         step.addStretch(1)
         self.draw_check.toggled.connect(self._options_changed)
+        self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
         # G-code files: other flavours' pen commands, and lines the machine cannot run.
         self.translate_pen_check = QCheckBox("Use this machine's pen commands")
@@ -252,6 +261,7 @@ class JobsDock(QDockWidget):
         # refused whatever these say, so they are not offered.
         holes = pen or self.station.profile.capabilities.drill
         self.draw_check.setVisible(holes)
+        self.smallest_check.setVisible(self.station.profile.capabilities.drill)
         self.step_label.setVisible(holes)
         self.step_combo.setVisible(holes)
         for check, visible in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
@@ -261,8 +271,9 @@ class JobsDock(QDockWidget):
         # pages on a 1280 px screen, so no option may set a width of its own.
         grid.addWidget(self.draw_check, 0, 0)
         grid.addLayout(step, 0, 1)
-        grid.addWidget(self.translate_pen_check, 1, 0)
-        grid.addWidget(self.skip_check, 1, 1)
+        grid.addWidget(self.smallest_check, 1, 0)
+        grid.addWidget(self.translate_pen_check, 2, 0)
+        grid.addWidget(self.skip_check, 2, 1)
         grid.setColumnStretch(2, 1)  # spare width beside, so a click on a check's caption hits it
         return grid
 
@@ -270,6 +281,7 @@ class JobsDock(QDockWidget):
         """The operator's reading options, to keep across launches (the main window stores)."""
         return {
             "draw": self.draw_check.isChecked(),
+            "smallest_first": self.smallest_check.isChecked(),
             "excellon_step_inch": float(self.step_combo.currentData()),
             "translate_pen": self.translate_pen_check.isChecked(),
             "skip_unsupported": self.skip_check.isChecked(),
@@ -279,6 +291,7 @@ class JobsDock(QDockWidget):
         """Set the reading options from ``values`` (unknown or malformed entries are ignored)."""
         checks = {
             "draw": self.draw_check,
+            "smallest_first": self.smallest_check,
             "translate_pen": self.translate_pen_check,
             "skip_unsupported": self.skip_check,
         }
@@ -301,6 +314,7 @@ class JobsDock(QDockWidget):
         profile = self.station.profile
         return JobOptions(
             draw=self.draw_check.isChecked(),
+            smallest_first=self.smallest_check.isChecked(),
             excellon_step_inch=float(self.step_combo.currentData()),
             translate_pen=self.translate_pen_check.isChecked(),
             skip_unsupported=self.skip_check.isChecked(),
@@ -589,7 +603,9 @@ class JobsDock(QDockWidget):
             self.preview.set_program(program)
             self.file_label.setText(f"{_bold(program.name)} — refused, preview only")
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
+            self.registration.set_job(None)
             return False
+        self.registration.set_job(program)
         self.say(f"{shown(path.name)}: {len(program)} operations loaded")
         self.jobOpened.emit(path)
         notes = list(program.notes)
@@ -602,6 +618,13 @@ class JobsDock(QDockWidget):
         for note in notes:
             self.say(f"{shown(path.name)}: {note}")
         self._program_changed()
+        return True
+
+    def _load_registered(self, program: Program) -> bool:
+        """A registered (or cleared) job replaces the loaded one; the runner checks its travel."""
+        if self.runner.load(program):
+            return False  # the runner listed the holes off the bed
+        self.say(f"{program.name}: {program.notes[-1] if program.notes else 'loaded'}")
         return True
 
     def ask_export(self) -> None:
@@ -728,6 +751,8 @@ class JobsDock(QDockWidget):
         can_move = lock is None
         offer = self.runner.resume_available is not None
         self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        # Registering replaces the loaded job: not while it runs.
+        self.registration.setEnabled(state not in ACTIVE_STATES and self._loading is None)
         self.export_button.setEnabled(loaded)
         # With an interrupted run on offer, Run from the start would repeat operations:
         # the operator chooses Resume or Discard first.

@@ -46,6 +46,7 @@ from gerbonara.excellon import ExcellonParser
 from gerbonara.graphic_objects import Arc, Flash, Line
 from gerbonara.utils import MM, Inch
 
+from app.jobs.formats.excellon.bits import plan_bits
 from app.jobs.formats.excellon.hole_order import order_holes
 from app.jobs.names import quoted, shown
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
@@ -546,18 +547,25 @@ def sniff_dri(head: str) -> bool:
 
 @dataclass(frozen=True)
 class ToolPlan:
-    """One tool's holes in drilling order, with the travel that order saves."""
+    """One bit's holes in drilling order, with the travel that order saves.
+
+    ``tool`` is the tool the operator is asked for; ``also`` names the
+    duplicate tools (same diameter) whose holes are drilled with its bit.
+    """
 
     tool: Tool
     holes: tuple[Hole, ...]
     file_travel_mm: float
     travel_mm: float
+    also: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class DrillPlan:
     job: DrillJob
     tools: tuple[ToolPlan, ...] = field(default_factory=tuple)
+    #: Duplicate tools and tools without a diameter, "file:line: text" (see bits.py).
+    flags: tuple[str, ...] = ()
 
     @property
     def file_travel_mm(self) -> float:
@@ -568,29 +576,56 @@ class DrillPlan:
         return sum(t.travel_mm for t in self.tools)
 
 
-def plan_drilling(job: DrillJob, *, start: tuple[float, float] = (0.0, 0.0)) -> DrillPlan:
-    """Holes grouped by tool (file order of tools), each group's order optimised.
+def _holes_of(job: DrillJob, tool: str) -> list[Hole]:
+    """The tool's holes, each slot as its two end holes (a drill cannot rout)."""
+    holes = job.holes_for(tool)
+    for slot in job.slots:
+        if slot.tool == tool:
+            holes.append(Hole(slot.x0_mm, slot.y0_mm, slot.tool, slot.diameter_mm, slot.source))
+            holes.append(Hole(slot.x1_mm, slot.y1_mm, slot.tool, slot.diameter_mm, slot.source))
+    return holes
 
-    Slots are drilled as their two end holes (a drill cannot rout): each end
-    becomes a hole on the slot's line, so the operator sees where it came
-    from and the preview still shows the slot.  Each tool's tour starts where
-    the previous one ended, as the machine will.
+
+def plan_drilling(
+    job: DrillJob, *, start: tuple[float, float] = (0.0, 0.0), smallest_first: bool = False
+) -> DrillPlan:
+    """Holes grouped by bit (file order of tools, or smallest first), each group's order optimised.
+
+    Slots are drilled as their two end holes: each end becomes a hole on
+    the slot's line, so the operator sees where it came from and the
+    preview still shows the slot.  Tools of one diameter share a bit and a
+    prompt; a tool without a diameter is flagged and left out (bits.py).
+    Each bit's tour starts where the previous one ended, as the machine will.
     """
+    holes_by_tool = {t.name: _holes_of(job, t.name) for t in job.tools}
+    bits = plan_bits(
+        [(t.name, t.diameter_mm, str(t.source)) for t in job.tools],
+        {name: len(holes) for name, holes in holes_by_tool.items()},
+        smallest_first=smallest_first,
+    )
     plans: list[ToolPlan] = []
     here = start
-    for tool in job.tools:
-        holes = job.holes_for(tool.name)
-        for slot in job.slots:
-            if slot.tool == tool.name:
-                holes.append(Hole(slot.x0_mm, slot.y0_mm, slot.tool, slot.diameter_mm, slot.source))
-                holes.append(Hole(slot.x1_mm, slot.y1_mm, slot.tool, slot.diameter_mm, slot.source))
-        if not holes:
-            continue
+    for group in bits.groups:
+        holes = [h for name in group.tools for h in holes_by_tool[name]]
         result = order_holes([(h.x_mm, h.y_mm) for h in holes], start=here)
         ordered = tuple(holes[i] for i in result.order)
-        plans.append(ToolPlan(tool, ordered, result.file_length, result.length))
+        plans.append(
+            ToolPlan(
+                job.tool(group.tool), ordered, result.file_length, result.length, group.tools[1:]
+            )
+        )
         here = (ordered[-1].x_mm, ordered[-1].y_mm)
-    return DrillPlan(job, tuple(plans))
+    return DrillPlan(job, tuple(plans), bits.flags)
+
+
+def bit_prompt(plan: ToolPlan, verb: str = "insert") -> str:
+    """What the operator reads at a bit change: "insert T02, 0.80 mm, 34 holes"."""
+    count = len(plan.holes)
+    also = f" (also {', '.join(plan.also)})" if plan.also else ""
+    return (
+        f"{verb} {plan.tool.name}, {plan.tool.diameter_mm:.2f} mm, "
+        f"{count} hole{'s' if count != 1 else ''}{also}"
+    )
 
 
 def build_drill_program(
@@ -599,14 +634,15 @@ def build_drill_program(
     mode: Literal["drill", "draw"] = "drill",
     start: tuple[float, float] = (0.0, 0.0),
     axes: tuple[str, str] = ("X", "Y"),
+    smallest_first: bool = False,
 ) -> Program:
-    """The job as operations: per tool a WAIT to insert it, then MOVE + DRILL per hole.
+    """The job as operations: per bit a WAIT to insert it, then MOVE + DRILL per hole.
 
     In draw mode each hole becomes a pen cross as wide as the hole (the
     machine tries the job on paper before a board is risked).  Every
     operation keeps its hole's file line.
     """
-    plan = plan_drilling(job, start=start)
+    plan = plan_drilling(job, start=start, smallest_first=smallest_first)
     ax, ay = axes
     ops: list[Operation] = []
 
@@ -616,14 +652,7 @@ def build_drill_program(
     for tool_plan in plan.tools:
         tool = tool_plan.tool
         verb = "insert" if mode == "drill" else "pen for"
-        ops.append(
-            Operation(
-                OpKind.WAIT,
-                tool.source,
-                message=f"{verb} {tool.name}, {tool.diameter_mm:.2f} mm "
-                f"({len(tool_plan.holes)} holes)",
-            )
-        )
+        ops.append(Operation(OpKind.WAIT, tool.source, message=bit_prompt(tool_plan, verb)))
         for hole in tool_plan.holes:
             where = hole.source
             if mode == "drill":
@@ -648,4 +677,4 @@ def build_drill_program(
     # gerbonara's warnings and our remarks, "line: text", as file:line: text for the operator.
     name = shown(job.path.name)
     remarks = tuple(f"{name}:{text.replace(': ', ': warning: ', 1)}" for text in job.notes)
-    return Program(job.name, tuple(ops), job.path, notes=(*remarks, note))
+    return Program(job.name, tuple(ops), job.path, notes=(*remarks, *plan.flags, note))
