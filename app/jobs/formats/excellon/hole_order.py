@@ -28,6 +28,8 @@ Points = Sequence[tuple[float, float]] | npt.NDArray[np.float64]
 
 NEIGHBOURS = 10  # candidates per hole for nearest-neighbour steps, 2-opt and Or-opt moves
 MAX_POPS_PER_HOLE = 200  # bounds the local search on pathological input; real boards stop far sooner
+KICK_WORK = 1_000_000  # kicks x holes: each kick may copy the tour back, so big boards get fewer
+KICKS_PER_HOLE = 20  # small boards: enough kicks to settle, few enough to stay in milliseconds
 _EPS = 1e-9
 
 
@@ -67,7 +69,8 @@ def order_holes(
     cell, cells = _grid(pts, 2.0)
     first = int(np.argmin(np.hypot(pts[:, 0] - start[0], pts[:, 1] - start[1])))
     tour = tour_kernels.nearest_neighbour(xs, ys, neighbours, cells, cell, first)
-    tour = tour_kernels.local_search(xs, ys, neighbours, tour, MAX_POPS_PER_HOLE * n)
+    kicks = min(KICKS_PER_HOLE * n, KICK_WORK // n)
+    tour = tour_kernels.local_search(xs, ys, neighbours, tour, MAX_POPS_PER_HOLE * n, kicks, 0)
     length = travel_length(pts[tour], start)
     if length >= file_length:
         return OrderResult(tuple(range(n)), file_length, file_length)

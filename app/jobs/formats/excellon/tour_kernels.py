@@ -183,30 +183,23 @@ def _move_segment(t: IntArray, pos: IntArray, i: int, e: int, k: int, rev: bool)
 
 
 @_jit
-def local_search(
-    xs: FloatArray, ys: FloatArray, neighbours: IntArray, tour: IntArray, max_pops: int
-) -> IntArray:
-    """2-opt and Or-opt (segments of 1-3 holes, either way round) with neighbour lists.
-
-    Only moves that make a hole adjacent to one of its listed neighbours are
-    tried, and a work queue revisits only holes whose edges changed, so one
-    pass costs O(n·k) and the whole search is near-linear.  ``max_pops``
-    bounds the worst case.
-    """
-    n = tour.shape[0]
+def _improve(
+    xs: FloatArray,
+    ys: FloatArray,
+    neighbours: IntArray,
+    t: IntArray,
+    pos: IntArray,
+    queue: IntArray,
+    queued: npt.NDArray[np.bool_],
+    head: int,
+    tail: int,
+    max_pops: int,
+) -> float:
+    """Apply improving moves for the queued holes until none is left; return the total gain."""
+    n = t.shape[0] - 1
     last = n
-    t = np.empty(n + 1, dtype=np.int64)
-    t[0] = n
-    t[1:] = tour
-    pos = np.empty(n + 1, dtype=np.int64)
-    for p in range(n + 1):
-        pos[t[p]] = p
-    queue = np.empty(n, dtype=np.int64)
-    queued = np.ones(n, dtype=np.bool_)
-    for p in range(n):
-        queue[p] = tour[p]
-    head, tail = 0, n
     pops = 0
+    total = 0.0
     while head < tail and pops < max_pops:
         a = queue[head % n]
         head += 1
@@ -250,6 +243,7 @@ def local_search(
                 pos[t[hi]] = hi
                 lo += 1
                 hi -= 1
+            total += best_gain
             improved = True
             break
         if improved:
@@ -285,5 +279,88 @@ def local_search(
         if bk < last:
             tail = _push(t[bk + 1], n, queue, queued, tail)
         _move_segment(t, pos, bi, be, bk, brev)
+        total += best_gain
         tail = _push(a, n, queue, queued, tail)
+    while head < tail:  # out of pops: leave the queue clean for the next call
+        queued[queue[head % n]] = False
+        head += 1
+    return total
+
+
+@_jit
+def _path_length(xs: FloatArray, ys: FloatArray, t: IntArray) -> float:
+    total = 0.0
+    for p in range(t.shape[0] - 1):
+        total += _dist(xs, ys, t[p], t[p + 1])
+    return total
+
+
+@_jit
+def local_search(
+    xs: FloatArray,
+    ys: FloatArray,
+    neighbours: IntArray,
+    tour: IntArray,
+    max_pops: int,
+    kicks: int,
+    seed: int,
+) -> IntArray:
+    """2-opt and Or-opt (segments of 1-3 holes, either way round) with neighbour lists, then kicks.
+
+    Only moves that make a hole adjacent to one of its listed neighbours are
+    tried, and a work queue revisits only holes whose edges changed, so one
+    pass costs O(n·k) and the whole search is near-linear; ``max_pops``
+    bounds the worst case.  Each of the ``kicks`` then swaps two short
+    neighbouring stretches of the tour (a local double bridge, which 2-opt
+    and Or-opt cannot undo in one move), repairs around it, and keeps the
+    result only if the path got shorter: iterated local search, which closes
+    most of the gap left to a full solver on board-sized problems.
+    """
+    n = tour.shape[0]
+    t = np.empty(n + 1, dtype=np.int64)
+    t[0] = n
+    t[1:] = tour
+    pos = np.empty(n + 1, dtype=np.int64)
+    for p in range(n + 1):
+        pos[t[p]] = p
+    queue = np.empty(n, dtype=np.int64)
+    queued = np.ones(n, dtype=np.bool_)
+    for p in range(n):
+        queue[p] = tour[p]
+    _improve(xs, ys, neighbours, t, pos, queue, queued, 0, n, max_pops)
+    if kicks <= 0 or n < 8:
+        return t[1:].copy()
+    np.random.seed(seed)
+    length = _path_length(xs, ys, t)
+    saved_t = t.copy()
+    saved_pos = pos.copy()
+    for _ in range(kicks):
+        # positions 1 <= p1 < p2 < p3 <= n: t[p1..p2-1] and t[p2..p3-1] swap places
+        span = min(n - 1, 30)
+        p1 = np.random.randint(1, n - span + 1)
+        a = np.random.randint(1, span)
+        b = np.random.randint(a + 1, span + 1)
+        p2, p3 = p1 + a, p1 + b
+        before = _dist(xs, ys, t[p1 - 1], t[p1]) + _dist(xs, ys, t[p2 - 1], t[p2])
+        after = _dist(xs, ys, t[p1 - 1], t[p2]) + _dist(xs, ys, t[p3 - 1], t[p1])
+        if p3 <= n:  # always, as drawn: the last hole stays last
+            before += _dist(xs, ys, t[p3 - 1], t[p3])
+            after += _dist(xs, ys, t[p2 - 1], t[p3])
+        window = np.concatenate((t[p2:p3], t[p1:p2]))
+        t[p1:p3] = window
+        for p in range(p1, p3):
+            pos[t[p]] = p
+        tail = 0
+        for p in (p1 - 1, p1, p1 + (p3 - p2) - 1, p1 + (p3 - p2), p3 - 1, p3):
+            if 0 <= p <= n:
+                tail = _push(t[p], n, queue, queued, tail)
+        gain = _improve(xs, ys, neighbours, t, pos, queue, queued, 0, tail, 50 * n)
+        candidate = length - (before - after) - gain
+        if candidate < length - _EPS:
+            length = candidate
+            saved_t[:] = t
+            saved_pos[:] = pos
+        else:
+            t[:] = saved_t
+            pos[:] = saved_pos
     return t[1:].copy()
