@@ -1,4 +1,4 @@
-"""Drill hole order figures for ``tests/benchmark.py``: speed at 50 000 holes, quality on real boards.
+"""Drill hole order figures for ``tests/benchmark.py``: speed at 50 000 holes, quality on boards.
 
 The quality peer is Google OR-Tools' routing solver with guided local
 search, 3 s per tool, on the same open path from the same start (the
@@ -40,7 +40,7 @@ def _ortools_length(points: np.ndarray, start: tuple[float, float], seconds: int
         a, b = manager.IndexToNode(i), manager.IndexToNode(j)
         if b == 0:
             return 0  # the drill does not return: an open path is a tour with a free last edge
-        return int(round(scale * float(np.hypot(xs[a] - xs[b], ys[a] - ys[b]))))
+        return round(scale * float(np.hypot(xs[a] - xs[b], ys[a] - ys[b])))
 
     callback = routing.RegisterTransitCallback(cost)
     routing.SetArcCostEvaluatorOfAllVehicles(callback)
@@ -63,7 +63,7 @@ def _ortools_length(points: np.ndarray, start: tuple[float, float], seconds: int
 
 
 def bench_drill_order_quality() -> list[str]:
-    """Per real board: StepDeck's travel against OR-Tools (GLS, 3 s per tool) from the same starts."""
+    """Per real board: StepDeck's travel against OR-Tools (GLS, 3 s a tool), same starts."""
     from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
     boards = sorted((ROOT.parent / "shared" / "realdata" / "excellon").iterdir())
@@ -114,7 +114,7 @@ def bench_drill_order_50k() -> list[str]:
         samples.append(time.perf_counter() - started)
     mode = "compiled" if tour_kernels.COMPILED else "NOT compiled (numba missing)"
     return [
-        f"drill order 50,000 holes (5 tools x 10,000 on 300x300 mm): {min(samples):.2f} s best of 3 "
-        f"(goal <= 0.5 s), travel {travel:,.0f} mm; kernels {mode}, first use "
+        f"drill order 50,000 holes (5 tools x 10,000 on 300x300 mm): {min(samples):.2f} s "
+        f"best of 3 (goal <= 0.5 s), travel {travel:,.0f} mm; kernels {mode}, first use "
         f"{first_use:.2f} s {_load()}"
     ]

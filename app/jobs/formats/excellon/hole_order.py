@@ -27,7 +27,7 @@ from app.jobs.formats.excellon import tour_kernels
 Points = Sequence[tuple[float, float]] | npt.NDArray[np.float64]
 
 NEIGHBOURS = 10  # candidates per hole for nearest-neighbour steps, 2-opt and Or-opt moves
-MAX_POPS_PER_HOLE = 200  # bounds the local search on pathological input; real boards stop far sooner
+MAX_POPS_PER_HOLE = 200  # bounds the search on pathological input; real boards stop far sooner
 KICK_WORK = 1_000_000  # kicks x holes: each kick may copy the tour back, so big boards get fewer
 KICKS_PER_HOLE = 20  # small boards: enough kicks to settle, few enough to stay in milliseconds
 _EPS = 1e-9

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -26,7 +26,7 @@ try:
     from numba import njit as _njit
 
     def _jit(function: F) -> F:
-        return _njit(cache=True, nogil=True)(function)  # type: ignore[no-any-return]
+        return cast(F, _njit(cache=True, nogil=True)(function))
 
     COMPILED = True
 except ImportError:  # pragma: no cover - depends on the platform's wheels
