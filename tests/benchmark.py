@@ -21,6 +21,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from protocol.clock import ManualClock  # noqa: E402
+from tests.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
 from tests.bench_string_art_generator import bench_string_art_generator  # noqa: E402
 
@@ -833,6 +834,8 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_job_preview,
     bench_dry_run,
     bench_drill_order,
+    bench_drill_order_50k,
+    bench_drill_order_quality,
     bench_string_art,
     bench_gcode_load_1m,
     bench_string_art_2m,

@@ -26,6 +26,18 @@ ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared"
 
 
+def pytest_sessionstart(session: pytest.Session) -> None:
+    """Compile the hole-order kernels before any test runs (once per checkout; then cached).
+
+    numba compiles on first use, which in a fresh checkout takes seconds to
+    tens of seconds on a busy machine; inside a widget test that waits a few
+    seconds for a drill job to load, that first use would look like a hang.
+    """
+    from app.jobs.formats.excellon.hole_order import order_holes
+
+    order_holes([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)])
+
+
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
         if {"qapp", "qtbot"} & set(getattr(item, "fixturenames", ())):
