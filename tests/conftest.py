@@ -33,9 +33,9 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     tens of seconds on a busy machine; inside a widget test that waits a few
     seconds for a drill job to load, that first use would look like a hang.
     """
-    from app.jobs.formats.excellon.hole_order import order_holes
+    from app.jobs.formats.excellon.hole_order import compile_kernels
 
-    order_holes([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)])
+    compile_kernels()
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:

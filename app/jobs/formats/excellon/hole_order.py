@@ -100,3 +100,18 @@ def _neighbour_lists(pts: npt.NDArray[np.float64], k: int) -> npt.NDArray[np.int
     index = np.asarray(index, dtype=np.int64).reshape(n, take)
     index[index >= n] = -1
     return np.ascontiguousarray(index)
+
+
+def compile_kernels() -> None:
+    """Compile (or load from numba's cache) the ordering kernels now, on a tiny board.
+
+    The first use in a fresh install compiles them, which takes tens of seconds
+    on a slow machine: the install command and the test session do it up
+    front, so an operator's first drill file loads at once.
+    """
+    order_holes([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)])
+
+
+if __name__ == "__main__":
+    compile_kernels()
+    print("hole-order kernels ready")
