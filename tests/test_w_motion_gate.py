@@ -150,3 +150,53 @@ def test_the_jog_pad_names_the_machines_own_axes(qtbot: QtBot) -> None:
         assert not any("Y" in text for text in labels.values())
     finally:
         harness.close()
+
+
+def _held_button_jog(
+    qtbot: QtBot, mouse_says_held: bool, monkeypatch: pytest.MonkeyPatch
+) -> tuple[StationHarness, MainWindow]:
+    """A jog button pressed and its release never delivered; the mouse's state as given."""
+    import widgets.jog_input as jog_input
+
+    buttons = Qt.MouseButton.LeftButton if mouse_says_held else Qt.MouseButton.NoButton
+
+    class _Mouse:
+        @staticmethod
+        def mouseButtons() -> Qt.MouseButton:
+            return buttons
+
+    monkeypatch.setattr(jog_input, "QGuiApplication", _Mouse)
+    harness = StationHarness(load_profile("xy-stage"))
+    window = MainWindow(harness.station, None)
+    qtbot.addWidget(window)
+    window.show()
+    harness.connect()
+    harness.run(2.5)
+    window.manual_panel.jog_buttons[(1, 0)].pressed.emit()  # pressed; no release follows
+    assert harness.session.jog_vector == (1, 0)
+    for _ in range(12):  # 1.2 s of station time, with the real-time button poll running
+        harness.run(0.1)
+        qtbot.wait(jog_input.BUTTON_POLL_MS // 2)
+    return harness, window
+
+
+def test_a_held_button_the_mouse_no_longer_holds_ends_its_jog(
+    qtbot: QtBot, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    harness, window = _held_button_jog(qtbot, False, monkeypatch)
+    try:
+        assert harness.session.jog_vector == (0, 0)  # the dead-man ended it
+        assert window.jog.vector == (0, 0)  # and the window let go of the button
+    finally:
+        harness.close()
+
+
+def test_a_button_the_mouse_still_holds_keeps_jogging(
+    qtbot: QtBot, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    harness, _ = _held_button_jog(qtbot, True, monkeypatch)
+    try:
+        assert harness.session.jog_vector == (1, 0)
+    finally:
+        harness.session.set_jog((0, 0))
+        harness.close()
