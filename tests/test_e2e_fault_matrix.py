@@ -86,6 +86,8 @@ class Dialect:
     ran: Callable[[list[str], Program, int, Station], bool]
     ignored_to_device: frozenset[int] = frozenset()
     prepare: Callable[[QtBot, Station], None] = lambda qtbot, station: None
+    #: The stage's command period (``--period``): the station judges a move by its echoes.
+    period_ms: int | None = None
 
 
 def _k(program: Program) -> int:
@@ -277,7 +279,7 @@ def _gcode(profile: str) -> Dialect:
 
 # --- the XY stage ------------------------------------------------------------------------
 
-STAGE_TARGETS = [(10.0, 10.0), (20.0, 5.0), None, (30.0, 15.0), (5.0, 25.0)]
+STAGE_TARGETS = [(10.0, 10.0), None, (30.0, 15.0), (5.0, 25.0)]
 USB3_TARGETS = [(0.25, 0.5), (0.75, 0.25), None, (0.5, 1.0), (0.25, 0.75)]
 
 
@@ -303,6 +305,8 @@ def _stage_watch(phase: str, program: Program, k: int, station: Station) -> Watc
     target = program[k].target
     wanted = {0: _um(target["X"]), 1: _um(target["Y"])}
     seen = {0: False, 1: False}
+    where: dict[int, int] = {}
+    still = {0: False, 1: False}
 
     def watch(direction: Direction, message: bytes) -> Action | None:
         frame = parse_line(message + b"\n", 2)
@@ -319,11 +323,14 @@ def _stage_watch(phase: str, program: Program, k: int, station: Station) -> Watc
                         return Action.PASS
             return None
         if phase == "done" and isinstance(frame, EchoFrame) and all(seen.values()):
-            there = all(
-                p.type == EchoType.POSITION and p.data == wanted[a] and p.status not in STAGE_MOVING
-                for a, p in enumerate(frame.packets[:2])
-            )
-            return Action.DROP if there else None
+            # A packet is a position only every few frames (the others carry parameters),
+            # but every packet tells its axis's status.
+            for axis, packet in enumerate(frame.packets[:2]):
+                if packet.type == EchoType.POSITION:
+                    where[axis] = packet.data
+                still[axis] = packet.status not in STAGE_MOVING
+            if where == wanted and all(still.values()):
+                return Action.DROP
         return None
 
     return watch
@@ -356,6 +363,7 @@ STAGE = Dialect(
     _stage_watch,
     _stage_check,
     lambda lines, program, k, station: pytest.fail("the stage rule never asks the operator"),
+    period_ms=40,
 )
 
 
@@ -495,13 +503,14 @@ def emulators(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Emulators]:
 @pytest.fixture
 def short_timeouts(monkeypatch: pytest.MonkeyPatch) -> None:
     """Liveness in about a second instead of several: the matrix has many silences to sit out."""
+    monkeypatch.setattr("app.machines.drill.session.RECEIPT_TIMEOUT_S", 0.6)
     monkeypatch.setattr("app.machines.drill.session.DONE_FACTOR", 1.2)
-    monkeypatch.setattr("app.machines.drill.session.DONE_MARGIN_S", 1.0)
+    monkeypatch.setattr("app.machines.drill.session.DONE_MARGIN_S", 0.6)
     monkeypatch.setattr("app.machines.gcode.session.SILENCE_S", 0.8)
     monkeypatch.setattr("app.machines.stage.session.LOST_AFTER_S", 0.8)
-    monkeypatch.setattr("app.machines.usb3.session.POLL_AFTER_S", 0.4)
-    monkeypatch.setattr("app.machines.usb3.session.STALE_AFTER_S", 0.6)
-    monkeypatch.setattr("app.machines.usb3.session.LOST_AFTER_S", 1.2)
+    monkeypatch.setattr("app.machines.usb3.session.POLL_AFTER_S", 0.3)
+    monkeypatch.setattr("app.machines.usb3.session.STALE_AFTER_S", 0.5)
+    monkeypatch.setattr("app.machines.usb3.session.LOST_AFTER_S", 0.8)
 
 
 def _log_since(log: Path, offset: int) -> list[str]:
@@ -539,6 +548,8 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
     )
     station = Station(load_profile(profile))
     station.reconnect_delays = (0.1, 0.2, 0.4)
+    if dialect.period_ms is not None:
+        station.set_period_ms(dialect.period_ms)
     messages: list[str] = []
     try:
         station.model.message.connect(messages.append)
