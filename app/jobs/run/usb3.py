@@ -44,6 +44,9 @@ class Usb3Driver(SequentialDriver):
         #: move (or the question) went out.
         self._heard: dict[int, tuple[float, float]] = {}
         self._since: float | None = None  # station-clock time the move or question went out
+        #: Station-clock time the unit was asked where it stands because it fell silent short
+        #: of the end: its answer, not the silence, says whether it stopped short.
+        self._short_asked_at: float | None = None
         #: The last position each axis reported.  A report is judged as it is decoded, before
         #: the session folds it into the model, so the model lags by the report under judgement.
         self._last: dict[int, float] = {}
@@ -101,6 +104,7 @@ class Usb3Driver(SequentialDriver):
         self._expected = {axis: self._start[axis] + d for axis, d in moves.items()}
         self._heard = {}
         self._since = self.station.clock.now()
+        self._short_asked_at = None
         for axis, delta in moves.items():
             if not session.move_relative(axis, delta, start=start[axis]):
                 self._forget_move()
@@ -121,6 +125,7 @@ class Usb3Driver(SequentialDriver):
         self._start = {}
         self._heard = {}
         self._since = self.station.clock.now()
+        self._short_asked_at = None
         self.runner.note(f"Asking the unit where it stands ({op.source}, {op.describe()})…")
         session.request_positions(list(self._expected))
 
@@ -136,6 +141,7 @@ class Usb3Driver(SequentialDriver):
         self._start = {}
         self._heard = {}
         self._since = None
+        self._short_asked_at = None
 
     # --- replies ------------------------------------------------------------------
 
@@ -209,11 +215,35 @@ class Usb3Driver(SequentialDriver):
         # that left it before the move arrived still shows the old position.
         if not self._heard_news() or not self._silent():
             return
+        if not self._asked_after_silence():
+            return
         self._forget_move()
         self._verify = True
         self.runner.stop_short(
             f"The unit stopped short at {self._source(index)}; resume moves it on to the target"
         )
+
+    def _asked_after_silence(self) -> bool:
+        """Whether the unit, silent short of the end, has said so itself when asked.
+
+        Silence alone cannot tell a unit that stopped short from a link that went
+        silent (a lost last report, a pulled cable): the unit is asked where it
+        stands (a move of nothing, which reports), and only its answer, once it is
+        silent again, is taken as a stop.  Unanswered, the link's liveness declares
+        it lost and the job pauses for that; only a unit that goes on answering
+        nothing else past :data:`ANSWER_TIMEOUT_S` is taken as stopped.
+        """
+        session = self._session
+        now = self.station.clock.now()
+        asked = self._short_asked_at
+        if asked is None:
+            if session is None:
+                return True
+            self._short_asked_at = now
+            session.request_positions(list(self._expected))
+            return False
+        answered = all(at >= asked for _, at in self._heard.values())
+        return answered or now - asked >= ANSWER_TIMEOUT_S
 
     def _tolerance_mm(self, axis: int) -> float:
         """Half a step at the axis's step size: the nearest the unit can come to a target."""
