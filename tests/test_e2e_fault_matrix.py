@@ -52,8 +52,8 @@ from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from app.station import Station
-from protocol.stage.codec import CommandFrame, CommandId, EchoFrame, EchoType, parse_line
 from protocol.stage.codec import MOVING_STATUSES as STAGE_MOVING
+from protocol.stage.codec import CommandFrame, CommandId, EchoFrame, EchoType, parse_line
 from protocol.usb3.codec import Move, Position, decode_command, decode_reply
 from tests.helpers.emulator_process import device_path, start_emulator, stop
 from tests.helpers.fault_bridge import Action, Cut, Direction, FaultBridge, Watch
@@ -147,7 +147,9 @@ def _drill_watch(phase: str, program: Program, k: int, station: Station) -> Watc
 
 def _drill_check(lines: list[str], program: Program, station: Station) -> None:
     expected = Counter(
-        _drill_hole_of(program, i, station) for i, op in enumerate(program) if op.kind is OpKind.DRILL
+        _drill_hole_of(program, i, station)
+        for i, op in enumerate(program)
+        if op.kind is OpKind.DRILL
     )
     assert _drill_holes(lines) == expected
 
@@ -156,9 +158,7 @@ def _drill_ran(lines: list[str], program: Program, k: int, station: Station) -> 
     return _drill_holes(lines)[_drill_hole_of(program, k, station)] > 0
 
 
-DRILL = Dialect(
-    "pcb-drill", 50, b"\r", b"\n", _drill_job, _drill_watch, _drill_check, _drill_ran
-)
+DRILL = Dialect("pcb-drill", 50, b"\r", b"\n", _drill_job, _drill_watch, _drill_check, _drill_ran)
 
 
 # --- G-code -----------------------------------------------------------------------------
@@ -376,7 +376,10 @@ _USB3_MOVE = re.compile(r"Move\(axis=<AxisId\.(\w): \d>, count=(\d+)\)")
 
 def _usb3_watch(phase: str, program: Program, k: int, station: Station) -> Watch:
     target = program[k].target
-    ends = {"X": round(target["X"] * USB3_COUNTS_PER_MM), "Y": round(target["Y"] * USB3_COUNTS_PER_MM)}
+    ends = {
+        "X": round(target["X"] * USB3_COUNTS_PER_MM),
+        "Y": round(target["Y"] * USB3_COUNTS_PER_MM),
+    }
     at: dict[str, int] = {}
     sent: list[str] = []
 
@@ -475,7 +478,12 @@ class Emulators:
         if dialect.profile not in self.running:
             log = self.directory / f"{dialect.profile}.log"
             process = start_emulator(
-                "--profile", dialect.profile, "--time-scale", str(dialect.time_scale), "--log", str(log)
+                "--profile",
+                dialect.profile,
+                "--time-scale",
+                str(dialect.time_scale),
+                "--log",
+                str(log),
             )
             try:
                 path = device_path(process)
@@ -579,21 +587,23 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
         runner.start()
         qtbot.waitUntil(bridge.fired.is_set, timeout=STEP_TIMEOUT_MS)
         # The station notices by itself: the port gone, or no reply in time.
-        qtbot.waitUntil(
-            lambda: station.model.link_state is LinkState.LOST, timeout=STEP_TIMEOUT_MS
-        )
+        qtbot.waitUntil(lambda: station.model.link_state is LinkState.LOST, timeout=STEP_TIMEOUT_MS)
         qtbot.waitUntil(lambda: runner.state is JobState.PAUSED, timeout=STEP_TIMEOUT_MS)
-        paused_by = next(m for m in reversed(messages) if "paused" in m or "stopped short" in m)
+        # Paused for the link, and saying so (not, say, "the unit stopped short").
+        assert any(m.startswith("Job paused") and "link lost" in m for m in messages), messages
         bridge.restore()
 
         # The operator: Resume once the machine is back; a question answered from the board.
         decided: list[bool] = []
+        resumes = 0
         for _ in range(6):
             qtbot.waitUntil(
-                lambda: runner.state in (JobState.DONE, JobState.FAILED)
-                or (
-                    runner.state is JobState.PAUSED
-                    and station.model.link_state is LinkState.CONNECTED
+                lambda: (
+                    runner.state in (JobState.DONE, JobState.FAILED)
+                    or (
+                        runner.state is JobState.PAUSED
+                        and station.model.link_state is LinkState.CONNECTED
+                    )
                 ),
                 timeout=STEP_TIMEOUT_MS,
             )
@@ -605,6 +615,7 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
                 decided.append(again)
                 runner.decide(again=again)
             else:
+                resumes += 1
                 runner.resume()
             if len(states) == changes:
                 raise AssertionError(f"the operator's answer did not take: {messages[-6:]}")
@@ -612,6 +623,7 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
         if questions:
             # Only the drill asks, and only when its V may or may not have run.
             assert profile == "pcb-drill" and phase in ("received", "before", "sent"), questions
+
         # The last operation's trace is in the log once the device is done with it.
         def judged() -> bool:
             try:
@@ -623,6 +635,11 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
         with contextlib.suppress(Exception):
             qtbot.waitUntil(judged, timeout=LOG_SETTLE_MS)
         dialect.check(_log_since(log, offset), program, station)
+        answers = ", ".join("drill again" if again else "count as drilled" for again in decided)
+        print(
+            f"\nMATRIX | {profile} | {phase} | {cut.value} | DONE, each op once; "
+            f"{resumes} resume(s){'; asked: ' + answers if answers else ''}"
+        )
     finally:
         station.shutdown()
         bridge.close()

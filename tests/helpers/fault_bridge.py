@@ -225,4 +225,3 @@ class FaultBridge:
                 return  # the station's port was pulled meanwhile
             view = view[written:]
         self.relayed[direction] += len(data)
-
