@@ -7,7 +7,10 @@ and a real-clock station as the cable.  Each job has a WAIT (the operator
 changing a bit, say) just before the operation under test, ``k``; when the
 runner reaches it the fault is set up, then the operator confirms:
 
-* **before** — the link is cut during the WAIT, so ``k`` is not on the wire yet;
+* **before** — the link is cut during the WAIT, so ``k`` is not on the wire yet
+  (the operator, not knowing, confirms: a pulled port refuses it, a silent
+  link swallows it — on the drill that is then a ``V`` that went out
+  unacknowledged, and the station asks);
 * **sent** — ``k``'s bytes are dropped (the first message of ``k`` and all after);
 * **received** — ``k`` arrives whole, then the link goes (the device runs it;
   whatever it answers is lost);
@@ -19,7 +22,8 @@ station's liveness can tell).  The station must notice (link lost, job
 paused), and once the cable is back the operator resumes as the README says:
 nothing but Resume, and for the drill's lost-receipt case the answer to the
 question the station asks, given from what the board shows (the emulator's
-own log: was the hole drilled?).
+own log: was the hole drilled?).  A second test answers that question both
+ways, right and wrong, and the log follows the answer.
 
 The emulator's log is the judge: every operation ran exactly once (holes,
 absolute moves, relative moves, pen-down strokes), and the job ends DONE.
@@ -533,19 +537,38 @@ def _log_since(log: Path, offset: int) -> list[str]:
 # --- the matrix ---------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("cut", [Cut.PULLED, Cut.SILENT], ids=lambda c: c.value)
-@pytest.mark.parametrize("phase", PHASES)
-@pytest.mark.parametrize("profile", list(DIALECTS))
-def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
+#: The operator's answer to the drill's question: (log lines, program, operation, station) →
+#: drill it again.
+Answer = Callable[[list[str], Program, int, Station], bool]
+#: Asserts, from the emulator's log lines of the case, what the machine did.
+Judge = Callable[[list[str], Program, Station], None]
+
+
+@dataclass
+class Outcome:
+    """How a case went, for its MATRIX line."""
+
+    resumes: int
+    decided: list[bool]
+
+    def __str__(self) -> str:
+        answers = ", ".join(
+            "drill again" if again else "count as drilled" for again in self.decided
+        )
+        return f"{self.resumes} resume(s)" + (f"; asked: {answers}" if answers else "")
+
+
+def run_case(
     qtbot: QtBot,
     emulators: Emulators,
-    short_timeouts: None,
     tmp_path: Path,
-    profile: str,
+    dialect: Dialect,
     phase: str,
     cut: Cut,
-) -> None:
-    dialect = DIALECTS[profile]
+    answer: Answer,
+    judge: Judge,
+) -> Outcome:
+    """Run the dialect's job with the link cut at ``phase`` of operation k; judge the log."""
     device, log = emulators.get(dialect)
     offset = log.stat().st_size if log.exists() else 0
     bridge = FaultBridge(
@@ -555,7 +578,7 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
         to_host_end=dialect.to_host_end,
         ignored_to_device=dialect.ignored_to_device,
     )
-    station = Station(load_profile(profile))
+    station = Station(load_profile(dialect.profile))
     station.reconnect_delays = (0.1, 0.2, 0.4)
     if dialect.period_ms is not None:
         station.set_period_ms(dialect.period_ms)
@@ -594,9 +617,8 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
         assert any(m.startswith("Job paused") and "link lost" in m for m in messages), messages
         bridge.restore()
 
-        # The operator: Resume once the machine is back; a question answered from the board.
-        decided: list[bool] = []
-        resumes = 0
+        # The operator: Resume once the machine is back; a question answered by ``answer``.
+        outcome = Outcome(0, [])
         for _ in range(6):
             qtbot.waitUntil(
                 lambda: (
@@ -612,35 +634,96 @@ def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
                 break
             changes = len(states)
             if runner.question is not None:
-                again = not dialect.ran(_log_since(log, offset), program, runner.question, station)
-                decided.append(again)
+                assert runner.question == k, (runner.question, k)
+                again = answer(_log_since(log, offset), program, runner.question, station)
+                outcome.decided.append(again)
                 runner.decide(again=again)
             else:
-                resumes += 1
+                outcome.resumes += 1
                 runner.resume()
             if len(states) == changes:
                 raise AssertionError(f"the operator's answer did not take: {messages[-6:]}")
         assert runner.state is JobState.DONE, messages[-5:]
         if questions:
             # Only the drill asks, and only when its V may or may not have run.
-            assert profile == "pcb-drill" and phase in ("received", "before", "sent"), questions
+            assert dialect is DRILL and phase in ("received", "before", "sent"), questions
 
         # The last operation's trace is in the log once the device is done with it.
         def judged() -> bool:
             try:
-                dialect.check(_log_since(log, offset), program, station)
+                judge(_log_since(log, offset), program, station)
             except AssertionError:
                 return False
             return True
 
         with contextlib.suppress(Exception):
             qtbot.waitUntil(judged, timeout=LOG_SETTLE_MS)
-        dialect.check(_log_since(log, offset), program, station)
-        answers = ", ".join("drill again" if again else "count as drilled" for again in decided)
-        print(
-            f"\nMATRIX | {profile} | {phase} | {cut.value} | DONE, each op once; "
-            f"{resumes} resume(s){'; asked: ' + answers if answers else ''}"
-        )
+        judge(_log_since(log, offset), program, station)
+        return outcome
     finally:
         station.shutdown()
         bridge.close()
+
+
+@pytest.mark.parametrize("cut", [Cut.PULLED, Cut.SILENT], ids=lambda c: c.value)
+@pytest.mark.parametrize("phase", PHASES)
+@pytest.mark.parametrize("profile", list(DIALECTS))
+def test_a_link_cut_at_any_phase_of_an_operation_runs_every_operation_once(
+    qtbot: QtBot,
+    emulators: Emulators,
+    short_timeouts: None,
+    tmp_path: Path,
+    profile: str,
+    phase: str,
+    cut: Cut,
+) -> None:
+    """The operator answers the drill's question from the board: every operation once."""
+    dialect = DIALECTS[profile]
+
+    def from_the_board(lines: list[str], program: Program, index: int, station: Station) -> bool:
+        return not dialect.ran(lines, program, index, station)
+
+    outcome = run_case(
+        qtbot, emulators, tmp_path, dialect, phase, cut, from_the_board, dialect.check
+    )
+    print(f"\nMATRIX | {profile} | {phase} | {cut.value} | DONE, each op once; {outcome}")
+
+
+@pytest.mark.parametrize("again", [True, False], ids=["drill-again", "count-as-drilled"])
+@pytest.mark.parametrize("phase", ["sent", "received"])
+def test_the_drills_question_is_answered_as_the_operator_says_either_way(
+    qtbot: QtBot,
+    emulators: Emulators,
+    short_timeouts: None,
+    tmp_path: Path,
+    phase: str,
+    again: bool,
+) -> None:
+    """Where the rule asks, the log follows the operator's answer, right or wrong.
+
+    ``V`` dropped (sent): the hole is not drilled, so *count it* leaves it out and
+    *again* drills it once; ``V`` delivered with its ``RV`` lost (received): the
+    hole is drilled, so *again* drills it a second time.  Every other hole once.
+    """
+    drilled_before = phase == "received"
+
+    def judge(lines: list[str], program: Program, station: Station) -> None:
+        expected = Counter(
+            _drill_hole_of(program, i, station)
+            for i, op in enumerate(program)
+            if op.kind is OpKind.DRILL
+        )
+        expected[_drill_hole_of(program, _k(program), station)] = int(drilled_before) + int(again)
+        assert _drill_holes(lines) == +expected
+
+    outcome = run_case(
+        qtbot,
+        emulators,
+        tmp_path,
+        DRILL,
+        phase,
+        Cut.SILENT,
+        lambda lines, program, index, station: again,
+        judge,
+    )
+    assert outcome.decided == [again]
