@@ -75,6 +75,7 @@ class FaultBridge:
         self._lock = threading.Lock()
         self._device = os.open(device, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
         tty.setraw(self._device)
+        self._drain_device()
         self._master: int | None = None
         self._slave: int | None = None
         self._cut: Cut | None = None
@@ -123,6 +124,15 @@ class FaultBridge:
             self._unplug()
             with contextlib.suppress(OSError):
                 os.close(self._device)
+
+    def _drain_device(self) -> None:
+        """Drop what the device said to a cable that was unplugged (an earlier test's replies)."""
+        while select.select([self._device], [], [], 0.02)[0]:
+            try:
+                if not os.read(self._device, 4096):
+                    return
+            except (BlockingIOError, OSError):
+                return
 
     # --- the station's end -------------------------------------------------------------
 
