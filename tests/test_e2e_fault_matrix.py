@@ -597,9 +597,7 @@ def run_case(
     try:
         station.model.message.connect(messages.append)
         station.connect_serial(str(bridge.link))
-        qtbot.waitUntil(
-            lambda: station.model.link_state is LinkState.CONNECTED, timeout=STEP_TIMEOUT_MS
-        )
+        until(lambda: station.model.link_state is LinkState.CONNECTED, "never connected")
         dialect.prepare(qtbot, station)
         program = dialect.job(tmp_path)
         k = _k(program)
@@ -631,7 +629,7 @@ def run_case(
         # The operator: Resume once the machine is back; a question answered by ``answer``.
         outcome = Outcome(0, [])
         for _ in range(6):
-            qtbot.waitUntil(
+            until(
                 lambda: (
                     runner.state in (JobState.DONE, JobState.FAILED)
                     or (
@@ -639,7 +637,7 @@ def run_case(
                         and station.model.link_state is LinkState.CONNECTED
                     )
                 ),
-                timeout=STEP_TIMEOUT_MS,
+                "the machine never came back, or the job never ended",
             )
             if runner.state in (JobState.DONE, JobState.FAILED):
                 break
