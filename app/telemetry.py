@@ -71,7 +71,7 @@ MAX_WINDOW_S = WINDOW_CHOICES_S[-1]
 MAX_RATE_HZ = 1000.0
 SERIES_CAPACITY = int(MAX_WINDOW_S * MAX_RATE_HZ)
 
-DEFAULT_THROTTLE_MS = 1000 / 30  # redraws per second at most: 30
+DEFAULT_THROTTLE_MS = 1000 / 60  # redraws per second at most: 60, a display's rate
 DEFAULT_SCROLL_MS = 100
 
 

@@ -48,7 +48,7 @@ def sent_subscribers(harness: StationHarness, since: int = 0) -> list[int]:
 
 
 def curve_data(curve: object) -> tuple[np.ndarray, np.ndarray]:
-    t, y = curve.getOriginalDataset()  # type: ignore[attr-defined]
+    t, y = curve.getData()  # type: ignore[attr-defined]
     return (np.empty(0), np.empty(0)) if t is None else (t.copy(), y.copy())
 
 
@@ -87,11 +87,15 @@ def test_curves_receive_the_recorded_data(harness: StationHarness, dock: Telemet
     assert x[-1] == 2.0
     t, y = curve_data(dock.variable_curve)
     assert len(t) >= 10 and y[-1] > y[0]
-    left, right = dock.variable_plot.viewRange()[0]
-    # The view scrolls with the samples: its end is the newest, at most a period behind now.
-    assert right == pytest.approx(dock.recorder.view_end(), abs=harness.session.period_ms / 1000)
-    assert right - left == pytest.approx(10.0)
-    assert dock.variable_plot.getAxis("left").labelText == "rotation (°)"
+    # The time axis counts back from now; the curves slide left as time goes by.
+    assert dock.variable_plot.viewRange()[0] == pytest.approx([-10.0, 0.0])
+    period = harness.session.period_ms / 1000
+    assert dock.variable_curve.pos().x() == pytest.approx(-dock.recorder.view_end(), abs=period)
+    newest = dock.variable_curve.pos().x() + t[-1]
+    assert -2 * period <= newest <= 0.0  # rotation rides every other frame
+    assert dock.variable_curve.pos().x() == dock._curves["X position"].pos().x()
+    assert "rotation (°)" in dock.title(dock.variable_plot)
+    assert "X" in dock.title(dock.position_plot) and "Y" in dock.title(dock.velocity_plot)
 
 
 def test_zero_button_resets_the_cross(
@@ -154,14 +158,14 @@ def test_pause_freezes_curves_while_recording_goes_on(
     qtbot.mouseClick(dock.pause_button, LEFT)
     assert dock.recorder.paused and dock.paused_label.isVisibleTo(dock)
     frozen = curve_data(dock.variable_curve)
-    frozen_range = dock.variable_plot.viewRange()[0]
+    frozen_shift = dock.variable_curve.pos().x()
     frozen_angle = dock.cross.angle
     recorded = len(dock.recorder.recorded("rotation")[0])
     harness.run(3.0)
     now = curve_data(dock.variable_curve)
     np.testing.assert_array_equal(now[0], frozen[0])
     np.testing.assert_array_equal(now[1], frozen[1])
-    assert dock.variable_plot.viewRange()[0] == pytest.approx(frozen_range)
+    assert dock.variable_curve.pos().x() == frozen_shift  # the curves stand still
     assert dock.cross.angle == frozen_angle
     assert len(dock.recorder.recorded("rotation")[0]) > recorded + 5  # still recording
     qtbot.mouseClick(dock.pause_button, LEFT)
@@ -175,9 +179,8 @@ def test_window_selector_sets_the_time_span(harness: StationHarness, dock: Telem
     harness.run(1.0)
     dock.window_combo.setCurrentIndex(dock.window_combo.findText("1 min"))
     assert dock.recorder.window_s == 60.0
-    left, right = dock.variable_plot.viewRange()[0]
-    assert right - left == pytest.approx(60.0)
-    assert dock.position_plot.viewRange()[0] == pytest.approx([left, right])  # linked
+    assert dock.variable_plot.viewRange()[0] == pytest.approx([-60.0, 0.0])
+    assert dock.position_plot.viewRange()[0] == pytest.approx([-60.0, 0.0])  # linked
 
 
 def test_autoscale_toggles_the_vertical_fit(qtbot: QtBot, dock: TelemetryDock) -> None:
