@@ -34,14 +34,15 @@ Decisions worth knowing before changing it:
   reusing the blocks it reduced for the previous frame (:class:`PeakEnvelope`),
   so a 10-minute window at 1 kHz costs a view only the samples that are new.
 * **Throttled** ``updated``.  Samples may come at 1 kHz; the screen needs
-  ~30 Hz.  ``updated`` fires at once after a quiet spell, then at most once
+  ~60 Hz.  ``updated`` fires at once after a quiet spell, then at most once
   per ``throttle_ms`` (60 Hz by default) while samples keep coming (the last change is never
   lost), on a steady beat: each interval counts from when the previous one
   was due, not from when the timer happened to fire, so timer latency does
   not drag 30 Hz down to 29.  ``throttle_ms=0`` emits once per change, for
   tests.  While live, a
   slow ``scroll_ms`` beat also fires it so that the time window keeps moving
-  when nothing changes.
+  when nothing changes.  Every ``updated`` restarts that beat, so it only
+  fills silences: an idle link's echoes and the beat do not each cost a frame.
 * **Rotation** is unwrapped (the IMU reports -180…180°; a turn past ±180°
   continues the line instead of jumping by 360°, assuming less than half a
   turn between consecutive samples) and shown relative to the angle at the
@@ -756,6 +757,7 @@ class TelemetryRecorder(QObject):
     def _changed(self) -> None:
         """Emit ``updated`` now, or once when the throttle interval is over."""
         if self.throttle_ms <= 0:
+            self._rearm_scroll()
             self.updated.emit()
         elif self._throttle.isActive():
             self._pending = True
@@ -779,11 +781,17 @@ class TelemetryRecorder(QObject):
             else:
                 self._due = now + interval
             self._throttle.start(max(1, math.ceil((self._due - now) * 1000)))
+        self._rearm_scroll()
         self.updated.emit()
 
     def _throttle_done(self) -> None:
         if self._pending:
             self._emit_now(on_beat=True)
+
+    def _rearm_scroll(self) -> None:
+        """The beat counts from the last ``updated``: it only fills silences."""
+        if self._scroll.isActive():
+            self._scroll.start()
 
     def _on_scroll(self) -> None:
         if self._paused_at is None:

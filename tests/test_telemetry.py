@@ -414,3 +414,27 @@ def test_recorded_velocity_comes_from_filtered_positions(
     assert len(shown_t) == len(t)
     assert v.max() <= 1.5 * TRUE_SPEED
     assert np.median(v[shown_t > 2.0]) == pytest.approx(TRUE_SPEED, rel=0.05)
+
+
+def test_scroll_beat_stays_silent_while_samples_keep_coming(
+    harness: StationHarness, qtbot: QtBot
+) -> None:
+    """The beat only fills silences: every sample's frame restarts its interval."""
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=5000)
+    emits: list[int] = []
+    recorder.updated.connect(lambda: emits.append(1))
+    model = harness.station.model
+    for k in range(5):
+        qtbot.wait(30)
+        harness.clock.advance(0.02)
+        model.update_axis(0, position=float(k + 1))
+        assert recorder._scroll.remainingTime() > 4900  # counted afresh from this frame
+    assert len(emits) == 5
+    recorder.deleteLater()
+
+
+def test_scroll_beat_fills_a_silence(harness: StationHarness, qtbot: QtBot) -> None:
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=20)
+    with qtbot.waitSignal(recorder.updated, timeout=2000):
+        pass  # nothing recorded, yet the window moves
+    recorder.deleteLater()
