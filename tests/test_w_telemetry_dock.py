@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 from collections.abc import Iterator
 from dataclasses import replace
+from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
@@ -85,6 +86,8 @@ def test_curves_receive_the_recorded_data(harness: StationHarness, dock: Telemet
         np.testing.assert_array_equal(y, expected_y)
     _, x = curve_data(dock._curves["X position"])
     assert x[-1] == 2.0
+    low, high = dock.position_plot.viewRange()[1]
+    assert low <= 0.0 and high >= 2.0  # autoscale fits the shifted curves
     t, y = curve_data(dock.variable_curve)
     assert len(t) >= 10 and y[-1] > y[0]
     # The time axis counts back from now; the curves slide left as time goes by.
@@ -203,3 +206,16 @@ def test_a_machine_without_subscribers_offers_no_variable(qtbot: QtBot) -> None:
     assert dock.variable_combo.currentData() is None
     harness.close()
     recorder.deleteLater()
+
+
+def test_captions_sit_beside_the_data_and_apart(dock: TelemetryDock) -> None:
+    """Titles and keys neither cover the curves nor print over each other."""
+    choose(dock, Subscriber.BATTERY_VOLTAGE)
+    dock.redraw()
+    rects = [caption.sceneBoundingRect() for caption in dock.captions]
+    for plot, rect in zip(dock.plots, rects, strict=True):
+        assert not rect.intersects(plot.getViewBox().sceneBoundingRect())
+    for upper, lower in pairwise(rects):
+        assert upper.bottom() <= lower.top()
+    assert "battery voltage (V)" in dock.title(dock.variable_plot)
+    assert all(plot.getViewBox().height() >= 40 for plot in dock.plots)

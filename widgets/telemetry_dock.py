@@ -48,8 +48,10 @@ from widgets.theme import LIGHT, PlotColours
 #: Curve colours per axis (X, Y, Z, then whatever else a profile has).
 AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b")
 VARIABLE_COLOUR = "#9467bd"
-#: The least height of one plot's data area, in pixels: three of them make the minimum.
-PLOT_MIN_HEIGHT = 110
+#: The least height of the three plots together, in pixels (a 1280 x 800 window must fit).
+PLOTS_MIN_HEIGHT = 180
+#: The width of the caption (title, unit and key) beside each plot, in pixels.
+CAPTION_WIDTH = 118
 #: The height the dock asks for: each plot about 190 px, enough to read a curve's shape.
 DEFAULT_PLOTS_HEIGHT = 3 * 190
 
@@ -155,6 +157,13 @@ class RotationCross(QWidget):
         painter.drawText(QPointF(x - 14 * ux + 8 * px - 4, y - 14 * uy + 8 * py + 4), label)
 
 
+class _PlotArea(pg.GraphicsLayoutWidget):  # type: ignore[misc]
+    """The plots, asking for room for three readable curves (the minimum keeps them legible)."""
+
+    def sizeHint(self) -> QSize:
+        return QSize(800, DEFAULT_PLOTS_HEIGHT)
+
+
 class TelemetryDock(QDockWidget):
     """Plots, variable selector, rotation cross with Zero, Pause, window, Autoscale, exports."""
 
@@ -247,20 +256,25 @@ class TelemetryDock(QDockWidget):
         return bar
 
     def _build_plots(self) -> pg.GraphicsLayoutWidget:
-        self.graphics = pg.GraphicsLayoutWidget()
-        # Three plots of about 110 px of data each at the least; the dock asks for more.
-        self.graphics.setMinimumSize(360, 3 * PLOT_MIN_HEIGHT)
+        self.graphics = _PlotArea()
+        # The least that fits a 1280 x 800 window with every dock open; the dock asks for more.
+        self.graphics.setMinimumSize(360, PLOTS_MIN_HEIGHT)
         self.graphics.ci.layout.setSpacing(2)
         axes = self.recorder.model.axes
         units = _common_unit([a.unit for a in axes])
         self._titles: dict[int, tuple[str, list[tuple[str, str]]]] = {}
+        self.captions: list[pg.LabelItem] = []
         self.position_plot = self._add_plot(0)
         self.velocity_plot = self._add_plot(1)
         self.variable_plot = self._add_plot(2)
         self.plots = (self.position_plot, self.velocity_plot, self.variable_plot)
         for plot in self.plots[:-1]:
             plot.setXLink(self.variable_plot)
-            plot.getAxis("bottom").setStyle(showValues=False)
+            # The shared time axis is labelled once, under the last plot; above, the axis
+            # only carries the vertical grid lines, in no height of its own.
+            bottom = plot.getAxis("bottom")
+            bottom.setStyle(showValues=False, tickLength=0)
+            bottom.setHeight(1)
         keys = [(a.name, AXIS_COLOURS[i % len(AXIS_COLOURS)]) for i, a in enumerate(axes)]
         self._titles[0] = (self.tr("position") + (f" ({units})" if units else ""), keys)
         velocity_unit = f" ({units}/s)" if units else ""
@@ -294,18 +308,20 @@ class TelemetryDock(QDockWidget):
             cross.update()
 
     def _show_title(self, row: int) -> None:
-        """The plot's header row: what it shows, its unit, and a key of its curves.
+        """The plot's caption beside it: what it shows, its unit, and a key of its curves.
 
-        A header above the data instead of a rotated axis title (which long
-        names overprinted in short plots) and instead of a legend box (which
-        covered the newest samples).
+        Beside the data, not over it (a legend box covered the newest
+        samples), horizontal and wrapped rather than rotated (long names
+        overprinted the neighbouring plots), and costing width, of which a
+        dock has plenty, instead of height, of which it has little.
         """
         title, keys = self._titles[row]
-        entries = "".join(
-            f"&nbsp;&nbsp;<span style='color:{colour}'>&#9473;&nbsp;{name}</span>"
+        entries = "<br>".join(
+            f"<span style='color:{colour}'>&#9473;&#9473;&nbsp;{name}</span>"
             for name, colour in keys
         )
-        self.plots[row].setTitle(f"<b>{title}</b>{entries}", color=self.colours.text, size="9pt")
+        text = f"<b>{title}</b>" + (f"<br>{entries}" if entries else "")
+        self.captions[row].setText(text, color=self.colours.text, size="8pt")
 
     def _show_time_label(self) -> None:
         """The time axis counts back from now (or from the moment of the pause)."""
@@ -315,11 +331,14 @@ class TelemetryDock(QDockWidget):
         self.variable_plot.setLabel("bottom", label, units="s", color=self.colours.text)
 
     def title(self, plot: pg.PlotItem) -> str:
-        """The header text of ``plot`` (rich text), for tests and the accessibility tree."""
-        return str(plot.titleLabel.text)
+        """The caption beside ``plot`` (rich text)."""
+        return str(self.captions[self.plots.index(plot)].text)
 
     def _add_plot(self, row: int) -> pg.PlotItem:
         plot = self.graphics.addPlot(row=row, col=0)
+        caption = self.graphics.addLabel("", row=row, col=1, justify="left")
+        caption.setFixedWidth(CAPTION_WIDTH)
+        self.captions.append(caption)
         # No pyqtgraph downsampling or clipping: the recorder hands over an envelope of the
         # window alone, and the curves are shifted (not re-fed) as time goes by, which
         # pyqtgraph's view-dependent reductions would undo every frame.
@@ -392,7 +411,10 @@ class TelemetryDock(QDockWidget):
         for plot in self.plots:
             view = plot.getViewBox()
             if enabled:
-                view.setAutoVisible(y=True)
+                # Fit to all the curve holds: the recorder hands over the window alone, and
+                # pyqtgraph's "visible only" would compare the view's times, which count back
+                # from now, with the curve's own, which are shifted.
+                view.setAutoVisible(y=False)
                 view.enableAutoRange(axis=pg.ViewBox.YAxis, enable=True)
             else:
                 view.disableAutoRange(axis=pg.ViewBox.YAxis)
@@ -536,8 +558,3 @@ class TelemetryDock(QDockWidget):
         self._drawn.clear()
         self._shown_end = math.nan
         self.redraw()
-
-    def sizeHint(self) -> QSize:
-        """Room for three readable plots (the minimum only keeps them legible)."""
-        hint = super().sizeHint()
-        return QSize(hint.width(), max(hint.height(), DEFAULT_PLOTS_HEIGHT + 40))
