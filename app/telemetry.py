@@ -79,7 +79,8 @@ MAX_RATE_HZ = 1000.0
 SERIES_CAPACITY = int(MAX_WINDOW_S * MAX_RATE_HZ)
 
 DEFAULT_THROTTLE_MS = 1000 / 60  # redraws per second at most: 60, a display's rate
-DEFAULT_SCROLL_MS = 100
+#: Longer than the stage's 100 ms echo period, so a live link's frames alone move the window.
+DEFAULT_SCROLL_MS = 150
 
 
 @dataclass(frozen=True)

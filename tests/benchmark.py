@@ -447,7 +447,8 @@ def bench_telemetry_plots() -> list[str]:
         lines.append(
             f"telemetry dock, 4 curves x 1 kHz, 10-minute window ({held:,} samples per curve), "
             f"{what}: {fps:.1f} frames/s drawn, {100 * core:.0f} % of one core "
-            f"(goal >= 60 frames/s at <= 35 %) [load {one:.2f}/{five:.2f}]"
+            f"(goal >= 60 frames/s at <= 35 %), {1000 * core / fps:.1f} ms of processor time "
+            f"per frame with the feeding [load {one:.2f}/{five:.2f}]"
         )
     for with_dock in (False, True):
         core, fps = _telemetry_idle(with_dock)
