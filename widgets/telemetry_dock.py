@@ -3,17 +3,25 @@
 A view over :class:`app.telemetry.TelemetryRecorder`, which does the
 recording, windowing, pausing, zeroing and CSV writing; the dock only draws
 what the recorder says is shown, and only when the recorder's throttled
-``updated`` fires, so a 1 kHz stream costs at most ~30 redraws a second.
+``updated`` fires, so a 1 kHz stream costs at most ~60 redraws a second.
 
 Long windows stay cheap: a 10-minute window at 1 kHz is 600 000 samples a
 curve, but the recorder hands over its min/max envelope (one pair per pixel
 of plot width, every peak kept, reduced incrementally), so each frame draws
-a few thousand points.  pyqtgraph's own guards stay on behind it
-(``setDownsampling(auto=True, mode="peak")``, ``setClipToView(True)``), and
-``skipFiniteCheck`` with ``connect="all"`` spare it a NaN scan per frame (the
-recorder never stores one).  A curve whose shown samples did not change is
-not handed data again; the time axis still scrolls.  Each redraw settles the
-plots' ranges before the paint, or pyqtgraph would paint every frame twice.
+a few thousand points.  The curves are bare ``PlotCurveItem``s (no
+PlotDataItem layer, no pyqtgraph downsampling or clipping behind the
+envelope), with ``skipFiniteCheck`` and ``connect="all"`` sparing a NaN scan
+(the recorder never stores one).
+
+The time axis counts back from the view's end and never moves: time going
+by shifts the curve items (``setPos``), which needs neither new data nor a
+new axis picture, so the axes are cached as pixmaps.  A curve whose shown
+samples did not change is not handed data again, and a redraw with no
+changed curve and less than half a pixel to shift touches nothing, so
+nothing is repainted.  Each redraw settles the plots' ranges before the
+paint, or pyqtgraph would paint every frame twice.  pyqtgraph's OpenGL path
+was not taken: it needs a GL context (none offscreen or on many remote
+desktops) and the frames are now dominated by the curves' stroking.
 
 Beside the plots, a turning coordinate cross shows the platform's rotation
 (relative to the last Zero) while rotation is the plotted variable.
