@@ -20,8 +20,8 @@ samples did not change is not handed data again, and a redraw with no
 changed curve and less than half a pixel to shift touches nothing, so
 nothing is repainted.  Each redraw settles the plots' ranges before the
 paint, or pyqtgraph would paint every frame twice.  pyqtgraph's OpenGL path
-was not taken: it needs a GL context (none offscreen or on many remote
-desktops) and the frames are now dominated by the curves' stroking.
+is not used: it needs a GL context, which the offscreen benchmark (and many
+remote desktops) lack, so no gain from it could be measured.
 
 Beside the plots, a turning coordinate cross shows the platform's rotation
 (relative to the last Zero) while rotation is the plotted variable.
