@@ -628,10 +628,19 @@ class TelemetryRecorder(QObject):
 
     def _on_axis(self, index: int) -> None:
         axis = self.model.axes[index]
-        position, _velocity = self._axis_series[index]
-        if position.buffer.last_y == axis.position:
+        position, velocity = self._axis_series[index]
+        if position.buffer.last_y != axis.position:
+            self._sample_axis(index, self.now(), axis.position)
+        elif not axis.moving and velocity.buffer.last_y not in (None, 0.0):
+            # The session says the axis stopped, without a new position (usb3 and G-code
+            # machines report no more until it moves): the slope of what came before
+            # would otherwise be the last word.
+            now = self.now()
+            self._velocity[index].update(now, axis.position)
+            self._record(position, now, axis.position)
+            self._record(velocity, now, 0.0)
+        else:
             return  # a status or velocity change only: the plotted values stand
-        self._sample_axis(index, self.now(), axis.position)
         self._recorded()
 
     def _sample_axis(self, index: int, t: float, position: float) -> None:

@@ -439,3 +439,20 @@ def test_scroll_beat_fills_a_silence(harness: StationHarness, qtbot: QtBot) -> N
     with qtbot.waitSignal(recorder.updated, timeout=2000):
         pass  # nothing recorded, yet the window moves
     recorder.deleteLater()
+
+
+def test_recorded_velocity_drops_to_zero_when_the_session_says_the_axis_stopped(
+    harness: StationHarness, recorder: TelemetryRecorder
+) -> None:
+    """Machines without echoes report no more positions once standing: the stop ends the slope."""
+    model = harness.station.model
+    for k in range(1, 11):
+        harness.clock.advance(0.1)
+        model.update_axis(0, position=k * 1.0, moving=True, velocity=10.0)
+    assert recorder.latest("X velocity") == pytest.approx(10.0)
+    harness.clock.advance(0.05)
+    model.update_axis(0, moving=True, velocity=3.0)  # no new position while moving: no news
+    assert recorder.latest("X velocity") == pytest.approx(10.0)
+    model.update_axis(0, moving=False, velocity=0.0)
+    assert recorder.latest("X velocity") == 0.0
+    assert recorder.latest("X position") == 10.0
