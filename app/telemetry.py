@@ -16,6 +16,11 @@ Decisions worth knowing before changing it:
   yields one sample per series (the variable: per echo that carried it), and
   straight lines between samples are honest.  Fed by the model alone (the
   developer pane's injector, the benchmark), recording is change-driven.
+* **Velocity is estimated, not copied.**  The plotted velocity of an axis is
+  the least-squares slope of its positions over the last half second
+  (:mod:`app.velocity_estimate`), held samples included, so a standing axis
+  reads 0.  Sessions divide consecutive position reports by their jittered
+  receive times, which put 210 mm/s spikes on a 10 mm/s axis.
 * **Pause freezes the view, not the recording.**  Samples keep arriving while
   paused (nothing the device reports is lost); :meth:`data` then answers from
   a snapshot taken when the pause began, so the frozen curves stay put even
@@ -29,14 +34,15 @@ Decisions worth knowing before changing it:
   reusing the blocks it reduced for the previous frame (:class:`PeakEnvelope`),
   so a 10-minute window at 1 kHz costs a view only the samples that are new.
 * **Throttled** ``updated``.  Samples may come at 1 kHz; the screen needs
-  ~30 Hz.  ``updated`` fires at once after a quiet spell, then at most once
-  per ``throttle_ms`` while samples keep coming (the last change is never
+  ~60 Hz.  ``updated`` fires at once after a quiet spell, then at most once
+  per ``throttle_ms`` (60 Hz by default) while samples keep coming (the last change is never
   lost), on a steady beat: each interval counts from when the previous one
   was due, not from when the timer happened to fire, so timer latency does
   not drag 30 Hz down to 29.  ``throttle_ms=0`` emits once per change, for
   tests.  While live, a
   slow ``scroll_ms`` beat also fires it so that the time window keeps moving
-  when nothing changes.
+  when nothing changes.  Every ``updated`` restarts that beat, so it only
+  fills silences: an idle link's echoes and the beat do not each cost a frame.
 * **Rotation** is unwrapped (the IMU reports -180…180°; a turn past ±180°
   continues the line instead of jumping by 360°, assuming less than half a
   turn between consecutive samples) and shown relative to the angle at the
@@ -59,6 +65,7 @@ from PySide6.QtCore import QObject, Qt, QTimer, Signal
 from app.machine import LinkState
 from app.machines.stage.session import SUBSCRIBER_TELEMETRY
 from app.station import Station
+from app.velocity_estimate import VelocityEstimator
 from protocol.stage.codec import EchoFrame, Subscriber
 
 FloatArray = npt.NDArray[np.float64]
@@ -71,8 +78,9 @@ MAX_WINDOW_S = WINDOW_CHOICES_S[-1]
 MAX_RATE_HZ = 1000.0
 SERIES_CAPACITY = int(MAX_WINDOW_S * MAX_RATE_HZ)
 
-DEFAULT_THROTTLE_MS = 1000 / 30  # redraws per second at most: 30
-DEFAULT_SCROLL_MS = 100
+DEFAULT_THROTTLE_MS = 1000 / 60  # redraws per second at most: 60, a display's rate
+#: Longer than the stage's 100 ms echo period, so a live link's frames alone move the window.
+DEFAULT_SCROLL_MS = 150
 
 
 @dataclass(frozen=True)
@@ -351,6 +359,7 @@ class TelemetryRecorder(QObject):
             position = self._add_series(f"{axis.name} position", axis.unit)
             velocity = self._add_series(f"{axis.name} velocity", f"{axis.unit}/s")
             self._axis_series.append((position, velocity))
+        self._velocity = [VelocityEstimator() for _ in self._axis_series]
         self._variable: Variable | None = None
         self._variable_series: _Series | None = None
         self._window_s = MIN_WINDOW_S
@@ -574,6 +583,7 @@ class TelemetryRecorder(QObject):
             if series.frozen is not None:
                 series.frozen = (np.empty(0), np.empty(0))
         self._echo_t = self._variable_echo_t = None
+        self._reset_velocities()
         self._touch_all()
         self._emit_now()
 
@@ -619,12 +629,29 @@ class TelemetryRecorder(QObject):
     def _on_axis(self, index: int) -> None:
         axis = self.model.axes[index]
         position, velocity = self._axis_series[index]
-        if position.buffer.last_y == axis.position and velocity.buffer.last_y == axis.velocity:
-            return  # a status change only: the plotted values stand
-        now = self.now()
-        self._record(position, now, axis.position)
-        self._record(velocity, now, axis.velocity)
+        if position.buffer.last_y != axis.position:
+            self._sample_axis(index, self.now(), axis.position)
+        elif not axis.moving and velocity.buffer.last_y not in (None, 0.0):
+            # The session says the axis stopped, without a new position (usb3 and G-code
+            # machines report no more until it moves): the slope of what came before
+            # would otherwise be the last word.
+            now = self.now()
+            self._velocity[index].update(now, axis.position)
+            self._record(position, now, axis.position)
+            self._record(velocity, now, 0.0)
+        else:
+            return  # a status or velocity change only: the plotted values stand
         self._recorded()
+
+    def _sample_axis(self, index: int, t: float, position: float) -> None:
+        """Record a position and the velocity estimated from the positions up to it.
+
+        The model's velocity is not plotted: sessions derive it from two
+        consecutive reports, whose receive times jitter (see :mod:`app.velocity_estimate`).
+        """
+        position_series, velocity_series = self._axis_series[index]
+        self._record(position_series, t, position)
+        self._record(velocity_series, t, self._velocity[index].update(t, position))
 
     def _on_telemetry(self, key: str) -> None:
         if key == ROTATION_KEY:
@@ -669,9 +696,11 @@ class TelemetryRecorder(QObject):
         now = self.now()
         held = False
         if self._echo_t is not None:
-            for position, velocity in self._axis_series:
-                held = self._hold(position, self._echo_t) | held
-                held = self._hold(velocity, self._echo_t) | held
+            for index, (position, _velocity) in enumerate(self._axis_series):
+                last_t, last_y = position.buffer.last_t, position.buffer.last_y
+                if last_t is not None and last_y is not None and last_t < self._echo_t:
+                    self._sample_axis(index, self._echo_t, last_y)
+                    held = True
         self._echo_t = now
         variable = self._variable
         if variable is not None and frame.subscriber == variable.subscriber:
@@ -705,6 +734,7 @@ class TelemetryRecorder(QObject):
     def _attach_session(self) -> None:
         session = self.station.session
         self._echo_t = self._variable_echo_t = None
+        self._reset_velocities()
         self._rotation_raw = None
         if session is not None:
             session.frameReceived.connect(self._on_frame)
@@ -721,6 +751,7 @@ class TelemetryRecorder(QObject):
         """A link that is down says nothing about what held meanwhile: bridge nothing."""
         if state not in (LinkState.CONNECTED, LinkState.STALE):
             self._echo_t = self._variable_echo_t = None
+            self._reset_velocities()
             self._rotation_raw = None
 
     # --- change notification -------------------------------------------------
@@ -736,6 +767,7 @@ class TelemetryRecorder(QObject):
     def _changed(self) -> None:
         """Emit ``updated`` now, or once when the throttle interval is over."""
         if self.throttle_ms <= 0:
+            self._rearm_scroll()
             self.updated.emit()
         elif self._throttle.isActive():
             self._pending = True
@@ -759,17 +791,27 @@ class TelemetryRecorder(QObject):
             else:
                 self._due = now + interval
             self._throttle.start(max(1, math.ceil((self._due - now) * 1000)))
+        self._rearm_scroll()
         self.updated.emit()
 
     def _throttle_done(self) -> None:
         if self._pending:
             self._emit_now(on_beat=True)
 
+    def _rearm_scroll(self) -> None:
+        """The beat counts from the last ``updated``: it only fills silences."""
+        if self._scroll.isActive():
+            self._scroll.start()
+
     def _on_scroll(self) -> None:
         if self._paused_at is None:
             self._changed()
 
     # --- helpers -------------------------------------------------------------
+
+    def _reset_velocities(self) -> None:
+        for estimator in self._velocity:
+            estimator.reset()
 
     def _add_series(self, name: str, unit: str) -> _Series:
         series = _Series(name, unit, SampleBuffer(self._capacity))

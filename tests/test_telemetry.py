@@ -17,6 +17,7 @@ from app.telemetry import (
     SampleBuffer,
     TelemetryRecorder,
 )
+from app.velocity_estimate import VelocityEstimator
 from protocol.stage.codec import Subscriber
 from tests.helpers.harness import StationHarness
 
@@ -336,3 +337,122 @@ def test_envelope_of_a_long_window_is_small(recorder: TelemetryRecorder) -> None
     recorder.set_paused(True)  # the frozen view is reduced the same way
     _, v_paused = recorder.envelope("X position", 2000)
     np.testing.assert_array_equal(v_paused, v)
+
+
+# --- velocity from positions -----------------------------------------------------------------
+
+TRUE_SPEED = 10.0  # mm/s
+
+
+def jittered_trace(
+    seconds: float = 6.0, period: float = 0.1, quantum: float = 0.001, seed: int = 3
+) -> tuple[np.ndarray, np.ndarray]:
+    """A 10 mm/s axis as the station sees it: receive times, quantised positions.
+
+    Each echo is measured on the device's beat but received 0-40 ms late, and
+    every fifth one is held back until the next arrives 1 ms before it (a BLE
+    connection event carrying two notifications): the naive derivative of
+    consecutive samples then divides a 100 ms step by 1 ms.
+    """
+    rng = np.random.default_rng(seed)
+    measured = np.arange(1, int(seconds / period) + 1) * period
+    received = measured + rng.uniform(0.0, 0.04, len(measured))
+    for k in range(4, len(received) - 1, 5):
+        received[k] = received[k + 1] - 0.001
+    received = np.maximum.accumulate(received)
+    positions = np.round(TRUE_SPEED * measured / quantum) * quantum
+    return received, positions
+
+
+def test_velocity_estimate_of_a_jittered_trace_has_no_spikes() -> None:
+    t, x = jittered_trace()
+    naive = np.diff(x) / np.diff(t)
+    assert naive.max() > 5 * TRUE_SPEED  # the trace does provoke the spikes seen in the field
+    estimator = VelocityEstimator()
+    v = np.array([estimator.update(ti, xi) for ti, xi in zip(t, x, strict=True)])
+    assert v.max() <= 1.5 * TRUE_SPEED
+    assert v.min() >= 0.0
+    steady = v[t > t[0] + 2 * estimator.window_s]
+    assert np.median(steady) == pytest.approx(TRUE_SPEED, rel=0.05)
+
+
+def test_velocity_estimate_of_a_quantised_fast_stream_and_a_stop() -> None:
+    # 1 kHz, positions in 0.01 mm steps (a coarse encoder), 0-0.5 ms receive jitter.
+    rng = np.random.default_rng(7)
+    t = np.arange(1, 3001) / 1000 + rng.uniform(0, 0.0005, 3000)
+    x = np.round(np.minimum(TRUE_SPEED * np.arange(1, 3001) / 1000, 20.0) / 0.01) * 0.01
+    estimator = VelocityEstimator()
+    v = np.array([estimator.update(ti, xi) for ti, xi in zip(t, x, strict=True)])
+    assert np.abs(v).max() <= 1.5 * TRUE_SPEED
+    assert v[1000:1900] == pytest.approx(TRUE_SPEED, rel=0.05)  # moving, after one window
+    assert np.all(v[-400:] == pytest.approx(0.0, abs=1e-9))  # stopped at 2 s, window over
+
+
+def test_velocity_estimate_starts_over_after_a_gap_or_a_clock_going_back() -> None:
+    estimator = VelocityEstimator(window_s=0.5)
+    for k in range(10):
+        estimator.update(k * 0.1, k * 1.0)
+    assert estimator.velocity() == pytest.approx(10.0)
+    assert estimator.update(5.0, 100.0) == 0.0  # after a gap: one sample, no slope
+    assert estimator.update(4.0, 0.0) == 0.0  # the clock went back: starts over
+    estimator.update(4.1, 0.0)
+    estimator.update(4.1, 0.5)  # same time: replaces the last
+    assert estimator.update(4.2, 1.0) == pytest.approx(5.0)
+
+
+def test_recorded_velocity_comes_from_filtered_positions(
+    harness: StationHarness, recorder: TelemetryRecorder
+) -> None:
+    """The model's naive velocity is not what the plot shows."""
+    t, x = jittered_trace()
+    model = harness.station.model
+    for ti, xi in zip(t, x, strict=True):
+        harness.clock.advance(ti - recorder.now())
+        naive = 999.0  # what a session dividing by a 1 ms interval would report
+        model.update_axis(0, position=float(xi), velocity=naive)
+    shown_t, v = recorder.data("X velocity")
+    assert len(shown_t) == len(t)
+    assert v.max() <= 1.5 * TRUE_SPEED
+    assert np.median(v[shown_t > 2.0]) == pytest.approx(TRUE_SPEED, rel=0.05)
+
+
+def test_scroll_beat_stays_silent_while_samples_keep_coming(
+    harness: StationHarness, qtbot: QtBot
+) -> None:
+    """The beat only fills silences: every sample's frame restarts its interval."""
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=5000)
+    emits: list[int] = []
+    recorder.updated.connect(lambda: emits.append(1))
+    model = harness.station.model
+    for k in range(5):
+        qtbot.wait(300)  # 1.5 s in all: an interval not restarted would have < 3.5 s left
+        harness.clock.advance(0.3)
+        model.update_axis(0, position=float(k + 1))
+        # counted afresh from this frame (a coarse timer may round by 5 %)
+        assert recorder._scroll.remainingTime() > 4000
+    assert len(emits) == 5
+    recorder.deleteLater()
+
+
+def test_scroll_beat_fills_a_silence(harness: StationHarness, qtbot: QtBot) -> None:
+    recorder = TelemetryRecorder(harness.station, throttle_ms=0, scroll_ms=20)
+    with qtbot.waitSignal(recorder.updated, timeout=2000):
+        pass  # nothing recorded, yet the window moves
+    recorder.deleteLater()
+
+
+def test_recorded_velocity_drops_to_zero_when_the_session_says_the_axis_stopped(
+    harness: StationHarness, recorder: TelemetryRecorder
+) -> None:
+    """Machines without echoes report no more positions once standing: the stop ends the slope."""
+    model = harness.station.model
+    for k in range(1, 11):
+        harness.clock.advance(0.1)
+        model.update_axis(0, position=k * 1.0, moving=True, velocity=10.0)
+    assert recorder.latest("X velocity") == pytest.approx(10.0)
+    harness.clock.advance(0.05)
+    model.update_axis(0, moving=True, velocity=3.0)  # no new position while moving: no news
+    assert recorder.latest("X velocity") == pytest.approx(10.0)
+    model.update_axis(0, moving=False, velocity=0.0)
+    assert recorder.latest("X velocity") == 0.0
+    assert recorder.latest("X position") == 10.0

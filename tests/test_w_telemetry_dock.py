@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 from collections.abc import Iterator
 from dataclasses import replace
+from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
@@ -48,7 +49,7 @@ def sent_subscribers(harness: StationHarness, since: int = 0) -> list[int]:
 
 
 def curve_data(curve: object) -> tuple[np.ndarray, np.ndarray]:
-    t, y = curve.getOriginalDataset()  # type: ignore[attr-defined]
+    t, y = curve.getData()  # type: ignore[attr-defined]
     return (np.empty(0), np.empty(0)) if t is None else (t.copy(), y.copy())
 
 
@@ -85,13 +86,19 @@ def test_curves_receive_the_recorded_data(harness: StationHarness, dock: Telemet
         np.testing.assert_array_equal(y, expected_y)
     _, x = curve_data(dock._curves["X position"])
     assert x[-1] == 2.0
+    low, high = dock.position_plot.viewRange()[1]
+    assert low <= 0.0 and high >= 2.0  # autoscale fits the shifted curves
     t, y = curve_data(dock.variable_curve)
     assert len(t) >= 10 and y[-1] > y[0]
-    left, right = dock.variable_plot.viewRange()[0]
-    # The view scrolls with the samples: its end is the newest, at most a period behind now.
-    assert right == pytest.approx(dock.recorder.view_end(), abs=harness.session.period_ms / 1000)
-    assert right - left == pytest.approx(10.0)
-    assert dock.variable_plot.getAxis("left").labelText == "rotation (°)"
+    # The time axis counts back from now; the curves slide left as time goes by.
+    assert dock.variable_plot.viewRange()[0] == pytest.approx([-10.0, 0.0])
+    period = harness.session.period_ms / 1000
+    assert dock.variable_curve.pos().x() == pytest.approx(-dock.recorder.view_end(), abs=period)
+    newest = dock.variable_curve.pos().x() + t[-1]
+    assert -2 * period <= newest <= 0.0  # rotation rides every other frame
+    assert dock.variable_curve.pos().x() == dock._curves["X position"].pos().x()
+    assert "rotation (°)" in dock.title(dock.variable_plot)
+    assert "X" in dock.title(dock.position_plot) and "Y" in dock.title(dock.velocity_plot)
 
 
 def test_zero_button_resets_the_cross(
@@ -154,14 +161,14 @@ def test_pause_freezes_curves_while_recording_goes_on(
     qtbot.mouseClick(dock.pause_button, LEFT)
     assert dock.recorder.paused and dock.paused_label.isVisibleTo(dock)
     frozen = curve_data(dock.variable_curve)
-    frozen_range = dock.variable_plot.viewRange()[0]
+    frozen_shift = dock.variable_curve.pos().x()
     frozen_angle = dock.cross.angle
     recorded = len(dock.recorder.recorded("rotation")[0])
     harness.run(3.0)
     now = curve_data(dock.variable_curve)
     np.testing.assert_array_equal(now[0], frozen[0])
     np.testing.assert_array_equal(now[1], frozen[1])
-    assert dock.variable_plot.viewRange()[0] == pytest.approx(frozen_range)
+    assert dock.variable_curve.pos().x() == frozen_shift  # the curves stand still
     assert dock.cross.angle == frozen_angle
     assert len(dock.recorder.recorded("rotation")[0]) > recorded + 5  # still recording
     qtbot.mouseClick(dock.pause_button, LEFT)
@@ -175,9 +182,8 @@ def test_window_selector_sets_the_time_span(harness: StationHarness, dock: Telem
     harness.run(1.0)
     dock.window_combo.setCurrentIndex(dock.window_combo.findText("1 min"))
     assert dock.recorder.window_s == 60.0
-    left, right = dock.variable_plot.viewRange()[0]
-    assert right - left == pytest.approx(60.0)
-    assert dock.position_plot.viewRange()[0] == pytest.approx([left, right])  # linked
+    assert dock.variable_plot.viewRange()[0] == pytest.approx([-60.0, 0.0])
+    assert dock.position_plot.viewRange()[0] == pytest.approx([-60.0, 0.0])  # linked
 
 
 def test_autoscale_toggles_the_vertical_fit(qtbot: QtBot, dock: TelemetryDock) -> None:
@@ -200,3 +206,16 @@ def test_a_machine_without_subscribers_offers_no_variable(qtbot: QtBot) -> None:
     assert dock.variable_combo.currentData() is None
     harness.close()
     recorder.deleteLater()
+
+
+def test_captions_sit_beside_the_data_and_apart(dock: TelemetryDock) -> None:
+    """Titles and keys neither cover the curves nor print over each other."""
+    choose(dock, Subscriber.BATTERY_VOLTAGE)
+    dock.redraw()
+    rects = [caption.sceneBoundingRect() for caption in dock.captions]
+    for plot, rect in zip(dock.plots, rects, strict=True):
+        assert not rect.intersects(plot.getViewBox().sceneBoundingRect())
+    for upper, lower in pairwise(rects):
+        assert upper.bottom() <= lower.top()
+    assert "battery voltage (V)" in dock.title(dock.variable_plot)
+    assert all(plot.getViewBox().height() >= 40 for plot in dock.plots)

@@ -3,17 +3,25 @@
 A view over :class:`app.telemetry.TelemetryRecorder`, which does the
 recording, windowing, pausing, zeroing and CSV writing; the dock only draws
 what the recorder says is shown, and only when the recorder's throttled
-``updated`` fires, so a 1 kHz stream costs at most ~30 redraws a second.
+``updated`` fires, so a 1 kHz stream costs at most ~60 redraws a second.
 
 Long windows stay cheap: a 10-minute window at 1 kHz is 600 000 samples a
 curve, but the recorder hands over its min/max envelope (one pair per pixel
 of plot width, every peak kept, reduced incrementally), so each frame draws
-a few thousand points.  pyqtgraph's own guards stay on behind it
-(``setDownsampling(auto=True, mode="peak")``, ``setClipToView(True)``), and
-``skipFiniteCheck`` with ``connect="all"`` spare it a NaN scan per frame (the
-recorder never stores one).  A curve whose shown samples did not change is
-not handed data again; the time axis still scrolls.  Each redraw settles the
-plots' ranges before the paint, or pyqtgraph would paint every frame twice.
+a few thousand points.  The curves are bare ``PlotCurveItem``s (no
+PlotDataItem layer, no pyqtgraph downsampling or clipping behind the
+envelope), with ``skipFiniteCheck`` and ``connect="all"`` sparing a NaN scan
+(the recorder never stores one).
+
+The time axis counts back from the view's end and never moves: time going
+by shifts the curve items (``setPos``), which needs neither new data nor a
+new axis picture, so the axes are cached as pixmaps.  A curve whose shown
+samples did not change is not handed data again, and a redraw with no
+changed curve and less than half a pixel to shift touches nothing, so
+nothing is repainted.  Each redraw settles the plots' ranges before the
+paint, or pyqtgraph would paint every frame twice.  pyqtgraph's OpenGL path
+is not used: it needs a GL context, which the offscreen benchmark (and many
+remote desktops) lack, so no gain from it could be measured.
 
 Beside the plots, a turning coordinate cross shows the platform's rotation
 (relative to the last Zero) while rotation is the plotted variable.
@@ -32,6 +40,7 @@ from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
     QFileDialog,
+    QGraphicsItem,
     QHBoxLayout,
     QLabel,
     QPushButton,
@@ -46,8 +55,13 @@ from widgets.theme import LIGHT, PlotColours
 
 #: Curve colours per axis (X, Y, Z, then whatever else a profile has).
 AXIS_COLOURS = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b")
-VARIABLE_COLOUR = "#6a3d9a"
-_AXIS_TEXT = "#404040"
+VARIABLE_COLOUR = "#9467bd"
+#: The least height of the three plots together, in pixels (a 1280 x 800 window must fit).
+PLOTS_MIN_HEIGHT = 180
+#: The width of the caption (title, unit and key) beside each plot, in pixels.
+CAPTION_WIDTH = 118
+#: The height the dock asks for: each plot about 190 px, enough to read a curve's shape.
+DEFAULT_PLOTS_HEIGHT = 3 * 190
 
 
 def _window_label(seconds: float) -> str:
@@ -151,6 +165,13 @@ class RotationCross(QWidget):
         painter.drawText(QPointF(x - 14 * ux + 8 * px - 4, y - 14 * uy + 8 * py + 4), label)
 
 
+class _PlotArea(pg.GraphicsLayoutWidget):  # type: ignore[misc]
+    """The plots, asking for room for three readable curves (the minimum keeps them legible)."""
+
+    def sizeHint(self) -> QSize:
+        return QSize(800, DEFAULT_PLOTS_HEIGHT)
+
+
 class TelemetryDock(QDockWidget):
     """Plots, variable selector, rotation cross with Zero, Pause, window, Autoscale, exports."""
 
@@ -159,7 +180,9 @@ class TelemetryDock(QDockWidget):
         self.setObjectName("telemetry_dock")
         self.recorder = recorder
         self._drawn: dict[str, tuple[tuple[int, int, int], int]] = {}
-        self._curves: dict[str, pg.PlotDataItem] = {}
+        self._shown_window = 0.0  # the window the time axis spans
+        self._shown_end = math.nan  # the view end the curves are shifted to
+        self._curves: dict[str, pg.PlotCurveItem] = {}
 
         content = QWidget()
         layout = QVBoxLayout(content)
@@ -241,32 +264,42 @@ class TelemetryDock(QDockWidget):
         return bar
 
     def _build_plots(self) -> pg.GraphicsLayoutWidget:
-        self.graphics = pg.GraphicsLayoutWidget()
-        self.graphics.setMinimumSize(360, 180)
+        self.graphics = _PlotArea()
+        # The least that fits a 1280 x 800 window with every dock open; the dock asks for more.
+        self.graphics.setMinimumSize(360, PLOTS_MIN_HEIGHT)
         self.graphics.ci.layout.setSpacing(2)
         axes = self.recorder.model.axes
         units = _common_unit([a.unit for a in axes])
-        self.position_plot = self._add_plot(0, "position", units)
-        self.velocity_plot = self._add_plot(1, "velocity", f"{units}/s" if units else "")
-        self.variable_plot = self._add_plot(2, "variable", "")
+        self._titles: dict[int, tuple[str, list[tuple[str, str]]]] = {}
+        self.captions: list[pg.LabelItem] = []
+        self.position_plot = self._add_plot(0)
+        self.velocity_plot = self._add_plot(1)
+        self.variable_plot = self._add_plot(2)
         self.plots = (self.position_plot, self.velocity_plot, self.variable_plot)
         for plot in self.plots[:-1]:
             plot.setXLink(self.variable_plot)
-            plot.getAxis("bottom").setStyle(showValues=False)
-        self.variable_plot.setLabel("bottom", "time", units="s", color=_AXIS_TEXT)
+            # The shared time axis is labelled once, under the last plot; above, the axis
+            # only carries the vertical grid lines, in no height of its own.
+            bottom = plot.getAxis("bottom")
+            bottom.setStyle(showValues=False, tickLength=0)
+            bottom.setHeight(1)
+        keys = [(a.name, AXIS_COLOURS[i % len(AXIS_COLOURS)]) for i, a in enumerate(axes)]
+        self._titles[0] = (self.tr("position") + (f" ({units})" if units else ""), keys)
+        velocity_unit = f" ({units}/s)" if units else ""
+        self._titles[1] = (self.tr("velocity") + velocity_unit, keys)
+        self._titles[2] = (self.tr("variable (none)"), [])
         for index, (position, velocity) in enumerate(
             zip(self.recorder.position_names(), self.recorder.velocity_names(), strict=True)
         ):
             colour = AXIS_COLOURS[index % len(AXIS_COLOURS)]
-            name = axes[index].name
-            self._curves[position] = self._add_curve(self.position_plot, colour, name)
-            self._curves[velocity] = self._add_curve(self.velocity_plot, colour, name)
-        self.variable_curve = self._add_curve(self.variable_plot, VARIABLE_COLOUR, None)
+            self._curves[position] = self._add_curve(self.position_plot, colour)
+            self._curves[velocity] = self._add_curve(self.velocity_plot, colour)
+        self.variable_curve = self._add_curve(self.variable_plot, VARIABLE_COLOUR)
         self.apply_colours(LIGHT)
         return self.graphics
 
     def apply_colours(self, colours: PlotColours) -> None:
-        """Background, axes, titles and legends for the light or the dark theme."""
+        """Background, axes and titles for the light or the dark theme."""
         self.colours = colours
         self.graphics.setBackground(colours.background)
         for plot in self.plots:
@@ -274,24 +307,49 @@ class TelemetryDock(QDockWidget):
                 axis = plot.getAxis(side)
                 axis.setPen(pg.mkPen(colours.axis))
                 axis.setTextPen(pg.mkPen(colours.text))
-                if axis.labelText:
-                    axis.setLabel(axis.labelText, axis.labelUnits, color=colours.text)
-            legend = plot.legend
-            if legend is not None:
-                legend.setBrush(pg.mkBrush(colours.legend))
-                legend.setPen(pg.mkPen(colours.legend_border))
-                legend.setLabelTextColor(colours.text)
-                for _sample, label in legend.items:
-                    label.setText(label.text)  # pyqtgraph keeps the new colour for the next text
+        self._show_time_label()
+        for row in range(len(self.plots)):
+            self._show_title(row)
         cross: RotationCross | None = getattr(self, "cross", None)  # built after the plots
         if cross is not None:
             cross.colours = colours
             cross.update()
 
-    def _add_plot(self, row: int, title: str, unit: str) -> pg.PlotItem:
+    def _show_title(self, row: int) -> None:
+        """The plot's caption beside it: what it shows, its unit, and a key of its curves.
+
+        Beside the data, not over it (a legend box covered the newest
+        samples), horizontal and wrapped rather than rotated (long names
+        overprinted the neighbouring plots), and costing width, of which a
+        dock has plenty, instead of height, of which it has little.
+        """
+        title, keys = self._titles[row]
+        entries = "<br>".join(
+            f"<span style='color:{colour}'>&#9473;&#9473;&nbsp;{name}</span>"
+            for name, colour in keys
+        )
+        text = f"<b>{title}</b>" + (f"<br>{entries}" if entries else "")
+        self.captions[row].setText(text, color=self.colours.text, size="8pt")
+
+    def _show_time_label(self) -> None:
+        """The time axis counts back from now (or from the moment of the pause)."""
+        label = (
+            self.tr("time before the pause") if self.recorder.paused else self.tr("time before now")
+        )
+        self.variable_plot.setLabel("bottom", label, units="s", color=self.colours.text)
+
+    def title(self, plot: pg.PlotItem) -> str:
+        """The caption beside ``plot`` (rich text)."""
+        return str(self.captions[self.plots.index(plot)].text)
+
+    def _add_plot(self, row: int) -> pg.PlotItem:
         plot = self.graphics.addPlot(row=row, col=0)
-        plot.setDownsampling(auto=True, mode="peak")
-        plot.setClipToView(True)
+        caption = self.graphics.addLabel("", row=row, col=1, justify="left")
+        caption.setFixedWidth(CAPTION_WIDTH)
+        self.captions.append(caption)
+        # No pyqtgraph downsampling or clipping: the recorder hands over an envelope of the
+        # window alone, and the curves are shifted (not re-fed) as time goes by, which
+        # pyqtgraph's view-dependent reductions would undo every frame.
         plot.showGrid(x=True, y=True, alpha=0.25)
         plot.hideButtons()
         plot.setMenuEnabled(False)
@@ -300,35 +358,24 @@ class TelemetryDock(QDockWidget):
         plot.getViewBox().sigRangeChangedManually.connect(self._range_dragged)
         for side in ("left", "bottom"):
             axis = plot.getAxis(side)
-            axis.setPen(pg.mkPen("#909090"))
-            axis.setTextPen(pg.mkPen(_AXIS_TEXT))
             # Grid lines at the labelled ticks only: the finer levels' lines cost several
-            # milliseconds per plot per frame to draw, as the time axis moves every frame.
+            # milliseconds per plot per frame to draw.
             axis.setStyle(maxTickLevel=0)
-        plot.getAxis("left").setWidth(62)
-        label = f"{title} ({unit})" if unit else title
-        plot.setLabel("left", label, color=_AXIS_TEXT)
-        if row < 2:
-            plot.addLegend(
-                offset=(6, 2),
-                brush=pg.mkBrush(255, 255, 255, 210),
-                pen=pg.mkPen("#d0d0d0"),
-                labelTextColor=_AXIS_TEXT,
-                colCount=len(self.recorder.model.axes),
-            )
+            # The time axis is fixed (it counts back from now) and the value axes change
+            # only with the data's range: painted once into a pixmap, each frame blits it.
+            axis.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
+        plot.getAxis("left").setWidth(54)
         return plot
 
     @staticmethod
-    def _add_curve(plot: pg.PlotItem, colour: str, name: str | None) -> pg.PlotDataItem:
-        # connect="all" as well: with the default "auto", pyqtgraph scans for NaNs anyway.
+    def _add_curve(plot: pg.PlotItem, colour: str) -> pg.PlotCurveItem:
+        # A bare curve item, not PlotDataItem: its data-processing layer would run again on
+        # every shift in time.  connect="all": with "auto", pyqtgraph scans for NaNs anyway.
         # Width 1: wider pens make pyqtgraph draw line segments one by one, several times
         # slower than a 1-pixel polyline.
-        return plot.plot(
-            pen=pg.mkPen(colour, width=1),
-            name=name,
-            skipFiniteCheck=True,
-            connect="all",
-        )
+        curve = pg.PlotCurveItem(pen=pg.mkPen(colour, width=1), skipFiniteCheck=True, connect="all")
+        plot.addItem(curve)
+        return curve
 
     def _build_rotation_column(self) -> QVBoxLayout:
         column = QVBoxLayout()
@@ -360,6 +407,7 @@ class TelemetryDock(QDockWidget):
             self.pause_button.setChecked(paused)  # comes back here through toggled
             return
         self.recorder.set_paused(paused)
+        self._show_time_label()
         self.pause_button.setText("Paused" if paused else "Pause")
         self.paused_label.setVisible(paused)
 
@@ -371,7 +419,10 @@ class TelemetryDock(QDockWidget):
         for plot in self.plots:
             view = plot.getViewBox()
             if enabled:
-                view.setAutoVisible(y=True)
+                # Fit to all the curve holds: the recorder hands over the window alone, and
+                # pyqtgraph's "visible only" would compare the view's times, which count back
+                # from now, with the curve's own, which are shifted.
+                view.setAutoVisible(y=False)
                 view.enableAutoRange(axis=pg.ViewBox.YAxis, enable=True)
             else:
                 view.disableAutoRange(axis=pg.ViewBox.YAxis)
@@ -428,11 +479,11 @@ class TelemetryDock(QDockWidget):
         self.variable_combo.setCurrentIndex(max(0, index))
         self.variable_combo.blockSignals(False)
         if variable is None:
-            self.variable_plot.setLabel("left", "variable (none)", color=_AXIS_TEXT)
+            self._titles[2] = (self.tr("variable (none)"), [])
         else:
-            self.variable_plot.setLabel(
-                "left", f"{variable.name} ({variable.unit})", color=_AXIS_TEXT
-            )
+            name = f"{variable.name} ({variable.unit})"
+            self._titles[2] = (name, [(variable.name, VARIABLE_COLOUR)])
+        self._show_title(2)
         rotation = variable is not None and variable.key == ROTATION_KEY
         self.zero_button.setEnabled(rotation)
         if not self.recorder.has_variables:
@@ -449,33 +500,53 @@ class TelemetryDock(QDockWidget):
         self.window_combo.blockSignals(False)
 
     def redraw(self) -> None:
-        """Scroll the time axis and hand changed series to their curves."""
+        """Hand changed series to their curves and slide every curve to the present.
+
+        The time axis is fixed (it counts back from the view's end), so time
+        going by moves the curves, not the axis: a shift of the items, with no
+        new data for pyqtgraph to process and no axis to repaint.  Nothing is
+        touched, and so nothing repainted, when no curve changed and the shift
+        would be under half a pixel.
+        """
         if not self.isVisible():
             return  # a hidden dock costs nothing; showEvent catches up
         recorder = self.recorder
+        window = recorder.window_s
+        if window != self._shown_window:
+            self._shown_window = window
+            self.variable_plot.setXRange(-window, 0.0, padding=0)
         end = recorder.view_end()
-        self.variable_plot.setXRange(end - recorder.window_s, end, padding=0)
+        points = self._max_points()
+        changed = False
         for name, curve in self._curves.items():
-            self._update_curve(name, name, curve)
+            changed = self._update_curve(name, name, curve, points) or changed
         variable = recorder.variable_name
         if variable is not None:
-            self._update_curve("variable", variable, self.variable_curve)
+            changed = (
+                self._update_curve("variable", variable, self.variable_curve, points) or changed
+            )
+        pixel_s = window / max(1.0, points / 2)
+        if changed or abs(end - self._shown_end) >= pixel_s / 2:
+            self._shown_end = end
+            for curve in (*self._curves.values(), self.variable_curve):
+                curve.setPos(-end, 0.0)
         self._show_angle()
         # Settle auto-ranges and view transforms now: left to the paint, they change the
         # scene during it and every frame gets painted twice.
         self.graphics.scene().prepareForPaint()
 
-    def _update_curve(self, slot: str, name: str, curve: pg.PlotDataItem) -> None:
-        points = self._max_points()
+    def _update_curve(self, slot: str, name: str, curve: pg.PlotCurveItem, points: int) -> bool:
+        """Give ``curve`` the envelope of ``name`` unless it already has it; True if it changed."""
         drawn = (self.recorder.revision(name), points)
         if self._drawn.get(slot) == drawn:
-            return
+            return False
         self._drawn[slot] = drawn
         t, y = self.recorder.envelope(name, points)
         if len(t):
             curve.setData(t, y)
         else:
             curve.setData(np.empty(0), np.empty(0))
+        return True
 
     def _max_points(self) -> int:
         """One min/max pair per pixel of plot width: all a screen can show."""
@@ -493,4 +564,5 @@ class TelemetryDock(QDockWidget):
     def showEvent(self, event: QShowEvent) -> None:
         super().showEvent(event)
         self._drawn.clear()
+        self._shown_end = math.nan
         self.redraw()
