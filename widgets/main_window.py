@@ -245,11 +245,17 @@ class MainWindow(QMainWindow):
             self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
             self.dynamics_panel = DynamicsPanel(station)
-            # The widest page scrolls rather than forcing its width on the whole window.
+            # The page reflows to its width (axes stacked when narrow) and scrolls only
+            # up and down: never sideways, where the second axis's column was cut off.
             dynamics_page = QScrollArea()
+            dynamics_page.setObjectName("dynamics_page")
             dynamics_page.setWidget(self.dynamics_panel)
             dynamics_page.setWidgetResizable(True)
             dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
+            dynamics_page.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+            bar = dynamics_page.verticalScrollBar().sizeHint().width()
+            dynamics_page.setMinimumWidth(self.dynamics_panel.minimumSizeHint().width() + bar)
+            self.dynamics_page = dynamics_page
             self.menu_panel.add_page(
                 self.tr("&Dynamics"), dynamics_page, self.tr("Device parameters (Alt+D)")
             )
