@@ -275,6 +275,7 @@ class MainWindow(QMainWindow):
         self.model.linkStateChanged.connect(self._show_link_status)
         self.model.linkStateChanged.connect(self._update_machine_menu)
         self.model.message.connect(self._show_message)
+        self.model.linkStateChanged.connect(self._clear_link_message)
         station.sessionChanged.connect(self._attach_session)
         self._attach_session()
         self._update_lock()
@@ -403,6 +404,9 @@ class MainWindow(QMainWindow):
         self.message_timer.setSingleShot(True)
         self.message_timer.setInterval(MESSAGE_SHOWN_MS)
         self.message_timer.timeout.connect(self._expire_message)
+        #: The link state when the message shown was said (a link failure's message goes
+        #: when the link is back).
+        self._message_link_state = LinkState.DISCONNECTED
         self.rejected_label = QLabel()
         self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
         bar = self.statusBar()
@@ -677,9 +681,13 @@ class MainWindow(QMainWindow):
         """Disable every motion control while the model says motion is refused, and say why."""
         reason = self.model.motion_lock_reason()
         enabled = reason is None
-        self.jog.set_enabled(enabled)
+        # A job under way leaves the machine free to move but not to be jogged: the
+        # jog buttons go off with the reason beside them, and a jog key says it.
+        jog_lock = self.model.jog_lock_reason if enabled else None
+        self.jog.set_enabled(enabled and jog_lock is None, reason or jog_lock)
         for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
+        self.manual_panel.set_jog_lock(jog_lock)
         self._update_machine_menu()
         self.lock_label.setText(self.tr("Motion locked: {0}").format(reason))
         self.lock_label.setVisible(not enabled)
@@ -701,13 +709,40 @@ class MainWindow(QMainWindow):
         A message left standing reads as the current state long after it stopped being
         true ("stopping…" an hour later).  The same text again only restarts the clock.
         """
+        if self._repeats_link_status(text):
+            return
         self.message_label.setText(text)
         self.message_label.setToolTip(text)
+        self._message_link_state = self.model.link_state
         self.message_timer.start()
+
+    def _repeats_link_status(self, text: str) -> bool:
+        """Whether ``text`` only says again what the link status beside it says now.
+
+        "Link lost: no reply" next to "Link lost — no reply" read as two events.
+        """
+        state = self.model.link_state
+        detail = self.model.link_detail
+        if state in (LinkState.CONNECTED, LinkState.DISCONNECTED) or not detail:
+            return False
+        link = self.station.link
+        if link is not None and detail == link.describe():
+            return False  # only the port's name: the message says more
+        return detail in text
 
     def _expire_message(self) -> None:
         self.message_label.clear()
         self.message_label.setToolTip("")
+
+    def _clear_link_message(self, state: object) -> None:
+        """A message from while the link was failing is wrong once it is back ("no answer…")."""
+        if state is LinkState.CONNECTED and self._message_link_state in (
+            LinkState.CONNECTING,
+            LinkState.STALE,
+            LinkState.LOST,
+        ):
+            self.message_timer.stop()
+            self._expire_message()
 
     def _show_rejected(self, *_args: object) -> None:
         session = self.station.session

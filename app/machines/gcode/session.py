@@ -501,10 +501,10 @@ class GcodeSession(MachineSession):
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
         silent = now - self._last_heard
-        if self.device_answered and silent > SILENCE_S:
-            self._last_heard = now
-            self.model.message.emit(f"No reply from the device for {SILENCE_S:g} s")
         self._watch_silence(silent, self.stale_after_s, SILENCE_S)
+        if self.device_answered and silent > SILENCE_S:
+            # The link status says it ("lost — no reply for 2.2 s"): no second message.
+            self._last_heard = now
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
