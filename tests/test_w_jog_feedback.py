@@ -16,6 +16,7 @@ from PySide6.QtWidgets import QApplication
 from pytestqt.qtbot import QtBot
 
 from app.jobs.run.runner import JobState
+from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 
@@ -101,3 +102,51 @@ def test_a_key_never_lets_up_a_button_the_mouse_holds(
     qtbot.mouseRelease(button, LEFT)
     assert window.jog.vector == (0, 0)  # and its release still ends the jog
     harness.run_until(lambda: not harness.station.model.any_moving, timeout=3)
+
+
+@pytest.mark.parametrize("profile", ["grbl-plotter", "xy-stage"])
+def test_esc_during_a_job_ends_the_job_and_the_machine_stays_still(
+    qtbot: QtBot, tmp_path: Path, profile: str
+) -> None:
+    """Stop means stop: the job ends (resumable) and nothing moves again by itself.
+
+    A G-code job once took the stop's reset for a device reset and carried on.
+    """
+    harness = StationHarness(load_profile(profile))
+    try:
+        window = MainWindow(harness.station, checkpoint_dir=tmp_path / "checkpoints")
+        qtbot.addWidget(window)
+        window.show()
+        window.activateWindow()
+        qtbot.waitUntil(window.isActiveWindow)
+        harness.connect()
+        harness.run(1.5)
+        job = tmp_path / ("edges.gcode" if profile == "grbl-plotter" else "edges.csv")
+        points = [(40 * (k % 2) + 5, 5 * k + 5) for k in range(9)]
+        if profile == "grbl-plotter":
+            text = "".join(f"G1 X{x} Y{y} F600\n" for x, y in points)
+        else:
+            text = "".join(f"{x}, {y}\n" for x, y in points)
+        job.write_text(text, encoding="utf-8")
+        dock = window.jobs_dock
+        dock.show()
+        assert dock.open_path(job)
+        runner = dock.runner
+        qtbot.mouseClick(dock.run_button, LEFT)
+        harness.run_until(lambda: runner.executed >= 2 and harness.station.model.any_moving)
+        qtbot.keyPress(window, Qt.Key.Key_Escape)
+        harness.run_until(lambda: not harness.station.model.any_moving, timeout=10)
+        assert runner.state is JobState.ABORTED
+        harness.run(1.0)  # the last position reports of the stop arrive
+        executed = runner.executed
+        still = [a.position for a in harness.station.model.axes]
+        harness.run(5.0)
+        assert [a.position for a in harness.station.model.axes] == still
+        assert runner.state is JobState.ABORTED and runner.executed == executed
+        # One figure everywhere: the dock's message, its count and its resume offer.
+        assert f"Job aborted after {executed} of {len(points)}" in dock.messages.toPlainText()
+        assert dock.count_label.text() == f"{executed} / {len(points)} ops"
+        assert f"completed {executed} of" in dock.resume_offer_label.text()
+        assert "line(s) not run" not in window.message_label.text()
+    finally:
+        harness.close()

@@ -40,6 +40,9 @@ class JogInput(QObject):
     #: the on-screen button for that direction shows itself pressed.
     keysChanged = Signal(tuple)
     shiftChanged = Signal(bool)
+    #: Stop (Esc, a Stop button) was asked, before the session is told: a job under way
+    #: must end with it, or it would set the machine going again on its own.
+    stopRequested = Signal()
 
     def __init__(self, station: Station, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -172,6 +175,7 @@ class JogInput(QObject):
 
     def stop_all(self) -> None:
         """The Stop button and Esc: forget held input and STOP every axis, moves included."""
+        self.stopRequested.emit()
         self._keys.clear()
         self._buttons.clear()
         self._set_sent((0,) * self._axes)

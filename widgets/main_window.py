@@ -311,6 +311,9 @@ class MainWindow(QMainWindow):
             checkpoint_dir = Path(data) / "checkpoints"
         self.job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
         self.jobs_dock = JobsDock(self.station, self.job_runner, self)
+        # Stop ends the job (its checkpoint kept): otherwise a G-code job took the stop's
+        # reset for a device reset and carried on, moving the machine again by itself.
+        self.jog.stopRequested.connect(self.job_runner.abort)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
         self.jobs_dock.hide()
         self.jobs_dock.jobOpened.connect(self._remember_job)

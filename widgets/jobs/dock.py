@@ -726,6 +726,7 @@ class JobsDock(QDockWidget):
             self._show_operation(self.runner.done)
         self._show_resume_offer()
         self._update_buttons()
+        self._show_progress()
 
     def _show_resume_offer(self) -> None:
         index = self.runner.resume_available
@@ -793,7 +794,9 @@ class JobsDock(QDockWidget):
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(executed, max(1, total)))
         text = f"{executed} / {total} ops"
-        if sent > executed:
+        # Sent ahead only while the job runs: once it ended (an abort drops what the
+        # machine held) the one figure is what ran, as the abort message says.
+        if sent > executed and self.runner.state in ACTIVE_STATES:
             text += f" · {sent} sent"
         self.count_label.setText(text)
         self.count_label.setToolTip(

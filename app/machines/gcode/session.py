@@ -336,7 +336,9 @@ class GcodeSession(MachineSession):
         if not keep_jog:
             self._jog = [0] * self.axis_count
             self._jog_target = None
-            self._quiet_stop = False
+            # A job owns the machine (its jog lock): the job says what ran, in its operations;
+            # a count of lines here beside it read as a second, different figure.
+            self._quiet_stop = self.model.jog_lock_reason is not None
         if not self.link.is_open:
             return
         self._dropped_by_stop = len(self.streamer.discard_queued())
