@@ -167,3 +167,55 @@ def test_the_dynamics_page_reflows_instead_of_scrolling_sideways(
     assert y_field.mapTo(panel, QPoint(0, 0)).x() > x_field.mapTo(panel, QPoint(0, 0)).x()
     assert y_field.mapTo(panel, QPoint(0, 0)).y() == x_field.mapTo(panel, QPoint(0, 0)).y()
     assert not page.horizontalScrollBar().isVisible()
+
+
+@pytest.mark.parametrize(
+    ("profile", "offered"),
+    [
+        ("xy-stage", []),
+        ("usb3", []),
+        ("pcb-drill", ["job_draw", "step", "job_smallest_first"]),
+        ("string-art", ["step", "job_smallest_first", "job_skip_unsupported"]),
+        ("grbl-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
+        ("corexy-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
+    ],
+)
+def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
+    qtbot: QtBot, tmp_path: Path, profile: str, offered: list[str]
+) -> None:
+    """No "Draw holes with the pen" without a pen, no drill options without a tool for
+    holes, and no gap left where a hidden option would have stood."""
+    harness = StationHarness(load_profile(profile))
+    try:
+        window = MainWindow(harness.station, checkpoint_dir=tmp_path / "checkpoints")
+        qtbot.addWidget(window)
+        window.show()
+        window.jobs_dock.toggleViewAction().trigger()
+        QApplication.processEvents()
+        dock = window.jobs_dock
+        options = {
+            "job_draw": dock.draw_check,
+            "step": dock.step_combo,
+            "job_smallest_first": dock.smallest_check,
+            "job_translate_pen": dock.translate_pen_check,
+            "job_skip_unsupported": dock.skip_check,
+        }
+        shown = [name for name, widget in options.items() if widget.isVisible()]
+        assert shown == offered
+        # Row by row, two to a row, in order: the n-th shown option sits in cell n.
+        centres = []
+        for name in shown:
+            widget = options[name]
+            centre = widget.mapTo(dock, widget.rect().center())
+            centres.append((centre.y(), centre.x()))
+        for index, (y, x) in enumerate(centres):
+            if index % 2:
+                left_y, left_x = centres[index - 1]
+                assert abs(y - left_y) <= 4 and x > left_x  # beside the one before
+            elif index:
+                assert y > centres[index - 1][0] + 8  # a new row, under the last
+        if "job_draw" not in shown:
+            dock.draw_check.setChecked(True)  # as a setting kept from a pen machine would
+            assert not dock.options.draw
+    finally:
+        harness.close()
