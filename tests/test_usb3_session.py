@@ -112,7 +112,9 @@ def test_connecting_asks_for_the_settings_and_the_session_follows_the_reply(
     # 1 mm on M3 (0.5 mm pitch) is 12800 counts, a whole number of half steps (16 counts).
     assert session.reachable(X, 1.0) == 1.0
     assert session.speed_mm_s(Z) == pytest.approx(300 * 1 * 1.5 / 6400)
-    assert usb3.written == [b"G;"]  # following the unit sends it nothing back
+    # Following the unit sends it nothing back; its first answer only has every axis asked
+    # where it stands, by moves of nothing.
+    assert b"".join(usb3.written) == (b"G;D+++;X000000000000000;Y000000000000000;Z000000000000000;")
 
 
 # --- moving by millimetres -----------------------------------------------------------
@@ -142,7 +144,7 @@ def test_x_by_12_5_mm_at_m6_and_an_eighth_step_sends_the_exact_count_and_ends_re
 
     assert model.axes[X].position == session.reachable(X, 12.5) == 12.5
     assert unit.usb3_emulator.positions == (80000, 0, 0)
-    assert seen == ["unknown", "moving", "idle"]  # no report before the move
+    assert seen == ["idle", "moving", "idle"]  # standing (asked at connect), moving, standing
     assert not model.axes[X].moving and model.axes[X].velocity == 0.0
     assert (model.axes[Y].position, model.axes[Z].position) == (0.0, 0.0)
 
@@ -390,3 +392,29 @@ def test_a_question_mark_from_the_unit_is_counted_before_the_frame_is_announced(
     wait_idle(unit, X)
     assert unit.station.model.axes[X].position == 0.125
     assert session.rejected == 1
+
+
+def test_after_connecting_every_axis_shows_where_it_stands_not_unknown(
+    usb3: StationHarness,
+) -> None:
+    """The unit speaks of positions only when an axis stops: the session asks at connect."""
+    # A unit switched on earlier and moved by its joystick: its axes are not at 0.
+    firmware = Usb3Firmware(usb3.clock, Usb3Config())
+    firmware.receive(b"D+-+;X000000000006400;Y000000000003200;")
+    for _ in range(100):  # its reports go nowhere: no station listens yet
+        usb3.clock.advance(0.5)
+        firmware.run_until(usb3.clock.now())
+    assert firmware.positions == (6400, -3200, 0)
+    usb3.station.connect_transport(LoopbackTransport(firmware, usb3.clock, realtime=False))
+    model = usb3.station.model
+    assert [a.status_text for a in model.axes] == ["unknown"] * 3  # nothing heard yet
+    usb3.run(0.1)
+    assert [a.status_text for a in model.axes] == ["idle"] * 3
+    assert not any(a.moving for a in model.axes)
+    assert model.axes[X].position == pytest.approx(1.0)  # 6400 counts at M6
+    assert model.axes[Y].position == pytest.approx(-0.5)
+    assert model.axes[Z].position == 0.0
+    assert firmware.positions == (6400, -3200, 0)  # asking moved nothing
+    usb3.run(1.0)
+    assert firmware.positions == (6400, -3200, 0)
+    assert [a.status_text for a in model.axes] == ["idle"] * 3

@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 import pytest
+from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
 from app.machine import LinkState
+from app.profiles import load_profile
+from app.settings import StationSettings
 from tests.helpers.harness import StationHarness
+from widgets.panels.connection import ConnectionPanel
 from widgets.panels.info import LINK_COLOURS, InfoPanel
 
 
@@ -82,3 +86,24 @@ def test_positions_have_three_decimals(harness: StationHarness, info: InfoPanel)
     harness.session.move_absolute(1, 12.3456)
     harness.run_until(lambda: info.statuses[1].text() == "target reached", timeout=5)
     assert info.positions[1].text() == "12.346 mm"
+
+
+def test_usb3_axes_show_their_state_right_after_connecting(qtbot: QtBot) -> None:
+    """The unit reports an axis only when it moves: Connect asks, so none stays "unknown"."""
+    usb3 = StationHarness(load_profile("usb3"))
+    try:
+        info = InfoPanel(usb3.station.model)
+        connection = ConnectionPanel(usb3.station, StationSettings(None))
+        for widget in (info, connection):
+            qtbot.addWidget(widget)
+            widget.show()
+        assert [s.text() for s in info.statuses] == ["unknown"] * 3
+        qtbot.mouseClick(connection.transport_buttons["emulator"], Qt.MouseButton.LeftButton)
+        qtbot.mouseClick(connection.connect_button, Qt.MouseButton.LeftButton)
+        usb3.run(0.2)
+        assert [s.text() for s in info.statuses] == ["idle"] * 3
+        assert all(p.isEnabled() for p in info.positions)  # live, not greyed
+        assert [p.text() for p in info.positions] == ["0.000 mm"] * 3
+        assert usb3.usb3_emulator.positions == (0, 0, 0)  # asking moved nothing
+    finally:
+        usb3.close()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Iterator
 from pathlib import Path
@@ -305,12 +306,15 @@ def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
     qtbot.addWidget(dock)
     drill_file = shared_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
     assert dock.open_path(drill_file) is False  # the XY stage cannot drill: refused, listed
-    dock.draw_check.setChecked(True)  # the same file as pen work: still refused (no pen) …
-    qtbot.waitUntil(lambda: "has no pen" in dock.messages.toPlainText())  # re-read on the worker
+    # The stage has no pen: the option is not offered, and a choice kept from a machine
+    # with a pen does not apply here.
+    assert not dock.draw_check.isVisibleTo(dock)
+    dock.draw_check.setChecked(True)
+    qtbot.waitUntil(dock.open_button.isEnabled)  # the file re-read on the worker
     options = dock.options
-    assert options.draw and options.excellon_step_inch == 1e-4
-    # … but the loader built pen crosses, which a machine with a pen would run.
-    program = load_job(drill_file, ["X", "Y"], options)
+    assert not options.draw and options.excellon_step_inch == 1e-4
+    # Where it applies, the loader builds pen crosses, which a machine with a pen runs.
+    program = load_job(drill_file, ["X", "Y"], dataclasses.replace(options, draw=True))
     kinds = {op.kind for op in program}
     assert OpKind.PEN_DOWN in kinds and OpKind.DRILL not in kinds
 

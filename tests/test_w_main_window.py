@@ -575,3 +575,33 @@ def test_escape_in_a_file_dialog_closes_its_popup_then_the_dialog_and_never_stop
     qtbot.keyClick(window, Qt.Key.Key_Escape)  # from the window, Esc stops
     harness.run_until(lambda: not harness.station.model.any_moving, timeout=2)
     assert x_position(harness) < 40
+
+
+def test_a_message_that_repeats_the_link_status_is_not_shown_twice(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    """The lost link is said once, by the link status; its message does not stand beside it."""
+    assert harness.station.link is not None
+    harness.loopback.set_manipulator(lambda _direction, _data: b"")  # the device goes silent
+    harness.run_until(lambda: "lost" in window.link_status.text(), timeout=5)
+    detail = harness.station.model.link_detail
+    harness.station.model.message.emit(f"Link lost: {detail}")
+    assert window.message_label.text() == ""
+    harness.station.model.message.emit("Job aborted after 3 of 9 operations")
+    assert window.message_label.text() == "Job aborted after 3 of 9 operations"
+
+
+def test_a_message_about_a_failing_link_goes_when_the_link_is_back(
+    qtbot: QtBot, harness: StationHarness, window: MainWindow
+) -> None:
+    harness.loopback.set_manipulator(lambda _direction, _data: b"")
+    harness.run_until(lambda: "lost" in window.link_status.text(), timeout=5)
+    harness.station.model.message.emit("Stopped: 4 line(s) not run")
+    assert window.message_label.text() == "Stopped: 4 line(s) not run"
+    harness.loopback.set_manipulator(None)  # the device answers again; the station reconnects
+    harness.run_until(lambda: window.link_status.text().startswith("Link connected"), timeout=10)
+    assert window.message_label.text() == ""
+    # A message said while the link is up stays its time.
+    harness.station.model.message.emit("hello operator")
+    harness.run(0.5)
+    assert window.message_label.text() == "hello operator"

@@ -18,6 +18,7 @@ from PySide6.QtWidgets import QApplication, QWidget
 from pytestqt.qtbot import QtBot
 
 from app.jobs.run.runner import JobState
+from app.machines.stage.parameters import STAGE_PARAMETERS
 from app.profiles import available_profiles, load_profile
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -130,3 +131,91 @@ def test_continue_of_a_wait_is_on_screen_at_1280_by_800(
     assert _fully_shown(window, dock.prompt_label)
     qtbot.mouseClick(dock.continue_button, LEFT)
     harness.run_until(lambda: dock.runner.state is JobState.DONE, timeout=30)
+
+
+def test_the_dynamics_page_reflows_instead_of_scrolling_sideways(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    """At 1280x800 with every dock the page is a third of the window: the axes stack."""
+    window = _every_dock_open(qtbot, harness, tmp_path)
+    window.resize(SCREEN)
+    page = window.dynamics_page
+    index = window.stack.indexOf(page)
+    qtbot.mouseClick(window.menu_panel.button(index), LEFT)
+    QApplication.processEvents()
+    assert window.stack.currentWidget() is page
+    assert window.size() == SCREEN
+    panel = window.dynamics_panel
+    assert panel.stacked
+    assert not page.horizontalScrollBar().isVisible()
+    assert panel.width() <= page.viewport().width()
+    # Every field and its state, of both axes, lies inside the page's width (scrolling
+    # down reaches it); none is cut at the right edge.
+    for key, field in panel.fields.items():
+        for widget in (field, panel.states[key]):
+            left = widget.mapTo(panel, QPoint(0, 0)).x()
+            assert left >= 0 and left + widget.width() <= page.viewport().width(), key
+    # With the docks closed there is room: the axes go back side by side.
+    for dock in (window.jobs_dock, window.telemetry_dock, window.developer_pane):
+        dock.toggleViewAction().trigger()
+    QApplication.processEvents()
+    assert window.size() == SCREEN
+    assert not panel.stacked
+    first = int(STAGE_PARAMETERS[0].type)
+    x_field = panel.fields[(0, first)]
+    y_field = panel.fields[(1, first)]
+    assert y_field.mapTo(panel, QPoint(0, 0)).x() > x_field.mapTo(panel, QPoint(0, 0)).x()
+    assert y_field.mapTo(panel, QPoint(0, 0)).y() == x_field.mapTo(panel, QPoint(0, 0)).y()
+    assert not page.horizontalScrollBar().isVisible()
+
+
+@pytest.mark.parametrize(
+    ("profile", "offered"),
+    [
+        ("xy-stage", []),
+        ("usb3", []),
+        ("pcb-drill", ["job_draw", "step", "job_smallest_first"]),
+        ("string-art", ["step", "job_smallest_first", "job_skip_unsupported"]),
+        ("grbl-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
+        ("corexy-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
+    ],
+)
+def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
+    qtbot: QtBot, tmp_path: Path, profile: str, offered: list[str]
+) -> None:
+    """No "Draw holes with the pen" without a pen, no drill options without a tool for
+    holes, and no gap left where a hidden option would have stood."""
+    harness = StationHarness(load_profile(profile))
+    try:
+        window = MainWindow(harness.station, checkpoint_dir=tmp_path / "checkpoints")
+        qtbot.addWidget(window)
+        window.show()
+        window.jobs_dock.toggleViewAction().trigger()
+        QApplication.processEvents()
+        dock = window.jobs_dock
+        options = {
+            "job_draw": dock.draw_check,
+            "step": dock.step_combo,
+            "job_smallest_first": dock.smallest_check,
+            "job_translate_pen": dock.translate_pen_check,
+            "job_skip_unsupported": dock.skip_check,
+        }
+        shown = [name for name, widget in options.items() if widget.isVisible()]
+        assert shown == offered
+        # Row by row, two to a row, in order: the n-th shown option sits in cell n.
+        centres = []
+        for name in shown:
+            widget = options[name]
+            centre = widget.mapTo(dock, widget.rect().center())
+            centres.append((centre.y(), centre.x()))
+        for index, (y, x) in enumerate(centres):
+            if index % 2:
+                left_y, left_x = centres[index - 1]
+                assert abs(y - left_y) <= 4 and x > left_x  # beside the one before
+            elif index:
+                assert y > centres[index - 1][0] + 8  # a new row, under the last
+        if "job_draw" not in shown:
+            dock.draw_check.setChecked(True)  # as a setting kept from a pen machine would
+            assert not dock.options.draw
+    finally:
+        harness.close()

@@ -36,7 +36,13 @@ class JogInput(QObject):
 
     #: The jog vector (one -1/0/+1 per axis) after every change.
     vectorChanged = Signal(tuple)
+    #: The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change:
+    #: the on-screen button for that direction shows itself pressed.
+    keysChanged = Signal(tuple)
     shiftChanged = Signal(bool)
+    #: Stop (Esc, a Stop button) was asked, before the session is told: a job under way
+    #: must end with it, or it would set the machine going again on its own.
+    stopRequested = Signal()
 
     def __init__(self, station: Station, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -46,6 +52,9 @@ class JogInput(QObject):
         self._buttons: dict[Hashable, tuple[int, ...]] = {}
         self._shift = False
         self._enabled = True
+        #: Why input is refused while disabled (said when a key or button is pressed anyway).
+        self._refusal: str | None = None
+        self._key_vector: tuple[int, ...] = (0,) * self._axes
         self._sent: tuple[int, ...] = (0,) * self._axes
         #: What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).
         self.key_step = 0.0
@@ -87,12 +96,16 @@ class JogInput(QObject):
         """A jog key went down; returns whether the key is a jog key at all."""
         if not self.is_jog_key(key):
             return False
+        if not self._enabled:
+            self._say_refused()
+            return True
         if self.key_step > 0:
             session = self._station.session
             if self._enabled and session is not None and key not in self._stepped:
                 self._stepped.add(key)
                 axis, direction = JOG_KEYS[key]
                 session.step_jog(axis, direction, self.key_step)
+                self._set_sent(self._sent)  # the key's button shows it down
             return True
         if self._enabled and key not in self._keys:
             self._keys.add(key)
@@ -114,6 +127,7 @@ class JogInput(QObject):
         """A key came up; returns whether it was a held jog key."""
         if key in self._stepped:
             self._stepped.discard(key)
+            self._set_sent(self._sent)
             return True
         if key not in self._keys:
             return False
@@ -124,6 +138,7 @@ class JogInput(QObject):
     def button_press(self, source: Hashable, directions: Sequence[int]) -> None:
         """An on-screen jog button went down with its own direction per axis."""
         if not self._enabled:
+            self._say_refused()
             return
         padded = (*directions, *(0,) * self._axes)[: self._axes]
         self._buttons[source] = tuple(padded)
@@ -160,6 +175,7 @@ class JogInput(QObject):
 
     def stop_all(self) -> None:
         """The Stop button and Esc: forget held input and STOP every axis, moves included."""
+        self.stopRequested.emit()
         self._keys.clear()
         self._buttons.clear()
         self._set_sent((0,) * self._axes)
@@ -167,11 +183,20 @@ class JogInput(QObject):
         if session is not None:
             session.stop_all()
 
-    def set_enabled(self, enabled: bool) -> None:
-        """Motion lock: while disabled nothing new is held and what was held is let go."""
+    def set_enabled(self, enabled: bool, reason: str | None = None) -> None:
+        """Motion or jog lock: while disabled nothing new is held and what was held is let go.
+
+        ``reason`` is said in the status bar when a jog key is pressed anyway, so a locked
+        key is never silently dead.
+        """
         self._enabled = enabled
+        self._refusal = None if enabled else reason
         if not enabled:
             self.release_all()
+
+    def _say_refused(self) -> None:
+        if self._refusal:
+            self._station.model.message.emit(self.tr("Jog refused: {0}").format(self._refusal))
 
     # --- internals -----------------------------------------------------------
 
@@ -187,17 +212,28 @@ class JogInput(QObject):
 
     def _push(self) -> None:
         wanted = self._compute()
-        if wanted == self._sent:
-            return
-        session = self._station.session
-        if session is not None:
-            session.set_jog(wanted)
-        self._set_sent(wanted)
+        if wanted != self._sent:
+            session = self._station.session
+            if session is not None:
+                session.set_jog(wanted)
+        self._set_sent(wanted)  # the held keys may have changed even if the jog did not
 
     def _set_sent(self, vector: tuple[int, ...]) -> None:
         if vector != self._sent:
             self._sent = vector
             self.vectorChanged.emit(vector)
+        keys = self._keys_vector()
+        if keys != self._key_vector:
+            self._key_vector = keys
+            self.keysChanged.emit(keys)
+
+    def _keys_vector(self) -> tuple[int, ...]:
+        """The jog the held keys ask for (step-mode taps included while down)."""
+        totals = [0] * self._axes
+        for key in self._keys | self._stepped:
+            axis, direction = JOG_KEYS[key]
+            totals[axis] += direction
+        return tuple(max(-1, min(1, t)) for t in totals)
 
     def _poll_buttons(self) -> None:
         """While a button is held and the mouse says so, the jog goes on."""

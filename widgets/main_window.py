@@ -245,11 +245,17 @@ class MainWindow(QMainWindow):
             self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
             self.dynamics_panel = DynamicsPanel(station)
-            # The widest page scrolls rather than forcing its width on the whole window.
+            # The page reflows to its width (axes stacked when narrow) and scrolls only
+            # up and down: never sideways, where the second axis's column was cut off.
             dynamics_page = QScrollArea()
+            dynamics_page.setObjectName("dynamics_page")
             dynamics_page.setWidget(self.dynamics_panel)
             dynamics_page.setWidgetResizable(True)
             dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
+            dynamics_page.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+            bar = dynamics_page.verticalScrollBar().sizeHint().width()
+            dynamics_page.setMinimumWidth(self.dynamics_panel.minimumSizeHint().width() + bar)
+            self.dynamics_page = dynamics_page
             self.menu_panel.add_page(
                 self.tr("&Dynamics"), dynamics_page, self.tr("Device parameters (Alt+D)")
             )
@@ -269,6 +275,7 @@ class MainWindow(QMainWindow):
         self.model.linkStateChanged.connect(self._show_link_status)
         self.model.linkStateChanged.connect(self._update_machine_menu)
         self.model.message.connect(self._show_message)
+        self.model.linkStateChanged.connect(self._clear_link_message)
         station.sessionChanged.connect(self._attach_session)
         self._attach_session()
         self._update_lock()
@@ -304,6 +311,9 @@ class MainWindow(QMainWindow):
             checkpoint_dir = Path(data) / "checkpoints"
         self.job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
         self.jobs_dock = JobsDock(self.station, self.job_runner, self)
+        # Stop ends the job (its checkpoint kept): otherwise a G-code job took the stop's
+        # reset for a device reset and carried on, moving the machine again by itself.
+        self.jog.stopRequested.connect(self.job_runner.abort)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
         self.jobs_dock.hide()
         self.jobs_dock.jobOpened.connect(self._remember_job)
@@ -397,6 +407,9 @@ class MainWindow(QMainWindow):
         self.message_timer.setSingleShot(True)
         self.message_timer.setInterval(MESSAGE_SHOWN_MS)
         self.message_timer.timeout.connect(self._expire_message)
+        #: The link state when the message shown was said (a link failure's message goes
+        #: when the link is back).
+        self._message_link_state = LinkState.DISCONNECTED
         self.rejected_label = QLabel()
         self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
         bar = self.statusBar()
@@ -671,9 +684,13 @@ class MainWindow(QMainWindow):
         """Disable every motion control while the model says motion is refused, and say why."""
         reason = self.model.motion_lock_reason()
         enabled = reason is None
-        self.jog.set_enabled(enabled)
+        # A job under way leaves the machine free to move but not to be jogged: the
+        # jog buttons go off with the reason beside them, and a jog key says it.
+        jog_lock = self.model.jog_lock_reason if enabled else None
+        self.jog.set_enabled(enabled and jog_lock is None, reason or jog_lock)
         for panel in self.motion_panels:
             panel.set_motion_enabled(enabled)
+        self.manual_panel.set_jog_lock(jog_lock)
         self._update_machine_menu()
         self.lock_label.setText(self.tr("Motion locked: {0}").format(reason))
         self.lock_label.setVisible(not enabled)
@@ -695,13 +712,40 @@ class MainWindow(QMainWindow):
         A message left standing reads as the current state long after it stopped being
         true ("stopping…" an hour later).  The same text again only restarts the clock.
         """
+        if self._repeats_link_status(text):
+            return
         self.message_label.setText(text)
         self.message_label.setToolTip(text)
+        self._message_link_state = self.model.link_state
         self.message_timer.start()
+
+    def _repeats_link_status(self, text: str) -> bool:
+        """Whether ``text`` only says again what the link status beside it says now.
+
+        "Link lost: no reply" next to "Link lost — no reply" read as two events.
+        """
+        state = self.model.link_state
+        detail = self.model.link_detail
+        if state in (LinkState.CONNECTED, LinkState.DISCONNECTED) or not detail:
+            return False
+        link = self.station.link
+        if link is not None and detail == link.describe():
+            return False  # only the port's name: the message says more
+        return detail in text
 
     def _expire_message(self) -> None:
         self.message_label.clear()
         self.message_label.setToolTip("")
+
+    def _clear_link_message(self, state: object) -> None:
+        """A message from while the link was failing is wrong once it is back ("no answer…")."""
+        if state is LinkState.CONNECTED and self._message_link_state in (
+            LinkState.CONNECTING,
+            LinkState.STALE,
+            LinkState.LOST,
+        ):
+            self.message_timer.stop()
+            self._expire_message()
 
     def _show_rejected(self, *_args: object) -> None:
         session = self.station.session

@@ -257,23 +257,31 @@ class JobsDock(QDockWidget):
         )
         gcode = self.station.profile.dialect == "gcode"
         pen = self.station.profile.capabilities.pen
+        drill = self.station.profile.capabilities.drill
         # Drill files are drilled or drawn: where the machine has neither tool they are
-        # refused whatever these say, so they are not offered.
-        holes = pen or self.station.profile.capabilities.drill
-        self.draw_check.setVisible(holes)
-        self.smallest_check.setVisible(self.station.profile.capabilities.drill)
-        self.step_label.setVisible(holes)
-        self.step_combo.setVisible(holes)
-        for check, visible in ((self.translate_pen_check, gcode and pen), (self.skip_check, gcode)):
-            check.setVisible(visible)
+        # refused whatever these say, so they are not offered; the pen option only where
+        # there is a pen (the winder drills but has none).
+        for check in (self.translate_pen_check, self.skip_check):
             check.toggled.connect(self._options_changed)
+        step_widget = QWidget()
+        step_widget.setLayout(step)
+        step.setContentsMargins(0, 0, 0, 0)
+        offered: list[tuple[QWidget, bool]] = [
+            (self.draw_check, pen),
+            (step_widget, pen or drill),
+            (self.smallest_check, drill),
+            (self.translate_pen_check, gcode and pen),
+            (self.skip_check, gcode),
+        ]
         # Two short columns rather than one long row: the dock must fit beside the window's
-        # pages on a 1280 px screen, so no option may set a width of its own.
-        grid.addWidget(self.draw_check, 0, 0)
-        grid.addLayout(step, 0, 1)
-        grid.addWidget(self.smallest_check, 1, 0)
-        grid.addWidget(self.translate_pen_check, 2, 0)
-        grid.addWidget(self.skip_check, 2, 1)
+        # pages on a 1280 px screen, so no option may set a width of its own.  Only the
+        # options this machine offers are placed, in order, so no gap is left where a
+        # hidden one would have been.
+        placed = [w for w, visible in offered if visible] + [w for w, v in offered if not v]
+        for index, widget in enumerate(placed):
+            grid.addWidget(widget, index // 2, index % 2)  # hidden ones last: they take no room
+        for widget, visible in offered:
+            widget.setVisible(visible)
         grid.setColumnStretch(2, 1)  # spare width beside, so a click on a check's caption hits it
         return grid
 
@@ -313,7 +321,8 @@ class JobsDock(QDockWidget):
     def options(self) -> JobOptions:
         profile = self.station.profile
         return JobOptions(
-            draw=self.draw_check.isChecked(),
+            # A choice kept from another machine's session never applies where it is hidden.
+            draw=self.draw_check.isChecked() and profile.capabilities.pen,
             smallest_first=self.smallest_check.isChecked(),
             excellon_step_inch=float(self.step_combo.currentData()),
             translate_pen=self.translate_pen_check.isChecked(),
@@ -726,6 +735,7 @@ class JobsDock(QDockWidget):
             self._show_operation(self.runner.done)
         self._show_resume_offer()
         self._update_buttons()
+        self._show_progress()
 
     def _show_resume_offer(self) -> None:
         index = self.runner.resume_available
@@ -793,7 +803,9 @@ class JobsDock(QDockWidget):
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(executed, max(1, total)))
         text = f"{executed} / {total} ops"
-        if sent > executed:
+        # Sent ahead only while the job runs: once it ended (an abort drops what the
+        # machine held) the one figure is what ran, as the abort message says.
+        if sent > executed and self.runner.state in ACTIVE_STATES:
             text += f" · {sent} sent"
         self.count_label.setText(text)
         self.count_label.setToolTip(

@@ -2,7 +2,7 @@
 
 Command buttons for the procedures that take no value (N V K Z P), X and Y
 each with a target in microsteps and a send button, a terminal (a line
-entry with Send and Cls, the lines sent kept in a history walked with
+entry with Send and Clear, the lines sent kept in a history walked with
 Up/Down, the device's replies shown), and the tool's two columns: "command
 received" and "command done", filled as the device says ``R`` and ``D``.
 

@@ -21,10 +21,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from PySide6.QtCore import QSize
+from PySide6.QtGui import QResizeEvent
 from PySide6.QtWidgets import (
     QFileDialog,
     QGridLayout,
-    QHBoxLayout,
     QLabel,
     QMessageBox,
     QPushButton,
@@ -76,62 +77,154 @@ class DynamicsPanel(QWidget):
         #: The open "write these differences?" question, while it is asked.
         self.confirm_box: QMessageBox | None = None
 
-        grid = QGridLayout()
-        grid.setHorizontalSpacing(10)
-        grid.setVerticalSpacing(4)
-        grid.addWidget(QLabel("<b>Parameter</b>"), 0, 0)
-        for axis_index, axis in enumerate(self._model.axes):
-            grid.addWidget(QLabel(f"<b>{axis.name}</b>"), 0, 1 + 2 * axis_index, 1, 2)
-        for row, parameter in enumerate(STAGE_PARAMETERS, start=1):
-            unit = f" [{parameter.unit}]" if parameter.unit else ""
-            grid.addWidget(QLabel(parameter.label + unit), row, 0)
-            for axis_index in range(len(self._model.axes)):
+        self._headers = [QLabel(f"<b>{axis.name}</b>") for axis in self._model.axes]
+        self._parameter_header = QLabel(self.tr("<b>Parameter</b>"))
+        #: Each axis has its own column of parameter names: side by side only the first
+        #: axis's is shown, stacked each axis block has its own.
+        self._names: list[list[QLabel]] = []
+        for axis_index in range(len(self._model.axes)):
+            names = []
+            for parameter in STAGE_PARAMETERS:
+                unit = f" [{parameter.unit}]" if parameter.unit else ""
+                names.append(QLabel(parameter.label + unit))
                 key = (axis_index, int(parameter.type))
-                field = self._field(parameter, key)
                 state = QLabel()
                 state.setMinimumWidth(state.fontMetrics().horizontalAdvance(_WIDEST_STATE))
-                grid.addWidget(field, row, 1 + 2 * axis_index)
-                grid.addWidget(state, row, 2 + 2 * axis_index)
-                self.fields[key] = field
+                # "✗ refused, kept 12.500" wraps under itself rather than widening the page.
+                state.setWordWrap(True)
+                self.fields[key] = self._field(parameter, key)
                 self.states[key] = state
-        grid.setColumnStretch(grid.columnCount(), 1)
+            self._names.append(names)
+        self.grid = QGridLayout()
+        self.grid.setHorizontalSpacing(10)
+        self.grid.setVerticalSpacing(4)
 
-        self.read_button = QPushButton("Read")
+        self.read_button = QPushButton(self.tr("Read"))
         self.read_button.setToolTip("Read every parameter from the device into the fields")
         self.read_button.clicked.connect(self.read)
-        self.apply_button = QPushButton("Apply")
+        self.apply_button = QPushButton(self.tr("Apply"))
         self.apply_button.setToolTip("Write the edited values to the device; it confirms each one")
         self.apply_button.clicked.connect(self.apply)
-        self.save_button = QPushButton("Save snapshot…")
+        self.save_button = QPushButton(self.tr("Save snapshot…"))
         self.save_button.setToolTip("Save every stored parameter to a TOML file")
         self.save_button.clicked.connect(self._ask_save)
-        self.load_button = QPushButton("Load snapshot…")
+        self.load_button = QPushButton(self.tr("Load snapshot…"))
         self.load_button.setToolTip("Show what a snapshot changes, then write only that")
         self.load_button.clicked.connect(self._ask_load)
-        self.undo_button = QPushButton("Undo last write")
+        self.undo_button = QPushButton(self.tr("Undo last write"))
         self.undo_button.setToolTip("Write back what the last Apply or load replaced")
         self.undo_button.clicked.connect(self.undo)
         self.summary = QLabel()
         self.summary.setWordWrap(True)
-        buttons = QHBoxLayout()
-        buttons.addWidget(self.read_button)
-        buttons.addWidget(self.apply_button)
-        buttons.addWidget(self.save_button)
-        buttons.addWidget(self.load_button)
-        buttons.addWidget(self.undo_button)
-        buttons.addWidget(self.summary, 1)
+        self.buttons = QGridLayout()
+        self.buttons.setHorizontalSpacing(6)
 
         layout = QVBoxLayout(self)
-        layout.addLayout(grid)
+        layout.addLayout(self.grid)
         layout.addSpacing(6)
-        layout.addLayout(buttons)
+        layout.addLayout(self.buttons)
         layout.addStretch(1)
+        # The widths each arrangement needs, measured once laid out; the page picks the
+        # side-by-side one only where it fits, so it never scrolls sideways.
+        self.stacked = True
+        self._arrange(stacked=True)
+        self._stacked_width = layout.minimumSize().width()
+        self._arrange(stacked=False)
+        self._wide_width = layout.minimumSize().width()
 
         self._model.parameterChanged.connect(self._show_parameter)
         self._model.linkStateChanged.connect(self._update_enabled)
         for axis_index, type_ in self.fields:
             self._show_parameter(axis_index, type_)
         self._update_enabled()
+
+    # --- reflow ------------------------------------------------------------------
+
+    def _arrange(self, *, stacked: bool) -> None:
+        """Axes side by side where the page is wide enough, else one axis block under another.
+
+        At 1280 px with the jobs dock open the page is a third of the window: side by side
+        the second axis's column ran off its edge and the page scrolled sideways.
+        """
+        self.stacked = stacked
+        for layout in (self.grid, self.buttons):
+            while layout.count():
+                layout.takeAt(0)
+        grid = self.grid
+        axes = range(len(self._model.axes))
+        if stacked:
+            self._parameter_header.hide()
+            row = 0
+            for axis in axes:
+                grid.addWidget(self._headers[axis], row, 0, 1, 3)
+                row += 1
+                for parameter, name in zip(STAGE_PARAMETERS, self._names[axis], strict=True):
+                    key = (axis, int(parameter.type))
+                    name.show()
+                    grid.addWidget(name, row, 0)
+                    grid.addWidget(self.fields[key], row, 1)
+                    grid.addWidget(self.states[key], row, 2)
+                    row += 1
+            columns = 3
+        else:
+            self._parameter_header.show()
+            grid.addWidget(self._parameter_header, 0, 0)
+            for axis in axes:
+                grid.addWidget(self._headers[axis], 0, 1 + 2 * axis, 1, 2)
+                for row, (parameter, name) in enumerate(
+                    zip(STAGE_PARAMETERS, self._names[axis], strict=True), start=1
+                ):
+                    key = (axis, int(parameter.type))
+                    if axis == 0:
+                        grid.addWidget(name, row, 0)
+                    name.setVisible(axis == 0)
+                    grid.addWidget(self.fields[key], row, 1 + 2 * axis)
+                    grid.addWidget(self.states[key], row, 2 + 2 * axis)
+            columns = 1 + 2 * len(axes)
+        for column in range(grid.columnCount()):
+            grid.setColumnStretch(column, 0)
+        grid.setColumnStretch(columns, 1)
+        # The buttons: one row beside the summary, or two rows with the summary under them.
+        buttons = self.buttons
+        if stacked:
+            for column, button in enumerate((self.read_button, self.apply_button)):
+                buttons.addWidget(button, 0, column)
+            buttons.addWidget(self.undo_button, 0, 2)
+            buttons.addWidget(self.save_button, 1, 0, 1, 2)
+            buttons.addWidget(self.load_button, 1, 2)
+            buttons.addWidget(self.summary, 2, 0, 1, 4)
+            for column in range(6):
+                buttons.setColumnStretch(column, 1 if column == 3 else 0)
+        else:
+            for column, button in enumerate(
+                (
+                    self.read_button,
+                    self.apply_button,
+                    self.save_button,
+                    self.load_button,
+                    self.undo_button,
+                )
+            ):
+                buttons.addWidget(button, 0, column)
+            buttons.addWidget(self.summary, 0, 5)
+            for column in range(6):
+                buttons.setColumnStretch(column, 1 if column == 5 else 0)
+        self.grid.invalidate()
+        self.buttons.invalidate()
+
+    def minimumSizeHint(self) -> QSize:
+        """As narrow as the stacked arrangement: the page reflows rather than scroll."""
+        hint = super().minimumSizeHint()
+        if not hasattr(self, "_stacked_width"):
+            return hint
+        return QSize(self._stacked_width, hint.height())
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        stacked = event.size().width() < self._wide_width
+        if stacked != self.stacked:
+            self._arrange(stacked=stacked)
+            self.updateGeometry()  # the height differs: a scroll area around it follows
+        super().resizeEvent(event)
 
     def _field(self, parameter: StageParameter, key: _Key) -> NumberField:
         low, high = wire_limits(parameter, self._station.profile.axes[key[0]])

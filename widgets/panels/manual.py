@@ -129,9 +129,21 @@ class ManualPanel(QWidget):
             cross.addSpacing(18)
             cross.addLayout(self._z_column(station.profile.axes[2].name))
         cross.addStretch(1)
+        #: Why the jog buttons are off while the machine itself may move (a job under way).
+        self.jog_note = QLabel()
+        self.jog_note.setObjectName("jog_lock_note")
+        self.jog_note.setWordWrap(True)
+        self.jog_note.setStyleSheet("color: #a05a00; font-weight: bold;")
+        self.jog_note.hide()
+        self._jog_lock: str | None = None
+        #: Buttons shown pressed for a held arrow key (never one the mouse holds).
+        self._key_lit: set[QPushButton] = set()
+        jog.keysChanged.connect(self._show_keys)
+
         layout = QVBoxLayout(self)
         layout.setContentsMargins(12, 12, 12, 12)
         layout.addLayout(cross)
+        layout.addWidget(self.jog_note)
         layout.addSpacing(12)
         layout.addLayout(steps)
         layout.addLayout(homes)
@@ -183,5 +195,44 @@ class ManualPanel(QWidget):
 
     def set_motion_enabled(self, enabled: bool) -> None:
         """Jog and Home follow the motion lock; Stop never does."""
-        for button in (*self.jog_buttons.values(), *self.home_buttons):
+        for button in self.home_buttons:
             button.setEnabled(enabled)
+        self._motion_enabled = enabled
+        self._update_jog_buttons()
+
+    def set_jog_lock(self, reason: str | None) -> None:
+        """A job under way: the jog buttons go off and the page says why (Home stays with
+        the motion lock; the job refuses what would disturb it)."""
+        self._jog_lock = reason
+        self._update_jog_buttons()
+
+    def _update_jog_buttons(self) -> None:
+        enabled = getattr(self, "_motion_enabled", True) and self._jog_lock is None
+        for button in self.jog_buttons.values():
+            button.setEnabled(enabled)
+        if self._jog_lock is None:
+            self.jog_note.hide()
+            return
+        self.jog_note.setText(self.tr("Jogging locked: {0}").format(self._jog_lock))
+        self.jog_note.show()
+
+    def _show_keys(self, vector: tuple[int, ...]) -> None:
+        """Show the button of the held arrow keys' direction pressed, as if held by the mouse."""
+        xy = tuple(vector[:2]) + (0,) * (2 - len(vector[:2]))
+        lit: set[QPushButton] = set()
+        for directions, button in self.jog_buttons.items():
+            if len(directions) == 3:
+                on = len(vector) > 2 and vector[2] == directions[2]
+            else:
+                on = any(xy) and tuple(directions[:2]) == xy
+            if on:
+                lit.add(button)
+        for button in self._key_lit - lit:
+            button.setDown(False)
+        kept = self._key_lit & lit
+        for button in lit - self._key_lit:
+            if button.isDown():
+                continue  # the mouse holds it: only the mouse may let it up again
+            button.setDown(True)
+            kept.add(button)
+        self._key_lit = kept

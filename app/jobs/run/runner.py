@@ -523,7 +523,7 @@ class JobRunner(QObject):
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.
         self.station.model.set_jog_lock(
-            "a job is under way: pause and abort it, or let it finish" if state in ACTIVE else None
+            "a job is under way — abort it or let it finish" if state in ACTIVE else None
         )
         if runs and self.station.realtime:
             self._eta_timer.start()

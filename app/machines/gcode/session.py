@@ -336,7 +336,9 @@ class GcodeSession(MachineSession):
         if not keep_jog:
             self._jog = [0] * self.axis_count
             self._jog_target = None
-            self._quiet_stop = False
+            # A job owns the machine (its jog lock): the job says what ran, in its operations;
+            # a count of lines here beside it read as a second, different figure.
+            self._quiet_stop = self.model.jog_lock_reason is not None
         if not self.link.is_open:
             return
         self._dropped_by_stop = len(self.streamer.discard_queued())
@@ -501,10 +503,10 @@ class GcodeSession(MachineSession):
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
         silent = now - self._last_heard
-        if self.device_answered and silent > SILENCE_S:
-            self._last_heard = now
-            self.model.message.emit(f"No reply from the device for {SILENCE_S:g} s")
         self._watch_silence(silent, self.stale_after_s, SILENCE_S)
+        if self.device_answered and silent > SILENCE_S:
+            # The link status says it ("lost — no reply for 2.2 s"): no second message.
+            self._last_heard = now
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""

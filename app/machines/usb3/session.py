@@ -14,6 +14,11 @@ and lost (red, reopened by the station) at :data:`LOST_AFTER_S`; an answer
 before that turns it green again.  A report that repeats what the session
 already holds changes nothing (no ``settingsChanged``), so the questions do
 not make a running job forget where the axes stand.
+
+The unit reports an axis's position only while it moves and when it stops, so
+when it first answers the session asks every axis where it stands (a move of
+nothing, which ends at once and reports): the axes show their real positions,
+idle, from the start instead of "unknown" at 0 until they first move.
 """
 
 from __future__ import annotations
@@ -91,6 +96,9 @@ class Usb3Session(MachineSession):
         self._last_report: list[float | None] = [None] * self.axis_count
         #: ``C;`` was sent and the axis has not reported since: its next report is a new zero.
         self._zeroing = [False] * self.axis_count
+        #: Asked where it stands (a move of nothing) and not answered yet: its next report
+        #: is where it stands, not a motion.
+        self._asking = [False] * self.axis_count
         #: Where the jog leads sent so far take each axis (None: from its position).
         self._jog_end: list[float | None] = [None] * self.axis_count
         self._last_heard = clock.now()
@@ -175,7 +183,9 @@ class Usb3Session(MachineSession):
         after a lost link without moving them.
         """
         wanted = [AxisId(axis) for axis in axes if 0 <= axis < min(3, self.axis_count)]
-        if wanted:
+        if wanted and self.link.is_open:
+            for axis in wanted:
+                self._asking[axis] = True
             self._send(SetDirection((1, 1, 1)), *(Move(axis, 0) for axis in wanted))
 
     def stop_all(self) -> None:
@@ -284,6 +294,7 @@ class Usb3Session(MachineSession):
         self.decoder.reset()
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
+        self._asking = [False] * self.axis_count
         self._last_heard = self.clock.now()
         self._asked_at = None
         self._reported.clear()
@@ -314,7 +325,12 @@ class Usb3Session(MachineSession):
                 self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
                 continue
             self._last_heard = self.clock.now()
+            first = not self.device_answered
             self._device_answered()
+            if first:
+                # The unit reports positions only when an axis stops: without asking, every
+                # axis would read "unknown" at 0 until it first moved.
+                self.request_positions(range(self.axis_count))
             if isinstance(reply, Position):
                 self._apply_position(reply.axis, reply.count)
             elif isinstance(reply, StepSizes):
@@ -346,6 +362,14 @@ class Usb3Session(MachineSession):
         delta_mm = count_to_mm(count - self._counts[axis], self.threads[axis])
         self._counts[axis] = count
         position = count_to_mm(count, self.threads[axis])
+        if self._asking[axis] and last is None:
+            # The answer to "where are you?": where it stands, not a move to there.
+            self._asking[axis] = False
+            self.model.update_axis(
+                axis, position=position, velocity=0.0, status_text="idle", moving=False
+            )
+            return
+        self._asking[axis] = False
         if self._zeroing[axis]:
             # The report C; asks for: the axis got a new origin, it did not move there.
             self._zeroing[axis] = False
