@@ -475,7 +475,8 @@ class JobRunner(QObject):
         """After an operation: whether the next one starts now (else the job ended or paused)."""
         assert self._program is not None
         if self._done >= len(self._program):
-            self.finish()
+            if self._driver.wind_up():
+                self.finish()
             return False
         if self._single_step or self._pause_requested:
             self._pause_requested = False
@@ -556,6 +557,7 @@ class JobRunner(QObject):
             fast=session.fast_selected if session is not None else True,
             start=start,
             speeds_mm_s=session.top_speeds_mm_s() if session is not None else None,
+            home_first=session.homes_before_job if session is not None else False,
         )
 
     # --- checkpoint ----------------------------------------------------------
