@@ -55,7 +55,7 @@ from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
 from app.jobs.loaders import AmbiguousFormat, JobOptions, JobType, file_dialog_filter, load_job
 from app.jobs.names import shown
-from app.jobs.program import JobFileError, Program
+from app.jobs.program import JobFileError, OpKind, Program
 from app.jobs.reading import read_job_text
 from app.jobs.registration import Placement, RegistrationError
 from app.jobs.run.runner import JobRunner, JobState
@@ -607,6 +607,8 @@ class JobsDock(QDockWidget):
         file whose interrupted run was registered gets that registration back
         from the checkpoint, so the resume drills where the board is.
         """
+        if OpKind.DRILL not in program.kinds():
+            return None  # only drill jobs are registered on a board
         previous = self.registration.original
         kept = self.registration.placement
         placement: Placement | None = None

@@ -112,8 +112,7 @@ class CheckpointStore:
         """
         if not self.directory.is_dir():
             return None
-        wanted = self._base_fingerprint(base)
-        newest: tuple[str, Placement] | None = None
+        candidates: list[tuple[str, object, dict[str, Any]]] = []
         for path in self.directory.glob("*.json"):
             try:
                 info = path.stat()
@@ -123,10 +122,14 @@ class CheckpointStore:
             except (OSError, ValueError):
                 continue
             placement = record.get("placement") if isinstance(record, dict) else None
-            if not isinstance(placement, dict) or placement.get("base") != wanted:
-                continue
-            found = Placement.from_record(placement)
-            when = str(record.get("time", ""))
+            if isinstance(placement, dict):
+                candidates.append((str(record.get("time", "")), placement.get("base"), placement))
+        if not candidates:
+            return None  # the common case: no fingerprint of a large job to compute
+        wanted = self._base_fingerprint(base)
+        newest: tuple[str, Placement] | None = None
+        for when, fingerprint, placement in candidates:
+            found = Placement.from_record(placement) if fingerprint == wanted else None
             if found is not None and (newest is None or when > newest[0]):
                 newest = (when, found)
         return newest[1] if newest is not None else None
