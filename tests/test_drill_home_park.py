@@ -81,6 +81,8 @@ def test_a_job_on_a_link_that_saw_no_homing_homes_first_then_parks_and_switches_
     notes: list[str] = []
     runner.message.connect(notes.append)
     sent = sent_commands(drill)
+    prompted_at: list[int] = []
+    runner.waitingForOperator.connect(lambda _message: prompted_at.append(len(sent)))
     assert runner.load(two_holes()) == []
     assert runner.estimate is not None
     eta = runner.estimate.total_s
@@ -89,6 +91,7 @@ def test_a_job_on_a_link_that_saw_no_homing_homes_first_then_parks_and_switches_
 
     assert runner.state is JobState.DONE
     assert sent == ["N", "X198", "Y394", "V", "X594", "Y99", "V", "X0", f"Y{PARK_Y}", "P"]
+    assert prompted_at == [1]  # the bit prompt came once the N was done, not before
     assert any("cannot report whether it has homed" in n for n in notes)
     fw = drill.drill_emulator
     assert [h.position for h in fw.drill_log] == [(198, 394), (594, 99)]
@@ -178,3 +181,23 @@ def test_the_shipped_drill_parks_where_the_originals_p_does() -> None:
     profile = load_profile("pcb-drill")
     assert profile.park is not None and dict(profile.park) == {"X": 0.0, "Y": 150.0}
     assert load_profile("xy-stage").park is None
+
+
+def test_a_pause_while_homing_before_the_first_prompt_holds_the_prompt_until_resumed(
+    drill: StationHarness, tmp_path: Path
+) -> None:
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    prompts: list[str] = []
+    runner.waitingForOperator.connect(prompts.append)
+    assert runner.load(two_holes()) == []
+    runner.start()
+    assert drill.drill_session.busy  # homing
+    runner.pause()
+    assert runner.state is JobState.PAUSING
+    drill.run_until(lambda: runner.state is JobState.PAUSED, timeout=10)
+    assert prompts == [] and drill.drill_emulator.homed and not drill.drill_session.busy
+    runner.resume()
+    assert runner.state is JobState.WAITING and prompts == ["insert T01, 0.80 mm, 2 holes"]
+    run_to_end(drill, runner)
+    assert runner.state is JobState.DONE
+    assert [h.position for h in drill.drill_emulator.drill_log] == [(198, 394), (594, 99)]

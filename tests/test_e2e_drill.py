@@ -235,9 +235,11 @@ def test_a_registered_board_homes_prompts_drills_every_hole_once_where_it_lies_a
     assert board is not None and board is not program
 
     asked: list[str] = []
+    homed_when_asked: list[bool] = []
 
     def confirm_later(message: str) -> None:
         asked.append(message)
+        homed_when_asked.append(not session.homes_before_job)  # its DN already came
         QTimer.singleShot(0, runner.confirm)
 
     runner.waitingForOperator.connect(confirm_later)
@@ -248,6 +250,7 @@ def test_a_registered_board_homes_prompts_drills_every_hole_once_where_it_lies_a
     )
     assert runner.state is JobState.DONE
     assert asked == [op.message for op in program if op.kind is OpKind.WAIT]
+    assert all(homed_when_asked)  # home, then the first prompt
     assert [m.split(",")[0] for m in asked] == [f"insert T0{k}" for k in range(1, 6)]
     qtbot.waitUntil(lambda: "done P" in log_events(log), timeout=5000)
 

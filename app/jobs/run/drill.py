@@ -56,6 +56,8 @@ class DrillDriver(SequentialDriver):
         # The park after the last operation: under way, or done for this run.
         self._parking = False
         self._parked = False
+        # Homing before the operator is asked anything (the job's first WAIT, a bit prompt).
+        self._homing_first = False
 
     def bind(self, session: MachineSession | None) -> None:
         old = self._session
@@ -110,6 +112,34 @@ class DrillDriver(SequentialDriver):
                 self._pending = []
                 self._refused_send(index, "the drill refused it")
                 return
+
+    def _dispatch(self, index: int) -> None:
+        """As any sequential machine; a WAIT on a drill not yet homed homes first.
+
+        So a job opens as the original's did, with ``N``, before the first bit
+        prompt, and the operator changes bits with the carriage at rest.
+        """
+        program = self.runner.program
+        session = self._session
+        assert program is not None
+        if (
+            program[index].kind is OpKind.WAIT
+            and session is not None
+            and session.homes_before_job
+            and self.link_up()
+            and not session.busy
+        ):
+            sends = self._home_first(session, index)
+            self._pending = [letter for letter, _ in sends]
+            self._homing_first = True
+            for _, send in sends:
+                if not send():
+                    self._pending = []
+                    self._homing_first = False
+                    self._refused_send(index, "the drill refused to home")
+                    return
+            return
+        super()._dispatch(index)
 
     def _home_first(
         self, session: DrillSession, index: int
@@ -208,6 +238,7 @@ class DrillDriver(SequentialDriver):
     def _clear(self) -> None:
         super()._clear()
         self._parking = False
+        self._homing_first = False
         self._pending = []
         self._received = False
         self._written = False
@@ -235,6 +266,15 @@ class DrillDriver(SequentialDriver):
                     self.runner.finish()
             return
         index = self.in_flight
+        if self._homing_first:
+            if self._pending or index is None:
+                return
+            self._homing_first = False
+            if self.runner.state is JobState.RUNNING:
+                self._dispatch(index)  # homed: now the prompt
+            elif self.runner.state is JobState.PAUSING:
+                self.runner.pause_reached()  # the prompt comes on resume
+            return
         if index is None or self.verifying or not self._judging():
             return
         program = self.runner.program
