@@ -201,3 +201,30 @@ def test_a_pause_while_homing_before_the_first_prompt_holds_the_prompt_until_res
     run_to_end(drill, runner)
     assert runner.state is JobState.DONE
     assert [h.position for h in drill.drill_emulator.drill_log] == [(198, 394), (594, 99)]
+
+
+def test_a_link_cut_while_parking_parks_again_on_resume_and_then_ends(
+    drill: StationHarness, tmp_path: Path
+) -> None:
+    runner = JobRunner(drill.station, tmp_path / "checkpoints")
+    assert runner.load(two_holes()) == []
+    runner.start()
+
+    def parking() -> bool:
+        if runner.state is JobState.WAITING:
+            runner.confirm()
+        return runner.done == len(two_holes()) and drill.drill_emulator.busy
+
+    drill.run_until(parking, timeout=60)
+    drill.loopback.sever("cable pulled")
+    drill.run_until(lambda: runner.state is JobState.PAUSED, timeout=10)
+    assert runner.done == len(two_holes())  # every hole counted; only the park is left
+    drill.loopback.set_manipulator(None)
+    drill.run_until(lambda: drill.station.model.link_state is LinkState.CONNECTED, timeout=60)
+    sent = sent_commands(drill)
+    runner.resume()
+    run_to_end(drill, runner)
+    assert runner.state is JobState.DONE
+    assert sent == ["X0", f"Y{PARK_Y}", "P"]  # no homing for a park: absolute moves
+    assert drill.drill_emulator.positions[:2] == (0, PARK_Y)
+    assert len(drill.drill_emulator.drill_log) == 2

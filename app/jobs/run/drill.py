@@ -235,6 +235,14 @@ class DrillDriver(SequentialDriver):
             "Count it as drilled",
         )
 
+    def link_lost(self) -> None:
+        """What was queued went with the link: a park or a homing is started again on resume."""
+        if self._parking or self._homing_first:
+            self._parking = False
+            self._homing_first = False
+            self._pending = []
+        super().link_lost()
+
     def _clear(self) -> None:
         super()._clear()
         self._parking = False
