@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import math
 import tomllib
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from types import MappingProxyType
 from typing import Any
 
 RESOURCES = Path(__file__).resolve().parent.parent / "resources"
@@ -108,6 +110,10 @@ class MachineProfile:
     period_ms: int = 100
     source: Path | None = None
     gcode: GcodeSettings | None = None
+    #: Where a job ends ([park] in the profile: mm per axis name), or None: it stays where
+    #: it finished.  Judged against the travel when the profile is read, and again by the
+    #: motion gate when the job goes there.
+    park: Mapping[str, float] | None = None
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
@@ -189,6 +195,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
             raise ProfileError(
                 f"{path}: [gcode] kinematics must be cartesian, corexy or cylindrical"
             )
+    park = _park_from(_section(data, "park", path), axes, path) if "park" in data else None
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -202,4 +209,27 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         period_ms=period,
         source=path,
         gcode=gcode,
+        park=park,
     )
+
+
+def _park_from(
+    values: dict[str, Any], axes: tuple[AxisProfile, ...], path: Path
+) -> Mapping[str, float]:
+    """The park position: a number inside the travel for every axis it names."""
+    travel = {axis.name: axis for axis in axes}
+    park: dict[str, float] = {}
+    for name, value in values.items():
+        axis = travel.get(name)
+        if axis is None:
+            raise ProfileError(f"{path}: [park] names {name!r}, which is no axis")
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise ProfileError(f"{path}: [park] {name} must be a number, not {value!r}")
+        if axis.kind != "rotary" and not 0.0 <= float(value) <= axis.travel:
+            raise ProfileError(
+                f"{path}: [park] {name} {value} is outside the travel 0…{axis.travel:g}"
+            )
+        park[name] = float(value)
+    if not park:
+        raise ProfileError(f"{path}: [park] names no axis")
+    return MappingProxyType(park)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import statistics
 import sys
+import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -555,6 +556,55 @@ def bench_dry_run() -> list[str]:
     ]
 
 
+def bench_drill_eta() -> list[str]:
+    """The drill's job estimate against the emulated run, per Excellon board (issue 19: 5 %).
+
+    Each board on a fresh emulated drill, as after switching it on: the
+    station has seen no homing, so the job homes, prompts per bit (confirmed
+    at once), drills and parks; the estimate (``protocol/drill/timing.py``)
+    against the emulator's time for the same job.
+    """
+    from PySide6.QtWidgets import QApplication
+
+    from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
+    from app.jobs.run.runner import JobRunner, JobState
+    from app.profiles import load_profile
+    from tests.helpers.harness import StationHarness
+
+    app = QApplication.instance() or QApplication([])
+    shared = ROOT.parent / "shared"
+    boards = [shared / "samples" / "pcb-driver" / "driver"]
+    boards += sorted((shared / "realdata" / "excellon").iterdir())
+    lines = []
+    with tempfile.TemporaryDirectory() as checkpoints:
+        for path in boards:
+            harness = StationHarness(load_profile("pcb-drill"))
+            try:
+                harness.connect()
+                harness.run_until(lambda h=harness: h.drill_emulator.homed, timeout=10)
+                runner = JobRunner(harness.station, Path(checkpoints))
+                program = build_drill_program(read_drill_file(path))
+                if runner.load(program) or runner.estimate is None:
+                    lines.append(f"drill ETA {path.name}: refused on this machine")
+                    continue
+                eta = runner.estimate.total_s
+                runner.waitingForOperator.connect(lambda _m, r=runner: r.confirm())
+                runner.start()
+                harness.run_until(
+                    lambda r=runner: r.state not in (JobState.RUNNING, JobState.WAITING),
+                    timeout=3600,
+                )
+                ran = runner.elapsed_s
+                lines.append(
+                    f"drill ETA {path.name}: estimate {eta:.1f} s, emulated {ran:.1f} s, "
+                    f"ratio {eta / ran:.3f} (goal 0.95…1.05), {runner.state.value}"
+                )
+            finally:
+                harness.close()
+    del app
+    return lines
+
+
 def bench_drill_order() -> list[str]:
     """Load + optimise time and travel (file order vs optimised) per real board and 50 000 holes."""
     import numpy as np
@@ -905,6 +955,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_job_preview,
     bench_dry_run,
     bench_drill_order,
+    bench_drill_eta,
     bench_drill_order_50k,
     bench_drill_order_quality,
     bench_string_art,

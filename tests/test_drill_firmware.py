@@ -5,8 +5,10 @@ Every duration asserted here is worked out by hand from the defaults: X steps
 carriage stands 1200 (X) and 900 (Y) microsteps off the switch edges and the
 counters read 0 there; homing runs to the switch, backs off 1 microstep until
 it opens, then steps the offset (X 50, Y 40).  A drill stroke goes 400 + 12 =
-412 microsteps down at 2.5 ms (1.03 s), dwells 0.2 s and comes up in full
-steps of 8 microsteps per 2.5 ms (412 / 8 * 2.5 ms = 0.12875 s): 1.35875 s.
+412 microsteps down at 2.5 ms (1.03 s) with a 10 ms pause after every second
+one (2.06 s), waits 0.1 s, comes back 39 full steps of 2 microsteps per 2.5 ms
+(0.0975 s) and waits 0.1 s: 3.3875 s; the drill then hovers 78 microsteps
+above the bottom, so later strokes take 0.8825 s.
 Control cycles are 5 ms; a procedure of duration d started at a cycle
 boundary is answered ``D`` at the end of the cycle in which d elapses.
 """
@@ -39,6 +41,7 @@ from protocol.emulator.drill_firmware import (
     DrilledHole,
     DrillFirmware,
     ExecutedCommand,
+    HomedAtPowerOn,
     PenEvent,
     event_log_line,
 )
@@ -46,7 +49,8 @@ from protocol.emulator.drill_firmware import (
 START = 100.0
 CYCLE = 0.005
 HOME_SECONDS = (1200 + 1 + 50) * 0.0013 + (900 + 1 + 40) * 0.0015  # 1.6263 + 1.4115
-DRILL_SECONDS = 412 * 0.0025 + 0.2 + 412 / 8 * 0.0025  # 1.35875
+DRILL_SECONDS = 412 * 0.0025 + 206 * 0.010 + 0.1 + 39 * 0.0025 + 0.1  # 3.3875
+LATER_DRILL_SECONDS = 78 * 0.0025 + 39 * 0.010 + 0.1 + 39 * 0.0025 + 0.1  # 0.8825
 
 Timed = tuple[float, Reply]
 
@@ -70,7 +74,8 @@ class Bench:
     def __init__(self, config: DrillConfig | None = None) -> None:
         # A start far from 0 catches code that confuses absolute and elapsed time.
         self.clock = ManualClock(start=START)
-        self.fw = DrillFirmware(self.clock, config)
+        # Most tests drive the procedures from power-on, so by default it does not home itself.
+        self.fw = DrillFirmware(self.clock, config or DrillConfig(home_at_power_on=False))
         self._out = bytearray()
         self.fw.set_output(self._out.extend)
         self._decoder = ReplyDecoder()
@@ -181,20 +186,27 @@ def test_a_target_beyond_the_travel_is_clamped_to_it() -> None:
 
 
 def test_drilling_logs_one_hole_at_the_present_position_and_takes_the_stroke_time() -> None:
+    """FIDELITY S2-22/S2-23: the first V from the top is the long one, later ones are short."""
     bench = Bench()
     bench.home()
     bench.send(move_x(1234), move_y(567))
     bench.run_until_done()
     t0 = bench.elapsed
     bench.send(DRILL)
-    bench.run(1.03)  # 412 microsteps down at 2.5 ms: at the bottom, the hole is made
+    bench.run(3.08)  # 412 microsteps at 2.5 ms and 205 pauses of 10 ms: at the bottom
     assert bench.fw.positions == (1234, 567, 412)
     assert [h.position for h in bench.fw.drill_log] == [(1234, 567)]
     replies = bench.run(1.0)
     assert replies == [(round(t0 + end_of_cycle(DRILL_SECONDS), 6), done("V"))]
-    assert bench.fw.positions == (1234, 567, 0)
+    # 39 full steps of 2 microsteps up: the drill hovers 78 microsteps above the bottom.
+    assert bench.fw.positions == (1234, 567, 412 - 78)
     hole = bench.fw.drill_log[0]
-    assert hole.time == pytest.approx(START + t0 + 1.03)
+    assert hole.time == pytest.approx(START + t0 + 412 * 0.0025 + 205 * 0.010)
+    t1 = bench.elapsed
+    bench.send(DRILL)
+    replies = bench.run(1.0)
+    assert replies[-1] == (round(t1 + end_of_cycle(LATER_DRILL_SECONDS), 6), done("V"))
+    assert bench.fw.positions == (1234, 567, 334)
 
 
 def test_each_v_drills_exactly_one_hole() -> None:
@@ -206,11 +218,13 @@ def test_each_v_drills_exactly_one_hole() -> None:
 
 
 def test_the_drill_depth_follows_the_sensor_setting() -> None:
-    bench = Bench(DrillConfig(sensor_depth=100, dwell=0.0, z_microsteps_per_step=4))
+    bench = Bench(DrillConfig(sensor_depth=100, dwell=0.0, after_wait=0.0, home_at_power_on=False))
     bench.send(DRILL)
     replies = bench.run(2.0)
-    # 112 microsteps at 2.5 ms down (0.28 s), none of dwell, 112 / 4 * 2.5 ms up (0.07 s).
-    assert replies == [(0.005, received("V")), (0.35, done("V"))]
+    # 112 microsteps at 2.5 ms down (0.28 s) with 56 pauses (0.56 s), no waits, 39 full
+    # steps up (0.0975 s): 0.9375 s, answered at the end of its cycle.
+    assert replies == [(0.005, received("V")), (0.94, done("V"))]
+    assert bench.fw.positions[2] == 112 - 78
 
 
 def test_pen_down_and_up_take_their_fixed_time_and_are_logged_with_the_position() -> None:
@@ -269,7 +283,7 @@ def test_malformed_lines_are_answered_e_at_once_and_change_nothing(
     line: bytes, answer: bytes
 ) -> None:
     clock = ManualClock(start=START)
-    fw = DrillFirmware(clock)
+    fw = DrillFirmware(clock, DrillConfig(home_at_power_on=False))
     out = bytearray()
     fw.set_output(out.extend)
     fw.receive(line)
@@ -348,14 +362,14 @@ def test_the_event_log_tells_the_whole_story_in_order() -> None:
 
 def test_a_long_leap_of_time_gives_the_same_result_as_small_steps() -> None:
     clock = ManualClock(start=START)
-    fw = DrillFirmware(clock)
+    fw = DrillFirmware(clock, DrillConfig(home_at_power_on=False))
     out = bytearray()
     fw.set_output(out.extend)
     fw.receive(b"N\rX1234\rY567\rV\rP\r")
     clock.advance(20.0)
     fw.run_until(clock.now())
     assert bytes(out) == b"RN\r\nRX\r\nRY\r\nRV\r\nRP\r\nDN\r\nDX\r\nDY\r\nDV\r\nDP\r\n"
-    assert fw.positions == (0, 3000, 0)
+    assert fw.positions == (0, 3000, 412 - 78)
     assert [h.position for h in fw.drill_log] == [(1234, 567)]
 
 
@@ -373,3 +387,18 @@ def test_a_long_leap_of_time_gives_the_same_result_as_small_steps() -> None:
 def test_nonsense_configurations_are_refused(config: dict[str, object]) -> None:
     with pytest.raises(ValueError):
         DrillConfig(**config)  # type: ignore[arg-type]
+
+
+def test_the_firmware_homes_at_power_on_and_queues_what_comes_meanwhile() -> None:
+    """FIDELITY S2-19: Nula is the first procedure after the MCU starts."""
+    bench = Bench(DrillConfig())
+    assert not bench.fw.homed and bench.fw.busy
+    bench.send(move_x(100))
+    replies = bench.run(HOME_SECONDS + 0.2)
+    # The X was received at once and runs after the homing, which says nothing itself.
+    assert replies[0] == (0.005, received("X"))
+    assert replies[1] == (end_of_cycle(HOME_SECONDS + 100 * 0.0013), done("X"))
+    assert bench.fw.homed and bench.fw.positions == (100, 0, 0)
+    homed = [e for e in bench.fw.event_log if isinstance(e, HomedAtPowerOn)]
+    assert len(homed) == 1 and homed[0].time == pytest.approx(START + HOME_SECONDS)
+    assert event_log_line(homed[0]).endswith("homed at power-on")

@@ -74,6 +74,8 @@ def _drop(*directions: Direction) -> object:
 def _busy_drill(unit: StationHarness, mm: float) -> None:
     """The drill is asked nothing while idle: its liveness is timed on a command in flight."""
     if unit.station.drill_session is not None:
+        # Not while it homes by itself after power-on (FIDELITY S2-19): the D would wait.
+        unit.run_until(lambda: not unit.drill_emulator.busy, timeout=10)
         assert unit.drill_session.move_absolute(0, mm)
 
 

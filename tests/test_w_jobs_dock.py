@@ -331,7 +331,8 @@ def test_a_drill_job_on_the_drill_shows_its_travel_saving_and_microsteps(
         assert dock.open_path(shared_dir / "samples/pcb-driver/driver")
         log = dock.messages.toPlainText()
         assert "mm in file order" in log and "mm optimised" in log
-        runner.step()  # the first tool's WAIT
+        runner.step()  # the first tool's WAIT, once the drill homed (FIDELITY S2-26)
+        drill.run_until(lambda: runner.state is JobState.WAITING)
         runner.confirm()
         drill.run_until(lambda: runner.state is JobState.PAUSED)
         # The next Step sends the first hole: its file line as written and its microsteps.
@@ -526,8 +527,8 @@ def test_the_bottom_side_loads_the_job_mirrored_about_its_extent_and_back(
         )
         qtbot.keyClick(combo, Qt.Key.Key_Up)  # back to the top side
         assert runner.program is original
-        runner.start()  # the first bit's prompt: the job is under way
-        assert runner.state is JobState.WAITING
+        runner.start()  # home, then the first bit's prompt: the job is under way
+        drill.run_until(lambda: runner.state is JobState.WAITING)
         assert not dock.registration.isEnabled()
         runner.abort()
         qtbot.waitUntil(lambda: dock.registration.isEnabled())

@@ -24,7 +24,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
 from types import MappingProxyType
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
@@ -137,6 +137,23 @@ def register(job_points: Sequence[Point], machine_points: Sequence[Point]) -> Re
     return replace(reg, residual_mm=residual)
 
 
+def hole_positions(program: Program, axes: tuple[str, str] = ("X", "Y")) -> list[Point]:
+    """Where each DRILL happens (X, Y of the MOVE before it), in drilling order.
+
+    The numbering the operator picks reference holes by: the same for the job
+    as its file says and for the job mirrored or registered, since those keep
+    every operation in its place.
+    """
+    ax, ay = axes
+    holes: list[Point] = []
+    for index, where, _pen in program.positions():
+        after = index + 1
+        if after < len(program) and program[after].kind is OpKind.DRILL:
+            if ax in where and ay in where:
+                holes.append((where[ax], where[ay]))
+    return holes
+
+
 def extent(program: Program, axes: tuple[str, str] = ("X", "Y")) -> tuple[Point, Point]:
     """(min x, min y), (max x, max y) of the program's moves on ``axes``."""
     xs: list[float] = []
@@ -215,3 +232,68 @@ def mirrored(
     if about == "X":
         return _mapped(program, axes, lambda x, y: (x0 + x1 - x, y), "mirrored in X (bottom side)")
     return _mapped(program, axes, lambda x, y: (x, y0 + y1 - y), "mirrored in Y (bottom side)")
+
+
+Side = Literal["", "X", "Y"]
+
+
+@dataclass(frozen=True)
+class Placement:
+    """How a job file is put on the board: its side (mirrored for the bottom) and registration.
+
+    What a checkpoint keeps next to the operation count, so that a job
+    resumed after a restart, read again from the same file, is moved onto the
+    board exactly as it was when it ran (its operations, and so its
+    fingerprint, are the same again).
+    """
+
+    side: Side = ""
+    registration: Registration | None = None
+
+    def __bool__(self) -> bool:
+        return bool(self.side) or self.registration is not None
+
+    def apply(self, program: Program) -> Program:
+        """``program`` (as its file says) on the chosen side, moved onto the board."""
+        placed = mirrored(program, self.side) if self.side else program
+        if self.registration is not None:
+            placed = registered(placed, self.registration)
+        return placed
+
+    def to_record(self) -> dict[str, Any]:
+        reg = self.registration
+        return {
+            "side": self.side,
+            "registration": None
+            if reg is None
+            else {
+                "angle_rad": reg.angle_rad,
+                "offset": list(reg.offset),
+                "scale": reg.scale,
+                "residual_mm": reg.residual_mm,
+            },
+        }
+
+    @classmethod
+    def from_record(cls, record: object) -> Placement | None:
+        """The placement a checkpoint recorded, or None when the record is not one."""
+        if not isinstance(record, dict) or record.get("side") not in ("", "X", "Y"):
+            return None
+        side: Side = record["side"]
+        raw = record.get("registration")
+        if raw is None:
+            return cls(side)
+        try:
+            x, y = (float(v) for v in raw["offset"])
+            reg = Registration(
+                float(raw["angle_rad"]),
+                (x, y),
+                float(raw["scale"]),
+                float(raw["residual_mm"]),
+            )
+        except (KeyError, TypeError, ValueError):
+            return None
+        numbers = (reg.angle_rad, x, y, reg.scale, reg.residual_mm)
+        if not all(math.isfinite(v) for v in numbers):
+            return None
+        return cls(side, reg)

@@ -66,6 +66,11 @@ class MachineSession(QObject):
     def period_ms(self) -> int:
         return 100
 
+    @property
+    def homes_before_job(self) -> bool:
+        """A job run now would home the machine first (the drill, not seen homing yet)."""
+        return False
+
     def top_speeds_mm_s(self) -> dict[str, float] | None:
         """Axis speeds where the machine's own settings decide them (None: from the profile)."""
         return None

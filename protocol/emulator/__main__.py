@@ -84,6 +84,7 @@ from protocol.emulator.drill_firmware import (
     DrilledHole,
     DrillFirmware,
     ExecutedCommand,
+    HomedAtPowerOn,
     PenEvent,
     event_log_line,
 )
@@ -471,7 +472,7 @@ class CommandLogFile:
 
 
 def _log_line(entry: object) -> str:
-    if isinstance(entry, ExecutedCommand | CommandDone | DrilledHole | PenEvent):
+    if isinstance(entry, ExecutedCommand | CommandDone | DrilledHole | PenEvent | HomedAtPowerOn):
         return event_log_line(entry) + "\n"
     if isinstance(entry, dict):  # the G-code firmwares' events
         return gcode_log_line(entry) + "\n"

@@ -29,14 +29,24 @@ Decisions the contract leaves open, made here:
   (one microstep, the switches' hysteresis), then step the zero offset and
   call that 0.  So the zero lies ``offset + 1`` microsteps off the switch
   edge and the high end of the travel sits exactly at the other switch.
-- Before the first ``N`` the step counters count from wherever the carriage
-  stood at power-on (:attr:`DrillConfig.power_on`); :attr:`DrillFirmware.homed`
-  says whether they count from the machine's zero yet.
-- ``V``: Z goes down one microstep per period until the optical sensor
-  (:attr:`DrillConfig.sensor_depth`), 12 microsteps more, dwells, and comes
-  back up to 0 in full steps, i.e. ``z_microsteps_per_step`` microsteps per
-  period.  The hole is logged at the bottom of the stroke, at the X/Y
-  position it was drilled at.
+- At power-on the firmware homes on its own, as the original did ("Je to
+  prvni procedura po spusteni mikrokontroleru", FIDELITY S2-19): the ``N``
+  procedure runs from the first control cycle, with no reply (nobody asked),
+  logged as :class:`HomedAtPowerOn`.  Commands arriving meanwhile are answered
+  ``R`` and queued behind it.  With :attr:`DrillConfig.home_at_power_on` off
+  (tests of the procedures themselves) the step counters count from wherever
+  the carriage stood at power-on (:attr:`DrillConfig.power_on`) until the
+  first ``N``; :attr:`DrillFirmware.homed` says whether they count from the
+  machine's zero yet.
+- ``V`` as the original's ``Vrtat`` (FIDELITY S2-22/S2-23, the timing in
+  :mod:`protocol.drill.timing`): Z goes down one microstep per period until
+  the optical sensor (:attr:`DrillConfig.sensor_depth`) and 12 microsteps
+  more, pausing 10 ms after every second microstep; it waits 100 ms at the
+  bottom, comes back 39 full steps (``z_microsteps_per_step`` microsteps per
+  period) and waits 100 ms more.  The return is shorter than the first way
+  down from the top, so Z then hovers above the board and later strokes are
+  short.  The hole is logged at the bottom of the stroke, at the X/Y position
+  it was drilled at.
 - ``K``/``Z`` (pen down/up) take a fixed time, the pen's solenoid settling.
 - ``P`` runs X to 0, then Y to the back (its travel), then switches the motors
   off.  Any later motion switches them on again; the counters are kept (an
@@ -58,6 +68,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from protocol.clock import Clock
+from protocol.drill import timing
 from protocol.drill.codec import (
     Command,
     CommandDecoder,
@@ -67,11 +78,10 @@ from protocol.drill.codec import (
     encode_reply,
     error_reply,
 )
+from protocol.drill.timing import DRILL_OVERTRAVEL
 from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.mechanism import Axis, AxisLimits
 
-#: Microsteps the drill goes on after the optical sensor sees the board.
-DRILL_OVERTRAVEL = 12
 #: Tolerance for comparing times built from float sums.
 _EPS = 1e-9
 #: Seconds added to a motion's computed duration.  Advancing an axis by exactly
@@ -98,20 +108,32 @@ class DrillConfig:
 
     travel: tuple[int, int] = (4200, 3000)
     #: Seconds per microstep of X, Y and Z.
-    step_periods: tuple[float, float, float] = (0.0013, 0.0015, 0.0025)
+    step_periods: tuple[float, float, float] = (
+        timing.STEP_PERIODS_S["X"],
+        timing.STEP_PERIODS_S["Y"],
+        timing.STEP_PERIODS_S["Z"],
+    )
     #: Microsteps from where each end switch opens to the zero, X and Y.
-    zero_offsets: tuple[int, int] = (50, 40)
+    zero_offsets: tuple[int, int] = (timing.ZERO_OFFSETS["X"], timing.ZERO_OFFSETS["Y"])
     #: Where the carriage stands at power-on, microsteps from the X/Y switch edges.
     power_on: tuple[int, int] = (1200, 900)
     #: Z microsteps from the top to where the optical sensor sees the board.
-    sensor_depth: int = 400
-    #: Microsteps in one full step of Z: the return stroke goes that many per period.
-    z_microsteps_per_step: int = 8
-    #: Seconds the drill stays at the bottom of the stroke.
-    dwell: float = 0.2
+    sensor_depth: int = timing.SENSOR_DEPTH
+    #: Microsteps in one full step of Z (half-step drive): the return goes that many a period.
+    z_microsteps_per_step: int = timing.Z_MICROSTEPS_PER_FULL_STEP
+    #: Full steps of the return stroke.
+    return_full_steps: int = timing.RETURN_FULL_STEPS
+    #: Going down, a pause of ``down_pause`` seconds after every ``down_pause_every`` microsteps.
+    down_pause: float = timing.DOWN_PAUSE_S
+    down_pause_every: int = timing.DOWN_PAUSE_EVERY
+    #: Seconds the drill stays at the bottom of the stroke, and waits after the return.
+    dwell: float = timing.BOTTOM_WAIT_S
+    after_wait: float = timing.AFTER_WAIT_S
     #: Seconds the pen takes to go down or up.
-    pen_time: float = 0.15
+    pen_time: float = timing.PEN_TIME_S
     control_cycle: float = 0.005
+    #: Run the ``N`` procedure at power-on, before any command, as the original does.
+    home_at_power_on: bool = True
 
     def __post_init__(self) -> None:
         if any(t <= 0 for t in self.travel):
@@ -127,7 +149,11 @@ class DrillConfig:
                 raise ValueError(f"power-on position {start} is outside the switches")
         if self.sensor_depth <= 0 or self.z_microsteps_per_step <= 0:
             raise ValueError("the sensor depth and the Z full step must be positive")
-        if self.dwell < 0 or self.pen_time < 0 or not self.control_cycle > 0:
+        if self.return_full_steps <= 0 or self.down_pause_every <= 0:
+            raise ValueError("the return stroke and the pause interval must be positive")
+        if min(self.dwell, self.after_wait, self.down_pause, self.pen_time) < 0 or not (
+            self.control_cycle > 0
+        ):
             raise ValueError("times must be >= 0 and the control cycle positive")
 
     @property
@@ -176,7 +202,14 @@ class PenEvent:
     y: int
 
 
-DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent
+@dataclass(frozen=True, slots=True)
+class HomedAtPowerOn:
+    """The power-on homing finished (no command asked for it, so no reply), at ``time``."""
+
+    time: float
+
+
+DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent | HomedAtPowerOn
 """Everything :attr:`DrillFirmware.event_log` records, in the order it happened."""
 
 
@@ -193,6 +226,8 @@ def event_log_line(event: DrillEvent) -> str:
             return f"{time:.6f} hole X{x} Y{y}"
         case PenEvent(time, down, x, y):
             return f"{time:.6f} pen {'down' if down else 'up'} X{x} Y{y}"
+        case HomedAtPowerOn(time):
+            return f"{time:.6f} homed at power-on"
     raise TypeError(f"not a drill event: {event!r}")
 
 
@@ -234,6 +269,10 @@ class DrillFirmware(ControlCycles):
         self._drill_log: deque[DrilledHole] = deque(maxlen=LOG_LENGTH)
         self._pen_log: deque[PenEvent] = deque(maxlen=LOG_LENGTH)
         self._event_log: deque[DrillEvent] = deque(maxlen=LOG_LENGTH)
+        if cfg.home_at_power_on:
+            # Started now, run from the first control cycle on, like any procedure.
+            self._procedure = self._home()
+            self._step_left = next(self._procedure)
 
     @staticmethod
     def _make_axis(switch_span: int, physical: int) -> Axis:
@@ -379,10 +418,15 @@ class DrillFirmware(ControlCycles):
 
     def _next_step(self) -> None:
         """Start the running procedure's next step, or finish it with ``D``."""
-        assert self._procedure is not None and self._current is not None
+        assert self._procedure is not None
         try:
             self._step_left = next(self._procedure)
         except StopIteration:
+            if self._current is None:  # the power-on homing: nobody to answer
+                self._log(HomedAtPowerOn(self._now()))
+                self._procedure = None
+                self._step_left = 0.0
+                return
             self._log(CommandDone(self._now(), self._current))
             self._reply(Reply(ReplyKind.DONE, self._current.letter))
             self._procedure = None
@@ -459,15 +503,25 @@ class DrillFirmware(ControlCycles):
         z = self._axes[2]
         down = 1.0 / cfg.step_periods[2]
         z.start_speed = down
-        z.move_to(float(cfg.drill_depth), down)  # to the sensor, then the overtravel
-        yield self._until_idle(2)
+        # To the sensor, then the overtravel, a pause after every second microstep.
+        bottom = cfg.drill_depth
+        while (here := z.microsteps) < bottom:
+            z.move_to(float(min(here + cfg.down_pause_every, bottom)), down)
+            yield self._until_idle(2)
+            if z.microsteps == bottom:
+                break
+            yield cfg.down_pause
         x, y, _ = self.positions
         self._log(DrilledHole(self._now(), x, y))
+        if here < bottom and bottom - here == cfg.down_pause_every:
+            yield cfg.down_pause  # the pause after the last pair of microsteps
         yield cfg.dwell
         up = down * cfg.z_microsteps_per_step
         z.start_speed = up
-        z.move_to(0.0, up)
+        climb = cfg.return_full_steps * cfg.z_microsteps_per_step
+        z.move_to(float(max(z.microsteps - climb, 0)), up)
         yield self._until_idle(2)
+        yield cfg.after_wait
 
     def _pen(self, *, down: bool) -> _Procedure:
         yield self.config.pen_time

@@ -55,8 +55,9 @@ from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.formats.string_art.reader import NeedsNailCount, StringArtParams
 from app.jobs.loaders import AmbiguousFormat, JobOptions, JobType, file_dialog_filter, load_job
 from app.jobs.names import shown
-from app.jobs.program import JobFileError, Program
+from app.jobs.program import JobFileError, OpKind, Program
 from app.jobs.reading import read_job_text
+from app.jobs.registration import Placement, RegistrationError
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
@@ -171,6 +172,10 @@ class JobsDock(QDockWidget):
         layout.addLayout(self._build_toolbar())
         layout.addLayout(self._build_options())
         self.registration = RegistrationBar(station, self._load_registered, self.say)
+        self.registration.pickRequested.connect(
+            lambda k: self.preview.pick_reference(k if k >= 0 else None)
+        )
+        self.preview.holePicked.connect(self.registration.set_reference)
         layout.addWidget(self.registration)
         layout.addWidget(self._build_resume_offer())
         layout.addWidget(self._build_prompt())
@@ -604,7 +609,43 @@ class JobsDock(QDockWidget):
             self.say(f"  … and {len(exc.more) - MORE_REFUSALS_SHOWN} more lines refused")
         return False
 
+    def _placed(self, program: Program) -> tuple[Program, Placement] | None:
+        """The file's job put on the board as before: read again, or resumed after a restart.
+
+        The same file read again keeps the side and registration it had; a
+        file whose interrupted run was registered gets that registration back
+        from the checkpoint, so the resume drills where the board is.
+        """
+        if OpKind.DRILL not in program.kinds():
+            return None  # only drill jobs are registered on a board
+        previous = self.registration.original
+        kept = self.registration.placement
+        placement: Placement | None = None
+        if kept and previous is not None and previous.fingerprint() == program.fingerprint():
+            placement = kept
+        else:
+            placement = self.runner.checkpoint_placement(program)
+        if not placement:
+            return None
+        try:
+            return placement.apply(program), placement
+        except RegistrationError as exc:
+            self.say(
+                self.tr("{0}: the board placement was not applied: {1}").format(program.name, exc)
+            )
+            return None
+
     def _accept(self, path: Path, program: Program) -> bool:
+        placed = self._placed(program)
+        if placed is not None and not self.runner.load(placed[0], (program, placed[1])):
+            self.registration.set_job(program, placed[1])
+            self.say(
+                self.tr("{0}: kept on the board as before ({1})").format(
+                    shown(path.name), placed[0].notes[-1] if placed[0].notes else ""
+                )
+            )
+            self._finish_accept(path, placed[0])
+            return True
         if self.runner.load(program):
             # The runner said which operations, line by line (its message).  The drawing is
             # still worth seeing — where it leaves the travel, what it would do — so the
@@ -615,6 +656,10 @@ class JobsDock(QDockWidget):
             self.registration.set_job(None)
             return False
         self.registration.set_job(program)
+        self._finish_accept(path, program)
+        return True
+
+    def _finish_accept(self, path: Path, program: Program) -> None:
         self.say(f"{shown(path.name)}: {len(program)} operations loaded")
         self.jobOpened.emit(path)
         notes = list(program.notes)
@@ -627,11 +672,15 @@ class JobsDock(QDockWidget):
         for note in notes:
             self.say(f"{shown(path.name)}: {note}")
         self._program_changed()
-        return True
 
-    def _load_registered(self, program: Program) -> bool:
-        """A registered (or cleared) job replaces the loaded one; the runner checks its travel."""
-        if self.runner.load(program):
+    def _load_registered(self, program: Program, placement: Placement) -> bool:
+        """A registered (or cleared) job replaces the loaded one; the runner checks its travel.
+
+        The runner keeps the placement with the checkpoint, for a resume.
+        """
+        original = self.registration.original
+        placed = (original, placement) if original is not None else None
+        if self.runner.load(program, placed):
             return False  # the runner listed the holes off the bed
         self.say(f"{program.name}: {program.notes[-1] if program.notes else 'loaded'}")
         return True

@@ -56,6 +56,7 @@ from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVB
 from app.jobs.formats.string_art.geometry import shortest_turn
 from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.program import OpKind, Program, ProgramPath
+from app.jobs.registration import hole_positions
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile
 from app.station import Station
@@ -68,6 +69,8 @@ POSITION_COLOUR = "#d62728"
 QUESTION_COLOUR = "#ff7f0e"
 LIMIT_COLOUR = "#e08a00"
 DEFAULT_THROTTLE_MS = 33.0
+#: A click this many pixels from a hole picks it as a reference.
+PICK_RADIUS_PX = 8
 #: Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so.
 ARC_STEP_DEG = 5.0
 #: At most this many steps per move, so a move spinning the base many turns stays cheap.
@@ -245,6 +248,9 @@ class JobPreview(QWidget):
 
     #: A refusal or news about click-to-move, for the dock's message area.
     message = Signal(str)
+    #: A hole clicked while picking a reference: the reference (0-based) and the hole's
+    #: index among the job's holes in drilling order (the registration row's numbering).
+    holePicked = Signal(int, int)
 
     def __init__(
         self,
@@ -267,6 +273,8 @@ class JobPreview(QWidget):
         self._prepared: tuple[Program, ProgramGeometry] | None = None
         self.done = 0
         self.last_message = ""
+        #: The reference the next click picks a hole for (None: a click moves the machine).
+        self.picking: int | None = None
         axes = station.profile.axes
         #: Set on a cylindrical machine: the plot is the work's plane, not two axes.
         self.polar = polar_axes(station.profile)
@@ -626,6 +634,44 @@ class JobPreview(QWidget):
         self._say(f"Moving to {described}")
         return True
 
+    # --- picking reference holes ------------------------------------------------
+
+    def pick_reference(self, reference: int | None) -> None:
+        """The next click on a hole chooses it as ``reference`` (0-based); None: moves again."""
+        self.picking = reference
+        if reference is not None:
+            self._say(
+                self.tr("Click a hole in the preview for reference {0}").format(reference + 1)
+            )
+
+    def nearest_hole(self, x: float, y: float, within: float) -> int | None:
+        """The hole (drilling order) nearest (x, y) on the plot, if one lies ``within``."""
+        program = self.program
+        if program is None or self.polar is not None:
+            return None
+        holes = hole_positions(program)
+        if not holes:
+            return None
+        points = np.asarray(holes, dtype=np.float64)
+        distances = np.hypot(points[:, 0] - x, points[:, 1] - y)
+        best = int(np.argmin(distances))
+        return best if distances[best] <= within else None
+
+    def _pick(self, point: QPointF) -> None:
+        reference = self.picking
+        assert reference is not None
+        view = self.plot.getViewBox()
+        # A hole under the pointer: within a few pixels, whatever the zoom.
+        pixel_w, pixel_h = view.viewPixelSize()
+        within = PICK_RADIUS_PX * max(abs(pixel_w), abs(pixel_h))
+        hole = self.nearest_hole(point.x(), point.y(), within)
+        if hole is None:
+            self._say(self.tr("No hole there: click on a hole, or press Pick again to stop"))
+            return
+        self.picking = None
+        self._say(self.tr("Hole {0} is reference {1}").format(hole + 1, reference + 1))
+        self.holePicked.emit(reference, hole)
+
     # --- events --------------------------------------------------------------
 
     def _clicked(self, event: object) -> None:
@@ -640,6 +686,9 @@ class JobPreview(QWidget):
             return  # on an axis or the margin, not on the plate
         event.accept()
         point: QPointF = view.mapSceneToView(scene_pos)
+        if self.picking is not None:
+            self._pick(point)  # choosing a reference hole moves nothing
+            return
         self.request_move(point.x(), point.y())
 
     def _say(self, text: str) -> bool:

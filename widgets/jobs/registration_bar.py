@@ -1,43 +1,63 @@
-"""The jobs dock's board registration row: two reference holes, the drill jogged over each.
+"""The jobs dock's board registration row: reference holes, the tool jogged over each.
 
-The operator chooses two holes of the loaded drill job (by their number in
-drilling order), jogs the tool over each on the real board and presses
-*Here*; *Register* then moves the whole job onto the board through
+The operator chooses the reference holes of the loaded drill job, by their
+number in drilling order or by clicking them in the preview (*Pick*), jogs
+the tool over each on the real board and presses *Here*; *Register* then
+moves the whole job onto the board through
 :func:`app.jobs.registration.register` and loads it like any other job, so
-the runner's travel check refuses a board that lies off the bed.  *Clear*
-gives the job back as the file says.  The geometry lives in the app layer;
-this row only collects the points and says what was measured.
+the runner's travel check refuses a board that lies off the bed.  A third
+point (*3 points*) is averaged in and its disagreement shown.  *Clear* gives
+the job back as the file says.  The geometry lives in the app layer; this row
+only collects the points, says what was measured, and hands the dock the
+:class:`~app.jobs.registration.Placement` the runner keeps with the checkpoint.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QSpinBox, QWidget
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QSpinBox,
+    QWidget,
+)
 
-from app.jobs.program import OpKind, Program
-from app.jobs.registration import Point, RegistrationError, mirrored, register, registered
+from app.jobs.program import Program
+from app.jobs.registration import (
+    Placement,
+    Point,
+    RegistrationError,
+    Side,
+    hole_positions,
+    mirrored,
+    register,
+)
 from app.station import Station
+
+#: At most this many reference holes (three: least squares with a residual).
+MAX_REFERENCES = 3
 
 
 def reference_holes(program: Program) -> list[Point]:
     """Where each DRILL happens (X, Y of the MOVE before it), in drilling order."""
-    holes: list[Point] = []
-    for index, where, _pen in program.positions():
-        after = index + 1
-        if after < len(program) and program[after].kind is OpKind.DRILL:
-            if "X" in where and "Y" in where:
-                holes.append((where["X"], where["Y"]))
-    return holes
+    return hole_positions(program)
 
 
 class RegistrationBar(QWidget):
-    """Collects two job holes and the measured machine points; hands back the moved job."""
+    """Collects reference holes and measured machine points; hands back the moved job."""
+
+    #: The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking.
+    pickRequested = Signal(int)
 
     def __init__(
         self,
         station: Station,
-        load: Callable[[Program], bool],
+        load: Callable[[Program, Placement], bool],
         say: Callable[[str], None],
     ) -> None:
         super().__init__()
@@ -46,73 +66,111 @@ class RegistrationBar(QWidget):
         self._say = say
         #: The job as its file says (what registration transforms; Clear goes back to it).
         self.original: Program | None = None
+        #: How the loaded job was put on the board (side, registration).
+        self.placement = Placement()
         self._holes: list[Point] = []
-        self.measured: list[Point | None] = [None, None]
+        self.measured: list[Point | None] = [None] * MAX_REFERENCES
         row = QHBoxLayout(self)
         row.setContentsMargins(0, 0, 0, 0)
         self.side_combo = QComboBox()
         self.side_combo.setObjectName("job_side")
         self.side_combo.setToolTip(
-            "The bottom side of a double-sided board: the job mirrored about its own extent"
+            self.tr(
+                "The bottom side of a double-sided board: the job mirrored about its own extent"
+            )
         )
         for label, about in (
-            ("Top side", ""),
-            ("Bottom, mirrored in X", "X"),
-            ("Bottom, mirrored in Y", "Y"),
+            (self.tr("Top side"), ""),
+            (self.tr("Bottom, mirrored in X"), "X"),
+            (self.tr("Bottom, mirrored in Y"), "Y"),
         ):
             self.side_combo.addItem(label, about)
         self.side_combo.activated.connect(self._side_changed)
         row.addWidget(self.side_combo)
-        row.addWidget(QLabel("Register on holes"))
+        row.addWidget(QLabel(self.tr("Register on holes")))
         self.hole_spins: list[QSpinBox] = []
+        self.pick_buttons: list[QPushButton] = []
         self.here_buttons: list[QPushButton] = []
-        for k in range(2):
+        for k in range(MAX_REFERENCES):
             spin = QSpinBox()
             spin.setObjectName(f"job_reference_{k + 1}")
-            spin.setToolTip("A reference hole: its number in drilling order")
+            spin.setToolTip(self.tr("A reference hole: its number in drilling order"))
             spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
-            here = QPushButton("Here")
+            pick = QPushButton(self.tr("Pick"))
+            pick.setObjectName(f"job_reference_pick_{k + 1}")
+            pick.setCheckable(True)
+            pick.setToolTip(self.tr("Then click the hole in the preview"))
+            pick.toggled.connect(lambda on, k=k: self._pick(k, on))
+            here = QPushButton(self.tr("Here"))
             here.setObjectName(f"job_reference_here_{k + 1}")
-            here.setToolTip("The tool stands over this hole on the board: take its position")
+            here.setToolTip(
+                self.tr("The tool stands over this hole on the board: take its position")
+            )
             here.clicked.connect(lambda _c=False, k=k: self.take(k))
-            row.addWidget(spin)
-            row.addWidget(here)
+            for widget in (spin, pick, here):
+                row.addWidget(widget)
             self.hole_spins.append(spin)
+            self.pick_buttons.append(pick)
             self.here_buttons.append(here)
-        self.register_button = QPushButton("Register")
+        self.three_check = QCheckBox(self.tr("3 points"))
+        self.three_check.setObjectName("job_reference_three")
+        self.three_check.setToolTip(
+            self.tr("A third reference hole: averaged in, and how far the points disagree shown")
+        )
+        self.three_check.toggled.connect(self._count_changed)
+        row.addWidget(self.three_check)
+        self.register_button = QPushButton(self.tr("Register"))
         self.register_button.setObjectName("job_register")
         self.register_button.clicked.connect(self.apply)
-        self.clear_button = QPushButton("Clear")
+        self.clear_button = QPushButton(self.tr("Clear"))
         self.clear_button.setObjectName("job_register_clear")
         self.clear_button.clicked.connect(self.clear)
         row.addWidget(self.register_button)
         row.addWidget(self.clear_button)
         row.addStretch(1)
+        self._count_changed()
         self.set_job(None)
 
-    def set_job(self, program: Program | None) -> None:
-        """A job as read from its file: its holes become the choices, measurements are dropped."""
+    @property
+    def count(self) -> int:
+        """Reference holes in use: two, or three with *3 points*."""
+        return 3 if self.three_check.isChecked() else 2
+
+    def set_job(self, program: Program | None, placement: Placement | None = None) -> None:
+        """A job as read from its file, and how it was put on the board (kept or resumed).
+
+        Its holes become the choices and the measurements are dropped; the
+        side shown is the placement's.
+        """
         self.original = program
-        self.side_combo.setCurrentIndex(0)
+        self.placement = placement or Placement()
+        index = self.side_combo.findData(self.placement.side)
+        self.side_combo.setCurrentIndex(max(index, 0))
         self._choose_holes()
+
+    @property
+    def side(self) -> Side:
+        about = self.side_combo.currentData()
+        return "X" if about == "X" else "Y" if about == "Y" else ""
 
     @property
     def base(self) -> Program | None:
         """The job on the chosen side (mirrored for the bottom): what registration moves."""
-        about = self.side_combo.currentData()
-        if self.original is None or about not in ("X", "Y"):
+        side = self.side
+        if self.original is None or not side:
             return self.original
-        return mirrored(self.original, "X" if about == "X" else "Y")
+        return mirrored(self.original, side)
 
     def _side_changed(self, *_args: object) -> None:
         try:
             base = self.base
         except RegistrationError as exc:
-            self._say(f"cannot mirror: {exc}")
+            self._say(self.tr("cannot mirror: {0}").format(exc))
             self.side_combo.setCurrentIndex(0)
             return
         if base is not None:
-            self._load(base)
+            self.placement = Placement(self.side)
+            self._load(base, self.placement)
             self._choose_holes()
 
     def _choose_holes(self) -> None:
@@ -124,48 +182,101 @@ class RegistrationBar(QWidget):
             spin.setRange(1, max(count, 1))
             spin.blockSignals(False)
         if count:
-            # Far apart registers best: the first hole and the one farthest from it.
+            # Far apart registers best: the first hole, the one farthest from it, and the
+            # one farthest from the line between them.
             x0, y0 = self._holes[0]
             far = max(
                 range(count),
                 key=lambda i: (self._holes[i][0] - x0) ** 2 + (self._holes[i][1] - y0) ** 2,
             )
-            self.hole_spins[0].setValue(1)
-            self.hole_spins[1].setValue(far + 1)
-        self.measured = [None, None]
+            x1, y1 = self._holes[far]
+            off_line = max(
+                range(count),
+                key=lambda i: abs(
+                    (x1 - x0) * (self._holes[i][1] - y0) - (y1 - y0) * (self._holes[i][0] - x0)
+                ),
+            )
+            for spin, value in zip(self.hole_spins, (1, far + 1, off_line + 1), strict=True):
+                spin.blockSignals(True)
+                spin.setValue(value)
+                spin.blockSignals(False)
+        self.measured = [None] * MAX_REFERENCES
         self.setVisible(count >= 2)
+        self._update()
+
+    def set_reference(self, k: int, hole: int) -> None:
+        """Reference ``k`` (0-based) is hole ``hole`` (0-based, drilling order): a preview pick."""
+        if not 0 <= k < MAX_REFERENCES or not 0 <= hole < len(self._holes):
+            return
+        self.pick_buttons[k].blockSignals(True)
+        self.pick_buttons[k].setChecked(False)
+        self.pick_buttons[k].blockSignals(False)
+        self.hole_spins[k].setValue(hole + 1)  # a different hole forgets its measurement
+        x, y = self._holes[hole]
+        self._say(
+            self.tr("reference {0} is hole {1} (X{2} Y{3} in the job)").format(
+                k + 1, hole + 1, f"{x:.3f}", f"{y:.3f}"
+            )
+        )
+
+    def _pick(self, k: int, on: bool) -> None:
+        if on:
+            for other, button in enumerate(self.pick_buttons):
+                if other != k and button.isChecked():
+                    button.blockSignals(True)
+                    button.setChecked(False)
+                    button.blockSignals(False)
+        self.pickRequested.emit(k if on else -1)
+
+    def _count_changed(self, *_args: object) -> None:
+        third = self.count == 3
+        for widget in (self.hole_spins[2], self.pick_buttons[2], self.here_buttons[2]):
+            widget.setVisible(third)
         self._update()
 
     def take(self, k: int) -> None:
         axes = self.station.model.axes
         self.measured[k] = (axes[0].position, axes[1].position)
         x, y = self.measured[k] or (0.0, 0.0)
-        self._say(f"reference {k + 1} (hole {self.hole_spins[k].value()}) at X{x:.3f} Y{y:.3f}")
+        self._say(
+            self.tr("reference {0} (hole {1}) at X{2} Y{3}").format(
+                k + 1, self.hole_spins[k].value(), f"{x:.3f}", f"{y:.3f}"
+            )
+        )
         self._update()
 
     def apply(self) -> None:
-        first, second = self.measured
+        count = self.count
+        measured = self.measured[:count]
         base = self.base
-        if base is None or first is None or second is None:
+        if base is None or any(point is None for point in measured):
             return
-        refs = [self._holes[spin.value() - 1] for spin in self.hole_spins]
+        refs = [self._holes[spin.value() - 1] for spin in self.hole_spins[:count]]
+        points = [point for point in measured if point is not None]
         try:
-            fit = register(refs, [first, second])
-            moved = registered(base, fit)
+            fit = register(refs, points)
+            placement = Placement(self.side, fit)
+            moved = placement.apply(self.original) if self.original is not None else base
         except RegistrationError as exc:
-            self._say(f"registration refused: {exc}")
+            self._say(self.tr("registration refused: {0}").format(exc))
             return
-        self._say(f"registered: {fit.describe()}")
+        self._say(self.tr("registered: {0}").format(fit.describe()))
+        if count == 3:
+            self._say(
+                self.tr("the three points agree within {0} mm").format(f"{fit.residual_mm:.3f}")
+            )
         if warning := fit.warning():
-            self._say(f"warning: {warning}")
-        self._load(moved)
+            self._say(self.tr("warning: {0}").format(warning))
+        if self._load(moved, placement):
+            self.placement = placement
 
     def clear(self) -> None:
         """Back to the job as the file says on the chosen side, unregistered."""
         base = self.base
         if base is not None:
-            self._load(base)
-        self.measured = [None, None]
+            self.placement = Placement(self.side)
+            self._load(base, self.placement)
+        self.measured = [None] * MAX_REFERENCES
         self._update()
 
     def _forget(self, k: int) -> None:
@@ -173,4 +284,5 @@ class RegistrationBar(QWidget):
         self._update()
 
     def _update(self) -> None:
-        self.register_button.setEnabled(None not in self.measured and self.original is not None)
+        complete = None not in self.measured[: self.count]
+        self.register_button.setEnabled(complete and self.original is not None)

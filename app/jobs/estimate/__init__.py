@@ -25,16 +25,18 @@ def estimate(
     start: Mapping[str, float] | None = None,
     control_cycle_s: float = CONTROL_CYCLE_S,
     speeds_mm_s: Mapping[str, float] | None = None,
+    home_first: bool = False,
 ) -> Estimate:
     """Time ``program`` on ``profile`` from ``start`` (mm per axis name; 0 when unknown).
 
     ``parameters``, ``period_s``, ``fast`` and ``control_cycle_s`` are the
     stage's (its device parameters and frame pacing); ``speeds_mm_s`` the usb3
-    unit's axis speeds at its present step sizes and threads.  The drill and
-    G-code machines take what they need from the profile.
+    unit's axis speeds at its present step sizes and threads; ``home_first``
+    that the job will home the machine before its first operation (the
+    drill).  The drill and G-code machines take what they need from the profile.
     """
     if profile.dialect == "drill":
-        return estimate_drill(program, profile, start=start)
+        return estimate_drill(program, profile, start=start, home_first=home_first)
     if profile.dialect == "gcode":
         return estimate_gcode(program, profile, start=start)
     if profile.dialect == "usb3":

@@ -1,10 +1,15 @@
-"""How long a program takes on the PCB drill, in closed form.
+"""How long a program takes on the PCB drill, in closed form, from :mod:`protocol.drill.timing`.
 
 The drill has no ramps and runs one procedure at a time: every axis steps at
-one constant period per microstep, X and Y move one after the other, a drill
-cycle and a pen movement take fixed times, and each command costs a little
-more for the round trip (sent after the previous ``D``, started at the
-device's next control cycle).
+one constant period per microstep, X and Y move one after the other, a pen
+movement takes a fixed time, and each command costs a little more for the
+round trip (sent after the previous ``D``, started at the device's next
+control cycle).  A drill cycle is long the first time (the drill comes down
+from the top of Z) and short afterwards (it hovers where the original's
+39-full-step return leaves it); the station cannot ask where Z is, so the
+first ``V`` of every job is counted long: a second job on the same power-on
+is estimated about 2.5 s long.  The homing before the job (when the station
+has not seen one on this link) and the park after it are counted too.
 """
 
 from __future__ import annotations
@@ -15,9 +20,15 @@ from decimal import ROUND_HALF_UP, Decimal
 from app.jobs.estimate.model import Estimate
 from app.jobs.program import OpKind, Program
 from app.profiles import MachineProfile
-from protocol.drill.timing import DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
+from protocol.drill.timing import (
+    DRILL_CYCLE_S,
+    FIRST_DRILL_CYCLE_S,
+    PEN_TIME_S,
+    STEP_PERIODS_S,
+    home_s,
+)
 
-__all__ = ["DRILL_CYCLE_S", "PEN_TIME_S", "estimate_drill"]
+__all__ = ["DRILL_CYCLE_S", "FIRST_DRILL_CYCLE_S", "PEN_TIME_S", "estimate_drill"]
 
 #: Per drill command: its ``D`` leaves at the end of the control cycle in which the procedure
 #: ends, half a 5 ms cycle late on average; the host's next command starts at the cycle after.
@@ -38,6 +49,7 @@ def estimate_drill(
     *,
     start: Mapping[str, float] | None = None,
     overhead_s: float = DRILL_COMMAND_OVERHEAD_S,
+    home_first: bool = False,
 ) -> Estimate:
     """Time ``program`` on the PCB drill from ``start`` (mm per axis name; 0 when unknown).
 
@@ -51,19 +63,34 @@ def estimate_drill(
     }
     where = {name: _microsteps((start or {}).get(name, 0.0), k) for name, k in per_mm.items()}
     elapsed = 0.0
+    if home_first and OpKind.MOVE in program.kinds():
+        # N: X, then Y, to the switch and on to the zero (the station's first send).
+        elapsed += sum(home_s(name, steps) for name, steps in where.items()) + overhead_s
+        where = dict.fromkeys(where, 0)
+
+    def go(target_mm: Mapping[str, float]) -> float:
+        took = 0.0
+        for name, mm in target_mm.items():
+            if name not in per_mm:
+                continue
+            target = _microsteps(mm, per_mm[name])
+            took += abs(target - where[name]) * STEP_PERIODS_S.get(name, 0.0) + overhead_s
+            where[name] = target
+        return took
+
     cumulative: list[float] = []
+    strokes = 0
     for op in program:
         if op.kind is OpKind.MOVE:
-            for name, target_mm in op.target.items():
-                if name not in per_mm:
-                    continue
-                target = _microsteps(target_mm, per_mm[name])
-                period = STEP_PERIODS_S.get(name, 0.0)
-                elapsed += abs(target - where[name]) * period + overhead_s
-                where[name] = target
+            elapsed += go(op.target)
         elif op.kind is OpKind.DRILL:
-            elapsed += DRILL_CYCLE_S + overhead_s
+            elapsed += (FIRST_DRILL_CYCLE_S if strokes == 0 else DRILL_CYCLE_S) + overhead_s
+            strokes += 1
         elif op.kind in (OpKind.PEN_DOWN, OpKind.PEN_UP):
             elapsed += PEN_TIME_S + overhead_s
         cumulative.append(elapsed)
+    if profile.park and len(program):
+        # The park after the last operation (and P, which moves nothing more, when it
+        # is P's own place): in the total, after every operation.
+        elapsed += go(profile.park) + overhead_s
     return Estimate(elapsed, tuple(cumulative))

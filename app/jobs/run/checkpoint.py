@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from app.jobs.program import Program
+from app.jobs.registration import Placement
 
 #: A checkpoint is a few hundred bytes; anything much larger is not one of ours.
 MAX_CHECKPOINT_BYTES = 64 * 1024
@@ -28,6 +29,7 @@ class CheckpointStore:
     def __init__(self, directory: Path) -> None:
         self.directory = Path(directory)
         self._fingerprint_cache: tuple[Program, str] | None = None
+        self._base_cache: tuple[Program, str] | None = None
 
     def path(self, program: Program) -> Path:
         return self.directory / f"{self.fingerprint(program)}.json"
@@ -39,15 +41,25 @@ class CheckpointStore:
             cached = self._fingerprint_cache = (program, program.fingerprint())
         return cached[1]
 
-    def write(self, program: Program, completed: int) -> None:
-        """Record operations ``[0, completed]`` as done; raises OSError when it cannot."""
-        record = {
+    def write(
+        self, program: Program, completed: int, placed: tuple[Program, Placement] | None = None
+    ) -> None:
+        """Record operations ``[0, completed]`` as done; raises OSError when it cannot.
+
+        ``placed`` is the job as its file says and how ``program`` was put on the
+        board from it (a registered drill job): kept, so that the file read
+        again can be put there again and resumed (:meth:`placement_for`).
+        """
+        record: dict[str, Any] = {
             "fingerprint": self.fingerprint(program),
             "name": program.name,
             "source": str(program.source) if program.source is not None else None,
             "completed": completed,
             "time": datetime.now(UTC).isoformat(timespec="seconds"),
         }
+        if placed is not None:
+            base, placement = placed
+            record["placement"] = {"base": self._base_fingerprint(base), **placement.to_record()}
         path = self.path(program)
         self.directory.mkdir(parents=True, exist_ok=True)
         fd, temp = tempfile.mkstemp(prefix=f".{path.stem}.", dir=self.directory)
@@ -86,6 +98,41 @@ class CheckpointStore:
         ):
             return None
         return completed + 1
+
+    def _base_fingerprint(self, base: Program) -> str:
+        cached = self._base_cache
+        if cached is None or cached[0] is not base:
+            cached = self._base_cache = (base, base.fingerprint())
+        return cached[1]
+
+    def placement_for(self, base: Program) -> Placement | None:
+        """How an interrupted run of ``base`` (as its file says) was put on the board, if any.
+
+        Unreadable or foreign files are skipped: this only offers a resume.
+        """
+        if not self.directory.is_dir():
+            return None
+        candidates: list[tuple[str, object, dict[str, Any]]] = []
+        for path in self.directory.glob("*.json"):
+            try:
+                info = path.stat()
+                if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_CHECKPOINT_BYTES:
+                    continue
+                record: Any = json.loads(path.read_text(encoding="utf-8"))
+            except (OSError, ValueError):
+                continue
+            placement = record.get("placement") if isinstance(record, dict) else None
+            if isinstance(placement, dict):
+                candidates.append((str(record.get("time", "")), placement.get("base"), placement))
+        if not candidates:
+            return None  # the common case: no fingerprint of a large job to compute
+        wanted = self._base_fingerprint(base)
+        newest: tuple[str, Placement] | None = None
+        for when, fingerprint, placement in candidates:
+            found = Placement.from_record(placement) if fingerprint == wanted else None
+            if found is not None and (newest is None or when > newest[0]):
+                newest = (when, found)
+        return newest[1] if newest is not None else None
 
     def discard(self, program: Program) -> None:
         self.path(program).unlink(missing_ok=True)

@@ -20,17 +20,26 @@ uses only what it said before the link went:
   been drilled (the ``V`` or its ``RV`` was lost), and so may the checkpoint's
   next DRILL after a station restart: the operator decides, looking at the
   board, with the hole marked in the preview.  Never a silent resend.
+
+Home first, park at the end, as the original tool did (FIDELITY S2-26).  The
+drill cannot say whether it has homed (it answers only ``R``/``D``/``E``), so
+the session counts an ``N`` it saw finish since the link opened; until then
+the first operation sent is preceded by ``N`` (the pen raised first if the
+job has it down) and, since homing moved the tool, by the moves back to where
+the job stands.  After the last operation the tool goes to the profile's
+park position through the motion gate, and ``P`` follows when that is where
+``P`` parks anyway (X 0, Y at the back): it then only switches the motors off.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from functools import partial
 
-from app.jobs.program import Operation, OpKind
+from app.jobs.program import Operation, OpKind, Program
 from app.jobs.run.driver import RunnerPort
 from app.jobs.run.sequential import SequentialDriver
-from app.jobs.run.states import ACTIVE
+from app.jobs.run.states import ACTIVE, JobState
 from app.machines.drill.session import DrillSession
 from app.machines.session import MachineSession
 
@@ -44,6 +53,11 @@ class DrillDriver(SequentialDriver):
         self._pending: list[str] = []
         self._received = False
         self._written = False  # the in-flight DRILL's V went out on the wire
+        # The park after the last operation: under way, or done for this run.
+        self._parking = False
+        self._parked = False
+        # Homing before the operator is asked anything (the job's first WAIT, a bit prompt).
+        self._homing_first = False
 
     def bind(self, session: MachineSession | None) -> None:
         old = self._session
@@ -76,6 +90,8 @@ class DrillDriver(SequentialDriver):
             return
         profile = self.station.profile
         sends: list[tuple[str, Callable[[], bool]]] = []
+        if not session.homed_since_connect:
+            sends += self._home_first(session, index)
         if op.kind is OpKind.MOVE:
             for name, target in op.target.items():
                 axis = profile.axis_index(name)
@@ -97,7 +113,93 @@ class DrillDriver(SequentialDriver):
                 self._refused_send(index, "the drill refused it")
                 return
 
+    def _dispatch(self, index: int) -> None:
+        """As any sequential machine; a WAIT on a drill not yet homed homes first.
+
+        So a job opens as the original's did, with ``N``, before the first bit
+        prompt, and the operator changes bits with the carriage at rest.
+        """
+        program = self.runner.program
+        session = self._session
+        assert program is not None
+        if (
+            program[index].kind is OpKind.WAIT
+            and session is not None
+            and session.homes_before_job
+            and self.link_up()
+            and not session.busy
+        ):
+            sends = self._home_first(session, index)
+            self._pending = [letter for letter, _ in sends]
+            self._homing_first = True
+            for _, send in sends:
+                if not send():
+                    self._pending = []
+                    self._homing_first = False
+                    self._refused_send(index, "the drill refused to home")
+                    return
+            return
+        super()._dispatch(index)
+
+    def _home_first(
+        self, session: DrillSession, index: int
+    ) -> list[tuple[str, Callable[[], bool]]]:
+        """``N`` before operation ``index``, and back to where the job stands there."""
+        program = self.runner.program
+        assert program is not None
+        where, pen_down = _state_before(program, index)
+        self.runner.note(
+            "The drill cannot report whether it has homed, and the station has not seen it "
+            "home since this link opened: homing first (N)"
+        )
+        sends: list[tuple[str, Callable[[], bool]]] = []
+        if pen_down:
+            sends.append(("Z", partial(session.pen, False)))
+        sends.append(("N", partial(session.home, 0)))
+        profile = self.station.profile
+        for name, target in where.items():
+            sends.append((name, partial(session.move_absolute, profile.axis_index(name), target)))
+        if pen_down:
+            sends.append(("K", partial(session.pen, True)))
+        return sends
+
+    def wind_up(self) -> bool:
+        """Park at the profile's park position (then ``P`` if that is P's own place)."""
+        park = self.station.profile.park
+        session = self._session
+        if self._parked or not park:
+            return True
+        if self._parking:
+            return False
+        if session is None or not self.link_up():
+            self.runner.link_pause()
+            return False
+        profile = self.station.profile
+        sends: list[tuple[str, Callable[[], bool]]] = [
+            (name, partial(session.move_absolute, profile.axis_index(name), target))
+            for name, target in park.items()
+        ]
+        if _is_firmware_park(park, profile.travel_limits()):
+            sends.append(("P", session.park))
+        self._pending = [letter for letter, _ in sends]
+        self._parking = True
+        self.runner.note(
+            "Parking at " + " ".join(f"{name}{value:.3f}" for name, value in park.items())
+        )
+        for letter, send in sends:
+            if not send():
+                self._pending = []
+                self._parking = False
+                if not self.link_up():
+                    self.runner.link_pause()
+                    return False
+                self.runner.note(f"Not parked: the drill refused {letter}")
+                self._parked = True
+                return True
+        return False
+
     def begin(self, index: int, *, verify: bool) -> None:
+        self._parked = False
         super().begin(index, verify=verify)
         program = self.runner.program
         assert program is not None
@@ -133,8 +235,18 @@ class DrillDriver(SequentialDriver):
             "Count it as drilled",
         )
 
+    def link_lost(self) -> None:
+        """What was queued went with the link: a park or a homing is started again on resume."""
+        if self._parking or self._homing_first:
+            self._parking = False
+            self._homing_first = False
+            self._pending = []
+        super().link_lost()
+
     def _clear(self) -> None:
         super()._clear()
+        self._parking = False
+        self._homing_first = False
         self._pending = []
         self._received = False
         self._written = False
@@ -148,13 +260,29 @@ class DrillDriver(SequentialDriver):
             self._received = True
 
     def _on_done(self, text: str) -> None:
-        if self.in_flight is None or not self._pending:
+        if (self.in_flight is None and not self._parking) or not self._pending:
             return
         if text[:1] == self._pending[0]:
             self._pending.pop(0)
 
     def _on_idle(self) -> None:
+        if self._parking:
+            if not self._pending:
+                self._parking = False
+                self._parked = True
+                if self.runner.state is JobState.RUNNING:
+                    self.runner.finish()
+            return
         index = self.in_flight
+        if self._homing_first:
+            if self._pending or index is None:
+                return
+            self._homing_first = False
+            if self.runner.state is JobState.RUNNING:
+                self._dispatch(index)  # homed: now the prompt
+            elif self.runner.state is JobState.PAUSING:
+                self.runner.pause_reached()  # the prompt comes on resume
+            return
         if index is None or self.verifying or not self._judging():
             return
         program = self.runner.program
@@ -165,7 +293,37 @@ class DrillDriver(SequentialDriver):
         self._done(index)
 
     def _on_failed(self, text: str) -> None:
+        if self._parking:
+            # Every hole is done; a refused park leaves the tool where it is, said so.
+            self._pending = []
+            self._parking = False
+            self._parked = True
+            self.runner.note(f"Not parked: the drill refused {text}")
+            if self.runner.state is JobState.RUNNING:
+                self.runner.finish()
+            return
         if self.in_flight is None or self.runner.state not in ACTIVE:
             return
         self._pending = []
         self.runner.fail(self.in_flight, f"the drill refused {text}")
+
+
+def _state_before(program: Program, index: int) -> tuple[dict[str, float], bool]:
+    """Where the job has put the tool before operation ``index``, and whether its pen is down."""
+    where: dict[str, float] = {}
+    pen_down = False
+    for op in program.operations[:index]:
+        if op.kind is OpKind.MOVE:
+            where.update(op.target)
+        elif op.kind is OpKind.PEN_DOWN:
+            pen_down = True
+        elif op.kind is OpKind.PEN_UP:
+            pen_down = False
+    return where, pen_down
+
+
+def _is_firmware_park(park: Mapping[str, float], limits: Mapping[str, tuple[float, float]]) -> bool:
+    """Whether ``park`` is where the drill's own ``P`` goes: X at 0, Y at the back."""
+    x, y = park.get("X"), park.get("Y")
+    back = limits.get("Y", (0.0, 0.0))[1]
+    return x is not None and y is not None and abs(x) < 1e-9 and abs(y - back) < 1e-9

@@ -171,6 +171,15 @@ class JobDriver:
     def proceed(self) -> None:
         """Send what may be sent now; end, wait or pause when the program says so."""
 
+    def wind_up(self) -> bool:
+        """The last operation is done: True when the job may end now.
+
+        A machine that has more to do after a job (the drill parks) starts it
+        here, returns False and calls :meth:`RunnerPort.finish` itself once it
+        is done.
+        """
+        return True
+
     def hold_back(self) -> None:
         """A pause was asked for: take back what is queued but not yet on the wire."""
 

@@ -27,6 +27,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.jobs.estimate import Estimate, estimate, parameters_from_model
 from app.jobs.program import LimitViolation, Program, check_limits
+from app.jobs.registration import Placement
 from app.jobs.run.checkpoint import CheckpointStore
 from app.jobs.run.driver import LINK_DOWN, JobDriver, UnsupportedOperation
 from app.jobs.run.drivers import driver_for
@@ -66,6 +67,7 @@ class JobRunner(QObject):
         self._checkpoints = CheckpointStore(self.checkpoint_dir)
         self._state = JobState.IDLE
         self._program: Program | None = None
+        self._placed: tuple[Program, Placement] | None = None
         self._estimate: Estimate | None = None
         self._done = 0  # operations [0, done) are complete
         self._executed = 0  # operations [0, executed) are reported run by the machine
@@ -165,11 +167,15 @@ class JobRunner(QObject):
 
     # --- loading -------------------------------------------------------------
 
-    def load(self, program: Program) -> list[LimitViolation]:
+    def load(
+        self, program: Program, placed: tuple[Program, Placement] | None = None
+    ) -> list[LimitViolation]:
         """Accept ``program`` unless some operation leaves the travel or the machine cannot do it.
 
         A refused program changes nothing that was loaded before except that
         it is unloaded: the operator sees the list of offending lines.
+        ``placed``: the job as its file says and how ``program`` was put on the
+        board from it (mirrored, registered), kept with the checkpoint.
         """
         if self._state in ACTIVE:
             self.message.emit("Stop the running job before loading another")
@@ -194,6 +200,7 @@ class JobRunner(QObject):
             self.programChanged.emit()
             return refused
         self._program = program
+        self._placed = placed if placed is not None and placed[1] else None
         self._estimate = self._compute_estimate(program)
         self._resume_available = self._read_checkpoint(program)
         self.programChanged.emit()
@@ -302,6 +309,10 @@ class JobRunner(QObject):
         index = self._resume_available
         self._resume_available = None
         self._begin(index, single_step=False, verify=True)
+
+    def checkpoint_placement(self, base: Program) -> Placement | None:
+        """How an interrupted run of ``base`` (as read from its file) was put on the board."""
+        return self._checkpoints.placement_for(base)
 
     def discard_checkpoint(self) -> None:
         """Forget the interrupted run: the next start begins at the first operation."""
@@ -475,7 +486,8 @@ class JobRunner(QObject):
         """After an operation: whether the next one starts now (else the job ended or paused)."""
         assert self._program is not None
         if self._done >= len(self._program):
-            self.finish()
+            if self._driver.wind_up():
+                self.finish()
             return False
         if self._single_step or self._pause_requested:
             self._pause_requested = False
@@ -556,6 +568,7 @@ class JobRunner(QObject):
             fast=session.fast_selected if session is not None else True,
             start=start,
             speeds_mm_s=session.top_speeds_mm_s() if session is not None else None,
+            home_first=session.homes_before_job if session is not None else False,
         )
 
     # --- checkpoint ----------------------------------------------------------
@@ -568,7 +581,7 @@ class JobRunner(QObject):
         operator can still see where it stands.
         """
         try:
-            self._checkpoints.write(program, completed)
+            self._checkpoints.write(program, completed, self._placed)
         except OSError as exc:
             if self._state in ACTIVE and not self._failing:
                 self._failing = True

@@ -52,7 +52,8 @@ class SequentialDriver(JobDriver, ABC):
                     self._dispatch(self._in_flight)
                 return
             if runner.done >= len(program):
-                runner.finish()
+                if self.wind_up():
+                    runner.finish()
                 return
             index = runner.done
             op = program[index]

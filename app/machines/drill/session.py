@@ -50,7 +50,7 @@ from protocol.drill.codec import (
     encode_command,
     encode_reply,
 )
-from protocol.drill.timing import DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
+from protocol.drill.timing import FIRST_DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
 
 #: Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle.
 RECEIPT_TIMEOUT_S = 1.0
@@ -120,6 +120,7 @@ class DrillSession(MachineSession):
         self._timer.setInterval(TICK_MS)
         self._timer.timeout.connect(self.tick)
         self._refused_lines = 0
+        self._homed_here = False
         self._per_mm = [
             Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
             for axis in model.profile.axes
@@ -144,6 +145,21 @@ class DrillSession(MachineSession):
     def busy(self) -> bool:
         """A command is out or waiting."""
         return self._in_flight is not None or bool(self._queue)
+
+    @property
+    def homed_since_connect(self) -> bool:
+        """An ``N`` has finished since this link opened.
+
+        The drill reports nothing but ``R``/``D``/``E`` (PROTOCOLS.md 3): it
+        cannot say whether it homed at power-on, nor whether it was switched
+        off and on while the link was down.  So the station counts only what
+        it saw itself, and a new link starts unhomed.
+        """
+        return self._homed_here
+
+    @property
+    def homes_before_job(self) -> bool:
+        return not self._homed_here
 
     @property
     def in_flight(self) -> Command | None:
@@ -305,7 +321,7 @@ class DrillSession(MachineSession):
             here = self.to_microsteps(axes[0], self.model.axes[axes[0]].position)
             return abs(command.value - here) * STEP_PERIODS_S.get(letter, 0.0)
         if letter == "V":
-            return DRILL_CYCLE_S
+            return FIRST_DRILL_CYCLE_S  # the longest stroke: the drill may start at the top
         if letter in "KZ":
             return PEN_TIME_S
         # Home and park run the axes across their whole travel.
@@ -342,6 +358,7 @@ class DrillSession(MachineSession):
                     velocity=0.0,
                 )
         elif command.letter == "N":
+            self._homed_here = True
             for axis in self._axes_named(POSITION_LETTERS):
                 self.model.update_axis(
                     axis, position=0.0, status_text="idle", moving=False, velocity=0.0
@@ -367,6 +384,7 @@ class DrillSession(MachineSession):
     # --- link events and replies ------------------------------------------------
 
     def _on_connected(self) -> None:
+        self._homed_here = False
         self.decoder.reset()
         self._clear()
         self._await_device()
