@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+import numpy as np
 from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QSpinBox, QWidget
 
 from app.jobs.program import OpKind, Program
@@ -21,14 +22,27 @@ from app.station import Station
 
 
 def reference_holes(program: Program) -> list[Point]:
-    """Where each DRILL happens (X, Y of the MOVE before it), in drilling order."""
-    holes: list[Point] = []
-    for index, where, _pen in program.positions():
-        after = index + 1
-        if after < len(program) and program[after].kind is OpKind.DRILL:
-            if "X" in where and "Y" in where:
-                holes.append((where["X"], where["Y"]))
-    return holes
+    """Where each DRILL happens (X, Y of the MOVE just before it), in drilling order.
+
+    From the program's arrays, not its operations one by one: a job without a
+    drill (a 2-million-entry string-art file) costs nothing here, and a board
+    of 50 000 holes is a few array operations on the GUI thread.
+    """
+    if OpKind.DRILL not in program.kinds():
+        return []
+    drills = program.indices_of(OpKind.DRILL)
+    path = program.path(("X", "Y"))
+    if not len(drills) or not len(path):
+        return []
+    # The last vertex of the operation just before each drill, when that one is a move.
+    before = drills - 1
+    at = np.searchsorted(path.ops, before, side="right") - 1
+    valid = at >= 0
+    at, before = at[valid], before[valid]
+    moved = path.ops[at] == before
+    coords = path.coords[at[moved]]
+    known = ~np.isnan(coords).any(axis=1)
+    return [(float(x), float(y)) for x, y in coords[known]]
 
 
 class RegistrationBar(QWidget):

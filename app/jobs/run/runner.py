@@ -21,6 +21,8 @@ running itself to the dialect's :class:`~app.jobs.run.driver.JobDriver`
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from PySide6.QtCore import QObject, QTimer, Signal
@@ -40,6 +42,21 @@ ETA_INTERVAL_MS = 1000
 REFUSALS_SHOWN = 20
 #: How far from 0 (mm or degrees) a job that counts from its start may start.
 START_TOLERANCE = 0.01
+
+
+@dataclass(frozen=True)
+class LoadCheck:
+    """What :meth:`JobRunner.load` works out for a program before accepting it.
+
+    Made by :meth:`JobRunner.checker`'s function, which any thread may run: a
+    2-million-entry string-art job takes seconds to check, estimate and hash,
+    and the dock's loading thread does it, so the GUI thread only takes the result.
+    """
+
+    program: Program
+    refused: list[LimitViolation]
+    estimate: Estimate | None
+    fingerprint: str
 
 
 class JobRunner(QObject):
@@ -165,20 +182,42 @@ class JobRunner(QObject):
 
     # --- loading -------------------------------------------------------------
 
-    def load(self, program: Program) -> list[LimitViolation]:
+    def checker(self) -> Callable[[Program], LoadCheck]:
+        """The load's checks as a function of the program alone, for another thread.
+
+        What they need from the station (the profile, the machine's settings and
+        position for the estimate) is read now, on the GUI thread; the function
+        touches nothing of the runner or the station.
+        """
+        profile = self.station.profile
+        limits = profile.travel_limits()
+        refusals = self._driver.refusals
+        timing = self._estimate_inputs()
+
+        def check(program: Program) -> LoadCheck:
+            refused: list[LimitViolation] = check_limits(program, limits)
+            refused += refusals(program)
+            # In file order, as the operator reads the file.
+            refused.sort(key=lambda v: (v.operation.source.line, v.index))
+            if refused:  # neither timed nor hashed: it will not run
+                return LoadCheck(program, refused, None, "")
+            return LoadCheck(program, refused, timing(program), program.fingerprint())
+
+        return check
+
+    def load(self, program: Program, checked: LoadCheck | None = None) -> list[LimitViolation]:
         """Accept ``program`` unless some operation leaves the travel or the machine cannot do it.
 
         A refused program changes nothing that was loaded before except that
         it is unloaded: the operator sees the list of offending lines.
+        ``checked``: the checks already made for ``program`` (:meth:`checker`).
         """
         if self._state in ACTIVE:
             self.message.emit("Stop the running job before loading another")
             return []
-        profile = self.station.profile
-        refused: list[LimitViolation] = check_limits(program, profile.travel_limits())
-        refused += self._driver.refusals(program)
-        # In file order, as the operator reads the file.
-        refused.sort(key=lambda v: (v.operation.source.line, v.index))
+        if checked is None or checked.program is not program:
+            checked = self.checker()(program)
+        refused = checked.refused
         self._reset()
         if refused:
             self._program = None
@@ -194,7 +233,8 @@ class JobRunner(QObject):
             self.programChanged.emit()
             return refused
         self._program = program
-        self._estimate = self._compute_estimate(program)
+        self._checkpoints.remember(program, checked.fingerprint)
+        self._estimate = checked.estimate
         self._resume_available = self._read_checkpoint(program)
         self.programChanged.emit()
         self._set_state(JobState.READY)
@@ -544,19 +584,23 @@ class JobRunner(QObject):
         self._elapsed_before = 0.0
         self._running_since = None
 
-    def _compute_estimate(self, program: Program) -> Estimate:
+    def _estimate_inputs(self) -> Callable[[Program], Estimate]:
+        """The dry-run estimate with the machine's settings and position as they are now."""
         model = self.station.model
         session = self.station.session
+        profile = self.station.profile
         start = {axis.name: axis.position for axis in model.axes}
-        return estimate(
-            program,
-            self.station.profile,
-            parameters_from_model(model),
-            (session.period_ms if session is not None else self.station.period_ms) / 1000,
-            fast=session.fast_selected if session is not None else True,
-            start=start,
-            speeds_mm_s=session.top_speeds_mm_s() if session is not None else None,
-        )
+        parameters = parameters_from_model(model)
+        period_s = (session.period_ms if session is not None else self.station.period_ms) / 1000
+        fast = session.fast_selected if session is not None else True
+        speeds = session.top_speeds_mm_s() if session is not None else None
+
+        def timed(program: Program) -> Estimate:
+            return estimate(
+                program, profile, parameters, period_s, fast=fast, start=start, speeds_mm_s=speeds
+            )
+
+        return timed
 
     # --- checkpoint ----------------------------------------------------------
 
