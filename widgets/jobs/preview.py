@@ -274,6 +274,65 @@ class ProgramGeometry:
         return PathArrays(xs, ys, ops)
 
 
+#: Points in the done trail's growing piece; past this it is frozen and a new piece starts.
+TRAIL_PIECE_POINTS = 4096
+
+
+class DoneTrail:
+    """The done part of one path kind, drawn append-only as the job advances.
+
+    Redrawing the whole done prefix on every progress step costs in proportion
+    to what is done (a long job slows as it goes).  Here only the last piece,
+    at most :data:`TRAIL_PIECE_POINTS` points, is given new data; full pieces
+    are frozen into items of their own that are never touched again.  Going
+    back (a new run, another program) starts over.
+    """
+
+    def __init__(self, plot: pg.PlotItem, tail: pg.PlotDataItem) -> None:
+        self.plot = plot
+        self.tail = tail  # the growing piece (the preview's done curve, as before)
+        self.frozen: list[pg.PlotCurveItem] = []
+        self._path: PathArrays | None = None
+        self._start = 0  # the first point of the growing piece
+        self._shown = 0  # points drawn in all
+
+    def reset(self) -> None:
+        for item in self.frozen:
+            self.plot.removeItem(item)
+        self.frozen = []
+        self._path = None
+        self._start = self._shown = 0
+        self.tail.setData(_EMPTY, _EMPTY)
+
+    def show(self, path: PathArrays, count: int) -> None:
+        """Draw the first ``count`` points of ``path`` as done."""
+        if path is not self._path or count < self._shown:
+            self.reset()
+            self._path = path
+        if count == self._shown:
+            return
+        while count - self._start > TRAIL_PIECE_POINTS:
+            end = self._start + TRAIL_PIECE_POINTS
+            piece = pg.PlotCurveItem(
+                path.x[self._start : end],
+                path.y[self._start : end],
+                pen=self.tail.opts["pen"],
+                connect="finite",
+            )
+            piece.setVisible(self.tail.isVisible())
+            self.plot.addItem(piece)
+            self.frozen.append(piece)
+            self._start = end - 1  # the next piece starts where this one ends: no gap
+        self.tail.setData(
+            path.x[self._start : count], path.y[self._start : count], connect="finite"
+        )
+        self._shown = count
+
+    def set_visible(self, visible: bool) -> None:
+        for item in self.frozen:
+            item.setVisible(visible)
+
+
 class JobPreview(QWidget):
     """The path of a program, what is done of it and where the machine is; click to move.
 
@@ -327,6 +386,10 @@ class JobPreview(QWidget):
         self._build(axes[self.axis_indices[0]].unit if axes else "mm")
         self.string_art = StringArtPreviewExtras(
             self.plot, (self.work_curve, self.done_work_curve, self.work_markers, self.done_markers)
+        )
+        self.done_trails = (
+            DoneTrail(self.plot, self.done_travel_curve),
+            DoneTrail(self.plot, self.done_work_curve),
         )
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
@@ -720,18 +783,16 @@ class JobPreview(QWidget):
         self.string_art.set_done(self.done)
         geometry = self.path_geometry
         if geometry is None:
-            for curve in (self.done_travel_curve, self.done_work_curve):
-                curve.setData(_EMPTY, _EMPTY)
+            for trail in self.done_trails:
+                trail.reset()
             self.done_markers.setData(x=_EMPTY, y=_EMPTY)
             return
-        for curve, path in (
-            (self.done_travel_curve, geometry.travel),
-            (self.done_work_curve, geometry.work),
-        ):
-            n = path.done_count(self.done)
-            curve.setData(path.x[:n], path.y[:n], connect="finite")
+        for trail, path in zip(self.done_trails, (geometry.travel, geometry.work), strict=True):
+            trail.show(path, path.done_count(self.done))  # append-only: no full rebuild
+        self.done_trails[1].set_visible(self.done_work_curve.isVisible())
         n = geometry.markers.done_count(self.done)
-        self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
+        if n != len(self.done_markers.data):
+            self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
 
     def _draw_position(self) -> None:
         axes = self.model.axes

@@ -38,6 +38,9 @@ from app.station import Station
 __all__ = ["JobRunner", "JobState", "UnsupportedOperation"]
 
 ETA_INTERVAL_MS = 1000
+#: A streaming job answers a line every millisecond or so: the views hear of progress at
+#: most this often (a real-time station), never once per line.
+PROGRESS_INTERVAL_MS = 33
 #: Refused operations listed in the message (the dock's list holds them all).
 REFUSALS_SHOWN = 20
 #: How far from 0 (mm or degrees) a job that counts from its start may start.
@@ -97,6 +100,12 @@ class JobRunner(QObject):
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
+        #: Progress told to the views (done, executed), and the timer that coalesces it.
+        self._told: tuple[int, int] = (0, 0)
+        self._progress_timer = QTimer(self)
+        self._progress_timer.setSingleShot(True)
+        self._progress_timer.setInterval(PROGRESS_INTERVAL_MS)
+        self._progress_timer.timeout.connect(self._tell_progress)
         # A station keeps its profile, so its dialect and driver, for life.
         self._driver: JobDriver = driver_for(station.profile.dialect)(self)
         station.sessionChanged.connect(self._bind_session)
@@ -135,6 +144,7 @@ class JobRunner(QObject):
         executed = min(executed, self._done)
         if executed != self._executed:
             self._executed = executed
+            self._told = (self._told[0], executed)
             self.executedChanged.emit(executed, self._total())
 
     @property
@@ -239,6 +249,7 @@ class JobRunner(QObject):
         self.programChanged.emit()
         self._set_state(JobState.READY)
         self.progressChanged.emit(self._done, len(program))
+        self._told = (self._done, self._executed)
         self.executedChanged.emit(self._executed, len(program))
         self.emit_eta()
         if self._resume_available is not None:
@@ -378,6 +389,7 @@ class JobRunner(QObject):
             return False
         self.operationDone.emit(index)
         self.progressChanged.emit(self._done, len(self._program))
+        self._told = (self._done, self._executed)
         self.emit_eta()
         return self._carry_on()
 
@@ -386,14 +398,33 @@ class JobRunner(QObject):
             self._driver.proceed()
 
     def advance(self, done: int, executed: int | None = None) -> None:
+        """A streaming driver's progress, kept at once and told to the views coalesced.
+
+        On a real-time station the signals go at most every
+        :data:`PROGRESS_INTERVAL_MS` (and with every state change), so a thousand
+        answered lines a second cost the GUI thirty redraws, not a thousand.
+        """
         if self._program is None:
             return
-        if done != self._done:
-            self._done = done
-            if done:
-                self.operationDone.emit(done - 1)
-            self.progressChanged.emit(done, len(self._program))
-        self._set_executed(done if executed is None else executed)
+        self._done = done
+        self._executed = min(done if executed is None else executed, done)
+        if not self.station.realtime:
+            self._tell_progress()
+        elif not self._progress_timer.isActive():
+            self._progress_timer.start()
+
+    def _tell_progress(self) -> None:
+        """Emit what changed since the views were last told (see :meth:`advance`)."""
+        self._progress_timer.stop()
+        told_done, told_executed = self._told
+        self._told = (self._done, self._executed)
+        total = self._total()
+        if self._done != told_done:
+            if self._done:
+                self.operationDone.emit(self._done - 1)
+            self.progressChanged.emit(self._done, total)
+        if self._executed != told_executed:
+            self.executedChanged.emit(self._executed, total)
 
     def record(self, completed: int) -> None:
         if self._program is not None and self._state in ACTIVE:
@@ -471,6 +502,7 @@ class JobRunner(QObject):
         self._pause_requested = False
         driver.begin(index, verify=verify)
         self.progressChanged.emit(self._done, len(self._program))
+        self._told = (self._done, self._executed)
         self._set_state(JobState.RUNNING)
         driver.proceed()
 
@@ -551,6 +583,8 @@ class JobRunner(QObject):
     def _set_state(self, state: JobState) -> None:
         if state is self._state:
             return
+        if self._progress_timer.isActive():
+            self._tell_progress()  # the views see the progress the new state comes with
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
         now = self.station.clock.now()
