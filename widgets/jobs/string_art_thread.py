@@ -17,6 +17,7 @@ Pure numpy, no Qt: the dock's loading thread builds it with the preview's geomet
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,8 +41,9 @@ def band_alpha(alpha: int, band: int) -> int:
     """The opacity (of 255) a chord of ``band`` is drawn with: k copies of ``alpha`` blended."""
     low = BAND_EDGES[band]
     high = BAND_EDGES[band + 1] - 1 if band + 1 < len(BAND_EDGES) else low * 2
-    k = (low * high) ** 0.5  # the band's geometric middle
-    return max(1, min(255, round(255 * (1 - (1 - alpha / 255) ** k))))
+    k = math.sqrt(low * high)  # the band's geometric middle
+    opacity = 1.0 - math.pow(1.0 - alpha / 255, k)
+    return max(1, min(255, round(255 * opacity)))
 
 
 @dataclass(frozen=True)
