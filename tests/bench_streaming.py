@@ -110,7 +110,7 @@ def _run_as_job(app: object, station: object, lines: list[str]) -> float:
                 raise RuntimeError(f"job stuck at {runner.done} of {len(lines)}")
         elapsed = time.perf_counter() - start
         if runner.state is not JobState.DONE:
-            raise RuntimeError(f"job ended {runner.state}")
+            raise RuntimeError(f"job ended {runner.state}: {dock.messages.toPlainText()}")
         dock.close()
         dock.deleteLater()
         runner.deleteLater()

@@ -144,6 +144,8 @@ def hole_positions(program: Program, axes: tuple[str, str] = ("X", "Y")) -> list
     as its file says and for the job mirrored or registered, since those keep
     every operation in its place.
     """
+    if OpKind.DRILL not in program.kinds():
+        return []  # a 2-million-entry string-art job costs nothing here
     ax, ay = axes
     holes: list[Point] = []
     for index, where, _pen in program.positions():

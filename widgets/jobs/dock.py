@@ -58,7 +58,7 @@ from app.jobs.names import shown
 from app.jobs.program import JobFileError, OpKind, Program
 from app.jobs.reading import read_job_text
 from app.jobs.registration import Placement, RegistrationError
-from app.jobs.run.runner import JobRunner, JobState
+from app.jobs.run.runner import JobRunner, JobState, LoadCheck
 from app.station import Station
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.registration_bar import RegistrationBar
@@ -144,6 +144,8 @@ class JobsDock(QDockWidget):
         self.runner = runner
         self._path: Path | None = None
         self._source_lines: list[str] = []
+        #: The file ``_source_lines`` came from and the program they were read for.
+        self._source_lines_of: tuple[Path | None, Program | None] = (None, None)
         self._ask_board: BoardAsker = ask_board or ask_board_dialog(self)
         #: The board the operator gave for a bare nail list (kept while the file is re-read).
         self._board: StringArtParams | None = None
@@ -557,7 +559,12 @@ class JobsDock(QDockWidget):
         self._path = path
         if background:  # even a small file can be slow (huge arcs), or be no file (a pipe)
             self._loading = _Loading(
-                path, axis_names, self.options, self.preview.geometry_maker(), self
+                path,
+                axis_names,
+                self.options,
+                self.preview.geometry_maker(),
+                self.runner.checker(),
+                self,
             )
             self._loading.done.connect(self._loaded)
             self.file_label.setText(f"reading {_bold(path.name)}…")
@@ -580,10 +587,10 @@ class JobsDock(QDockWidget):
         if isinstance(result, JobFileError):
             self._refused(path, result, background=True)
         elif isinstance(result, tuple):
-            program, geometry, lines = result
+            program, geometry, lines, checked = result
             self.preview.prepare(program, geometry)
             self._prepared_lines = (program.source, lines)
-            self._accept(path, program)
+            self._accept(path, program, checked)
         else:
             self.say(f"{shown(path.name)}: not loaded — {result}")
         self._program_changed()
@@ -635,7 +642,7 @@ class JobsDock(QDockWidget):
             )
             return None
 
-    def _accept(self, path: Path, program: Program) -> bool:
+    def _accept(self, path: Path, program: Program, checked: LoadCheck | None = None) -> bool:
         placed = self._placed(program)
         if placed is not None and not self.runner.load(placed[0], (program, placed[1])):
             self.registration.set_job(program, placed[1])
@@ -646,7 +653,7 @@ class JobsDock(QDockWidget):
             )
             self._finish_accept(path, placed[0])
             return True
-        if self.runner.load(program):
+        if self.runner.load(program, checked=checked):
             # The runner said which operations, line by line (its message).  The drawing is
             # still worth seeing — where it leaves the travel, what it would do — so the
             # preview shows it while Run stays off.
@@ -762,7 +769,12 @@ class JobsDock(QDockWidget):
         source = program.source if program is not None else None
         prepared, self._prepared_lines = self._prepared_lines, None
         read = prepared is not None and source is not None and prepared[0] == source
-        self._source_lines = prepared[1] if prepared is not None and read else _read_lines(source)
+        if prepared is not None and read:
+            self._source_lines = prepared[1]
+        elif self._source_lines_of[1] is not program or self._source_lines_of[0] != source:
+            # Not again for the program they were read for (a 2-million-line file takes long).
+            self._source_lines = _read_lines(source)
+        self._source_lines_of = (source, program)
         self._state_changed()
 
     def _show_file(self, program: Program | None) -> None:
@@ -929,8 +941,8 @@ def _size(path: Path) -> int:
 class _Loading(QObject):
     """One job file read on a worker thread; ``done`` arrives on the GUI thread."""
 
-    #: path, then (Program, its preview geometry, its source lines), a JobFileError, or another
-    #: exception's text.
+    #: path, then (Program, its preview geometry, its source lines, the runner's checks), a
+    #: JobFileError, or another exception's text.
     done = Signal(object, object)
 
     def __init__(
@@ -939,6 +951,7 @@ class _Loading(QObject):
         axis_names: list[str],
         options: JobOptions,
         geometry: Callable[[Program], ProgramGeometry | None],
+        check: Callable[[Program], LoadCheck],
         parent: QObject,
     ) -> None:
         super().__init__(parent)
@@ -946,6 +959,7 @@ class _Loading(QObject):
         self._axis_names = axis_names
         self._options = options
         self._geometry = geometry
+        self._check = check
         self._thread = threading.Thread(target=self._run, name="job-loader", daemon=True)
 
     def start(self) -> None:
@@ -958,7 +972,14 @@ class _Loading(QObject):
         result: object
         try:
             program = load_job(self.path, self._axis_names, self._options)
-            result = (program, self._geometry(program), _read_lines(program.source))
+            # The runner's checks and estimate too: for millions of operations they take
+            # seconds, which the GUI thread must not.
+            result = (
+                program,
+                self._geometry(program),
+                _read_lines(program.source),
+                self._check(program),
+            )
         except JobFileError as exc:
             result = exc
         except Exception as exc:  # a loader bug must not take the window down

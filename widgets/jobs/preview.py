@@ -50,7 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 import pyqtgraph as pg
 from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
-from PySide6.QtCore import QPointF, Qt, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QPointF, Qt, QTimer, Signal
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from app.jobs.formats.string_art.geometry import shortest_turn
@@ -60,6 +60,12 @@ from app.jobs.registration import hole_positions
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile
 from app.station import Station
+from widgets.jobs.string_art_thread import (
+    BAND_EDGES,
+    ThreadGeometry,
+    WoundCounter,
+    band_alpha,
+)
 from widgets.theme import LIGHT, PlotColours
 
 TRAVEL_COLOUR = "#9a9a9a"
@@ -203,6 +209,26 @@ def _runs(
     return PathArrays(out_x, out_y, out_ops)
 
 
+def _bounds(
+    xs: Sequence[np.ndarray], ys: Sequence[np.ndarray]
+) -> tuple[float, float, float, float] | None:
+    """The extent (x0, x1, y0, y1) of the finite values given in parts, None when none is.
+
+    Each axis on its own (NaN for an axis with no finite value), as the view is fitted.
+    """
+
+    def extent(parts: Sequence[np.ndarray]) -> tuple[float, float]:
+        finite = [part[np.isfinite(part)] for part in parts]
+        values = np.concatenate(finite) if finite else _EMPTY
+        return (float(values.min()), float(values.max())) if len(values) else (math.nan, math.nan)
+
+    x0, x1 = extent(xs)
+    y0, y1 = extent(ys)
+    if math.isnan(x0) and math.isnan(y0):
+        return None
+    return x0, x1, y0, y1
+
+
 class ProgramGeometry:
     """The plottable shape of a program on two axes, computed once per program."""
 
@@ -218,6 +244,18 @@ class ProgramGeometry:
         self.travel = _runs(xs, ys, path.ops, path.pen, wanted=False)
         self.work = _runs(xs, ys, path.ops, path.pen, wanted=True)
         self.markers = self._markers(program, xs, ys, path.ops)
+        #: A string-art job's nails and thread (merged when huge), laid out here too.
+        self.thread = ThreadGeometry.of(program) if isinstance(program, StringArtProgram) else None
+        #: (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view
+        #: must not scan millions of points on the GUI thread.
+        self.bounds = _bounds(
+            (self.travel.x, self.work.x, self.markers.x),
+            (self.travel.y, self.work.y, self.markers.y),
+        )
+        if self.thread is not None:
+            # The needle's winding path is hidden under the thread: millions of points that
+            # would only be handed to a hidden curve.
+            self.work = PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
 
     @staticmethod
     def _markers(program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray) -> PathArrays:
@@ -237,6 +275,65 @@ class ProgramGeometry:
         if uses_pen or own_plane or not len(xs) or len(xs) > MAX_MARKERS:
             return PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
         return PathArrays(xs, ys, ops)
+
+
+#: Points in the done trail's growing piece; past this it is frozen and a new piece starts.
+TRAIL_PIECE_POINTS = 4096
+
+
+class DoneTrail:
+    """The done part of one path kind, drawn append-only as the job advances.
+
+    Redrawing the whole done prefix on every progress step costs in proportion
+    to what is done (a long job slows as it goes).  Here only the last piece,
+    at most :data:`TRAIL_PIECE_POINTS` points, is given new data; full pieces
+    are frozen into items of their own that are never touched again.  Going
+    back (a new run, another program) starts over.
+    """
+
+    def __init__(self, plot: pg.PlotItem, tail: pg.PlotDataItem) -> None:
+        self.plot = plot
+        self.tail = tail  # the growing piece (the preview's done curve, as before)
+        self.frozen: list[pg.PlotCurveItem] = []
+        self._path: PathArrays | None = None
+        self._start = 0  # the first point of the growing piece
+        self._shown = 0  # points drawn in all
+
+    def reset(self) -> None:
+        for item in self.frozen:
+            self.plot.removeItem(item)
+        self.frozen = []
+        self._path = None
+        self._start = self._shown = 0
+        self.tail.setData(_EMPTY, _EMPTY)
+
+    def show(self, path: PathArrays, count: int) -> None:
+        """Draw the first ``count`` points of ``path`` as done."""
+        if path is not self._path or count < self._shown:
+            self.reset()
+            self._path = path
+        if count == self._shown:
+            return
+        while count - self._start > TRAIL_PIECE_POINTS:
+            end = self._start + TRAIL_PIECE_POINTS
+            piece = pg.PlotCurveItem(
+                path.x[self._start : end],
+                path.y[self._start : end],
+                pen=self.tail.opts["pen"],
+                connect="finite",
+            )
+            piece.setVisible(self.tail.isVisible())
+            self.plot.addItem(piece)
+            self.frozen.append(piece)
+            self._start = end - 1  # the next piece starts where this one ends: no gap
+        self.tail.setData(
+            path.x[self._start : count], path.y[self._start : count], connect="finite"
+        )
+        self._shown = count
+
+    def set_visible(self, visible: bool) -> None:
+        for item in self.frozen:
+            item.setVisible(visible)
 
 
 class JobPreview(QWidget):
@@ -297,6 +394,10 @@ class JobPreview(QWidget):
         self._build(axes[self.axis_indices[0]].unit if axes else "mm")
         self.string_art = StringArtPreviewExtras(
             self.plot, (self.work_curve, self.done_work_curve, self.work_markers, self.done_markers)
+        )
+        self.done_trails = (
+            DoneTrail(self.plot, self.done_travel_curve),
+            DoneTrail(self.plot, self.done_work_curve),
         )
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
@@ -500,7 +601,10 @@ class JobPreview(QWidget):
             self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
             self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
             self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
-        self.string_art.set_program(program)
+        thread = self.path_geometry.thread if self.path_geometry is not None else None
+        self.string_art.set_program(program, thread)
+        if self.string_art.merged_note:
+            self._say(self.string_art.merged_note)
         self._draw_done()
         self.fit()
         self.build_seconds = time.perf_counter() - start
@@ -519,13 +623,12 @@ class JobPreview(QWidget):
             return
         (x0, x1), (y0, y1) = self._limits_2d()
         geometry = self.path_geometry
-        if geometry is not None:
-            xs = np.concatenate((geometry.travel.x, geometry.work.x, geometry.markers.x))
-            ys = np.concatenate((geometry.travel.y, geometry.work.y, geometry.markers.y))
-            if np.isfinite(xs).any():
-                x0, x1 = min(x0, float(np.nanmin(xs))), max(x1, float(np.nanmax(xs)))
-            if np.isfinite(ys).any():
-                y0, y1 = min(y0, float(np.nanmin(ys))), max(y1, float(np.nanmax(ys)))
+        if geometry is not None and geometry.bounds is not None:
+            gx0, gx1, gy0, gy1 = geometry.bounds
+            if not math.isnan(gx0):
+                x0, x1 = min(x0, gx0), max(x1, gx1)
+            if not math.isnan(gy0):
+                y0, y1 = min(y0, gy0), max(y1, gy1)
         self.plot.getViewBox().setRange(xRange=(x0, x1), yRange=(y0, y1), padding=0.05)
 
     def _fit_polar(self, polar: PolarAxes) -> None:
@@ -534,22 +637,16 @@ class JobPreview(QWidget):
         The reach (X's whole travel) is far larger than most boards: fitting it
         would leave the nails a small ring in the middle.
         """
-        xs: list[np.ndarray] = []
-        ys: list[np.ndarray] = []
         geometry = self.path_geometry
-        if geometry is not None:
-            xs += [geometry.travel.x, geometry.work.x, geometry.markers.x]
-            ys += [geometry.travel.y, geometry.work.y, geometry.markers.y]
+        bounds = geometry.bounds if geometry is not None else None
+        # Polar fitting needs both coordinates of a point: the projected plane always has them.
+        found = [bounds] if bounds is not None and not math.isnan(bounds[0] + bounds[2]) else []
         board = self.string_art.board_radius_mm
         if board > 0:
-            xs.append(np.array([-board, board]))
-            ys.append(np.array([-board, board]))
-        x = np.concatenate(xs) if xs else _EMPTY
-        y = np.concatenate(ys) if ys else _EMPTY
-        finite = np.isfinite(x) & np.isfinite(y)
-        if finite.any():
-            x0, x1 = float(x[finite].min()), float(x[finite].max())
-            y0, y1 = float(y[finite].min()), float(y[finite].max())
+            found.append((-board, board, -board, board))
+        if found:
+            x0, x1 = min(b[0] for b in found), max(b[1] for b in found)
+            y0, y1 = min(b[2] for b in found), max(b[3] for b in found)
         else:
             x0 = y0 = -polar.reach
             x1 = y1 = polar.reach
@@ -735,18 +832,16 @@ class JobPreview(QWidget):
         self.string_art.set_done(self.done)
         geometry = self.path_geometry
         if geometry is None:
-            for curve in (self.done_travel_curve, self.done_work_curve):
-                curve.setData(_EMPTY, _EMPTY)
+            for trail in self.done_trails:
+                trail.reset()
             self.done_markers.setData(x=_EMPTY, y=_EMPTY)
             return
-        for curve, path in (
-            (self.done_travel_curve, geometry.travel),
-            (self.done_work_curve, geometry.work),
-        ):
-            n = path.done_count(self.done)
-            curve.setData(path.x[:n], path.y[:n], connect="finite")
+        for trail, path in zip(self.done_trails, (geometry.travel, geometry.work), strict=True):
+            trail.show(path, path.done_count(self.done))  # append-only: no full rebuild
+        self.done_trails[1].set_visible(self.done_work_curve.isVisible())
         n = geometry.markers.done_count(self.done)
-        self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
+        if n != len(self.done_markers.data):
+            self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
 
     def _draw_position(self) -> None:
         axes = self.model.axes
@@ -773,7 +868,9 @@ class StringArtPreviewExtras:
     faint pen, each segment blended on its own (pyqtgraph's segmented line
     mode), so density shows as it will on the board; the wound
     part is drawn again in green, drilled nails turn green, and a ring marks
-    the nail the running operation serves.  While a string-art program is
+    the nail the running operation serves.  A huge job's thread is drawn
+    merged, each chord once in the opacity of its windings
+    (:mod:`widgets.jobs.string_art_thread`).  While a string-art program is
     shown, the generic work items (``replaced``: the needle's path, drawn
     in the board plane) are hidden; any other program shows them again.
     """
@@ -784,6 +881,14 @@ class StringArtPreviewExtras:
         self.program: StringArtProgram | None = None
         self.thread = self._segments(WORK_COLOUR, THREAD_ALPHA)
         self.done_thread = self._segments(DONE_COLOUR, DONE_THREAD_ALPHA)
+        #: A merged thread's bands (see the module of the thread geometry), all and wound.
+        self.thread_bands = [
+            self._segments(WORK_COLOUR, band_alpha(THREAD_ALPHA, k)) for k in range(len(BAND_EDGES))
+        ]
+        self.done_bands = [
+            self._segments(DONE_COLOUR, band_alpha(DONE_THREAD_ALPHA, k))
+            for k in range(len(BAND_EDGES))
+        ]
         self.nails = pg.ScatterPlotItem(
             size=4, symbol="o", pen=pg.mkPen(NAIL_COLOUR), brush=pg.mkBrush(NAIL_COLOUR)
         )
@@ -796,77 +901,101 @@ class StringArtPreviewExtras:
         for item in (self.nails, self.drilled, self.current):
             plot.addItem(item)
         self.current.setZValue(9)
-        self._nail_xy = np.empty((0, 2))
-        self._pairs = (_EMPTY, _EMPTY)
-        self._drill_ends = np.empty(0, dtype=np.int64)
+        self.geometry: ThreadGeometry | None = None
+        self._wound: WoundCounter | None = None
+        #: What the preview says when it draws the thread merged ("" when exact).
+        self.merged_note = ""
 
     def _segments(self, colour: str, alpha: int) -> pg.PlotCurveItem:
         pen = pg.mkPen(pg.mkColor(colour), width=1)
         color = pen.color()
         color.setAlpha(alpha)
         pen.setColor(color)
-        curve = pg.PlotCurveItem(pen=pen, connect="pairs")
+        curve = pg.PlotCurveItem(pen=pen, connect="pairs", skipFiniteCheck=True)
         curve.setSegmentedLineMode("on")
         self.plot.addItem(curve)
         return curve
 
     @property
     def thread_segments(self) -> int:
-        return len(self._pairs[0]) // 2
+        """Connections wound in the shown job (drawn one by one, or merged into chords)."""
+        return self.geometry.connections if self.geometry is not None else 0
 
     @property
     def board_radius_mm(self) -> float:
         """The shown job's board radius (its edge, 15 mm beyond the nails), 0 without one."""
         return self.program.job.params.radius_cm * 10.0 if self.program is not None else 0.0
 
-    def set_program(self, program: Program | None) -> None:
-        """Show ``program``'s nails and thread when it is a string-art one, else nothing."""
+    def set_program(self, program: Program | None, thread: ThreadGeometry | None = None) -> None:
+        """Show ``program``'s nails and thread when it is a string-art one, else nothing.
+
+        ``thread``: its layout, made on the loading thread (else it is made here).
+        """
         active = isinstance(program, StringArtProgram)
         for item in self.replaced:
             item.setVisible(not active)
+        self.merged_note = ""
+        for band in (*self.thread_bands, *self.done_bands):
+            band.setData(_EMPTY, _EMPTY)
         if not isinstance(program, StringArtProgram):
             self.program = None
-            self._nail_xy = np.empty((0, 2))
-            self._pairs = (_EMPTY, _EMPTY)
-            self._drill_ends = np.empty(0, dtype=np.int64)
+            self.geometry = None
+            self._wound = None
             self.nails.setData(x=_EMPTY, y=_EMPTY)
             self.thread.setData(_EMPTY, _EMPTY)
             return
         self.program = program
-        xy = program.job.nail_positions()
-        self._nail_xy = xy
-        visits = xy[np.asarray(program.job.sequence, dtype=np.int64)]
-        self._pairs = (
-            np.column_stack((visits[:-1, 0], visits[1:, 0])).ravel(),
-            np.column_stack((visits[:-1, 1], visits[1:, 1])).ravel(),
-        )
-        # The last operation of each nail's drill cycle, in drilling (index) order.
-        drilling = np.flatnonzero((program.entry_of_op == -1) & (program.nail_of_op >= 0))
-        nails = program.nail_of_op[drilling]
-        last = np.append(nails[1:] != nails[:-1], True) if len(nails) else np.empty(0, bool)
-        self._drill_ends = drilling[last]
+        geometry = thread if thread is not None else ThreadGeometry.of(program)
+        self.geometry = geometry
+        xy = geometry.nail_xy
         self.nails.setData(x=xy[:, 0], y=xy[:, 1])
-        self.thread.setData(*self._pairs)
+        if geometry.merged:
+            self.thread.setData(_EMPTY, _EMPTY)
+            self._wound = WoundCounter(geometry)
+            for band, (x, y) in zip(
+                self.thread_bands,
+                geometry.bands(geometry.counts(geometry.connections)),
+                strict=True,
+            ):
+                band.setData(x, y)
+            self.merged_note = QCoreApplication.translate(
+                "JobPreview",
+                "Preview: the {connections} connections are drawn merged, each of the {chords} "
+                "different chords once, as dark as its windings make it",
+            ).format(connections=f"{geometry.connections:,}", chords=f"{geometry.chords:,}")
+        else:
+            self._wound = None
+            self.thread.setData(*geometry.pairs)
 
     def set_done(self, done: int) -> None:
         """The first ``done`` operations are done: wound thread, drilled nails, current nail."""
         program = self.program
-        if program is None:
+        geometry = self.geometry
+        if program is None or geometry is None:
             for item in (self.drilled, self.current):
                 item.setData(x=_EMPTY, y=_EMPTY)
             self.done_thread.setData(_EMPTY, _EMPTY)
             return
         total = len(program.nail_of_op)
         if done >= total:
-            segments = self.thread_segments
+            segments = geometry.connections
         else:
             segments = max(int(program.entry_of_op[max(done, 0)]) - 1, 0)
-        x, y = self._pairs
-        self.done_thread.setData(x[: 2 * segments], y[: 2 * segments])
-        drilled = int(np.searchsorted(self._drill_ends, done, side="left"))
-        self.drilled.setData(x=self._nail_xy[:drilled, 0], y=self._nail_xy[:drilled, 1])
+        if self._wound is not None:
+            # Only the connections wound since the last call are counted (append-only).
+            if self._wound.advance(segments):
+                for band, (x, y) in zip(
+                    self.done_bands, geometry.bands(self._wound.counts), strict=True
+                ):
+                    band.setData(x, y)
+        else:
+            x, y = geometry.pairs
+            self.done_thread.setData(x[: 2 * segments], y[: 2 * segments])
+        nail_xy = geometry.nail_xy
+        drilled = int(np.searchsorted(geometry.drill_ends, done, side="left"))
+        self.drilled.setData(x=nail_xy[:drilled, 0], y=nail_xy[:drilled, 1])
         nail = program.current_nail(done) if done > 0 else -1
         if nail < 0:
             self.current.setData(x=_EMPTY, y=_EMPTY)
         else:
-            self.current.setData(x=[self._nail_xy[nail, 0]], y=[self._nail_xy[nail, 1]])
+            self.current.setData(x=[nail_xy[nail, 0]], y=[nail_xy[nail, 1]])

@@ -41,6 +41,10 @@ class CheckpointStore:
             cached = self._fingerprint_cache = (program, program.fingerprint())
         return cached[1]
 
+    def remember(self, program: Program, fingerprint: str) -> None:
+        """``program``'s fingerprint, hashed elsewhere (the dock's loading thread)."""
+        self._fingerprint_cache = (program, fingerprint)
+
     def write(
         self, program: Program, completed: int, placed: tuple[Program, Placement] | None = None
     ) -> None:

@@ -21,6 +21,8 @@ running itself to the dialect's :class:`~app.jobs.run.driver.JobDriver`
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from PySide6.QtCore import QObject, QTimer, Signal
@@ -37,10 +39,28 @@ from app.station import Station
 __all__ = ["JobRunner", "JobState", "UnsupportedOperation"]
 
 ETA_INTERVAL_MS = 1000
+#: A streaming job answers a line every millisecond or so: the views hear of progress at
+#: most this often (a real-time station), never once per line.
+PROGRESS_INTERVAL_MS = 33
 #: Refused operations listed in the message (the dock's list holds them all).
 REFUSALS_SHOWN = 20
 #: How far from 0 (mm or degrees) a job that counts from its start may start.
 START_TOLERANCE = 0.01
+
+
+@dataclass(frozen=True)
+class LoadCheck:
+    """What :meth:`JobRunner.load` works out for a program before accepting it.
+
+    Made by :meth:`JobRunner.checker`'s function, which any thread may run: a
+    2-million-entry string-art job takes seconds to check, estimate and hash,
+    and the dock's loading thread does it, so the GUI thread only takes the result.
+    """
+
+    program: Program
+    refused: list[LimitViolation]
+    estimate: Estimate | None
+    fingerprint: str
 
 
 class JobRunner(QObject):
@@ -82,6 +102,12 @@ class JobRunner(QObject):
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
+        #: Progress told to the views (done, executed), and the timer that coalesces it.
+        self._told: tuple[int, int] = (0, 0)
+        self._progress_timer = QTimer(self)
+        self._progress_timer.setSingleShot(True)
+        self._progress_timer.setInterval(PROGRESS_INTERVAL_MS)
+        self._progress_timer.timeout.connect(self._tell_progress)
         # A station keeps its profile, so its dialect and driver, for life.
         self._driver: JobDriver = driver_for(station.profile.dialect)(self)
         station.sessionChanged.connect(self._bind_session)
@@ -120,6 +146,7 @@ class JobRunner(QObject):
         executed = min(executed, self._done)
         if executed != self._executed:
             self._executed = executed
+            self._told = (self._told[0], executed)
             self.executedChanged.emit(executed, self._total())
 
     @property
@@ -167,8 +194,34 @@ class JobRunner(QObject):
 
     # --- loading -------------------------------------------------------------
 
+    def checker(self) -> Callable[[Program], LoadCheck]:
+        """The load's checks as a function of the program alone, for another thread.
+
+        What they need from the station (the profile, the machine's settings and
+        position for the estimate) is read now, on the GUI thread; the function
+        touches nothing of the runner or the station.
+        """
+        profile = self.station.profile
+        limits = profile.travel_limits()
+        refusals = self._driver.refusals
+        timing = self._estimate_inputs()
+
+        def check(program: Program) -> LoadCheck:
+            refused: list[LimitViolation] = check_limits(program, limits)
+            refused += refusals(program)
+            # In file order, as the operator reads the file.
+            refused.sort(key=lambda v: (v.operation.source.line, v.index))
+            if refused:  # neither timed nor hashed: it will not run
+                return LoadCheck(program, refused, None, "")
+            return LoadCheck(program, refused, timing(program), program.fingerprint())
+
+        return check
+
     def load(
-        self, program: Program, placed: tuple[Program, Placement] | None = None
+        self,
+        program: Program,
+        placed: tuple[Program, Placement] | None = None,
+        checked: LoadCheck | None = None,
     ) -> list[LimitViolation]:
         """Accept ``program`` unless some operation leaves the travel or the machine cannot do it.
 
@@ -176,15 +229,14 @@ class JobRunner(QObject):
         it is unloaded: the operator sees the list of offending lines.
         ``placed``: the job as its file says and how ``program`` was put on the
         board from it (mirrored, registered), kept with the checkpoint.
+        ``checked``: the checks already made for ``program`` (:meth:`checker`).
         """
         if self._state in ACTIVE:
             self.message.emit("Stop the running job before loading another")
             return []
-        profile = self.station.profile
-        refused: list[LimitViolation] = check_limits(program, profile.travel_limits())
-        refused += self._driver.refusals(program)
-        # In file order, as the operator reads the file.
-        refused.sort(key=lambda v: (v.operation.source.line, v.index))
+        if checked is None or checked.program is not program:
+            checked = self.checker()(program)
+        refused = checked.refused
         self._reset()
         if refused:
             self._program = None
@@ -201,11 +253,13 @@ class JobRunner(QObject):
             return refused
         self._program = program
         self._placed = placed if placed is not None and placed[1] else None
-        self._estimate = self._compute_estimate(program)
+        self._checkpoints.remember(program, checked.fingerprint)
+        self._estimate = checked.estimate
         self._resume_available = self._read_checkpoint(program)
         self.programChanged.emit()
         self._set_state(JobState.READY)
         self.progressChanged.emit(self._done, len(program))
+        self._told = (self._done, self._executed)
         self.executedChanged.emit(self._executed, len(program))
         self.emit_eta()
         if self._resume_available is not None:
@@ -349,6 +403,7 @@ class JobRunner(QObject):
             return False
         self.operationDone.emit(index)
         self.progressChanged.emit(self._done, len(self._program))
+        self._told = (self._done, self._executed)
         self.emit_eta()
         return self._carry_on()
 
@@ -357,14 +412,33 @@ class JobRunner(QObject):
             self._driver.proceed()
 
     def advance(self, done: int, executed: int | None = None) -> None:
+        """A streaming driver's progress, kept at once and told to the views coalesced.
+
+        On a real-time station the signals go at most every
+        :data:`PROGRESS_INTERVAL_MS` (and with every state change), so a thousand
+        answered lines a second cost the GUI thirty redraws, not a thousand.
+        """
         if self._program is None:
             return
-        if done != self._done:
-            self._done = done
-            if done:
-                self.operationDone.emit(done - 1)
-            self.progressChanged.emit(done, len(self._program))
-        self._set_executed(done if executed is None else executed)
+        self._done = done
+        self._executed = min(done if executed is None else executed, done)
+        if not self.station.realtime:
+            self._tell_progress()
+        elif not self._progress_timer.isActive():
+            self._progress_timer.start()
+
+    def _tell_progress(self) -> None:
+        """Emit what changed since the views were last told (see :meth:`advance`)."""
+        self._progress_timer.stop()
+        told_done, told_executed = self._told
+        self._told = (self._done, self._executed)
+        total = self._total()
+        if self._done != told_done:
+            if self._done:
+                self.operationDone.emit(self._done - 1)
+            self.progressChanged.emit(self._done, total)
+        if self._executed != told_executed:
+            self.executedChanged.emit(self._executed, total)
 
     def record(self, completed: int) -> None:
         if self._program is not None and self._state in ACTIVE:
@@ -442,6 +516,7 @@ class JobRunner(QObject):
         self._pause_requested = False
         driver.begin(index, verify=verify)
         self.progressChanged.emit(self._done, len(self._program))
+        self._told = (self._done, self._executed)
         self._set_state(JobState.RUNNING)
         driver.proceed()
 
@@ -523,6 +598,8 @@ class JobRunner(QObject):
     def _set_state(self, state: JobState) -> None:
         if state is self._state:
             return
+        if self._progress_timer.isActive():
+            self._tell_progress()  # the views see the progress the new state comes with
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
         now = self.station.clock.now()
@@ -556,20 +633,31 @@ class JobRunner(QObject):
         self._elapsed_before = 0.0
         self._running_since = None
 
-    def _compute_estimate(self, program: Program) -> Estimate:
+    def _estimate_inputs(self) -> Callable[[Program], Estimate]:
+        """The dry-run estimate with the machine's settings and position as they are now."""
         model = self.station.model
         session = self.station.session
+        profile = self.station.profile
         start = {axis.name: axis.position for axis in model.axes}
-        return estimate(
-            program,
-            self.station.profile,
-            parameters_from_model(model),
-            (session.period_ms if session is not None else self.station.period_ms) / 1000,
-            fast=session.fast_selected if session is not None else True,
-            start=start,
-            speeds_mm_s=session.top_speeds_mm_s() if session is not None else None,
-            home_first=session.homes_before_job if session is not None else False,
-        )
+        parameters = parameters_from_model(model)
+        period_s = (session.period_ms if session is not None else self.station.period_ms) / 1000
+        fast = session.fast_selected if session is not None else True
+        speeds = session.top_speeds_mm_s() if session is not None else None
+        home_first = session.homes_before_job if session is not None else False
+
+        def timed(program: Program) -> Estimate:
+            return estimate(
+                program,
+                profile,
+                parameters,
+                period_s,
+                fast=fast,
+                start=start,
+                speeds_mm_s=speeds,
+                home_first=home_first,
+            )
+
+        return timed
 
     # --- checkpoint ----------------------------------------------------------
 

@@ -197,8 +197,14 @@ class StringArtProgram(Program):
         pen = moves > self.wait_index
         return ProgramPath(coords, moves.astype(np.int64), pen)
 
+    @cached_property
+    def _kind_set(self) -> frozenset[OpKind]:
+        # A count per code, not a sort: millions of operations in a few milliseconds.
+        used = np.flatnonzero(np.bincount(self.kind_codes, minlength=len(_KINDS)))
+        return frozenset(_KINDS[int(code)] for code in used)
+
     def kinds(self) -> frozenset[OpKind]:
-        return frozenset(_KINDS[code] for code in np.unique(self.kind_codes))
+        return self._kind_set
 
     def indices_of(self, kind: OpKind) -> np.ndarray:
         return np.flatnonzero(self.kind_codes == _KIND_CODES[kind]).astype(np.int64)

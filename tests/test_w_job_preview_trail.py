@@ -1,0 +1,66 @@
+"""The done part of a long job is drawn append-only: what is drawn stays, only the tail grows."""
+
+from __future__ import annotations
+
+import numpy as np
+from pytestqt.qtbot import QtBot
+
+from app.jobs.program import Program, SourceRef, move
+from app.profiles import load_profile
+from tests.helpers.harness import StationHarness
+from widgets.jobs.preview import TRAIL_PIECE_POINTS, JobPreview
+
+
+def drawn(preview: JobPreview, kind: int) -> tuple[np.ndarray, np.ndarray]:
+    """Every point the done trail of ``kind`` (0 travel, 1 work) draws, pieces joined."""
+    trail = preview.done_trails[kind]
+    xs: list[np.ndarray] = []
+    ys: list[np.ndarray] = []
+    for item in [*trail.frozen, trail.tail]:
+        x, y = item.getData()
+        if x is None or not len(x):
+            continue
+        if xs:  # each piece starts where the last one ended
+            assert x[0] == xs[-1][-1] and y[0] == ys[-1][-1]
+            x, y = x[1:], y[1:]
+        xs.append(np.asarray(x))
+        ys.append(np.asarray(y))
+    return (np.concatenate(xs), np.concatenate(ys)) if xs else (np.empty(0), np.empty(0))
+
+
+def test_a_long_done_part_grows_in_frozen_pieces_and_starts_over_on_a_new_run(
+    qtbot: QtBot,
+) -> None:
+    harness = StationHarness(load_profile("xy-stage"))
+    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(preview)
+    count = 3 * TRAIL_PIECE_POINTS
+    ops = tuple(
+        move(SourceRef("long.csv", i + 1), X=float(i % 100), Y=float(i // 100))
+        for i in range(count)
+    )
+    try:
+        preview.set_program(Program("long", ops))
+        travel = preview.path_geometry.travel  # type: ignore[union-attr]
+        preview.set_done(TRAIL_PIECE_POINTS + 10)
+        trail = preview.done_trails[0]
+        first_pieces = list(trail.frozen)
+        assert len(first_pieces) == 1
+        frozen_data = [np.asarray(p.getData()[0]).copy() for p in first_pieces]
+        preview.set_done(count - 5)
+        assert trail.frozen[: len(first_pieces)] == first_pieces  # the same items, untouched
+        assert np.array_equal(np.asarray(first_pieces[0].getData()[0]), frozen_data[0])
+        assert len(trail.frozen) == 2
+        n = travel.done_count(count - 5)
+        x, y = drawn(preview, 0)
+        np.testing.assert_array_equal(x, travel.x[:n])
+        np.testing.assert_array_equal(y, travel.y[:n])
+        assert len(np.asarray(trail.tail.getData()[0])) <= TRAIL_PIECE_POINTS + 1
+
+        preview.set_done(3)  # a new run: drawn again from the start
+        assert trail.frozen == []
+        x, _ = drawn(preview, 0)
+        np.testing.assert_array_equal(x, travel.x[: travel.done_count(3)])
+    finally:
+        preview.close()
+        harness.close()

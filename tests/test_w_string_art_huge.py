@@ -1,0 +1,145 @@
+"""A generator's 2-million-entry poradi.txt through the real jobs dock: loaded right, drawn merged.
+
+The dock reads it on its loading thread (with the runner's checks and
+estimate), the runner takes it READY, and the preview draws the thread as
+each different chord once, as dark as its windings make it.  The figures
+are checked against the file itself, not against what the loader says.
+"""
+
+from __future__ import annotations
+
+import random
+from pathlib import Path
+
+import numpy as np
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.jobs.formats.string_art.program import StringArtProgram, build_program
+from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
+from app.jobs.run.runner import JobRunner, JobState
+from app.profiles import load_profile
+from tests.helpers.harness import StationHarness
+from widgets.jobs.dock import JobsDock
+from widgets.jobs.preview import THREAD_ALPHA
+from widgets.jobs.string_art_thread import (
+    BAND_EDGES,
+    EXACT_CONNECTIONS,
+    ThreadGeometry,
+    WoundCounter,
+    band_alpha,
+    band_of,
+)
+
+NAILS = 160
+
+
+def sequence(entries: int, nails: int = NAILS, seed: int = 1) -> list[int]:
+    """A random nail order, never the same nail twice in a row (as a generator writes it)."""
+    rng = random.Random(seed)
+    out = [0]
+    for _ in range(entries - 1):
+        out.append((out[-1] + rng.randrange(1, nails)) % nails)
+    return out
+
+
+def chord_counts(order: list[int], nails: int = NAILS) -> dict[tuple[int, int], int]:
+    """Windings per chord counted straight from the order (the test's own reckoning)."""
+    a = np.asarray(order[:-1])
+    b = np.asarray(order[1:])
+    keys = np.minimum(a, b) * nails + np.maximum(a, b)
+    unique, counts = np.unique(keys, return_counts=True)
+    return {(int(k // nails), int(k % nails)): int(c) for k, c in zip(unique, counts, strict=True)}
+
+
+def test_a_2m_entry_poradi_loads_through_the_dock_and_its_thread_is_drawn_merged(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    entries = 2_000_000
+    order = sequence(entries)
+    (tmp_path / "param.txt").write_text(
+        f"tvar = 0\npocet_hrebiku = {NAILS}\npolomer_matrice = 12\n"
+    )
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text(f"{entries}\n" + "\n".join(map(str, order)) + "\n")
+    harness = StationHarness(load_profile("string-art"))
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    dock = JobsDock(harness.station, runner, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(dock)
+    try:
+        assert dock.open_path(poradi, background=True)
+        qtbot.waitUntil(lambda: dock._loading is None, timeout=600_000)
+        program = runner.program
+        assert isinstance(program, StringArtProgram), dock.messages.toPlainText()
+        assert runner.state is JobState.READY
+        assert list(program.job.sequence) == order
+        assert program.job.params == StringArtParams(0, NAILS, 12.0)
+        # The checks and estimate made on the loading thread are the runner's own.
+        assert runner.estimate is not None and runner.estimate.total_s > 0
+        assert runner.estimate.total_s == pytest.approx(
+            runner.checker()(program).estimate.total_s  # type: ignore[union-attr]
+        )
+
+        extras = dock.preview.string_art
+        geometry = extras.geometry
+        assert geometry is not None and geometry.merged
+        assert extras.thread_segments == entries - 1
+        expected = chord_counts(order)
+        assert geometry.chords == len(expected)
+        drawn = {tuple(sorted(map(int, ends))) for ends in geometry.chord_ends}
+        assert drawn == set(expected)
+        # Each band holds exactly the chords wound that often, each chord once.
+        nails = geometry.nail_xy
+        total = 0
+        for k, band in enumerate(extras.thread_bands):
+            x, _y = band.getData()
+            count = 0 if x is None else len(x) // 2
+            assert count == sum(1 for c in expected.values() if band_of(np.array([c]))[0] == k)
+            assert band.opts["pen"].color().alpha() == band_alpha(THREAD_ALPHA, k)
+            total += count
+        assert total == len(expected)
+        exact_x, _ = extras.thread.getData()
+        assert exact_x is None or len(exact_x) == 0  # not drawn one by one
+        assert "drawn merged" in dock.messages.toPlainText()
+        assert len(nails) == NAILS
+
+        # Wound so far: the chords of the first connections, counted as the job goes.
+        first_entry = int(np.flatnonzero(program.entry_of_op == 1001)[0])
+        dock.preview.set_done(first_entry)
+        wound = chord_counts(order[:1001])
+        done_total = 0
+        for band in extras.done_bands:
+            x, _y = band.getData()
+            done_total += 0 if x is None else len(x) // 2
+        assert done_total == len(wound)
+    finally:
+        dock.close()
+        runner.deleteLater()
+        harness.close()
+
+
+def test_bands_blend_like_the_windings_they_stand_for() -> None:
+    assert band_of(np.array([1, 2, 3, 4, 5, 8, 9, 100])).tolist() == [0, 1, 2, 2, 3, 3, 4, 7]
+    assert band_alpha(40, 0) == 40  # one winding: the thread's own opacity
+    assert band_alpha(40, 1) > 40  # two windings blend darker
+    alphas = [band_alpha(40, k) for k in range(len(BAND_EDGES))]
+    assert alphas == sorted(alphas) and alphas[-1] <= 255
+
+
+def test_a_small_job_stays_exact_and_the_wound_counter_is_append_only() -> None:
+    small = build_program(StringArtJob(StringArtParams(0, 8, 10.0), (0, 4, 2, 6)))
+    assert isinstance(small, StringArtProgram)
+    assert not ThreadGeometry.of(small).merged
+    order = sequence(EXACT_CONNECTIONS + 2, nails=12, seed=3)
+    big = build_program(StringArtJob(StringArtParams(0, 12, 10.0), tuple(order)))
+    assert isinstance(big, StringArtProgram)
+    thread = ThreadGeometry.of(big)
+    assert thread.merged and thread.chords <= 12 * 11 // 2
+    counter = WoundCounter(thread)
+    assert counter.advance(500) and counter.advance(1500)
+    by_hand = chord_counts(order[:1501], nails=12)
+    ends = [tuple(sorted(map(int, e))) for e in thread.chord_ends]
+    assert {ends[i]: int(c) for i, c in enumerate(counter.counts) if c} == by_hand
+    assert not counter.advance(1500)  # nothing new: nothing redrawn
+    assert counter.advance(10)  # a new run: counted again from the start
+    assert int(counter.counts.sum()) == 10
