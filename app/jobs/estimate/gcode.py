@@ -10,11 +10,19 @@ in a fraction of a second:
   slowest of its axes allows (``max_speed`` in mm/s, scaled by how much of
   the move the axis does); G0 and homing run at that limit;
 * it accelerates and decelerates at the axes' ``max_acceleration`` (mm/s²,
-  likewise scaled), starting and ending at rest: a trapezoid, or a triangle
-  when the move is too short to reach its speed.  A board that blends
-  corners finishes dense polylines sooner, so the figure is an upper bound;
-* an arc is one move over the length of its flattened path, at the limit
-  of its most demanding segment;
+  likewise scaled);
+* on a machine whose profile gives a junction deviation (GRBL's ``$11``)
+  the moves join at speed as GRBL plans them
+  (:mod:`protocol.gcode.junctions`, the planner the emulated GRBL board
+  runs): every segment of the path, arcs flattened as GRBL flattens them,
+  is a planner block; consecutive blocks meet at their junction speed and
+  each is planned with the ``planner_blocks`` GRBL holds, the last of them
+  able to stop, as when the station keeps the board's planner full.  A pen
+  change or a dwell stops the motion first (GRBL empties its planner);
+* elsewhere every move starts and ends at rest: a trapezoid, or a triangle
+  when the move is too short to reach its speed, and an arc is one move
+  over the length of its flattened path, at the limit of its most
+  demanding segment;
 * ``G4`` dwells add their time; pen commands and other lines cost nothing
   here (the file's own dwells after pen moves are what the servo needs).
 
@@ -30,10 +38,12 @@ import numpy as np
 
 from app.jobs.estimate.model import Estimate
 from app.jobs.formats.gcode.loader import HOME, LINEAR, NO_MOTION, RAPID, GcodeProgram
+from app.jobs.formats.gcode.program import PEN_DOWN, PEN_UP, WAIT
 from app.jobs.formats.string_art.program import AXES as WINDER_AXES
 from app.jobs.formats.string_art.program import StringArtProgram
-from app.jobs.program import Program
+from app.jobs.program import Program, ProgramPath
 from app.profiles import MachineProfile
+from protocol.gcode.junctions import lookahead_entries, profile_seconds
 
 
 def estimate_gcode(
@@ -89,6 +99,19 @@ def estimate_gcode(
     fed = (motion != RAPID) & (motion != HOME) & (motion != NO_MOTION) & (feed > 0)
     speed = np.where(fed, np.minimum(feed / 60.0, op_speed), op_speed)
 
+    settings = profile.gcode
+    if settings is not None and settings.junction_deviation is not None:
+        stops = np.zeros(n, dtype=bool)
+        stops[dwell_ops] = True
+        if isinstance(program, GcodeProgram):
+            stops |= np.isin(program.data.kinds, (PEN_UP, PEN_DOWN, WAIT))
+        seconds = _planned(
+            path, coords - previous, np.where(fed, feed / 60.0, np.inf), stops, profile
+        )
+        np.add.at(seconds, dwell_ops, dwell_s)
+        cumulative = np.cumsum(seconds)
+        return Estimate(float(cumulative[-1]), cumulative)
+
     seconds = np.zeros(n)
     go = op_length > 0
     v, a, s = speed[go], op_accel[go], op_length[go]
@@ -97,6 +120,61 @@ def estimate_gcode(
     np.add.at(seconds, dwell_ops, dwell_s)
     cumulative = np.cumsum(seconds)
     return Estimate(float(cumulative[-1]), cumulative)
+
+
+def _planned(
+    path: ProgramPath,
+    delta: np.ndarray,
+    fed_speed: np.ndarray,
+    stops: np.ndarray,
+    profile: MachineProfile,
+) -> np.ndarray:
+    """Seconds per operation with GRBL's planner: each path segment one block.
+
+    ``delta`` is each segment's signed displacement, ``fed_speed`` each
+    operation's feed in mm/s (inf for rapids), ``stops`` the operations
+    before which the motion stops (pen changes, dwells, pauses).
+    """
+    settings = profile.gcode
+    assert settings is not None and settings.junction_deviation is not None
+    n = len(stops)
+    top_speed = np.array([axis.max_speed for axis in profile.axes], dtype=np.float64)
+    top_accel = np.array([axis.max_acceleration for axis in profile.axes], dtype=np.float64)
+    length = np.sqrt((delta * delta).sum(axis=1))
+    moving = np.flatnonzero(length > 0)
+    seconds = np.zeros(n)
+    if not len(moving):
+        return seconds
+    ops = path.ops[moving]
+    lengths = length[moving]
+    unit = delta[moving] / lengths[:, None]
+    with np.errstate(divide="ignore"):
+        share = np.abs(unit)
+        rapid = (top_speed / share).min(axis=1)
+        accel = (top_accel / share).min(axis=1)
+    nominal = np.minimum(fed_speed[ops], rapid)
+    # The corner before each block (the first has none: it starts from rest).
+    before = np.vstack([unit[:1], unit[:-1]])
+    cos_theta = -(before * unit).sum(axis=1)
+    change = unit - before
+    with np.errstate(divide="ignore", invalid="ignore"):
+        change /= np.sqrt((change * change).sum(axis=1))[:, None]
+        corner_accel = (top_accel / np.abs(change)).min(axis=1)
+        sin_half = np.sqrt(np.maximum(0.5 * (1.0 - cos_theta), 0.0))
+        junction = corner_accel * settings.junction_deviation * sin_half / (1.0 - sin_half)
+    junction = np.where(cos_theta < -0.999999, np.inf, junction)
+    junction = np.where(cos_theta > 0.999999, 0.0, junction)
+    slower = np.minimum(nominal, np.concatenate(([0.0], nominal[:-1])))
+    limit = np.minimum(slower * slower, junction)
+    # From rest at the first block and after anything GRBL waits for the motion to end.
+    waited = np.cumsum(stops)
+    after_stop = np.concatenate(([True], waited[ops[1:]] != waited[ops[:-1]]))
+    limit[after_stop] = 0.0
+    entries = lookahead_entries(lengths, accel, limit, settings.planner_blocks)
+    exits = np.concatenate((entries[1:], [0.0]))
+    block_s = profile_seconds(lengths, np.sqrt(entries), np.sqrt(exits), nominal, accel)
+    seconds += np.bincount(ops, weights=block_s, minlength=n)
+    return seconds
 
 
 def _one_axis_moves(
