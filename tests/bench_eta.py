@@ -85,11 +85,15 @@ def _emulated_seconds(texts: list[str]) -> float:
 
 def _grbl_sim_seconds(exe: Path, texts: list[str], directory: Path) -> float:
     """GRBL's own planner and stepper: first block to last step, from its 10 ms step log."""
+    from tests.helpers import grbl_sim
+
     feed = directory / "in.gcode"
     # Trailing comments keep its input open until the last moves are planned (it stops
     # reading at the end of the input once idle).
     feed.write_text("\n".join([*GRBL_SETTINGS, *texts, *["(end)"] * 300]) + "\n")
     steps = directory / "steps.out"
+    # From a written EEPROM (a first start without one plans moves it never runs).
+    shutil.copyfile(grbl_sim.cache_dir() / "EEPROM.DAT", directory / "EEPROM.DAT")
     # One core (BUILD.md: its two threads race on two); -t 2 so that its clock is never
     # held back by sleeping: it runs as fast as it can, about half of real time.
     pin = ["taskset", "-c", "0"] if shutil.which("taskset") else []
