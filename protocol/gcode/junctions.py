@@ -180,35 +180,25 @@ def lookahead_entries(
     stop such as a dwell or a pen change, where GRBL empties its planner),
     and nothing is planned across it.  The forward pass is the running
     minimum ``e[j] = min(r[j], e[j-1] + 2·a·L)``, solved in closed form over
-    prefix sums.
+    prefix sums.  A whole file of a million blocks takes a few numpy passes.
     """
     count = len(lengths)
     if count == 0:
         return np.zeros(0)
-    gain = 2.0 * accelerations * lengths
-    stops = max_entries_sqr <= 0.0
-    # The stretch of blocks each belongs to: a new one starts at each stop.
-    stretch = np.cumsum(stops)
     window = max(planner_blocks - 1, 1)
+    # Past the last block: blocks that stop at once and go nowhere (the planner's end).
+    gain = np.concatenate((2.0 * accelerations * lengths, np.zeros(window)))
+    limit = np.concatenate((max_entries_sqr, np.zeros(window)))
+    # Reverse pass over each block's window.  A stop inside the window needs no care of
+    # its own: its limit is 0, so the blocks before it brake to a standstill there.
     reverse = np.zeros(count)
-    index = np.arange(count)
     for k in range(window - 1, -1, -1):
-        j = index + k
-        inside = j < count
-        jj = np.where(inside, j, count - 1)
-        same = inside & (stretch[jj] == stretch)
-        if k == 0:
-            same = np.ones(count, dtype=bool)
-        candidate = np.minimum(max_entries_sqr[jj], reverse + gain[jj])
-        reverse = np.where(same, candidate, 0.0)
-    reverse[stops] = 0.0
-    # Forward: e[j] = min over i <= j in the same stretch of r[i] + sum(gain[i:j]).
-    before = np.concatenate(([0.0], np.cumsum(gain)[:-1]))
-    shifted = reverse - before
-    # A stretch starts at 0 (a stop), so its running minimum never looks past its start:
-    # r = 0 there and every later candidate of an earlier stretch is at least as large.
-    entries = np.minimum.accumulate(shifted) + before
-    return np.maximum(np.minimum(entries, reverse), 0.0)
+        reverse = np.minimum(limit[k : k + count], reverse + gain[k : k + count])
+    # Forward: e[j] = min over i <= j of r[i] + sum(gain[i:j]), a running minimum over
+    # prefix sums.  A stop has r = 0, so nothing before it can win after it.
+    before = np.concatenate(([0.0], np.cumsum(gain[: count - 1])))
+    entries = np.minimum.accumulate(reverse - before) + before
+    return np.maximum(entries, 0.0)
 
 
 def profile_seconds(
