@@ -197,7 +197,7 @@ def lookahead_entries(
     # Forward: e[j] = min over i <= j of r[i] + sum(gain[i:j]), a running minimum over
     # prefix sums.  A stop has r = 0, so nothing before it can win after it.
     before = np.concatenate(([0.0], np.cumsum(gain[: count - 1])))
-    entries = np.minimum.accumulate(reverse - before) + before
+    entries: FloatArray = np.minimum.accumulate(reverse - before) + before
     return np.maximum(entries, 0.0)
 
 
@@ -234,4 +234,5 @@ def profile_seconds(
                 np.where(braking < meet, trapezoid, triangle),
             ),
         )
-    return np.where(lengths > 0.0, seconds, 0.0)
+    timed: FloatArray = np.where(lengths > 0.0, seconds, 0.0)
+    return timed
