@@ -1,12 +1,13 @@
 """The emulated G-code boards against PROTOCOLS.md section 4, driven through encoded lines.
 
 Every duration is worked out by hand.  The GRBL plotter has 80 steps/mm,
-motors of at most 8000 steps/s and 80 000 steps/s²; a move starts and ends at
-rest, timed on the motor that makes the most steps: ``G1 X100 F3000`` is
-8000 steps at 4000 steps/s, 0.05 s (100 steps) up to speed, 1.95 s at speed,
-0.05 s down, 2.05 s in all.  Control cycles are 5 ms; a line sent between
-cycles is parsed, answered and started at the start of the next cycle, and
-its reply goes out at that cycle's end.
+motors of at most 8000 steps/s and 80 000 steps/s² (100 mm/s, 1000 mm/s²); a
+move alone starts and ends at rest: ``G1 X100 F3000`` is 0.05 s (1.25 mm) up
+to 50 mm/s, 1.95 s at speed, 0.05 s down, 2.05 s in all.  Moves that follow
+each other join at speed as GRBL plans them (G7-09, ``test_junction_planner.py``).
+Control cycles are 5 ms; a line sent between cycles is parsed, answered and
+started at the start of the next cycle, and its reply goes out at that
+cycle's end.
 """
 
 from __future__ import annotations
