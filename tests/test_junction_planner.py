@@ -220,6 +220,8 @@ G1 X42 Y35.6
 G1 X43 Y36.2
 M5
 G0 X100 Y20
+M5
+G0 X104 Y22
 M3 S1000
 G1 X60 Y60 F1200
 G1 X10 Y60
@@ -258,6 +260,7 @@ def test_g7_09_the_estimate_equals_the_emulators_time_on_a_small_program(tmp_pat
     began = host.events("reply")[0]["t"]
     emulated = host.events("move")[-1]["t"] - began
     assert host.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    # The pen already up, the second M5 changes nothing and stops nothing, on either side.
     assert estimated == pytest.approx(emulated, abs=1e-5)  # the log keeps whole µs
     # Planned at rest between every block the same program takes clearly longer.
     rest = load_profile("corexy-plotter")  # no junction deviation in that profile

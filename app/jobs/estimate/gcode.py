@@ -104,7 +104,10 @@ def estimate_gcode(
         stops = np.zeros(n, dtype=bool)
         stops[dwell_ops] = True
         if isinstance(program, GcodeProgram):
-            stops |= np.isin(program.data.kinds, (PEN_UP, PEN_DOWN, WAIT))
+            kinds, pen = program.data.kinds, program.data.pen
+            # A pen command that changes nothing moves nothing (the board skips it too).
+            changes = np.concatenate(([True], pen[1:] != pen[:-1]))
+            stops |= (kinds == WAIT) | (np.isin(kinds, (PEN_UP, PEN_DOWN)) & changes)
         seconds = _planned(
             path, coords - previous, np.where(fed, feed / 60.0, np.inf), stops, profile
         )
