@@ -71,22 +71,6 @@ def estimate_gcode(
     path = program.path(axes)
     coords = np.where(np.isnan(path.coords), origin, path.coords)
     previous = np.vstack([origin[None, :], coords[:-1]])
-    delta = np.abs(coords - previous)
-    length = np.sqrt((delta * delta).sum(axis=1))
-    moving = length > 0
-    # The time each segment needs at its axes' limits gives the speed and acceleration
-    # along the path that no axis exceeds.
-    with np.errstate(divide="ignore", invalid="ignore"):
-        speed_cap = np.where(moving, length / (delta / top_speed).max(axis=1, initial=0.0), np.inf)
-        accel_cap = np.where(moving, length / (delta / top_accel).max(axis=1, initial=0.0), np.inf)
-
-    op_length = np.bincount(path.ops, weights=length, minlength=n)
-    op_speed = np.full(n, np.inf)
-    op_accel = np.full(n, np.inf)
-    if len(path.ops):
-        first = np.flatnonzero(np.r_[True, path.ops[1:] != path.ops[:-1]])
-        op_speed[path.ops[first]] = np.minimum.reduceat(speed_cap, first)
-        op_accel[path.ops[first]] = np.minimum.reduceat(accel_cap, first)
 
     if isinstance(program, GcodeProgram):
         data = program.data
@@ -97,7 +81,6 @@ def estimate_gcode(
         feed = np.full(n, np.nan)
         dwell_ops, dwell_s = np.zeros(0, dtype=np.int64), np.zeros(0)
     fed = (motion != RAPID) & (motion != HOME) & (motion != NO_MOTION) & (feed > 0)
-    speed = np.where(fed, np.minimum(feed / 60.0, op_speed), op_speed)
 
     settings = profile.gcode
     if settings is not None and settings.junction_deviation is not None:
@@ -114,6 +97,24 @@ def estimate_gcode(
         np.add.at(seconds, dwell_ops, dwell_s)
         cumulative = np.cumsum(seconds)
         return Estimate(float(cumulative[-1]), cumulative)
+
+    delta = np.abs(coords - previous)
+    length = np.sqrt((delta * delta).sum(axis=1))
+    moving = length > 0
+    # The time each segment needs at its axes' limits gives the speed and acceleration
+    # along the path that no axis exceeds.
+    with np.errstate(divide="ignore", invalid="ignore"):
+        speed_cap = np.where(moving, length / (delta / top_speed).max(axis=1, initial=0.0), np.inf)
+        accel_cap = np.where(moving, length / (delta / top_accel).max(axis=1, initial=0.0), np.inf)
+
+    op_length = np.bincount(path.ops, weights=length, minlength=n)
+    op_speed = np.full(n, np.inf)
+    op_accel = np.full(n, np.inf)
+    if len(path.ops):
+        first = np.flatnonzero(np.r_[True, path.ops[1:] != path.ops[:-1]])
+        op_speed[path.ops[first]] = np.minimum.reduceat(speed_cap, first)
+        op_accel[path.ops[first]] = np.minimum.reduceat(accel_cap, first)
+    speed = np.where(fed, np.minimum(feed / 60.0, op_speed), op_speed)
 
     seconds = np.zeros(n)
     go = op_length > 0
@@ -141,9 +142,8 @@ def _planned(
     settings = profile.gcode
     assert settings is not None and settings.junction_deviation is not None
     n = len(stops)
-    top_speed = np.array([axis.max_speed for axis in profile.axes], dtype=np.float64)
-    top_accel = np.array([axis.max_acceleration for axis in profile.axes], dtype=np.float64)
-    length = np.sqrt((delta * delta).sum(axis=1))
+    columns = range(delta.shape[1])
+    length = np.sqrt(sum(delta[:, c] * delta[:, c] for c in columns))
     moving = np.flatnonzero(length > 0)
     seconds = np.zeros(n)
     if not len(moving):
@@ -151,18 +151,17 @@ def _planned(
     ops = path.ops[moving]
     lengths = length[moving]
     unit = delta[moving] / lengths[:, None]
-    with np.errstate(divide="ignore"):
-        share = np.abs(unit)
-        rapid = (top_speed / share).min(axis=1)
-        accel = (top_accel / share).min(axis=1)
+    # What the axes allow along each block and across each corner (GRBL: the least of
+    # each axis' limit over its share of the direction); columns, as there are two or three.
+    rapid, accel = _axis_limited(profile, unit)
     nominal = np.minimum(fed_speed[ops], rapid)
     # The corner before each block (the first has none: it starts from rest).
     before = np.vstack([unit[:1], unit[:-1]])
-    cos_theta = -(before * unit).sum(axis=1)
+    cos_theta = -sum(before[:, c] * unit[:, c] for c in columns)
     change = unit - before
     with np.errstate(divide="ignore", invalid="ignore"):
-        change /= np.sqrt((change * change).sum(axis=1))[:, None]
-        corner_accel = (top_accel / np.abs(change)).min(axis=1)
+        change /= np.sqrt(sum(change[:, c] * change[:, c] for c in columns))[:, None]
+        _, corner_accel = _axis_limited(profile, change)
         sin_half = np.sqrt(np.maximum(0.5 * (1.0 - cos_theta), 0.0))
         junction = corner_accel * settings.junction_deviation * sin_half / (1.0 - sin_half)
     junction = np.where(cos_theta < -0.999999, np.inf, junction)
@@ -178,6 +177,18 @@ def _planned(
     block_s = profile_seconds(lengths, np.sqrt(entries), np.sqrt(exits), nominal, accel)
     seconds += np.bincount(ops, weights=block_s, minlength=n)
     return seconds
+
+
+def _axis_limited(profile: MachineProfile, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Top speed and acceleration along each direction (unit rows) that no axis exceeds."""
+    speed = np.full(len(directions), np.inf)
+    accel = np.full(len(directions), np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for c, axis in enumerate(profile.axes):
+            share = np.abs(directions[:, c])
+            speed = np.fmin(speed, axis.max_speed / share)
+            accel = np.fmin(accel, axis.max_acceleration / share)
+    return speed, accel
 
 
 def _one_axis_moves(
