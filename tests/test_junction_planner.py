@@ -20,7 +20,7 @@ import pytest
 from app.jobs.estimate.gcode import estimate_gcode
 from app.jobs.formats.gcode.program import GcodeProgram
 from app.jobs.loaders import JobOptions, load_job
-from app.profiles import load_profile
+from app.profiles import ProfileError, load_profile
 from protocol.clock import ManualClock
 from protocol.emulator.gcode_firmware import (
     GcodeEvent,
@@ -297,3 +297,17 @@ def test_g7_09_the_whole_file_plan_is_the_block_by_block_plan_with_a_full_planne
 
 def list_to_array(values: list[float]) -> npt.NDArray[np.float64]:
     return np.array(values, dtype=np.float64)
+
+
+@pytest.mark.parametrize("value", ["-0.01", '"fast"'])
+def test_g7_09_a_profile_junction_deviation_must_be_a_length(tmp_path: Path, value: str) -> None:
+    shipped = Path(__file__).parent.parent / "resources" / "machines" / "grbl-plotter.toml"
+    text = shipped.read_text(encoding="utf-8")
+    assert "junction_deviation = 0.010" in text
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace("junction_deviation = 0.010", f"junction_deviation = {value}"))
+    with pytest.raises(ProfileError, match="junction_deviation"):
+        load_profile(path)
+    path.write_text(text.replace("planner_blocks = 15", "planner_blocks = 1"))
+    with pytest.raises(ProfileError, match="planner_blocks"):
+        load_profile(path)
