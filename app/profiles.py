@@ -92,6 +92,11 @@ class GcodeSettings:
     #: The unit of ``G4 P``: "s" on GRBL (P150 is two and a half minutes), "ms" on firmwares
     #: that read it as Marlin does.  The loader, the estimate and the emulator follow it.
     dwell_p: str = "s"
+    #: GRBL's ``$11`` (mm): the board joins moves at their junction speed, planning
+    #: ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without
+    #: a look-ahead planner): every move starts and ends at rest.
+    junction_deviation: float | None = None
+    planner_blocks: int = 15
 
     @property
     def dwell_p_seconds(self) -> float:
@@ -189,6 +194,11 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         gcode = _build(GcodeSettings, values, path, "[gcode]")
         if gcode.dwell_p not in ("s", "ms"):
             raise ProfileError(f"{path}: [gcode] dwell_p must be 's' or 'ms'")
+        deviation = gcode.junction_deviation
+        if deviation is not None and not (isinstance(deviation, int | float) and deviation >= 0):
+            raise ProfileError(f"{path}: [gcode] junction_deviation must be a length >= 0 (mm)")
+        if not (isinstance(gcode.planner_blocks, int) and gcode.planner_blocks >= 2):
+            raise ProfileError(f"{path}: [gcode] planner_blocks must be a whole number >= 2")
         if gcode.streaming not in ("counting", "ping-pong"):
             raise ProfileError(f"{path}: [gcode] streaming must be 'counting' or 'ping-pong'")
         if gcode.kinematics not in ("cartesian", "corexy", "cylindrical"):

@@ -23,6 +23,7 @@ if str(ROOT) not in sys.path:
 
 from protocol.clock import ManualClock  # noqa: E402
 from tests.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
+from tests.bench_eta import bench_gcode_eta  # noqa: E402
 from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
 from tests.bench_string_art_generator import bench_string_art_generator  # noqa: E402
 
@@ -1049,6 +1050,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_huge_arcs,
     bench_gcode_streaming,
     bench_string_art_generator,
+    bench_gcode_eta,
 ]
 
 

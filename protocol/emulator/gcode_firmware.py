@@ -52,11 +52,13 @@ Decisions the contract leaves open, made here:
   answered when queued; like ``$I`` and ``$$`` it needs the machine idle
   (``error:8``).  Unknown ``$`` commands are ``error:3``.  A GRBL board
   takes ``$N=value`` for its settings, idle: ``$10`` (status mask), ``$12``
-  (arc tolerance), ``$20`` (soft limits, off by default as in GRBL), ``$22``
-  (homing: off, ``$H`` is ``error:5``), ``$110…`` (rates, mm/min),
-  ``$120…`` (accelerations, mm/s²) and ``$130…`` (travel, mm) act; the
-  rest are kept and listed.  Every motor still shares one rate and one
-  acceleration: the least the settings allow.  ``$C`` toggles check mode
+  (arc tolerance), ``$11`` (junction deviation), ``$20`` (soft limits, off
+  by default as in GRBL), ``$22`` (homing: off, ``$H`` is ``error:5``),
+  ``$110…`` (rates, mm/min), ``$120…`` (accelerations, mm/s²) and
+  ``$130…`` (travel, mm) act; the rest are kept and listed.  The planner
+  uses each axis' rate and acceleration along a move's direction, as
+  GRBL's does (the step-rate figures kept for the other firmwares are the
+  least the settings allow).  ``$C`` toggles check mode
   (lines parsed and answered, nothing moves); leaving it resets the board.
 - Status reports carry ``MPos`` (``WPos`` with ``$10`` bit 0 clear; the same
   here, as there are no work offsets), ``FS`` and, with ``$10`` bit 1,
@@ -87,6 +89,7 @@ from protocol.emulator.gcode_planner import (
     DriversOff,
     Dwell,
     HoldState,
+    Junctions,
     Move,
     Pause,
     PenChange,
@@ -186,7 +189,7 @@ class GcodeFirmware(ControlCycles):
         super().__init__(clock, self.config.control_cycle)
         origin = (0.0,) * len(self.config.axes)
         # GRBL's planner keeps one block of its ring free, as its receive buffer does a byte.
-        self._planner = Planner(origin, self.config.planner_blocks - 1)
+        self._planner = Planner(origin, self.config.planner_blocks - 1, self._junctions())
         self._interpreter = Interpreter(self.config, origin)
         self._rx = bytearray()
         self._rx_capacity = self.config.rx_buffer - 1
@@ -606,12 +609,14 @@ class GcodeFirmware(ControlCycles):
         cfg = self.config
         table = dict(_GRBL_DEFAULTS)
         table.update({10: cfg.status_mask, 12: cfg.arc_tolerance})
+        if cfg.junction_deviation is not None:
+            table[11] = cfg.junction_deviation
         table.update({20: float(cfg.soft_limits), 22: float(cfg.homing)})
         for i, steps in enumerate(cfg.steps_per_unit):
             limits = cfg.travel[i]
             table[100 + i] = steps
-            table[110 + i] = cfg.max_rate / steps * 60.0
-            table[120 + i] = cfg.acceleration / steps
+            table[110 + i] = cfg.rates()[i] * 60.0
+            table[120 + i] = cfg.accelerations()[i]
             table[130 + i] = 0.0 if limits is None else limits[1] - limits[0]
         return table
 
@@ -639,9 +644,26 @@ class GcodeFirmware(ControlCycles):
             arc_tolerance=table[12] or cfg.arc_tolerance,
             soft_limits=bool(table[20]),
             homing=bool(table[22]),
+            junction_deviation=None if cfg.junction_deviation is None else table[11],
+            axis_rates=tuple(
+                table[110 + i] / 60.0 if table[110 + i] > 0 else cfg.rates()[i]
+                for i in range(count)
+            ),
+            axis_accelerations=tuple(
+                table[120 + i] if table[120 + i] > 0 else cfg.accelerations()[i]
+                for i in range(count)
+            ),
         )
+        self._planner.junctions = self._junctions()
         self._interpreter.config = self.config
         self._interpreter.step_rate = self.config.max_rate
+
+    def _junctions(self) -> Junctions | None:
+        """GRBL's planning settings, or None on a firmware whose moves start and end at rest."""
+        cfg = self.config
+        if cfg.junction_deviation is None:
+            return None
+        return Junctions(cfg.junction_deviation, cfg.accelerations())
 
     def _jog(self, body: str) -> list[Block] | int:
         """``$J=``: a move run as a jog, which leaves the parser's modal state as it was.

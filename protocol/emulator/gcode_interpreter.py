@@ -43,6 +43,7 @@ from protocol.emulator.gcode_planner import (
     PenChange,
     SetPosition,
 )
+from protocol.gcode.junctions import axis_limited, unit_vector
 from protocol.gcode.words import EXPECTED_COMMAND_LETTER, Word
 
 # GRBL's error codes the parser gives.
@@ -413,7 +414,14 @@ class Interpreter:
         rate = self.step_rate
         if feed is not None and steps > 0 and length > 0:
             rate = min(rate, feed / 60.0 * steps / length)
-        return Move(start, end, steps, rate, cfg.acceleration, length, kind)
+        if cfg.junction_deviation is None or length <= 0:
+            return Move(start, end, steps, rate, cfg.acceleration, length, kind)
+        # GRBL: along the path, as fast as the feed and every axis' own limits allow.
+        _, unit = unit_vector([b - a for a, b in zip(start, end, strict=True)])
+        rapid = axis_limited(cfg.rates(), unit)
+        speed = rapid if feed is None else min(feed / 60.0, rapid)
+        accel = axis_limited(cfg.accelerations(), unit)
+        return Move(start, end, steps, rate, cfg.acceleration, length, kind, speed, accel, unit)
 
     def _arc(
         self,

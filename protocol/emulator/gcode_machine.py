@@ -15,8 +15,10 @@ Decisions the contract leaves open, made here:
 - Every motor shares one top step rate and one acceleration (infinite on
   the CoreXY plotter, which has no ramps); a move is
   timed on the motor that makes the most steps, so the others never exceed
-  either.  The CoreXY plotter's power-on step interval is 25 µs (40 000
-  steps/s, about 98 mm/s per motor); ``M98`` changes it.
+  either.  A GRBL plotter plans as GRBL does instead (``junction_deviation``,
+  its ``$11``): along the path, with each axis' own rate and acceleration.
+  The CoreXY plotter's power-on step interval is 25 µs (40 000 steps/s,
+  about 98 mm/s per motor); ``M98`` changes it.
 - The CoreXY plotter and the winder move at their top rate when a job never
   set ``F``; a GRBL plotter refuses ``G1`` without a feed rate (``error:22``)
   as GRBL does.
@@ -107,6 +109,13 @@ class GcodeConfig:
     status_mask: int = 3
     #: GRBL's ``$22``: with homing off ``$H`` is ``error:5``.
     homing: bool = True
+    #: GRBL's ``$11`` (mm): moves join at their junction speed and are planned along the
+    #: path with per-axis limits (GRBL's planner).  None: every move starts and ends at rest.
+    junction_deviation: float | None = None
+    #: Per-axis top speeds (units/s) and accelerations (units/s²), GRBL's ``$110…`` and
+    #: ``$120…``; None: the shared step rate and acceleration over each axis' steps/unit.
+    axis_rates: tuple[float, ...] | None = None
+    axis_accelerations: tuple[float, ...] | None = None
 
     def __post_init__(self) -> None:
         count = len(self.axes)
@@ -133,6 +142,18 @@ class GcodeConfig:
             raise ValueError("the planner and the buffers need room for something")
         if self.pen_time < 0 or not self.control_cycle > 0 or not self.arc_tolerance > 0:
             raise ValueError("times and the arc tolerance must be positive")
+
+    def rates(self) -> tuple[float, ...]:
+        """Each axis' top speed in units/s."""
+        if self.axis_rates is not None:
+            return self.axis_rates
+        return tuple(self.max_rate / s for s in self.steps_per_unit)
+
+    def accelerations(self) -> tuple[float, ...]:
+        """Each axis' acceleration in units/s²."""
+        if self.axis_accelerations is not None:
+            return self.axis_accelerations
+        return tuple(self.acceleration / s for s in self.steps_per_unit)
 
     def index(self, axis: str) -> int:
         return self.axes.index(axis)
@@ -211,6 +232,7 @@ def grbl_plotter_config() -> GcodeConfig:
         dwell_p_seconds=1.0,
         soft_limits=False,
         grbl=True,
+        junction_deviation=0.010,
     )
 
 

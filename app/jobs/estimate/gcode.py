@@ -10,11 +10,19 @@ in a fraction of a second:
   slowest of its axes allows (``max_speed`` in mm/s, scaled by how much of
   the move the axis does); G0 and homing run at that limit;
 * it accelerates and decelerates at the axes' ``max_acceleration`` (mm/s²,
-  likewise scaled), starting and ending at rest: a trapezoid, or a triangle
-  when the move is too short to reach its speed.  A board that blends
-  corners finishes dense polylines sooner, so the figure is an upper bound;
-* an arc is one move over the length of its flattened path, at the limit
-  of its most demanding segment;
+  likewise scaled);
+* on a machine whose profile gives a junction deviation (GRBL's ``$11``)
+  the moves join at speed as GRBL plans them
+  (:mod:`protocol.gcode.junctions`, the planner the emulated GRBL board
+  runs): every segment of the path, arcs flattened as GRBL flattens them,
+  is a planner block; consecutive blocks meet at their junction speed and
+  each is planned with the ``planner_blocks`` GRBL holds, the last of them
+  able to stop, as when the station keeps the board's planner full.  A pen
+  change or a dwell stops the motion first (GRBL empties its planner);
+* elsewhere every move starts and ends at rest: a trapezoid, or a triangle
+  when the move is too short to reach its speed, and an arc is one move
+  over the length of its flattened path, at the limit of its most
+  demanding segment;
 * ``G4`` dwells add their time; pen commands and other lines cost nothing
   here (the file's own dwells after pen moves are what the servo needs).
 
@@ -30,10 +38,12 @@ import numpy as np
 
 from app.jobs.estimate.model import Estimate
 from app.jobs.formats.gcode.loader import HOME, LINEAR, NO_MOTION, RAPID, GcodeProgram
+from app.jobs.formats.gcode.program import PEN_DOWN, PEN_UP, WAIT
 from app.jobs.formats.string_art.program import AXES as WINDER_AXES
 from app.jobs.formats.string_art.program import StringArtProgram
-from app.jobs.program import Program
+from app.jobs.program import Program, ProgramPath
 from app.profiles import MachineProfile
+from protocol.gcode.junctions import lookahead_entries, profile_seconds
 
 
 def estimate_gcode(
@@ -61,6 +71,33 @@ def estimate_gcode(
     path = program.path(axes)
     coords = np.where(np.isnan(path.coords), origin, path.coords)
     previous = np.vstack([origin[None, :], coords[:-1]])
+
+    if isinstance(program, GcodeProgram):
+        data = program.data
+        motion, feed = data.motion, data.feed
+        dwell_ops, dwell_s = data.dwell_ops, data.dwell_s
+    else:
+        motion = np.full(n, LINEAR, dtype=np.uint8)
+        feed = np.full(n, np.nan)
+        dwell_ops, dwell_s = np.zeros(0, dtype=np.int64), np.zeros(0)
+    fed = (motion != RAPID) & (motion != HOME) & (motion != NO_MOTION) & (feed > 0)
+
+    settings = profile.gcode
+    if settings is not None and settings.junction_deviation is not None:
+        stops = np.zeros(n, dtype=bool)
+        stops[dwell_ops] = True
+        if isinstance(program, GcodeProgram):
+            kinds, pen = program.data.kinds, program.data.pen
+            # A pen command that changes nothing moves nothing (the board skips it too).
+            changes = np.concatenate(([True], pen[1:] != pen[:-1]))
+            stops |= (kinds == WAIT) | (np.isin(kinds, (PEN_UP, PEN_DOWN)) & changes)
+        seconds = _planned(
+            path, coords - previous, np.where(fed, feed / 60.0, np.inf), stops, profile
+        )
+        np.add.at(seconds, dwell_ops, dwell_s)
+        cumulative = np.cumsum(seconds)
+        return Estimate(float(cumulative[-1]), cumulative)
+
     delta = np.abs(coords - previous)
     length = np.sqrt((delta * delta).sum(axis=1))
     moving = length > 0
@@ -77,16 +114,6 @@ def estimate_gcode(
         first = np.flatnonzero(np.r_[True, path.ops[1:] != path.ops[:-1]])
         op_speed[path.ops[first]] = np.minimum.reduceat(speed_cap, first)
         op_accel[path.ops[first]] = np.minimum.reduceat(accel_cap, first)
-
-    if isinstance(program, GcodeProgram):
-        data = program.data
-        motion, feed = data.motion, data.feed
-        dwell_ops, dwell_s = data.dwell_ops, data.dwell_s
-    else:
-        motion = np.full(n, LINEAR, dtype=np.uint8)
-        feed = np.full(n, np.nan)
-        dwell_ops, dwell_s = np.zeros(0, dtype=np.int64), np.zeros(0)
-    fed = (motion != RAPID) & (motion != HOME) & (motion != NO_MOTION) & (feed > 0)
     speed = np.where(fed, np.minimum(feed / 60.0, op_speed), op_speed)
 
     seconds = np.zeros(n)
@@ -97,6 +124,71 @@ def estimate_gcode(
     np.add.at(seconds, dwell_ops, dwell_s)
     cumulative = np.cumsum(seconds)
     return Estimate(float(cumulative[-1]), cumulative)
+
+
+def _planned(
+    path: ProgramPath,
+    delta: np.ndarray,
+    fed_speed: np.ndarray,
+    stops: np.ndarray,
+    profile: MachineProfile,
+) -> np.ndarray:
+    """Seconds per operation with GRBL's planner: each path segment one block.
+
+    ``delta`` is each segment's signed displacement, ``fed_speed`` each
+    operation's feed in mm/s (inf for rapids), ``stops`` the operations
+    before which the motion stops (pen changes, dwells, pauses).
+    """
+    settings = profile.gcode
+    assert settings is not None and settings.junction_deviation is not None
+    n = len(stops)
+    columns = range(delta.shape[1])
+    length = np.sqrt(sum(delta[:, c] * delta[:, c] for c in columns))
+    moving = np.flatnonzero(length > 0)
+    seconds = np.zeros(n)
+    if not len(moving):
+        return seconds
+    ops = path.ops[moving]
+    lengths = length[moving]
+    unit = delta[moving] / lengths[:, None]
+    # What the axes allow along each block and across each corner (GRBL: the least of
+    # each axis' limit over its share of the direction); columns, as there are two or three.
+    rapid, accel = _axis_limited(profile, unit)
+    nominal = np.minimum(fed_speed[ops], rapid)
+    # The corner before each block (the first has none: it starts from rest).
+    before = np.vstack([unit[:1], unit[:-1]])
+    cos_theta = -sum(before[:, c] * unit[:, c] for c in columns)
+    change = unit - before
+    with np.errstate(divide="ignore", invalid="ignore"):
+        change /= np.sqrt(sum(change[:, c] * change[:, c] for c in columns))[:, None]
+        _, corner_accel = _axis_limited(profile, change)
+        sin_half = np.sqrt(np.maximum(0.5 * (1.0 - cos_theta), 0.0))
+        junction = corner_accel * settings.junction_deviation * sin_half / (1.0 - sin_half)
+    junction = np.where(cos_theta < -0.999999, np.inf, junction)
+    junction = np.where(cos_theta > 0.999999, 0.0, junction)
+    slower = np.minimum(nominal, np.concatenate(([0.0], nominal[:-1])))
+    limit = np.minimum(slower * slower, junction)
+    # From rest at the first block and after anything GRBL waits for the motion to end.
+    waited = np.cumsum(stops)
+    after_stop = np.concatenate(([True], waited[ops[1:]] != waited[ops[:-1]]))
+    limit[after_stop] = 0.0
+    entries = lookahead_entries(lengths, accel, limit, settings.planner_blocks)
+    exits = np.concatenate((entries[1:], [0.0]))
+    block_s = profile_seconds(lengths, np.sqrt(entries), np.sqrt(exits), nominal, accel)
+    seconds += np.bincount(ops, weights=block_s, minlength=n)
+    return seconds
+
+
+def _axis_limited(profile: MachineProfile, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Top speed and acceleration along each direction (unit rows) that no axis exceeds."""
+    speed = np.full(len(directions), np.inf)
+    accel = np.full(len(directions), np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for c, axis in enumerate(profile.axes):
+            share = np.abs(directions[:, c])
+            speed = np.fmin(speed, axis.max_speed / share)
+            accel = np.fmin(accel, axis.max_acceleration / share)
+    return speed, accel
 
 
 def _one_axis_moves(
