@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from PySide6.QtCore import QEvent, QObject
-from PySide6.QtWidgets import QGroupBox, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import QComboBox, QGroupBox, QLabel, QPushButton, QWidget
 
 #: Makes a text in the current language (a lambda around ``self.tr(...)``).
 Maker = Callable[[], str]
@@ -63,6 +63,10 @@ class Texts(QObject):
         box = QGroupBox()
         self.set(box.setTitle, make)
         return box
+
+    def item(self, combo: QComboBox, index: int, make: Maker) -> None:
+        """Item ``index`` of ``combo`` follows the language (its data stays the key)."""
+        self.set(lambda text: combo.setItemText(index, text), make)
 
     def retranslate(self) -> None:
         """Make every bound text again, then run the hooks; a deleted widget is dropped."""

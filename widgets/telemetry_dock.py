@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QPointF, QRectF, QSize, Qt
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen, QPolygonF, QShowEvent
 from PySide6.QtWidgets import (
     QComboBox,
@@ -41,6 +41,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.telemetry import ROTATION_KEY, VARIABLES, WINDOW_CHOICES_S, TelemetryRecorder
+from widgets.retranslate import Texts
 from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
 from widgets.theme import LIGHT, PlotColours
 
@@ -72,7 +73,9 @@ class RotationCross(QWidget):
         self.colours = LIGHT
         self.setMinimumSize(120, 120)
         self.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
-        self.setToolTip("Platform rotation relative to the last Zero (counter-clockwise positive)")
+        self.setToolTip(
+            self.tr("Platform rotation relative to the last Zero (counter-clockwise positive)")
+        )
 
     @property
     def angle(self) -> float | None:
@@ -110,7 +113,7 @@ class RotationCross(QWidget):
             painter.drawText(
                 QRectF(-radius, -radius, 2 * radius, 2 * radius),
                 Qt.AlignmentFlag.AlignCenter,
-                "rotation\nnot plotted",
+                self.tr("rotation\nnot plotted"),
             )
             painter.end()
             return
@@ -155,7 +158,9 @@ class TelemetryDock(QDockWidget):
     """Plots, variable selector, rotation cross with Zero, Pause, window, Autoscale, exports."""
 
     def __init__(self, recorder: TelemetryRecorder, parent: QWidget | None = None) -> None:
-        super().__init__("Telemetry", parent)
+        super().__init__(parent)
+        self.texts = Texts(self)
+        self.texts.set(self.setWindowTitle, lambda: self.tr("Telemetry"))
         self.setObjectName("telemetry_dock")
         self.recorder = recorder
         self._drawn: dict[str, tuple[tuple[int, int, int], int]] = {}
@@ -181,27 +186,45 @@ class TelemetryDock(QDockWidget):
         self._show_window()
         self.set_autoscale(True)
         self.redraw()
+        self.texts.also(self._retranslate)
+
+    def _retranslate(self) -> None:
+        """Texts made from state, and the plots' titles, in the new language."""
+        self.cross.setToolTip(
+            QCoreApplication.translate(
+                "RotationCross",
+                "Platform rotation relative to the last Zero (counter-clockwise positive)",
+            )
+        )
+        self.set_paused(self.pause_button.isChecked())
+        self._title_plots()
+        self._show_variable()
 
     # --- building ------------------------------------------------------------
 
     def _build_toolbar(self) -> QHBoxLayout:
         bar = QHBoxLayout()
         bar.setSpacing(6)
-        bar.addWidget(QLabel("Variable"))
+        t = self.texts
+        bar.addWidget(t.label(lambda: self.tr("Variable")))
         self.variable_combo = QComboBox()
         self.variable_combo.setObjectName("telemetry_variable")
-        self.variable_combo.setToolTip(
-            "Subscriber variable to plot; the station asks for it in every frame"
-            " the info panel does not need"
+        t.set(
+            self.variable_combo.setToolTip,
+            lambda: self.tr(
+                "Subscriber variable to plot; the station asks for it in every frame"
+                " the info panel does not need"
+            ),
         )
-        self.variable_combo.addItem("none", None)
+        self.variable_combo.addItem("", None)
+        t.item(self.variable_combo, 0, lambda: self.tr("none"))
         for variable in VARIABLES:
             self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
         self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
         bar.addWidget(self.variable_combo)
 
         bar.addSpacing(10)
-        bar.addWidget(QLabel("Window"))
+        bar.addWidget(t.label(lambda: self.tr("Window")))
         self.window_combo = QComboBox()
         self.window_combo.setObjectName("telemetry_window")
         for seconds in WINDOW_CHOICES_S:
@@ -209,27 +232,32 @@ class TelemetryDock(QDockWidget):
         self.window_combo.currentIndexChanged.connect(self._window_chosen)
         bar.addWidget(self.window_combo)
 
-        self.pause_button = QPushButton("Pause")
+        self.pause_button = QPushButton(self.tr("Pause"))
         self.pause_button.setObjectName("telemetry_pause")
         self.pause_button.setCheckable(True)
         self.pause_button.setStyleSheet(CHECKED_BUTTON_STYLE)
-        self.pause_button.setToolTip("Freeze the plots; recording goes on")
+        t.set(self.pause_button.setToolTip, lambda: self.tr("Freeze the plots; recording goes on"))
         self.pause_button.toggled.connect(self.set_paused)
-        self.autoscale_button = QPushButton("Autoscale")
+        self.autoscale_button = t.button(
+            lambda: self.tr("Autoscale"),
+            lambda: self.tr(
+                "Fit each plot's vertical range to what is shown (dragging a plot turns it off)"
+            ),
+        )
         self.autoscale_button.setObjectName("telemetry_autoscale")
         self.autoscale_button.setCheckable(True)
         self.autoscale_button.setStyleSheet(CHECKED_BUTTON_STYLE)
-        self.autoscale_button.setToolTip(
-            "Fit each plot's vertical range to what is shown (dragging a plot turns it off)"
-        )
         self.autoscale_button.toggled.connect(self.set_autoscale)
-        self.csv_button = QPushButton("Export CSV…")
-        self.csv_button.setToolTip("Save the samples shown, with units, as CSV")
+        self.csv_button = t.button(
+            lambda: self.tr("Export CSV…"),
+            lambda: self.tr("Save the samples shown, with units, as CSV"),
+        )
         self.csv_button.clicked.connect(self._ask_csv)
-        self.png_button = QPushButton("Export PNG…")
-        self.png_button.setToolTip("Save the plots as an image")
+        self.png_button = t.button(
+            lambda: self.tr("Export PNG…"), lambda: self.tr("Save the plots as an image")
+        )
         self.png_button.clicked.connect(self._ask_png)
-        self.paused_label = QLabel("paused — recording goes on")
+        self.paused_label = t.label(lambda: self.tr("paused — recording goes on"))
         self.paused_label.setStyleSheet("color: #7a5200;")
         self.paused_label.hide()
         for widget in (self.pause_button, self.autoscale_button):
@@ -246,14 +274,15 @@ class TelemetryDock(QDockWidget):
         self.graphics.ci.layout.setSpacing(2)
         axes = self.recorder.model.axes
         units = _common_unit([a.unit for a in axes])
-        self.position_plot = self._add_plot(0, "position", units)
-        self.velocity_plot = self._add_plot(1, "velocity", f"{units}/s" if units else "")
-        self.variable_plot = self._add_plot(2, "variable", "")
+        self._units = units
+        self.position_plot = self._add_plot(0, self.tr("position"), units)
+        self.velocity_plot = self._add_plot(1, self.tr("velocity"), f"{units}/s" if units else "")
+        self.variable_plot = self._add_plot(2, self.tr("variable"), "")
         self.plots = (self.position_plot, self.velocity_plot, self.variable_plot)
         for plot in self.plots[:-1]:
             plot.setXLink(self.variable_plot)
             plot.getAxis("bottom").setStyle(showValues=False)
-        self.variable_plot.setLabel("bottom", "time", units="s", color=_AXIS_TEXT)
+        self.variable_plot.setLabel("bottom", self.tr("time"), units="s", color=_AXIS_TEXT)
         for index, (position, velocity) in enumerate(
             zip(self.recorder.position_names(), self.recorder.velocity_names(), strict=True)
         ):
@@ -287,6 +316,15 @@ class TelemetryDock(QDockWidget):
         if cross is not None:
             cross.colours = colours
             cross.update()
+
+    def _title_plots(self) -> None:
+        units = self._units
+        for plot, title, unit in (
+            (self.position_plot, self.tr("position"), units),
+            (self.velocity_plot, self.tr("velocity"), f"{units}/s" if units else ""),
+        ):
+            plot.setLabel("left", f"{title} ({unit})" if unit else title, color=_AXIS_TEXT)
+        self.variable_plot.setLabel("bottom", self.tr("time"), units="s", color=_AXIS_TEXT)
 
     def _add_plot(self, row: int, title: str, unit: str) -> pg.PlotItem:
         plot = self.graphics.addPlot(row=row, col=0)
@@ -333,7 +371,7 @@ class TelemetryDock(QDockWidget):
     def _build_rotation_column(self) -> QVBoxLayout:
         column = QVBoxLayout()
         column.setSpacing(4)
-        title = QLabel("Rotation")
+        title = self.texts.label(lambda: self.tr("Rotation"))
         title.setAlignment(Qt.AlignmentFlag.AlignHCenter)
         self.cross = RotationCross()
         self.cross.colours = self.colours
@@ -342,9 +380,10 @@ class TelemetryDock(QDockWidget):
         self.angle_label.setObjectName("rotation_angle")
         self.angle_label.setFont(monospace_font(2, bold=True))
         self.angle_label.setAlignment(Qt.AlignmentFlag.AlignHCenter)
-        self.zero_button = QPushButton("Zero")
+        self.zero_button = self.texts.button(
+            lambda: self.tr("Zero"), lambda: self.tr("Make the present angle read 0°")
+        )
         self.zero_button.setObjectName("rotation_zero")
-        self.zero_button.setToolTip("Make the present angle read 0°")
         self.zero_button.clicked.connect(self.zero)
         column.addWidget(title)
         column.addWidget(self.cross)
@@ -360,7 +399,7 @@ class TelemetryDock(QDockWidget):
             self.pause_button.setChecked(paused)  # comes back here through toggled
             return
         self.recorder.set_paused(paused)
-        self.pause_button.setText("Paused" if paused else "Pause")
+        self.pause_button.setText(self.tr("Paused") if paused else self.tr("Pause"))
         self.paused_label.setVisible(paused)
 
     def set_autoscale(self, enabled: bool) -> None:
@@ -392,14 +431,17 @@ class TelemetryDock(QDockWidget):
 
     def _ask_csv(self) -> None:
         path, _ = QFileDialog.getSaveFileName(
-            self, "Export telemetry as CSV", "telemetry.csv", "CSV files (*.csv)"
+            self, self.tr("Export telemetry as CSV"), "telemetry.csv", self.tr("CSV files (*.csv)")
         )
         if path:
             self.export_csv(path)
 
     def _ask_png(self) -> None:
         path, _ = QFileDialog.getSaveFileName(
-            self, "Export telemetry plots as PNG", "telemetry.png", "PNG images (*.png)"
+            self,
+            self.tr("Export telemetry plots as PNG"),
+            "telemetry.png",
+            self.tr("PNG images (*.png)"),
         )
         if path:
             self.export_png(path)
@@ -428,7 +470,7 @@ class TelemetryDock(QDockWidget):
         self.variable_combo.setCurrentIndex(max(0, index))
         self.variable_combo.blockSignals(False)
         if variable is None:
-            self.variable_plot.setLabel("left", "variable (none)", color=_AXIS_TEXT)
+            self.variable_plot.setLabel("left", self.tr("variable (none)"), color=_AXIS_TEXT)
         else:
             self.variable_plot.setLabel(
                 "left", f"{variable.name} ({variable.unit})", color=_AXIS_TEXT
@@ -437,7 +479,8 @@ class TelemetryDock(QDockWidget):
         self.zero_button.setEnabled(rotation)
         if not self.recorder.has_variables:
             self.variable_combo.setEnabled(False)
-            self.variable_combo.setToolTip("This machine reports no subscriber variables")
+            self.variable_combo.setToolTip(self.tr("This machine reports no subscriber variables"))
+
         self._drawn.pop("variable", None)
         self.variable_curve.setData(np.empty(0), np.empty(0))
         self.redraw()

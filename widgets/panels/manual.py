@@ -100,9 +100,9 @@ class ManualPanel(QWidget):
         self.key_step.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # arrows stay the machine's
         for step in JOG_STEPS:
             self.key_step.addItem("", step)
-            item = self.key_step.count() - 1
-            t.set(
-                lambda text, i=item: self.key_step.setItemText(i, text),
+            t.item(
+                self.key_step,
+                self.key_step.count() - 1,
                 lambda s=step, u=first.unit: (
                     self.tr("continuous (hold)")
                     if s == 0

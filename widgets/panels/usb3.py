@@ -74,10 +74,7 @@ class Usb3Panel(QWidget):
             steps = QComboBox()
             for size in StepSize:
                 steps.addItem(size.label, size)
-            t.set(
-                lambda text, c=steps: c.setItemText(0, text),
-                lambda: self.tr("full", "full step"),
-            )
+            t.item(steps, 0, lambda: self.tr("full", "full step"))
             steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
             threads = QComboBox()
             for thread in Thread:
