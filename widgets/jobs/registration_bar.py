@@ -13,11 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QSpinBox, QWidget
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QPushButton, QSpinBox, QWidget
 
 from app.jobs.program import OpKind, Program
 from app.jobs.registration import Point, RegistrationError, mirrored, register, registered
 from app.station import Station
+from widgets.retranslate import Maker, Texts
 
 
 def reference_holes(program: Program) -> list[Point]:
@@ -48,41 +49,51 @@ class RegistrationBar(QWidget):
         self.original: Program | None = None
         self._holes: list[Point] = []
         self.measured: list[Point | None] = [None, None]
+        t = self.texts = Texts(self)
         row = QHBoxLayout(self)
         row.setContentsMargins(0, 0, 0, 0)
         self.side_combo = QComboBox()
         self.side_combo.setObjectName("job_side")
-        self.side_combo.setToolTip(
-            "The bottom side of a double-sided board: the job mirrored about its own extent"
+        t.set(
+            self.side_combo.setToolTip,
+            lambda: self.tr(
+                "The bottom side of a double-sided board: the job mirrored about its own extent"
+            ),
         )
-        for label, about in (
-            ("Top side", ""),
-            ("Bottom, mirrored in X", "X"),
-            ("Bottom, mirrored in Y", "Y"),
-        ):
-            self.side_combo.addItem(label, about)
+        sides: tuple[tuple[Maker, str], ...] = (
+            (lambda: self.tr("Top side"), ""),
+            (lambda: self.tr("Bottom, mirrored in X"), "X"),
+            (lambda: self.tr("Bottom, mirrored in Y"), "Y"),
+        )
+        for label, about in sides:
+            self.side_combo.addItem("", about)
+            t.item(self.side_combo, self.side_combo.count() - 1, label)
         self.side_combo.activated.connect(self._side_changed)
         row.addWidget(self.side_combo)
-        row.addWidget(QLabel("Register on holes"))
+        row.addWidget(t.label(lambda: self.tr("Register on holes")))
         self.hole_spins: list[QSpinBox] = []
         self.here_buttons: list[QPushButton] = []
         for k in range(2):
             spin = QSpinBox()
             spin.setObjectName(f"job_reference_{k + 1}")
-            spin.setToolTip("A reference hole: its number in drilling order")
+            t.set(
+                spin.setToolTip, lambda: self.tr("A reference hole: its number in drilling order")
+            )
             spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
-            here = QPushButton("Here")
+            here = t.button(
+                lambda: self.tr("Here"),
+                lambda: self.tr("The tool stands over this hole on the board: take its position"),
+            )
             here.setObjectName(f"job_reference_here_{k + 1}")
-            here.setToolTip("The tool stands over this hole on the board: take its position")
             here.clicked.connect(lambda _c=False, k=k: self.take(k))
             row.addWidget(spin)
             row.addWidget(here)
             self.hole_spins.append(spin)
             self.here_buttons.append(here)
-        self.register_button = QPushButton("Register")
+        self.register_button = t.button(lambda: self.tr("Register"))
         self.register_button.setObjectName("job_register")
         self.register_button.clicked.connect(self.apply)
-        self.clear_button = QPushButton("Clear")
+        self.clear_button = t.button(lambda: self.tr("Clear"))
         self.clear_button.setObjectName("job_register_clear")
         self.clear_button.clicked.connect(self.clear)
         row.addWidget(self.register_button)
@@ -108,7 +119,7 @@ class RegistrationBar(QWidget):
         try:
             base = self.base
         except RegistrationError as exc:
-            self._say(f"cannot mirror: {exc}")
+            self._say(self.tr("cannot mirror: {0}").format(exc))
             self.side_combo.setCurrentIndex(0)
             return
         if base is not None:
@@ -140,7 +151,11 @@ class RegistrationBar(QWidget):
         axes = self.station.model.axes
         self.measured[k] = (axes[0].position, axes[1].position)
         x, y = self.measured[k] or (0.0, 0.0)
-        self._say(f"reference {k + 1} (hole {self.hole_spins[k].value()}) at X{x:.3f} Y{y:.3f}")
+        self._say(
+            self.tr("reference {0} (hole {1}) at X{2} Y{3}").format(
+                k + 1, self.hole_spins[k].value(), f"{x:.3f}", f"{y:.3f}"
+            )
+        )
         self._update()
 
     def apply(self) -> None:
@@ -153,11 +168,12 @@ class RegistrationBar(QWidget):
             fit = register(refs, [first, second])
             moved = registered(base, fit)
         except RegistrationError as exc:
-            self._say(f"registration refused: {exc}")
+            self._say(self.tr("registration refused: {0}").format(exc))
             return
-        self._say(f"registered: {fit.describe()}")
+        self._say(self.tr("registered: {0}").format(fit.describe()))
         if warning := fit.warning():
-            self._say(f"warning: {warning}")
+            self._say(self.tr("warning: {0}").format(warning))
+
         self._load(moved)
 
     def clear(self) -> None:
