@@ -171,6 +171,10 @@ class MainWindow(QMainWindow):
     #: The operator chose another machine profile; the launcher rebuilds station and window.
     profileRequested = Signal(str)
 
+    #: The key list and the About box, made when first shown (again after a language switch).
+    _help: QDialog | None
+    _about: QMessageBox | None
+
     def __init__(
         self,
         station: Station,
@@ -322,7 +326,8 @@ class MainWindow(QMainWindow):
             if dialog is not None:
                 dialog.close()
                 dialog.deleteLater()
-        self._help = self._about = None
+        self._help = None
+        self._about = None
 
     def _build_layout(self) -> None:
         middle = QHBoxLayout()
@@ -533,8 +538,8 @@ class MainWindow(QMainWindow):
         t.set(self.about_action.setText, lambda: self.tr("&About StepDeck"))
         self.about_action.triggered.connect(self.show_about)
         help_menu.addAction(self.about_action)
-        self._help: QDialog | None = None
-        self._about: QMessageBox | None = None
+        self._help = None
+        self._about = None
 
     def _home_buttons(self) -> list[QPushButton]:
         """The page buttons that home this machine, as the machine means "home"."""

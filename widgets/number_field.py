@@ -201,11 +201,9 @@ class NumberField(QLineEdit):
             )
         fraction = self.text().strip().replace(",", ".").partition(".")[2]
         if len(fraction.rstrip("0")) > self._decimals:
-            if self._decimals == 0:
-                return QCoreApplication.translate("NumberField", "Whole numbers only")
-            return QCoreApplication.translate(
-                "NumberField", "At most %n decimal(s)", "", self._decimals
-            )
+            if self._decimals > 0:
+                return self.tr("At most %n decimal(s)", "", self._decimals)
+            return QCoreApplication.translate("NumberField", "Whole numbers only")
         return None
 
     def _commit(self) -> None:
@@ -276,7 +274,7 @@ class FieldGate(QObject):
         note.setStyleSheet(NOTE_STYLE)
         note.hide()
         self._bound: list[tuple[QPushButton, tuple[NumberField, ...], str]] = []
-        self._fields: dict[NumberField, str | Callable[[], str]] = {}
+        self._fields: dict[NumberField, str | Callable[..., str]] = {}
         self._enabled = True
         self._written: dict[QPushButton, str] = {}
 
@@ -288,7 +286,7 @@ class FieldGate(QObject):
         if event.type() == QEvent.Type.LanguageChange:
             # After the whole tree has its new texts: the buttons' tooltips are then the
             # new plain ones again, and the fields have judged themselves anew.
-            QTimer.singleShot(0, self._retranslate)
+            QTimer.singleShot(0, self, self._retranslate)
         return super().event(event)
 
     def _retranslate(self) -> None:
@@ -300,7 +298,7 @@ class FieldGate(QObject):
         self._bound = bound
         self._refresh()
 
-    def watch(self, field: NumberField, label: str | Callable[[], str]) -> None:
+    def watch(self, field: NumberField, label: str | Callable[..., str]) -> None:
         """Name ``field`` in the note as ``label`` when it is not acceptable."""
         self._fields[field] = label
         field.validityChanged.connect(self._refresh)

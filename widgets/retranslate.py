@@ -17,8 +17,9 @@ from collections.abc import Callable
 from PySide6.QtCore import QEvent, QObject
 from PySide6.QtWidgets import QComboBox, QGroupBox, QLabel, QPushButton, QWidget
 
-#: Makes a text in the current language (a lambda around ``self.tr(...)``).
-Maker = Callable[[], str]
+#: Makes a text in the current language (a lambda around ``self.tr(...)``); called with no
+#: arguments (a lambda may bind loop variables as defaults, hence the ``...``).
+Maker = Callable[..., str]
 
 
 class Texts(QObject):

@@ -1903,6 +1903,14 @@ Načíst jako:</translation>
         <source>{0} is outside {1}</source>
         <translation>{0} je mimo {1}</translation>
     </message>
+    <message numerus="yes">
+        <source>At most %n decimal(s)</source>
+        <translation>
+            <numerusform>Nejvýše %n desetinné místo</numerusform>
+            <numerusform>Nejvýše %n desetinná místa</numerusform>
+            <numerusform>Nejvýše %n desetinných míst</numerusform>
+        </translation>
+    </message>
     <message>
         <source>Whole numbers only</source>
         <translation>Jen celá čísla</translation>
@@ -2176,7 +2184,7 @@ doběhne (Esc)</translation>
     </message>
     <message>
         <source>■ Stop</source>
-        <translation>■ Stop</translation>
+        <translation>■ Zastavit</translation>
     </message>
     <message>
         <source>■ Drop

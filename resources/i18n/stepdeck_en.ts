@@ -156,6 +156,16 @@
     </message>
 </context>
 <context>
+    <name>NumberField</name>
+    <message numerus="yes">
+        <source>At most %n decimal(s)</source>
+        <translation>
+            <numerusform>At most %n decimal</numerusform>
+            <numerusform>At most %n decimals</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>StringArtGeneratorDialog</name>
     <message numerus="yes">
         <source>%n thread(s) ({0}), {1} m of thread; {2}; {3} s</source>

@@ -1903,6 +1903,14 @@ Načítať ako:</translation>
         <source>{0} is outside {1}</source>
         <translation>{0} je mimo {1}</translation>
     </message>
+    <message numerus="yes">
+        <source>At most %n decimal(s)</source>
+        <translation>
+            <numerusform>Najviac %n desatinné miesto</numerusform>
+            <numerusform>Najviac %n desatinné miesta</numerusform>
+            <numerusform>Najviac %n desatinných miest</numerusform>
+        </translation>
+    </message>
     <message>
         <source>Whole numbers only</source>
         <translation>Len celé čísla</translation>
@@ -2176,7 +2184,7 @@ dobehne (Esc)</translation>
     </message>
     <message>
         <source>■ Stop</source>
-        <translation>■ Stop</translation>
+        <translation>■ Zastaviť</translation>
     </message>
     <message>
         <source>■ Drop

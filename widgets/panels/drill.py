@@ -198,12 +198,11 @@ class DrillPanel(QWidget):
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 
-        for index in range(len(self.targets)):
-            self._show_mm(index)
+        self._show_every_mm()
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
         t.also(self._show_long_move)
-        t.also(lambda: [self._show_mm(i) for i in range(len(self.targets))])
+        t.also(self._show_every_mm)
 
     @property
     def session(self) -> DrillSession | None:
@@ -334,6 +333,10 @@ class DrillPanel(QWidget):
         self.output.appendPlainText(
             self.tr("! {0} refused by the drill; queue cleared").format(text)
         )
+
+    def _show_every_mm(self) -> None:
+        for index in range(len(self.targets)):
+            self._show_mm(index)
 
     def _show_mm(self, axis: int) -> None:
         label = self._mm_labels[axis]
