@@ -290,6 +290,21 @@
     </message>
 </context>
 <context>
+    <name>DrillDriver</name>
+    <message>
+        <source>The hole at {0} may or may not have been drilled: the link went before the drill confirmed the command. Look at the board (the hole is marked in the preview), then drill it again or count it as drilled.</source>
+        <translation>Otvor na {0} možno je, možno nie je vyvŕtaný: spojenie spadlo skôr, než vŕtačka príkaz potvrdila. Pozrite sa na dosku (otvor je vyznačený v náhľade) a potom ho vyvŕtajte znova, alebo ho započítajte ako vyvŕtaný.</translation>
+    </message>
+    <message>
+        <source>Drill it again</source>
+        <translation>Vyvŕtať znova</translation>
+    </message>
+    <message>
+        <source>Count it as drilled</source>
+        <translation>Započítať ako vyvŕtaný</translation>
+    </message>
+</context>
+<context>
     <name>DrillPanel</name>
     <message>
         <source>N  home</source>
@@ -395,6 +410,26 @@
     <message>
         <source>! {0} refused by the drill; queue cleared</source>
         <translation>! {0} vŕtačka odmietla; front vyprázdnený</translation>
+    </message>
+</context>
+<context>
+    <name>DrillSession</name>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped; {1} finishes its procedure</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late.</extracomment>
+        <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}; {1} dokončí svoj postup</translation>
+    </message>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped</source>
+        <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} command(s) dropped</source>
+        <translation>Spojenie stratené: {0}; zahodených príkazov: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojenie stratené: {0}</translation>
     </message>
 </context>
 <context>
@@ -950,6 +985,34 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>Not injected: {0}</source>
         <translation>Nevložené: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>GcodeSession</name>
+    <message>
+        <source>Stopped: {0} line(s) not run</source>
+        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. After a soft reset, answers are dropped and lines held until the banner, this long at most. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A soft reset was sent at this time and its banner has not come yet. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have.</extracomment>
+        <translation>Zastavené: nevykonaných riadkov: {0}</translation>
+    </message>
+    <message>
+        <source>Jog ends: the end of the travel</source>
+        <translation>Posuv končí: koniec rozsahu posuvu</translation>
+    </message>
+    <message>
+        <source>No reply from the device for {0} s</source>
+        <translation>Zariadenie neodpovedá už {0} s</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} unanswered line(s)</source>
+        <translation>Spojenie stratené: {0}; nepotvrdených riadkov: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojenie stratené: {0}</translation>
+    </message>
+    <message>
+        <source>Machine alarm {0}: {1}</source>
+        <translation>Alarm stroja {0}: {1}</translation>
     </message>
 </context>
 <context>
@@ -1623,7 +1686,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. Where a language switch compiles its translation (None: the station&apos;s cache). The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
@@ -2134,6 +2197,34 @@ sa nevykresľuje</translation>
     <message>
         <source>Put the machine to sleep: motors off, motion controls locked until Wake</source>
         <translation>Uspať stroj: motory vypnuté, ovládanie pohybu zamknuté až do Zobudiť</translation>
+    </message>
+</context>
+<context>
+    <name>Station</name>
+    <message>
+        <source>Stopping every axis before closing the link…</source>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <translation>Pred ukončením spojenia zastavujem všetky osi…</translation>
+    </message>
+    <message>
+        <source>The link went before the stop was confirmed; closed</source>
+        <translation>Spojenie spadlo skôr, než bolo zastavenie potvrdené; ukončené</translation>
+    </message>
+    <message>
+        <source>Every axis stopped; link closed</source>
+        <translation>Všetky osi stoja; spojenie ukončené</translation>
+    </message>
+    <message>
+        <source>The device did not confirm the stop within {0} s; link closed anyway — check that the machine stands</source>
+        <translation>Zariadenie nepotvrdilo zastavenie do {0} s; spojenie napriek tomu ukončené — skontrolujte, že stroj stojí</translation>
+    </message>
+    <message>
+        <source>reconnecting to {0}…</source>
+        <translation>znova sa pripájam k {0}…</translation>
+    </message>
+    <message>
+        <source>{0} — retrying in {1} s</source>
+        <translation>{0} — nový pokus o {1} s</translation>
     </message>
 </context>
 <context>
