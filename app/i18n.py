@@ -15,7 +15,14 @@ import subprocess
 from pathlib import Path
 
 import PySide6
-from PySide6.QtCore import QCoreApplication, QEvent, QLocale, QStandardPaths, QTranslator
+from PySide6.QtCore import (
+    QCoreApplication,
+    QEvent,
+    QLibraryInfo,
+    QLocale,
+    QStandardPaths,
+    QTranslator,
+)
 
 from app.profiles import RESOURCES
 
@@ -96,10 +103,24 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
         _tell_widgets(app)
         return "en"
     QLocale.setDefault(QLocale(language))
+    _install_qt_own(app, language)
     app.installTranslator(translator)
     _installed.append(translator)
     translator.setObjectName(language)
     return language
+
+
+def _install_qt_own(app: QCoreApplication, language: str) -> None:
+    """Qt's own texts (OK, Cancel, Close, the file dialog) from the ``qtbase`` PySide6 ships.
+
+    Without them a Czech window's dialogs still say "Cancel".  Missing files are no
+    error: those few buttons stay English.
+    """
+    folder = QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
+    qt_own = QTranslator(app)
+    if qt_own.load(f"qtbase_{language}", folder):
+        app.installTranslator(qt_own)
+        _installed.insert(0, qt_own)
 
 
 def current() -> str | None:

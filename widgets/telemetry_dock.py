@@ -41,6 +41,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.telemetry import ROTATION_KEY, VARIABLES, WINDOW_CHOICES_S, TelemetryRecorder
+from widgets.number_field import localized
 from widgets.retranslate import Texts
 from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
 from widgets.theme import LIGHT, PlotColours
@@ -531,7 +532,7 @@ class TelemetryDock(QDockWidget):
         if variable is not None and variable.key == ROTATION_KEY:
             angle = self.recorder.latest(variable.name)
         self.cross.set_angle(angle)
-        self.angle_label.setText("—" if angle is None else f"{angle:+.2f}°")
+        self.angle_label.setText("—" if angle is None else localized(f"{angle:+.2f}°"))
 
     def showEvent(self, event: QShowEvent) -> None:
         super().showEvent(event)

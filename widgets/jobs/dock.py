@@ -222,7 +222,8 @@ class JobsDock(QDockWidget):
 
     def _retranslate(self) -> None:
         """What is made from the job's state, said again in the new language."""
-        self._show_file(self.runner.program)
+        if self._loading is None:  # while a file is read, its name stays until it is in
+            self._show_file(self.runner.program)
         self._show_progress()
         self._set_times(*self._times)
         self._show_resume_offer()
