@@ -56,6 +56,15 @@ def link_state_text(state: LinkState) -> str:
     return QCoreApplication.translate("LinkState", str(_STATES.get(state, state.value)))
 
 
+#: Link details the transports give in English (protocol/ has no Qt to translate them).
+LINK_DETAILS = (QT_TRANSLATE_NOOP("LinkDetail", "built-in emulator"),)
+
+
+def link_detail_text(detail: str) -> str:
+    """The link's detail as the operator reads it; one not listed stays as given."""
+    return QCoreApplication.translate("LinkDetail", detail) if detail else detail
+
+
 def axis_status_text(status: str) -> str:
     """An axis status as the operator reads it; one not listed stays as reported."""
     return QCoreApplication.translate("AxisStatus", status)

@@ -71,7 +71,7 @@ from app.version import station_version
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
-from widgets.link_text import link_state_text
+from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
@@ -759,7 +759,7 @@ class MainWindow(QMainWindow):
 
     def _show_link_status(self, _state: object = None) -> None:
         state = self.model.link_state
-        detail = f" — {self.model.link_detail}" if self.model.link_detail else ""
+        detail = f" — {link_detail_text(self.model.link_detail)}" if self.model.link_detail else ""
         session = self.station.session
         period = (
             f" · {session.period_ms} ms"

@@ -1595,6 +1595,14 @@ Načítať ako:</translation>
     </message>
 </context>
 <context>
+    <name>LinkDetail</name>
+    <message>
+        <source>built-in emulator</source>
+        <extracomment>Link details the transports give in English (protocol/ has no Qt to translate them).</extracomment>
+        <translation>vstavaný emulátor</translation>
+    </message>
+</context>
+<context>
     <name>LinkState</name>
     <message>
         <source>disconnected</source>
@@ -1985,6 +1993,41 @@ Načítať ako:</translation>
     <message>
         <source>Disabled: {0}</source>
         <translation>Nedostupné: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Operation</name>
+    <message>
+        <source>move</source>
+        <translation>pohyb</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>vŕtanie</translation>
+    </message>
+    <message>
+        <source>pen up</source>
+        <translation>pero hore</translation>
+    </message>
+    <message>
+        <source>pen down</source>
+        <translation>pero dole</translation>
+    </message>
+    <message>
+        <source>wait</source>
+        <translation>čakanie</translation>
+    </message>
+    <message>
+        <source>comment</source>
+        <translation>poznámka</translation>
+    </message>
+    <message>
+        <source>gcode</source>
+        <translation>G-kód</translation>
+    </message>
+    <message>
+        <source>move to {0}</source>
+        <translation>presun na {0}</translation>
     </message>
 </context>
 <context>

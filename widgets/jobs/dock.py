@@ -59,6 +59,7 @@ from app.jobs.program import JobFileError, Program
 from app.jobs.reading import read_job_text
 from app.jobs.run.runner import JobRunner, JobState
 from app.station import Station
+from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
@@ -824,7 +825,7 @@ class JobsDock(QDockWidget):
             self.resume_offer.hide()
             return
         if 0 <= index < len(program):
-            where = f"{program[index].source}  {program[index].describe()}"
+            where = f"{program[index].source}  {operation_text(program[index])}"
         else:
             where = self.tr("the end")
         self.resume_offer_label.setText(
@@ -912,7 +913,7 @@ class JobsDock(QDockWidget):
         if program is None or not 0 <= index < len(program):
             return
         op = program[index]
-        text = f"{op.source}  {op.describe()}"
+        text = f"{op.source}  {operation_text(op)}"
         raw = self._source_line(op.source.line)
         if raw:
             text += "\n    " + self.tr("file: {0}").format(raw)

@@ -26,7 +26,7 @@ from app.machine import LinkState
 from app.profiles import available_profiles
 from app.settings import StationSettings
 from app.station import Station
-from widgets.link_text import link_state_text
+from widgets.link_text import link_detail_text, link_state_text
 from widgets.retranslate import Texts
 
 TRANSPORTS = (
@@ -268,7 +268,7 @@ class ConnectionPanel(QWidget):
         text = link_state_text(model.link_state)
 
         if model.link_detail:
-            text += f" — {model.link_detail}"
+            text += f" — {link_detail_text(model.link_detail)}"
         self.state_label.setText(text)
         linked = model.link_state is not LinkState.DISCONNECTED
         self.disconnect_button.setEnabled(linked)

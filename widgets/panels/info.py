@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (
 
 from app.machine import LinkState, MachineModel
 from protocol.stage.codec import DeviceFlag
-from widgets.link_text import axis_status_text, link_state_text
+from widgets.link_text import axis_status_text, link_detail_text, link_state_text
 from widgets.number_field import localized
 from widgets.retranslate import Texts
 from widgets.style import monospace_font
@@ -155,7 +155,9 @@ class InfoPanel(QFrame):
         self.link_lamp.setStyleSheet(
             f"background: {colour}; border-radius: 7px; border: 1px solid #00000040;"
         )
-        detail = f" — {self._model.link_detail}" if self._model.link_detail else ""
+        detail = (
+            f" — {link_detail_text(self._model.link_detail)}" if self._model.link_detail else ""
+        )
         self.link_text.setText(f"{link_state_text(state)}{detail}")
         self.link_lamp.setToolTip(self.tr("Link {0}").format(link_state_text(state)))
         # Positions and states are live only while the device answers: otherwise they are
