@@ -15,7 +15,14 @@ import subprocess
 from pathlib import Path
 
 import PySide6
-from PySide6.QtCore import QCoreApplication, QLocale, QStandardPaths, QTranslator
+from PySide6.QtCore import (
+    QCoreApplication,
+    QEvent,
+    QLibraryInfo,
+    QLocale,
+    QStandardPaths,
+    QTranslator,
+)
 
 from app.profiles import RESOURCES
 
@@ -72,12 +79,16 @@ def remove() -> None:
     app = QCoreApplication.instance()
     while _installed and app is not None:
         app.removeTranslator(_installed.pop())
+    QLocale.setDefault(QLocale(QLocale.Language.English, QLocale.Country.UnitedStates))
 
 
 def install(choice: str, cache_dir: Path | None = None) -> str:
     """Make the application speak ``choice`` from now on; returns the language used.
 
-    Widgets built afterwards are in that language; the window is built after this.
+    Widgets built afterwards are in that language; those already built hear of it
+    through Qt's ``LanguageChange`` event (see widgets/retranslate.py).  Numbers
+    follow the language too: the default locale is set to it, so Czech and Slovak
+    show a decimal comma.
     """
     app = QCoreApplication.instance()
     assert app is not None
@@ -85,10 +96,38 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
     language = chosen_language(choice)
     path = compiled(language, cache_dir)
     if path is None:
+        _tell_widgets(app)
         return "en"
     translator = QTranslator(app)
     if not translator.load(str(path)):
+        _tell_widgets(app)
         return "en"
+    QLocale.setDefault(QLocale(language))
+    _install_qt_own(app, language)
     app.installTranslator(translator)
     _installed.append(translator)
+    translator.setObjectName(language)
     return language
+
+
+def _install_qt_own(app: QCoreApplication, language: str) -> None:
+    """Qt's own texts (OK, Cancel, Close, the file dialog) from the ``qtbase`` PySide6 ships.
+
+    Without them a Czech window's dialogs still say "Cancel".  Missing files are no
+    error: those few buttons stay English.
+    """
+    folder = QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
+    qt_own = QTranslator(app)
+    if qt_own.load(f"qtbase_{language}", folder):
+        app.installTranslator(qt_own)
+        _installed.insert(0, qt_own)
+
+
+def current() -> str | None:
+    """The language whose translation is installed (None: none, the bare source texts)."""
+    return _installed[-1].objectName() if _installed else None
+
+
+def _tell_widgets(app: QCoreApplication) -> None:
+    """Back in English: removing a translator told the widgets only if one was installed."""
+    app.postEvent(app, QEvent(QEvent.Type.LanguageChange))

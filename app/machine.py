@@ -10,7 +10,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from app.profiles import MachineProfile
 
@@ -150,14 +150,20 @@ class MachineModel(QObject):
     # --- read by widgets -----------------------------------------------------
 
     def motion_lock_reason(self) -> str | None:
-        """Why motion controls are disabled right now, or None when they are live."""
+        """Why motion controls are disabled right now, or None when they are live.
+
+        In the operator's language (the window shows it); the device's block reason is
+        one of the axis statuses, translated as the info panel translates them.
+        """
         if self.link_state in (LinkState.DISCONNECTED, LinkState.CONNECTING):
-            return "not connected"
+            return QCoreApplication.translate("MachineModel", "not connected")
         if self.link_state is LinkState.LOST:
-            return "link lost"
+            return QCoreApplication.translate("MachineModel", "link lost")
         if self.sleeping:
-            return "sleeping — press Wake"
-        return self.block_reason
+            return QCoreApplication.translate("MachineModel", "sleeping — press Wake")
+        if self.block_reason is None:
+            return None
+        return QCoreApplication.translate("AxisStatus", self.block_reason)
 
     @property
     def any_moving(self) -> bool:

@@ -20,7 +20,7 @@ procedure finishes, and the operator is told so.
 
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.discovery import ble_uuids_for
 from app.link import Link
@@ -230,7 +230,9 @@ class Station(QObject):
             self._close(send_stop=False)
             return True
         self._stop_deadline = self.clock.now() + STOP_CONFIRM_S
-        self.model.message.emit("Stopping every axis before closing the link…")
+        self.model.message.emit(
+            QCoreApplication.translate("Station", "Stopping every axis before closing the link…")
+        )
         if self.realtime:
             self._stop_check.start()
         return False
@@ -252,15 +254,24 @@ class Station(QObject):
             return
         session = self.session
         if session is None or not self._live():
-            self.model.message.emit("The link went before the stop was confirmed; closed")
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "Station", "The link went before the stop was confirmed; closed"
+                )
+            )
             self._close(send_stop=False)
         elif session.motion_stopped():
-            self.model.message.emit("Every axis stopped; link closed")
+            self.model.message.emit(
+                QCoreApplication.translate("Station", "Every axis stopped; link closed")
+            )
             self._close(send_stop=False)
         elif self.clock.now() >= deadline:
             self.model.message.emit(
-                f"The device did not confirm the stop within {STOP_CONFIRM_S:g} s; "
-                "link closed anyway — check that the machine stands"
+                QCoreApplication.translate(
+                    "Station",
+                    "The device did not confirm the stop within {0} s; "
+                    "link closed anyway — check that the machine stands",
+                ).format(f"{STOP_CONFIRM_S:g}")
             )
             self._close(send_stop=False)
 
@@ -333,7 +344,12 @@ class Station(QObject):
         if self.clock.now() < self._reconnect_at:
             return
         self._reconnect_at = None
-        self.model.set_link_state(LinkState.LOST, f"reconnecting to {self.link.describe()}…")
+        self.model.set_link_state(
+            LinkState.LOST,
+            QCoreApplication.translate("Station", "reconnecting to {0}…").format(
+                self.link.describe()
+            ),
+        )
         self.link.open()
 
     def _on_connected(self) -> None:
@@ -362,4 +378,5 @@ class Station(QObject):
         delay = self.reconnect_delays[min(self._attempt, len(self.reconnect_delays) - 1)]
         self._attempt += 1
         self._reconnect_at = self.clock.now() + delay
-        self.model.set_link_state(LinkState.LOST, f"{reason} — retrying in {delay:g} s")
+        retrying = QCoreApplication.translate("Station", "{0} — retrying in {1} s")
+        self.model.set_link_state(LinkState.LOST, retrying.format(reason, f"{delay:g}"))

@@ -44,6 +44,24 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
             item.add_marker(pytest.mark.gui)
 
 
+@pytest.fixture(scope="session")
+def i18n_cache(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Where the tests compile the translations (once per session)."""
+    return tmp_path_factory.mktemp("qm")
+
+
+@pytest.fixture(autouse=True)
+def english(request: pytest.FixtureRequest, i18n_cache: Path) -> None:
+    """Widget tests read English as the operator sees it: with its plural forms installed."""
+    if not {"qapp", "qtbot"} & set(request.fixturenames):
+        return
+    from app import i18n
+
+    request.getfixturevalue("qapp")
+    if i18n.current() != "en":
+        i18n.install("en", i18n_cache)
+
+
 @pytest.fixture(autouse=True)
 def no_leftover_threads_or_transports() -> Iterator[None]:
     before = set(threading.enumerate())

@@ -123,7 +123,8 @@ def test_the_jobs_dock(case: Case, qtbot: QtBot, tmp_path: Path, docks: dict[str
     expect = case.expect
     if isinstance(expect, Loaded):
         assert runner.program is not None and len(runner.program) == expect.operations, messages
-        assert f"{expect.operations} operations loaded" in messages
+        plural = "" if expect.operations == 1 else "s"  # English plural forms, not "(s)"
+        assert f"{expect.operations} operation{plural} loaded" in messages
         assert expect.note in messages
     elif isinstance(expect, Refused):
         assert runner.program is None, messages

@@ -59,6 +59,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app import i18n
 from app.i18n import LANGUAGES
 from app.jobs.names import shown
 from app.jobs.run.runner import JobRunner
@@ -70,6 +71,7 @@ from app.version import station_version
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
+from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
@@ -82,6 +84,7 @@ from widgets.panels.menu import MenuPanel
 from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
+from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.telemetry_dock import TelemetryDock
 from widgets.theme import PlotColours, ThemeController
@@ -168,6 +171,10 @@ class MainWindow(QMainWindow):
     #: The operator chose another machine profile; the launcher rebuilds station and window.
     profileRequested = Signal(str)
 
+    #: The key list and the About box, made when first shown (again after a language switch).
+    _help: QDialog | None
+    _about: QMessageBox | None
+
     def __init__(
         self,
         station: Station,
@@ -175,8 +182,11 @@ class MainWindow(QMainWindow):
         parent: QWidget | None = None,
         *,
         checkpoint_dir: Path | None = None,
+        i18n_cache: Path | None = None,
     ) -> None:
         super().__init__(parent)
+        #: Where a language switch compiles its translation (None: the station's cache).
+        self._i18n_cache = i18n_cache
         self.station = station
         self.model = station.model
         self._remembers = settings is not None
@@ -187,7 +197,10 @@ class MainWindow(QMainWindow):
         self.settings_warning: QMessageBox | None = None
         self._filtering = False
         self._close_after_stop = False
-        self.setWindowTitle(self.tr("StepDeck — {0}").format(station.profile.title))
+        self.texts = Texts(self)
+        self.texts.set(
+            self.setWindowTitle, lambda: self.tr("StepDeck — {0}").format(station.profile.title)
+        )
 
         self.jog = JogInput(station, self)
         self.info_panel = InfoPanel(self.model)
@@ -203,8 +216,10 @@ class MainWindow(QMainWindow):
         self.manual_panel = ManualPanel(station, self.jog)
         self.manual_panel.set_key_step(self._settings.jog_step)
         self.manual_panel.keyStepChanged.connect(self._remember_key_step)
-        self.menu_panel.add_page(
-            self.tr("&Manual"), self.manual_panel, self.tr("Hold-to-jog buttons, Home (Alt+M)")
+        self._add_page(
+            lambda: self.tr("&Manual"),
+            self.manual_panel,
+            lambda: self.tr("Hold-to-jog buttons, Home (Alt+M)"),
         )
         #: Every page with motion controls, for the motion lock.
         self.motion_panels: list[
@@ -213,34 +228,40 @@ class MainWindow(QMainWindow):
         if station.profile.dialect == "drill":
             # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
             self.drill_panel = DrillPanel(station)
-            self.menu_panel.add_page(
-                self.tr("D&rill"),
+            self._add_page(
+                lambda: self.tr("D&rill"),
                 self.drill_panel,
-                self.tr("Command buttons, X/Y, terminal (Alt+R)"),
+                lambda: self.tr("Command buttons, X/Y, terminal (Alt+R)"),
             )
             self.motion_panels.append(self.drill_panel)
         elif station.profile.dialect == "usb3":
             self.usb3_panel = Usb3Panel(station)
-            self.menu_panel.add_page(
-                self.tr("A&xes"), self.usb3_panel, self.tr("Move by mm, step size, thread (Alt+X)")
+            self._add_page(
+                lambda: self.tr("A&xes"),
+                self.usb3_panel,
+                lambda: self.tr("Move by mm, step size, thread (Alt+X)"),
             )
             self.motion_panels.append(self.usb3_panel)
         else:
             self.absolute_panel = AbsolutePanel(station)
             self.relative_panel = RelativePanel(station)
-            self.menu_panel.add_page(
-                self.tr("&Absolute"), self.absolute_panel, self.tr("Move to a target (Alt+A)")
+            self._add_page(
+                lambda: self.tr("&Absolute"),
+                self.absolute_panel,
+                lambda: self.tr("Move to a target (Alt+A)"),
             )
-            self.menu_panel.add_page(
-                self.tr("&Relative"), self.relative_panel, self.tr("Move by an increment (Alt+R)")
+            self._add_page(
+                lambda: self.tr("&Relative"),
+                self.relative_panel,
+                lambda: self.tr("Move by an increment (Alt+R)"),
             )
             self.motion_panels += [self.absolute_panel, self.relative_panel]
         if station.profile.dialect == "gcode":
             self.gcode_panel = GcodePanel(station)
-            self.menu_panel.add_page(
-                self.tr("&G-code"),
+            self._add_page(
+                lambda: self.tr("&G-code"),
                 self.gcode_panel,
-                self.tr("Console, pen, hold/resume/reset (Alt+G)"),
+                lambda: self.tr("Console, pen, hold/resume/reset (Alt+G)"),
             )
             self.motion_panels.append(self.gcode_panel)
         if station.profile.capabilities.parameters:
@@ -256,15 +277,17 @@ class MainWindow(QMainWindow):
             bar = dynamics_page.verticalScrollBar().sizeHint().width()
             dynamics_page.setMinimumWidth(self.dynamics_panel.minimumSizeHint().width() + bar)
             self.dynamics_page = dynamics_page
-            self.menu_panel.add_page(
-                self.tr("&Dynamics"), dynamics_page, self.tr("Device parameters (Alt+D)")
+            self._add_page(
+                lambda: self.tr("&Dynamics"),
+                dynamics_page,
+                lambda: self.tr("Device parameters (Alt+D)"),
             )
         self.connection_panel = ConnectionPanel(station, self._settings)
         self.connection_panel.profileRequested.connect(self.profileRequested)
-        self.menu_panel.add_page(
-            self.tr("&Link"),
+        self._add_page(
+            lambda: self.tr("&Link"),
             self.connection_panel,
-            self.tr("Connect: emulator, serial port or BLE (Alt+L)"),
+            lambda: self.tr("Connect: emulator, serial port or BLE (Alt+L)"),
         )
         self.static_panel = StaticPanel(station, self.jog)
         self._build_layout()
@@ -287,8 +310,31 @@ class MainWindow(QMainWindow):
         self._build_language_menu()
         self._restore_settings()
         self._install_filter()
+        self.texts.also(self._retranslate)
 
     # --- building ------------------------------------------------------------
+
+    def _add_page(self, title: Maker, page: QWidget, tooltip: Maker) -> None:
+        button = self.menu_panel.add_page(title(), page, tooltip())
+        self.texts.set(button.setText, title)
+        self.texts.set(button.setToolTip, tooltip)
+
+    def _retranslate(self) -> None:
+        """What is made from state, said again in the language just installed."""
+        self._update_lock()
+        self._show_link_status()
+        self._show_rejected()
+        self._fill_recent_menu()
+        for action, button in self.home_actions:
+            action.setText(button.text().replace("  ", " "))
+            action.setToolTip(button.toolTip())
+        # The key list and the About box are made when first shown: made again next time.
+        for dialog in (self._help, self._about):
+            if dialog is not None:
+                dialog.close()
+                dialog.deleteLater()
+        self._help = None
+        self._about = None
 
     def _build_layout(self) -> None:
         middle = QHBoxLayout()
@@ -350,15 +396,18 @@ class MainWindow(QMainWindow):
         self.theme.coloursChanged.connect(self._apply_colours)
         self._apply_colours(self.theme.colours)
         self.view_menu.addSeparator()
-        menu = self.view_menu.addMenu(self.tr("&Colours"))
+        menu = self.view_menu.addMenu("")
+        self.texts.set(menu.setTitle, lambda: self.tr("&Colours"))
         group = QActionGroup(self)
         self.theme_actions: dict[str, QAction] = {}
-        for choice, caption in (
-            ("system", self.tr("As the &system")),
-            ("light", self.tr("&Light")),
-            ("dark", self.tr("&Dark")),
-        ):
-            action = QAction(caption, self, checkable=True)
+        captions: tuple[tuple[str, Maker], ...] = (
+            ("system", lambda: self.tr("As the &system")),
+            ("light", lambda: self.tr("&Light")),
+            ("dark", lambda: self.tr("&Dark")),
+        )
+        for choice, caption in captions:
+            action = QAction(self, checkable=True)
+            self.texts.set(action.setText, caption)
             action.setChecked(choice == self.theme.choice)
             action.triggered.connect(lambda _=False, c=choice: self.set_theme(c))
             group.addAction(action)
@@ -366,27 +415,37 @@ class MainWindow(QMainWindow):
             self.theme_actions[choice] = action
 
     def _build_language_menu(self) -> None:
-        """View → Language: the system's or a fixed one; kept, used from the next start."""
-        menu = self.view_menu.addMenu(self.tr("L&anguage"))
+        """View → Language: the system's or a fixed one; kept, and switched at once."""
+        menu = self.view_menu.addMenu("")
+        self.texts.set(menu.setTitle, lambda: self.tr("L&anguage"))
         group = QActionGroup(self)
         self.language_actions: dict[str, QAction] = {}
-        choices = [("system", self.tr("As the &system"))]
-        choices += [(code, name) for code, name in LANGUAGES.items()]
+        choices: list[tuple[str, Maker]] = [("system", lambda: self.tr("As the &system"))]
+        choices += [(code, lambda n=name: n) for code, name in LANGUAGES.items()]
         for choice, caption in choices:
-            action = QAction(caption, self, checkable=True)
+            action = QAction(self, checkable=True)
+            self.texts.set(action.setText, caption)
             action.setChecked(choice == self._settings.language)
             action.triggered.connect(lambda _=False, c=choice: self.set_language(c))
             group.addAction(action)
             menu.addAction(action)
             self.language_actions[choice] = action
 
-    def set_language(self, choice: str) -> None:
-        """Remember the language chosen; the window speaks it from the next start."""
+    def set_language(self, choice: str) -> str:
+        """Speak ``choice`` from now on, and remember it; returns the language installed.
+
+        Installing the translator makes Qt send ``LanguageChange`` through every
+        window, and each widget makes its texts again (:class:`Texts`): nothing is
+        rebuilt, so the link, a running job and the fields' contents are untouched,
+        and nothing is sent to the machine.
+        """
         self._settings.language = choice
         if self._remembers:
             self._settings.sync()
         self.language_actions[choice].setChecked(True)
-        self._show_message(self.tr("The language changes when StepDeck starts again"))
+        language = i18n.install(choice, self._i18n_cache)
+        self._show_message(self.tr("Language: {0}").format(LANGUAGES[language]))
+        return language
 
     def set_theme(self, choice: str) -> None:
         """Use and remember the colours chosen ("system", "light" or "dark")."""
@@ -411,7 +470,10 @@ class MainWindow(QMainWindow):
         #: when the link is back).
         self._message_link_state = LinkState.DISCONNECTED
         self.rejected_label = QLabel()
-        self.rejected_label.setToolTip(self.tr("Frames from the device that failed to decode"))
+        self.texts.set(
+            self.rejected_label.setToolTip,
+            lambda: self.tr("Frames from the device that failed to decode"),
+        )
         bar = self.statusBar()
         bar.addWidget(self.link_status)
         bar.addWidget(self.message_label, 1)
@@ -425,24 +487,32 @@ class MainWindow(QMainWindow):
         nothing the page would not (a locked button ignores the click).
         """
         bar = self.menuBar()
-        file_menu = bar.addMenu(self.tr("&File"))
-        self.open_action = QAction(self.tr("&Open job…"), self)
+        t = self.texts
+        file_menu = bar.addMenu("")
+        t.set(file_menu.setTitle, lambda: self.tr("&File"))
+        self.open_action = QAction(self)
+        t.set(self.open_action.setText, lambda: self.tr("&Open job…"))
         self.open_action.setShortcut(QKeySequence.StandardKey.Open)
         self.open_action.triggered.connect(self._ask_open_job)
         file_menu.addAction(self.open_action)
-        self.recent_menu = file_menu.addMenu(self.tr("&Recent jobs"))
+        self.recent_menu = file_menu.addMenu("")
+        t.set(self.recent_menu.setTitle, lambda: self.tr("&Recent jobs"))
         self.recent_menu.aboutToShow.connect(self._fill_recent_menu)
         self._fill_recent_menu()
         file_menu.addSeparator()
-        self.quit_action = QAction(self.tr("&Quit"), self)
+        self.quit_action = QAction(self)
+        t.set(self.quit_action.setText, lambda: self.tr("&Quit"))
         self.quit_action.setShortcut(QKeySequence("Ctrl+Q"))
         self.quit_action.triggered.connect(self.close)
         file_menu.addAction(self.quit_action)
 
-        machine_menu = bar.addMenu(self.tr("&Machine"))
-        self.connect_action = QAction(self.tr("&Connect"), self)
+        machine_menu = bar.addMenu("")
+        t.set(machine_menu.setTitle, lambda: self.tr("&Machine"))
+        self.connect_action = QAction(self)
+        t.set(self.connect_action.setText, lambda: self.tr("&Connect"))
         self.connect_action.triggered.connect(self.connection_panel.connect_selected)
-        self.disconnect_action = QAction(self.tr("&Disconnect"), self)
+        self.disconnect_action = QAction(self)
+        t.set(self.disconnect_action.setText, lambda: self.tr("&Disconnect"))
         self.disconnect_action.triggered.connect(self.station.stop_and_close)
         machine_menu.addAction(self.connect_action)
         machine_menu.addAction(self.disconnect_action)
@@ -455,27 +525,34 @@ class MainWindow(QMainWindow):
             machine_menu.addAction(action)
             self.home_actions.append((action, button))
         machine_menu.addSeparator()
-        caption, tip = stop_caption(self.station.profile)
-        stop_text = self.tr("&Stop") if caption == "STOP" else self.tr("&Drop the queue")
+        stops = self.station.profile.capabilities.stop_command
         # Esc is routed by the window (see _route_key), not a shortcut: shown, not bound.
-        self.stop_action = QAction(f"{stop_text}\tEsc", self)
-        self.stop_action.setToolTip(tip)
+        self.stop_action = QAction(self)
+        t.set(
+            self.stop_action.setText,
+            lambda: (self.tr("&Stop") if stops else self.tr("&Drop the queue")) + "\tEsc",
+        )
+        t.set(self.stop_action.setToolTip, lambda: stop_caption(self.station.profile)[1])
         self.stop_action.triggered.connect(self.stop_all)
         machine_menu.addAction(self.stop_action)
         machine_menu.setToolTipsVisible(True)
 
-        self.view_menu = bar.addMenu(self.tr("&View"))
-        help_menu = bar.addMenu(self.tr("&Help"))
-        self.shortcuts_action = QAction(self.tr("&Keys"), self)
+        self.view_menu = bar.addMenu("")
+        t.set(self.view_menu.setTitle, lambda: self.tr("&View"))
+        help_menu = bar.addMenu("")
+        t.set(help_menu.setTitle, lambda: self.tr("&Help"))
+        self.shortcuts_action = QAction(self)
+        t.set(self.shortcuts_action.setText, lambda: self.tr("&Keys"))
         self.shortcuts_action.setShortcut(QKeySequence(Qt.Key.Key_F1))
         self.shortcuts_action.triggered.connect(self.show_shortcuts)
         help_menu.addAction(self.shortcuts_action)
         self.addAction(self.shortcuts_action)
-        self.about_action = QAction(self.tr("&About StepDeck"), self)
+        self.about_action = QAction(self)
+        t.set(self.about_action.setText, lambda: self.tr("&About StepDeck"))
         self.about_action.triggered.connect(self.show_about)
         help_menu.addAction(self.about_action)
-        self._help: QDialog | None = None
-        self._about: QMessageBox | None = None
+        self._help = None
+        self._about = None
 
     def _home_buttons(self) -> list[QPushButton]:
         """The page buttons that home this machine, as the machine means "home"."""
@@ -522,7 +599,9 @@ class MainWindow(QMainWindow):
         """Open a job from the recent list (the dock says why when it cannot)."""
         self.jobs_dock.show()
         if not path.is_file():
-            self.jobs_dock.say(f"{shown(path.name)}: not opened — the file is no longer there")
+            self.jobs_dock.say(
+                self.tr("{0}: not opened — the file is no longer there").format(shown(path.name))
+            )
             return False
         return self.jobs_dock.open_path(path, background=True)
 
@@ -697,14 +776,16 @@ class MainWindow(QMainWindow):
 
     def _show_link_status(self, _state: object = None) -> None:
         state = self.model.link_state
-        detail = f" — {self.model.link_detail}" if self.model.link_detail else ""
+        detail = f" — {link_detail_text(self.model.link_detail)}" if self.model.link_detail else ""
         session = self.station.session
         period = (
             f" · {session.period_ms} ms"
             if session is not None and state in (LinkState.CONNECTED, LinkState.STALE)
             else ""
         )
-        self.link_status.setText(f"Link {state.value}{detail}{period}")
+        self.link_status.setText(
+            self.tr("Link {0}").format(link_state_text(state)) + detail + period
+        )
 
     def _show_message(self, text: str) -> None:
         """Show ``text`` until the next message or for MESSAGE_SHOWN_MS, whichever comes first.

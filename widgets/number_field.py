@@ -12,14 +12,19 @@ as typed.
 
 Up and Down step by the single step (PageUp/PageDown by ten), within the
 range, as a spin box does; the unit is drawn inside the field, right-aligned.
+
+Numbers are shown with the decimal separator of the language in use (a comma
+in Czech and Slovak), and both a point and a comma are accepted when typed,
+whatever the language: an operator used to either is never refused.
 """
 
 from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 
-from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QLocale, QObject, Qt, QTimer, Signal
 from PySide6.QtGui import QColor, QKeyEvent, QPainter, QPaintEvent, QValidator
 from PySide6.QtWidgets import QLabel, QLineEdit, QPushButton, QWidget
 
@@ -42,9 +47,20 @@ class _NumberShape(QValidator):
         return QValidator.State.Invalid, text, pos
 
 
+def decimal_point() -> str:
+    """The decimal separator of the language in use ("," in Czech and Slovak)."""
+    return "," if QLocale().decimalPoint() == "," else "."
+
+
+def localized(text: str) -> str:
+    """A number formatted by Python (``f"{x:.3f}"``) with the language's decimal separator."""
+    point = decimal_point()
+    return text if point == "." else text.replace(".", point)
+
+
 def format_number(value: float, decimals: int) -> str:
     """How a value is filled in: its fixed decimals, an ASCII minus the operator can retype."""
-    return f"{value:.{decimals}f}"
+    return localized(f"{value:.{decimals}f}")
 
 
 def _short(value: float, decimals: int) -> str:
@@ -52,7 +68,7 @@ def _short(value: float, decimals: int) -> str:
     text = f"{value:.{decimals}f}"
     if "." in text:
         text = text.rstrip("0").rstrip(".")
-    return text.replace("-", MINUS)
+    return localized(text).replace("-", MINUS)
 
 
 class NumberField(QLineEdit):
@@ -111,6 +127,16 @@ class NumberField(QLineEdit):
     def unit(self) -> str:
         return self._unit
 
+    def set_description(self, text: str) -> None:
+        """What the field is for, the first line of its tooltip (the range follows)."""
+        self._base_tooltip = text
+        self._judge()
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._judge()  # the reason and the range, in the new language
+        super().changeEvent(event)
+
     def setRange(self, low: float, high: float) -> None:
         """A new range is judged against the text as it stands; the text is not touched."""
         self._low, self._high = low, high
@@ -154,7 +180,7 @@ class NumberField(QLineEdit):
         self._problem = problem
         self.setStyleSheet("" if acceptable else _INVALID_STYLE)
         tip = self._base_tooltip
-        limits = f"Allowed: {self.range_text()}"
+        limits = QCoreApplication.translate("NumberField", "Allowed: {0}").format(self.range_text())
         tip = f"{tip}\n{limits}" if tip else limits
         self.setToolTip(tip if acceptable else f"{problem}\n{tip}")
         if acceptable != self._acceptable:
@@ -164,14 +190,20 @@ class NumberField(QLineEdit):
     def _find_problem(self) -> str | None:
         number = self.number()
         if number is None:
-            return "Not a number" if self.text().strip() else "Empty: type a number"
+            return (
+                QCoreApplication.translate("NumberField", "Not a number")
+                if self.text().strip()
+                else QCoreApplication.translate("NumberField", "Empty: type a number")
+            )
         if not self._low <= number <= self._high:
-            return f"{self.text().strip()} is outside {self.range_text()}"
+            return QCoreApplication.translate("NumberField", "{0} is outside {1}").format(
+                self.text().strip(), self.range_text()
+            )
         fraction = self.text().strip().replace(",", ".").partition(".")[2]
         if len(fraction.rstrip("0")) > self._decimals:
-            if self._decimals == 0:
-                return "Whole numbers only"
-            return f"At most {self._decimals} decimals"
+            if self._decimals > 0:
+                return self.tr("At most %n decimal(s)", "", self._decimals)
+            return QCoreApplication.translate("NumberField", "Whole numbers only")
         return None
 
     def _commit(self) -> None:
@@ -231,7 +263,8 @@ class FieldGate(QObject):
 
     A button is enabled only while the motion lock allows it and every field
     it reads is acceptable; the note under the fields names each field that
-    is not, and why, so the operator sees the reason where they typed.
+    is not, and why, so the operator sees the reason where they typed.  Labels may be
+    given as functions, so that they follow a language switch.
     """
 
     def __init__(self, note: QLabel, parent: QObject | None = None) -> None:
@@ -241,10 +274,31 @@ class FieldGate(QObject):
         note.setStyleSheet(NOTE_STYLE)
         note.hide()
         self._bound: list[tuple[QPushButton, tuple[NumberField, ...], str]] = []
-        self._fields: dict[NumberField, str] = {}
+        self._fields: dict[NumberField, str | Callable[..., str]] = {}
         self._enabled = True
+        self._written: dict[QPushButton, str] = {}
 
-    def watch(self, field: NumberField, label: str) -> None:
+    def _label(self, field: NumberField) -> str:
+        label = self._fields.get(field, field.objectName())
+        return label if isinstance(label, str) else label()
+
+    def event(self, event: QEvent) -> bool:
+        if event.type() == QEvent.Type.LanguageChange:
+            # After the whole tree has its new texts: the buttons' tooltips are then the
+            # new plain ones again, and the fields have judged themselves anew.
+            QTimer.singleShot(0, self, self._retranslate)
+        return super().event(event)
+
+    def _retranslate(self) -> None:
+        bound = []
+        for button, fields, tip in self._bound:
+            shown = button.toolTip()
+            # Unchanged since the gate wrote it: nobody made the plain tooltip again.
+            bound.append((button, fields, tip if shown == self._written.get(button) else shown))
+        self._bound = bound
+        self._refresh()
+
+    def watch(self, field: NumberField, label: str | Callable[..., str]) -> None:
         """Name ``field`` in the note as ``label`` when it is not acceptable."""
         self._fields[field] = label
         field.validityChanged.connect(self._refresh)
@@ -265,19 +319,21 @@ class FieldGate(QObject):
 
     def refusal(self, *fields: NumberField) -> str | None:
         """Why an action reading ``fields`` must not go, or None; said in the note too."""
-        problems = [f"{self._fields.get(f, f.objectName())}: {f.problem()}" for f in fields]
+        problems = [f"{self._label(f)}: {f.problem()}" for f in fields]
         wrong = [p for f, p in zip(fields, problems, strict=True) if not f.is_acceptable()]
         if not wrong:
             return None
-        reason = "Not sent — " + "; ".join(wrong)
+        reason = QCoreApplication.translate("NumberField", "Not sent — {0}").format(
+            "; ".join(wrong)
+        )
         self.note.setText(reason)
         self.note.show()
         return reason
 
     def _refresh(self, *_args: object) -> None:
         wrong = [
-            f"{label}: {field.problem()}"
-            for field, label in self._fields.items()
+            f"{self._label(field)}: {field.problem()}"
+            for field in self._fields
             if not field.is_acceptable()
         ]
         self.note.setText("; ".join(wrong))
@@ -285,4 +341,10 @@ class FieldGate(QObject):
         for button, fields, tip in self._bound:
             bad = [f.problem() or "" for f in fields if not f.is_acceptable()]
             button.setEnabled(self._enabled and not bad)
-            button.setToolTip(f"{tip}\nDisabled: {bad[0]}" if bad else tip)
+            disabled = (
+                QCoreApplication.translate("NumberField", "Disabled: {0}").format(bad[0])
+                if bad
+                else ""
+            )
+            self._written[button] = f"{tip}\n{disabled}" if bad else tip
+            button.setToolTip(self._written[button])

@@ -34,7 +34,7 @@ from pathlib import Path
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QPointF, QRectF, QSize, Qt
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen, QPolygonF, QShowEvent
 from PySide6.QtWidgets import (
     QComboBox,
@@ -50,6 +50,8 @@ from PySide6.QtWidgets import (
 )
 
 from app.telemetry import ROTATION_KEY, VARIABLES, WINDOW_CHOICES_S, TelemetryRecorder
+from widgets.number_field import localized
+from widgets.retranslate import Texts
 from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
 from widgets.theme import LIGHT, PlotColours
 
@@ -86,7 +88,9 @@ class RotationCross(QWidget):
         self.colours = LIGHT
         self.setMinimumSize(120, 120)
         self.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
-        self.setToolTip("Platform rotation relative to the last Zero (counter-clockwise positive)")
+        self.setToolTip(
+            self.tr("Platform rotation relative to the last Zero (counter-clockwise positive)")
+        )
 
     @property
     def angle(self) -> float | None:
@@ -124,7 +128,7 @@ class RotationCross(QWidget):
             painter.drawText(
                 QRectF(-radius, -radius, 2 * radius, 2 * radius),
                 Qt.AlignmentFlag.AlignCenter,
-                "rotation\nnot plotted",
+                self.tr("rotation\nnot plotted"),
             )
             painter.end()
             return
@@ -176,7 +180,9 @@ class TelemetryDock(QDockWidget):
     """Plots, variable selector, rotation cross with Zero, Pause, window, Autoscale, exports."""
 
     def __init__(self, recorder: TelemetryRecorder, parent: QWidget | None = None) -> None:
-        super().__init__("Telemetry", parent)
+        super().__init__(parent)
+        self.texts = Texts(self)
+        self.texts.set(self.setWindowTitle, lambda: self.tr("Telemetry"))
         self.setObjectName("telemetry_dock")
         self.recorder = recorder
         self._drawn: dict[str, tuple[tuple[int, int, int], int]] = {}
@@ -204,27 +210,45 @@ class TelemetryDock(QDockWidget):
         self._show_window()
         self.set_autoscale(True)
         self.redraw()
+        self.texts.also(self._retranslate)
+
+    def _retranslate(self) -> None:
+        """Texts made from state, and the plots' titles, in the new language."""
+        self.cross.setToolTip(
+            QCoreApplication.translate(
+                "RotationCross",
+                "Platform rotation relative to the last Zero (counter-clockwise positive)",
+            )
+        )
+        self.set_paused(self.pause_button.isChecked())
+        self._title_plots()
+        self._show_variable()
 
     # --- building ------------------------------------------------------------
 
     def _build_toolbar(self) -> QHBoxLayout:
         bar = QHBoxLayout()
         bar.setSpacing(6)
-        bar.addWidget(QLabel("Variable"))
+        t = self.texts
+        bar.addWidget(t.label(lambda: self.tr("Variable")))
         self.variable_combo = QComboBox()
         self.variable_combo.setObjectName("telemetry_variable")
-        self.variable_combo.setToolTip(
-            "Subscriber variable to plot; the station asks for it in every frame"
-            " the info panel does not need"
+        t.set(
+            self.variable_combo.setToolTip,
+            lambda: self.tr(
+                "Subscriber variable to plot; the station asks for it in every frame"
+                " the info panel does not need"
+            ),
         )
-        self.variable_combo.addItem("none", None)
+        self.variable_combo.addItem("", None)
+        t.item(self.variable_combo, 0, lambda: self.tr("none"))
         for variable in VARIABLES:
             self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
         self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
         bar.addWidget(self.variable_combo)
 
         bar.addSpacing(10)
-        bar.addWidget(QLabel("Window"))
+        bar.addWidget(t.label(lambda: self.tr("Window")))
         self.window_combo = QComboBox()
         self.window_combo.setObjectName("telemetry_window")
         for seconds in WINDOW_CHOICES_S:
@@ -232,27 +256,32 @@ class TelemetryDock(QDockWidget):
         self.window_combo.currentIndexChanged.connect(self._window_chosen)
         bar.addWidget(self.window_combo)
 
-        self.pause_button = QPushButton("Pause")
+        self.pause_button = QPushButton(self.tr("Pause"))
         self.pause_button.setObjectName("telemetry_pause")
         self.pause_button.setCheckable(True)
         self.pause_button.setStyleSheet(CHECKED_BUTTON_STYLE)
-        self.pause_button.setToolTip("Freeze the plots; recording goes on")
+        t.set(self.pause_button.setToolTip, lambda: self.tr("Freeze the plots; recording goes on"))
         self.pause_button.toggled.connect(self.set_paused)
-        self.autoscale_button = QPushButton("Autoscale")
+        self.autoscale_button = t.button(
+            lambda: self.tr("Autoscale"),
+            lambda: self.tr(
+                "Fit each plot's vertical range to what is shown (dragging a plot turns it off)"
+            ),
+        )
         self.autoscale_button.setObjectName("telemetry_autoscale")
         self.autoscale_button.setCheckable(True)
         self.autoscale_button.setStyleSheet(CHECKED_BUTTON_STYLE)
-        self.autoscale_button.setToolTip(
-            "Fit each plot's vertical range to what is shown (dragging a plot turns it off)"
-        )
         self.autoscale_button.toggled.connect(self.set_autoscale)
-        self.csv_button = QPushButton("Export CSV…")
-        self.csv_button.setToolTip("Save the samples shown, with units, as CSV")
+        self.csv_button = t.button(
+            lambda: self.tr("Export CSV…"),
+            lambda: self.tr("Save the samples shown, with units, as CSV"),
+        )
         self.csv_button.clicked.connect(self._ask_csv)
-        self.png_button = QPushButton("Export PNG…")
-        self.png_button.setToolTip("Save the plots as an image")
+        self.png_button = t.button(
+            lambda: self.tr("Export PNG…"), lambda: self.tr("Save the plots as an image")
+        )
         self.png_button.clicked.connect(self._ask_png)
-        self.paused_label = QLabel("paused — recording goes on")
+        self.paused_label = t.label(lambda: self.tr("paused — recording goes on"))
         self.paused_label.setStyleSheet("color: #7a5200;")
         self.paused_label.hide()
         for widget in (self.pause_button, self.autoscale_button):
@@ -283,11 +312,10 @@ class TelemetryDock(QDockWidget):
             bottom = plot.getAxis("bottom")
             bottom.setStyle(showValues=False, tickLength=0)
             bottom.setHeight(1)
-        keys = [(a.name, AXIS_COLOURS[i % len(AXIS_COLOURS)]) for i, a in enumerate(axes)]
-        self._titles[0] = (self.tr("position") + (f" ({units})" if units else ""), keys)
-        velocity_unit = f" ({units}/s)" if units else ""
-        self._titles[1] = (self.tr("velocity") + velocity_unit, keys)
-        self._titles[2] = (self.tr("variable (none)"), [])
+        self._units = units
+        self._keys = [(a.name, AXIS_COLOURS[i % len(AXIS_COLOURS)]) for i, a in enumerate(axes)]
+        self._titles[2] = ("", [])
+        self._title_plots()
         for index, (position, velocity) in enumerate(
             zip(self.recorder.position_names(), self.recorder.velocity_names(), strict=True)
         ):
@@ -314,6 +342,17 @@ class TelemetryDock(QDockWidget):
         if cross is not None:
             cross.colours = colours
             cross.update()
+
+    def _title_plots(self) -> None:
+        """The position and velocity captions, in the language of the moment."""
+        units = self._units
+        self._titles[0] = (self.tr("position") + (f" ({units})" if units else ""), self._keys)
+        velocity_unit = f" ({units}/s)" if units else ""
+        self._titles[1] = (self.tr("velocity") + velocity_unit, self._keys)
+        if self.captions:
+            self._show_title(0)
+            self._show_title(1)
+            self._show_time_label()
 
     def _show_title(self, row: int) -> None:
         """The plot's caption beside it: what it shows, its unit, and a key of its curves.
@@ -380,7 +419,7 @@ class TelemetryDock(QDockWidget):
     def _build_rotation_column(self) -> QVBoxLayout:
         column = QVBoxLayout()
         column.setSpacing(4)
-        title = QLabel("Rotation")
+        title = self.texts.label(lambda: self.tr("Rotation"))
         title.setAlignment(Qt.AlignmentFlag.AlignHCenter)
         self.cross = RotationCross()
         self.cross.colours = self.colours
@@ -389,9 +428,10 @@ class TelemetryDock(QDockWidget):
         self.angle_label.setObjectName("rotation_angle")
         self.angle_label.setFont(monospace_font(2, bold=True))
         self.angle_label.setAlignment(Qt.AlignmentFlag.AlignHCenter)
-        self.zero_button = QPushButton("Zero")
+        self.zero_button = self.texts.button(
+            lambda: self.tr("Zero"), lambda: self.tr("Make the present angle read 0°")
+        )
         self.zero_button.setObjectName("rotation_zero")
-        self.zero_button.setToolTip("Make the present angle read 0°")
         self.zero_button.clicked.connect(self.zero)
         column.addWidget(title)
         column.addWidget(self.cross)
@@ -408,7 +448,7 @@ class TelemetryDock(QDockWidget):
             return
         self.recorder.set_paused(paused)
         self._show_time_label()
-        self.pause_button.setText("Paused" if paused else "Pause")
+        self.pause_button.setText(self.tr("Paused") if paused else self.tr("Pause"))
         self.paused_label.setVisible(paused)
 
     def set_autoscale(self, enabled: bool) -> None:
@@ -443,14 +483,17 @@ class TelemetryDock(QDockWidget):
 
     def _ask_csv(self) -> None:
         path, _ = QFileDialog.getSaveFileName(
-            self, "Export telemetry as CSV", "telemetry.csv", "CSV files (*.csv)"
+            self, self.tr("Export telemetry as CSV"), "telemetry.csv", self.tr("CSV files (*.csv)")
         )
         if path:
             self.export_csv(path)
 
     def _ask_png(self) -> None:
         path, _ = QFileDialog.getSaveFileName(
-            self, "Export telemetry plots as PNG", "telemetry.png", "PNG images (*.png)"
+            self,
+            self.tr("Export telemetry plots as PNG"),
+            "telemetry.png",
+            self.tr("PNG images (*.png)"),
         )
         if path:
             self.export_png(path)
@@ -488,7 +531,8 @@ class TelemetryDock(QDockWidget):
         self.zero_button.setEnabled(rotation)
         if not self.recorder.has_variables:
             self.variable_combo.setEnabled(False)
-            self.variable_combo.setToolTip("This machine reports no subscriber variables")
+            self.variable_combo.setToolTip(self.tr("This machine reports no subscriber variables"))
+
         self._drawn.pop("variable", None)
         self.variable_curve.setData(np.empty(0), np.empty(0))
         self.redraw()
@@ -559,7 +603,7 @@ class TelemetryDock(QDockWidget):
         if variable is not None and variable.key == ROTATION_KEY:
             angle = self.recorder.latest(variable.name)
         self.cross.set_angle(angle)
-        self.angle_label.setText("—" if angle is None else f"{angle:+.2f}°")
+        self.angle_label.setText("—" if angle is None else localized(f"{angle:+.2f}°"))
 
     def showEvent(self, event: QShowEvent) -> None:
         super().showEvent(event)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -237,20 +237,29 @@ class MachineSession(QObject):
         self.model.message.emit(f"{self.link.describe()}: {detail}")
 
     def _unsupported(self, what: str) -> bool:
-        self.model.message.emit(f"{self.model.profile.title} has no {what}")
+        self.model.message.emit(
+            QCoreApplication.translate("Session", "{0} has no {1}").format(
+                self.model.profile.title, what
+            )
+        )
+
         return False
 
     def _refuse_jog(self) -> bool:
         """A jog is the operator's alone: refused while a job owns the machine, too."""
         reason = self.model.jog_lock_reason
         if reason is not None:
-            self.model.message.emit(f"Jog refused: {reason}")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "Jog refused: {0}").format(reason)
+            )
             return True
         return self._refuse_motion()
 
     def _refuse_motion(self) -> bool:
         reason = self.model.motion_lock_reason()
         if reason is not None:
-            self.model.message.emit(f"Motion refused: {reason}")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "Motion refused: {0}").format(reason)
+            )
             return True
         return False

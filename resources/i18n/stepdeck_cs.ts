@@ -2,298 +2,1887 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs">
 <context>
+    <name>AbsolutePanel</name>
+    <message>
+        <source>Move to</source>
+        <translation>Najet na</translation>
+    </message>
+    <message>
+        <source>{0} target, 0…{1} {2} (Esc stops)</source>
+        <translation>Cílová poloha {0}, 0…{1} {2} (Esc zastaví)</translation>
+    </message>
+    <message>
+        <source>Go {0}</source>
+        <translation>Jet {0}</translation>
+    </message>
+    <message>
+        <source>Move {0} to the target</source>
+        <translation>Najet osou {0} na cílovou polohu</translation>
+    </message>
+    <message>
+        <source>{0} target</source>
+        <translation>Cíl {0}</translation>
+    </message>
+    <message>
+        <source>Go all</source>
+        <translation>Jet se všemi</translation>
+    </message>
+    <message>
+        <source>Move every axis to its target at once</source>
+        <translation>Najet všemi osami naráz na jejich cílové polohy</translation>
+    </message>
+</context>
+<context>
+    <name>AxisStatus</name>
+    <message>
+        <source>unknown</source>
+        <extracomment>Every axis status a session reports (the stage&apos;s, the drill&apos;s, usb3&apos;s and GRBL&apos;s).</extracomment>
+        <translation>neznámý</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>v klidu</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>v pohybu</translation>
+    </message>
+    <message>
+        <source>parking</source>
+        <translation>parkuje</translation>
+    </message>
+    <message>
+        <source>parked</source>
+        <translation>zaparkováno</translation>
+    </message>
+    <message>
+        <source>accelerating</source>
+        <translation>zrychluje</translation>
+    </message>
+    <message>
+        <source>constant speed</source>
+        <translation>konstantní rychlost</translation>
+    </message>
+    <message>
+        <source>decelerating</source>
+        <translation>brzdí</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>v cíli</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zastaveno</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>referenční jízda</translation>
+    </message>
+    <message>
+        <source>end switch hit</source>
+        <translation>narazil na koncový spínač</translation>
+    </message>
+    <message>
+        <source>blocked: battery low</source>
+        <translation>blokováno: slabá baterie</translation>
+    </message>
+    <message>
+        <source>blocked: charger connected</source>
+        <translation>blokováno: připojena nabíječka</translation>
+    </message>
+    <message>
+        <source>blocked: USB connected</source>
+        <translation>blokováno: připojeno USB</translation>
+    </message>
+    <message>
+        <source>sleeping</source>
+        <translation>spí</translation>
+    </message>
+    <message>
+        <source>driver fault</source>
+        <translation>porucha budiče</translation>
+    </message>
+    <message>
+        <source>parameter rejected</source>
+        <translation>parametr odmítnut</translation>
+    </message>
+    <message>
+        <source>unknown command</source>
+        <translation>neznámý příkaz</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>běží</translation>
+    </message>
+    <message>
+        <source>hold</source>
+        <translation>pozastaveno</translation>
+    </message>
+    <message>
+        <source>jog</source>
+        <translation>ruční posuv</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>alarm</translation>
+    </message>
+    <message>
+        <source>door</source>
+        <translation>dvířka otevřena</translation>
+    </message>
+    <message>
+        <source>check</source>
+        <translation>kontrolní režim</translation>
+    </message>
+    <message>
+        <source>home</source>
+        <translation>referenční jízda</translation>
+    </message>
+    <message>
+        <source>sleep</source>
+        <translation>spánek</translation>
+    </message>
+</context>
+<context>
+    <name>BoardDialog</name>
+    <message>
+        <source>String-art board</source>
+        <translation>Deska pro string art</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;{0}&lt;/b&gt; lists %n nail visit(s) without a param.txt. Which board is it for?</source>
+        <translation>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštěvu hřebíku bez souboru param.txt. Pro jakou desku je?</numerusform>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštěvy hřebíků bez souboru param.txt. Pro jakou desku je?</numerusform>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštěv hřebíků bez souboru param.txt. Pro jakou desku je?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>kruh</translation>
+    </message>
+    <message>
+        <source>{0}-gon</source>
+        <translation>{0}úhelník</translation>
+    </message>
+    <message>
+        <source>At least {0}: the list names nail {1}</source>
+        <translation>Nejméně {0}: seznam uvádí hřebík {1}</translation>
+    </message>
+    <message>
+        <source>Board radius; the nails sit 1.5 cm inside its edge</source>
+        <translation>Poloměr desky; hřebíky jsou 1,5 cm od jejího okraje</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Nails</source>
+        <translation>Hřebíky</translation>
+    </message>
+    <message>
+        <source>Board radius</source>
+        <translation>Poloměr desky</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionPanel</name>
+    <message>
+        <source>Built-in emulator</source>
+        <translation>Vestavěný emulátor</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Sériový port</translation>
+    </message>
+    <message>
+        <source>Bluetooth LE</source>
+        <translation>Bluetooth LE</translation>
+    </message>
+    <message>
+        <source>Switching machine closes this link and opens the new one</source>
+        <translation>Přepnutím stroje se toto spojení ukončí a otevře se nové</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Obnovit</translation>
+    </message>
+    <message>
+        <source>Serial</source>
+        <translation>Sériová linka</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Přenosová rychlost</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Hledat</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Připojit</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Odpojit</translation>
+    </message>
+    <message>
+        <source>Stop every axis, wait briefly for the machine to confirm, then close the link</source>
+        <translation>Zastaví všechny osy, krátce počká na potvrzení stroje a pak ukončí spojení</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Spojení</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>(bez názvu)</translation>
+    </message>
+    <message>
+        <source>Scanning…</source>
+        <translation>Hledám…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n found</source>
+        <translation>
+            <numerusform>nalezeno %n zařízení</numerusform>
+            <numerusform>nalezena %n zařízení</numerusform>
+            <numerusform>nalezeno %n zařízení</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No stage found</source>
+        <translation>Žádný stolek nenalezen</translation>
+    </message>
+    <message>
+        <source>Choose a serial port first (Refresh lists them).</source>
+        <translation>Nejdřív vyberte sériový port (Obnovit je vypíše).</translation>
+    </message>
+</context>
+<context>
+    <name>DeveloperPane</name>
+    <message>
+        <source>Developer</source>
+        <translation>Vývojář</translation>
+    </message>
+    <message>
+        <source>Simulation: the built-in emulator answers the commands</source>
+        <translation>Simulace: na příkazy odpovídá vestavěný emulátor</translation>
+    </message>
+    <message>
+        <source>On: connect the emulated stage (when no device is connected). Off: disconnect it.</source>
+        <translation>Zapnuto: připojí emulovaný stolek (není-li připojeno žádné zařízení). Vypnuto: odpojí ho.</translation>
+    </message>
+    <message>
+        <source>Simulation refused: {0}</source>
+        <translation>Simulace odmítnuta: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>DrillDriver</name>
+    <message>
+        <source>The hole at {0} may or may not have been drilled: the link went before the drill confirmed the command. Look at the board (the hole is marked in the preview), then drill it again or count it as drilled.</source>
+        <translation>Otvor na {0} možná je, možná není vyvrtaný: spojení spadlo dřív, než vrtačka příkaz potvrdila. Podívejte se na desku (otvor je vyznačen v náhledu) a pak ho vyvrtejte znovu, nebo ho započítejte jako vyvrtaný.</translation>
+    </message>
+    <message>
+        <source>Drill it again</source>
+        <translation>Vyvrtat znovu</translation>
+    </message>
+    <message>
+        <source>Count it as drilled</source>
+        <translation>Započítat jako vyvrtaný</translation>
+    </message>
+</context>
+<context>
+    <name>DrillPanel</name>
+    <message>
+        <source>N  home</source>
+        <extracomment>A move expected to run longer than this (seconds) asks first: it cannot be stopped. Buttons of the procedures that take no value: letter, caption, tooltip.</extracomment>
+        <translation>N  reference</translation>
+    </message>
+    <message>
+        <source>Home X then Y to the switches and the zero offsets</source>
+        <translation>Referenční jízda X, pak Y na spínače a nulové posuny</translation>
+    </message>
+    <message>
+        <source>V  drill</source>
+        <translation>V  vrtat</translation>
+    </message>
+    <message>
+        <source>Drill one hole where the head stands</source>
+        <translation>Vyvrtat jeden otvor tam, kde stojí hlava</translation>
+    </message>
+    <message>
+        <source>K  pen down</source>
+        <translation>K  pero dolů</translation>
+    </message>
+    <message>
+        <source>Lower the pen</source>
+        <translation>Spustit pero</translation>
+    </message>
+    <message>
+        <source>Z  pen up</source>
+        <translation>Z  pero nahoru</translation>
+    </message>
+    <message>
+        <source>Raise the pen</source>
+        <translation>Zvednout pero</translation>
+    </message>
+    <message>
+        <source>P  park</source>
+        <translation>P  parkovat</translation>
+    </message>
+    <message>
+        <source>Park at the back and switch the motors off</source>
+        <translation>Zaparkovat vzadu a vypnout motory</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Příkazy</translation>
+    </message>
+    <message>
+        <source>Move to (microsteps from zero)</source>
+        <translation>Najet na (mikrokroky od nuly)</translation>
+    </message>
+    <message>
+        <source>{0} target; {1} microsteps a mm</source>
+        <translation>Cíl {0}; {1} mikrokroků na mm</translation>
+    </message>
+    <message>
+        <source>Send {0}</source>
+        <translation>Odeslat {0}</translation>
+    </message>
+    <message>
+        <source>{0} target</source>
+        <translation>Cíl {0}</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Přesto odeslat</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Terminal</source>
+        <translation>Terminál</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odeslat</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Clear the terminal and the columns</source>
+        <translation>Vymazat terminál a sloupce</translation>
+    </message>
+    <message>
+        <source>command received</source>
+        <translation>příkaz přijat</translation>
+    </message>
+    <message>
+        <source>command done</source>
+        <translation>příkaz proveden</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent</source>
+        <translation>! {0}: neodesláno</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;{0}&lt;/b&gt; runs about {1} s, and the drill has no stop command: once it starts, STOP and Esc only drop what is queued after it. Send it?</source>
+        <translation>&lt;b&gt;{0}&lt;/b&gt; poběží asi {1} s a vrtačka nemá příkaz k zastavení: jakmile se rozjede, STOP a Esc jen zahodí, co je ve frontě za ním. Odeslat?</translation>
+    </message>
+    <message>
+        <source>! {0} refused by the drill; queue cleared</source>
+        <translation>! {0} vrtačka odmítla; fronta vyprázdněna</translation>
+    </message>
+</context>
+<context>
+    <name>DrillSession</name>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped; {1} finishes its procedure</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late.</extracomment>
+        <translation>Vrtačka nemá příkaz k zastavení: zahozeno příkazů ve frontě: {0}; {1} dokončí svůj postup</translation>
+    </message>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped</source>
+        <translation>Vrtačka nemá příkaz k zastavení: zahozeno příkazů ve frontě: {0}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} command(s) dropped</source>
+        <translation>Spojení ztraceno: {0}; zahozeno příkazů: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojení ztraceno: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>DynamicsPanel</name>
+    <message>
+        <source>Parameter</source>
+        <extracomment>What the last Apply or snapshot load replaced: (axis, parameter type, wire value). The open &quot;write these differences?&quot; question, while it is asked.</extracomment>
+        <translation>Parametr</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Načíst</translation>
+    </message>
+    <message>
+        <source>Read every parameter from the device into the fields</source>
+        <translation>Načíst všechny parametry ze zařízení do polí</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použít</translation>
+    </message>
+    <message>
+        <source>Write the edited values to the device; it confirms each one</source>
+        <translation>Zapsat upravené hodnoty do zařízení; každou potvrdí</translation>
+    </message>
+    <message>
+        <source>Save snapshot…</source>
+        <translation>Uložit zálohu…</translation>
+    </message>
+    <message>
+        <source>Save every stored parameter to a TOML file</source>
+        <translation>Uložit všechny uložené parametry do souboru TOML</translation>
+    </message>
+    <message>
+        <source>Load snapshot…</source>
+        <translation>Načíst zálohu…</translation>
+    </message>
+    <message>
+        <source>Show what a snapshot changes, then write only that</source>
+        <translation>Ukázat, co záloha změní, a zapsat jen to</translation>
+    </message>
+    <message>
+        <source>Undo last write</source>
+        <translation>Vrátit poslední zápis</translation>
+    </message>
+    <message>
+        <source>Write back what the last Apply or load replaced</source>
+        <translation>Zapsat zpět, co poslední Použít nebo načtení přepsalo</translation>
+    </message>
+    <message>
+        <source>Read only: measured by the device</source>
+        <translation>Jen ke čtení: měří zařízení</translation>
+    </message>
+    <message>
+        <source>; at most the mechanical travel, {0} mm</source>
+        <translation>; nejvýše mechanický rozsah pojezdu, {0} mm</translation>
+    </message>
+    <message>
+        <source>Reading from the device…</source>
+        <translation>Načítám ze zařízení…</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>není číslo</translation>
+    </message>
+    <message>
+        <source>✗ not sent</source>
+        <translation>✗ neodesláno</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written</source>
+        <translation>
+            <numerusform>zapsána %n hodnota</numerusform>
+            <numerusform>zapsány %n hodnoty</numerusform>
+            <numerusform>zapsáno %n hodnot</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not sent: {0}</source>
+        <translation>neodesláno: {0}</translation>
+    </message>
+    <message>
+        <source>Nothing changed</source>
+        <translation>Nic se nezměnilo</translation>
+    </message>
+    <message>
+        <source>Save parameter snapshot</source>
+        <translation>Uložit zálohu parametrů</translation>
+    </message>
+    <message>
+        <source>Parameter snapshots (*.toml)</source>
+        <translation>Zálohy parametrů (*.toml)</translation>
+    </message>
+    <message>
+        <source>Load parameter snapshot</source>
+        <translation>Načíst zálohu parametrů</translation>
+    </message>
+    <message>
+        <source>Not saved: not read yet: {0} — press Read</source>
+        <translation>Neuloženo: zatím nenačteno: {0} — stiskněte Načíst</translation>
+    </message>
+    <message>
+        <source>Not saved: {0}</source>
+        <translation>Neuloženo: {0}</translation>
+    </message>
+    <message>
+        <source>Snapshot saved to {0}</source>
+        <translation>Záloha uložena do {0}</translation>
+    </message>
+    <message>
+        <source>Not loaded: {0}</source>
+        <translation>Nenačteno: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: the device already holds every value</source>
+        <translation>{0}: zařízení už má všechny hodnoty</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) of {0} differ from the device:</source>
+        <translation>
+            <numerusform>%n hodnota z {0} se liší od zařízení:</numerusform>
+            <numerusform>%n hodnoty z {0} se liší od zařízení:</numerusform>
+            <numerusform>%n hodnot z {0} se liší od zařízení:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>This snapshot is of another machine ({0}, firmware {1}, {2}), not {3}.</source>
+        <translation>Tato záloha je z jiného stroje ({0}, firmware {1}, {2}), ne z {3}.</translation>
+    </message>
+    <message>
+        <source>Write anyway</source>
+        <translation>Přesto zapsat</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n</source>
+        <translation>
+            <numerusform>Zapsat %n</numerusform>
+            <numerusform>Zapsat %n</numerusform>
+            <numerusform>Zapsat %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Snapshot not loaded</source>
+        <translation>Záloha nenačtena</translation>
+    </message>
+    <message>
+        <source>Not written: not connected</source>
+        <translation>Nezapsáno: nepřipojeno</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written from the snapshot; the device confirms each</source>
+        <translation>
+            <numerusform>Ze zálohy zapsána %n hodnota; zařízení ji potvrdí</numerusform>
+            <numerusform>Ze zálohy zapsány %n hodnoty; zařízení každou potvrdí</numerusform>
+            <numerusform>Ze zálohy zapsáno %n hodnot; zařízení každou potvrdí</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written back</source>
+        <translation>
+            <numerusform>zpět zapsána %n hodnota</numerusform>
+            <numerusform>zpět zapsány %n hodnoty</numerusform>
+            <numerusform>zpět zapsáno %n hodnot</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>• edited</source>
+        <translation>• upraveno</translation>
+    </message>
+    <message>
+        <source>… writing</source>
+        <translation>… zapisuji</translation>
+    </message>
+    <message>
+        <source>✓ confirmed</source>
+        <translation>✓ potvrzeno</translation>
+    </message>
+    <message>
+        <source>✗ refused, kept {0}</source>
+        <translation>✗ odmítnuto, ponecháno {0}</translation>
+    </message>
+    <message>
+        <source>Asked for {0}</source>
+        <translation>Požadováno {0}</translation>
+    </message>
+</context>
+<context>
+    <name>EchoComposer</name>
+    <message>
+        <source>Inject echo</source>
+        <extracomment>How often the log view takes in what arrived: fast enough to feel live, slow enough that a 1 kHz stream costs ten redraws a second. Lines the view keeps; the log itself keeps :data:`LOG_CAPACITY` entries (saved in full).</extracomment>
+        <translation>Vložit echo</translation>
+    </message>
+    <message>
+        <source>µm, µm/s or value</source>
+        <translation>µm, µm/s nebo hodnota</translation>
+    </message>
+    <message>
+        <source>Subscriber ID: pick one, or type any hex ID 00…FF</source>
+        <translation>ID odběratele: vyberte nebo napište libovolné hex ID 00…FF</translation>
+    </message>
+    <message>
+        <source>subscriber value</source>
+        <translation>hodnota odběratele</translation>
+    </message>
+    <message>
+        <source>Inject</source>
+        <translation>Vložit</translation>
+    </message>
+    <message>
+        <source>Fold this echo into the model as if the device had sent it</source>
+        <translation>Promítnout toto echo do modelu, jako by ho poslalo zařízení</translation>
+    </message>
+    <message>
+        <source>Injected {0}</source>
+        <translation>Vloženo {0}</translation>
+    </message>
+</context>
+<context>
+    <name>EmulatorBox</name>
+    <message>
+        <source>Emulator</source>
+        <translation>Emulátor</translation>
+    </message>
+    <message>
+        <source>No emulator connected: these controls act on the built-in emulator. Turn Simulation on, or connect it on the Link page.</source>
+        <translation>Není připojen žádný emulátor: tyto ovládací prvky působí na vestavěný emulátor. Zapněte Simulaci nebo ho připojte na stránce Spojení.</translation>
+    </message>
+    <message>
+        <source>Charger connected</source>
+        <translation>Nabíječka připojena</translation>
+    </message>
+    <message>
+        <source>USB connected</source>
+        <translation>USB připojeno</translation>
+    </message>
+    <message>
+        <source>FRAM verification fault (writes refused)</source>
+        <translation>Chyba ověření FRAM (zápisy odmítnuty)</translation>
+    </message>
+    <message>
+        <source>State of charge; below 5 % the stage blocks motion</source>
+        <translation>Stav nabití; pod 5 % stolek blokuje pohyb</translation>
+    </message>
+    <message>
+        <source>Board temperature</source>
+        <translation>Teplota desky</translation>
+    </message>
+    <message>
+        <source>Platform rotation rate; the IMU&apos;s yaw integrates it</source>
+        <translation>Rychlost otáčení plošiny; IMU ji integruje do natočení</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Baterie</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Teplota</translation>
+    </message>
+    <message>
+        <source>Rotation rate</source>
+        <translation>Rychlost otáčení</translation>
+    </message>
+    <message>
+        <source>{0} end switch</source>
+        <translation>{0} koncový spínač</translation>
+    </message>
+    <message>
+        <source>Low</source>
+        <translation>Dolní</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s low end switch where the axis is now</source>
+        <translation>Sepnout dolní koncový spínač osy {0} tam, kde osa právě je</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>Horní</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s high end switch where the axis is now</source>
+        <translation>Sepnout horní koncový spínač osy {0} tam, kde osa právě je</translation>
+    </message>
+    <message>
+        <source>Driver fault</source>
+        <translation>Porucha budiče</translation>
+    </message>
+    <message>
+        <source>Over-temperature or stall on {0}&apos;s driver: the axis stops dead</source>
+        <translation>Přehřátí nebo zablokování budiče osy {0}: osa se okamžitě zastaví</translation>
+    </message>
+    <message>
+        <source>Drop link</source>
+        <translation>Přerušit spojení</translation>
+    </message>
+    <message>
+        <source>Cut the emulated cable; the station reconnects with back-off</source>
+        <translation>Přestřihnout emulovaný kabel; stanice se znovu připojí s prodlevami</translation>
+    </message>
+    <message>
+        <source>Corrupt</source>
+        <translation>Poškodit</translation>
+    </message>
+    <message>
+        <source>Flip a byte in each of the next frames from the device</source>
+        <translation>Změnit jeden bajt v každém z dalších rámců ze zařízení</translation>
+    </message>
+</context>
+<context>
+    <name>FrameLogView</name>
+    <message>
+        <source>Filter: words that must all occur, e.g. rx charger</source>
+        <translation>Filtr: slova, která se musí všechna vyskytovat, např. rx charger</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Freeze the view; frames are still recorded and appear on Resume</source>
+        <translation>Zmrazit výpis; rámce se dál zaznamenávají a objeví se po Pokračovat</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložit…</translation>
+    </message>
+    <message>
+        <source>Save the entries that pass the filter (all when empty)</source>
+        <translation>Uložit záznamy, které projdou filtrem (prázdný filtr: všechny)</translation>
+    </message>
+    <message>
+        <source>Frames sent (TX), received (RX), injected (INJ), rejected (BAD)</source>
+        <translation>Odeslané (TX), přijaté (RX), vložené (INJ) a odmítnuté (BAD) rámce</translation>
+    </message>
+    <message numerus="yes">
+        <source>… %n entries not shown: the log keeps the last {0}</source>
+        <translation>
+            <numerusform>… %n záznam nezobrazen: protokol uchovává posledních {0}</numerusform>
+            <numerusform>… %n záznamy nezobrazeny: protokol uchovává posledních {0}</numerusform>
+            <numerusform>… %n záznamů nezobrazeno: protokol uchovává posledních {0}</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries</source>
+        <translation>
+            <numerusform>%n záznam</numerusform>
+            <numerusform>%n záznamy</numerusform>
+            <numerusform>%n záznamů</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> — paused, %n new not shown</source>
+        <translation>
+            <numerusform> — pozastaveno, %n nový nezobrazen</numerusform>
+            <numerusform> — pozastaveno, %n nové nezobrazeny</numerusform>
+            <numerusform> — pozastaveno, %n nových nezobrazeno</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save frame log</source>
+        <translation>Uložit protokol rámců</translation>
+    </message>
+    <message>
+        <source>Log files (*.log *.txt);;All files (*)</source>
+        <translation>Protokoly (*.log *.txt);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Could not save: {0}</source>
+        <translation>Nelze uložit: {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n entries to {0}</source>
+        <translation>
+            <numerusform>Uložen %n záznam do {0}</numerusform>
+            <numerusform>Uloženy %n záznamy do {0}</numerusform>
+            <numerusform>Uloženo %n záznamů do {0}</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>GcodeEmulatorBox</name>
+    <message>
+        <source>Emulated board</source>
+        <translation>Emulovaná deska</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>The board&apos;s feed-hold button</source>
+        <translation>Tlačítko pozastavení posuvu na desce</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Start cyklu</translation>
+    </message>
+    <message>
+        <source>The board&apos;s cycle-start button</source>
+        <translation>Tlačítko startu cyklu na desce</translation>
+    </message>
+    <message>
+        <source>ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)</source>
+        <translation>Kód ALARM (1: koncový spínač, 2: softwarový limit, 3: reset za pohybu…)</translation>
+    </message>
+    <message>
+        <source>Raise alarm</source>
+        <translation>Vyvolat alarm</translation>
+    </message>
+    <message>
+        <source>ALARM code</source>
+        <translation>Kód ALARM</translation>
+    </message>
+</context>
+<context>
+    <name>GcodePanel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Poloha</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Reference</translation>
+    </message>
+    <message>
+        <source>Back to the origin ($H or G28)</source>
+        <translation>Referenční jízda do počátku ($H nebo G28)</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Pero nahoru</translation>
+    </message>
+    <message>
+        <source>Lift the pen ({0})</source>
+        <translation>Zvednout pero ({0})</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Pero dolů</translation>
+    </message>
+    <message>
+        <source>Lower the pen ({0})</source>
+        <translation>Spustit pero ({0})</translation>
+    </message>
+    <message>
+        <source>Hold !</source>
+        <translation>Pozastavit !</translation>
+    </message>
+    <message>
+        <source>Feed hold: decelerate and stop</source>
+        <translation>Pozastavení posuvu: zpomalit a zastavit</translation>
+    </message>
+    <message>
+        <source>Resume ~</source>
+        <translation>Pokračovat ~</translation>
+    </message>
+    <message>
+        <source>Carry on after a hold or M0</source>
+        <translation>Pokračovat po pozastavení nebo M0</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stop and drop everything buffered</source>
+        <translation>Softwarový reset (Ctrl-X): zastavit a zahodit vše ve vyrovnávací paměti</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konzole</translation>
+    </message>
+    <message>
+        <source>G0 X10 Y10, $$, M3 …  (Up/Down: history)</source>
+        <translation>G0 X10 Y10, $$, M3 …  (Nahoru/Dolů: historie)</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odeslat</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Clear the console</source>
+        <translation>Vymazat konzoli</translation>
+    </message>
+    <message>
+        <source>Beyond the travel</source>
+        <translation>Mimo rozsah pojezdu</translation>
+    </message>
+    <message>
+        <source>{0}.
+
+Send it to the machine anyway?</source>
+        <translation>{0}.
+
+Přesto odeslat do stroje?</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent (beyond the travel)</source>
+        <translation>! {0}: neodesláno (mimo rozsah pojezdu)</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent</source>
+        <translation>! {0}: neodesláno</translation>
+    </message>
+    <message numerus="yes">
+        <source>! soft reset: %n unanswered line(s) dropped</source>
+        <translation>
+            <numerusform>! softwarový reset: zahozen %n nepotvrzený řádek</numerusform>
+            <numerusform>! softwarový reset: zahozeny %n nepotvrzené řádky</numerusform>
+            <numerusform>! softwarový reset: zahozeno %n nepotvrzených řádků</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0}   feed {1}</source>
+        <translation>{0}   posuv {1}</translation>
+    </message>
+</context>
+<context>
+    <name>GcodeReplyBox</name>
+    <message>
+        <source>Inject a reply (as if the device sent it)</source>
+        <translation>Vložit odpověď (jako by ji poslalo zařízení)</translation>
+    </message>
+    <message>
+        <source>Inject</source>
+        <translation>Vložit</translation>
+    </message>
+    <message>
+        <source>Inject {0}</source>
+        <translation>Vložit {0}</translation>
+    </message>
+    <message>
+        <source>Not injected: {0}</source>
+        <translation>Nevloženo: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>GcodeSession</name>
+    <message>
+        <source>Stopped: {0} line(s) not run</source>
+        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. After a soft reset, answers are dropped and lines held until the banner, this long at most. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A soft reset was sent at this time and its banner has not come yet. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have.</extracomment>
+        <translation>Zastaveno: neprovedeno řádků: {0}</translation>
+    </message>
+    <message>
+        <source>Jog ends: the end of the travel</source>
+        <translation>Posuv končí: konec rozsahu pojezdu</translation>
+    </message>
+    <message>
+        <source>No reply from the device for {0} s</source>
+        <translation>Zařízení neodpovídá už {0} s</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} unanswered line(s)</source>
+        <translation>Spojení ztraceno: {0}; nepotvrzených řádků: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojení ztraceno: {0}</translation>
+    </message>
+    <message>
+        <source>Machine alarm {0}: {1}</source>
+        <translation>Alarm stroje {0}: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>InfoPanel</name>
+    <message>
+        <source>Battery charge and voltage</source>
+        <extracomment>Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
+        <translation>Nabití a napětí baterie</translation>
+    </message>
+    <message>
+        <source>Link {0}</source>
+        <translation>Spojení: {0}</translation>
+    </message>
+    <message>
+        <source>Last known — the link is {0}</source>
+        <translation>Poslední známá hodnota — spojení: {0}</translation>
+    </message>
+    <message>
+        <source>battery —</source>
+        <translation>baterie —</translation>
+    </message>
+    <message>
+        <source>battery {0} %</source>
+        <translation>baterie {0} %</translation>
+    </message>
+    <message>
+        <source>board —</source>
+        <translation>deska —</translation>
+    </message>
+    <message>
+        <source>board {0} °C</source>
+        <translation>deska {0} °C</translation>
+    </message>
+    <message>
+        <source>charger connected</source>
+        <translation>připojena nabíječka</translation>
+    </message>
+    <message>
+        <source>USB connected</source>
+        <translation>připojeno USB</translation>
+    </message>
+    <message>
+        <source>battery low</source>
+        <translation>slabá baterie</translation>
+    </message>
+</context>
+<context>
+    <name>JobPreview</name>
+    <message>
+        <source>work</source>
+        <extracomment>Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
+        <translation>práce</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>přejezd</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>hotovo</translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation>stroj</translation>
+    </message>
+    <message>
+        <source>reach</source>
+        <translation>dosah</translation>
+    </message>
+    <message>
+        <source>travel limits</source>
+        <translation>meze pojezdu</translation>
+    </message>
+    <message>
+        <source>Move the machine?</source>
+        <translation>Pohnout strojem?</translation>
+    </message>
+    <message>
+        <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
+        <extracomment>A refusal or news about click-to-move, for the dock&apos;s message area. Wall seconds the last :meth:`set_program` took to build the curves. Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <translation>Tažením posunete pohled, kolečkem zvětšíte, Celé ukáže vše; kliknutí (ne tažení) v dosahu nástroje po potvrzení natočí základnu a najede tam nástrojem</translation>
+    </message>
+    <message>
+        <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside the travel limits moves the machine there after you confirm</source>
+        <translation>Tažením posunete pohled, kolečkem zvětšíte, Celé ukáže vše; kliknutí (ne tažení) uvnitř mezí pojezdu po potvrzení najede strojem na to místo</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Celé</translation>
+    </message>
+    <message>
+        <source>Show the whole job (without a job, the tool&apos;s reach)</source>
+        <translation>Zobrazit celou úlohu (bez úlohy dosah nástroje)</translation>
+    </message>
+    <message>
+        <source>Show the whole job and the machine&apos;s travel</source>
+        <translation>Zobrazit celou úlohu a rozsah pojezdu stroje</translation>
+    </message>
+    <message>
+        <source>x on the work</source>
+        <translation>x na obrobku</translation>
+    </message>
+    <message>
+        <source>y on the work</source>
+        <translation>y na obrobku</translation>
+    </message>
+    <message>
+        <source>a job is under way</source>
+        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled).</extracomment>
+        <translation>probíhá úloha</translation>
+    </message>
+    <message>
+        <source>motion is locked: {0}</source>
+        <translation>pohyb je zablokován: {0}</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused ({0}): {1}</source>
+        <translation>Najetí kliknutím odmítnuto ({0}): {1}</translation>
+    </message>
+    <message>
+        <source>{0} {1} is outside {2}…{3}</source>
+        <translation>{0} {1} je mimo {2}…{3}</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused: {0} (soft limits)</source>
+        <translation>Najetí kliknutím odmítnuto: {0} (softwarové limity)</translation>
+    </message>
+    <message>
+        <source>Move to {0} {1}?</source>
+        <translation>Najet na {0} {1}?</translation>
+    </message>
+    <message>
+        <source>Click-to-move cancelled</source>
+        <translation>Najetí kliknutím zrušeno</translation>
+    </message>
+    <message>
+        <source>The machine refused the move to {0}</source>
+        <translation>Stroj odmítl najet na {0}</translation>
+    </message>
+    <message>
+        <source>Moving to {0}</source>
+        <translation>Najíždím na {0}</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused: {0} {1} from the centre is beyond {2}&apos;s travel 0…{3} (the reach)</source>
+        <translation>Najetí kliknutím odmítnuto: {0} {1} od středu je mimo pojezd osy {2} 0…{3} (dosah)</translation>
+    </message>
+    <message>
+        <source>Turn {0} by {1}° to {2} {3}, then move {4} to {5} {6}?</source>
+        <translation>Natočit {0} o {1}° na {2} {3} a pak najet osou {4} na {5} {6}?</translation>
+    </message>
+    <message>
+        <source>Click-to-move is off: {0}</source>
+        <translation>Najetí kliknutím je vypnuto: {0}</translation>
+    </message>
+    <message>
+        <source>Click a point within the tool&apos;s reach to move there (after confirming)</source>
+        <translation>Klikněte na bod v dosahu nástroje a (po potvrzení) na něj najedete</translation>
+    </message>
+    <message>
+        <source>Click a point inside the travel to move there (after confirming)</source>
+        <translation>Klikněte na bod uvnitř pojezdu a (po potvrzení) na něj najedete</translation>
+    </message>
+</context>
+<context>
+    <name>JobRunner</name>
+    <message>
+        <source>Stop the running job before loading another</source>
+        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels.</extracomment>
+        <translation>Před načtením další úlohy zastavte tu běžící</translation>
+    </message>
+    <message>
+        <source>Job {0} refused, {1} operation(s) cannot be run:
+{2}</source>
+        <translation>Úloha {0} odmítnuta, nelze provést operací: {1}
+{2}</translation>
+    </message>
+    <message>
+        <source>Job {0} was interrupted: {1} of {2} operations done; resume from {3} or discard the checkpoint</source>
+        <translation>Úloha {0} byla přerušena: hotovo {1} z {2} operací; pokračujte od {3}, nebo kontrolní bod zahoďte</translation>
+    </message>
+    <message>
+        <source>Resume from the checkpoint or discard it first</source>
+        <translation>Nejdřív pokračujte od kontrolního bodu, nebo ho zahoďte</translation>
+    </message>
+    <message>
+        <source>Answer the question about the interrupted operation first</source>
+        <translation>Nejdřív odpovězte na otázku k přerušené operaci</translation>
+    </message>
+    <message>
+        <source>Job aborted after {0} of {1} operations</source>
+        <translation>Úloha přerušena po {0} z {1} operací</translation>
+    </message>
+    <message>
+        <source>Checkpoint discarded; the job starts from the beginning</source>
+        <translation>Kontrolní bod zahozen; úloha začne od začátku</translation>
+    </message>
+    <message>
+        <source>Job failed at {0}: {1}</source>
+        <translation>Úloha selhala na {0}: {1}</translation>
+    </message>
+    <message>
+        <source>Job paused at {0}: link {1}; resume once the machine is back</source>
+        <translation>Úloha pozastavena na {0}: spojení {1}; pokračujte, až bude stroj zpět</translation>
+    </message>
+    <message>
+        <source>Job paused: link {0}; resume once the machine is back</source>
+        <translation>Úloha pozastavena: spojení {0}; pokračujte, až bude stroj zpět</translation>
+    </message>
+    <message>
+        <source>Job {0} done: {1} operations in {2} s</source>
+        <translation>Úloha {0} dokončena: operací {1} za {2} s</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Cannot run the job: {0}</source>
+        <translation>Úlohu nelze spustit: {0}</translation>
+    </message>
+    <message>
+        <source>a job is under way: pause and abort it, or let it finish</source>
+        <translation>probíhá úloha: pozastavte ji a přerušte, nebo ji nechte doběhnout</translation>
+    </message>
+</context>
+<context>
+    <name>JobsDock</name>
+    <message>
+        <source>Which kind of job?</source>
+        <extracomment>A refused file&apos;s further refused lines listed under the first one. Asks which job type an ambiguous file is; the chosen type&apos;s key, None when cancelled.</extracomment>
+        <translation>Jaký druh úlohy?</translation>
+    </message>
+    <message>
+        <source>{0}: the name and the content do not tell.
+Read it as:</source>
+        <translation>{0}: z názvu ani obsahu to nepoznám.
+Načíst jako:</translation>
+    </message>
+    <message>
+        <source>Jobs</source>
+        <extracomment>Files larger than this are not kept in memory for showing source lines. A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <translation>Úlohy</translation>
+    </message>
+    <message>
+        <source>The operation being executed and the line it came from</source>
+        <extracomment>The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
+        <translation>Právě prováděná operace a řádek, ze kterého pochází</translation>
+    </message>
+    <message>
+        <source>Messages about the job appear here</source>
+        <translation>Zde se objeví zprávy o úloze</translation>
+    </message>
+    <message>
+        <source>Draw holes with the pen</source>
+        <translation>Otvory kreslit perem</translation>
+    </message>
+    <message>
+        <source>Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling</source>
+        <translation>Vrtací soubory: místo vrtání nakreslit perem křížek velikosti otvoru (K / Z)</translation>
+    </message>
+    <message>
+        <source>Smallest bit first</source>
+        <translation>Nejmenší vrták první</translation>
+    </message>
+    <message>
+        <source>Drill files: the bit changes ordered from the smallest drill to the largest</source>
+        <translation>Vrtací soubory: výměny vrtáků od nejmenšího po největší</translation>
+    </message>
+    <message>
+        <source>1/{0} inch</source>
+        <translation>1/{0} palce</translation>
+    </message>
+    <message>
+        <source>Excellon step: the unit of bare integer coordinates</source>
+        <translation>Krok Excellon: jednotka celočíselných souřadnic bez formátu</translation>
+    </message>
+    <message>
+        <source>Excellon step</source>
+        <translation>Krok Excellon</translation>
+    </message>
+    <message>
+        <source>Use this machine&apos;s pen commands</source>
+        <translation>Použít příkazy pera tohoto stroje</translation>
+    </message>
+    <message>
+        <source>G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine&apos;s own pen-up / pen-down commands</source>
+        <translation>G-kód: řádky serva M300/M280, výšky pera v Z a M3/M5 se posílají jako vlastní příkazy tohoto stroje pro zvednutí / spuštění pera</translation>
+    </message>
+    <message>
+        <source>Skip lines it cannot run</source>
+        <translation>Přeskočit neproveditelné řádky</translation>
+    </message>
+    <message>
+        <source>G-code: lines this machine cannot execute (e.g. M18) are listed and left out instead of refusing the job</source>
+        <translation>G-kód: řádky, které tento stroj neumí provést (např. M18), se vypíší a vynechají, místo aby byla úloha odmítnuta</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otevřít…</translation>
+    </message>
+    <message>
+        <source>Open a job file (point list; the type is told by its content)</source>
+        <translation>Otevřít soubor úlohy (seznam bodů; typ se pozná podle obsahu)</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportovat…</translation>
+    </message>
+    <message>
+        <source>Write the loaded job out: G-code, or a string-art job&apos;s SD-card files</source>
+        <translation>Zapsat načtenou úlohu: G-kód nebo soubory pro SD kartu u string artu</translation>
+    </message>
+    <message>
+        <source>From photo…</source>
+        <translation>Z fotografie…</translation>
+    </message>
+    <message>
+        <source>String art from a photo: make a nail sequence, see it, load it as a job</source>
+        <translation>String art z fotografie: vytvořit pořadí hřebíků, prohlédnout ho a načíst jako úlohu</translation>
+    </message>
+    <message>
+        <source>no job loaded</source>
+        <translation>žádná úloha nenačtena</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Spustit</translation>
+    </message>
+    <message>
+        <source>Run the job from the start</source>
+        <translation>Spustit úlohu od začátku</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Pause after the operation under way finishes</source>
+        <translation>Pozastavit po dokončení probíhající operace</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Go on from where the job paused</source>
+        <translation>Pokračovat tam, kde se úloha pozastavila</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>Execute the next operation only, then pause</source>
+        <translation>Provést jen další operaci a pozastavit</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Přerušit</translation>
+    </message>
+    <message>
+        <source>Stop the machine now and end the job</source>
+        <translation>Okamžitě zastavit stroj a ukončit úlohu</translation>
+    </message>
+    <message>
+        <source>Go on after the last operation the machine completed; none is repeated</source>
+        <translation>Pokračovat za poslední operací, kterou stroj dokončil; nic se neopakuje</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodit</translation>
+    </message>
+    <message>
+        <source>Forget the interrupted run; Run then starts from the first operation</source>
+        <translation>Zapomenout přerušený běh; Spustit pak začne první operací</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Done: let the job go on</source>
+        <translation>Hotovo: úloha může pokračovat</translation>
+    </message>
+    <message>
+        <source>Again</source>
+        <translation>Znovu</translation>
+    </message>
+    <message>
+        <source>It did not happen: send it again</source>
+        <translation>Neproběhlo: odeslat znovu</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
+        <source>It happened: count it as done</source>
+        <translation>Proběhlo: započítat jako hotové</translation>
+    </message>
+    <message>
+        <source>Time left, from the dry run of the job on the machine&apos;s model</source>
+        <translation>Zbývající čas podle zkušebního průchodu úlohy na modelu stroje</translation>
+    </message>
+    <message>
+        <source>Open a job</source>
+        <translation>Otevřít úlohu</translation>
+    </message>
+    <message>
+        <source>{0}: not opened — a job is under way (abort it first)</source>
+        <translation>{0}: neotevřeno — probíhá úloha (nejdřív ji přerušte)</translation>
+    </message>
+    <message>
+        <source>{0}: not opened — still reading {1}</source>
+        <translation>{0}: neotevřeno — ještě se načítá {1}</translation>
+    </message>
+    <message>
+        <source>reading {0}…</source>
+        <translation>načítám {0}…</translation>
+    </message>
+    <message>
+        <source>{0}: not loaded — {1}</source>
+        <translation>{0}: nenačteno — {1}</translation>
+    </message>
+    <message>
+        <source>{0} — not loaded</source>
+        <translation>{0} — nenačteno</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more line(s) refused</source>
+        <translation>
+            <numerusform>… a odmítnut ještě %n další řádek</numerusform>
+            <numerusform>… a odmítnuty ještě %n další řádky</numerusform>
+            <numerusform>… a odmítnuto ještě %n dalších řádků</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0} — refused, preview only</source>
+        <translation>{0} — odmítnuto, jen náhled</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0}: %n operation(s) loaded</source>
+        <translation>
+            <numerusform>{0}: načtena %n operace</numerusform>
+            <numerusform>{0}: načteny %n operace</numerusform>
+            <numerusform>{0}: načteno %n operací</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>loaded</source>
+        <translation>načteno</translation>
+    </message>
+    <message>
+        <source>SD-card files (param.txt, poradi.txt)…</source>
+        <translation>Soubory pro SD kartu (param.txt, poradi.txt)…</translation>
+    </message>
+    <message>
+        <source>G-code program…</source>
+        <translation>Program v G-kódu…</translation>
+    </message>
+    <message>
+        <source>Nothing to export for this job on this machine</source>
+        <translation>U této úlohy na tomto stroji není co exportovat</translation>
+    </message>
+    <message>
+        <source>Folder for param.txt and poradi.txt</source>
+        <translation>Složka pro param.txt a poradi.txt</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>Exportovat G-kód</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode)</source>
+        <translation>G-kód (*.gcode)</translation>
+    </message>
+    <message>
+        <source>Only string-art jobs have SD-card files</source>
+        <translation>Soubory pro SD kartu mají jen úlohy string art</translation>
+    </message>
+    <message>
+        <source>SD-card files not written: {0}</source>
+        <translation>Soubory pro SD kartu nezapsány: {0}</translation>
+    </message>
+    <message>
+        <source>Wrote {0} and {1}</source>
+        <translation>Zapsáno {0} a {1}</translation>
+    </message>
+    <message>
+        <source>G-code not written: {0}</source>
+        <translation>G-kód nezapsán: {0}</translation>
+    </message>
+    <message>
+        <source>Wrote {0}</source>
+        <translation>Zapsáno {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0} — %n operation(s)</source>
+        <translation>
+            <numerusform>{0} — %n operace</numerusform>
+            <numerusform>{0} — %n operace</numerusform>
+            <numerusform>{0} — %n operací</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the end</source>
+        <translation>konec</translation>
+    </message>
+    <message numerus="yes">
+        <source>An interrupted run of &lt;b&gt;{0}&lt;/b&gt; completed {1} of %n operation(s). Resume from operation {2} ({3})?</source>
+        <translation>
+            <numerusform>Přerušený běh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operace. Pokračovat od operace {2} ({3})?</numerusform>
+            <numerusform>Přerušený běh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operací. Pokračovat od operace {2} ({3})?</numerusform>
+            <numerusform>Přerušený běh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operací. Pokračovat od operace {2} ({3})?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Resume from op {0}</source>
+        <translation>Pokračovat od op. {0}</translation>
+    </message>
+    <message>
+        <source> — motion locked: {0}</source>
+        <translation> — pohyb zablokován: {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0} / %n ops</source>
+        <translation>
+            <numerusform>{0} / %n op.</numerusform>
+            <numerusform>{0} / %n op.</numerusform>
+            <numerusform>{0} / %n op.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0} sent</source>
+        <translation>odesláno {0}</translation>
+    </message>
+    <message>
+        <source>Operations the machine reported as run, of all; and how many were sent to it (a G-code machine holds sent lines in its planner before it runs them)</source>
+        <translation>Operace, které stroj ohlásil jako provedené, ze všech; a kolik mu jich bylo odesláno (stroj s G-kódem drží odeslané řádky v plánovači, než je provede)</translation>
+    </message>
+    <message>
+        <source>elapsed {0}</source>
+        <translation>uplynulo {0}</translation>
+    </message>
+    <message>
+        <source>left {0}</source>
+        <translation>zbývá {0}</translation>
+    </message>
+    <message>
+        <source>file: {0}</source>
+        <translation>soubor: {0}</translation>
+    </message>
+    <message>
+        <source>machine: {0} microsteps</source>
+        <translation>stroj: {0} mikrokroků</translation>
+    </message>
+    <message>
+        <source>Operator: {0}</source>
+        <translation>Obsluha: {0}</translation>
+    </message>
+    <message>
+        <source>waiting for the operator: {0}</source>
+        <translation>čeká se na obsluhu: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>JoystickBox</name>
+    <message>
+        <source>Joystick (usb3 unit)</source>
+        <translation>Joystick (jednotka usb3)</translation>
+    </message>
+    <message>
+        <source>{0} stick: 500…524 is the dead zone; let go to centre it</source>
+        <translation>Páčka {0}: 500…524 je mrtvé pásmo; po puštění se vrátí na střed</translation>
+    </message>
+</context>
+<context>
+    <name>LinkDetail</name>
+    <message>
+        <source>built-in emulator</source>
+        <extracomment>Link details the transports give in English (protocol/ has no Qt to translate them).</extracomment>
+        <translation>vestavěný emulátor</translation>
+    </message>
+</context>
+<context>
+    <name>LinkState</name>
+    <message>
+        <source>disconnected</source>
+        <translation>odpojeno</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>připojuji</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>připojeno</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>bez čerstvých dat</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>ztraceno</translation>
+    </message>
+</context>
+<context>
+    <name>MachineModel</name>
+    <message>
+        <source>not connected</source>
+        <extracomment>Why the operator may not jog now though the machine may move (a job under way).</extracomment>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>spojení ztraceno</translation>
+    </message>
+    <message>
+        <source>sleeping — press Wake</source>
+        <translation>spí — stiskněte Probudit</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.py" line="94"/>
         <source>Jog X while held</source>
-        <extracomment>Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
+        <extracomment>How long a status-bar message stays (ms): long enough to read twice. Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
         <translation>Posuv v ose X, dokud je klávesa stisknutá</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="95"/>
         <source>Jog Y while held (two arrows at once = diagonal)</source>
         <translation>Posuv v ose Y, dokud je klávesa stisknutá (dvě šipky naráz = šikmo)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="98"/>
         <source>Jog Z while held, on machines with a Z axis</source>
         <translation>Posuv v ose Z, dokud je klávesa stisknutá (stroje s osou Z)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="100"/>
         <source>Jog and move at the other speed</source>
         <translation>Posuv a pohyb druhou rychlostí</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="101"/>
         <source>Stop everything, from anywhere in the window</source>
         <translation>Zastavit vše, odkudkoli v okně</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="104"/>
         <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
         <translation>Stránka Manuální / Absolutně / Relativně / Dynamika / Spojení / Osy / G-kód</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="108"/>
         <source>Open a job (File → Open job…)</source>
         <translation>Otevřít úlohu (Soubor → Otevřít úlohu…)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="109"/>
         <source>Quit (stops the machine first)</source>
         <translation>Ukončit (nejprve zastaví stroj)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="110"/>
         <source>Show or hide the jobs dock</source>
         <translation>Zobrazit nebo skrýt panel úloh</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="111"/>
         <source>Show or hide the telemetry plots</source>
         <translation>Zobrazit nebo skrýt grafy telemetrie</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="112"/>
         <source>Show or hide the developer pane</source>
         <translation>Zobrazit nebo skrýt vývojářský panel</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="113"/>
         <source>This list</source>
         <translation>Tento přehled</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="187"/>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="202"/>
         <source>&amp;Manual</source>
         <translation>&amp;Manuální</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="202"/>
         <source>Hold-to-jog buttons, Home (Alt+M)</source>
         <translation>Tlačítka posuvu (držet), reference (Alt+M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="212"/>
         <source>D&amp;rill</source>
         <extracomment>Every page with motion controls, for the motion lock.</extracomment>
         <translation>V&amp;rtačka</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="214"/>
         <source>Command buttons, X/Y, terminal (Alt+R)</source>
         <translation>Tlačítka příkazů, X/Y, terminál (Alt+R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="220"/>
         <source>A&amp;xes</source>
         <translation>Osy (&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="220"/>
         <source>Move by mm, step size, thread (Alt+X)</source>
         <translation>Posun o mm, mikrokrok, stoupání závitu (Alt+X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="227"/>
         <source>&amp;Absolute</source>
         <translation>&amp;Absolutně</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="227"/>
         <source>Move to a target (Alt+A)</source>
         <translation>Najet na zadanou polohu (Alt+A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="230"/>
         <source>&amp;Relative</source>
         <translation>&amp;Relativně</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="230"/>
         <source>Move by an increment (Alt+R)</source>
         <translation>Posunout o přírůstek (Alt+R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="236"/>
         <source>&amp;G-code</source>
         <translation>&amp;G-kód</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="238"/>
         <source>Console, pen, hold/resume/reset (Alt+G)</source>
         <translation>Konzole, pero, pozastavení/pokračování/reset (Alt+G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="249"/>
         <source>&amp;Dynamics</source>
         <translation>&amp;Dynamika</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="249"/>
         <source>Device parameters (Alt+D)</source>
         <translation>Parametry zařízení (Alt+D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="254"/>
         <source>&amp;Link</source>
         <translation>Spojení (&amp;L)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="256"/>
         <source>Connect: emulator, serial port or BLE (Alt+L)</source>
         <translation>Připojení: emulátor, sériový port nebo BLE (Alt+L)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="338"/>
         <source>&amp;Colours</source>
         <translation>&amp;Barvy</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="342"/>
-        <location filename="../../widgets/main_window.py" line="358"/>
         <source>As the &amp;system</source>
         <translation>Podle &amp;systému</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="343"/>
         <source>&amp;Light</source>
         <translation>&amp;Světlé</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="344"/>
         <source>&amp;Dark</source>
         <translation>&amp;Tmavé</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="355"/>
         <source>L&amp;anguage</source>
         <translation>&amp;Jazyk</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="374"/>
-        <source>The language changes when StepDeck starts again</source>
-        <translation>Jazyk se změní při příštím spuštění StepDecku</translation>
+        <source>Language: {0}</source>
+        <translation>Jazyk: {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="392"/>
         <source>Frames from the device that failed to decode</source>
         <translation>Rámce ze zařízení, které nešlo dekódovat</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="406"/>
         <source>&amp;File</source>
         <translation>&amp;Soubor</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="407"/>
         <source>&amp;Open job…</source>
         <translation>&amp;Otevřít úlohu…</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="411"/>
         <source>&amp;Recent jobs</source>
         <translation>&amp;Nedávné úlohy</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="415"/>
         <source>&amp;Quit</source>
         <translation>&amp;Ukončit</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="420"/>
         <source>&amp;Machine</source>
         <translation>S&amp;troj</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="421"/>
         <source>&amp;Connect</source>
         <translation>&amp;Připojit</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="423"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Odpojit</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="437"/>
         <source>&amp;Stop</source>
         <translation>&amp;Zastavit</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="437"/>
         <source>&amp;Drop the queue</source>
         <translation>&amp;Zahodit frontu příkazů</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="445"/>
         <source>&amp;View</source>
         <translation>&amp;Zobrazení</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="446"/>
         <source>&amp;Help</source>
         <translation>&amp;Nápověda</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="447"/>
         <source>&amp;Keys</source>
         <translation>&amp;Klávesy</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="452"/>
         <source>&amp;About StepDeck</source>
         <translation>&amp;O programu StepDeck</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="488"/>
         <source>(none yet)</source>
         <translation>(zatím žádné)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="491"/>
         <source>&amp;Clear the list</source>
         <translation>&amp;Vymazat seznam</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="518"/>
+        <source>{0}: not opened — the file is no longer there</source>
+        <translation>{0}: neotevřeno — soubor už neexistuje</translation>
+    </message>
+    <message>
         <source>A control station for small stepper machines: XY stages, a PCB drill, G-code plotters, the usb3 unit and the string-art winder.</source>
         <translation>Řídicí stanice pro malé stroje s krokovými motory: XY stolky, vrtačku plošných spojů, plotry na G-kód, jednotku usb3 a navíječku pro string art.</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="521"/>
         <source>Machine: {0}</source>
         <translation>Stroj: {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="524"/>
         <source>About StepDeck</source>
         <translation>O programu StepDeck</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="545"/>
         <source>Arrows do not jog while a text or number field has focus: there they keep editing. Esc works from anywhere in the window and also closes an open menu; in a dialog (like this one) Esc closes the dialog only.</source>
         <translation>Když je aktivní textové nebo číselné pole, šipky strojem nepohybují, ale upravují text. Esc funguje odkudkoli v okně a zavře i otevřenou nabídku; v dialogu (jako je tento) Esc jen zavře dialog.</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="553"/>
         <source>StepDeck — keyboard shortcuts</source>
         <translation>StepDeck — klávesové zkratky</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="669"/>
         <source>Motion locked: {0}</source>
         <translation>Pohyb zablokován: {0}</translation>
     </message>
+    <message>
+        <source>Link {0}</source>
+        <translation>Spojení: {0}</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.py" line="690"/>
         <source>rejected frames: %n</source>
         <translation>
             <numerusform>%n odmítnutý rámec</numerusform>
@@ -302,7 +1891,6 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.py" line="725"/>
         <source>%n settings could not be used; defaults are used instead</source>
         <translation>
             <numerusform>%n nastavení nešlo použít; platí výchozí hodnota</numerusform>
@@ -311,14 +1899,855 @@
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="730"/>
         <source>StepDeck — settings</source>
         <translation>StepDeck — nastavení</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="772"/>
         <source>Stopping every axis before closing…</source>
         <translation>Před zavřením zastavuji všechny osy…</translation>
+    </message>
+</context>
+<context>
+    <name>ManualPanel</name>
+    <message>
+        <source>Hold to jog {0}  (keys: {1}; Shift = other speed)</source>
+        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). Dialects whose home command homes every axis at once ($H / G28; the drill&apos;s N). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
+        <translation>Držením posouvat {0}  (klávesy: {1}; Shift = druhá rychlost)</translation>
+    </message>
+    <message>
+        <source>continuous (hold)</source>
+        <translation>plynule (držet)</translation>
+    </message>
+    <message>
+        <source>{0} {1} per tap</source>
+        <translation>{0} {1} na stisk</translation>
+    </message>
+    <message>
+        <source>What a tap of an arrow key does: jog while held, or move one step (never past the travel)</source>
+        <translation>Co udělá stisk šipky: posuv po dobu držení, nebo jeden krok (nikdy za mez pojezdu)</translation>
+    </message>
+    <message>
+        <source>Arrow keys:</source>
+        <translation>Šipky:</translation>
+    </message>
+    <message>
+        <source>Home all</source>
+        <translation>Reference všech os</translation>
+    </message>
+    <message>
+        <source>Home every axis: the machine&apos;s home command does them all</source>
+        <translation>Referenční jízda všech os: příkaz stroje je najede všechny</translation>
+    </message>
+    <message>
+        <source>Home {0}</source>
+        <translation>Reference {0}</translation>
+    </message>
+    <message>
+        <source>Seek the {0} home switch and set {0} = 0</source>
+        <translation>Najet na referenční spínač osy {0} a nastavit {0} = 0</translation>
+    </message>
+    <message>
+        <source>Hold to jog {0} up  (key: {1})</source>
+        <translation>Držením posouvat {0} nahoru  (klávesa: {1})</translation>
+    </message>
+    <message>
+        <source>Hold to jog {0} down  (key: {1})</source>
+        <translation>Držením posouvat {0} dolů  (klávesa: {1})</translation>
+    </message>
+</context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <source>Allowed: {0}</source>
+        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this).</extracomment>
+        <translation>Povoleno: {0}</translation>
+    </message>
+    <message>
+        <source>Not a number</source>
+        <translation>Není číslo</translation>
+    </message>
+    <message>
+        <source>Empty: type a number</source>
+        <translation>Prázdné: zadejte číslo</translation>
+    </message>
+    <message>
+        <source>{0} is outside {1}</source>
+        <translation>{0} je mimo {1}</translation>
+    </message>
+    <message numerus="yes">
+        <source>At most %n decimal(s)</source>
+        <translation>
+            <numerusform>Nejvýše %n desetinné místo</numerusform>
+            <numerusform>Nejvýše %n desetinná místa</numerusform>
+            <numerusform>Nejvýše %n desetinných míst</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Whole numbers only</source>
+        <translation>Jen celá čísla</translation>
+    </message>
+    <message>
+        <source>Not sent — {0}</source>
+        <translation>Neodesláno — {0}</translation>
+    </message>
+    <message>
+        <source>Disabled: {0}</source>
+        <translation>Nedostupné: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Operation</name>
+    <message>
+        <source>move</source>
+        <translation>pohyb</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>vrtání</translation>
+    </message>
+    <message>
+        <source>pen up</source>
+        <translation>pero nahoru</translation>
+    </message>
+    <message>
+        <source>pen down</source>
+        <translation>pero dolů</translation>
+    </message>
+    <message>
+        <source>wait</source>
+        <translation>čekání</translation>
+    </message>
+    <message>
+        <source>comment</source>
+        <translation>poznámka</translation>
+    </message>
+    <message>
+        <source>gcode</source>
+        <translation>G-kód</translation>
+    </message>
+    <message>
+        <source>move to {0}</source>
+        <translation>najet na {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RegistrationBar</name>
+    <message>
+        <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
+        <extracomment>The job as its file says (what registration transforms; Clear goes back to it).</extracomment>
+        <translation>Spodní strana oboustranné desky: úloha zrcadlená v rámci svého rozsahu</translation>
+    </message>
+    <message>
+        <source>Top side</source>
+        <translation>Horní strana</translation>
+    </message>
+    <message>
+        <source>Bottom, mirrored in X</source>
+        <translation>Spodní, zrcadleno v X</translation>
+    </message>
+    <message>
+        <source>Bottom, mirrored in Y</source>
+        <translation>Spodní, zrcadleno v Y</translation>
+    </message>
+    <message>
+        <source>Register on holes</source>
+        <translation>Zaměřit podle otvorů</translation>
+    </message>
+    <message>
+        <source>A reference hole: its number in drilling order</source>
+        <translation>Referenční otvor: jeho číslo v pořadí vrtání</translation>
+    </message>
+    <message>
+        <source>Here</source>
+        <translation>Zde</translation>
+    </message>
+    <message>
+        <source>The tool stands over this hole on the board: take its position</source>
+        <translation>Nástroj stojí nad tímto otvorem na desce: převzít jeho polohu</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>Zaměřit</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>cannot mirror: {0}</source>
+        <translation>nelze zrcadlit: {0}</translation>
+    </message>
+    <message>
+        <source>reference {0} (hole {1}) at X{2} Y{3}</source>
+        <translation>reference {0} (otvor {1}) na X{2} Y{3}</translation>
+    </message>
+    <message>
+        <source>registration refused: {0}</source>
+        <translation>zaměření odmítnuto: {0}</translation>
+    </message>
+    <message>
+        <source>registered: {0}</source>
+        <translation>zaměřeno: {0}</translation>
+    </message>
+    <message>
+        <source>warning: {0}</source>
+        <translation>upozornění: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RelativePanel</name>
+    <message>
+        <source>Move by</source>
+        <translation>Posunout o</translation>
+    </message>
+    <message>
+        <source>{0} increment (Esc stops)</source>
+        <translation>Přírůstek {0} (Esc zastaví)</translation>
+    </message>
+    <message>
+        <source>Move {0} back by the increment</source>
+        <translation>Posunout {0} o přírůstek zpět</translation>
+    </message>
+    <message>
+        <source>Move {0} forward by the increment</source>
+        <translation>Posunout {0} o přírůstek vpřed</translation>
+    </message>
+    <message>
+        <source>{0} increment</source>
+        <translation>Přírůstek {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RotationCross</name>
+    <message>
+        <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has).</extracomment>
+        <translation>Natočení plošiny vůči poslednímu vynulování (kladně proti směru hodinových ručiček)</translation>
+    </message>
+    <message>
+        <source>rotation
+not plotted</source>
+        <translation>natočení
+se nevykresluje</translation>
+    </message>
+</context>
+<context>
+    <name>Session</name>
+    <message>
+        <source>{0} has no {1}</source>
+        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A held jog ended without a release (dead-man or travel end): forget what is held.</extracomment>
+        <translation>{0} nemá {1}</translation>
+    </message>
+    <message>
+        <source>Jog refused: {0}</source>
+        <translation>Ruční posuv odmítnut: {0}</translation>
+    </message>
+    <message>
+        <source>Motion refused: {0}</source>
+        <translation>Pohyb odmítnut: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>StageParameter</name>
+    <message>
+        <source>Fast speed</source>
+        <extracomment>The parameters&apos; labels as app.machines.stage.parameters names them, for lupdate.</extracomment>
+        <translation>Rychlá rychlost</translation>
+    </message>
+    <message>
+        <source>Slow speed</source>
+        <translation>Pomalá rychlost</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Zrychlení</translation>
+    </message>
+    <message>
+        <source>Start speed</source>
+        <translation>Rozběhová rychlost</translation>
+    </message>
+    <message>
+        <source>Run current (IRUN)</source>
+        <translation>Proud za chodu (IRUN)</translation>
+    </message>
+    <message>
+        <source>Hold current (IHOLD)</source>
+        <translation>Přídržný proud (IHOLD)</translation>
+    </message>
+    <message>
+        <source>Microsteps per step</source>
+        <translation>Mikrokroků na krok</translation>
+    </message>
+    <message>
+        <source>Screw lead</source>
+        <translation>Stoupání šroubu</translation>
+    </message>
+    <message>
+        <source>Full steps per rev</source>
+        <translation>Celých kroků na otáčku</translation>
+    </message>
+    <message>
+        <source>Travel (soft limit)</source>
+        <translation>Pojezd (softwarový limit)</translation>
+    </message>
+    <message>
+        <source>Encoder position</source>
+        <translation>Poloha enkodéru</translation>
+    </message>
+</context>
+<context>
+    <name>StaticPanel</name>
+    <message>
+        <source>Fast</source>
+        <translation>Rychle</translation>
+    </message>
+    <message>
+        <source>Jog and move at the fast speed (hold Shift for slow)</source>
+        <translation>Posuv a pohyb rychlou rychlostí (se Shiftem pomalu)</translation>
+    </message>
+    <message>
+        <source>Slow</source>
+        <translation>Pomalu</translation>
+    </message>
+    <message>
+        <source>Jog and move at the slow speed (hold Shift for fast)</source>
+        <translation>Posuv a pohyb pomalou rychlostí (se Shiftem rychle)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Rychlost</translation>
+    </message>
+    <message>
+        <source>Shift held: slow</source>
+        <translation>Shift držen: pomalu</translation>
+    </message>
+    <message>
+        <source>Shift held: fast</source>
+        <translation>Shift držen: rychle</translation>
+    </message>
+    <message>
+        <source>Wake</source>
+        <translation>Probudit</translation>
+    </message>
+    <message>
+        <source>Sleep</source>
+        <translation>Uspat</translation>
+    </message>
+    <message>
+        <source>Wake the machine: motors on, motion controls unlocked</source>
+        <translation>Probudit stroj: motory zapnuty, ovládání pohybu odemčeno</translation>
+    </message>
+    <message>
+        <source>Put the machine to sleep: motors off, motion controls locked until Wake</source>
+        <translation>Uspat stroj: motory vypnuty, ovládání pohybu zamčeno až do Probudit</translation>
+    </message>
+</context>
+<context>
+    <name>Station</name>
+    <message>
+        <source>Stopping every axis before closing the link…</source>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <translation>Před ukončením spojení zastavuji všechny osy…</translation>
+    </message>
+    <message>
+        <source>The link went before the stop was confirmed; closed</source>
+        <translation>Spojení spadlo dřív, než bylo zastavení potvrzeno; ukončeno</translation>
+    </message>
+    <message>
+        <source>Every axis stopped; link closed</source>
+        <translation>Všechny osy stojí; spojení ukončeno</translation>
+    </message>
+    <message>
+        <source>The device did not confirm the stop within {0} s; link closed anyway — check that the machine stands</source>
+        <translation>Zařízení nepotvrdilo zastavení do {0} s; spojení přesto ukončeno — zkontrolujte, že stroj stojí</translation>
+    </message>
+    <message>
+        <source>reconnecting to {0}…</source>
+        <translation>znovu se připojuji k {0}…</translation>
+    </message>
+    <message>
+        <source>{0} — retrying in {1} s</source>
+        <translation>{0} — nový pokus za {1} s</translation>
+    </message>
+</context>
+<context>
+    <name>StopCaption</name>
+    <message>
+        <source>STOP</source>
+        <translation>STOP</translation>
+    </message>
+    <message>
+        <source>Stop every axis now (Esc, from anywhere in the window)</source>
+        <translation>Okamžitě zastavit všechny osy (Esc, odkudkoli v okně)</translation>
+    </message>
+    <message>
+        <source>DROP QUEUE
+this procedure
+finishes (Esc)</source>
+        <translation>ZAHODIT FRONTU
+tento postup
+doběhne (Esc)</translation>
+    </message>
+    <message>
+        <source>The {0} has no stop command: this button and Esc drop the commands queued after the running one; the procedure it is running finishes</source>
+        <translation>{0} nemá příkaz k zastavení: toto tlačítko a Esc zahodí příkazy ve frontě za právě prováděným; probíhající postup doběhne</translation>
+    </message>
+    <message>
+        <source>DROP QUEUE
+this move
+finishes (Esc)</source>
+        <translation>ZAHODIT FRONTU
+tento pohyb
+doběhne (Esc)</translation>
+    </message>
+    <message>
+        <source>The {0} has no stop command: this button and Esc drop the commands queued after the running one; the move it is running finishes</source>
+        <translation>{0} nemá příkaz k zastavení: toto tlačítko a Esc zahodí příkazy ve frontě za právě prováděným; probíhající pohyb doběhne</translation>
+    </message>
+    <message>
+        <source>Stop everything, from anywhere in the window</source>
+        <translation>Zastavit vše, odkudkoli v okně</translation>
+    </message>
+    <message>
+        <source>Drop the queued commands, from anywhere (no stop command: this procedure finishes)</source>
+        <translation>Zahodit příkazy ve frontě, odkudkoli (bez příkazu k zastavení: tento postup doběhne)</translation>
+    </message>
+    <message>
+        <source>Drop the queued commands, from anywhere (no stop command: this move finishes)</source>
+        <translation>Zahodit příkazy ve frontě, odkudkoli (bez příkazu k zastavení: tento pohyb doběhne)</translation>
+    </message>
+    <message>
+        <source>■ Stop</source>
+        <translation>■ Zastavit</translation>
+    </message>
+    <message>
+        <source>■ Drop
+queue</source>
+        <translation>■ Zahodit
+frontu</translation>
+    </message>
+</context>
+<context>
+    <name>StringArtGeneratorDialog</name>
+    <message>
+        <source>Photo for string art</source>
+        <extracomment>Asks for a photo to open / a folder to export into; None when the operator cancels.</extracomment>
+        <translation>Fotografie pro string art</translation>
+    </message>
+    <message>
+        <source>Folder for param.txt and poradi.txt</source>
+        <translation>Složka pro param.txt a poradi.txt</translation>
+    </message>
+    <message>
+        <source>String art from a photo</source>
+        <extracomment>The thread picture was redrawn with this many threads (while generating).</extracomment>
+        <translation>String art z fotografie</translation>
+    </message>
+    <message>
+        <source>Photo…</source>
+        <extracomment>How far from the centre the winder&apos;s needle goes (its X travel), if known.</extracomment>
+        <translation>Fotografie…</translation>
+    </message>
+    <message>
+        <source>Choose a PNG or JPEG photo</source>
+        <translation>Vyberte fotografii PNG nebo JPEG</translation>
+    </message>
+    <message>
+        <source>no photo chosen</source>
+        <translation>žádná fotografie nevybrána</translation>
+    </message>
+    <message>
+        <source>The photo cropped to the board</source>
+        <translation>Fotografie oříznutá na desku</translation>
+    </message>
+    <message>
+        <source>The thread, as wound at the real width</source>
+        <translation>Nit, jak bude navinuta ve skutečné šířce</translation>
+    </message>
+    <message>
+        <source>Photo on the board</source>
+        <translation>Fotografie na desce</translation>
+    </message>
+    <message>
+        <source>Thread</source>
+        <translation>Nit</translation>
+    </message>
+    <message>
+        <source>Choose a photo</source>
+        <translation>Vyberte fotografii</translation>
+    </message>
+    <message>
+        <source>Generate</source>
+        <translation>Vytvořit</translation>
+    </message>
+    <message>
+        <source>Make the nail sequence</source>
+        <translation>Vytvořit pořadí hřebíků</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Stop; nothing is kept</source>
+        <translation>Zastavit; nic se neuchová</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportovat…</translation>
+    </message>
+    <message>
+        <source>Write param.txt, poradi.txt and a PNG into a folder</source>
+        <translation>Zapsat param.txt, poradi.txt a PNG do složky</translation>
+    </message>
+    <message>
+        <source>Load as job</source>
+        <translation>Načíst jako úlohu</translation>
+    </message>
+    <message>
+        <source>Open the sequence in the jobs dock to drill and wind it</source>
+        <translation>Otevřít pořadí v panelu úloh k vrtání a navíjení</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Close (a generation is cancelled)</source>
+        <translation>Zavřít (probíhající výpočet se zruší)</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>kruh</translation>
+    </message>
+    <message>
+        <source>{0}-gon</source>
+        <translation>{0}úhelník</translation>
+    </message>
+    <message>
+        <source>Board radius (polomer_matrice); the nails sit 1.5 cm inside</source>
+        <translation>Poloměr desky (polomer_matrice); hřebíky jsou 1,5 cm od okraje</translation>
+    </message>
+    <message>
+        <source>The line budget</source>
+        <translation>Počet čar k dispozici</translation>
+    </message>
+    <message>
+        <source>The real thread&apos;s width: it sets how dark each thread looks</source>
+        <translation>Skutečná šířka niti: určuje, jak tmavě každá nit vypadá</translation>
+    </message>
+    <message>
+        <source>Least nails between a thread&apos;s two ends (never to a neighbouring nail)</source>
+        <translation>Nejmenší počet hřebíků mezi konci niti (nikdy na sousední hřebík)</translation>
+    </message>
+    <message>
+        <source>Pixels across the nail circle</source>
+        <translation>Pixelů přes kružnici hřebíků</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Nails</source>
+        <translation>Hřebíky</translation>
+    </message>
+    <message>
+        <source>Board radius</source>
+        <translation>Poloměr desky</translation>
+    </message>
+    <message>
+        <source>Line budget</source>
+        <translation>Počet čar</translation>
+    </message>
+    <message>
+        <source>Thread width</source>
+        <translation>Šířka niti</translation>
+    </message>
+    <message>
+        <source>Minimum skip</source>
+        <translation>Nejmenší přeskok</translation>
+    </message>
+    <message>
+        <source>Raster</source>
+        <translation>Rastr</translation>
+    </message>
+    <message>
+        <source>Crop: 1 fits the photo&apos;s shorter side to the board</source>
+        <translation>Ořez: 1 přizpůsobí kratší stranu fotografie desce</translation>
+    </message>
+    <message>
+        <source>Invert (light thread, dark board)</source>
+        <translation>Invertovat (světlá nit, tmavá deska)</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Zvětšení</translation>
+    </message>
+    <message>
+        <source>Centre across</source>
+        <translation>Střed vodorovně</translation>
+    </message>
+    <message>
+        <source>Centre down</source>
+        <translation>Střed svisle</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontrast</translation>
+    </message>
+    <message>
+        <source>Brightness</source>
+        <translation>Jas</translation>
+    </message>
+    <message>
+        <source>reading &lt;b&gt;{0}&lt;/b&gt;…</source>
+        <translation>načítám &lt;b&gt;{0}&lt;/b&gt;…</translation>
+    </message>
+    <message>
+        <source>Set the board and the crop, then Generate</source>
+        <translation>Nastavte desku a ořez, pak Vytvořit</translation>
+    </message>
+    <message>
+        <source>Not opened: {0}</source>
+        <translation>Neotevřeno: {0}</translation>
+    </message>
+    <message>
+        <source>Both pictures: the nail circle, {0} cm across, drawn {1} px wide (1 px = {2} mm).
+Thread {3} mm = 1/{4} of it; chosen on a raster of {5} mm pixels.</source>
+        <translation>Oba obrázky: kružnice hřebíků o průměru {0} cm vykreslená na šířku {1} px (1 px = {2} mm).
+Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
+    </message>
+    <message>
+        <source>Cannot generate: {0}</source>
+        <translation>Nelze vytvořit: {0}</translation>
+    </message>
+    <message>
+        <source>This winder&apos;s needle reaches {0} mm from the centre: boards up to {1} cm radius fit it (export the files for a larger one).</source>
+        <translation>Jehla této navíječky dosáhne {0} mm od středu: vejdou se desky do poloměru {1} cm (pro větší soubory exportujte).</translation>
+    </message>
+    <message>
+        <source>Preparing the lines between the nails…</source>
+        <translation>Připravuji čáry mezi hřebíky…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Ruším…</translation>
+    </message>
+    <message>
+        <source>Preparing the lines between the nails: {0} of {1}</source>
+        <translation>Připravuji čáry mezi hřebíky: {0} z {1}</translation>
+    </message>
+    <message>
+        <source>Winding: {0} threads of at most {1}</source>
+        <translation>Navíjení: {0} nití z nejvýše {1}</translation>
+    </message>
+    <message>
+        <source>stopped before the budget: no further thread brings it closer</source>
+        <translation>zastaveno před vyčerpáním: žádná další nit obraz nezlepší</translation>
+    </message>
+    <message>
+        <source>the whole budget</source>
+        <translation>celý počet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n thread(s) ({0}), {1} m of thread; {2}; {3} s</source>
+        <translation>
+            <numerusform>%n nit ({0}), {1} m niti; {2}; {3} s</numerusform>
+            <numerusform>%n nitě ({0}), {1} m niti; {2}; {3} s</numerusform>
+            <numerusform>%n nití ({0}), {1} m niti; {2}; {3} s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing kept</source>
+        <translation>Zrušeno: nic neuchováno</translation>
+    </message>
+    <message>
+        <source>Generation failed: {0}</source>
+        <translation>Výpočet selhal: {0}</translation>
+    </message>
+    <message>
+        <source>Nothing written to {0}: {1}</source>
+        <translation>Do {0} nic nezapsáno: {1}</translation>
+    </message>
+    <message>
+        <source>Wrote {0} in {1}</source>
+        <translation>Zapsáno {0} do {1}</translation>
+    </message>
+    <message>
+        <source>Not loaded: nothing written to {0}: {1}</source>
+        <translation>Nenačteno: do {0} nic nezapsáno: {1}</translation>
+    </message>
+    <message>
+        <source>Not loaded: see the jobs dock&apos;s messages</source>
+        <translation>Nenačteno: viz zprávy v panelu úloh</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryDock</name>
+    <message>
+        <source>Telemetry</source>
+        <translation>Telemetrie</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Proměnná</translation>
+    </message>
+    <message>
+        <source>Subscriber variable to plot; the station asks for it in every frame the info panel does not need</source>
+        <translation>Proměnná odběratele k vykreslení; stanice si ji vyžádá v každém rámci, který nepotřebuje informační panel</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádná</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>Okno</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Freeze the plots; recording goes on</source>
+        <translation>Zmrazit grafy; záznam pokračuje</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>Automatické měřítko</translation>
+    </message>
+    <message>
+        <source>Fit each plot&apos;s vertical range to what is shown (dragging a plot turns it off)</source>
+        <translation>Přizpůsobit svislý rozsah každého grafu zobrazeným datům (tažení grafu to vypne)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Exportovat CSV…</translation>
+    </message>
+    <message>
+        <source>Save the samples shown, with units, as CSV</source>
+        <translation>Uložit zobrazené vzorky s jednotkami jako CSV</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>Exportovat PNG…</translation>
+    </message>
+    <message>
+        <source>Save the plots as an image</source>
+        <translation>Uložit grafy jako obrázek</translation>
+    </message>
+    <message>
+        <source>paused — recording goes on</source>
+        <translation>pozastaveno — záznam pokračuje</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>poloha</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>variable</source>
+        <translation>proměnná</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>čas</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Natočení</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Vynulovat</translation>
+    </message>
+    <message>
+        <source>Make the present angle read 0°</source>
+        <translation>Nastavit současný úhel na 0°</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Export telemetry as CSV</source>
+        <translation>Exportovat telemetrii jako CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Soubory CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export telemetry plots as PNG</source>
+        <translation>Exportovat grafy telemetrie jako PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Obrázky PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>variable (none)</source>
+        <translation>proměnná (žádná)</translation>
+    </message>
+    <message>
+        <source>This machine reports no subscriber variables</source>
+        <translation>Tento stroj nehlásí žádné proměnné odběratele</translation>
+    </message>
+</context>
+<context>
+    <name>Usb3Panel</name>
+    <message>
+        <source>Move by</source>
+        <translation>Posunout o</translation>
+    </message>
+    <message>
+        <source>Will move</source>
+        <translation>Skutečně ujede</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>Thread</source>
+        <translation>Nit</translation>
+    </message>
+    <message>
+        <source>Signed distance to move {0} (fractions allowed)</source>
+        <translation>Vzdálenost se znaménkem pro posun {0} (i desetinná)</translation>
+    </message>
+    <message>
+        <source>The unit moves in whole steps: this is what it will really move</source>
+        <translation>Jednotka se pohybuje po celých krocích: tolik skutečně ujede</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <comment>full step</comment>
+        <translation>celý</translation>
+    </message>
+    <message>
+        <source>Send {0}</source>
+        <translation>Odeslat {0}</translation>
+    </message>
+    <message>
+        <source>{0} distance</source>
+        <translation>Vzdálenost {0}</translation>
+    </message>
+    <message>
+        <source>Zero all</source>
+        <translation>Vynulovat vše</translation>
+    </message>
+    <message>
+        <source>Set every axis&apos; position to 0 where it stands (C;)</source>
+        <translation>Nastavit polohu všech os tam, kde stojí, na 0 (C;)</translation>
+    </message>
+    <message>
+        <source>The unit moves in whole steps; top speed at this step size {0} mm/s</source>
+        <translation>Jednotka se pohybuje po celých krocích; nejvyšší rychlost při tomto kroku {0} mm/s</translation>
     </message>
 </context>
 </TS>

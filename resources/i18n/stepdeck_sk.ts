@@ -2,298 +2,1887 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="sk">
 <context>
+    <name>AbsolutePanel</name>
+    <message>
+        <source>Move to</source>
+        <translation>Presunúť na</translation>
+    </message>
+    <message>
+        <source>{0} target, 0…{1} {2} (Esc stops)</source>
+        <translation>Cieľová poloha {0}, 0…{1} {2} (Esc zastaví)</translation>
+    </message>
+    <message>
+        <source>Go {0}</source>
+        <translation>Ísť {0}</translation>
+    </message>
+    <message>
+        <source>Move {0} to the target</source>
+        <translation>Presunúť os {0} na cieľovú polohu</translation>
+    </message>
+    <message>
+        <source>{0} target</source>
+        <translation>Cieľ {0}</translation>
+    </message>
+    <message>
+        <source>Go all</source>
+        <translation>Ísť so všetkými</translation>
+    </message>
+    <message>
+        <source>Move every axis to its target at once</source>
+        <translation>Presunúť všetky osi naraz na ich cieľové polohy</translation>
+    </message>
+</context>
+<context>
+    <name>AxisStatus</name>
+    <message>
+        <source>unknown</source>
+        <extracomment>Every axis status a session reports (the stage&apos;s, the drill&apos;s, usb3&apos;s and GRBL&apos;s).</extracomment>
+        <translation>neznámy</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>v pokoji</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>v pohybe</translation>
+    </message>
+    <message>
+        <source>parking</source>
+        <translation>parkuje</translation>
+    </message>
+    <message>
+        <source>parked</source>
+        <translation>zaparkované</translation>
+    </message>
+    <message>
+        <source>accelerating</source>
+        <translation>zrýchľuje</translation>
+    </message>
+    <message>
+        <source>constant speed</source>
+        <translation>konštantná rýchlosť</translation>
+    </message>
+    <message>
+        <source>decelerating</source>
+        <translation>brzdí</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>v cieli</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zastavené</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>referenčný posuv</translation>
+    </message>
+    <message>
+        <source>end switch hit</source>
+        <translation>narazil na koncový spínač</translation>
+    </message>
+    <message>
+        <source>blocked: battery low</source>
+        <translation>blokované: slabá batéria</translation>
+    </message>
+    <message>
+        <source>blocked: charger connected</source>
+        <translation>blokované: pripojená nabíjačka</translation>
+    </message>
+    <message>
+        <source>blocked: USB connected</source>
+        <translation>blokované: pripojené USB</translation>
+    </message>
+    <message>
+        <source>sleeping</source>
+        <translation>spí</translation>
+    </message>
+    <message>
+        <source>driver fault</source>
+        <translation>porucha budiča</translation>
+    </message>
+    <message>
+        <source>parameter rejected</source>
+        <translation>parameter odmietnutý</translation>
+    </message>
+    <message>
+        <source>unknown command</source>
+        <translation>neznámy príkaz</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>beží</translation>
+    </message>
+    <message>
+        <source>hold</source>
+        <translation>pozastavené</translation>
+    </message>
+    <message>
+        <source>jog</source>
+        <translation>ručný posuv</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>alarm</translation>
+    </message>
+    <message>
+        <source>door</source>
+        <translation>dvierka otvorené</translation>
+    </message>
+    <message>
+        <source>check</source>
+        <translation>kontrolný režim</translation>
+    </message>
+    <message>
+        <source>home</source>
+        <translation>referenčný posuv</translation>
+    </message>
+    <message>
+        <source>sleep</source>
+        <translation>spánok</translation>
+    </message>
+</context>
+<context>
+    <name>BoardDialog</name>
+    <message>
+        <source>String-art board</source>
+        <translation>Doska pre string art</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;{0}&lt;/b&gt; lists %n nail visit(s) without a param.txt. Which board is it for?</source>
+        <translation>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštevu klinca bez súboru param.txt. Pre akú dosku je?</numerusform>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštevy klincov bez súboru param.txt. Pre akú dosku je?</numerusform>
+            <numerusform>&lt;b&gt;{0}&lt;/b&gt; obsahuje %n návštev klincov bez súboru param.txt. Pre akú dosku je?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>kruh</translation>
+    </message>
+    <message>
+        <source>{0}-gon</source>
+        <translation>{0}-uholník</translation>
+    </message>
+    <message>
+        <source>At least {0}: the list names nail {1}</source>
+        <translation>Najmenej {0}: zoznam uvádza klinec {1}</translation>
+    </message>
+    <message>
+        <source>Board radius; the nails sit 1.5 cm inside its edge</source>
+        <translation>Polomer dosky; klince sú 1,5 cm od jej okraja</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Nails</source>
+        <translation>Klince</translation>
+    </message>
+    <message>
+        <source>Board radius</source>
+        <translation>Polomer dosky</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionPanel</name>
+    <message>
+        <source>Built-in emulator</source>
+        <translation>Vstavaný emulátor</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Sériový port</translation>
+    </message>
+    <message>
+        <source>Bluetooth LE</source>
+        <translation>Bluetooth LE</translation>
+    </message>
+    <message>
+        <source>Switching machine closes this link and opens the new one</source>
+        <translation>Prepnutím stroja sa toto spojenie ukončí a otvorí sa nové</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Obnoviť</translation>
+    </message>
+    <message>
+        <source>Serial</source>
+        <translation>Sériová linka</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Prenosová rýchlosť</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Hľadať</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Pripojiť</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Odpojiť</translation>
+    </message>
+    <message>
+        <source>Stop every axis, wait briefly for the machine to confirm, then close the link</source>
+        <translation>Zastaví všetky osi, krátko počká na potvrdenie stroja a potom ukončí spojenie</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Spojenie</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>(bez názvu)</translation>
+    </message>
+    <message>
+        <source>Scanning…</source>
+        <translation>Hľadám…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n found</source>
+        <translation>
+            <numerusform>nájdené %n zariadenie</numerusform>
+            <numerusform>nájdené %n zariadenia</numerusform>
+            <numerusform>nájdených %n zariadení</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No stage found</source>
+        <translation>Nenašiel sa žiadny stolík</translation>
+    </message>
+    <message>
+        <source>Choose a serial port first (Refresh lists them).</source>
+        <translation>Najprv vyberte sériový port (Obnoviť ich vypíše).</translation>
+    </message>
+</context>
+<context>
+    <name>DeveloperPane</name>
+    <message>
+        <source>Developer</source>
+        <translation>Vývojár</translation>
+    </message>
+    <message>
+        <source>Simulation: the built-in emulator answers the commands</source>
+        <translation>Simulácia: na príkazy odpovedá vstavaný emulátor</translation>
+    </message>
+    <message>
+        <source>On: connect the emulated stage (when no device is connected). Off: disconnect it.</source>
+        <translation>Zapnuté: pripojí emulovaný stolík (ak nie je pripojené žiadne zariadenie). Vypnuté: odpojí ho.</translation>
+    </message>
+    <message>
+        <source>Simulation refused: {0}</source>
+        <translation>Simulácia odmietnutá: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>DrillDriver</name>
+    <message>
+        <source>The hole at {0} may or may not have been drilled: the link went before the drill confirmed the command. Look at the board (the hole is marked in the preview), then drill it again or count it as drilled.</source>
+        <translation>Otvor na {0} možno je, možno nie je vyvŕtaný: spojenie spadlo skôr, než vŕtačka príkaz potvrdila. Pozrite sa na dosku (otvor je vyznačený v náhľade) a potom ho vyvŕtajte znova, alebo ho započítajte ako vyvŕtaný.</translation>
+    </message>
+    <message>
+        <source>Drill it again</source>
+        <translation>Vyvŕtať znova</translation>
+    </message>
+    <message>
+        <source>Count it as drilled</source>
+        <translation>Započítať ako vyvŕtaný</translation>
+    </message>
+</context>
+<context>
+    <name>DrillPanel</name>
+    <message>
+        <source>N  home</source>
+        <extracomment>A move expected to run longer than this (seconds) asks first: it cannot be stopped. Buttons of the procedures that take no value: letter, caption, tooltip.</extracomment>
+        <translation>N  referencia</translation>
+    </message>
+    <message>
+        <source>Home X then Y to the switches and the zero offsets</source>
+        <translation>Referenčný posuv X, potom Y na spínače a nulové posuny</translation>
+    </message>
+    <message>
+        <source>V  drill</source>
+        <translation>V  vŕtať</translation>
+    </message>
+    <message>
+        <source>Drill one hole where the head stands</source>
+        <translation>Vyvŕtať jeden otvor tam, kde stojí hlava</translation>
+    </message>
+    <message>
+        <source>K  pen down</source>
+        <translation>K  pero dole</translation>
+    </message>
+    <message>
+        <source>Lower the pen</source>
+        <translation>Spustiť pero</translation>
+    </message>
+    <message>
+        <source>Z  pen up</source>
+        <translation>Z  pero hore</translation>
+    </message>
+    <message>
+        <source>Raise the pen</source>
+        <translation>Zdvihnúť pero</translation>
+    </message>
+    <message>
+        <source>P  park</source>
+        <translation>P  parkovať</translation>
+    </message>
+    <message>
+        <source>Park at the back and switch the motors off</source>
+        <translation>Zaparkovať vzadu a vypnúť motory</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Príkazy</translation>
+    </message>
+    <message>
+        <source>Move to (microsteps from zero)</source>
+        <translation>Presunúť na (mikrokroky od nuly)</translation>
+    </message>
+    <message>
+        <source>{0} target; {1} microsteps a mm</source>
+        <translation>Cieľ {0}; {1} mikrokrokov na mm</translation>
+    </message>
+    <message>
+        <source>Send {0}</source>
+        <translation>Odoslať {0}</translation>
+    </message>
+    <message>
+        <source>{0} target</source>
+        <translation>Cieľ {0}</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Napriek tomu odoslať</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Terminal</source>
+        <translation>Terminál</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odoslať</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazať</translation>
+    </message>
+    <message>
+        <source>Clear the terminal and the columns</source>
+        <translation>Vymazať terminál a stĺpce</translation>
+    </message>
+    <message>
+        <source>command received</source>
+        <translation>príkaz prijatý</translation>
+    </message>
+    <message>
+        <source>command done</source>
+        <translation>príkaz vykonaný</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent</source>
+        <translation>! {0}: neodoslané</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;{0}&lt;/b&gt; runs about {1} s, and the drill has no stop command: once it starts, STOP and Esc only drop what is queued after it. Send it?</source>
+        <translation>&lt;b&gt;{0}&lt;/b&gt; pobeží asi {1} s a vŕtačka nemá príkaz na zastavenie: keď sa rozbehne, STOP a Esc len zahodia, čo je vo fronte za ním. Odoslať?</translation>
+    </message>
+    <message>
+        <source>! {0} refused by the drill; queue cleared</source>
+        <translation>! {0} vŕtačka odmietla; front vyprázdnený</translation>
+    </message>
+</context>
+<context>
+    <name>DrillSession</name>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped; {1} finishes its procedure</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late.</extracomment>
+        <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}; {1} dokončí svoj postup</translation>
+    </message>
+    <message>
+        <source>The drill has no stop command: {0} queued command(s) dropped</source>
+        <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} command(s) dropped</source>
+        <translation>Spojenie stratené: {0}; zahodených príkazov: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojenie stratené: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>DynamicsPanel</name>
+    <message>
+        <source>Parameter</source>
+        <extracomment>What the last Apply or snapshot load replaced: (axis, parameter type, wire value). The open &quot;write these differences?&quot; question, while it is asked.</extracomment>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Načítať</translation>
+    </message>
+    <message>
+        <source>Read every parameter from the device into the fields</source>
+        <translation>Načítať všetky parametre zo zariadenia do polí</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Write the edited values to the device; it confirms each one</source>
+        <translation>Zapísať upravené hodnoty do zariadenia; každú potvrdí</translation>
+    </message>
+    <message>
+        <source>Save snapshot…</source>
+        <translation>Uložiť zálohu…</translation>
+    </message>
+    <message>
+        <source>Save every stored parameter to a TOML file</source>
+        <translation>Uložiť všetky uložené parametre do súboru TOML</translation>
+    </message>
+    <message>
+        <source>Load snapshot…</source>
+        <translation>Načítať zálohu…</translation>
+    </message>
+    <message>
+        <source>Show what a snapshot changes, then write only that</source>
+        <translation>Ukázať, čo záloha zmení, a zapísať len to</translation>
+    </message>
+    <message>
+        <source>Undo last write</source>
+        <translation>Vrátiť posledný zápis</translation>
+    </message>
+    <message>
+        <source>Write back what the last Apply or load replaced</source>
+        <translation>Zapísať späť, čo posledné Použiť alebo načítanie prepísalo</translation>
+    </message>
+    <message>
+        <source>Read only: measured by the device</source>
+        <translation>Len na čítanie: meria zariadenie</translation>
+    </message>
+    <message>
+        <source>; at most the mechanical travel, {0} mm</source>
+        <translation>; najviac mechanický rozsah posuvu, {0} mm</translation>
+    </message>
+    <message>
+        <source>Reading from the device…</source>
+        <translation>Načítavam zo zariadenia…</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>nie je číslo</translation>
+    </message>
+    <message>
+        <source>✗ not sent</source>
+        <translation>✗ neodoslané</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written</source>
+        <translation>
+            <numerusform>zapísaná %n hodnota</numerusform>
+            <numerusform>zapísané %n hodnoty</numerusform>
+            <numerusform>zapísaných %n hodnôt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not sent: {0}</source>
+        <translation>neodoslané: {0}</translation>
+    </message>
+    <message>
+        <source>Nothing changed</source>
+        <translation>Nič sa nezmenilo</translation>
+    </message>
+    <message>
+        <source>Save parameter snapshot</source>
+        <translation>Uložiť zálohu parametrov</translation>
+    </message>
+    <message>
+        <source>Parameter snapshots (*.toml)</source>
+        <translation>Zálohy parametrov (*.toml)</translation>
+    </message>
+    <message>
+        <source>Load parameter snapshot</source>
+        <translation>Načítať zálohu parametrov</translation>
+    </message>
+    <message>
+        <source>Not saved: not read yet: {0} — press Read</source>
+        <translation>Neuložené: zatiaľ nenačítané: {0} — stlačte Načítať</translation>
+    </message>
+    <message>
+        <source>Not saved: {0}</source>
+        <translation>Neuložené: {0}</translation>
+    </message>
+    <message>
+        <source>Snapshot saved to {0}</source>
+        <translation>Záloha uložená do {0}</translation>
+    </message>
+    <message>
+        <source>Not loaded: {0}</source>
+        <translation>Nenačítané: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: the device already holds every value</source>
+        <translation>{0}: zariadenie už má všetky hodnoty</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) of {0} differ from the device:</source>
+        <translation>
+            <numerusform>%n hodnota z {0} sa líši od zariadenia:</numerusform>
+            <numerusform>%n hodnoty z {0} sa líšia od zariadenia:</numerusform>
+            <numerusform>%n hodnôt z {0} sa líši od zariadenia:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>This snapshot is of another machine ({0}, firmware {1}, {2}), not {3}.</source>
+        <translation>Táto záloha je z iného stroja ({0}, firmvér {1}, {2}), nie z {3}.</translation>
+    </message>
+    <message>
+        <source>Write anyway</source>
+        <translation>Napriek tomu zapísať</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n</source>
+        <translation>
+            <numerusform>Zapísať %n</numerusform>
+            <numerusform>Zapísať %n</numerusform>
+            <numerusform>Zapísať %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Snapshot not loaded</source>
+        <translation>Záloha nenačítaná</translation>
+    </message>
+    <message>
+        <source>Not written: not connected</source>
+        <translation>Nezapísané: nepripojené</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written from the snapshot; the device confirms each</source>
+        <translation>
+            <numerusform>Zo zálohy zapísaná %n hodnota; zariadenie ju potvrdí</numerusform>
+            <numerusform>Zo zálohy zapísané %n hodnoty; zariadenie každú potvrdí</numerusform>
+            <numerusform>Zo zálohy zapísaných %n hodnôt; zariadenie každú potvrdí</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written back</source>
+        <translation>
+            <numerusform>späť zapísaná %n hodnota</numerusform>
+            <numerusform>späť zapísané %n hodnoty</numerusform>
+            <numerusform>späť zapísaných %n hodnôt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>• edited</source>
+        <translation>• upravené</translation>
+    </message>
+    <message>
+        <source>… writing</source>
+        <translation>… zapisujem</translation>
+    </message>
+    <message>
+        <source>✓ confirmed</source>
+        <translation>✓ potvrdené</translation>
+    </message>
+    <message>
+        <source>✗ refused, kept {0}</source>
+        <translation>✗ odmietnuté, ponechané {0}</translation>
+    </message>
+    <message>
+        <source>Asked for {0}</source>
+        <translation>Požadované {0}</translation>
+    </message>
+</context>
+<context>
+    <name>EchoComposer</name>
+    <message>
+        <source>Inject echo</source>
+        <extracomment>How often the log view takes in what arrived: fast enough to feel live, slow enough that a 1 kHz stream costs ten redraws a second. Lines the view keeps; the log itself keeps :data:`LOG_CAPACITY` entries (saved in full).</extracomment>
+        <translation>Vložiť echo</translation>
+    </message>
+    <message>
+        <source>µm, µm/s or value</source>
+        <translation>µm, µm/s alebo hodnota</translation>
+    </message>
+    <message>
+        <source>Subscriber ID: pick one, or type any hex ID 00…FF</source>
+        <translation>ID odberateľa: vyberte alebo napíšte ľubovoľné hex ID 00…FF</translation>
+    </message>
+    <message>
+        <source>subscriber value</source>
+        <translation>hodnota odberateľa</translation>
+    </message>
+    <message>
+        <source>Inject</source>
+        <translation>Vložiť</translation>
+    </message>
+    <message>
+        <source>Fold this echo into the model as if the device had sent it</source>
+        <translation>Premietnuť toto echo do modelu, ako keby ho poslalo zariadenie</translation>
+    </message>
+    <message>
+        <source>Injected {0}</source>
+        <translation>Vložené {0}</translation>
+    </message>
+</context>
+<context>
+    <name>EmulatorBox</name>
+    <message>
+        <source>Emulator</source>
+        <translation>Emulátor</translation>
+    </message>
+    <message>
+        <source>No emulator connected: these controls act on the built-in emulator. Turn Simulation on, or connect it on the Link page.</source>
+        <translation>Nie je pripojený žiadny emulátor: tieto ovládacie prvky pôsobia na vstavaný emulátor. Zapnite Simuláciu alebo ho pripojte na stránke Spojenie.</translation>
+    </message>
+    <message>
+        <source>Charger connected</source>
+        <translation>Nabíjačka pripojená</translation>
+    </message>
+    <message>
+        <source>USB connected</source>
+        <translation>USB pripojené</translation>
+    </message>
+    <message>
+        <source>FRAM verification fault (writes refused)</source>
+        <translation>Chyba overenia FRAM (zápisy odmietnuté)</translation>
+    </message>
+    <message>
+        <source>State of charge; below 5 % the stage blocks motion</source>
+        <translation>Stav nabitia; pod 5 % stolík blokuje pohyb</translation>
+    </message>
+    <message>
+        <source>Board temperature</source>
+        <translation>Teplota dosky</translation>
+    </message>
+    <message>
+        <source>Platform rotation rate; the IMU&apos;s yaw integrates it</source>
+        <translation>Rýchlosť otáčania plošiny; IMU ju integruje do natočenia</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batéria</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Teplota</translation>
+    </message>
+    <message>
+        <source>Rotation rate</source>
+        <translation>Rýchlosť otáčania</translation>
+    </message>
+    <message>
+        <source>{0} end switch</source>
+        <translation>{0} koncový spínač</translation>
+    </message>
+    <message>
+        <source>Low</source>
+        <translation>Dolný</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s low end switch where the axis is now</source>
+        <translation>Zopnúť dolný koncový spínač osi {0} tam, kde os práve je</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>Horný</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s high end switch where the axis is now</source>
+        <translation>Zopnúť horný koncový spínač osi {0} tam, kde os práve je</translation>
+    </message>
+    <message>
+        <source>Driver fault</source>
+        <translation>Porucha budiča</translation>
+    </message>
+    <message>
+        <source>Over-temperature or stall on {0}&apos;s driver: the axis stops dead</source>
+        <translation>Prehriatie alebo zablokovanie budiča osi {0}: os sa okamžite zastaví</translation>
+    </message>
+    <message>
+        <source>Drop link</source>
+        <translation>Prerušiť spojenie</translation>
+    </message>
+    <message>
+        <source>Cut the emulated cable; the station reconnects with back-off</source>
+        <translation>Prestrihnúť emulovaný kábel; stanica sa znova pripojí s odstupom</translation>
+    </message>
+    <message>
+        <source>Corrupt</source>
+        <translation>Poškodiť</translation>
+    </message>
+    <message>
+        <source>Flip a byte in each of the next frames from the device</source>
+        <translation>Zmeniť jeden bajt v každom z ďalších rámcov zo zariadenia</translation>
+    </message>
+</context>
+<context>
+    <name>FrameLogView</name>
+    <message>
+        <source>Filter: words that must all occur, e.g. rx charger</source>
+        <translation>Filter: slová, ktoré sa musia všetky vyskytovať, napr. rx charger</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastaviť</translation>
+    </message>
+    <message>
+        <source>Freeze the view; frames are still recorded and appear on Resume</source>
+        <translation>Zmraziť výpis; rámce sa ďalej zaznamenávajú a objavia sa po Pokračovať</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazať</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložiť…</translation>
+    </message>
+    <message>
+        <source>Save the entries that pass the filter (all when empty)</source>
+        <translation>Uložiť záznamy, ktoré prejdú filtrom (prázdny filter: všetky)</translation>
+    </message>
+    <message>
+        <source>Frames sent (TX), received (RX), injected (INJ), rejected (BAD)</source>
+        <translation>Odoslané (TX), prijaté (RX), vložené (INJ) a odmietnuté (BAD) rámce</translation>
+    </message>
+    <message numerus="yes">
+        <source>… %n entries not shown: the log keeps the last {0}</source>
+        <translation>
+            <numerusform>… %n záznam nezobrazený: protokol uchováva posledných {0}</numerusform>
+            <numerusform>… %n záznamy nezobrazené: protokol uchováva posledných {0}</numerusform>
+            <numerusform>… %n záznamov nezobrazených: protokol uchováva posledných {0}</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovať</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries</source>
+        <translation>
+            <numerusform>%n záznam</numerusform>
+            <numerusform>%n záznamy</numerusform>
+            <numerusform>%n záznamov</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> — paused, %n new not shown</source>
+        <translation>
+            <numerusform> — pozastavené, %n nový nezobrazený</numerusform>
+            <numerusform> — pozastavené, %n nové nezobrazené</numerusform>
+            <numerusform> — pozastavené, %n nových nezobrazených</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save frame log</source>
+        <translation>Uložiť protokol rámcov</translation>
+    </message>
+    <message>
+        <source>Log files (*.log *.txt);;All files (*)</source>
+        <translation>Protokoly (*.log *.txt);;Všetky súbory (*)</translation>
+    </message>
+    <message>
+        <source>Could not save: {0}</source>
+        <translation>Nedá sa uložiť: {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n entries to {0}</source>
+        <translation>
+            <numerusform>Uložený %n záznam do {0}</numerusform>
+            <numerusform>Uložené %n záznamy do {0}</numerusform>
+            <numerusform>Uložených %n záznamov do {0}</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>GcodeEmulatorBox</name>
+    <message>
+        <source>Emulated board</source>
+        <translation>Emulovaná doska</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Pozastaviť</translation>
+    </message>
+    <message>
+        <source>The board&apos;s feed-hold button</source>
+        <translation>Tlačidlo pozastavenia posuvu na doske</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Štart cyklu</translation>
+    </message>
+    <message>
+        <source>The board&apos;s cycle-start button</source>
+        <translation>Tlačidlo štartu cyklu na doske</translation>
+    </message>
+    <message>
+        <source>ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)</source>
+        <translation>Kód ALARM (1: koncový spínač, 2: softvérový limit, 3: reset počas pohybu…)</translation>
+    </message>
+    <message>
+        <source>Raise alarm</source>
+        <translation>Vyvolať alarm</translation>
+    </message>
+    <message>
+        <source>ALARM code</source>
+        <translation>Kód ALARM</translation>
+    </message>
+</context>
+<context>
+    <name>GcodePanel</name>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Poloha</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referencia</translation>
+    </message>
+    <message>
+        <source>Back to the origin ($H or G28)</source>
+        <translation>Referenčný posuv do počiatku ($H alebo G28)</translation>
+    </message>
+    <message>
+        <source>Pen up</source>
+        <translation>Pero hore</translation>
+    </message>
+    <message>
+        <source>Lift the pen ({0})</source>
+        <translation>Zdvihnúť pero ({0})</translation>
+    </message>
+    <message>
+        <source>Pen down</source>
+        <translation>Pero dole</translation>
+    </message>
+    <message>
+        <source>Lower the pen ({0})</source>
+        <translation>Spustiť pero ({0})</translation>
+    </message>
+    <message>
+        <source>Hold !</source>
+        <translation>Pozastaviť !</translation>
+    </message>
+    <message>
+        <source>Feed hold: decelerate and stop</source>
+        <translation>Pozastavenie posuvu: spomaliť a zastaviť</translation>
+    </message>
+    <message>
+        <source>Resume ~</source>
+        <translation>Pokračovať ~</translation>
+    </message>
+    <message>
+        <source>Carry on after a hold or M0</source>
+        <translation>Pokračovať po pozastavení alebo M0</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Soft reset (Ctrl-X): stop and drop everything buffered</source>
+        <translation>Softvérový reset (Ctrl-X): zastaviť a zahodiť všetko vo vyrovnávacej pamäti</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konzola</translation>
+    </message>
+    <message>
+        <source>G0 X10 Y10, $$, M3 …  (Up/Down: history)</source>
+        <translation>G0 X10 Y10, $$, M3 …  (Hore/Dole: história)</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odoslať</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazať</translation>
+    </message>
+    <message>
+        <source>Clear the console</source>
+        <translation>Vymazať konzolu</translation>
+    </message>
+    <message>
+        <source>Beyond the travel</source>
+        <translation>Mimo rozsahu posuvu</translation>
+    </message>
+    <message>
+        <source>{0}.
+
+Send it to the machine anyway?</source>
+        <translation>{0}.
+
+Napriek tomu odoslať do stroja?</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent (beyond the travel)</source>
+        <translation>! {0}: neodoslané (mimo rozsahu posuvu)</translation>
+    </message>
+    <message>
+        <source>! {0}: not sent</source>
+        <translation>! {0}: neodoslané</translation>
+    </message>
+    <message numerus="yes">
+        <source>! soft reset: %n unanswered line(s) dropped</source>
+        <translation>
+            <numerusform>! softvérový reset: zahodený %n nepotvrdený riadok</numerusform>
+            <numerusform>! softvérový reset: zahodené %n nepotvrdené riadky</numerusform>
+            <numerusform>! softvérový reset: zahodených %n nepotvrdených riadkov</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0}   feed {1}</source>
+        <translation>{0}   posuv {1}</translation>
+    </message>
+</context>
+<context>
+    <name>GcodeReplyBox</name>
+    <message>
+        <source>Inject a reply (as if the device sent it)</source>
+        <translation>Vložiť odpoveď (ako keby ju poslalo zariadenie)</translation>
+    </message>
+    <message>
+        <source>Inject</source>
+        <translation>Vložiť</translation>
+    </message>
+    <message>
+        <source>Inject {0}</source>
+        <translation>Vložiť {0}</translation>
+    </message>
+    <message>
+        <source>Not injected: {0}</source>
+        <translation>Nevložené: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>GcodeSession</name>
+    <message>
+        <source>Stopped: {0} line(s) not run</source>
+        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. After a soft reset, answers are dropped and lines held until the banner, this long at most. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A soft reset was sent at this time and its banner has not come yet. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have.</extracomment>
+        <translation>Zastavené: nevykonaných riadkov: {0}</translation>
+    </message>
+    <message>
+        <source>Jog ends: the end of the travel</source>
+        <translation>Posuv končí: koniec rozsahu posuvu</translation>
+    </message>
+    <message>
+        <source>No reply from the device for {0} s</source>
+        <translation>Zariadenie neodpovedá už {0} s</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}; {1} unanswered line(s)</source>
+        <translation>Spojenie stratené: {0}; nepotvrdených riadkov: {1}</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojenie stratené: {0}</translation>
+    </message>
+    <message>
+        <source>Machine alarm {0}: {1}</source>
+        <translation>Alarm stroja {0}: {1}</translation>
+    </message>
+</context>
+<context>
+    <name>InfoPanel</name>
+    <message>
+        <source>Battery charge and voltage</source>
+        <extracomment>Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
+        <translation>Nabitie a napätie batérie</translation>
+    </message>
+    <message>
+        <source>Link {0}</source>
+        <translation>Spojenie: {0}</translation>
+    </message>
+    <message>
+        <source>Last known — the link is {0}</source>
+        <translation>Posledná známa hodnota — spojenie: {0}</translation>
+    </message>
+    <message>
+        <source>battery —</source>
+        <translation>batéria —</translation>
+    </message>
+    <message>
+        <source>battery {0} %</source>
+        <translation>batéria {0} %</translation>
+    </message>
+    <message>
+        <source>board —</source>
+        <translation>doska —</translation>
+    </message>
+    <message>
+        <source>board {0} °C</source>
+        <translation>doska {0} °C</translation>
+    </message>
+    <message>
+        <source>charger connected</source>
+        <translation>pripojená nabíjačka</translation>
+    </message>
+    <message>
+        <source>USB connected</source>
+        <translation>pripojené USB</translation>
+    </message>
+    <message>
+        <source>battery low</source>
+        <translation>slabá batéria</translation>
+    </message>
+</context>
+<context>
+    <name>JobPreview</name>
+    <message>
+        <source>work</source>
+        <extracomment>Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
+        <translation>práca</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>prejazd</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>hotovo</translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation>stroj</translation>
+    </message>
+    <message>
+        <source>reach</source>
+        <translation>dosah</translation>
+    </message>
+    <message>
+        <source>travel limits</source>
+        <translation>hranice posuvu</translation>
+    </message>
+    <message>
+        <source>Move the machine?</source>
+        <translation>Pohnúť strojom?</translation>
+    </message>
+    <message>
+        <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
+        <extracomment>A refusal or news about click-to-move, for the dock&apos;s message area. Wall seconds the last :meth:`set_program` took to build the curves. Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
+    </message>
+    <message>
+        <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside the travel limits moves the machine there after you confirm</source>
+        <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) vnútri hraníc posuvu po potvrdení presunie stroj na to miesto</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Celé</translation>
+    </message>
+    <message>
+        <source>Show the whole job (without a job, the tool&apos;s reach)</source>
+        <translation>Zobraziť celú úlohu (bez úlohy dosah nástroja)</translation>
+    </message>
+    <message>
+        <source>Show the whole job and the machine&apos;s travel</source>
+        <translation>Zobraziť celú úlohu a rozsah posuvu stroja</translation>
+    </message>
+    <message>
+        <source>x on the work</source>
+        <translation>x na obrobku</translation>
+    </message>
+    <message>
+        <source>y on the work</source>
+        <translation>y na obrobku</translation>
+    </message>
+    <message>
+        <source>a job is under way</source>
+        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled).</extracomment>
+        <translation>prebieha úloha</translation>
+    </message>
+    <message>
+        <source>motion is locked: {0}</source>
+        <translation>pohyb je zablokovaný: {0}</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepripojené</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused ({0}): {1}</source>
+        <translation>Presun kliknutím odmietnutý ({0}): {1}</translation>
+    </message>
+    <message>
+        <source>{0} {1} is outside {2}…{3}</source>
+        <translation>{0} {1} je mimo {2}…{3}</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused: {0} (soft limits)</source>
+        <translation>Presun kliknutím odmietnutý: {0} (softvérové limity)</translation>
+    </message>
+    <message>
+        <source>Move to {0} {1}?</source>
+        <translation>Presunúť na {0} {1}?</translation>
+    </message>
+    <message>
+        <source>Click-to-move cancelled</source>
+        <translation>Presun kliknutím zrušený</translation>
+    </message>
+    <message>
+        <source>The machine refused the move to {0}</source>
+        <translation>Stroj odmietol presun na {0}</translation>
+    </message>
+    <message>
+        <source>Moving to {0}</source>
+        <translation>Presúvam na {0}</translation>
+    </message>
+    <message>
+        <source>Click-to-move refused: {0} {1} from the centre is beyond {2}&apos;s travel 0…{3} (the reach)</source>
+        <translation>Presun kliknutím odmietnutý: {0} {1} od stredu je mimo posuv osi {2} 0…{3} (dosah)</translation>
+    </message>
+    <message>
+        <source>Turn {0} by {1}° to {2} {3}, then move {4} to {5} {6}?</source>
+        <translation>Natočiť {0} o {1}° na {2} {3} a potom presunúť os {4} na {5} {6}?</translation>
+    </message>
+    <message>
+        <source>Click-to-move is off: {0}</source>
+        <translation>Presun kliknutím je vypnutý: {0}</translation>
+    </message>
+    <message>
+        <source>Click a point within the tool&apos;s reach to move there (after confirming)</source>
+        <translation>Kliknite na bod v dosahu nástroja a (po potvrdení) sa naň presuniete</translation>
+    </message>
+    <message>
+        <source>Click a point inside the travel to move there (after confirming)</source>
+        <translation>Kliknite na bod vnútri posuvu a (po potvrdení) sa naň presuniete</translation>
+    </message>
+</context>
+<context>
+    <name>JobRunner</name>
+    <message>
+        <source>Stop the running job before loading another</source>
+        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels.</extracomment>
+        <translation>Pred načítaním ďalšej úlohy zastavte tú bežiacu</translation>
+    </message>
+    <message>
+        <source>Job {0} refused, {1} operation(s) cannot be run:
+{2}</source>
+        <translation>Úloha {0} odmietnutá, nedá sa vykonať operácií: {1}
+{2}</translation>
+    </message>
+    <message>
+        <source>Job {0} was interrupted: {1} of {2} operations done; resume from {3} or discard the checkpoint</source>
+        <translation>Úloha {0} bola prerušená: hotovo {1} z {2} operácií; pokračujte od {3}, alebo kontrolný bod zahoďte</translation>
+    </message>
+    <message>
+        <source>Resume from the checkpoint or discard it first</source>
+        <translation>Najprv pokračujte od kontrolného bodu, alebo ho zahoďte</translation>
+    </message>
+    <message>
+        <source>Answer the question about the interrupted operation first</source>
+        <translation>Najprv odpovedzte na otázku k prerušenej operácii</translation>
+    </message>
+    <message>
+        <source>Job aborted after {0} of {1} operations</source>
+        <translation>Úloha prerušená po {0} z {1} operácií</translation>
+    </message>
+    <message>
+        <source>Checkpoint discarded; the job starts from the beginning</source>
+        <translation>Kontrolný bod zahodený; úloha začne od začiatku</translation>
+    </message>
+    <message>
+        <source>Job failed at {0}: {1}</source>
+        <translation>Úloha zlyhala na {0}: {1}</translation>
+    </message>
+    <message>
+        <source>Job paused at {0}: link {1}; resume once the machine is back</source>
+        <translation>Úloha pozastavená na {0}: spojenie {1}; pokračujte, keď bude stroj späť</translation>
+    </message>
+    <message>
+        <source>Job paused: link {0}; resume once the machine is back</source>
+        <translation>Úloha pozastavená: spojenie {0}; pokračujte, keď bude stroj späť</translation>
+    </message>
+    <message>
+        <source>Job {0} done: {1} operations in {2} s</source>
+        <translation>Úloha {0} dokončená: operácií {1} za {2} s</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepripojené</translation>
+    </message>
+    <message>
+        <source>Cannot run the job: {0}</source>
+        <translation>Úlohu nemožno spustiť: {0}</translation>
+    </message>
+    <message>
+        <source>a job is under way: pause and abort it, or let it finish</source>
+        <translation>prebieha úloha: pozastavte ju a prerušte, alebo ju nechajte dobehnúť</translation>
+    </message>
+</context>
+<context>
+    <name>JobsDock</name>
+    <message>
+        <source>Which kind of job?</source>
+        <extracomment>A refused file&apos;s further refused lines listed under the first one. Asks which job type an ambiguous file is; the chosen type&apos;s key, None when cancelled.</extracomment>
+        <translation>Aký druh úlohy?</translation>
+    </message>
+    <message>
+        <source>{0}: the name and the content do not tell.
+Read it as:</source>
+        <translation>{0}: z názvu ani obsahu sa to nedá určiť.
+Načítať ako:</translation>
+    </message>
+    <message>
+        <source>Jobs</source>
+        <extracomment>Files larger than this are not kept in memory for showing source lines. A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <translation>Úlohy</translation>
+    </message>
+    <message>
+        <source>The operation being executed and the line it came from</source>
+        <extracomment>The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
+        <translation>Práve vykonávaná operácia a riadok, z ktorého pochádza</translation>
+    </message>
+    <message>
+        <source>Messages about the job appear here</source>
+        <translation>Tu sa objavia správy o úlohe</translation>
+    </message>
+    <message>
+        <source>Draw holes with the pen</source>
+        <translation>Otvory kresliť perom</translation>
+    </message>
+    <message>
+        <source>Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling</source>
+        <translation>Vŕtacie súbory: namiesto vŕtania nakresliť perom krížik veľkosti otvoru (K / Z)</translation>
+    </message>
+    <message>
+        <source>Smallest bit first</source>
+        <translation>Najmenší vrták prvý</translation>
+    </message>
+    <message>
+        <source>Drill files: the bit changes ordered from the smallest drill to the largest</source>
+        <translation>Vŕtacie súbory: výmeny vrtákov od najmenšieho po najväčší</translation>
+    </message>
+    <message>
+        <source>1/{0} inch</source>
+        <translation>1/{0} palca</translation>
+    </message>
+    <message>
+        <source>Excellon step: the unit of bare integer coordinates</source>
+        <translation>Krok Excellon: jednotka celočíselných súradníc bez formátu</translation>
+    </message>
+    <message>
+        <source>Excellon step</source>
+        <translation>Krok Excellon</translation>
+    </message>
+    <message>
+        <source>Use this machine&apos;s pen commands</source>
+        <translation>Použiť príkazy pera tohto stroja</translation>
+    </message>
+    <message>
+        <source>G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine&apos;s own pen-up / pen-down commands</source>
+        <translation>G-kód: riadky serva M300/M280, výšky pera v Z a M3/M5 sa posielajú ako vlastné príkazy tohto stroja na zdvihnutie / spustenie pera</translation>
+    </message>
+    <message>
+        <source>Skip lines it cannot run</source>
+        <translation>Preskočiť nevykonateľné riadky</translation>
+    </message>
+    <message>
+        <source>G-code: lines this machine cannot execute (e.g. M18) are listed and left out instead of refusing the job</source>
+        <translation>G-kód: riadky, ktoré tento stroj nevie vykonať (napr. M18), sa vypíšu a vynechajú, namiesto aby bola úloha odmietnutá</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otvoriť…</translation>
+    </message>
+    <message>
+        <source>Open a job file (point list; the type is told by its content)</source>
+        <translation>Otvoriť súbor úlohy (zoznam bodov; typ sa rozpozná podľa obsahu)</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportovať…</translation>
+    </message>
+    <message>
+        <source>Write the loaded job out: G-code, or a string-art job&apos;s SD-card files</source>
+        <translation>Zapísať načítanú úlohu: G-kód alebo súbory pre SD kartu pri string arte</translation>
+    </message>
+    <message>
+        <source>From photo…</source>
+        <translation>Z fotografie…</translation>
+    </message>
+    <message>
+        <source>String art from a photo: make a nail sequence, see it, load it as a job</source>
+        <translation>String art z fotografie: vytvoriť poradie klincov, pozrieť si ho a načítať ako úlohu</translation>
+    </message>
+    <message>
+        <source>no job loaded</source>
+        <translation>žiadna úloha nenačítaná</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Spustiť</translation>
+    </message>
+    <message>
+        <source>Run the job from the start</source>
+        <translation>Spustiť úlohu od začiatku</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastaviť</translation>
+    </message>
+    <message>
+        <source>Pause after the operation under way finishes</source>
+        <translation>Pozastaviť po dokončení prebiehajúcej operácie</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovať</translation>
+    </message>
+    <message>
+        <source>Go on from where the job paused</source>
+        <translation>Pokračovať tam, kde sa úloha pozastavila</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>Execute the next operation only, then pause</source>
+        <translation>Vykonať len ďalšiu operáciu a pozastaviť</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Prerušiť</translation>
+    </message>
+    <message>
+        <source>Stop the machine now and end the job</source>
+        <translation>Okamžite zastaviť stroj a ukončiť úlohu</translation>
+    </message>
+    <message>
+        <source>Go on after the last operation the machine completed; none is repeated</source>
+        <translation>Pokračovať za poslednou operáciou, ktorú stroj dokončil; nič sa neopakuje</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodiť</translation>
+    </message>
+    <message>
+        <source>Forget the interrupted run; Run then starts from the first operation</source>
+        <translation>Zabudnúť prerušený beh; Spustiť potom začne prvou operáciou</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Pokračovať</translation>
+    </message>
+    <message>
+        <source>Done: let the job go on</source>
+        <translation>Hotovo: úloha môže pokračovať</translation>
+    </message>
+    <message>
+        <source>Again</source>
+        <translation>Znova</translation>
+    </message>
+    <message>
+        <source>It did not happen: send it again</source>
+        <translation>Neprebehlo: odoslať znova</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hotovo</translation>
+    </message>
+    <message>
+        <source>It happened: count it as done</source>
+        <translation>Prebehlo: započítať ako hotové</translation>
+    </message>
+    <message>
+        <source>Time left, from the dry run of the job on the machine&apos;s model</source>
+        <translation>Zostávajúci čas podľa skúšobného prechodu úlohy na modeli stroja</translation>
+    </message>
+    <message>
+        <source>Open a job</source>
+        <translation>Otvoriť úlohu</translation>
+    </message>
+    <message>
+        <source>{0}: not opened — a job is under way (abort it first)</source>
+        <translation>{0}: neotvorené — prebieha úloha (najprv ju prerušte)</translation>
+    </message>
+    <message>
+        <source>{0}: not opened — still reading {1}</source>
+        <translation>{0}: neotvorené — ešte sa načítava {1}</translation>
+    </message>
+    <message>
+        <source>reading {0}…</source>
+        <translation>načítavam {0}…</translation>
+    </message>
+    <message>
+        <source>{0}: not loaded — {1}</source>
+        <translation>{0}: nenačítané — {1}</translation>
+    </message>
+    <message>
+        <source>{0} — not loaded</source>
+        <translation>{0} — nenačítané</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more line(s) refused</source>
+        <translation>
+            <numerusform>… a odmietnutý ešte %n ďalší riadok</numerusform>
+            <numerusform>… a odmietnuté ešte %n ďalšie riadky</numerusform>
+            <numerusform>… a odmietnutých ešte %n ďalších riadkov</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0} — refused, preview only</source>
+        <translation>{0} — odmietnuté, len náhľad</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0}: %n operation(s) loaded</source>
+        <translation>
+            <numerusform>{0}: načítaná %n operácia</numerusform>
+            <numerusform>{0}: načítané %n operácie</numerusform>
+            <numerusform>{0}: načítaných %n operácií</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>loaded</source>
+        <translation>načítané</translation>
+    </message>
+    <message>
+        <source>SD-card files (param.txt, poradi.txt)…</source>
+        <translation>Súbory pre SD kartu (param.txt, poradi.txt)…</translation>
+    </message>
+    <message>
+        <source>G-code program…</source>
+        <translation>Program v G-kóde…</translation>
+    </message>
+    <message>
+        <source>Nothing to export for this job on this machine</source>
+        <translation>Pri tejto úlohe na tomto stroji nie je čo exportovať</translation>
+    </message>
+    <message>
+        <source>Folder for param.txt and poradi.txt</source>
+        <translation>Priečinok pre param.txt a poradi.txt</translation>
+    </message>
+    <message>
+        <source>Export G-code</source>
+        <translation>Exportovať G-kód</translation>
+    </message>
+    <message>
+        <source>G-code (*.gcode)</source>
+        <translation>G-kód (*.gcode)</translation>
+    </message>
+    <message>
+        <source>Only string-art jobs have SD-card files</source>
+        <translation>Súbory pre SD kartu majú len úlohy string art</translation>
+    </message>
+    <message>
+        <source>SD-card files not written: {0}</source>
+        <translation>Súbory pre SD kartu nezapísané: {0}</translation>
+    </message>
+    <message>
+        <source>Wrote {0} and {1}</source>
+        <translation>Zapísané {0} a {1}</translation>
+    </message>
+    <message>
+        <source>G-code not written: {0}</source>
+        <translation>G-kód nezapísaný: {0}</translation>
+    </message>
+    <message>
+        <source>Wrote {0}</source>
+        <translation>Zapísané {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0} — %n operation(s)</source>
+        <translation>
+            <numerusform>{0} — %n operácia</numerusform>
+            <numerusform>{0} — %n operácie</numerusform>
+            <numerusform>{0} — %n operácií</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the end</source>
+        <translation>koniec</translation>
+    </message>
+    <message numerus="yes">
+        <source>An interrupted run of &lt;b&gt;{0}&lt;/b&gt; completed {1} of %n operation(s). Resume from operation {2} ({3})?</source>
+        <translation>
+            <numerusform>Prerušený beh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operácie. Pokračovať od operácie {2} ({3})?</numerusform>
+            <numerusform>Prerušený beh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operácií. Pokračovať od operácie {2} ({3})?</numerusform>
+            <numerusform>Prerušený beh &lt;b&gt;{0}&lt;/b&gt; dokončil {1} z %n operácií. Pokračovať od operácie {2} ({3})?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Resume from op {0}</source>
+        <translation>Pokračovať od op. {0}</translation>
+    </message>
+    <message>
+        <source> — motion locked: {0}</source>
+        <translation> — pohyb zablokovaný: {0}</translation>
+    </message>
+    <message numerus="yes">
+        <source>{0} / %n ops</source>
+        <translation>
+            <numerusform>{0} / %n op.</numerusform>
+            <numerusform>{0} / %n op.</numerusform>
+            <numerusform>{0} / %n op.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>{0} sent</source>
+        <translation>odoslaných {0}</translation>
+    </message>
+    <message>
+        <source>Operations the machine reported as run, of all; and how many were sent to it (a G-code machine holds sent lines in its planner before it runs them)</source>
+        <translation>Operácie, ktoré stroj ohlásil ako vykonané, zo všetkých; a koľko mu ich bolo odoslaných (stroj s G-kódom drží odoslané riadky v plánovači, kým ich vykoná)</translation>
+    </message>
+    <message>
+        <source>elapsed {0}</source>
+        <translation>uplynulo {0}</translation>
+    </message>
+    <message>
+        <source>left {0}</source>
+        <translation>zostáva {0}</translation>
+    </message>
+    <message>
+        <source>file: {0}</source>
+        <translation>súbor: {0}</translation>
+    </message>
+    <message>
+        <source>machine: {0} microsteps</source>
+        <translation>stroj: {0} mikrokrokov</translation>
+    </message>
+    <message>
+        <source>Operator: {0}</source>
+        <translation>Obsluha: {0}</translation>
+    </message>
+    <message>
+        <source>waiting for the operator: {0}</source>
+        <translation>čaká sa na obsluhu: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>JoystickBox</name>
+    <message>
+        <source>Joystick (usb3 unit)</source>
+        <translation>Joystick (jednotka usb3)</translation>
+    </message>
+    <message>
+        <source>{0} stick: 500…524 is the dead zone; let go to centre it</source>
+        <translation>Páčka {0}: 500…524 je mŕtve pásmo; po pustení sa vráti na stred</translation>
+    </message>
+</context>
+<context>
+    <name>LinkDetail</name>
+    <message>
+        <source>built-in emulator</source>
+        <extracomment>Link details the transports give in English (protocol/ has no Qt to translate them).</extracomment>
+        <translation>vstavaný emulátor</translation>
+    </message>
+</context>
+<context>
+    <name>LinkState</name>
+    <message>
+        <source>disconnected</source>
+        <translation>odpojené</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>pripájam</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>pripojené</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>bez čerstvých dát</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>stratené</translation>
+    </message>
+</context>
+<context>
+    <name>MachineModel</name>
+    <message>
+        <source>not connected</source>
+        <extracomment>Why the operator may not jog now though the machine may move (a job under way).</extracomment>
+        <translation>nepripojené</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>spojenie stratené</translation>
+    </message>
+    <message>
+        <source>sleeping — press Wake</source>
+        <translation>spí — stlačte Zobudiť</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../widgets/main_window.py" line="94"/>
         <source>Jog X while held</source>
-        <extracomment>Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
+        <extracomment>How long a status-bar message stays (ms): long enough to read twice. Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
         <translation>Posuv v osi X, kým je kláves stlačený</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="95"/>
         <source>Jog Y while held (two arrows at once = diagonal)</source>
         <translation>Posuv v osi Y, kým je kláves stlačený (dve šípky naraz = šikmo)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="98"/>
         <source>Jog Z while held, on machines with a Z axis</source>
         <translation>Posuv v osi Z, kým je kláves stlačený (stroje s osou Z)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="100"/>
         <source>Jog and move at the other speed</source>
         <translation>Posuv a pohyb druhou rýchlosťou</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="101"/>
         <source>Stop everything, from anywhere in the window</source>
         <translation>Zastaviť všetko, odkiaľkoľvek v okne</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="104"/>
         <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
         <translation>Stránka Manuálne / Absolútne / Relatívne / Dynamika / Spojenie / Osi / G-kód</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="108"/>
         <source>Open a job (File → Open job…)</source>
         <translation>Otvoriť úlohu (Súbor → Otvoriť úlohu…)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="109"/>
         <source>Quit (stops the machine first)</source>
         <translation>Ukončiť (najprv zastaví stroj)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="110"/>
         <source>Show or hide the jobs dock</source>
         <translation>Zobraziť alebo skryť panel úloh</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="111"/>
         <source>Show or hide the telemetry plots</source>
         <translation>Zobraziť alebo skryť grafy telemetrie</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="112"/>
         <source>Show or hide the developer pane</source>
         <translation>Zobraziť alebo skryť vývojársky panel</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="113"/>
         <source>This list</source>
         <translation>Tento prehľad</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="187"/>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="202"/>
         <source>&amp;Manual</source>
         <translation>&amp;Manuálne</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="202"/>
         <source>Hold-to-jog buttons, Home (Alt+M)</source>
         <translation>Tlačidlá posuvu (držať), referencia (Alt+M)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="212"/>
         <source>D&amp;rill</source>
         <extracomment>Every page with motion controls, for the motion lock.</extracomment>
         <translation>V&amp;ŕtačka</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="214"/>
         <source>Command buttons, X/Y, terminal (Alt+R)</source>
         <translation>Tlačidlá príkazov, X/Y, terminál (Alt+R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="220"/>
         <source>A&amp;xes</source>
         <translation>Osi (&amp;X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="220"/>
         <source>Move by mm, step size, thread (Alt+X)</source>
         <translation>Posun o mm, mikrokrok, stúpanie závitu (Alt+X)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="227"/>
         <source>&amp;Absolute</source>
         <translation>&amp;Absolútne</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="227"/>
         <source>Move to a target (Alt+A)</source>
         <translation>Nabehnúť na zadanú polohu (Alt+A)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="230"/>
         <source>&amp;Relative</source>
         <translation>&amp;Relatívne</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="230"/>
         <source>Move by an increment (Alt+R)</source>
         <translation>Posunúť o prírastok (Alt+R)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="236"/>
         <source>&amp;G-code</source>
         <translation>&amp;G-kód</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="238"/>
         <source>Console, pen, hold/resume/reset (Alt+G)</source>
         <translation>Konzola, pero, pozastavenie/pokračovanie/reset (Alt+G)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="249"/>
         <source>&amp;Dynamics</source>
         <translation>&amp;Dynamika</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="249"/>
         <source>Device parameters (Alt+D)</source>
         <translation>Parametre zariadenia (Alt+D)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="254"/>
         <source>&amp;Link</source>
         <translation>Spojenie (&amp;L)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="256"/>
         <source>Connect: emulator, serial port or BLE (Alt+L)</source>
         <translation>Pripojenie: emulátor, sériový port alebo BLE (Alt+L)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="338"/>
         <source>&amp;Colours</source>
         <translation>&amp;Farby</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="342"/>
-        <location filename="../../widgets/main_window.py" line="358"/>
         <source>As the &amp;system</source>
         <translation>Podľa &amp;systému</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="343"/>
         <source>&amp;Light</source>
         <translation>&amp;Svetlé</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="344"/>
         <source>&amp;Dark</source>
         <translation>&amp;Tmavé</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="355"/>
         <source>L&amp;anguage</source>
         <translation>&amp;Jazyk</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="374"/>
-        <source>The language changes when StepDeck starts again</source>
-        <translation>Jazyk sa zmení pri ďalšom spustení StepDecku</translation>
+        <source>Language: {0}</source>
+        <translation>Jazyk: {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="392"/>
         <source>Frames from the device that failed to decode</source>
         <translation>Rámce zo zariadenia, ktoré sa nepodarilo dekódovať</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="406"/>
         <source>&amp;File</source>
         <translation>&amp;Súbor</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="407"/>
         <source>&amp;Open job…</source>
         <translation>&amp;Otvoriť úlohu…</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="411"/>
         <source>&amp;Recent jobs</source>
         <translation>&amp;Nedávne úlohy</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="415"/>
         <source>&amp;Quit</source>
         <translation>&amp;Ukončiť</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="420"/>
         <source>&amp;Machine</source>
         <translation>S&amp;troj</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="421"/>
         <source>&amp;Connect</source>
         <translation>&amp;Pripojiť</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="423"/>
         <source>&amp;Disconnect</source>
         <translation>&amp;Odpojiť</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="437"/>
         <source>&amp;Stop</source>
         <translation>&amp;Zastaviť</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="437"/>
         <source>&amp;Drop the queue</source>
         <translation>&amp;Zahodiť frontu príkazov</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="445"/>
         <source>&amp;View</source>
         <translation>&amp;Zobrazenie</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="446"/>
         <source>&amp;Help</source>
         <translation>&amp;Pomocník</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="447"/>
         <source>&amp;Keys</source>
         <translation>&amp;Klávesy</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="452"/>
         <source>&amp;About StepDeck</source>
         <translation>&amp;O programe StepDeck</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="488"/>
         <source>(none yet)</source>
         <translation>(zatiaľ žiadne)</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="491"/>
         <source>&amp;Clear the list</source>
         <translation>&amp;Vymazať zoznam</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="518"/>
+        <source>{0}: not opened — the file is no longer there</source>
+        <translation>{0}: neotvorené — súbor už neexistuje</translation>
+    </message>
+    <message>
         <source>A control station for small stepper machines: XY stages, a PCB drill, G-code plotters, the usb3 unit and the string-art winder.</source>
         <translation>Riadiaca stanica pre malé stroje s krokovými motormi: XY stolíky, vŕtačku plošných spojov, plotre na G-kód, jednotku usb3 a navíjačku pre string art.</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="521"/>
         <source>Machine: {0}</source>
         <translation>Stroj: {0}</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="524"/>
         <source>About StepDeck</source>
         <translation>O programe StepDeck</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="545"/>
         <source>Arrows do not jog while a text or number field has focus: there they keep editing. Esc works from anywhere in the window and also closes an open menu; in a dialog (like this one) Esc closes the dialog only.</source>
         <translation>Keď je aktívne textové alebo číselné pole, šípky strojom nepohybujú, ale upravujú text. Esc funguje odkiaľkoľvek v okne a zavrie aj otvorenú ponuku; v dialógu (ako je tento) Esc iba zavrie dialóg.</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="553"/>
         <source>StepDeck — keyboard shortcuts</source>
         <translation>StepDeck — klávesové skratky</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="669"/>
         <source>Motion locked: {0}</source>
         <translation>Pohyb zablokovaný: {0}</translation>
     </message>
+    <message>
+        <source>Link {0}</source>
+        <translation>Spojenie: {0}</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.py" line="690"/>
         <source>rejected frames: %n</source>
         <translation>
             <numerusform>%n odmietnutý rámec</numerusform>
@@ -302,7 +1891,6 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../../widgets/main_window.py" line="725"/>
         <source>%n settings could not be used; defaults are used instead</source>
         <translation>
             <numerusform>%n nastavenie sa nedalo použiť; platí predvolená hodnota</numerusform>
@@ -311,14 +1899,855 @@
         </translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="730"/>
         <source>StepDeck — settings</source>
         <translation>StepDeck — nastavenia</translation>
     </message>
     <message>
-        <location filename="../../widgets/main_window.py" line="772"/>
         <source>Stopping every axis before closing…</source>
         <translation>Pred zatvorením zastavujem všetky osi…</translation>
+    </message>
+</context>
+<context>
+    <name>ManualPanel</name>
+    <message>
+        <source>Hold to jog {0}  (keys: {1}; Shift = other speed)</source>
+        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). Dialects whose home command homes every axis at once ($H / G28; the drill&apos;s N). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
+        <translation>Držaním posúvať {0}  (klávesy: {1}; Shift = druhá rýchlosť)</translation>
+    </message>
+    <message>
+        <source>continuous (hold)</source>
+        <translation>plynulo (držať)</translation>
+    </message>
+    <message>
+        <source>{0} {1} per tap</source>
+        <translation>{0} {1} na stlačenie</translation>
+    </message>
+    <message>
+        <source>What a tap of an arrow key does: jog while held, or move one step (never past the travel)</source>
+        <translation>Čo urobí stlačenie šípky: posuv počas držania, alebo jeden krok (nikdy za hranicu posuvu)</translation>
+    </message>
+    <message>
+        <source>Arrow keys:</source>
+        <translation>Šípky:</translation>
+    </message>
+    <message>
+        <source>Home all</source>
+        <translation>Referencia všetkých osí</translation>
+    </message>
+    <message>
+        <source>Home every axis: the machine&apos;s home command does them all</source>
+        <translation>Referenčný posuv všetkých osí: príkaz stroja ich presunie všetky</translation>
+    </message>
+    <message>
+        <source>Home {0}</source>
+        <translation>Referencia {0}</translation>
+    </message>
+    <message>
+        <source>Seek the {0} home switch and set {0} = 0</source>
+        <translation>Nájsť referenčný spínač osi {0} a nastaviť {0} = 0</translation>
+    </message>
+    <message>
+        <source>Hold to jog {0} up  (key: {1})</source>
+        <translation>Držaním posúvať {0} hore  (kláves: {1})</translation>
+    </message>
+    <message>
+        <source>Hold to jog {0} down  (key: {1})</source>
+        <translation>Držaním posúvať {0} dole  (kláves: {1})</translation>
+    </message>
+</context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <source>Allowed: {0}</source>
+        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this).</extracomment>
+        <translation>Povolené: {0}</translation>
+    </message>
+    <message>
+        <source>Not a number</source>
+        <translation>Nie je číslo</translation>
+    </message>
+    <message>
+        <source>Empty: type a number</source>
+        <translation>Prázdne: zadajte číslo</translation>
+    </message>
+    <message>
+        <source>{0} is outside {1}</source>
+        <translation>{0} je mimo {1}</translation>
+    </message>
+    <message numerus="yes">
+        <source>At most %n decimal(s)</source>
+        <translation>
+            <numerusform>Najviac %n desatinné miesto</numerusform>
+            <numerusform>Najviac %n desatinné miesta</numerusform>
+            <numerusform>Najviac %n desatinných miest</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Whole numbers only</source>
+        <translation>Len celé čísla</translation>
+    </message>
+    <message>
+        <source>Not sent — {0}</source>
+        <translation>Neodoslané — {0}</translation>
+    </message>
+    <message>
+        <source>Disabled: {0}</source>
+        <translation>Nedostupné: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Operation</name>
+    <message>
+        <source>move</source>
+        <translation>pohyb</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>vŕtanie</translation>
+    </message>
+    <message>
+        <source>pen up</source>
+        <translation>pero hore</translation>
+    </message>
+    <message>
+        <source>pen down</source>
+        <translation>pero dole</translation>
+    </message>
+    <message>
+        <source>wait</source>
+        <translation>čakanie</translation>
+    </message>
+    <message>
+        <source>comment</source>
+        <translation>poznámka</translation>
+    </message>
+    <message>
+        <source>gcode</source>
+        <translation>G-kód</translation>
+    </message>
+    <message>
+        <source>move to {0}</source>
+        <translation>presun na {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RegistrationBar</name>
+    <message>
+        <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
+        <extracomment>The job as its file says (what registration transforms; Clear goes back to it).</extracomment>
+        <translation>Spodná strana obojstrannej dosky: úloha zrkadlená v rámci svojho rozsahu</translation>
+    </message>
+    <message>
+        <source>Top side</source>
+        <translation>Horná strana</translation>
+    </message>
+    <message>
+        <source>Bottom, mirrored in X</source>
+        <translation>Spodná, zrkadlená v X</translation>
+    </message>
+    <message>
+        <source>Bottom, mirrored in Y</source>
+        <translation>Spodná, zrkadlená v Y</translation>
+    </message>
+    <message>
+        <source>Register on holes</source>
+        <translation>Zamerať podľa otvorov</translation>
+    </message>
+    <message>
+        <source>A reference hole: its number in drilling order</source>
+        <translation>Referenčný otvor: jeho číslo v poradí vŕtania</translation>
+    </message>
+    <message>
+        <source>Here</source>
+        <translation>Tu</translation>
+    </message>
+    <message>
+        <source>The tool stands over this hole on the board: take its position</source>
+        <translation>Nástroj stojí nad týmto otvorom na doske: prevziať jeho polohu</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>Zamerať</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazať</translation>
+    </message>
+    <message>
+        <source>cannot mirror: {0}</source>
+        <translation>nedá sa zrkadliť: {0}</translation>
+    </message>
+    <message>
+        <source>reference {0} (hole {1}) at X{2} Y{3}</source>
+        <translation>referencia {0} (otvor {1}) na X{2} Y{3}</translation>
+    </message>
+    <message>
+        <source>registration refused: {0}</source>
+        <translation>zameranie odmietnuté: {0}</translation>
+    </message>
+    <message>
+        <source>registered: {0}</source>
+        <translation>zamerané: {0}</translation>
+    </message>
+    <message>
+        <source>warning: {0}</source>
+        <translation>upozornenie: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RelativePanel</name>
+    <message>
+        <source>Move by</source>
+        <translation>Posunúť o</translation>
+    </message>
+    <message>
+        <source>{0} increment (Esc stops)</source>
+        <translation>Prírastok {0} (Esc zastaví)</translation>
+    </message>
+    <message>
+        <source>Move {0} back by the increment</source>
+        <translation>Posunúť {0} o prírastok späť</translation>
+    </message>
+    <message>
+        <source>Move {0} forward by the increment</source>
+        <translation>Posunúť {0} o prírastok vpred</translation>
+    </message>
+    <message>
+        <source>{0} increment</source>
+        <translation>Prírastok {0}</translation>
+    </message>
+</context>
+<context>
+    <name>RotationCross</name>
+    <message>
+        <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has).</extracomment>
+        <translation>Natočenie plošiny voči poslednému vynulovaniu (kladne proti smeru hodinových ručičiek)</translation>
+    </message>
+    <message>
+        <source>rotation
+not plotted</source>
+        <translation>natočenie
+sa nevykresľuje</translation>
+    </message>
+</context>
+<context>
+    <name>Session</name>
+    <message>
+        <source>{0} has no {1}</source>
+        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A held jog ended without a release (dead-man or travel end): forget what is held.</extracomment>
+        <translation>{0} nemá {1}</translation>
+    </message>
+    <message>
+        <source>Jog refused: {0}</source>
+        <translation>Ručný posuv odmietnutý: {0}</translation>
+    </message>
+    <message>
+        <source>Motion refused: {0}</source>
+        <translation>Pohyb odmietnutý: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>StageParameter</name>
+    <message>
+        <source>Fast speed</source>
+        <extracomment>The parameters&apos; labels as app.machines.stage.parameters names them, for lupdate.</extracomment>
+        <translation>Rýchla rýchlosť</translation>
+    </message>
+    <message>
+        <source>Slow speed</source>
+        <translation>Pomalá rýchlosť</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Zrýchlenie</translation>
+    </message>
+    <message>
+        <source>Start speed</source>
+        <translation>Rozbehová rýchlosť</translation>
+    </message>
+    <message>
+        <source>Run current (IRUN)</source>
+        <translation>Prúd za chodu (IRUN)</translation>
+    </message>
+    <message>
+        <source>Hold current (IHOLD)</source>
+        <translation>Prídržný prúd (IHOLD)</translation>
+    </message>
+    <message>
+        <source>Microsteps per step</source>
+        <translation>Mikrokrokov na krok</translation>
+    </message>
+    <message>
+        <source>Screw lead</source>
+        <translation>Stúpanie skrutky</translation>
+    </message>
+    <message>
+        <source>Full steps per rev</source>
+        <translation>Celých krokov na otáčku</translation>
+    </message>
+    <message>
+        <source>Travel (soft limit)</source>
+        <translation>Posuv (softvérový limit)</translation>
+    </message>
+    <message>
+        <source>Encoder position</source>
+        <translation>Poloha enkodéra</translation>
+    </message>
+</context>
+<context>
+    <name>StaticPanel</name>
+    <message>
+        <source>Fast</source>
+        <translation>Rýchlo</translation>
+    </message>
+    <message>
+        <source>Jog and move at the fast speed (hold Shift for slow)</source>
+        <translation>Posuv a pohyb rýchlou rýchlosťou (so Shiftom pomaly)</translation>
+    </message>
+    <message>
+        <source>Slow</source>
+        <translation>Pomaly</translation>
+    </message>
+    <message>
+        <source>Jog and move at the slow speed (hold Shift for fast)</source>
+        <translation>Posuv a pohyb pomalou rýchlosťou (so Shiftom rýchlo)</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Rýchlosť</translation>
+    </message>
+    <message>
+        <source>Shift held: slow</source>
+        <translation>Shift držaný: pomaly</translation>
+    </message>
+    <message>
+        <source>Shift held: fast</source>
+        <translation>Shift držaný: rýchlo</translation>
+    </message>
+    <message>
+        <source>Wake</source>
+        <translation>Zobudiť</translation>
+    </message>
+    <message>
+        <source>Sleep</source>
+        <translation>Uspať</translation>
+    </message>
+    <message>
+        <source>Wake the machine: motors on, motion controls unlocked</source>
+        <translation>Zobudiť stroj: motory zapnuté, ovládanie pohybu odomknuté</translation>
+    </message>
+    <message>
+        <source>Put the machine to sleep: motors off, motion controls locked until Wake</source>
+        <translation>Uspať stroj: motory vypnuté, ovládanie pohybu zamknuté až do Zobudiť</translation>
+    </message>
+</context>
+<context>
+    <name>Station</name>
+    <message>
+        <source>Stopping every axis before closing the link…</source>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <translation>Pred ukončením spojenia zastavujem všetky osi…</translation>
+    </message>
+    <message>
+        <source>The link went before the stop was confirmed; closed</source>
+        <translation>Spojenie spadlo skôr, než bolo zastavenie potvrdené; ukončené</translation>
+    </message>
+    <message>
+        <source>Every axis stopped; link closed</source>
+        <translation>Všetky osi stoja; spojenie ukončené</translation>
+    </message>
+    <message>
+        <source>The device did not confirm the stop within {0} s; link closed anyway — check that the machine stands</source>
+        <translation>Zariadenie nepotvrdilo zastavenie do {0} s; spojenie napriek tomu ukončené — skontrolujte, že stroj stojí</translation>
+    </message>
+    <message>
+        <source>reconnecting to {0}…</source>
+        <translation>znova sa pripájam k {0}…</translation>
+    </message>
+    <message>
+        <source>{0} — retrying in {1} s</source>
+        <translation>{0} — nový pokus o {1} s</translation>
+    </message>
+</context>
+<context>
+    <name>StopCaption</name>
+    <message>
+        <source>STOP</source>
+        <translation>STOP</translation>
+    </message>
+    <message>
+        <source>Stop every axis now (Esc, from anywhere in the window)</source>
+        <translation>Okamžite zastaviť všetky osi (Esc, odkiaľkoľvek v okne)</translation>
+    </message>
+    <message>
+        <source>DROP QUEUE
+this procedure
+finishes (Esc)</source>
+        <translation>ZAHODIŤ FRONT
+tento postup
+dobehne (Esc)</translation>
+    </message>
+    <message>
+        <source>The {0} has no stop command: this button and Esc drop the commands queued after the running one; the procedure it is running finishes</source>
+        <translation>{0} nemá príkaz na zastavenie: toto tlačidlo a Esc zahodia príkazy vo fronte za práve vykonávaným; prebiehajúci postup dobehne</translation>
+    </message>
+    <message>
+        <source>DROP QUEUE
+this move
+finishes (Esc)</source>
+        <translation>ZAHODIŤ FRONT
+tento pohyb
+dobehne (Esc)</translation>
+    </message>
+    <message>
+        <source>The {0} has no stop command: this button and Esc drop the commands queued after the running one; the move it is running finishes</source>
+        <translation>{0} nemá príkaz na zastavenie: toto tlačidlo a Esc zahodia príkazy vo fronte za práve vykonávaným; prebiehajúci pohyb dobehne</translation>
+    </message>
+    <message>
+        <source>Stop everything, from anywhere in the window</source>
+        <translation>Zastaviť všetko, odkiaľkoľvek v okne</translation>
+    </message>
+    <message>
+        <source>Drop the queued commands, from anywhere (no stop command: this procedure finishes)</source>
+        <translation>Zahodiť príkazy vo fronte, odkiaľkoľvek (bez príkazu na zastavenie: tento postup dobehne)</translation>
+    </message>
+    <message>
+        <source>Drop the queued commands, from anywhere (no stop command: this move finishes)</source>
+        <translation>Zahodiť príkazy vo fronte, odkiaľkoľvek (bez príkazu na zastavenie: tento pohyb dobehne)</translation>
+    </message>
+    <message>
+        <source>■ Stop</source>
+        <translation>■ Zastaviť</translation>
+    </message>
+    <message>
+        <source>■ Drop
+queue</source>
+        <translation>■ Zahodiť
+front</translation>
+    </message>
+</context>
+<context>
+    <name>StringArtGeneratorDialog</name>
+    <message>
+        <source>Photo for string art</source>
+        <extracomment>Asks for a photo to open / a folder to export into; None when the operator cancels.</extracomment>
+        <translation>Fotografia pre string art</translation>
+    </message>
+    <message>
+        <source>Folder for param.txt and poradi.txt</source>
+        <translation>Priečinok pre param.txt a poradi.txt</translation>
+    </message>
+    <message>
+        <source>String art from a photo</source>
+        <extracomment>The thread picture was redrawn with this many threads (while generating).</extracomment>
+        <translation>String art z fotografie</translation>
+    </message>
+    <message>
+        <source>Photo…</source>
+        <extracomment>How far from the centre the winder&apos;s needle goes (its X travel), if known.</extracomment>
+        <translation>Fotografia…</translation>
+    </message>
+    <message>
+        <source>Choose a PNG or JPEG photo</source>
+        <translation>Vyberte fotografiu PNG alebo JPEG</translation>
+    </message>
+    <message>
+        <source>no photo chosen</source>
+        <translation>žiadna fotografia nevybraná</translation>
+    </message>
+    <message>
+        <source>The photo cropped to the board</source>
+        <translation>Fotografia orezaná na dosku</translation>
+    </message>
+    <message>
+        <source>The thread, as wound at the real width</source>
+        <translation>Niť, ako bude navinutá v skutočnej šírke</translation>
+    </message>
+    <message>
+        <source>Photo on the board</source>
+        <translation>Fotografia na doske</translation>
+    </message>
+    <message>
+        <source>Thread</source>
+        <translation>Niť</translation>
+    </message>
+    <message>
+        <source>Choose a photo</source>
+        <translation>Vyberte fotografiu</translation>
+    </message>
+    <message>
+        <source>Generate</source>
+        <translation>Vytvoriť</translation>
+    </message>
+    <message>
+        <source>Make the nail sequence</source>
+        <translation>Vytvoriť poradie klincov</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušiť</translation>
+    </message>
+    <message>
+        <source>Stop; nothing is kept</source>
+        <translation>Zastaviť; nič sa neuchová</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportovať…</translation>
+    </message>
+    <message>
+        <source>Write param.txt, poradi.txt and a PNG into a folder</source>
+        <translation>Zapísať param.txt, poradi.txt a PNG do priečinka</translation>
+    </message>
+    <message>
+        <source>Load as job</source>
+        <translation>Načítať ako úlohu</translation>
+    </message>
+    <message>
+        <source>Open the sequence in the jobs dock to drill and wind it</source>
+        <translation>Otvoriť poradie v paneli úloh na vŕtanie a navíjanie</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavrieť</translation>
+    </message>
+    <message>
+        <source>Close (a generation is cancelled)</source>
+        <translation>Zavrieť (prebiehajúci výpočet sa zruší)</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>kruh</translation>
+    </message>
+    <message>
+        <source>{0}-gon</source>
+        <translation>{0}-uholník</translation>
+    </message>
+    <message>
+        <source>Board radius (polomer_matrice); the nails sit 1.5 cm inside</source>
+        <translation>Polomer dosky (polomer_matrice); klince sú 1,5 cm od okraja</translation>
+    </message>
+    <message>
+        <source>The line budget</source>
+        <translation>Počet čiar k dispozícii</translation>
+    </message>
+    <message>
+        <source>The real thread&apos;s width: it sets how dark each thread looks</source>
+        <translation>Skutočná šírka nite: určuje, ako tmavo každá niť vyzerá</translation>
+    </message>
+    <message>
+        <source>Least nails between a thread&apos;s two ends (never to a neighbouring nail)</source>
+        <translation>Najmenší počet klincov medzi koncami nite (nikdy na susedný klinec)</translation>
+    </message>
+    <message>
+        <source>Pixels across the nail circle</source>
+        <translation>Pixelov cez kružnicu klincov</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Nails</source>
+        <translation>Klince</translation>
+    </message>
+    <message>
+        <source>Board radius</source>
+        <translation>Polomer dosky</translation>
+    </message>
+    <message>
+        <source>Line budget</source>
+        <translation>Počet čiar</translation>
+    </message>
+    <message>
+        <source>Thread width</source>
+        <translation>Šírka nite</translation>
+    </message>
+    <message>
+        <source>Minimum skip</source>
+        <translation>Najmenší preskok</translation>
+    </message>
+    <message>
+        <source>Raster</source>
+        <translation>Raster</translation>
+    </message>
+    <message>
+        <source>Crop: 1 fits the photo&apos;s shorter side to the board</source>
+        <translation>Orez: 1 prispôsobí kratšiu stranu fotografie doske</translation>
+    </message>
+    <message>
+        <source>Invert (light thread, dark board)</source>
+        <translation>Invertovať (svetlá niť, tmavá doska)</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Zväčšenie</translation>
+    </message>
+    <message>
+        <source>Centre across</source>
+        <translation>Stred vodorovne</translation>
+    </message>
+    <message>
+        <source>Centre down</source>
+        <translation>Stred zvisle</translation>
+    </message>
+    <message>
+        <source>Contrast</source>
+        <translation>Kontrast</translation>
+    </message>
+    <message>
+        <source>Brightness</source>
+        <translation>Jas</translation>
+    </message>
+    <message>
+        <source>reading &lt;b&gt;{0}&lt;/b&gt;…</source>
+        <translation>načítavam &lt;b&gt;{0}&lt;/b&gt;…</translation>
+    </message>
+    <message>
+        <source>Set the board and the crop, then Generate</source>
+        <translation>Nastavte dosku a orez, potom Vytvoriť</translation>
+    </message>
+    <message>
+        <source>Not opened: {0}</source>
+        <translation>Neotvorené: {0}</translation>
+    </message>
+    <message>
+        <source>Both pictures: the nail circle, {0} cm across, drawn {1} px wide (1 px = {2} mm).
+Thread {3} mm = 1/{4} of it; chosen on a raster of {5} mm pixels.</source>
+        <translation>Oba obrázky: kružnica klincov s priemerom {0} cm vykreslená na šírku {1} px (1 px = {2} mm).
+Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
+    </message>
+    <message>
+        <source>Cannot generate: {0}</source>
+        <translation>Nedá sa vytvoriť: {0}</translation>
+    </message>
+    <message>
+        <source>This winder&apos;s needle reaches {0} mm from the centre: boards up to {1} cm radius fit it (export the files for a larger one).</source>
+        <translation>Ihla tejto navíjačky dosiahne {0} mm od stredu: zmestia sa dosky do polomeru {1} cm (pre väčšie súbory exportujte).</translation>
+    </message>
+    <message>
+        <source>Preparing the lines between the nails…</source>
+        <translation>Pripravujem čiary medzi klincami…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Ruším…</translation>
+    </message>
+    <message>
+        <source>Preparing the lines between the nails: {0} of {1}</source>
+        <translation>Pripravujem čiary medzi klincami: {0} z {1}</translation>
+    </message>
+    <message>
+        <source>Winding: {0} threads of at most {1}</source>
+        <translation>Navíjanie: {0} nití z najviac {1}</translation>
+    </message>
+    <message>
+        <source>stopped before the budget: no further thread brings it closer</source>
+        <translation>zastavené pred vyčerpaním: žiadna ďalšia niť obraz nezlepší</translation>
+    </message>
+    <message>
+        <source>the whole budget</source>
+        <translation>celý počet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n thread(s) ({0}), {1} m of thread; {2}; {3} s</source>
+        <translation>
+            <numerusform>%n niť ({0}), {1} m nite; {2}; {3} s</numerusform>
+            <numerusform>%n nite ({0}), {1} m nite; {2}; {3} s</numerusform>
+            <numerusform>%n nití ({0}), {1} m nite; {2}; {3} s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing kept</source>
+        <translation>Zrušené: nič neuchované</translation>
+    </message>
+    <message>
+        <source>Generation failed: {0}</source>
+        <translation>Výpočet zlyhal: {0}</translation>
+    </message>
+    <message>
+        <source>Nothing written to {0}: {1}</source>
+        <translation>Do {0} nič nezapísané: {1}</translation>
+    </message>
+    <message>
+        <source>Wrote {0} in {1}</source>
+        <translation>Zapísané {0} do {1}</translation>
+    </message>
+    <message>
+        <source>Not loaded: nothing written to {0}: {1}</source>
+        <translation>Nenačítané: do {0} nič nezapísané: {1}</translation>
+    </message>
+    <message>
+        <source>Not loaded: see the jobs dock&apos;s messages</source>
+        <translation>Nenačítané: pozri správy v paneli úloh</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryDock</name>
+    <message>
+        <source>Telemetry</source>
+        <translation>Telemetria</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Premenná</translation>
+    </message>
+    <message>
+        <source>Subscriber variable to plot; the station asks for it in every frame the info panel does not need</source>
+        <translation>Premenná odberateľa na vykreslenie; stanica si ju vyžiada v každom rámci, ktorý nepotrebuje informačný panel</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žiadna</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>Okno</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastaviť</translation>
+    </message>
+    <message>
+        <source>Freeze the plots; recording goes on</source>
+        <translation>Zmraziť grafy; záznam pokračuje</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>Automatická mierka</translation>
+    </message>
+    <message>
+        <source>Fit each plot&apos;s vertical range to what is shown (dragging a plot turns it off)</source>
+        <translation>Prispôsobiť zvislý rozsah každého grafu zobrazeným dátam (ťahanie grafu to vypne)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Exportovať CSV…</translation>
+    </message>
+    <message>
+        <source>Save the samples shown, with units, as CSV</source>
+        <translation>Uložiť zobrazené vzorky s jednotkami ako CSV</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>Exportovať PNG…</translation>
+    </message>
+    <message>
+        <source>Save the plots as an image</source>
+        <translation>Uložiť grafy ako obrázok</translation>
+    </message>
+    <message>
+        <source>paused — recording goes on</source>
+        <translation>pozastavené — záznam pokračuje</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>poloha</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>rýchlosť</translation>
+    </message>
+    <message>
+        <source>variable</source>
+        <translation>premenná</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>čas</translation>
+    </message>
+    <message>
+        <source>Rotation</source>
+        <translation>Natočenie</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Vynulovať</translation>
+    </message>
+    <message>
+        <source>Make the present angle read 0°</source>
+        <translation>Nastaviť súčasný uhol na 0°</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastavené</translation>
+    </message>
+    <message>
+        <source>Export telemetry as CSV</source>
+        <translation>Exportovať telemetriu ako CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Súbory CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export telemetry plots as PNG</source>
+        <translation>Exportovať grafy telemetrie ako PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Obrázky PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>variable (none)</source>
+        <translation>premenná (žiadna)</translation>
+    </message>
+    <message>
+        <source>This machine reports no subscriber variables</source>
+        <translation>Tento stroj nehlási žiadne premenné odberateľa</translation>
+    </message>
+</context>
+<context>
+    <name>Usb3Panel</name>
+    <message>
+        <source>Move by</source>
+        <translation>Posunúť o</translation>
+    </message>
+    <message>
+        <source>Will move</source>
+        <translation>Skutočne prejde</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>Thread</source>
+        <translation>Niť</translation>
+    </message>
+    <message>
+        <source>Signed distance to move {0} (fractions allowed)</source>
+        <translation>Vzdialenosť so znamienkom na posun {0} (aj desatinná)</translation>
+    </message>
+    <message>
+        <source>The unit moves in whole steps: this is what it will really move</source>
+        <translation>Jednotka sa pohybuje po celých krokoch: toľko skutočne prejde</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <comment>full step</comment>
+        <translation>celý</translation>
+    </message>
+    <message>
+        <source>Send {0}</source>
+        <translation>Odoslať {0}</translation>
+    </message>
+    <message>
+        <source>{0} distance</source>
+        <translation>Vzdialenosť {0}</translation>
+    </message>
+    <message>
+        <source>Zero all</source>
+        <translation>Vynulovať všetko</translation>
+    </message>
+    <message>
+        <source>Set every axis&apos; position to 0 where it stands (C;)</source>
+        <translation>Nastaviť polohu všetkých osí tam, kde stoja, na 0 (C;)</translation>
+    </message>
+    <message>
+        <source>The unit moves in whole steps; top speed at this step size {0} mm/s</source>
+        <translation>Jednotka sa pohybuje po celých krokoch; najvyššia rýchlosť pri tomto kroku {0} mm/s</translation>
     </message>
 </context>
 </TS>

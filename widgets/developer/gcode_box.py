@@ -16,6 +16,7 @@ from app.developer.gcode import QUICK_REPLIES, GcodeEmulatorButtons, inject_repl
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField
+from widgets.retranslate import Texts
 
 _ERROR_STYLE = "color: #b00020;"
 
@@ -24,13 +25,15 @@ class GcodeReplyBox(QGroupBox):
     """Type what the device "says"; it reaches the session as the device's bytes would."""
 
     def __init__(self, station: Station, parent: QWidget | None = None) -> None:
-        super().__init__("Inject a reply (as if the device sent it)", parent)
+        super().__init__(parent)
+        t = self.texts = Texts(self)
+        t.set(self.setTitle, lambda: self.tr("Inject a reply (as if the device sent it)"))
         self._station = station
         self.entry = HistoryLineEdit()
         self.entry.setObjectName("gcode_inject_entry")
         self.entry.setPlaceholderText("ok, error:9, ALARM:1, <Hold:0|MPos:1,2,0|FS:0,0>…")
         self.entry.returnPressed.connect(self.inject)
-        self.inject_button = QPushButton("Inject")
+        self.inject_button = t.button(lambda: self.tr("Inject"))
         self.inject_button.clicked.connect(self.inject)
         self.error = QLabel()
         self.error.setStyleSheet(_ERROR_STYLE)
@@ -43,7 +46,7 @@ class GcodeReplyBox(QGroupBox):
         self.quick_buttons: dict[str, QPushButton] = {}
         for caption, text in QUICK_REPLIES:
             button = QPushButton(caption)
-            button.setToolTip(f"Inject {text!r}")
+            t.set(button.setToolTip, lambda r=text: self.tr("Inject {0}").format(repr(r)))
             button.clicked.connect(lambda _=False, t=text: self.inject_text(t))
             quick.addWidget(button)
             self.quick_buttons[caption] = button
@@ -59,7 +62,7 @@ class GcodeReplyBox(QGroupBox):
         try:
             inject_reply(self._station, text)
         except ValueError as exc:
-            self.error.setText(f"Not injected: {exc}")
+            self.error.setText(self.tr("Not injected: {0}").format(exc))
             self.error.show()
             return False
         self.error.hide()
@@ -70,25 +73,33 @@ class GcodeEmulatorBox(QGroupBox):
     """The emulated board's own hold / resume buttons and an alarm, as a switch would raise."""
 
     def __init__(self, station: Station, parent: QWidget | None = None) -> None:
-        super().__init__("Emulated board", parent)
+        super().__init__(parent)
+        t = self.texts = Texts(self)
+        t.set(self.setTitle, lambda: self.tr("Emulated board"))
         self.buttons = GcodeEmulatorButtons(station, self)
-        self.hold_button = QPushButton("Hold")
-        self.hold_button.setToolTip("The board's feed-hold button")
-        self.resume_button = QPushButton("Cycle start")
-        self.resume_button.setToolTip("The board's cycle-start button")
+        self.hold_button = t.button(
+            lambda: self.tr("Hold"), lambda: self.tr("The board's feed-hold button")
+        )
+        self.resume_button = t.button(
+            lambda: self.tr("Cycle start"), lambda: self.tr("The board's cycle-start button")
+        )
         self.alarm_code = NumberField(
             1,
             9,
             decimals=0,
             value=1,
             name="alarm_code",
-            tooltip="ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)",
+        )
+        t.set(
+            self.alarm_code.set_description,
+            lambda: self.tr("ALARM code (1: hard limit, 2: soft limit, 3: reset in motion…)"),
         )
         self.alarm_code.setMinimumWidth(60)
-        self.alarm_button = QPushButton("Raise alarm")
+        self.alarm_button = t.button(lambda: self.tr("Raise alarm"))
         self.note = QLabel()
         self.gate = FieldGate(self.note, self)
-        self.gate.watch(self.alarm_code, "ALARM code")
+        self.gate.watch(self.alarm_code, lambda: self.tr("ALARM code"))
+
         self.gate.bind(self.alarm_button, self.alarm_code)
         self.hold_button.clicked.connect(self.buttons.hold)
         self.resume_button.clicked.connect(self.buttons.resume)

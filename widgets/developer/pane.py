@@ -55,6 +55,7 @@ from app.machines.stage.echoes import STATUS_TEXT
 from app.station import Station
 from widgets.developer.gcode_box import GcodeEmulatorBox, GcodeReplyBox
 from widgets.number_field import FieldGate, NumberField
+from widgets.retranslate import Texts
 from widgets.style import MINUS, monospace_font
 
 #: How often the log view takes in what arrived: fast enough to feel live, slow
@@ -83,7 +84,9 @@ class EchoComposer(QGroupBox):
     """Compose an echo field by field and inject it as if the device had sent it."""
 
     def __init__(self, station: Station, parent: QWidget | None = None) -> None:
-        super().__init__("Inject echo", parent)
+        super().__init__(parent)
+        t = self.texts = Texts(self)
+        t.set(self.setTitle, lambda: self.tr("Inject echo"))
         self._station = station
         self.type_combos: list[QComboBox] = []
         self.status_combos: list[QComboBox] = []
@@ -97,22 +100,30 @@ class EchoComposer(QGroupBox):
             grid.addWidget(QLabel(f"<b>{axis.name}</b>"), row, 0)
             grid.addWidget(self._add_combo(self.type_combos, TYPE_TEXT), row, 1)
             grid.addWidget(self._add_combo(self.status_combos, STATUS_TEXT), row, 2)
-            grid.addWidget(self._add_data_edit(self.data_edits, "µm, µm/s or value"), row, 3)
+            edit = self._add_data_edit(self.data_edits, "")
+            t.set(edit.setPlaceholderText, lambda: self.tr("µm, µm/s or value"))
+            grid.addWidget(edit, row, 3)
         ss_row = len(station.model.axes) + 1
         self.subscriber_combo = QComboBox()
         self.subscriber_combo.setEditable(True)  # any ID 00…FF, to try unknown ones
-        self.subscriber_combo.setToolTip("Subscriber ID: pick one, or type any hex ID 00…FF")
+        t.set(
+            self.subscriber_combo.setToolTip,
+            lambda: self.tr("Subscriber ID: pick one, or type any hex ID 00…FF"),
+        )
         for code, text in SUBSCRIBER_TEXT.items():
             self.subscriber_combo.addItem(f"{code:02X} {text}", code)
-        self.subscriber_data = self._add_data_edit([], "subscriber value")
+        self.subscriber_data = self._add_data_edit([], "")
+        t.set(self.subscriber_data.setPlaceholderText, lambda: self.tr("subscriber value"))
         grid.addWidget(QLabel("<b>SS</b>"), ss_row, 0)
         grid.addWidget(self.subscriber_combo, ss_row, 1, 1, 2)
         grid.addWidget(self.subscriber_data, ss_row, 3)
         grid.setColumnStretch(1, 1)
         grid.setColumnStretch(2, 1)
 
-        self.inject_button = QPushButton("Inject")
-        self.inject_button.setToolTip("Fold this echo into the model as if the device had sent it")
+        self.inject_button = t.button(
+            lambda: self.tr("Inject"),
+            lambda: self.tr("Fold this echo into the model as if the device had sent it"),
+        )
         self.inject_button.clicked.connect(self.inject)
         self.result_label = QLabel()
         self.result_label.setWordWrap(True)
@@ -161,26 +172,36 @@ class EchoComposer(QGroupBox):
             self.result_label.setText(error.message)
             return
         self.result_label.setStyleSheet(_NOTE_STYLE)
-        self.result_label.setText(f"Injected {raw_echo_text(echo)}")
+        self.result_label.setText(self.tr("Injected {0}").format(raw_echo_text(echo)))
 
 
 class EmulatorBox(QGroupBox):
     """The built-in emulator's environment and faults; disabled while there is none."""
 
     def __init__(self, controls: EmulatorControls, axis_names: list[str]) -> None:
-        super().__init__("Emulator")
+        super().__init__()
+        t = self.texts = Texts(self)
+        t.set(self.setTitle, lambda: self.tr("Emulator"))
         self._controls = controls
-        self.note = QLabel(
-            "No emulator connected: these controls act on the built-in emulator. "
-            "Turn Simulation on, or connect it on the Link page."
+        self.note = t.label(
+            lambda: self.tr(
+                "No emulator connected: these controls act on the built-in emulator. "
+                "Turn Simulation on, or connect it on the Link page."
+            )
         )
         self.note.setWordWrap(True)
         self.note.setStyleSheet(_NOTE_STYLE)
         self.body = QWidget()
 
-        self.charger = QCheckBox("Charger connected")
-        self.usb = QCheckBox("USB connected")
-        self.verification_fault = QCheckBox("FRAM verification fault (writes refused)")
+        self.charger = QCheckBox()
+        t.set(self.charger.setText, lambda: self.tr("Charger connected"))
+        self.usb = QCheckBox()
+        t.set(self.usb.setText, lambda: self.tr("USB connected"))
+        self.verification_fault = QCheckBox()
+        t.set(
+            self.verification_fault.setText,
+            lambda: self.tr("FRAM verification fault (writes refused)"),
+        )
         self.charger.toggled.connect(controls.set_charger)
         self.usb.toggled.connect(controls.set_usb)
         self.verification_fault.toggled.connect(controls.set_verification_fault)
@@ -192,26 +213,26 @@ class EmulatorBox(QGroupBox):
             100,
             decimals=0,
             unit="%",
-            tooltip="State of charge; below 5 % the stage blocks motion",
         )
-        self.temperature = NumberField(
-            -40.0, 125.0, decimals=2, unit="°C", tooltip="Board temperature"
+        t.set(
+            self.battery.set_description,
+            lambda: self.tr("State of charge; below 5 % the stage blocks motion"),
         )
-        self.rotation = NumberField(
-            -720.0,
-            720.0,
-            decimals=2,
-            unit="°/s",
-            tooltip="Platform rotation rate; the IMU's yaw integrates it",
+        self.temperature = NumberField(-40.0, 125.0, decimals=2, unit="°C")
+        t.set(self.temperature.set_description, lambda: self.tr("Board temperature"))
+        self.rotation = NumberField(-720.0, 720.0, decimals=2, unit="°/s")
+        t.set(
+            self.rotation.set_description,
+            lambda: self.tr("Platform rotation rate; the IMU's yaw integrates it"),
         )
         self.battery.committed.connect(lambda value: controls.set_battery(round(value)))
         self.temperature.committed.connect(controls.set_temperature)
         self.rotation.committed.connect(controls.set_rotation_rate)
         form = QFormLayout()
         form.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.FieldsStayAtSizeHint)
-        form.addRow("Battery", self.battery)
-        form.addRow("Temperature", self.temperature)
-        form.addRow("Rotation rate", self.rotation)
+        form.addRow(t.label(lambda: self.tr("Battery")), self.battery)
+        form.addRow(t.label(lambda: self.tr("Temperature")), self.temperature)
+        form.addRow(t.label(lambda: self.tr("Rotation rate")), self.rotation)
 
         self.switch_buttons: dict[tuple[int, str], QPushButton] = {}
         self.driver_faults: list[QCheckBox] = []
@@ -219,37 +240,56 @@ class EmulatorBox(QGroupBox):
         for index, name in enumerate(axis_names):
             axes.addWidget(QLabel(f"<b>{name}</b>"), index, 0)
             for column, which in enumerate(END_SWITCHES, start=1):
-                button = QPushButton(f"{which.capitalize()} end switch")
-                button.setToolTip(f"Close {name}'s {which} end switch where the axis is now")
+                if which == END_SWITCHES[0]:
+                    button = t.button(
+                        lambda: self.tr("{0} end switch").format(self.tr("Low")),
+                        lambda n=name: self.tr(
+                            "Close {0}'s low end switch where the axis is now"
+                        ).format(n),
+                    )
+                else:
+                    button = t.button(
+                        lambda: self.tr("{0} end switch").format(self.tr("High")),
+                        lambda n=name: self.tr(
+                            "Close {0}'s high end switch where the axis is now"
+                        ).format(n),
+                    )
                 button.clicked.connect(
                     lambda _=False, a=index, w=which: controls.press_end_switch(a, w)
                 )
                 self.switch_buttons[(index, which)] = button
                 axes.addWidget(button, index, column)
-            fault = QCheckBox("Driver fault")
-            fault.setToolTip(f"Over-temperature or stall on {name}'s driver: the axis stops dead")
+            fault = QCheckBox()
+            t.set(fault.setText, lambda: self.tr("Driver fault"))
+            t.set(
+                fault.setToolTip,
+                lambda n=name: self.tr(
+                    "Over-temperature or stall on {0}'s driver: the axis stops dead"
+                ).format(n),
+            )
             fault.toggled.connect(lambda on, a=index: controls.set_driver_fault(a, on))
             self.driver_faults.append(fault)
             axes.addWidget(fault, index, 3)
 
-        self.drop_button = QPushButton("Drop link")
-        self.drop_button.setToolTip("Cut the emulated cable; the station reconnects with back-off")
+        self.drop_button = t.button(
+            lambda: self.tr("Drop link"),
+            lambda: self.tr("Cut the emulated cable; the station reconnects with back-off"),
+        )
         self.drop_button.clicked.connect(controls.drop_link)
         self.corrupt_count = NumberField(
             1, 999, decimals=0, unit="frames", value=3, name="corrupt_count"
         )
-        self.corrupt_button = QPushButton("Corrupt")
-        self.corrupt_button.setToolTip("Flip a byte in each of the next frames from the device")
+        self.corrupt_button = t.button(
+            lambda: self.tr("Corrupt"),
+            lambda: self.tr("Flip a byte in each of the next frames from the device"),
+        )
         self.corrupt_button.clicked.connect(self._corrupt)
         self.note = QLabel()
         self.gate = FieldGate(self.note, self)
-        for field, label in (
-            (self.battery, "Battery"),
-            (self.temperature, "Temperature"),
-            (self.rotation, "Rotation rate"),
-            (self.corrupt_count, "Corrupt"),
-        ):
-            self.gate.watch(field, label)
+        self.gate.watch(self.battery, lambda: self.tr("Battery"))
+        self.gate.watch(self.temperature, lambda: self.tr("Temperature"))
+        self.gate.watch(self.rotation, lambda: self.tr("Rotation rate"))
+        self.gate.watch(self.corrupt_count, lambda: self.tr("Corrupt"))
         self.gate.bind(self.corrupt_button, self.corrupt_count)
         link = QHBoxLayout()
         link.addWidget(self.drop_button)
@@ -306,7 +346,9 @@ class JoystickBox(QGroupBox):
     """The usb3 unit's joystick as three sliders that spring back to the centre like the stick."""
 
     def __init__(self, controls: EmulatorControls, axis_names: list[str]) -> None:
-        super().__init__("Joystick (usb3 unit)")
+        super().__init__()
+        self.texts = Texts(self)
+        self.texts.set(self.setTitle, lambda: self.tr("Joystick (usb3 unit)"))
         self._controls = controls
         self.sliders: list[QSlider] = []
         grid = QGridLayout(self)
@@ -314,7 +356,12 @@ class JoystickBox(QGroupBox):
             slider = QSlider(Qt.Orientation.Horizontal)
             slider.setRange(0, 1023)
             slider.setValue(JOYSTICK_CENTRE)
-            slider.setToolTip(f"{name} stick: 500…524 is the dead zone; let go to centre it")
+            self.texts.set(
+                slider.setToolTip,
+                lambda n=name: self.tr(
+                    "{0} stick: 500…524 is the dead zone; let go to centre it"
+                ).format(n),
+            )
             slider.valueChanged.connect(lambda value, a=index: controls.set_joystick(a, value))
             slider.sliderReleased.connect(lambda s=slider: s.setValue(JOYSTICK_CENTRE))
             grid.addWidget(QLabel(name), index, 0)
@@ -333,20 +380,27 @@ class FrameLogView(QWidget):
         self._shown_seq = log.last_seq
         self._rebuild_due = True
 
+        t = self.texts = Texts(self)
         self.filter_edit = QLineEdit()
-        self.filter_edit.setPlaceholderText("Filter: words that must all occur, e.g. rx charger")
+        t.set(
+            self.filter_edit.setPlaceholderText,
+            lambda: self.tr("Filter: words that must all occur, e.g. rx charger"),
+        )
         self.filter_edit.setClearButtonEnabled(True)
         self.filter_edit.textChanged.connect(self._request_rebuild)
-        self.pause_button = QPushButton("Pause")
+        self.pause_button = QPushButton(self.tr("Pause"))
         self.pause_button.setCheckable(True)
-        self.pause_button.setToolTip(
-            "Freeze the view; frames are still recorded and appear on Resume"
+        t.set(
+            self.pause_button.setToolTip,
+            lambda: self.tr("Freeze the view; frames are still recorded and appear on Resume"),
         )
         self.pause_button.toggled.connect(log.set_paused)
-        self.clear_button = QPushButton("Clear")
+        self.clear_button = t.button(lambda: self.tr("Clear"))
         self.clear_button.clicked.connect(log.clear)
-        self.save_button = QPushButton("Save…")
-        self.save_button.setToolTip("Save the entries that pass the filter (all when empty)")
+        self.save_button = t.button(
+            lambda: self.tr("Save…"),
+            lambda: self.tr("Save the entries that pass the filter (all when empty)"),
+        )
         self.save_button.clicked.connect(self.save)
         bar = QHBoxLayout()
         bar.addWidget(self.filter_edit, 1)
@@ -358,8 +412,9 @@ class FrameLogView(QWidget):
         self.view.setLineWrapMode(QPlainTextEdit.LineWrapMode.NoWrap)
         self.view.setMaximumBlockCount(VIEW_LINES)
         self.view.setFont(monospace_font())
-        self.view.setPlaceholderText(
-            "Frames sent (TX), received (RX), injected (INJ), rejected (BAD)"
+        t.set(
+            self.view.setPlaceholderText,
+            lambda: self.tr("Frames sent (TX), received (RX), injected (INJ), rejected (BAD)"),
         )
         self.status_label = QLabel()
         self.status_label.setStyleSheet(_NOTE_STYLE)
@@ -378,6 +433,7 @@ class FrameLogView(QWidget):
         log.cleared.connect(self._on_cleared)
         log.pausedChanged.connect(self._on_paused)
         self._schedule()
+        t.also(lambda: self._on_paused(self._log.paused))
 
     @property
     def text(self) -> str:
@@ -425,7 +481,9 @@ class FrameLogView(QWidget):
         lost = new[0].seq - self._shown_seq - 1
         if lost > 0:
             kept = self._log.capacity
-            lines.append(f"… {lost} entries not shown: the log keeps the last {kept}")
+            lines.append(
+                self.tr("… %n entries not shown: the log keeps the last {0}", "", lost).format(kept)
+            )
         self._shown_seq = new[-1].seq
         lines += [entry.line for entry in self._log.filtered(self.filter_edit.text(), new)]
         if lines:
@@ -438,29 +496,35 @@ class FrameLogView(QWidget):
 
     def _on_paused(self, paused: bool) -> None:
         self.pause_button.setChecked(paused)
-        self.pause_button.setText("Resume" if paused else "Pause")
+        self.pause_button.setText(self.tr("Resume") if paused else self.tr("Pause"))
         self._show_status()
         self._schedule()
 
     def _show_status(self) -> None:
-        text = f"{len(self._log)} entries"
+        text = self.tr("%n entries", "", len(self._log))
         if self._log.paused:
-            text += f" — paused, {self._log.last_seq - self._shown_seq} new not shown"
+            waiting = self._log.last_seq - self._shown_seq
+            text += self.tr(" — paused, %n new not shown", "", waiting)
         self.status_label.setText(text)
 
     def save(self) -> None:
         """Ask where, then write the entries that pass the filter (all when it is empty)."""
         path, _ = QFileDialog.getSaveFileName(
-            self, "Save frame log", "stepdeck-frames.log", "Log files (*.log *.txt);;All files (*)"
+            self,
+            self.tr("Save frame log"),
+            "stepdeck-frames.log",
+            self.tr("Log files (*.log *.txt);;All files (*)"),
         )
         if not path:
             return
         try:
             count = self._log.save(path, self.filter_edit.text())
         except OSError as error:
-            self.status_label.setText(f"Could not save: {error.strerror or error}")
+            self.status_label.setText(
+                self.tr("Could not save: {0}").format(error.strerror or error)
+            )
             return
-        self.status_label.setText(f"Saved {count} entries to {path}")
+        self.status_label.setText(self.tr("Saved %n entries to {0}", "", count).format(path))
 
     def showEvent(self, event: QShowEvent) -> None:
         # Hidden, the view skipped its redraws; shown again, it starts from the log.
@@ -478,14 +542,23 @@ class DeveloperPane(QDockWidget):
     def __init__(
         self, station: Station, parent: QWidget | None = None, *, log_capacity: int = LOG_CAPACITY
     ) -> None:
-        super().__init__("Developer", parent)
+        super().__init__(parent)
+        t = self.texts = Texts(self)
+        t.set(self.setWindowTitle, lambda: self.tr("Developer"))
         self.setObjectName("developer_pane")  # for QMainWindow.saveState
         self.frame_log = FrameLog(station, log_capacity, parent=self)
         self.emulator_controls = EmulatorControls(station, self)
 
-        self.simulation = QCheckBox("Simulation: the built-in emulator answers the commands")
-        self.simulation.setToolTip(
-            "On: connect the emulated stage (when no device is connected). Off: disconnect it."
+        self.simulation = QCheckBox()
+        t.set(
+            self.simulation.setText,
+            lambda: self.tr("Simulation: the built-in emulator answers the commands"),
+        )
+        t.set(
+            self.simulation.setToolTip,
+            lambda: self.tr(
+                "On: connect the emulated stage (when no device is connected). Off: disconnect it."
+            ),
         )
         self.simulation.toggled.connect(self._set_simulation)
         self.simulation_note = QLabel()
@@ -553,7 +626,8 @@ class DeveloperPane(QDockWidget):
         try:
             self.emulator_controls.set_simulation(on)
         except SimulationRefused as refused:
-            self.simulation_note.setText(f"Simulation refused: {refused}")
+            self.simulation_note.setText(self.tr("Simulation refused: {0}").format(refused))
+
             self.simulation_note.show()
         else:
             self.simulation_note.hide()

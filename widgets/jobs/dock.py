@@ -30,7 +30,7 @@ import threading
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -60,11 +60,13 @@ from app.jobs.reading import read_job_text
 from app.jobs.registration import Placement, RegistrationError
 from app.jobs.run.runner import JobRunner, JobState, LoadCheck
 from app.station import Station
+from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
+from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
 
 MESSAGE_LINES = 200
@@ -80,8 +82,10 @@ def ask_format_dialog(parent: QWidget | None) -> FormatAsker:
         choices: Sequence[JobType] = ambiguous.choices
         item, ok = QInputDialog.getItem(
             parent,
-            "Which kind of job?",
-            f"{shown(ambiguous.path.name)}: the name and the content do not tell.\nRead it as:",
+            QCoreApplication.translate("JobsDock", "Which kind of job?"),
+            QCoreApplication.translate(
+                "JobsDock", "{0}: the name and the content do not tell.\nRead it as:"
+            ).format(shown(ambiguous.path.name)),
             [t.description for t in choices],
             0,
             False,
@@ -138,8 +142,11 @@ class JobsDock(QDockWidget):
         ask_board: BoardAsker | None = None,
         ask_format: FormatAsker | None = None,
     ) -> None:
-        super().__init__("Jobs", parent)
+        super().__init__(parent)
+        self.texts = Texts(self)
+        self.texts.set(self.setWindowTitle, lambda: self.tr("Jobs"))
         self.setObjectName("jobs_dock")
+        self._times: tuple[float | None, float | None] = (None, None)
         self.station = station
         self.runner = runner
         self._path: Path | None = None
@@ -187,7 +194,10 @@ class JobsDock(QDockWidget):
         self.operation_label.setObjectName("job_operation")
         self.operation_label.setFont(monospace_font())
         self.operation_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        self.operation_label.setToolTip("The operation being executed and the line it came from")
+        self.texts.set(
+            self.operation_label.setToolTip,
+            lambda: self.tr("The operation being executed and the line it came from"),
+        )
         # A long source line must not widen the dock past the screen: it is cut instead.
         self.operation_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         layout.addWidget(self.operation_label)
@@ -196,7 +206,9 @@ class JobsDock(QDockWidget):
         self.messages.setReadOnly(True)
         self.messages.setMaximumBlockCount(MESSAGE_LINES)
         self.messages.setFont(monospace_font(-1))
-        self.messages.setPlaceholderText("Messages about the job appear here")
+        self.texts.set(
+            self.messages.setPlaceholderText, lambda: self.tr("Messages about the job appear here")
+        )
         self.messages.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Preferred)
         self.messages.setFixedHeight(self.messages.fontMetrics().lineSpacing() * 4 + 12)
         layout.addWidget(self.messages)
@@ -214,6 +226,16 @@ class JobsDock(QDockWidget):
         station.model.lockChanged.connect(self._update_buttons)
         self.preview.message.connect(self.say)
         self._program_changed()
+        self.texts.also(self._retranslate)
+
+    def _retranslate(self) -> None:
+        """What is made from the job's state, said again in the new language."""
+        if self._loading is None:  # while a file is read, its name stays until it is in
+            self._show_file(self.runner.program)
+        self._show_progress()
+        self._set_times(*self._times)
+        self._show_resume_offer()
+        self._update_buttons()
 
     # --- building ------------------------------------------------------------
 
@@ -224,24 +246,41 @@ class JobsDock(QDockWidget):
         grid.setHorizontalSpacing(8)
         grid.setVerticalSpacing(2)
         grid.setContentsMargins(0, 0, 0, 0)
-        self.draw_check = QCheckBox("Draw holes with the pen")
+        t = self.texts
+        self.draw_check = QCheckBox()
+        t.set(self.draw_check.setText, lambda: self.tr("Draw holes with the pen"))
         self.draw_check.setObjectName("job_draw")
-        self.draw_check.setToolTip(
-            "Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling"
+        t.set(
+            self.draw_check.setToolTip,
+            lambda: self.tr(
+                "Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling"
+            ),
         )
-        self.smallest_check = QCheckBox("Smallest bit first")
+        self.smallest_check = QCheckBox()
+        t.set(self.smallest_check.setText, lambda: self.tr("Smallest bit first"))
         self.smallest_check.setObjectName("job_smallest_first")
-        self.smallest_check.setToolTip(
-            "Drill files: the bit changes ordered from the smallest drill to the largest"
+        t.set(
+            self.smallest_check.setToolTip,
+            lambda: self.tr(
+                "Drill files: the bit changes ordered from the smallest drill to the largest"
+            ),
         )
         self.step_combo = QComboBox()
         self.step_combo.setObjectName("job_excellon_step")
-        for label, inch in (("1/10000 inch", 1e-4), ("1/1000 inch", 1e-3), ("1/100000 inch", 1e-5)):
-            self.step_combo.addItem(label, inch)
-        self.step_combo.setToolTip("Excellon step: the unit of bare integer coordinates")
+        for denominator, inch in (("10000", 1e-4), ("1000", 1e-3), ("100000", 1e-5)):
+            self.step_combo.addItem("", inch)
+            t.item(
+                self.step_combo,
+                self.step_combo.count() - 1,
+                lambda d=denominator: self.tr("1/{0} inch").format(d),
+            )
+        t.set(
+            self.step_combo.setToolTip,
+            lambda: self.tr("Excellon step: the unit of bare integer coordinates"),
+        )
         step = QHBoxLayout()
         step.setSpacing(4)
-        self.step_label = QLabel("Excellon step")
+        self.step_label = t.label(lambda: self.tr("Excellon step"))
         step.addWidget(self.step_label)
         step.addWidget(self.step_combo)
         step.addStretch(1)
@@ -249,18 +288,26 @@ class JobsDock(QDockWidget):
         self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
         # G-code files: other flavours' pen commands, and lines the machine cannot run.
-        self.translate_pen_check = QCheckBox("Use this machine's pen commands")
+        self.translate_pen_check = QCheckBox()
+        t.set(self.translate_pen_check.setText, lambda: self.tr("Use this machine's pen commands"))
         self.translate_pen_check.setObjectName("job_translate_pen")
         self.translate_pen_check.setChecked(True)
-        self.translate_pen_check.setToolTip(
-            "G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine's own "
-            "pen-up / pen-down commands"
+        t.set(
+            self.translate_pen_check.setToolTip,
+            lambda: self.tr(
+                "G-code: M300/M280 servo lines, Z pen heights, M3/M5 are sent as this machine's "
+                "own pen-up / pen-down commands"
+            ),
         )
-        self.skip_check = QCheckBox("Skip lines it cannot run")
+        self.skip_check = QCheckBox()
+        t.set(self.skip_check.setText, lambda: self.tr("Skip lines it cannot run"))
         self.skip_check.setObjectName("job_skip_unsupported")
-        self.skip_check.setToolTip(
-            "G-code: lines this machine cannot execute (e.g. M18) are listed and left out "
-            "instead of refusing the job"
+        t.set(
+            self.skip_check.setToolTip,
+            lambda: self.tr(
+                "G-code: lines this machine cannot execute (e.g. M18) are listed and left out "
+                "instead of refusing the job"
+            ),
         )
         gcode = self.station.profile.dialect == "gcode"
         pen = self.station.profile.capabilities.pen
@@ -350,10 +397,11 @@ class JobsDock(QDockWidget):
         elif self._path is not None and self.runner.state not in ACTIVE_STATES:
             self.open_path(self._path, background=True)
 
-    def _button(self, text: str, name: str, tip: str, slot: Callable[[], object]) -> QPushButton:
-        button = QPushButton(text)
+    def _button(
+        self, text: Maker, name: str, tip: Maker, slot: Callable[[], object]
+    ) -> QPushButton:
+        button = self.texts.button(text, tip)
         button.setObjectName(name)
-        button.setToolTip(tip)
         button.clicked.connect(lambda _=False: slot())
         return button
 
@@ -361,46 +409,65 @@ class JobsDock(QDockWidget):
         bar = QVBoxLayout()
         bar.setSpacing(4)
         self.open_button = self._button(
-            "Open…",
+            lambda: self.tr("Open…"),
             "job_open",
-            "Open a job file (point list; the type is told by its content)",
+            lambda: self.tr("Open a job file (point list; the type is told by its content)"),
             self.ask_open,
         )
         self.export_button = self._button(
-            "Export…",
+            lambda: self.tr("Export…"),
             "job_export",
-            "Write the loaded job out: G-code, or a string-art job's SD-card files",
+            lambda: self.tr(
+                "Write the loaded job out: G-code, or a string-art job's SD-card files"
+            ),
             self.ask_export,
         )
         self.photo_button = self._button(
-            "From photo…",
+            lambda: self.tr("From photo…"),
             "job_from_photo",
-            "String art from a photo: make a nail sequence, see it, load it as a job",
+            lambda: self.tr(
+                "String art from a photo: make a nail sequence, see it, load it as a job"
+            ),
             self.open_generator,
         )
         # Only the winder winds thread (its axes: base A, needle X, drill Z).
         axes = {axis.name for axis in self.station.profile.axes}
         self.photo_button.setVisible({"A", "X", "Z"} <= axes)
-        self.file_label = QLabel("no job loaded")
+        self.file_label = QLabel(self.tr("no job loaded"))
         self.file_label.setObjectName("job_file")
         self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         # A long file name is cut at the dock's edge (the tooltip has it whole) instead of
         # widening the dock past the screen.
         self.file_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.run_button = self._button(
-            "Run", "job_run", "Run the job from the start", self.runner.start
+            lambda: self.tr("Run"),
+            "job_run",
+            lambda: self.tr("Run the job from the start"),
+            self.runner.start,
         )
         self.pause_button = self._button(
-            "Pause", "job_pause", "Pause after the operation under way finishes", self.runner.pause
+            lambda: self.tr("Pause"),
+            "job_pause",
+            lambda: self.tr("Pause after the operation under way finishes"),
+            self.runner.pause,
         )
         self.resume_button = self._button(
-            "Resume", "job_resume", "Go on from where the job paused", self.runner.resume
+            lambda: self.tr("Resume"),
+            "job_resume",
+            lambda: self.tr("Go on from where the job paused"),
+            self.runner.resume,
         )
         self.step_button = self._button(
-            "Step", "job_step", "Execute the next operation only, then pause", self.runner.step
+            lambda: self.tr("Step"),
+            "job_step",
+            lambda: self.tr("Execute the next operation only, then pause"),
+            self.runner.step,
         )
         self.abort_button = self._button(
-            "Abort", "job_abort", "Stop the machine now and end the job", self.runner.abort
+            lambda: self.tr("Abort"),
+            "job_abort",
+            lambda: self.tr("Stop the machine now and end the job"),
+            self.runner.abort,
         )
         self.abort_button.setStyleSheet(
             "QPushButton:enabled { color: #b00020; font-weight: bold; }"
@@ -437,15 +504,17 @@ class JobsDock(QDockWidget):
         self.resume_offer_label = QLabel()
         self.resume_offer_label.setWordWrap(True)
         self.resume_checkpoint_button = self._button(
-            "Resume",
+            lambda: self.tr("Resume"),
             "job_resume_checkpoint",
-            "Go on after the last operation the machine completed; none is repeated",
+            lambda: self.tr(
+                "Go on after the last operation the machine completed; none is repeated"
+            ),
             self.runner.resume_from_checkpoint,
         )
         self.discard_checkpoint_button = self._button(
-            "Discard",
+            lambda: self.tr("Discard"),
             "job_discard_checkpoint",
-            "Forget the interrupted run; Run then starts from the first operation",
+            lambda: self.tr("Forget the interrupted run; Run then starts from the first operation"),
             self.runner.discard_checkpoint,
         )
         row.addWidget(self.resume_offer_label, 1)
@@ -467,15 +536,20 @@ class JobsDock(QDockWidget):
         font.setBold(True)
         self.prompt_label.setFont(font)
         self.continue_button = self._button(
-            "Continue", "job_continue", "Done: let the job go on", self.runner.confirm
+            lambda: self.tr("Continue"),
+            "job_continue",
+            lambda: self.tr("Done: let the job go on"),
+            self.runner.confirm,
         )
         # Only the operator can tell whether an interrupted operation ran (a hole drilled?).
         self.again_button = self._button(
-            "Again", "job_again", "It did not happen: send it again",
+            lambda: self.tr("Again"), "job_again",
+            lambda: self.tr("It did not happen: send it again"),
             lambda: self.runner.decide(again=True),
         )  # fmt: skip
         self.counted_button = self._button(
-            "Done", "job_counted", "It happened: count it as done",
+            lambda: self.tr("Done"), "job_counted",
+            lambda: self.tr("It happened: count it as done"),
             lambda: self.runner.decide(again=False),
         )  # fmt: skip
         row.addWidget(self.prompt_label, 1)
@@ -503,7 +577,10 @@ class JobsDock(QDockWidget):
         self.eta_label = QLabel()
         self.eta_label.setObjectName("job_eta")
         self.eta_label.setFont(monospace_font())
-        self.eta_label.setToolTip("Time left, from the dry run of the job on the machine's model")
+        self.texts.set(
+            self.eta_label.setToolTip,
+            lambda: self.tr("Time left, from the dry run of the job on the machine's model"),
+        )
         row.addWidget(self.progress, 1)
         row.addWidget(self.count_label)
         row.addWidget(self.elapsed_label)
@@ -514,7 +591,7 @@ class JobsDock(QDockWidget):
     # --- operator actions ----------------------------------------------------
 
     def ask_open(self) -> None:
-        path, _ = QFileDialog.getOpenFileName(self, "Open a job", "", file_dialog_filter())
+        path, _ = QFileDialog.getOpenFileName(self, self.tr("Open a job"), "", file_dialog_filter())
         if path:
             self.open_path(Path(path), background=True)
 
@@ -547,10 +624,14 @@ class JobsDock(QDockWidget):
         """
         name = shown(path.name)
         if self.runner.state in ACTIVE_STATES:
-            self.say(f"{name}: not opened — a job is under way (abort it first)")
+            self.say(self.tr("{0}: not opened — a job is under way (abort it first)").format(name))
             return False
         if self._loading is not None:
-            self.say(f"{name}: not opened — still reading {shown(self._loading.path.name)}")
+            self.say(
+                self.tr("{0}: not opened — still reading {1}").format(
+                    name, shown(self._loading.path.name)
+                )
+            )
             return False
         if path != self._path:
             self._board = None
@@ -567,7 +648,7 @@ class JobsDock(QDockWidget):
                 self,
             )
             self._loading.done.connect(self._loaded)
-            self.file_label.setText(f"reading {_bold(path.name)}…")
+            self.file_label.setText(self.tr("reading {0}…").format(_bold(path.name)))
             self.open_button.setEnabled(False)
             self.progress.setRange(0, 0)  # busy until the worker answers
             self._loading.start()
@@ -592,7 +673,7 @@ class JobsDock(QDockWidget):
             self._prepared_lines = (program.source, lines)
             self._accept(path, program, checked)
         else:
-            self.say(f"{shown(path.name)}: not loaded — {result}")
+            self.say(self.tr("{0}: not loaded — {1}").format(shown(path.name), result))
         self._program_changed()
         if self._reread and self._loading is None:
             self._reread = False
@@ -609,11 +690,12 @@ class JobsDock(QDockWidget):
             if chosen is not None:
                 self._format = chosen
                 return self.open_path(path, background=background)
-        self.say(f"{exc} — not loaded")
+        self.say(self.tr("{0} — not loaded").format(exc))
         for more in exc.more[:MORE_REFUSALS_SHOWN]:
             self.say(f"  {more}")
         if len(exc.more) > MORE_REFUSALS_SHOWN:
-            self.say(f"  … and {len(exc.more) - MORE_REFUSALS_SHOWN} more lines refused")
+            left = len(exc.more) - MORE_REFUSALS_SHOWN
+            self.say("  " + self.tr("… and %n more line(s) refused", "", left))
         return False
 
     def _placed(self, program: Program) -> tuple[Program, Placement] | None:
@@ -658,7 +740,9 @@ class JobsDock(QDockWidget):
             # still worth seeing — where it leaves the travel, what it would do — so the
             # preview shows it while Run stays off.
             self.preview.set_program(program)
-            self.file_label.setText(f"{_bold(program.name)} — refused, preview only")
+            self.file_label.setText(
+                self.tr("{0} — refused, preview only").format(_bold(program.name))
+            )
             self.file_label.setToolTip(str(program.source) if program.source else program.name)
             self.registration.set_job(None)
             return False
@@ -667,7 +751,7 @@ class JobsDock(QDockWidget):
         return True
 
     def _finish_accept(self, path: Path, program: Program) -> None:
-        self.say(f"{shown(path.name)}: {len(program)} operations loaded")
+        self.say(self.tr("{0}: %n operation(s) loaded", "", len(program)).format(shown(path.name)))
         self.jobOpened.emit(path)
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
@@ -689,7 +773,8 @@ class JobsDock(QDockWidget):
         placed = (original, placement) if original is not None else None
         if self.runner.load(program, placed):
             return False  # the runner listed the holes off the bed
-        self.say(f"{program.name}: {program.notes[-1] if program.notes else 'loaded'}")
+        note = program.notes[-1] if program.notes else self.tr("loaded")
+        self.say(f"{program.name}: {note}")
         return True
 
     def ask_export(self) -> None:
@@ -698,23 +783,27 @@ class JobsDock(QDockWidget):
             return
         menu = QMenu(self)
         if isinstance(program, StringArtProgram):
-            menu.addAction("SD-card files (param.txt, poradi.txt)…", self._ask_export_sd)
+            menu.addAction(self.tr("SD-card files (param.txt, poradi.txt)…"), self._ask_export_sd)
         if self.station.profile.gcode is not None:
-            menu.addAction("G-code program…", self._ask_export_gcode)
+            menu.addAction(self.tr("G-code program…"), self._ask_export_gcode)
         if menu.isEmpty():
-            self.say("Nothing to export for this job on this machine")
+            self.say(self.tr("Nothing to export for this job on this machine"))
             return
         menu.exec(self.export_button.mapToGlobal(self.export_button.rect().bottomLeft()))
 
     def _ask_export_sd(self) -> None:
-        directory = QFileDialog.getExistingDirectory(self, "Folder for param.txt and poradi.txt")
+        directory = QFileDialog.getExistingDirectory(
+            self, self.tr("Folder for param.txt and poradi.txt")
+        )
         if directory:
             self.export_sd(Path(directory))
 
     def _ask_export_gcode(self) -> None:
         program = self.runner.program
         name = f"{program.name}.gcode" if program is not None else "job.gcode"
-        path, _ = QFileDialog.getSaveFileName(self, "Export G-code", name, "G-code (*.gcode)")
+        path, _ = QFileDialog.getSaveFileName(
+            self, self.tr("Export G-code"), name, self.tr("G-code (*.gcode)")
+        )
         if path:
             self.export_gcode(Path(path))
 
@@ -722,14 +811,14 @@ class JobsDock(QDockWidget):
         """The string-art job as its standalone firmware reads it from an SD card."""
         program = self.runner.program
         if not isinstance(program, StringArtProgram):
-            self.say("Only string-art jobs have SD-card files")
+            self.say(self.tr("Only string-art jobs have SD-card files"))
             return False
         try:
             param, poradi = export_sd_files(program.job, directory)
         except OSError as exc:
-            self.say(f"SD-card files not written: {exc}")
+            self.say(self.tr("SD-card files not written: {0}").format(exc))
             return False
-        self.say(f"Wrote {param} and {poradi}")
+        self.say(self.tr("Wrote {0} and {1}").format(param, poradi))
         return True
 
     def export_gcode(self, path: Path) -> bool:
@@ -740,9 +829,9 @@ class JobsDock(QDockWidget):
         try:
             export_gcode(program, path, self.station.profile)
         except (OSError, ValueError) as exc:
-            self.say(f"G-code not written: {exc}")
+            self.say(self.tr("G-code not written: {0}").format(exc))
             return False
-        self.say(f"Wrote {path}")
+        self.say(self.tr("Wrote {0}").format(path))
         return True
 
     def say(self, text: str) -> None:
@@ -779,11 +868,13 @@ class JobsDock(QDockWidget):
 
     def _show_file(self, program: Program | None) -> None:
         if program is None:
-            self.file_label.setText("no job loaded")
+            self.file_label.setText(self.tr("no job loaded"))
             self.file_label.setToolTip("")
             return
         source = str(program.source) if program.source else program.name
-        self.file_label.setText(f"{_bold(program.name)} — {len(program)} operations")
+        self.file_label.setText(
+            self.tr("{0} — %n operation(s)", "", len(program)).format(_bold(program.name))
+        )
         self.file_label.setToolTip(source)
 
     def _state_changed(self, *_args: object) -> None:
@@ -805,14 +896,18 @@ class JobsDock(QDockWidget):
             self.resume_offer.hide()
             return
         if 0 <= index < len(program):
-            where = f"{program[index].source}  {program[index].describe()}"
+            where = f"{program[index].source}  {operation_text(program[index])}"
         else:
-            where = "the end"
+            where = self.tr("the end")
         self.resume_offer_label.setText(
-            f"An interrupted run of <b>{program.name}</b> completed {index} of "
-            f"{len(program)} operations. Resume from operation {index + 1} ({where})?"
+            self.tr(
+                "An interrupted run of <b>{0}</b> completed {1} of %n operation(s). "
+                "Resume from operation {2} ({3})?",
+                "",
+                len(program),
+            ).format(html.escape(program.name), index, index + 1, html.escape(where))
         )
-        self.resume_checkpoint_button.setText(f"Resume from op {index + 1}")
+        self.resume_checkpoint_button.setText(self.tr("Resume from op {0}").format(index + 1))
         self.resume_offer.show()
 
     def _update_buttons(self, *_args: object) -> None:
@@ -848,8 +943,8 @@ class JobsDock(QDockWidget):
         self.continue_button.setEnabled(state is JobState.WAITING)
         self.again_button.setEnabled(answering)
         self.counted_button.setEnabled(answering)
-        why = f" — motion locked: {lock}" if lock else ""
-        self.run_button.setToolTip(f"Run the job from the start{why}")
+        why = self.tr(" — motion locked: {0}").format(lock) if lock else ""
+        self.run_button.setToolTip(self.tr("Run the job from the start") + why)
 
     def _show_progress(self, *_args: object) -> None:
         """The bar and count say what the machine ran; what is sent ahead is said beside it.
@@ -863,23 +958,26 @@ class JobsDock(QDockWidget):
         sent = self.runner.done if program is not None else 0
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(executed, max(1, total)))
-        text = f"{executed} / {total} ops"
+        text = self.tr("{0} / %n ops", "", total).format(executed)
         # Sent ahead only while the job runs: once it ended (an abort drops what the
         # machine held) the one figure is what ran, as the abort message says.
         if sent > executed and self.runner.state in ACTIVE_STATES:
-            text += f" · {sent} sent"
+            text += " · " + self.tr("{0} sent").format(sent)
         self.count_label.setText(text)
         self.count_label.setToolTip(
-            "Operations the machine reported as run, of all; and how many were sent to it "
-            "(a G-code machine holds sent lines in its planner before it runs them)"
+            self.tr(
+                "Operations the machine reported as run, of all; and how many were sent to it "
+                "(a G-code machine holds sent lines in its planner before it runs them)"
+            )
         )
 
     def _show_eta(self, elapsed_s: float, remaining_s: float) -> None:
         self._set_times(elapsed_s, remaining_s)
 
     def _set_times(self, elapsed_s: float | None, remaining_s: float | None) -> None:
-        self.elapsed_label.setText(f"elapsed {clock_text(elapsed_s)}")
-        self.eta_label.setText(f"left {clock_text(remaining_s)}")
+        self._times = (elapsed_s, remaining_s)
+        self.elapsed_label.setText(self.tr("elapsed {0}").format(clock_text(elapsed_s)))
+        self.eta_label.setText(self.tr("left {0}").format(clock_text(remaining_s)))
 
     def _show_operation(self, index: int) -> None:
         """The operation with its source line as written in the file and, on a machine that
@@ -888,10 +986,10 @@ class JobsDock(QDockWidget):
         if program is None or not 0 <= index < len(program):
             return
         op = program[index]
-        text = f"{op.source}  {op.describe()}"
+        text = f"{op.source}  {operation_text(op)}"
         raw = self._source_line(op.source.line)
         if raw:
-            text += f"\n    file: {raw}"
+            text += "\n    " + self.tr("file: {0}").format(raw)
         session = self.station.drill_session
         if session is not None and op.target:
             names = [axis.name for axis in self.station.profile.axes]
@@ -900,7 +998,7 @@ class JobsDock(QDockWidget):
                 for axis, value in op.target.items()
                 if axis in names
             ]
-            text += f"    machine: {' '.join(steps)} microsteps"
+            text += "    " + self.tr("machine: {0} microsteps").format(" ".join(steps))
         self.operation_label.setText(text)
 
     def _source_line(self, number: int) -> str:
@@ -909,12 +1007,12 @@ class JobsDock(QDockWidget):
         return self._source_lines[number - 1].strip()
 
     def _show_prompt(self, text: str) -> None:
-        self.prompt_label.setText(f"Operator: {text}")
+        self.prompt_label.setText(self.tr("Operator: {0}").format(text))
         self._show_answers(question=False)
         self.prompt.show()
         self.continue_button.setEnabled(True)
         self.continue_button.setFocus()
-        self.say(f"waiting for the operator: {text}")
+        self.say(self.tr("waiting for the operator: {0}").format(text))
 
     def _show_question(self, text: str, again: str, done: str) -> None:
         self.prompt_label.setText(text)

@@ -42,6 +42,7 @@ way there.
 
 from __future__ import annotations
 
+import html
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -51,7 +52,7 @@ import numpy as np
 import pyqtgraph as pg
 from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
 from PySide6.QtCore import QCoreApplication, QPointF, Qt, QTimer, Signal
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QHBoxLayout, QMessageBox, QVBoxLayout, QWidget
 
 from app.jobs.formats.string_art.geometry import shortest_turn
 from app.jobs.formats.string_art.program import StringArtProgram
@@ -66,6 +67,7 @@ from widgets.jobs.string_art_thread import (
     WoundCounter,
     band_alpha,
 )
+from widgets.retranslate import Texts
 from widgets.theme import LIGHT, PlotColours
 
 TRAVEL_COLOUR = "#9a9a9a"
@@ -91,16 +93,25 @@ ACTIVE_STATES = frozenset({JobState.RUNNING, JobState.PAUSING, JobState.PAUSED, 
 
 _EMPTY = np.empty(0)
 
-#: The key to the colours, in the row above the plot (a legend inside would hide the path).
-LEGEND_HTML = (
-    f"<span style='color:{WORK_COLOUR}'>&#9679; work</span>&nbsp;&nbsp;"
-    f"<span style='color:{TRAVEL_COLOUR}'>- - travel</span>&nbsp;&nbsp;"
-    f"<span style='color:{DONE_COLOUR}'>&#9679; done</span>&nbsp;&nbsp;"
-    f"<span style='color:{POSITION_COLOUR}'><b>+</b> machine</span>&nbsp;&nbsp;"
-    f"<span style='color:{LIMIT_COLOUR}'>&#9633; travel limits</span>"
-)
-#: The same for a cylindrical machine, whose limit is the disc the tool reaches.
-POLAR_LEGEND_HTML = LEGEND_HTML.replace("&#9633; travel limits", "&#9675; reach")
+
+def legend_html(polar: bool) -> str:
+    """The key to the colours, in the row above the plot (a legend inside would hide the
+    path); a cylindrical machine's limit is the disc the tool reaches."""
+    work = QCoreApplication.translate("JobPreview", "work")
+    travel = QCoreApplication.translate("JobPreview", "travel")
+    done = QCoreApplication.translate("JobPreview", "done")
+    machine = QCoreApplication.translate("JobPreview", "machine")
+    if polar:
+        limit = "&#9675; " + html.escape(QCoreApplication.translate("JobPreview", "reach"))
+    else:
+        limit = "&#9633; " + html.escape(QCoreApplication.translate("JobPreview", "travel limits"))
+    return (
+        f"<span style='color:{WORK_COLOUR}'>&#9679; {html.escape(work)}</span>&nbsp;&nbsp;"
+        f"<span style='color:{TRAVEL_COLOUR}'>- - {html.escape(travel)}</span>&nbsp;&nbsp;"
+        f"<span style='color:{DONE_COLOUR}'>&#9679; {html.escape(done)}</span>&nbsp;&nbsp;"
+        f"<span style='color:{POSITION_COLOUR}'><b>+</b> {html.escape(machine)}</span>"
+        f"&nbsp;&nbsp;<span style='color:{LIMIT_COLOUR}'>{limit}</span>"
+    )
 
 
 @dataclass(frozen=True)
@@ -160,7 +171,7 @@ def ask_operator(parent: QWidget) -> Callable[[str], bool]:
     def confirm(text: str) -> bool:
         answer = QMessageBox.question(
             parent,
-            "Move the machine?",
+            QCoreApplication.translate("JobPreview", "Move the machine?"),
             text,
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.No,
@@ -419,24 +430,33 @@ class JobPreview(QWidget):
         bar = QHBoxLayout()
         bar.setSpacing(6)
         polar = self.polar is not None
-        self.hint_label = QLabel(POLAR_LEGEND_HTML if polar else LEGEND_HTML)
+        t = self.texts = Texts(self)
+        self.hint_label = t.label(lambda: legend_html(polar))
         self.hint_label.setObjectName("preview_hint")
-        self.hint_label.setToolTip(
-            "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) "
-            + (
-                "within the tool's reach turns the base and moves the tool there"
+        t.set(
+            self.hint_label.setToolTip,
+            lambda: (
+                self.tr(
+                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within "
+                    "the tool's reach turns the base and moves the tool there after you confirm"
+                )
                 if polar
-                else "inside the travel limits moves the machine there"
-            )
-            + " after you confirm"
+                else self.tr(
+                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside "
+                    "the travel limits moves the machine there after you confirm"
+                )
+            ),
         )
-        self.fit_button = QPushButton("Fit")
+        self.fit_button = t.button(
+            lambda: self.tr("Fit"),
+            lambda: (
+                self.tr("Show the whole job (without a job, the tool's reach)")
+                if polar
+                else self.tr("Show the whole job and the machine's travel")
+            ),
+        )
         self.fit_button.setObjectName("preview_fit")
-        self.fit_button.setToolTip(
-            "Show the whole job (without a job, the tool's reach)"
-            if polar
-            else "Show the whole job and the machine's travel"
-        )
+        t.also(self._update_enabled)
         self.fit_button.clicked.connect(self.fit)
         bar.addWidget(self.hint_label, 1)
         bar.addWidget(self.fit_button)
@@ -454,7 +474,7 @@ class JobPreview(QWidget):
         if self.polar is not None:
             # The work's plane, whatever the axes are called; the radius axis' unit.
             unit = self.station.profile.axes[self.polar.radius].unit
-            names = ("x on the work", "y on the work")
+            names = (self.tr("x on the work"), self.tr("y on the work"))
         self.plot.setLabel("bottom", names[0], units=unit)
         self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
         for side in ("left", "bottom"):
@@ -656,12 +676,12 @@ class JobPreview(QWidget):
     def click_refusal(self) -> str | None:
         """Why a click would not move the machine now, or None when it would."""
         if self.runner is not None and self.runner.state in ACTIVE_STATES:
-            return "a job is under way"
+            return self.tr("a job is under way")
         reason = self.model.motion_lock_reason()
         if reason is not None:
-            return f"motion is locked: {reason}"
+            return self.tr("motion is locked: {0}").format(reason)
         if self.station.session is None:
-            return "not connected"
+            return self.tr("not connected")
         return None
 
     def request_move(self, x: float, y: float) -> bool:
@@ -674,25 +694,29 @@ class JobPreview(QWidget):
         )
         refusal = self.click_refusal
         if refusal is not None:
-            return self._say(f"Click-to-move refused ({described}): {refusal}")
+            return self._say(self.tr("Click-to-move refused ({0}): {1}").format(described, refusal))
         outside = [
-            f"{name} {value:.3f} is outside {low:g}…{high:g}"
+            self.tr("{0} {1} is outside {2}…{3}").format(
+                name, f"{value:.3f}", f"{low:g}", f"{high:g}"
+            )
             for name, value, (low, high) in zip(
                 self.axis_names, target, self.travel_limits, strict=True
             )
             if not low <= value <= high
         ]
         if outside:
-            return self._say(f"Click-to-move refused: {'; '.join(outside)} (soft limits)")
+            return self._say(
+                self.tr("Click-to-move refused: {0} (soft limits)").format("; ".join(outside))
+            )
         unit = self.station.profile.axes[0].unit
-        if not self.confirm(f"Move to {described} {unit}?"):
-            return self._say("Click-to-move cancelled")
+        if not self.confirm(self.tr("Move to {0} {1}?").format(described, unit)):
+            return self._say(self.tr("Click-to-move cancelled"))
         session = self.station.session
         assert session is not None  # click_refusal said so
         for axis, value in zip(self.axis_indices, target, strict=True):
             if not session.move_absolute(axis, value):
-                return self._say(f"The machine refused the move to {described}")
-        self._say(f"Moving to {described}")
+                return self._say(self.tr("The machine refused the move to {0}").format(described))
+        self._say(self.tr("Moving to {0}").format(described))
         return True
 
     def _request_polar_move(self, polar: PolarAxes, x: float, y: float) -> bool:
@@ -711,24 +735,31 @@ class JobPreview(QWidget):
         )
         refusal = self.click_refusal
         if refusal is not None:
-            return self._say(f"Click-to-move refused ({described}): {refusal}")
+            return self._say(self.tr("Click-to-move refused ({0}): {1}").format(described, refusal))
         if radius > polar.reach:
             return self._say(
-                f"Click-to-move refused: {radius:.3f} {radius_unit} from the centre is beyond "
-                f"{radius_name}'s travel 0…{polar.reach:g} (the reach)"
+                self.tr(
+                    "Click-to-move refused: {0} {1} from the centre is beyond "
+                    "{2}'s travel 0…{3} (the reach)"
+                ).format(f"{radius:.3f}", radius_unit, radius_name, f"{polar.reach:g}")
             )
-        question = (
-            f"Turn {angle_name} by {turn:+.1f}° to {angle:.3f} {angle_unit}, "
-            f"then move {radius_name} to {radius:.3f} {radius_unit}?"
+        question = self.tr("Turn {0} by {1}° to {2} {3}, then move {4} to {5} {6}?").format(
+            angle_name,
+            f"{turn:+.1f}",
+            f"{angle:.3f}",
+            angle_unit,
+            radius_name,
+            f"{radius:.3f}",
+            radius_unit,
         )
         if not self.confirm(question):
-            return self._say("Click-to-move cancelled")
+            return self._say(self.tr("Click-to-move cancelled"))
         session = self.station.session
         assert session is not None  # click_refusal said so
         for axis, value in ((polar.angle, angle), (polar.radius, radius)):
             if not session.move_absolute(axis, value):
-                return self._say(f"The machine refused the move to {described}")
-        self._say(f"Moving to {described}")
+                return self._say(self.tr("The machine refused the move to {0}").format(described))
+        self._say(self.tr("Moving to {0}").format(described))
         return True
 
     # --- picking reference holes ------------------------------------------------
@@ -802,12 +833,16 @@ class JobPreview(QWidget):
 
     def _update_enabled(self, *_args: object) -> None:
         refusal = self.click_refusal
-        where = "within the tool's reach" if self.polar is not None else "inside the travel"
-        self.plot_widget.setToolTip(
-            f"Click a point {where} to move there (after confirming)"
-            if refusal is None
-            else f"Click-to-move is off: {refusal}"
-        )
+        if refusal is not None:
+            self.plot_widget.setToolTip(self.tr("Click-to-move is off: {0}").format(refusal))
+        elif self.polar is not None:
+            self.plot_widget.setToolTip(
+                self.tr("Click a point within the tool's reach to move there (after confirming)")
+            )
+        else:
+            self.plot_widget.setToolTip(
+                self.tr("Click a point inside the travel to move there (after confirming)")
+            )
 
     # --- throttled drawing ---------------------------------------------------
 

@@ -21,7 +21,6 @@ from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QHBoxLayout,
-    QLabel,
     QPushButton,
     QSpinBox,
     QWidget,
@@ -38,6 +37,7 @@ from app.jobs.registration import (
     register,
 )
 from app.station import Station
+from widgets.retranslate import Maker, Texts
 
 #: At most this many reference holes (three: least squares with a residual).
 MAX_REFERENCES = 3
@@ -70,59 +70,70 @@ class RegistrationBar(QWidget):
         self.placement = Placement()
         self._holes: list[Point] = []
         self.measured: list[Point | None] = [None] * MAX_REFERENCES
+        t = self.texts = Texts(self)
         row = QHBoxLayout(self)
         row.setContentsMargins(0, 0, 0, 0)
         self.side_combo = QComboBox()
         self.side_combo.setObjectName("job_side")
-        self.side_combo.setToolTip(
-            self.tr(
+        t.set(
+            self.side_combo.setToolTip,
+            lambda: self.tr(
                 "The bottom side of a double-sided board: the job mirrored about its own extent"
-            )
+            ),
         )
-        for label, about in (
-            (self.tr("Top side"), ""),
-            (self.tr("Bottom, mirrored in X"), "X"),
-            (self.tr("Bottom, mirrored in Y"), "Y"),
-        ):
-            self.side_combo.addItem(label, about)
+        sides: tuple[tuple[Maker, str], ...] = (
+            (lambda: self.tr("Top side"), ""),
+            (lambda: self.tr("Bottom, mirrored in X"), "X"),
+            (lambda: self.tr("Bottom, mirrored in Y"), "Y"),
+        )
+        for label, about in sides:
+            self.side_combo.addItem("", about)
+            t.item(self.side_combo, self.side_combo.count() - 1, label)
         self.side_combo.activated.connect(self._side_changed)
         row.addWidget(self.side_combo)
-        row.addWidget(QLabel(self.tr("Register on holes")))
+        row.addWidget(t.label(lambda: self.tr("Register on holes")))
         self.hole_spins: list[QSpinBox] = []
         self.pick_buttons: list[QPushButton] = []
         self.here_buttons: list[QPushButton] = []
         for k in range(MAX_REFERENCES):
             spin = QSpinBox()
             spin.setObjectName(f"job_reference_{k + 1}")
-            spin.setToolTip(self.tr("A reference hole: its number in drilling order"))
+            t.set(
+                spin.setToolTip, lambda: self.tr("A reference hole: its number in drilling order")
+            )
             spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
-            pick = QPushButton(self.tr("Pick"))
+            pick = t.button(
+                lambda: self.tr("Pick"), lambda: self.tr("Then click the hole in the preview")
+            )
             pick.setObjectName(f"job_reference_pick_{k + 1}")
             pick.setCheckable(True)
-            pick.setToolTip(self.tr("Then click the hole in the preview"))
             pick.toggled.connect(lambda on, k=k: self._pick(k, on))
-            here = QPushButton(self.tr("Here"))
-            here.setObjectName(f"job_reference_here_{k + 1}")
-            here.setToolTip(
-                self.tr("The tool stands over this hole on the board: take its position")
+            here = t.button(
+                lambda: self.tr("Here"),
+                lambda: self.tr("The tool stands over this hole on the board: take its position"),
             )
+            here.setObjectName(f"job_reference_here_{k + 1}")
             here.clicked.connect(lambda _c=False, k=k: self.take(k))
             for widget in (spin, pick, here):
                 row.addWidget(widget)
             self.hole_spins.append(spin)
             self.pick_buttons.append(pick)
             self.here_buttons.append(here)
-        self.three_check = QCheckBox(self.tr("3 points"))
+        self.three_check = QCheckBox()
+        t.set(self.three_check.setText, lambda: self.tr("3 points"))
         self.three_check.setObjectName("job_reference_three")
-        self.three_check.setToolTip(
-            self.tr("A third reference hole: averaged in, and how far the points disagree shown")
+        t.set(
+            self.three_check.setToolTip,
+            lambda: self.tr(
+                "A third reference hole: averaged in, and how far the points disagree shown"
+            ),
         )
         self.three_check.toggled.connect(self._count_changed)
         row.addWidget(self.three_check)
-        self.register_button = QPushButton(self.tr("Register"))
+        self.register_button = t.button(lambda: self.tr("Register"))
         self.register_button.setObjectName("job_register")
         self.register_button.clicked.connect(self.apply)
-        self.clear_button = QPushButton(self.tr("Clear"))
+        self.clear_button = t.button(lambda: self.tr("Clear"))
         self.clear_button.setObjectName("job_register_clear")
         self.clear_button.clicked.connect(self.clear)
         row.addWidget(self.register_button)

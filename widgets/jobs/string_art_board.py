@@ -29,19 +29,22 @@ DEFAULT_RADIUS_CM = 14.5
 class BoardDialog(QDialog):
     def __init__(self, needs: NeedsNailCount, parent: QWidget | None = None) -> None:
         super().__init__(parent)
-        self.setWindowTitle("String-art board")
+        self.setWindowTitle(self.tr("String-art board"))
         form = QFormLayout(self)
         form.addRow(
             QLabel(
-                f"<b>{html.escape(shown(needs.path.name))}</b> lists {needs.entries} nail "
-                "visits without a param.txt. Which board is it for?"
+                self.tr(
+                    "<b>{0}</b> lists %n nail visit(s) without a param.txt. Which board is it for?",
+                    "",
+                    needs.entries,
+                ).format(html.escape(shown(needs.path.name)))
             )
         )
         self.shape = QComboBox()
         self.shape.setObjectName("board_shape")
-        self.shape.addItem("circle", 0)
+        self.shape.addItem(self.tr("circle"), 0)
         for sides in range(3, 13):
-            self.shape.addItem(f"{sides}-gon", sides)
+            self.shape.addItem(self.tr("{0}-gon").format(sides), sides)
         highest = needs.min_nails - 1
         least = max(3, needs.min_nails)
         self.nails = NumberField(
@@ -50,7 +53,9 @@ class BoardDialog(QDialog):
             decimals=0,
             value=least,
             name="board_nails",
-            tooltip=f"At least {needs.min_nails}: the list names nail {highest}",
+            tooltip=self.tr("At least {0}: the list names nail {1}").format(
+                needs.min_nails, highest
+            ),
         )
         self.radius = NumberField(
             1.6,
@@ -59,15 +64,16 @@ class BoardDialog(QDialog):
             unit="cm",
             value=DEFAULT_RADIUS_CM,
             name="board_radius",
-            tooltip="Board radius; the nails sit 1.5 cm inside its edge",
+            tooltip=self.tr("Board radius; the nails sit 1.5 cm inside its edge"),
         )
-        form.addRow("Shape", self.shape)
-        form.addRow("Nails", self.nails)
-        form.addRow("Board radius", self.radius)
+        form.addRow(self.tr("Shape"), self.shape)
+        form.addRow(self.tr("Nails"), self.nails)
+        form.addRow(self.tr("Board radius"), self.radius)
         self.note = QLabel()
         self.gate = FieldGate(self.note, self)
-        self.gate.watch(self.nails, "Nails")
-        self.gate.watch(self.radius, "Board radius")
+        self.gate.watch(self.nails, self.tr("Nails"))
+        self.gate.watch(self.radius, self.tr("Board radius"))
+
         form.addRow(self.note)
         buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel

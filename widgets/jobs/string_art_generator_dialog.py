@@ -18,12 +18,13 @@ checked, drilled and wound like any other.
 
 from __future__ import annotations
 
+import html
 import time
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QStandardPaths, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QStandardPaths, Qt, Signal
 from PySide6.QtGui import QCloseEvent, QImage, QPixmap
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -67,12 +68,22 @@ PathAsker = Callable[[QWidget], Path | None]
 
 
 def ask_image(parent: QWidget) -> Path | None:
-    path, _ = QFileDialog.getOpenFileName(parent, "Photo for string art", "", IMAGE_FILTER)
+    path, _ = QFileDialog.getOpenFileName(
+        parent,
+        QCoreApplication.translate("StringArtGeneratorDialog", "Photo for string art"),
+        "",
+        IMAGE_FILTER,
+    )
     return Path(path) if path else None
 
 
 def ask_folder(parent: QWidget) -> Path | None:
-    path = QFileDialog.getExistingDirectory(parent, "Folder for param.txt and poradi.txt")
+    path = QFileDialog.getExistingDirectory(
+        parent,
+        QCoreApplication.translate(
+            "StringArtGeneratorDialog", "Folder for param.txt and poradi.txt"
+        ),
+    )
     return Path(path) if path else None
 
 
@@ -119,7 +130,7 @@ class StringArtGeneratorDialog(QDialog):
     ) -> None:
         super().__init__(parent)
         self.setObjectName("string_art_generator")
-        self.setWindowTitle("String art from a photo")
+        self.setWindowTitle(self.tr("String art from a photo"))
         self._open_job = open_job
         #: How far from the centre the winder's needle goes (its X travel), if known.
         self._reach_mm = reach_mm
@@ -136,21 +147,25 @@ class StringArtGeneratorDialog(QDialog):
         layout = QVBoxLayout(self)
         layout.setSizeConstraint(QLayout.SizeConstraint.SetMinimumSize)
         top = QHBoxLayout()
-        self.image_button = self._button("Photo…", "sa_image", "Choose a PNG or JPEG photo")
+        self.image_button = self._button(
+            self.tr("Photo…"), "sa_image", self.tr("Choose a PNG or JPEG photo")
+        )
         self.image_button.clicked.connect(self.ask_image)
-        self.image_label = QLabel("no photo chosen")
+        self.image_label = QLabel(self.tr("no photo chosen"))
         self.image_label.setObjectName("sa_image_name")
         top.addWidget(self.image_button)
         top.addWidget(self.image_label, 1)
         layout.addLayout(top)
 
         pictures = QGridLayout()
-        self.photo_view = self._picture("sa_photo", "The photo cropped to the board")
-        self.thread_view = self._picture("sa_thread", "The thread, as wound at the real width")
+        self.photo_view = self._picture("sa_photo", self.tr("The photo cropped to the board"))
+        self.thread_view = self._picture(
+            "sa_thread", self.tr("The thread, as wound at the real width")
+        )
         self.scale_label = QLabel()
         self.scale_label.setObjectName("sa_scale")
-        pictures.addWidget(QLabel("Photo on the board"), 0, 0)
-        pictures.addWidget(QLabel("Thread"), 0, 1)
+        pictures.addWidget(QLabel(self.tr("Photo on the board")), 0, 0)
+        pictures.addWidget(QLabel(self.tr("Thread")), 0, 1)
         pictures.addWidget(self.photo_view, 1, 0)
         pictures.addWidget(self.thread_view, 1, 1)
         pictures.addWidget(self.scale_label, 2, 0, 1, 2)
@@ -165,7 +180,7 @@ class StringArtGeneratorDialog(QDialog):
         self.progress.setObjectName("sa_progress")
         self.progress.setRange(0, 1)
         self.progress.setValue(0)
-        self.status = QLabel("Choose a photo")
+        self.status = QLabel(self.tr("Choose a photo"))
         self.status.setObjectName("sa_status")
         self.status.setWordWrap(True)
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -173,15 +188,25 @@ class StringArtGeneratorDialog(QDialog):
         layout.addWidget(self.status)
 
         buttons = QHBoxLayout()
-        self.generate_button = self._button("Generate", "sa_generate", "Make the nail sequence")
-        self.cancel_button = self._button("Cancel", "sa_cancel", "Stop; nothing is kept")
+        self.generate_button = self._button(
+            self.tr("Generate"), "sa_generate", self.tr("Make the nail sequence")
+        )
+        self.cancel_button = self._button(
+            self.tr("Cancel"), "sa_cancel", self.tr("Stop; nothing is kept")
+        )
         self.export_button = self._button(
-            "Export…", "sa_export", "Write param.txt, poradi.txt and a PNG into a folder"
+            self.tr("Export…"),
+            "sa_export",
+            self.tr("Write param.txt, poradi.txt and a PNG into a folder"),
         )
         self.load_button = self._button(
-            "Load as job", "sa_load", "Open the sequence in the jobs dock to drill and wind it"
+            self.tr("Load as job"),
+            "sa_load",
+            self.tr("Open the sequence in the jobs dock to drill and wind it"),
         )
-        self.close_button = self._button("Close", "sa_close", "Close (a generation is cancelled)")
+        self.close_button = self._button(
+            self.tr("Close"), "sa_close", self.tr("Close (a generation is cancelled)")
+        )
         self.generate_button.clicked.connect(self.start)
         self.cancel_button.clicked.connect(self.cancel)
         self.export_button.clicked.connect(self.ask_export)
@@ -243,36 +268,40 @@ class StringArtGeneratorDialog(QDialog):
         form = QFormLayout()
         self.shape = QComboBox()
         self.shape.setObjectName("sa_shape")
-        self.shape.addItem("circle", 0)
+        self.shape.addItem(self.tr("circle"), 0)
         for sides in range(3, 13):
-            self.shape.addItem(f"{sides}-gon", sides)
+            self.shape.addItem(self.tr("{0}-gon").format(sides), sides)
         index = self.shape.findData(board.tvar)
         self.shape.setCurrentIndex(max(0, index))
         self.nails = self._spin("sa_nails", 3, 2000, board.nails, "pocet_hrebiku")
         self.radius = self._real("sa_radius", 1.6, 100.0, board.radius_cm, 0.5, 2)
         self.radius.setSuffix(" cm")
-        self.radius.setToolTip("Board radius (polomer_matrice); the nails sit 1.5 cm inside")
-        self.lines = self._spin("sa_lines", 1, 100_000, Settings.lines, "The line budget")
+        self.radius.setToolTip(
+            self.tr("Board radius (polomer_matrice); the nails sit 1.5 cm inside")
+        )
+        self.lines = self._spin("sa_lines", 1, 100_000, Settings.lines, self.tr("The line budget"))
         self.thread_width = self._real("sa_thread_mm", 0.01, 5.0, Settings.thread_mm, 0.01, 2)
         self.thread_width.setSuffix(" mm")
-        self.thread_width.setToolTip("The real thread's width: it sets how dark each thread looks")
+        self.thread_width.setToolTip(
+            self.tr("The real thread's width: it sets how dark each thread looks")
+        )
         self.skip = self._spin(
             "sa_skip",
             1,
             1000,
             default_skip(board.nails),
-            "Least nails between a thread's two ends (never to a neighbouring nail)",
+            self.tr("Least nails between a thread's two ends (never to a neighbouring nail)"),
         )
         self.resolution = self._spin(
-            "sa_resolution", 32, 600, Settings.resolution, "Pixels across the nail circle"
+            "sa_resolution", 32, 600, Settings.resolution, self.tr("Pixels across the nail circle")
         )
-        form.addRow("Shape", self.shape)
-        form.addRow("Nails", self.nails)
-        form.addRow("Board radius", self.radius)
-        form.addRow("Line budget", self.lines)
-        form.addRow("Thread width", self.thread_width)
-        form.addRow("Minimum skip", self.skip)
-        form.addRow("Raster", self.resolution)
+        form.addRow(self.tr("Shape"), self.shape)
+        form.addRow(self.tr("Nails"), self.nails)
+        form.addRow(self.tr("Board radius"), self.radius)
+        form.addRow(self.tr("Line budget"), self.lines)
+        form.addRow(self.tr("Thread width"), self.thread_width)
+        form.addRow(self.tr("Minimum skip"), self.skip)
+        form.addRow(self.tr("Raster"), self.resolution)
         self.shape.currentIndexChanged.connect(self._board_changed)
         self.nails.valueChanged.connect(self._nails_changed)
         for spin in (self.radius, self.thread_width):
@@ -283,18 +312,18 @@ class StringArtGeneratorDialog(QDialog):
     def _build_photo_form(self) -> QFormLayout:
         form = QFormLayout()
         self.zoom = self._real("sa_zoom", 1.0, 10.0, 1.0, 0.1, 2)
-        self.zoom.setToolTip("Crop: 1 fits the photo's shorter side to the board")
+        self.zoom.setToolTip(self.tr("Crop: 1 fits the photo's shorter side to the board"))
         self.centre_x = self._real("sa_centre_x", 0.0, 1.0, 0.5, 0.02, 2)
         self.centre_y = self._real("sa_centre_y", 0.0, 1.0, 0.5, 0.02, 2)
         self.contrast = self._real("sa_contrast", 0.1, 5.0, 1.0, 0.1, 2)
         self.brightness = self._real("sa_brightness", -1.0, 1.0, 0.0, 0.05, 2)
-        self.invert = QCheckBox("Invert (light thread, dark board)")
+        self.invert = QCheckBox(self.tr("Invert (light thread, dark board)"))
         self.invert.setObjectName("sa_invert")
-        form.addRow("Zoom", self.zoom)
-        form.addRow("Centre across", self.centre_x)
-        form.addRow("Centre down", self.centre_y)
-        form.addRow("Contrast", self.contrast)
-        form.addRow("Brightness", self.brightness)
+        form.addRow(self.tr("Zoom"), self.zoom)
+        form.addRow(self.tr("Centre across"), self.centre_x)
+        form.addRow(self.tr("Centre down"), self.centre_y)
+        form.addRow(self.tr("Contrast"), self.contrast)
+        form.addRow(self.tr("Brightness"), self.brightness)
         form.addRow(self.invert)
         for spin in (self.zoom, self.centre_x, self.centre_y, self.contrast, self.brightness):
             spin.valueChanged.connect(self._show_photo)
@@ -341,7 +370,7 @@ class StringArtGeneratorDialog(QDialog):
         """Read ``path`` on a worker (a large JPEG takes a while to decode)."""
         if self._reading is not None:
             return
-        self.image_label.setText(f"reading <b>{path.name}</b>…")
+        self.image_label.setText(self.tr("reading <b>{0}</b>…").format(html.escape(path.name)))
         self._reading_path = path
         self._reading = Worker(lambda _w: working_copy(load_image(path)), "photo-reader", self)
         self._reading.done.connect(self._image_read)
@@ -357,12 +386,12 @@ class StringArtGeneratorDialog(QDialog):
             self._image_path = path
             self._lightness = result
             self.image_label.setText(f"<b>{path.name}</b>")
-            self.status.setText("Set the board and the crop, then Generate")
+            self.status.setText(self.tr("Set the board and the crop, then Generate"))
             self._show_photo()
         else:
             reason = str(result) if isinstance(result, ImageError) else f"{path.name}: {result}"
-            self.image_label.setText("no photo chosen" if self._lightness is None else "")
-            self.status.setText(f"Not opened: {reason}")
+            self.image_label.setText(self.tr("no photo chosen") if self._lightness is None else "")
+            self.status.setText(self.tr("Not opened: {0}").format(reason))
             if self._image_path is not None:
                 self.image_label.setText(f"<b>{self._image_path.name}</b>")
         self._update_buttons()
@@ -393,14 +422,22 @@ class StringArtGeneratorDialog(QDialog):
             across_mm = 2 * raster.nail_radius_mm
             width = self.thread_width.value()
             self.scale_label.setText(
-                f"Both pictures: the nail circle, {across_mm / 10:.1f} cm across, drawn "
-                f"{PREVIEW_PX} px wide (1 px = {across_mm / PREVIEW_PX:.2f} mm).\nThread "
-                f"{width:g} mm = 1/{across_mm / width:.0f} of it; "
-                f"chosen on a raster of {raster.pixel_mm:.2f} mm pixels."
+                self.tr(
+                    "Both pictures: the nail circle, {0} cm across, drawn {1} px wide "
+                    "(1 px = {2} mm).\nThread {3} mm = 1/{4} of it; chosen on a raster "
+                    "of {5} mm pixels."
+                ).format(
+                    f"{across_mm / 10:.1f}",
+                    PREVIEW_PX,
+                    f"{across_mm / PREVIEW_PX:.2f}",
+                    f"{width:g}",
+                    f"{across_mm / width:.0f}",
+                    f"{raster.pixel_mm:.2f}",
+                )
                 + self._reach_warning(raster.nail_radius_mm)
             )
         else:
-            self.scale_label.setText(f"Cannot generate: {problem}")
+            self.scale_label.setText(self.tr("Cannot generate: {0}").format(problem))
         self._show_photo()
         self._update_buttons()
 
@@ -412,10 +449,10 @@ class StringArtGeneratorDialog(QDialog):
         if reach is None or nail_radius_mm + needle_out <= reach:
             return ""
         largest_cm = (reach - needle_out + NAIL_INSET_MM) / 10
-        return (
-            f"\nThis winder's needle reaches {reach:g} mm from the centre: boards up to "
-            f"{largest_cm:.1f} cm radius fit it (export the files for a larger one)."
-        )
+        return "\n" + self.tr(
+            "This winder's needle reaches {0} mm from the centre: boards up to "
+            "{1} cm radius fit it (export the files for a larger one)."
+        ).format(f"{reach:g}", f"{largest_cm:.1f}")
 
     # --- generating ----------------------------------------------------------
 
@@ -426,7 +463,7 @@ class StringArtGeneratorDialog(QDialog):
         params, settings = self.params(), self.settings()
         problem = params.check() or settings.check(params)
         if problem is not None:
-            self.status.setText(f"Cannot generate: {problem}")
+            self.status.setText(self.tr("Cannot generate: {0}").format(problem))
             return False
         target = self._target(settings.resolution)
         assert target is not None
@@ -435,7 +472,7 @@ class StringArtGeneratorDialog(QDialog):
         self.thread_view.clear()
         self.progress.setRange(0, params.nails)
         self.progress.setValue(0)
-        self.status.setText("Preparing the lines between the nails…")
+        self.status.setText(self.tr("Preparing the lines between the nails…"))
         self._generation = Generation(params, target, settings, self)
         self._generation.progressed.connect(self._progressed)
         self._generation.done.connect(self._generated)
@@ -446,7 +483,7 @@ class StringArtGeneratorDialog(QDialog):
     def cancel(self) -> None:
         if self._generation is not None:
             self._generation.cancel()
-            self.status.setText("Cancelling…")
+            self.status.setText(self.tr("Cancelling…"))
 
     def _progressed(self, phase: str, done: int, total: int, darkness: object) -> None:
         if self._generation is None or self._generation.stop.is_set():
@@ -454,9 +491,11 @@ class StringArtGeneratorDialog(QDialog):
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(done, total))
         if phase == "lines":
-            self.status.setText(f"Preparing the lines between the nails: {done} of {total}")
+            self.status.setText(
+                self.tr("Preparing the lines between the nails: {0} of {1}").format(done, total)
+            )
             return
-        self.status.setText(f"Winding: {done} threads of at most {total}")
+        self.status.setText(self.tr("Winding: {0} threads of at most {1}").format(done, total))
         if isinstance(darkness, np.ndarray):
             self.thread_view.setPixmap(grey_pixmap(to_grey(darkness), PREVIEW_PX))
             self.threadsShown.emit(done)
@@ -473,21 +512,24 @@ class StringArtGeneratorDialog(QDialog):
             self.progress.setValue(result.lines)
             self.thread_view.setPixmap(grey_pixmap(outcome.preview, PREVIEW_PX))
             ended = (
-                "stopped before the budget: no further thread brings it closer"
+                self.tr("stopped before the budget: no further thread brings it closer")
                 if result.stopped_early
-                else "the whole budget"
+                else self.tr("the whole budget")
             )
             self.status.setText(
-                f"{result.lines} threads ({ended}), "
-                f"{job_of(result).thread_length_mm() / 1000:.1f} m of thread; "
-                f"{outcome.quality}; {result.seconds:.1f} s"
+                self.tr("%n thread(s) ({0}), {1} m of thread; {2}; {3} s", "", result.lines).format(
+                    ended,
+                    f"{job_of(result).thread_length_mm() / 1000:.1f}",
+                    outcome.quality,
+                    f"{result.seconds:.1f}",
+                )
             )
         elif isinstance(outcome, Cancelled):
             self.thread_view.clear()
             self.progress.setValue(0)
-            self.status.setText("Cancelled: nothing kept")
+            self.status.setText(self.tr("Cancelled: nothing kept"))
         else:
-            self.status.setText(f"Generation failed: {outcome}")
+            self.status.setText(self.tr("Generation failed: {0}").format(outcome))
         self._update_buttons()
 
     # --- results -------------------------------------------------------------
@@ -507,10 +549,12 @@ class StringArtGeneratorDialog(QDialog):
         try:
             paths = write_job(job_of(finished.result), folder, finished.png)
         except OSError as exc:
-            self.status.setText(f"Nothing written to {folder}: {exc}")
+            self.status.setText(self.tr("Nothing written to {0}: {1}").format(folder, exc))
             return False
         self._exported_to = folder
-        self.status.setText("Wrote " + ", ".join(p.name for p in paths) + f" in {folder}")
+        self.status.setText(
+            self.tr("Wrote {0} in {1}").format(", ".join(p.name for p in paths), folder)
+        )
         return True
 
     def load_as_job(self) -> bool:
@@ -525,10 +569,12 @@ class StringArtGeneratorDialog(QDialog):
             try:
                 write_job(job_of(finished.result), folder, finished.png)
             except OSError as exc:
-                self.status.setText(f"Not loaded: nothing written to {folder}: {exc}")
+                self.status.setText(
+                    self.tr("Not loaded: nothing written to {0}: {1}").format(folder, exc)
+                )
                 return False
         if not self._open_job(folder / "poradi.txt"):
-            self.status.setText("Not loaded: see the jobs dock's messages")
+            self.status.setText(self.tr("Not loaded: see the jobs dock's messages"))
             return False
         self.accept()
         return True

@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
 from widgets.number_field import FieldGate, NumberField, distance_box
+from widgets.retranslate import Texts, bold
 
 
 class AbsolutePanel(QWidget):
@@ -24,31 +25,42 @@ class AbsolutePanel(QWidget):
         self.note = QLabel()
         self.gate = FieldGate(self.note, self)
         self.go_buttons: list[QPushButton] = []
+        t = self.texts = Texts(self)
 
         grid = QGridLayout(self)
         grid.setHorizontalSpacing(10)
         grid.setVerticalSpacing(8)
-        grid.addWidget(QLabel("<b>Move to</b>"), 0, 0, 1, 3)
+        grid.addWidget(t.label(lambda: bold(self.tr("Move to"))), 0, 0, 1, 3)
         for index, axis in enumerate(station.profile.axes):
             target = distance_box(
                 f"target_{axis.name}",
                 axis.unit,
                 0.0,
                 axis.travel,
-                f"{axis.name} target, 0…{axis.travel:g} {axis.unit} (Esc stops)",
+                "",
             )
-            go = QPushButton(f"Go {axis.name}")
-            go.setToolTip(f"Move {axis.name} to the target")
+            t.set(
+                target.set_description,
+                lambda a=axis: self.tr("{0} target, 0…{1} {2} (Esc stops)").format(
+                    a.name, f"{a.travel:g}", a.unit
+                ),
+            )
+            go = t.button(
+                lambda a=axis: self.tr("Go {0}").format(a.name),
+                lambda a=axis: self.tr("Move {0} to the target").format(a.name),
+            )
             go.clicked.connect(lambda _=False, i=index: self.go(i))
             grid.addWidget(QLabel(axis.name), index + 1, 0)
             grid.addWidget(target, index + 1, 1)
             grid.addWidget(go, index + 1, 2)
             self.targets.append(target)
             self.go_buttons.append(go)
-            self.gate.watch(target, f"{axis.name} target")
+            self.gate.watch(target, lambda a=axis: self.tr("{0} target").format(a.name))
             self.gate.bind(go, target)
-        self.go_all_button = QPushButton("Go all")
-        self.go_all_button.setToolTip("Move every axis to its target at once")
+        self.go_all_button = t.button(
+            lambda: self.tr("Go all"), lambda: self.tr("Move every axis to its target at once")
+        )
+
         self.go_all_button.clicked.connect(self.go_all)
         self.gate.bind(self.go_all_button, *self.targets)
         grid.addWidget(self.go_all_button, len(self.targets) + 1, 2)

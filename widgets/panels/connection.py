@@ -7,17 +7,15 @@ is instant, and a BLE scan reports back through a signal.
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
     QComboBox,
     QFormLayout,
-    QGroupBox,
     QHBoxLayout,
     QLabel,
     QListWidget,
     QListWidgetItem,
-    QPushButton,
     QRadioButton,
     QVBoxLayout,
     QWidget,
@@ -28,8 +26,14 @@ from app.machine import LinkState
 from app.profiles import available_profiles
 from app.settings import StationSettings
 from app.station import Station
+from widgets.link_text import link_detail_text, link_state_text
+from widgets.retranslate import Texts
 
-TRANSPORTS = (("emulator", "Built-in emulator"), ("serial", "Serial port"), ("ble", "Bluetooth LE"))
+TRANSPORTS = (
+    ("emulator", QT_TRANSLATE_NOOP("ConnectionPanel", "Built-in emulator")),
+    ("serial", QT_TRANSLATE_NOOP("ConnectionPanel", "Serial port")),
+    ("ble", QT_TRANSLATE_NOOP("ConnectionPanel", "Bluetooth LE")),
+)
 
 
 class ConnectionPanel(QWidget):
@@ -42,18 +46,27 @@ class ConnectionPanel(QWidget):
         self._station = station
         self._settings = settings
         self._scan: BleScan | None = None
+        self._scan_note: tuple[str, int] | None = None
+        t = self.texts = Texts(self)
 
         self.profile_combo = QComboBox()
         for name in available_profiles():
             self.profile_combo.addItem(name, name)
         self.profile_combo.setCurrentIndex(self.profile_combo.findData(station.profile.name))
-        self.profile_combo.setToolTip("Switching machine closes this link and opens the new one")
+        t.set(
+            self.profile_combo.setToolTip,
+            lambda: self.tr("Switching machine closes this link and opens the new one"),
+        )
         self.profile_combo.activated.connect(self._profile_chosen)
         self.transport_buttons: dict[str, QRadioButton] = {}
         self._transport_group = QButtonGroup(self)
         transport_row = QHBoxLayout()
         for key, title in TRANSPORTS:
-            button = QRadioButton(title)
+            button = QRadioButton()
+            t.set(
+                button.setText,
+                lambda title=title: QCoreApplication.translate("ConnectionPanel", title),
+            )
             self.transport_buttons[key] = button
             self._transport_group.addButton(button)
             transport_row.addWidget(button)
@@ -63,7 +76,7 @@ class ConnectionPanel(QWidget):
         self.port_combo = QComboBox()
         self.port_combo.setEditable(True)  # a port that is not plugged in yet can be typed
         self.port_combo.setMinimumWidth(280)
-        self.refresh_button = QPushButton("Refresh")
+        self.refresh_button = t.button(lambda: self.tr("Refresh"))
         self.refresh_button.clicked.connect(self.refresh_ports)
         self.baud_combo = QComboBox()
         for baud in BAUD_RATES:
@@ -71,18 +84,18 @@ class ConnectionPanel(QWidget):
         port_row = QHBoxLayout()
         port_row.addWidget(self.port_combo, 1)
         port_row.addWidget(self.refresh_button)
-        self.serial_box = QGroupBox("Serial")
+        self.serial_box = t.group(lambda: self.tr("Serial"))
         serial_form = QFormLayout(self.serial_box)
-        serial_form.addRow("Port", port_row)
-        serial_form.addRow("Baud rate", self.baud_combo)
+        serial_form.addRow(t.label(lambda: self.tr("Port")), port_row)
+        serial_form.addRow(t.label(lambda: self.tr("Baud rate")), self.baud_combo)
 
-        self.scan_button = QPushButton("Scan")
+        self.scan_button = t.button(lambda: self.tr("Scan"))
         self.scan_button.clicked.connect(self.start_scan)
         self.ble_list = QListWidget()
         self.ble_list.setMinimumHeight(90)
         self.ble_note = QLabel("")
         self.ble_note.setWordWrap(True)
-        self.ble_box = QGroupBox("Bluetooth LE")
+        self.ble_box = t.group(lambda: self.tr("Bluetooth LE"))
         ble_layout = QVBoxLayout(self.ble_box)
         scan_row = QHBoxLayout()
         scan_row.addWidget(self.scan_button)
@@ -90,11 +103,13 @@ class ConnectionPanel(QWidget):
         ble_layout.addLayout(scan_row)
         ble_layout.addWidget(self.ble_list)
 
-        self.connect_button = QPushButton("Connect")
+        self.connect_button = t.button(lambda: self.tr("Connect"))
         self.connect_button.clicked.connect(self.connect_selected)
-        self.disconnect_button = QPushButton("Disconnect")
-        self.disconnect_button.setToolTip(
-            "Stop every axis, wait briefly for the machine to confirm, then close the link"
+        self.disconnect_button = t.button(
+            lambda: self.tr("Disconnect"),
+            lambda: self.tr(
+                "Stop every axis, wait briefly for the machine to confirm, then close the link"
+            ),
         )
         self.disconnect_button.clicked.connect(self._station.stop_and_close)
         buttons = QHBoxLayout()
@@ -107,8 +122,8 @@ class ConnectionPanel(QWidget):
 
         layout = QVBoxLayout(self)
         form = QFormLayout()
-        form.addRow("Machine", self.profile_combo)
-        form.addRow("Link", transport_row)
+        form.addRow(t.label(lambda: self.tr("Machine")), self.profile_combo)
+        form.addRow(t.label(lambda: self.tr("Link")), transport_row)
         layout.addLayout(form)
         layout.addWidget(self.serial_box)
         layout.addWidget(self.ble_box)
@@ -119,6 +134,8 @@ class ConnectionPanel(QWidget):
         station.model.linkStateChanged.connect(self._show_state)
         self._restore()
         self._show_state()
+        t.also(self._show_state)
+        t.also(self._show_scan_note)
 
     # --- choices -------------------------------------------------------------
 
@@ -163,7 +180,7 @@ class ConnectionPanel(QWidget):
             self._scan.finished.connect(self.show_devices)
             self._scan.failed.connect(self._scan_failed)
         self.scan_button.setEnabled(False)
-        self.ble_note.setText("Scanning…")
+        self._set_scan_note("scanning")
         self._scan.start()
 
     def show_devices(self, devices: list[BleDevice]) -> None:
@@ -172,18 +189,36 @@ class ConnectionPanel(QWidget):
         last = self._settings.device
         for device in devices:
             rssi = f"{device.rssi} dBm" if device.rssi is not None else "—"
-            item = QListWidgetItem(f"{device.name or '(no name)'}   {device.address}   {rssi}")
+            name = device.name or self.tr("(no name)")
+            item = QListWidgetItem(f"{name}   {device.address}   {rssi}")
             item.setData(Qt.ItemDataRole.UserRole, device.address)
             self.ble_list.addItem(item)
             if device.address == last:
                 self.ble_list.setCurrentItem(item)
         if self.ble_list.currentItem() is None and self.ble_list.count():
             self.ble_list.setCurrentRow(0)
-        self.ble_note.setText(f"{len(devices)} found" if devices else "No stage found")
+        self._set_scan_note("found", len(devices))
 
     def _scan_failed(self, message: str) -> None:
         self.scan_button.setEnabled(True)
+        self._scan_note = None
         self.ble_note.setText(message)
+
+    def _set_scan_note(self, what: str, count: int = 0) -> None:
+        self._scan_note = (what, count)
+        self._show_scan_note()
+
+    def _show_scan_note(self) -> None:
+        """The scan's note in the current language (made again after a switch)."""
+        if self._scan_note is None:
+            return
+        what, count = self._scan_note
+        if what == "scanning":
+            self.ble_note.setText(self.tr("Scanning…"))
+        elif count:
+            self.ble_note.setText(self.tr("%n found", "", count))
+        else:
+            self.ble_note.setText(self.tr("No stage found"))
 
     def selected_ble_address(self) -> str | None:
         item = self.ble_list.currentItem()
@@ -199,7 +234,9 @@ class ConnectionPanel(QWidget):
         if transport == "serial":
             port = self.selected_port()
             if not port:
-                self.state_label.setText("Choose a serial port first (Refresh lists them).")
+                self.state_label.setText(
+                    self.tr("Choose a serial port first (Refresh lists them).")
+                )
                 return
             baud = int(self.baud_combo.currentData())
             self._settings.device = port
@@ -228,9 +265,10 @@ class ConnectionPanel(QWidget):
 
     def _show_state(self, _state: object = None) -> None:
         model = self._station.model
-        text = model.link_state.value
+        text = link_state_text(model.link_state)
+
         if model.link_detail:
-            text += f" — {model.link_detail}"
+            text += f" — {link_detail_text(model.link_detail)}"
         self.state_label.setText(text)
         linked = model.link_state is not LinkState.DISCONNECTED
         self.disconnect_button.setEnabled(linked)

@@ -14,6 +14,7 @@ run unstoppable and sends it only on "Send anyway".
 
 from __future__ import annotations
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 from PySide6.QtWidgets import (
     QGridLayout,
     QGroupBox,
@@ -30,7 +31,8 @@ from app.machines.drill.session import DrillSession
 from app.station import Station
 from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
-from widgets.number_field import FieldGate, NumberField
+from widgets.number_field import FieldGate, NumberField, localized
+from widgets.retranslate import Texts, bold
 from widgets.style import compact, monospace_font
 
 #: A move expected to run longer than this (seconds) asks first: it cannot be stopped.
@@ -38,12 +40,37 @@ LONG_MOVE_S = 2.0
 
 #: Buttons of the procedures that take no value: letter, caption, tooltip.
 COMMAND_BUTTONS = (
-    ("N", "N  home", "Home X then Y to the switches and the zero offsets"),
-    ("V", "V  drill", "Drill one hole where the head stands"),
-    ("K", "K  pen down", "Lower the pen"),
-    ("Z", "Z  pen up", "Raise the pen"),
-    ("P", "P  park", "Park at the back and switch the motors off"),
+    (
+        "N",
+        QT_TRANSLATE_NOOP("DrillPanel", "N  home"),
+        QT_TRANSLATE_NOOP("DrillPanel", "Home X then Y to the switches and the zero offsets"),
+    ),
+    (
+        "V",
+        QT_TRANSLATE_NOOP("DrillPanel", "V  drill"),
+        QT_TRANSLATE_NOOP("DrillPanel", "Drill one hole where the head stands"),
+    ),
+    (
+        "K",
+        QT_TRANSLATE_NOOP("DrillPanel", "K  pen down"),
+        QT_TRANSLATE_NOOP("DrillPanel", "Lower the pen"),
+    ),
+    (
+        "Z",
+        QT_TRANSLATE_NOOP("DrillPanel", "Z  pen up"),
+        QT_TRANSLATE_NOOP("DrillPanel", "Raise the pen"),
+    ),
+    (
+        "P",
+        QT_TRANSLATE_NOOP("DrillPanel", "P  park"),
+        QT_TRANSLATE_NOOP("DrillPanel", "Park at the back and switch the motors off"),
+    ),
 )
+
+
+def _tr(text: str) -> str:
+    """A text marked with QT_TRANSLATE_NOOP above, in the current language."""
+    return QCoreApplication.translate("DrillPanel", text)
 
 
 class DrillPanel(QWidget):
@@ -58,19 +85,20 @@ class DrillPanel(QWidget):
         self._pending_line: str | None = None
         self._mm_labels: list[QLabel] = []
         self.send_buttons: list[QPushButton] = []
+        self._pending_s = 0.0
+        t = self.texts = Texts(self)
 
-        commands = QGroupBox("Commands")
+        commands = t.group(lambda: self.tr("Commands"))
         row = QHBoxLayout(commands)
         for letter, caption, tip in COMMAND_BUTTONS:
-            button = QPushButton(caption)
+            button = t.button(lambda c=caption: _tr(c), lambda tp=tip, c=letter: f"{_tr(tp)} ({c})")
             button.setObjectName(f"command_{letter}")
-            button.setToolTip(f"{tip} ({letter})")
             button.clicked.connect(lambda _=False, c=letter: self.send_command(c))
             # Each as wide as its caption: at the style's width the row outgrew a 1280 px screen.
             row.addWidget(compact(button))
             self.command_buttons[letter] = button
 
-        axes = QGroupBox("Move to (microsteps from zero)")
+        axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
         grid = QGridLayout(axes)
         for index, axis in enumerate(station.profile.axes):
             per_mm = axis.steps_per_rev * axis.microsteps / axis.lead
@@ -80,19 +108,24 @@ class DrillPanel(QWidget):
                 decimals=0,
                 unit="µsteps",
                 name=f"target_{axis.name}",
-                tooltip=f"{axis.name} target; {per_mm:g} microsteps a mm",
+            )
+            t.set(
+                target.set_description,
+                lambda a=axis.name, p=per_mm: self.tr("{0} target; {1} microsteps a mm").format(
+                    a, localized(f"{p:g}")
+                ),
             )
             target.textChanged.connect(lambda _t="", i=index: self._show_mm(i))
             mm = QLabel()
             mm.setFont(monospace_font())
-            send = QPushButton(f"Send {axis.name}")
+            send = t.button(lambda a=axis.name: self.tr("Send {0}").format(a))
             send.clicked.connect(lambda _=False, i=index: self.send_axis(i))
             for column, widget in enumerate((QLabel(axis.name), target, mm, send)):
                 grid.addWidget(widget, index, column)
             self.targets.append(target)
             self._mm_labels.append(mm)
             self.send_buttons.append(send)
-            self.gate.watch(target, f"{axis.name} target")
+            self.gate.watch(target, lambda a=axis.name: self.tr("{0} target").format(a))
             self.gate.bind(send, target)
         grid.addWidget(self.note, len(self.targets), 0, 1, 4)
 
@@ -105,9 +138,9 @@ class DrillPanel(QWidget):
         )
         self.long_move_label = QLabel()
         self.long_move_label.setWordWrap(True)
-        self.long_move_send = QPushButton("Send anyway")
+        self.long_move_send = t.button(lambda: self.tr("Send anyway"))
         self.long_move_send.clicked.connect(self.confirm_long_move)
-        self.long_move_cancel = QPushButton("Cancel")
+        self.long_move_cancel = t.button(lambda: self.tr("Cancel"))
         self.long_move_cancel.clicked.connect(self.cancel_long_move)
         warning_row = QHBoxLayout(self.long_move)
         warning_row.addWidget(self.long_move_label, 1)
@@ -115,7 +148,7 @@ class DrillPanel(QWidget):
         warning_row.addWidget(self.long_move_cancel)
         self.long_move.hide()
 
-        terminal = QGroupBox("Terminal")
+        terminal = t.group(lambda: self.tr("Terminal"))
         box = QVBoxLayout(terminal)
         self.output = QPlainTextEdit()
         self.output.setReadOnly(True)
@@ -126,10 +159,11 @@ class DrillPanel(QWidget):
         self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
         self.entry.setMinimumWidth(110)
         self.entry.returnPressed.connect(self.send_line)
-        self.send_button = QPushButton("Send")
+        self.send_button = t.button(lambda: self.tr("Send"))
         self.send_button.clicked.connect(self.send_line)
-        self.clear_button = QPushButton("Clear")
-        self.clear_button.setToolTip("Clear the terminal and the columns")
+        self.clear_button = t.button(
+            lambda: self.tr("Clear"), lambda: self.tr("Clear the terminal and the columns")
+        )
         self.clear_button.clicked.connect(self.clear)
         line = QHBoxLayout()
         line.addWidget(self.entry, 1)
@@ -147,8 +181,9 @@ class DrillPanel(QWidget):
             listing.setMaximumWidth(150)
             listing.setFont(monospace_font())
         columns = QGridLayout()
-        for column, title in enumerate(("command received", "command done")):
-            header = QLabel(f"<b>{title}</b>")
+        titles = (lambda: bold(self.tr("command received")), lambda: bold(self.tr("command done")))
+        for column, title in enumerate(titles):
+            header = t.label(title)
             header.setWordWrap(True)  # two short lines rather than a page too wide
             columns.addWidget(header, 0, column)
         columns.addWidget(self.received_list, 1, 0)
@@ -163,10 +198,11 @@ class DrillPanel(QWidget):
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 
-        for index in range(len(self.targets)):
-            self._show_mm(index)
+        self._show_every_mm()
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
+        t.also(self._show_long_move)
+        t.also(self._show_every_mm)
 
     @property
     def session(self) -> DrillSession | None:
@@ -197,7 +233,7 @@ class DrillPanel(QWidget):
         if not text:
             return False
         if self.session is None:
-            self.output.appendPlainText(f"! {text}: not sent")
+            self.output.appendPlainText(self.tr("! {0}: not sent").format(text))
             return False
         return self._send_or_ask(text)
 
@@ -216,14 +252,22 @@ class DrillPanel(QWidget):
         if seconds <= LONG_MOVE_S:
             return self._send_now(text)
         self._pending_line = text.strip()
-        self.long_move_label.setText(
-            f"<b>{self._pending_line}</b> runs about {seconds:.0f} s, and the drill has no "
-            "stop command: once it starts, STOP and Esc only drop what is queued after it. "
-            "Send it?"
-        )
+        self._pending_s = seconds
+        self._show_long_move()
         self.long_move.show()
         self.long_move_send.setFocus()
         return False
+
+    def _show_long_move(self) -> None:
+        if self._pending_line is None:
+            return
+        self.long_move_label.setText(
+            self.tr(
+                "<b>{0}</b> runs about {1} s, and the drill has no "
+                "stop command: once it starts, STOP and Esc only drop what is queued after it. "
+                "Send it?"
+            ).format(self._pending_line, f"{self._pending_s:.0f}")
+        )
 
     def confirm_long_move(self) -> bool:
         """Send anyway: the operator has read that the move cannot be stopped."""
@@ -239,7 +283,7 @@ class DrillPanel(QWidget):
         session = self.session
         sent = session is not None and session.send_line(text)
         if not sent:
-            self.output.appendPlainText(f"! {text}: not sent")
+            self.output.appendPlainText(self.tr("! {0}: not sent").format(text))
         return sent
 
     def clear(self) -> None:
@@ -286,7 +330,13 @@ class DrillPanel(QWidget):
         self.output.appendPlainText("< " + raw.decode("ascii", "replace").rstrip("\r\n"))
 
     def _show_failed(self, text: str) -> None:
-        self.output.appendPlainText(f"! {text} refused by the drill; queue cleared")
+        self.output.appendPlainText(
+            self.tr("! {0} refused by the drill; queue cleared").format(text)
+        )
+
+    def _show_every_mm(self) -> None:
+        for index in range(len(self.targets)):
+            self._show_mm(index)
 
     def _show_mm(self, axis: int) -> None:
         label = self._mm_labels[axis]
@@ -296,7 +346,7 @@ class DrillPanel(QWidget):
         if target is None:
             label.setText("—")
             return
-        label.setText(f"{target / per_mm:8.3f} {profile_axis.unit}")
+        label.setText(localized(f"{target / per_mm:8.3f} {profile_axis.unit}"))
 
 
 COLUMN_ROWS = 1000

@@ -21,14 +21,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QSize
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QSize
 from PySide6.QtGui import QResizeEvent
 from PySide6.QtWidgets import (
     QFileDialog,
     QGridLayout,
     QLabel,
     QMessageBox,
-    QPushButton,
     QVBoxLayout,
     QWidget,
 )
@@ -53,9 +52,31 @@ from app.scripting.parameters import (
 )
 from app.station import Station
 from protocol.stage.codec import EchoType
-from widgets.number_field import NumberField
+from widgets.number_field import NumberField, localized
+from widgets.retranslate import Texts, bold
 
 _Key = tuple[int, int]  # (axis, parameter type)
+
+#: The parameters' labels as app.machines.stage.parameters names them, for lupdate.
+PARAMETER_LABELS = (
+    QT_TRANSLATE_NOOP("StageParameter", "Fast speed"),
+    QT_TRANSLATE_NOOP("StageParameter", "Slow speed"),
+    QT_TRANSLATE_NOOP("StageParameter", "Acceleration"),
+    QT_TRANSLATE_NOOP("StageParameter", "Start speed"),
+    QT_TRANSLATE_NOOP("StageParameter", "Run current (IRUN)"),
+    QT_TRANSLATE_NOOP("StageParameter", "Hold current (IHOLD)"),
+    QT_TRANSLATE_NOOP("StageParameter", "Microsteps per step"),
+    QT_TRANSLATE_NOOP("StageParameter", "Screw lead"),
+    QT_TRANSLATE_NOOP("StageParameter", "Full steps per rev"),
+    QT_TRANSLATE_NOOP("StageParameter", "Travel (soft limit)"),
+    QT_TRANSLATE_NOOP("StageParameter", "Encoder position"),
+)
+
+
+def parameter_label(parameter: StageParameter) -> str:
+    """The parameter's name in the current language."""
+    return QCoreApplication.translate("StageParameter", parameter.label)
+
 
 _WIDEST_STATE = "✓ confirmed"
 _GREY, _GREEN, _RED, _AMBER = "#707070", "#2e9e44", "#d03030", "#b07000"
@@ -76,9 +97,10 @@ class DynamicsPanel(QWidget):
         self._undo: list[tuple[int, int, int]] = []
         #: The open "write these differences?" question, while it is asked.
         self.confirm_box: QMessageBox | None = None
+        t = self.texts = Texts(self)
 
         self._headers = [QLabel(f"<b>{axis.name}</b>") for axis in self._model.axes]
-        self._parameter_header = QLabel(self.tr("<b>Parameter</b>"))
+        self._parameter_header = t.label(lambda: bold(self.tr("Parameter")))
         #: Each axis has its own column of parameter names: side by side only the first
         #: axis's is shown, stacked each axis block has its own.
         self._names: list[list[QLabel]] = []
@@ -86,7 +108,7 @@ class DynamicsPanel(QWidget):
             names = []
             for parameter in STAGE_PARAMETERS:
                 unit = f" [{parameter.unit}]" if parameter.unit else ""
-                names.append(QLabel(parameter.label + unit))
+                names.append(t.label(lambda p=parameter, u=unit: parameter_label(p) + u))
                 key = (axis_index, int(parameter.type))
                 state = QLabel()
                 state.setMinimumWidth(state.fontMetrics().horizontalAdvance(_WIDEST_STATE))
@@ -99,20 +121,30 @@ class DynamicsPanel(QWidget):
         self.grid.setHorizontalSpacing(10)
         self.grid.setVerticalSpacing(4)
 
-        self.read_button = QPushButton(self.tr("Read"))
-        self.read_button.setToolTip("Read every parameter from the device into the fields")
+        self.read_button = t.button(
+            lambda: self.tr("Read"),
+            lambda: self.tr("Read every parameter from the device into the fields"),
+        )
         self.read_button.clicked.connect(self.read)
-        self.apply_button = QPushButton(self.tr("Apply"))
-        self.apply_button.setToolTip("Write the edited values to the device; it confirms each one")
+        self.apply_button = t.button(
+            lambda: self.tr("Apply"),
+            lambda: self.tr("Write the edited values to the device; it confirms each one"),
+        )
         self.apply_button.clicked.connect(self.apply)
-        self.save_button = QPushButton(self.tr("Save snapshot…"))
-        self.save_button.setToolTip("Save every stored parameter to a TOML file")
+        self.save_button = t.button(
+            lambda: self.tr("Save snapshot…"),
+            lambda: self.tr("Save every stored parameter to a TOML file"),
+        )
         self.save_button.clicked.connect(self._ask_save)
-        self.load_button = QPushButton(self.tr("Load snapshot…"))
-        self.load_button.setToolTip("Show what a snapshot changes, then write only that")
+        self.load_button = t.button(
+            lambda: self.tr("Load snapshot…"),
+            lambda: self.tr("Show what a snapshot changes, then write only that"),
+        )
         self.load_button.clicked.connect(self._ask_load)
-        self.undo_button = QPushButton(self.tr("Undo last write"))
-        self.undo_button.setToolTip("Write back what the last Apply or load replaced")
+        self.undo_button = t.button(
+            lambda: self.tr("Undo last write"),
+            lambda: self.tr("Write back what the last Apply or load replaced"),
+        )
         self.undo_button.clicked.connect(self.undo)
         self.summary = QLabel()
         self.summary.setWordWrap(True)
@@ -137,6 +169,7 @@ class DynamicsPanel(QWidget):
         for axis_index, type_ in self.fields:
             self._show_parameter(axis_index, type_)
         self._update_enabled()
+        t.also(self._retranslate_states)
 
     # --- reflow ------------------------------------------------------------------
 
@@ -228,16 +261,23 @@ class DynamicsPanel(QWidget):
 
     def _field(self, parameter: StageParameter, key: _Key) -> NumberField:
         low, high = wire_limits(parameter, self._station.profile.axes[key[0]])
-        tip = "Read only: measured by the device" if not parameter.writable else parameter.label
-        if parameter.type == EchoType.TRAVEL:
-            tip += f"; at most the mechanical travel, {parameter.to_shown(high):g} mm"
+
+        def tip() -> str:
+            if not parameter.writable:
+                return self.tr("Read only: measured by the device")
+            text = parameter_label(parameter)
+            if parameter.type == EchoType.TRAVEL:
+                travel = localized(f"{parameter.to_shown(high):g}")
+                text += self.tr("; at most the mechanical travel, {0} mm").format(travel)
+            return text
+
         field = NumberField(
             parameter.to_shown(low),
             parameter.to_shown(high),
             decimals=parameter.decimals,
             unit=parameter.unit,
-            tooltip=tip,
         )
+        self.texts.set(field.set_description, tip)
         if parameter.writable:
             field.textChanged.connect(lambda _text: self._mark_edited(key))
         else:
@@ -253,7 +293,7 @@ class DynamicsPanel(QWidget):
             return
         self._edited.clear()
         session.read_all_parameters()
-        self.summary.setText("Reading from the device…")
+        self.summary.setText(self.tr("Reading from the device…"))
 
     def apply(self) -> int:
         """Write every edited, locally valid value; returns how many were sent."""
@@ -268,9 +308,10 @@ class DynamicsPanel(QWidget):
             parameter = BY_TYPE[type_]
             shown = self.fields[key].value()
             if shown is None:
-                problem = self.fields[key].problem() or "not a number"
-                self._set_state(key, "✗ not sent", _RED, problem)
-                reasons.append(f"{self._model.axes[axis].name} {parameter.label}: {problem}")
+                problem = self.fields[key].problem() or self.tr("not a number")
+                self._set_state(key, self.tr("✗ not sent"), _RED, problem)
+                label = parameter_label(parameter)
+                reasons.append(f"{self._model.axes[axis].name} {label}: {problem}")
                 continue
             wire = parameter.to_wire(shown)
             if wire == self._model.parameter(axis, type_).value:
@@ -279,7 +320,7 @@ class DynamicsPanel(QWidget):
                 continue
             refused = check_for_axis(parameter, wire, self._station.profile.axes[axis])
             if refused is not None:
-                self._set_state(key, "✗ not sent", _RED, refused)
+                self._set_state(key, self.tr("✗ not sent"), _RED, refused)
                 reasons.append(f"{self._model.axes[axis].name} {refused}")
                 continue
             previous = self._model.parameter(axis, type_).value
@@ -290,23 +331,29 @@ class DynamicsPanel(QWidget):
         if replaced:
             self._undo = replaced
         self._update_enabled()
-        parts = [f"{sent} value(s) written"] if sent else []
-        parts += [f"not sent: {reason}" for reason in reasons]
-        self.summary.setText("; ".join(parts) or "Nothing changed")
+        parts = [self.tr("%n value(s) written", "", sent)] if sent else []
+        parts += [self.tr("not sent: {0}").format(reason) for reason in reasons]
+        self.summary.setText("; ".join(parts) or self.tr("Nothing changed"))
         return sent
 
     # --- snapshots ------------------------------------------------------------
 
     def _ask_save(self) -> None:
         path, _ = QFileDialog.getSaveFileName(
-            self, "Save parameter snapshot", "", "Parameter snapshots (*.toml)"
+            self,
+            self.tr("Save parameter snapshot"),
+            "",
+            self.tr("Parameter snapshots (*.toml)"),
         )
         if path:
             self.save_snapshot(Path(path))
 
     def _ask_load(self) -> None:
         path, _ = QFileDialog.getOpenFileName(
-            self, "Load parameter snapshot", "", "Parameter snapshots (*.toml)"
+            self,
+            self.tr("Load parameter snapshot"),
+            "",
+            self.tr("Parameter snapshots (*.toml)"),
         )
         if path:
             self.load_snapshot(Path(path))
@@ -321,14 +368,16 @@ class DynamicsPanel(QWidget):
             if BY_NAME[name].writable and name not in row
         ]
         if missing:
-            self.summary.setText(f"Not saved: not read yet: {', '.join(missing[:4])} — press Read")
+            self.summary.setText(
+                self.tr("Not saved: not read yet: {0} — press Read").format(", ".join(missing[:4]))
+            )
             return False
         try:
             save_snapshot(path, self._station, values)
         except OSError as exc:
-            self.summary.setText(f"Not saved: {exc}")
+            self.summary.setText(self.tr("Not saved: {0}").format(exc))
             return False
-        self.summary.setText(f"Snapshot saved to {path.name}")
+        self.summary.setText(self.tr("Snapshot saved to {0}").format(path.name))
         return True
 
     def load_snapshot(self, path: Path) -> list[Difference]:
@@ -342,26 +391,37 @@ class DynamicsPanel(QWidget):
                 other = True
             differences = [d for d in diff(snapshot, values_of(self._model)) if d.writable]
         except StepdeckError as exc:
-            self.summary.setText(f"Not loaded: {exc}")
+            self.summary.setText(self.tr("Not loaded: {0}").format(exc))
             return []
         if not differences:
-            self.summary.setText(f"{path.name}: the device already holds every value")
+            self.summary.setText(
+                self.tr("{0}: the device already holds every value").format(path.name)
+            )
             return []
         box = QMessageBox(self)
         box.setObjectName("snapshot_confirm")
-        box.setWindowTitle("Load parameter snapshot")
+        box.setWindowTitle(self.tr("Load parameter snapshot"))
         lines = "\n".join(str(d) for d in differences)
-        text = f"{len(differences)} value(s) of {path.name} differ from the device:\n\n{lines}"
+        count = len(differences)
+        text = self.tr("%n value(s) of {0} differ from the device:", "", count).format(path.name)
+        text += f"\n\n{lines}"
         if other:
             box.setIcon(QMessageBox.Icon.Warning)
             text = (
-                f"This snapshot is of another machine ({snapshot.title or snapshot.profile}, "
-                f"firmware {snapshot.firmware}, {snapshot.date}), not "
-                f"{self._station.profile.title}.\n\n" + text
+                self.tr(
+                    "This snapshot is of another machine ({0}, firmware {1}, {2}), not {3}."
+                ).format(
+                    snapshot.title or snapshot.profile,
+                    snapshot.firmware,
+                    snapshot.date,
+                    self._station.profile.title,
+                )
+                + "\n\n"
+                + text
             )
         box.setText(text)
         write = box.addButton(
-            "Write anyway" if other else f"Write {len(differences)}",
+            self.tr("Write anyway") if other else self.tr("Write %n", "", count),
             QMessageBox.ButtonRole.AcceptRole,
         )
         box.addButton(QMessageBox.StandardButton.Cancel)
@@ -371,7 +431,7 @@ class DynamicsPanel(QWidget):
             if box.clickedButton() is write:
                 self._write_differences(differences)
             else:
-                self.summary.setText("Snapshot not loaded")
+                self.summary.setText(self.tr("Snapshot not loaded"))
             self.confirm_box = None
             box.deleteLater()
 
@@ -383,7 +443,7 @@ class DynamicsPanel(QWidget):
     def _write_differences(self, differences: list[Difference]) -> None:
         session = self._station.stage_session
         if session is None:
-            self.summary.setText("Not written: not connected")
+            self.summary.setText(self.tr("Not written: not connected"))
             return
         names = [axis.name for axis in self._model.axes]
         replaced: list[tuple[int, int, int]] = []
@@ -399,7 +459,9 @@ class DynamicsPanel(QWidget):
         if replaced:
             self._undo = replaced
         self._update_enabled()
-        self.summary.setText(f"{sent} value(s) written from the snapshot; the device confirms each")
+        self.summary.setText(
+            self.tr("%n value(s) written from the snapshot; the device confirms each", "", sent)
+        )
 
     def undo(self) -> int:
         """Write back what the last Apply or load replaced; returns how many were sent."""
@@ -411,7 +473,7 @@ class DynamicsPanel(QWidget):
             1 for axis, type_, wire in undo if session.write_parameter(axis, EchoType(type_), wire)
         )
         self._update_enabled()
-        self.summary.setText(f"{sent} value(s) written back")
+        self.summary.setText(self.tr("%n value(s) written back", "", sent))
         return sent
 
     # --- model → fields ------------------------------------------------------
@@ -420,7 +482,7 @@ class DynamicsPanel(QWidget):
         if self._filling:
             return
         self._edited.add(key)
-        self._set_state(key, "• edited", _AMBER)
+        self._set_state(key, self.tr("• edited"), _AMBER)
 
     def _show_parameter(self, axis: int, type_: int) -> None:
         key = (axis, type_)
@@ -433,12 +495,17 @@ class DynamicsPanel(QWidget):
             self._fill(key, parameter.to_shown(entry.value))
         shown = "—" if entry.value is None else self._format(parameter, entry.value)
         if entry.state is ParameterState.PENDING:
-            self._set_state(key, "… writing", _GREY)
+            self._set_state(key, self.tr("… writing"), _GREY)
         elif entry.state is ParameterState.CONFIRMED:
-            self._set_state(key, "✓ confirmed", _GREEN)
+            self._set_state(key, self.tr("✓ confirmed"), _GREEN)
         elif entry.state is ParameterState.REFUSED:
             asked = "" if entry.requested is None else self._format(parameter, entry.requested)
-            self._set_state(key, f"✗ refused, kept {shown}", _RED, f"Asked for {asked}")
+            self._set_state(
+                key,
+                self.tr("✗ refused, kept {0}").format(shown),
+                _RED,
+                self.tr("Asked for {0}").format(asked),
+            )
         elif entry.state is ParameterState.READ and key not in self._edited:
             self._set_state(key, "", _GREY)
 
@@ -452,6 +519,14 @@ class DynamicsPanel(QWidget):
             self._filling = False
         self._edited.discard(key)
 
+    def _retranslate_states(self) -> None:
+        """The states the device answered, said again; "edited" stays edited."""
+        for axis, type_ in self.fields:
+            if (axis, type_) in self._edited:
+                self._set_state((axis, type_), self.tr("• edited"), _AMBER)
+            else:
+                self._show_parameter(axis, type_)
+
     def _set_state(self, key: _Key, text: str, colour: str, tooltip: str = "") -> None:
         label = self.states[key]
         label.setText(text)
@@ -460,7 +535,7 @@ class DynamicsPanel(QWidget):
 
     @staticmethod
     def _format(parameter: StageParameter, wire: int) -> str:
-        return f"{parameter.to_shown(wire):.{parameter.decimals}f}"
+        return localized(f"{parameter.to_shown(wire):.{parameter.decimals}f}")
 
     def _update_enabled(self, _state: object = None) -> None:
         """Read/Apply need a live link; motion locks do not matter for parameters."""

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from PySide6.QtWidgets import (
     QGridLayout,
-    QGroupBox,
     QHBoxLayout,
     QLabel,
     QMessageBox,
@@ -24,9 +23,17 @@ from PySide6.QtWidgets import (
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
+from widgets.link_text import axis_status_text
+from widgets.number_field import localized
+from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
 
 CONSOLE_LINES = 2000
+
+
+def _capitalised(text: str) -> str:
+    """GRBL's state as it writes it ("Idle"), in the operator's language."""
+    return text[:1].upper() + text[1:]
 
 
 class GcodePanel(QWidget):
@@ -34,8 +41,9 @@ class GcodePanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._watched: GcodeSession | None = None
+        t = self.texts = Texts(self)
 
-        machine = QGroupBox("Machine")
+        machine = t.group(lambda: self.tr("Machine"))
         grid = QGridLayout(machine)
         self.state_label = QLabel("—")
         self.state_label.setObjectName("gcode_state")
@@ -43,24 +51,36 @@ class GcodePanel(QWidget):
         self.position_label = QLabel("—")
         self.position_label.setObjectName("gcode_position")
         self.position_label.setFont(monospace_font())
-        grid.addWidget(QLabel("State"), 0, 0)
+        grid.addWidget(t.label(lambda: self.tr("State")), 0, 0)
         grid.addWidget(self.state_label, 0, 1)
-        grid.addWidget(QLabel("Position"), 1, 0)
+        grid.addWidget(t.label(lambda: self.tr("Position")), 1, 0)
         grid.addWidget(self.position_label, 1, 1, 1, 3)
         settings = station.profile.gcode
-        self.home_button = self._button("Home", "Back to the origin ($H or G28)", self.home)
+        up = settings.pen_up if settings else "M5"
+        down = settings.pen_down if settings else "M3"
+        self.home_button = self._button(
+            lambda: self.tr("Home"), lambda: self.tr("Back to the origin ($H or G28)"), self.home
+        )
         self.pen_up_button = self._button(
-            "Pen up", f"Lift the pen ({settings.pen_up if settings else 'M5'})", self.pen_up
+            lambda: self.tr("Pen up"),
+            lambda: self.tr("Lift the pen ({0})").format(up),
+            self.pen_up,
         )
         self.pen_down_button = self._button(
-            "Pen down",
-            f"Lower the pen ({settings.pen_down if settings else 'M3'})",
+            lambda: self.tr("Pen down"),
+            lambda: self.tr("Lower the pen ({0})").format(down),
             self.pen_down,
         )
-        self.hold_button = self._button("Hold !", "Feed hold: decelerate and stop", self.hold)
-        self.resume_button = self._button("Resume ~", "Carry on after a hold or M0", self.resume)
+        self.hold_button = self._button(
+            lambda: self.tr("Hold !"), lambda: self.tr("Feed hold: decelerate and stop"), self.hold
+        )
+        self.resume_button = self._button(
+            lambda: self.tr("Resume ~"), lambda: self.tr("Carry on after a hold or M0"), self.resume
+        )
         self.reset_button = self._button(
-            "Reset", "Soft reset (Ctrl-X): stop and drop everything buffered", self.soft_reset
+            lambda: self.tr("Reset"),
+            lambda: self.tr("Soft reset (Ctrl-X): stop and drop everything buffered"),
+            self.soft_reset,
         )
         pen = station.profile.capabilities.pen
         if not pen:
@@ -75,7 +95,7 @@ class GcodePanel(QWidget):
             buttons.addWidget(button, number // 3, number % 3)
         grid.addLayout(buttons, 2, 0, 1, 4)
 
-        console = QGroupBox("Console")
+        console = t.group(lambda: self.tr("Console"))
         box = QVBoxLayout(console)
         self.output = QPlainTextEdit()
         self.output.setObjectName("gcode_console")
@@ -84,12 +104,14 @@ class GcodePanel(QWidget):
         self.output.setMaximumBlockCount(CONSOLE_LINES)
         self.entry = HistoryLineEdit()
         self.entry.setObjectName("gcode_entry")
-        self.entry.setPlaceholderText("G0 X10 Y10, $$, M3 …  (Up/Down: history)")
+        t.set(
+            self.entry.setPlaceholderText,
+            lambda: self.tr("G0 X10 Y10, $$, M3 …  (Up/Down: history)"),
+        )
         self.entry.returnPressed.connect(self.send_line)
-        self.send_button = QPushButton("Send")
+        self.send_button = t.button(lambda: self.tr("Send"))
         self.send_button.clicked.connect(self.send_line)
-        self.clear_button = QPushButton("Clear")
-        self.clear_button.setToolTip("Clear the console")
+        self.clear_button = t.button(lambda: self.tr("Clear"), lambda: self.tr("Clear the console"))
         self.clear_button.clicked.connect(self.output.clear)
         line = QHBoxLayout()
         line.addWidget(self.entry, 1)
@@ -104,9 +126,8 @@ class GcodePanel(QWidget):
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
 
-    def _button(self, caption: str, tip: str, slot: object) -> QPushButton:
-        button = QPushButton(caption)
-        button.setToolTip(tip)
+    def _button(self, caption: Maker, tip: Maker, slot: object) -> QPushButton:
+        button = self.texts.button(caption, tip)
         button.clicked.connect(slot)
         return button
 
@@ -129,17 +150,19 @@ class GcodePanel(QWidget):
         if session is not None and refusal is not None:
             answer = QMessageBox.warning(
                 self,
-                "Beyond the travel",
-                f"{refusal}.\n\nSend it to the machine anyway?",
+                self.tr("Beyond the travel"),
+                self.tr("{0}.\n\nSend it to the machine anyway?").format(refusal),
                 QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.Cancel,
                 QMessageBox.StandardButton.Cancel,
             )
             if answer != QMessageBox.StandardButton.Yes:
-                self.output.appendPlainText(f"! {text}: not sent (beyond the travel)")
+                self.output.appendPlainText(
+                    self.tr("! {0}: not sent (beyond the travel)").format(text)
+                )
                 return False
         sent = session is not None and session.send_line(text, "console", confirmed=True)
         if not sent:
-            self.output.appendPlainText(f"! {text}: not sent")
+            self.output.appendPlainText(self.tr("! {0}: not sent").format(text))
         return sent
 
     def home(self) -> None:
@@ -165,7 +188,9 @@ class GcodePanel(QWidget):
     def soft_reset(self) -> None:
         if self.session is not None:
             lost = self.session.soft_reset()
-            self.output.appendPlainText(f"! soft reset: {len(lost)} unanswered line(s) dropped")
+            self.output.appendPlainText(
+                self.tr("! soft reset: %n unanswered line(s) dropped", "", len(lost))
+            )
 
     def set_motion_enabled(self, enabled: bool) -> None:
         for button in (self.home_button, self.pen_up_button, self.pen_down_button):
@@ -195,8 +220,12 @@ class GcodePanel(QWidget):
         state = getattr(report, "state", "?")
         mpos = getattr(report, "mpos", ())
         feed = getattr(report, "feed", 0.0)
-        self.state_label.setText(f"{state}   feed {feed:g}")
+        self.state_label.setText(
+            self.tr("{0}   feed {1}").format(
+                _capitalised(axis_status_text(str(state).lower())), localized(f"{feed:g}")
+            )
+        )
         names = [a.name for a in self._station.profile.axes]
         self.position_label.setText(
-            "  ".join(f"{n} {v:9.3f}" for n, v in zip(names, mpos, strict=False))
+            localized("  ".join(f"{n} {v:9.3f}" for n, v in zip(names, mpos, strict=False)))
         )

@@ -21,6 +21,9 @@ from PySide6.QtWidgets import (
 
 from app.machine import LinkState, MachineModel
 from protocol.stage.codec import DeviceFlag
+from widgets.link_text import axis_status_text, link_detail_text, link_state_text
+from widgets.number_field import localized
+from widgets.retranslate import Texts
 from widgets.style import monospace_font
 
 LINK_COLOURS: dict[LinkState, str] = {
@@ -52,6 +55,7 @@ class InfoPanel(QFrame):
         self.setFrameShape(QFrame.Shape.StyledPanel)
         self.positions: list[QLabel] = []
         self.statuses: list[QLabel] = []
+        self.texts = Texts(self)
 
         layout = QHBoxLayout(self)
         layout.setContentsMargins(12, 8, 12, 8)
@@ -67,6 +71,8 @@ class InfoPanel(QFrame):
             self._show_axis(index)
         self._show_link()
         self._show_telemetry()
+        self.texts.also(self._show_link)
+        self.texts.also(self._show_telemetry)
 
     # --- building ------------------------------------------------------------
 
@@ -108,7 +114,7 @@ class InfoPanel(QFrame):
         self.battery.setRange(0, 100)
         self.battery.setMinimumWidth(160)
         self.battery.setMaximumHeight(8)
-        self.battery.setToolTip("Battery charge and voltage")
+        self.texts.set(self.battery.setToolTip, lambda: self.tr("Battery charge and voltage"))
         # The words beside a thin gauge, not on it: text over the fill's edge was split in
         # two colours and half unreadable.
         self.battery.setTextVisible(False)
@@ -133,9 +139,9 @@ class InfoPanel(QFrame):
 
     def _show_axis(self, index: int) -> None:
         axis = self._model.axes[index]
-        self.positions[index].setText(f"{axis.position:.3f} {axis.unit}")
+        self.positions[index].setText(localized(f"{axis.position:.3f} {axis.unit}"))
         status = self.statuses[index]
-        status.setText(axis.status_text)
+        status.setText(axis_status_text(axis.status_text))
         colour = _STATUS_COLOURS.get(axis.status_text)
         if axis.status_text.startswith("blocked") or axis.status_text == "sleeping":
             colour = "#c06000"
@@ -149,13 +155,15 @@ class InfoPanel(QFrame):
         self.link_lamp.setStyleSheet(
             f"background: {colour}; border-radius: 7px; border: 1px solid #00000040;"
         )
-        detail = f" — {self._model.link_detail}" if self._model.link_detail else ""
-        self.link_text.setText(f"{state.value}{detail}")
-        self.link_lamp.setToolTip(f"Link {state.value}")
+        detail = (
+            f" — {link_detail_text(self._model.link_detail)}" if self._model.link_detail else ""
+        )
+        self.link_text.setText(f"{link_state_text(state)}{detail}")
+        self.link_lamp.setToolTip(self.tr("Link {0}").format(link_state_text(state)))
         # Positions and states are live only while the device answers: otherwise they are
         # the last ones heard, greyed so that nobody reads them as where the machine is.
         live = state is LinkState.CONNECTED
-        tip = "" if live else f"Last known — the link is {state.value}"
+        tip = "" if live else self.tr("Last known — the link is {0}").format(link_state_text(state))
         for index, (position, status) in enumerate(zip(self.positions, self.statuses, strict=True)):
             position.setEnabled(live)
             status.setEnabled(live)
@@ -168,15 +176,17 @@ class InfoPanel(QFrame):
         voltage = telemetry.get("battery_voltage")
         if charge is None:
             self.battery.setValue(0)
-            self.battery.setFormat("battery —")
+            self.battery.setFormat(self.tr("battery —"))
         else:
             self.battery.setValue(round(charge))
-            volts = f" · {voltage:.2f} V" if voltage is not None else ""
-            self.battery.setFormat(f"battery {charge:.0f} %{volts}")
+            volts = localized(f" · {voltage:.2f} V") if voltage is not None else ""
+            self.battery.setFormat(self.tr("battery {0} %").format(f"{charge:.0f}") + volts)
         self.battery_text.setText(self.battery.format())
         temperature = telemetry.get("board_temperature")
         self.temperature.setText(
-            "board —" if temperature is None else f"board {temperature:.1f} °C"
+            self.tr("board —")
+            if temperature is None
+            else self.tr("board {0} °C").format(localized(f"{temperature:.1f}"))
         )
         self.power_note.setText(self._power_note())
 
@@ -187,10 +197,12 @@ class InfoPanel(QFrame):
         if DeviceFlag.CHARGER in flags:
             current = self._model.telemetry.get("charging_current")
             notes.append(
-                "charger connected" + (f" ({current:.0f} mA)" if current is not None else "")
+                self.tr("charger connected")
+                + (f" ({current:.0f} mA)" if current is not None else "")
             )
         if DeviceFlag.USB in flags:
-            notes.append("USB connected")
+            notes.append(self.tr("USB connected"))
         if DeviceFlag.LOW_BATTERY in flags:
-            notes.append("battery low")
+            notes.append(self.tr("battery low"))
+
         return "⚡ " + ", ".join(notes) if notes else ""

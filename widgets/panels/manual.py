@@ -22,6 +22,8 @@ from PySide6.QtWidgets import (
 from app.settings import JOG_STEPS
 from app.station import Station
 from widgets.jog_input import JogInput
+from widgets.number_field import localized
+from widgets.retranslate import Texts
 from widgets.stop_caption import pad_stop_caption, stop_caption
 from widgets.style import MINUS
 
@@ -65,6 +67,7 @@ class ManualPanel(QWidget):
         self._jog = jog
         self.jog_buttons: dict[tuple[int, ...], QPushButton] = {}
         self.home_buttons: list[QPushButton] = []
+        t = self.texts = Texts(self)
 
         grid = QGridLayout()
         grid.setSpacing(6)
@@ -74,14 +77,19 @@ class ManualPanel(QWidget):
             if dy and len(axes) < 2:
                 continue  # a one-axis machine: left and right only
             button = self._jog_button(label.format(*names), (dx, dy))
-            button.setToolTip(
-                f"Hold to jog {_describe(dx, dy, names)}  (keys: {keys}; Shift = other speed)"
+            described = _describe(dx, dy, names)
+            t.set(
+                button.setToolTip,
+                lambda d=described, k=keys: self.tr(
+                    "Hold to jog {0}  (keys: {1}; Shift = other speed)"
+                ).format(d, k),
             )
             grid.addWidget(button, row, column)
             self.jog_buttons[(dx, dy)] = button
 
-        self.stop_button = QPushButton(pad_stop_caption(station.profile))
-        self.stop_button.setToolTip(stop_caption(station.profile)[1])
+        self.stop_button = QPushButton()
+        t.set(self.stop_button.setText, lambda: pad_stop_caption(station.profile))
+        t.set(self.stop_button.setToolTip, lambda: stop_caption(station.profile)[1])
         self.stop_button.setFixedSize(_BUTTON_SIZE)
         self.stop_button.setStyleSheet("font-weight: bold; color: #b02020;")
         self.stop_button.clicked.connect(jog.stop_all)
@@ -92,15 +100,26 @@ class ManualPanel(QWidget):
         self.key_step.setObjectName("key_step")
         self.key_step.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # arrows stay the machine's
         for step in JOG_STEPS:
-            text = "continuous (hold)" if step == 0 else f"{step:g} {first.unit} per tap"
-            self.key_step.addItem(text, step)
-        self.key_step.setToolTip(
-            "What a tap of an arrow key does: jog while held, or move one step "
-            "(never past the travel)"
+            self.key_step.addItem("", step)
+            t.item(
+                self.key_step,
+                self.key_step.count() - 1,
+                lambda s=step, u=first.unit: (
+                    self.tr("continuous (hold)")
+                    if s == 0
+                    else self.tr("{0} {1} per tap").format(localized(f"{s:g}"), u)
+                ),
+            )
+        t.set(
+            self.key_step.setToolTip,
+            lambda: self.tr(
+                "What a tap of an arrow key does: jog while held, or move one step "
+                "(never past the travel)"
+            ),
         )
         self.key_step.currentIndexChanged.connect(self._key_step_chosen)
         steps = QHBoxLayout()
-        steps.addWidget(QLabel("Arrow keys:"))
+        steps.addWidget(t.label(lambda: self.tr("Arrow keys:")))
         steps.addWidget(self.key_step)
         steps.addStretch(1)
 
@@ -109,15 +128,21 @@ class ManualPanel(QWidget):
         if station.profile.capabilities.home and station.profile.dialect in HOMES_ALL_AXES:
             # One command homes every axis here: per-axis buttons that all did the same
             # thing promised what the machine cannot do.
-            button = QPushButton("Home all")
-            button.setToolTip("Home every axis: the machine's home command does them all")
+            button = t.button(
+                lambda: self.tr("Home all"),
+                lambda: self.tr("Home every axis: the machine's home command does them all"),
+            )
             button.clicked.connect(lambda _=False: self._home(0))
             homes.addWidget(button)
             self.home_buttons.append(button)
         elif station.profile.capabilities.home:
             for index, axis in enumerate(station.profile.axes):
-                button = QPushButton(f"Home {axis.name}")
-                button.setToolTip(f"Seek the {axis.name} home switch and set {axis.name} = 0")
+                button = t.button(
+                    lambda a=axis: self.tr("Home {0}").format(a.name),
+                    lambda a=axis: self.tr("Seek the {0} home switch and set {0} = 0").format(
+                        a.name
+                    ),
+                )
                 button.clicked.connect(lambda _=False, i=index: self._home(i))
                 homes.addWidget(button)
                 self.home_buttons.append(button)
@@ -155,8 +180,15 @@ class ManualPanel(QWidget):
         column.setSpacing(6)
         for sign, direction, key in (("+", +1, "PageUp"), (MINUS, -1, "PageDown")):
             button = self._jog_button(f"{name}{sign}", (0, 0, direction))
-            way = "up" if direction > 0 else "down"
-            button.setToolTip(f"Hold to jog {name} {way}  (key: {key})")
+            self.texts.set(
+                button.setToolTip,
+                lambda up=direction > 0, k=key: (
+                    self.tr("Hold to jog {0} up  (key: {1})")
+                    if up
+                    else self.tr("Hold to jog {0} down  (key: {1})")
+                ).format(name, k),
+            )
+
             column.addWidget(button)
             self.jog_buttons[(0, 0, direction)] = button
         column.addStretch(1)

@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QWidget
 
 from app.station import Station
 from widgets.number_field import FieldGate, NumberField, distance_box
+from widgets.retranslate import Texts, bold
 from widgets.style import MINUS
 
 
@@ -24,25 +25,36 @@ class RelativePanel(QWidget):
         self.gate = FieldGate(self.note, self)
         self.minus_buttons: list[QPushButton] = []
         self.plus_buttons: list[QPushButton] = []
+        t = self.texts = Texts(self)
 
         grid = QGridLayout(self)
         grid.setHorizontalSpacing(10)
         grid.setVerticalSpacing(8)
-        grid.addWidget(QLabel("<b>Move by</b>"), 0, 0, 1, 4)
+        grid.addWidget(t.label(lambda: bold(self.tr("Move by"))), 0, 0, 1, 4)
         for index, axis in enumerate(station.profile.axes):
             increment = distance_box(
                 f"increment_{axis.name}",
                 axis.unit,
                 0.001,
                 axis.travel,
-                f"{axis.name} increment (Esc stops)",
+                "",
+            )
+            t.set(
+                increment.set_description,
+                lambda a=axis: self.tr("{0} increment (Esc stops)").format(a.name),
             )
             increment.setValue(1.0)
             minus = QPushButton(f"{MINUS} {axis.name}")
-            minus.setToolTip(f"Move {axis.name} back by the increment")
+            t.set(
+                minus.setToolTip,
+                lambda a=axis: self.tr("Move {0} back by the increment").format(a.name),
+            )
             minus.clicked.connect(lambda _=False, i=index: self.step(i, -1))
             plus = QPushButton(f"+ {axis.name}")
-            plus.setToolTip(f"Move {axis.name} forward by the increment")
+            t.set(
+                plus.setToolTip,
+                lambda a=axis: self.tr("Move {0} forward by the increment").format(a.name),
+            )
             plus.clicked.connect(lambda _=False, i=index: self.step(i, +1))
             grid.addWidget(QLabel(axis.name), index + 1, 0)
             grid.addWidget(minus, index + 1, 1)
@@ -51,7 +63,8 @@ class RelativePanel(QWidget):
             self.increments.append(increment)
             self.minus_buttons.append(minus)
             self.plus_buttons.append(plus)
-            self.gate.watch(increment, f"{axis.name} increment")
+            self.gate.watch(increment, lambda a=axis: self.tr("{0} increment").format(a.name))
+
             self.gate.bind(minus, increment)
             self.gate.bind(plus, increment)
         grid.addWidget(self.note, len(self.increments) + 1, 0, 1, 5)

@@ -17,6 +17,7 @@ from PySide6.QtWidgets import QButtonGroup, QLabel, QPushButton, QVBoxLayout, QW
 from app.machine import LinkState
 from app.station import Station
 from widgets.jog_input import JogInput
+from widgets.retranslate import Texts, bold
 from widgets.stop_caption import stop_caption
 from widgets.style import CHECKED_BUTTON_STYLE
 
@@ -36,11 +37,16 @@ class StaticPanel(QWidget):
         self._model = station.model
         self._asleep = station.model.sleeping
         self._reported_sleeping = station.model.sleeping
+        t = self.texts = Texts(self)
 
-        self.fast_button = QPushButton("Fast")
-        self.slow_button = QPushButton("Slow")
-        self.fast_button.setToolTip("Jog and move at the fast speed (hold Shift for slow)")
-        self.slow_button.setToolTip("Jog and move at the slow speed (hold Shift for fast)")
+        self.fast_button = t.button(
+            lambda: self.tr("Fast"),
+            lambda: self.tr("Jog and move at the fast speed (hold Shift for slow)"),
+        )
+        self.slow_button = t.button(
+            lambda: self.tr("Slow"),
+            lambda: self.tr("Jog and move at the slow speed (hold Shift for fast)"),
+        )
         speeds = QButtonGroup(self)
         for button in (self.fast_button, self.slow_button):
             button.setCheckable(True)
@@ -52,15 +58,16 @@ class StaticPanel(QWidget):
         self.shift_note.setStyleSheet("color: #b07000;")
         jog.shiftChanged.connect(self._show_shift)
 
-        self.sleep_button = QPushButton("Sleep")
+        self.sleep_button = QPushButton()
         self.sleep_button.clicked.connect(self._toggle_sleep)
         self.sleep_button.setVisible(station.profile.capabilities.sleep)
 
-        caption, tip = stop_caption(station.profile)
-        self.stop_button = QPushButton(caption)
+        self.stop_button = QPushButton()
+        t.set(self.stop_button.setText, lambda: stop_caption(station.profile)[0])
+        t.set(self.stop_button.setToolTip, lambda: stop_caption(station.profile)[1])
         self.stop_button.setObjectName("stop_button")
-        self.stop_button.setToolTip(tip)
-        self.stop_button.setStyleSheet(_STOP_STYLE.format(size=18 if caption == "STOP" else 11))
+        big = station.profile.capabilities.stop_command
+        self.stop_button.setStyleSheet(_STOP_STYLE.format(size=18 if big else 11))
         # At least the big target it always was, and never narrower than its caption: a
         # fixed minimum cut the drill's three-line "DROP QUEUE" caption at both edges.
         self.stop_button.ensurePolished()
@@ -71,7 +78,7 @@ class StaticPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(6)
-        speed_title = QLabel("<b>Speed</b>")
+        speed_title = t.label(lambda: bold(self.tr("Speed")))
         layout.addWidget(speed_title)
         layout.addWidget(self.fast_button)
         layout.addWidget(self.slow_button)
@@ -87,6 +94,8 @@ class StaticPanel(QWidget):
         station.sessionChanged.connect(self._on_session)
         self._show_shift(False)
         self._show_sleep()
+        t.also(self._show_sleep)
+        t.also(lambda: self._show_shift(bool(self.shift_note.text())))
 
     @property
     def asleep(self) -> bool:
@@ -107,8 +116,12 @@ class StaticPanel(QWidget):
             session.select_speed(fast)
 
     def _show_shift(self, held: bool) -> None:
-        other = "slow" if self.fast_button.isChecked() else "fast"
-        self.shift_note.setText(f"Shift held: {other}" if held else "")
+        if not held:
+            self.shift_note.setText("")
+        elif self.fast_button.isChecked():
+            self.shift_note.setText(self.tr("Shift held: slow"))
+        else:
+            self.shift_note.setText(self.tr("Shift held: fast"))
 
     def _toggle_sleep(self) -> None:
         session = self._station.session
@@ -134,9 +147,9 @@ class StaticPanel(QWidget):
     def _show_sleep(self) -> None:
         live = self._model.link_state in (LinkState.CONNECTED, LinkState.STALE)
         self.sleep_button.setEnabled(live)
-        self.sleep_button.setText("Wake" if self._asleep else "Sleep")
+        self.sleep_button.setText(self.tr("Wake") if self._asleep else self.tr("Sleep"))
         self.sleep_button.setToolTip(
-            "Wake the machine: motors on, motion controls unlocked"
+            self.tr("Wake the machine: motors on, motion controls unlocked")
             if self._asleep
-            else "Put the machine to sleep: motors off, motion controls locked until Wake"
+            else self.tr("Put the machine to sleep: motors off, motion controls locked until Wake")
         )

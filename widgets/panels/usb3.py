@@ -19,7 +19,8 @@ from PySide6.QtWidgets import (
 from app.machines.usb3.session import Usb3Session
 from app.station import Station
 from protocol.usb3.codec import StepSize, Thread
-from widgets.number_field import FieldGate, NumberField, distance_box
+from widgets.number_field import FieldGate, NumberField, distance_box, localized
+from widgets.retranslate import Texts, bold
 from widgets.style import monospace_font
 
 
@@ -35,12 +36,19 @@ class Usb3Panel(QWidget):
         self.step_combos: list[QComboBox] = []
         self.thread_combos: list[QComboBox] = []
         self.send_buttons: list[QPushButton] = []
+        t = self.texts = Texts(self)
 
         grid = QGridLayout(self)
         grid.setHorizontalSpacing(10)
         grid.setVerticalSpacing(8)
-        for column, title in enumerate(("", "Move by", "Will move", "Step", "Thread", "")):
-            grid.addWidget(QLabel(f"<b>{title}</b>"), 0, column)
+        titles = (
+            lambda: bold(self.tr("Move by")),
+            lambda: bold(self.tr("Will move")),
+            lambda: bold(self.tr("Step")),
+            lambda: bold(self.tr("Thread")),
+        )
+        for column, title in enumerate(titles, start=1):
+            grid.addWidget(t.label(title), 0, column)
         for index, axis in enumerate(station.profile.axes):
             row = index + 1
             distance = distance_box(
@@ -48,21 +56,31 @@ class Usb3Panel(QWidget):
                 axis.unit,
                 -axis.travel,
                 axis.travel,
-                f"Signed distance to move {axis.name} (fractions allowed)",
+                "",
+            )
+            t.set(
+                distance.set_description,
+                lambda a=axis: self.tr("Signed distance to move {0} (fractions allowed)").format(
+                    a.name
+                ),
             )
             distance.textChanged.connect(lambda _t="", i=index: self._show_reachable(i))
             reachable = QLabel()
             reachable.setFont(monospace_font())
-            reachable.setToolTip("The unit moves in whole steps: this is what it will really move")
+            t.set(
+                reachable.setToolTip,
+                lambda: self.tr("The unit moves in whole steps: this is what it will really move"),
+            )
             steps = QComboBox()
             for size in StepSize:
-                steps.addItem("full" if size is StepSize.FULL else size.label, size)
+                steps.addItem(size.label, size)
+            t.item(steps, 0, lambda: self.tr("full", "full step"))
             steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
             threads = QComboBox()
             for thread in Thread:
                 threads.addItem(f"{thread.name} ({thread.pitch_mm:g} mm)", thread)
             threads.activated.connect(lambda _i=0, i=index: self._thread_chosen(i))
-            send = QPushButton(f"Send {axis.name}")
+            send = t.button(lambda a=axis: self.tr("Send {0}").format(a.name))
             send.clicked.connect(lambda _=False, i=index: self.send(i))
             for column, widget in enumerate(
                 (QLabel(axis.name), distance, reachable, steps, threads, send)
@@ -73,10 +91,12 @@ class Usb3Panel(QWidget):
             self.step_combos.append(steps)
             self.thread_combos.append(threads)
             self.send_buttons.append(send)
-            self.gate.watch(distance, f"{axis.name} distance")
+            self.gate.watch(distance, lambda a=axis: self.tr("{0} distance").format(a.name))
             self.gate.bind(send, distance)
-        self.zero_button = QPushButton("Zero all")
-        self.zero_button.setToolTip("Set every axis' position to 0 where it stands (C;)")
+        self.zero_button = t.button(
+            lambda: self.tr("Zero all"),
+            lambda: self.tr("Set every axis' position to 0 where it stands (C;)"),
+        )
         self.zero_button.clicked.connect(self.zero_all)
         grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
         grid.addWidget(self.note, len(self.distances) + 2, 0, 1, 6)
@@ -84,6 +104,7 @@ class Usb3Panel(QWidget):
         grid.setRowStretch(len(self.distances) + 3, 1)
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
+        t.also(self._show_settings)
 
     @property
     def session(self) -> Usb3Session | None:
@@ -142,7 +163,9 @@ class Usb3Panel(QWidget):
             return
         mm = session.reachable(axis, distance)
         speed = session.speed_mm_s(axis)
-        self.reachable[axis].setText(f"{mm:+.4f} mm")
+        self.reachable[axis].setText(localized(f"{mm:+.4f} mm"))
         self.reachable[axis].setToolTip(
-            f"The unit moves in whole steps; top speed at this step size {speed:.3f} mm/s"
+            self.tr("The unit moves in whole steps; top speed at this step size {0} mm/s").format(
+                localized(f"{speed:.3f}")
+            )
         )

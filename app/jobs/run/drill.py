@@ -36,6 +36,8 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from functools import partial
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.program import Operation, OpKind, Program
 from app.jobs.run.driver import RunnerPort
 from app.jobs.run.sequential import SequentialDriver
@@ -228,11 +230,14 @@ class DrillDriver(SequentialDriver):
             return
         self.runner.ask(
             index,
-            f"The hole at {op.source} may or may not have been drilled: the link went before "
-            "the drill confirmed the command. Look at the board (the hole is marked in the "
-            "preview), then drill it again or count it as drilled.",
-            "Drill it again",
-            "Count it as drilled",
+            QCoreApplication.translate(
+                "DrillDriver",
+                "The hole at {0} may or may not have been drilled: the link went before "
+                "the drill confirmed the command. Look at the board (the hole is marked in the "
+                "preview), then drill it again or count it as drilled.",
+            ).format(op.source),
+            QCoreApplication.translate("DrillDriver", "Drill it again"),
+            QCoreApplication.translate("DrillDriver", "Count it as drilled"),
         )
 
     def link_lost(self) -> None:

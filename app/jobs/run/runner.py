@@ -25,7 +25,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.jobs.estimate import Estimate, estimate, parameters_from_model
 from app.jobs.program import LimitViolation, Program, check_limits
@@ -232,7 +232,11 @@ class JobRunner(QObject):
         ``checked``: the checks already made for ``program`` (:meth:`checker`).
         """
         if self._state in ACTIVE:
-            self.message.emit("Stop the running job before loading another")
+            self.message.emit(
+                QCoreApplication.translate(
+                    "JobRunner", "Stop the running job before loading another"
+                )
+            )
             return []
         if checked is None or checked.program is not program:
             checked = self.checker()(program)
@@ -246,7 +250,9 @@ class JobRunner(QObject):
                 lines += f"\n  … and {len(refused) - REFUSALS_SHOWN} more"
             count = len({v.index for v in refused})
             self.message.emit(
-                f"Job {program.name!r} refused, {count} operation(s) cannot be run:\n{lines}"
+                QCoreApplication.translate(
+                    "JobRunner", "Job {0} refused, {1} operation(s) cannot be run:\n{2}"
+                ).format(repr(program.name), count, lines)
             )
             self._set_state(JobState.IDLE)
             self.programChanged.emit()
@@ -265,8 +271,11 @@ class JobRunner(QObject):
         if self._resume_available is not None:
             op = program[self._resume_available]
             self.message.emit(
-                f"Job {program.name!r} was interrupted: {self._resume_available} of {len(program)} "
-                f"operations done; resume from {op.source} or discard the checkpoint"
+                QCoreApplication.translate(
+                    "JobRunner",
+                    "Job {0} was interrupted: {1} of {2} operations done; "
+                    "resume from {3} or discard the checkpoint",
+                ).format(repr(program.name), self._resume_available, len(program), op.source)
             )
         return []
 
@@ -277,7 +286,11 @@ class JobRunner(QObject):
         if self._program is None or self._state not in (JobState.READY, *FINISHED):
             return
         if self._resume_available is not None:
-            self.message.emit("Resume from the checkpoint or discard it first")
+            self.message.emit(
+                QCoreApplication.translate(
+                    "JobRunner", "Resume from the checkpoint or discard it first"
+                )
+            )
             return
         if self._refuse_start_position(self._program):
             return
@@ -303,7 +316,11 @@ class JobRunner(QObject):
             self._set_state(JobState.RUNNING)
         elif self._state is JobState.PAUSED:
             if self._question is not None:
-                self.message.emit("Answer the question about the interrupted operation first")
+                self.message.emit(
+                    QCoreApplication.translate(
+                        "JobRunner", "Answer the question about the interrupted operation first"
+                    )
+                )
                 return
             self._continue(single_step=False)
 
@@ -322,7 +339,11 @@ class JobRunner(QObject):
         """Run exactly one operation, then pause."""
         if self._state is JobState.READY:
             if self._resume_available is not None:
-                self.message.emit("Resume from the checkpoint or discard it first")
+                self.message.emit(
+                    QCoreApplication.translate(
+                        "JobRunner", "Resume from the checkpoint or discard it first"
+                    )
+                )
                 return
             self._begin(0, single_step=True, verify=False)
         elif self._state is JobState.PAUSED and self._question is None:
@@ -342,7 +363,11 @@ class JobRunner(QObject):
         self._offer_checkpoint()
         self._set_state(JobState.ABORTED)
         # The count the checkpoint (and the resume offer) holds: what the machine ran.
-        self.message.emit(f"Job aborted after {self._executed} of {self._total()} operations")
+        self.message.emit(
+            QCoreApplication.translate(
+                "JobRunner", "Job aborted after {0} of {1} operations"
+            ).format(self._executed, self._total())
+        )
 
     def confirm(self) -> None:
         """The operator has done what the WAIT asked for."""
@@ -380,7 +405,11 @@ class JobRunner(QObject):
         self._resume_available = None
         if self._state in FINISHED:
             self._set_state(JobState.READY)
-        self.message.emit("Checkpoint discarded; the job starts from the beginning")
+        self.message.emit(
+            QCoreApplication.translate(
+                "JobRunner", "Checkpoint discarded; the job starts from the beginning"
+            )
+        )
 
     def emit_eta(self) -> None:
         """Tell the dock elapsed and remaining time (a timer calls this every second)."""
@@ -453,7 +482,11 @@ class JobRunner(QObject):
         self._driver.stopped()
         self._offer_checkpoint()
         self._set_state(JobState.FAILED)
-        self.message.emit(f"Job failed at {self._op_source(index)}: {reason}")
+        self.message.emit(
+            QCoreApplication.translate("JobRunner", "Job failed at {0}: {1}").format(
+                self._op_source(index), reason
+            )
+        )
 
     def link_pause(self) -> None:
         """The link is gone: hold the operation under way as not done, to re-examine later."""
@@ -461,11 +494,17 @@ class JobRunner(QObject):
         in_flight = self._driver.in_flight
         self._pause_requested = False
         self._set_state(JobState.PAUSED)
-        where = f" at {self._op_source(in_flight)}" if in_flight is not None else ""
-        self.message.emit(
-            f"Job paused{where}: link {self.station.model.link_state.value}; "
-            "resume once the machine is back"
-        )
+        state = self.station.model.link_state.value
+        if in_flight is not None:
+            text = QCoreApplication.translate(
+                "JobRunner", "Job paused at {0}: link {1}; resume once the machine is back"
+            )
+            self.message.emit(text.format(self._op_source(in_flight), state))
+        else:
+            text = QCoreApplication.translate(
+                "JobRunner", "Job paused: link {0}; resume once the machine is back"
+            )
+            self.message.emit(text.format(state))
 
     def stop_short(self, text: str) -> None:
         self._set_state(JobState.PAUSED)
@@ -497,8 +536,9 @@ class JobRunner(QObject):
         self._set_state(JobState.DONE)
         self.emit_eta()
         self.message.emit(
-            f"Job {self._program.name!r} done: {len(self._program)} operations "
-            f"in {self.elapsed_s:.1f} s"
+            QCoreApplication.translate("JobRunner", "Job {0} done: {1} operations in {2} s").format(
+                repr(self._program.name), len(self._program), f"{self.elapsed_s:.1f}"
+            )
         )
 
     # --- running -------------------------------------------------------------
@@ -553,7 +593,10 @@ class JobRunner(QObject):
     def _refuse_for_link(self) -> bool:
         reason = self.station.model.motion_lock_reason()
         if self.station.session is None or self.station.model.link_state in LINK_DOWN:
-            self.message.emit(f"Cannot run the job: {reason or 'not connected'}")
+            reason = reason or QCoreApplication.translate("JobRunner", "not connected")
+            self.message.emit(
+                QCoreApplication.translate("JobRunner", "Cannot run the job: {0}").format(reason)
+            )
             return True
         return False
 
@@ -612,8 +655,13 @@ class JobRunner(QObject):
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.
         self.station.model.set_jog_lock(
-            "a job is under way — abort it or let it finish" if state in ACTIVE else None
+            QCoreApplication.translate(
+                "JobRunner", "a job is under way — abort it or let it finish"
+            )
+            if state in ACTIVE
+            else None
         )
+
         if runs and self.station.realtime:
             self._eta_timer.start()
         elif not runs:

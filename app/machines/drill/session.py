@@ -28,7 +28,7 @@ from __future__ import annotations
 from collections import deque
 from decimal import ROUND_HALF_UP, Decimal
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -230,10 +230,17 @@ class DrillSession(MachineSession):
         dropped = len(self._queue)
         self._queue.clear()
         running = self._in_flight
-        tail = f"; {command_text(running)} finishes its procedure" if running is not None else ""
-        self.model.message.emit(
-            f"The drill has no stop command: {dropped} queued command(s) dropped{tail}"
-        )
+        if running is not None:
+            text = QCoreApplication.translate(
+                "DrillSession",
+                "The drill has no stop command: {0} queued command(s) dropped; "
+                "{1} finishes its procedure",
+            ).format(dropped, command_text(running))
+        else:
+            text = QCoreApplication.translate(
+                "DrillSession", "The drill has no stop command: {0} queued command(s) dropped"
+            ).format(dropped)
+        self.model.message.emit(text)
         if running is None and dropped:
             self.idle.emit()
 
@@ -408,9 +415,11 @@ class DrillSession(MachineSession):
         else:
             self.model.set_link_state(LinkState.LOST, str(reason))
             self.model.message.emit(
-                f"Link lost: {reason}; {dropped} command(s) dropped"
+                QCoreApplication.translate(
+                    "DrillSession", "Link lost: {0}; {1} command(s) dropped"
+                ).format(reason, dropped)
                 if dropped
-                else f"Link lost: {reason}"
+                else QCoreApplication.translate("DrillSession", "Link lost: {0}").format(reason)
             )
 
     def _on_data(self, data: bytes) -> None:

@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import count
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -361,7 +361,11 @@ class GcodeSession(MachineSession):
         self._dropped_by_stop = 0
         quiet, self._quiet_stop = self._quiet_stop, False
         if lost and not quiet:
-            self.model.message.emit(f"Stopped: {lost} line(s) not run")
+            self.model.message.emit(
+                QCoreApplication.translate("GcodeSession", "Stopped: {0} line(s) not run").format(
+                    lost
+                )
+            )
 
     def move_absolute(self, axis: int, position: float) -> bool:
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
@@ -474,7 +478,9 @@ class GcodeSession(MachineSession):
         if not moves:
             if not self._jog_told_end:
                 self._jog_told_end = True
-                self.model.message.emit("Jog ends: the end of the travel")
+                self.model.message.emit(
+                    QCoreApplication.translate("GcodeSession", "Jog ends: the end of the travel")
+                )
             return
         feed = f"F{speed * 60:.0f}"
         if self.jogs_with_command:
@@ -552,8 +558,13 @@ class GcodeSession(MachineSession):
             self.model.set_link_state(LinkState.DISCONNECTED)
         else:
             self.model.set_link_state(LinkState.LOST, str(reason))
-            tail = f"; {len(lost)} unanswered line(s)" if lost else ""
-            self.model.message.emit(f"Link lost: {reason}{tail}")
+            if lost:
+                text = QCoreApplication.translate(
+                    "GcodeSession", "Link lost: {0}; {1} unanswered line(s)"
+                ).format(reason, len(lost))
+            else:
+                text = QCoreApplication.translate("GcodeSession", "Link lost: {0}").format(reason)
+            self.model.message.emit(text)
 
     def receive_injected(self, data: bytes) -> None:
         """Bytes a developer injects as the device's (developer pane): handled as if read."""
@@ -579,7 +590,12 @@ class GcodeSession(MachineSession):
                 self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
-                self.model.message.emit(f"Machine alarm {reply.code}: {reply.meaning}")
+                self.model.message.emit(
+                    QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
+                        reply.code, reply.meaning
+                    )
+                )
+
             elif isinstance(reply, Banner):
                 ours, self._reset_sent_at = self._reset_sent_at is not None, None
                 self.replyText.emit(reply.text)

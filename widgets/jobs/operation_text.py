@@ -1,0 +1,37 @@
+"""An operation as the operator reads it, in the operator's language.
+
+``Operation.describe()`` stays English: logs, checkpoints and the command line
+read it.  The jobs dock shows this instead.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
+from app.jobs.program import Operation, OpKind
+
+_KINDS = {
+    OpKind.MOVE: QT_TRANSLATE_NOOP("Operation", "move"),
+    OpKind.DRILL: QT_TRANSLATE_NOOP("Operation", "drill"),
+    OpKind.PEN_UP: QT_TRANSLATE_NOOP("Operation", "pen up"),
+    OpKind.PEN_DOWN: QT_TRANSLATE_NOOP("Operation", "pen down"),
+    OpKind.WAIT: QT_TRANSLATE_NOOP("Operation", "wait"),
+    OpKind.COMMENT: QT_TRANSLATE_NOOP("Operation", "comment"),
+    OpKind.GCODE: QT_TRANSLATE_NOOP("Operation", "gcode"),
+}
+
+
+def kind_text(kind: OpKind) -> str:
+    return QCoreApplication.translate("Operation", str(_KINDS.get(kind, kind.value)))
+
+
+def operation_text(op: Operation) -> str:
+    """What ``op`` does: "move to X40.000 Y5.000", "najet na X40.000 Y5.000"…"""
+    if op.kind is OpKind.MOVE:
+        where = " ".join(f"{axis}{value:.3f}" for axis, value in op.target.items())
+        return QCoreApplication.translate("Operation", "move to {0}").format(where)
+    if op.kind in (OpKind.WAIT, OpKind.COMMENT) and op.message:
+        return f"{kind_text(op.kind)}: {op.message}"
+    if op.kind is OpKind.GCODE and op.line:
+        return op.describe()
+    return kind_text(op.kind)
