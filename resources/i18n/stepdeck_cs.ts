@@ -441,6 +441,7 @@
     </message>
     <message>
         <source>Read</source>
+        <extracomment>Each axis has its own column of parameter names: side by side only the first axis&apos;s is shown, stacked each axis block has its own.</extracomment>
         <translation>Načíst</translation>
     </message>
     <message>
@@ -999,10 +1000,6 @@ Přesto odeslat do stroje?</translation>
         <translation>Posuv končí: konec rozsahu pojezdu</translation>
     </message>
     <message>
-        <source>No reply from the device for {0} s</source>
-        <translation>Zařízení neodpovídá už {0} s</translation>
-    </message>
-    <message>
         <source>Link lost: {0}; {1} unanswered line(s)</source>
         <translation>Spojení ztraceno: {0}; nepotvrzených řádků: {1}</translation>
     </message>
@@ -1063,7 +1060,7 @@ Přesto odeslat do stroje?</translation>
     <name>JobPreview</name>
     <message>
         <source>work</source>
-        <extracomment>Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
+        <extracomment>A click this many pixels from a hole picks it as a reference. Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
         <translation>práce</translation>
     </message>
     <message>
@@ -1092,7 +1089,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A refusal or news about click-to-move, for the dock&apos;s message area. Wall seconds the last :meth:`set_program` took to build the curves. Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Tažením posunete pohled, kolečkem zvětšíte, Celé ukáže vše; kliknutí (ne tažení) v dosahu nástroje po potvrzení natočí základnu a najede tam nástrojem</translation>
     </message>
     <message>
@@ -1169,6 +1166,18 @@ Přesto odeslat do stroje?</translation>
         <translation>Natočit {0} o {1}° na {2} {3} a pak najet osou {4} na {5} {6}?</translation>
     </message>
     <message>
+        <source>Click a hole in the preview for reference {0}</source>
+        <translation>Klikněte v náhledu na otvor pro referenční bod {0}</translation>
+    </message>
+    <message>
+        <source>No hole there: click on a hole, or press Pick again to stop</source>
+        <translation>Tady žádný otvor není: klikněte na otvor, nebo výběr ukončete dalším stiskem Vybrat</translation>
+    </message>
+    <message>
+        <source>Hole {0} is reference {1}</source>
+        <translation>Otvor {0} je referenční bod {1}</translation>
+    </message>
+    <message>
         <source>Click-to-move is off: {0}</source>
         <translation>Najetí kliknutím je vypnuto: {0}</translation>
     </message>
@@ -1180,12 +1189,17 @@ Přesto odeslat do stroje?</translation>
         <source>Click a point inside the travel to move there (after confirming)</source>
         <translation>Klikněte na bod uvnitř pojezdu a (po potvrzení) na něj najedete</translation>
     </message>
+    <message>
+        <source>Preview: the {connections} connections are drawn merged, each of the {chords} different chords once, as dark as its windings make it</source>
+        <extracomment>The thread&apos;s opacity (of 255): low, so that where threads cross the colour deepens. A merged thread&apos;s bands (see the module of the thread geometry), all and wound. What the preview says when it draws the thread merged (&quot;&quot; when exact).</extracomment>
+        <translation>Náhled: {connections} spojení je vykresleno sloučeně, každá z {chords} různých tětiv jednou, tím tmavší, čím víckrát je navinuta</translation>
+    </message>
 </context>
 <context>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels.</extracomment>
+        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
         <translation>Před načtením další úlohy zastavte tu běžící</translation>
     </message>
     <message>
@@ -1239,8 +1253,8 @@ Přesto odeslat do stroje?</translation>
         <translation>Úlohu nelze spustit: {0}</translation>
     </message>
     <message>
-        <source>a job is under way: pause and abort it, or let it finish</source>
-        <translation>probíhá úloha: pozastavte ji a přerušte, nebo ji nechte doběhnout</translation>
+        <source>a job is under way — abort it or let it finish</source>
+        <translation>probíhá úloha — přerušte ji, nebo ji nechte doběhnout</translation>
     </message>
 </context>
 <context>
@@ -1263,7 +1277,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>The operation being executed and the line it came from</source>
-        <extracomment>The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
+        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Právě prováděná operace a řádek, ze kterého pochází</translation>
     </message>
     <message>
@@ -1455,6 +1469,14 @@ Načíst jako:</translation>
         </translation>
     </message>
     <message>
+        <source>{0}: the board placement was not applied: {1}</source>
+        <translation>{0}: umístění desky nebylo použito: {1}</translation>
+    </message>
+    <message>
+        <source>{0}: kept on the board as before ({1})</source>
+        <translation>{0}: ponecháno na desce jako předtím ({1})</translation>
+    </message>
+    <message>
         <source>{0} — refused, preview only</source>
         <translation>{0} — odmítnuto, jen náhled</translation>
     </message>
@@ -1581,6 +1603,14 @@ Načíst jako:</translation>
     <message>
         <source>waiting for the operator: {0}</source>
         <translation>čeká se na obsluhu: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>JogInput</name>
+    <message>
+        <source>Jog refused: {0}</source>
+        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <translation>Ruční posuv odmítnut: {0}</translation>
     </message>
 </context>
 <context>
@@ -1788,6 +1818,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Frames from the device that failed to decode</source>
+        <extracomment>The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
         <translation>Rámce ze zařízení, které nešlo dekódovat</translation>
     </message>
     <message>
@@ -1948,11 +1979,16 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Hold to jog {0} up  (key: {1})</source>
+        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds).</extracomment>
         <translation>Držením posouvat {0} nahoru  (klávesa: {1})</translation>
     </message>
     <message>
         <source>Hold to jog {0} down  (key: {1})</source>
         <translation>Držením posouvat {0} dolů  (klávesa: {1})</translation>
+    </message>
+    <message>
+        <source>Jogging locked: {0}</source>
+        <translation>Ruční posuv zablokován: {0}</translation>
     </message>
 </context>
 <context>
@@ -2034,7 +2070,7 @@ Načíst jako:</translation>
     <name>RegistrationBar</name>
     <message>
         <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
-        <extracomment>The job as its file says (what registration transforms; Clear goes back to it).</extracomment>
+        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
         <translation>Spodní strana oboustranné desky: úloha zrcadlená v rámci svého rozsahu</translation>
     </message>
     <message>
@@ -2058,12 +2094,28 @@ Načíst jako:</translation>
         <translation>Referenční otvor: jeho číslo v pořadí vrtání</translation>
     </message>
     <message>
+        <source>Pick</source>
+        <translation>Vybrat</translation>
+    </message>
+    <message>
+        <source>Then click the hole in the preview</source>
+        <translation>Potom klikněte na otvor v náhledu</translation>
+    </message>
+    <message>
         <source>Here</source>
         <translation>Zde</translation>
     </message>
     <message>
         <source>The tool stands over this hole on the board: take its position</source>
         <translation>Nástroj stojí nad tímto otvorem na desce: převzít jeho polohu</translation>
+    </message>
+    <message>
+        <source>3 points</source>
+        <translation>3 body</translation>
+    </message>
+    <message>
+        <source>A third reference hole: averaged in, and how far the points disagree shown</source>
+        <translation>Třetí referenční otvor: započte se do průměru a ukáže, nakolik se body rozcházejí</translation>
     </message>
     <message>
         <source>Register</source>
@@ -2078,6 +2130,10 @@ Načíst jako:</translation>
         <translation>nelze zrcadlit: {0}</translation>
     </message>
     <message>
+        <source>reference {0} is hole {1} (X{2} Y{3} in the job)</source>
+        <translation>referenční bod {0} je otvor {1} (X{2} Y{3} v úloze)</translation>
+    </message>
+    <message>
         <source>reference {0} (hole {1}) at X{2} Y{3}</source>
         <translation>reference {0} (otvor {1}) na X{2} Y{3}</translation>
     </message>
@@ -2088,6 +2144,10 @@ Načíst jako:</translation>
     <message>
         <source>registered: {0}</source>
         <translation>zaměřeno: {0}</translation>
+    </message>
+    <message>
+        <source>the three points agree within {0} mm</source>
+        <translation>tři body se shodují do {0} mm</translation>
     </message>
     <message>
         <source>warning: {0}</source>
@@ -2121,7 +2181,7 @@ Načíst jako:</translation>
     <name>RotationCross</name>
     <message>
         <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
-        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has).</extracomment>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels. The height the dock asks for: each plot about 190 px, enough to read a curve&apos;s shape.</extracomment>
         <translation>Natočení plošiny vůči poslednímu vynulování (kladně proti směru hodinových ručiček)</translation>
     </message>
     <message>
@@ -2650,12 +2710,12 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
         <translation>rychlost</translation>
     </message>
     <message>
-        <source>variable</source>
-        <translation>proměnná</translation>
+        <source>time before the pause</source>
+        <translation>čas před pozastavením</translation>
     </message>
     <message>
-        <source>time</source>
-        <translation>čas</translation>
+        <source>time before now</source>
+        <translation>čas před okamžikem</translation>
     </message>
     <message>
         <source>Rotation</source>

@@ -441,6 +441,7 @@
     </message>
     <message>
         <source>Read</source>
+        <extracomment>Each axis has its own column of parameter names: side by side only the first axis&apos;s is shown, stacked each axis block has its own.</extracomment>
         <translation>Načítať</translation>
     </message>
     <message>
@@ -999,10 +1000,6 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Posuv končí: koniec rozsahu posuvu</translation>
     </message>
     <message>
-        <source>No reply from the device for {0} s</source>
-        <translation>Zariadenie neodpovedá už {0} s</translation>
-    </message>
-    <message>
         <source>Link lost: {0}; {1} unanswered line(s)</source>
         <translation>Spojenie stratené: {0}; nepotvrdených riadkov: {1}</translation>
     </message>
@@ -1063,7 +1060,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>JobPreview</name>
     <message>
         <source>work</source>
-        <extracomment>Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
+        <extracomment>A click this many pixels from a hole picks it as a reference. Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so. At most this many steps per move, so a move spinning the base many turns stays cheap. A path with more points than this is drawn without a dot on each. Points of the drawn reach circle. Runner states in which a job is under way: the machine is the job&apos;s, not the mouse&apos;s.</extracomment>
         <translation>práca</translation>
     </message>
     <message>
@@ -1092,7 +1089,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A refusal or news about click-to-move, for the dock&apos;s message area. Wall seconds the last :meth:`set_program` took to build the curves. Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
     </message>
     <message>
@@ -1169,6 +1166,18 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Natočiť {0} o {1}° na {2} {3} a potom presunúť os {4} na {5} {6}?</translation>
     </message>
     <message>
+        <source>Click a hole in the preview for reference {0}</source>
+        <translation>Kliknite v náhľade na otvor pre referenčný bod {0}</translation>
+    </message>
+    <message>
+        <source>No hole there: click on a hole, or press Pick again to stop</source>
+        <translation>Tu nie je žiadny otvor: kliknite na otvor, alebo výber ukončite ďalším stlačením Vybrať</translation>
+    </message>
+    <message>
+        <source>Hole {0} is reference {1}</source>
+        <translation>Otvor {0} je referenčný bod {1}</translation>
+    </message>
+    <message>
         <source>Click-to-move is off: {0}</source>
         <translation>Presun kliknutím je vypnutý: {0}</translation>
     </message>
@@ -1180,12 +1189,17 @@ Napriek tomu odoslať do stroja?</translation>
         <source>Click a point inside the travel to move there (after confirming)</source>
         <translation>Kliknite na bod vnútri posuvu a (po potvrdení) sa naň presuniete</translation>
     </message>
+    <message>
+        <source>Preview: the {connections} connections are drawn merged, each of the {chords} different chords once, as dark as its windings make it</source>
+        <extracomment>The thread&apos;s opacity (of 255): low, so that where threads cross the colour deepens. A merged thread&apos;s bands (see the module of the thread geometry), all and wound. What the preview says when it draws the thread merged (&quot;&quot; when exact).</extracomment>
+        <translation>Náhľad: {connections} spojení je vykreslených zlúčene, každá z {chords} rôznych tetív raz, tým tmavšia, čím viackrát je navinutá</translation>
+    </message>
 </context>
 <context>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels.</extracomment>
+        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
         <translation>Pred načítaním ďalšej úlohy zastavte tú bežiacu</translation>
     </message>
     <message>
@@ -1239,8 +1253,8 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Úlohu nemožno spustiť: {0}</translation>
     </message>
     <message>
-        <source>a job is under way: pause and abort it, or let it finish</source>
-        <translation>prebieha úloha: pozastavte ju a prerušte, alebo ju nechajte dobehnúť</translation>
+        <source>a job is under way — abort it or let it finish</source>
+        <translation>prebieha úloha — prerušte ju, alebo ju nechajte dobehnúť</translation>
     </message>
 </context>
 <context>
@@ -1263,7 +1277,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>The operation being executed and the line it came from</source>
-        <extracomment>The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
+        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Práve vykonávaná operácia a riadok, z ktorého pochádza</translation>
     </message>
     <message>
@@ -1455,6 +1469,14 @@ Načítať ako:</translation>
         </translation>
     </message>
     <message>
+        <source>{0}: the board placement was not applied: {1}</source>
+        <translation>{0}: umiestnenie dosky nebolo použité: {1}</translation>
+    </message>
+    <message>
+        <source>{0}: kept on the board as before ({1})</source>
+        <translation>{0}: ponechané na doske ako predtým ({1})</translation>
+    </message>
+    <message>
         <source>{0} — refused, preview only</source>
         <translation>{0} — odmietnuté, len náhľad</translation>
     </message>
@@ -1581,6 +1603,14 @@ Načítať ako:</translation>
     <message>
         <source>waiting for the operator: {0}</source>
         <translation>čaká sa na obsluhu: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>JogInput</name>
+    <message>
+        <source>Jog refused: {0}</source>
+        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <translation>Ručný posuv odmietnutý: {0}</translation>
     </message>
 </context>
 <context>
@@ -1788,6 +1818,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Frames from the device that failed to decode</source>
+        <extracomment>The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
         <translation>Rámce zo zariadenia, ktoré sa nepodarilo dekódovať</translation>
     </message>
     <message>
@@ -1948,11 +1979,16 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Hold to jog {0} up  (key: {1})</source>
+        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds).</extracomment>
         <translation>Držaním posúvať {0} hore  (kláves: {1})</translation>
     </message>
     <message>
         <source>Hold to jog {0} down  (key: {1})</source>
         <translation>Držaním posúvať {0} dole  (kláves: {1})</translation>
+    </message>
+    <message>
+        <source>Jogging locked: {0}</source>
+        <translation>Ručný posuv zablokovaný: {0}</translation>
     </message>
 </context>
 <context>
@@ -2034,7 +2070,7 @@ Načítať ako:</translation>
     <name>RegistrationBar</name>
     <message>
         <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
-        <extracomment>The job as its file says (what registration transforms; Clear goes back to it).</extracomment>
+        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
         <translation>Spodná strana obojstrannej dosky: úloha zrkadlená v rámci svojho rozsahu</translation>
     </message>
     <message>
@@ -2058,12 +2094,28 @@ Načítať ako:</translation>
         <translation>Referenčný otvor: jeho číslo v poradí vŕtania</translation>
     </message>
     <message>
+        <source>Pick</source>
+        <translation>Vybrať</translation>
+    </message>
+    <message>
+        <source>Then click the hole in the preview</source>
+        <translation>Potom kliknite na otvor v náhľade</translation>
+    </message>
+    <message>
         <source>Here</source>
         <translation>Tu</translation>
     </message>
     <message>
         <source>The tool stands over this hole on the board: take its position</source>
         <translation>Nástroj stojí nad týmto otvorom na doske: prevziať jeho polohu</translation>
+    </message>
+    <message>
+        <source>3 points</source>
+        <translation>3 body</translation>
+    </message>
+    <message>
+        <source>A third reference hole: averaged in, and how far the points disagree shown</source>
+        <translation>Tretí referenčný otvor: započíta sa do priemeru a ukáže, nakoľko sa body rozchádzajú</translation>
     </message>
     <message>
         <source>Register</source>
@@ -2078,6 +2130,10 @@ Načítať ako:</translation>
         <translation>nedá sa zrkadliť: {0}</translation>
     </message>
     <message>
+        <source>reference {0} is hole {1} (X{2} Y{3} in the job)</source>
+        <translation>referenčný bod {0} je otvor {1} (X{2} Y{3} v úlohe)</translation>
+    </message>
+    <message>
         <source>reference {0} (hole {1}) at X{2} Y{3}</source>
         <translation>referencia {0} (otvor {1}) na X{2} Y{3}</translation>
     </message>
@@ -2088,6 +2144,10 @@ Načítať ako:</translation>
     <message>
         <source>registered: {0}</source>
         <translation>zamerané: {0}</translation>
+    </message>
+    <message>
+        <source>the three points agree within {0} mm</source>
+        <translation>tri body sa zhodujú do {0} mm</translation>
     </message>
     <message>
         <source>warning: {0}</source>
@@ -2121,7 +2181,7 @@ Načítať ako:</translation>
     <name>RotationCross</name>
     <message>
         <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
-        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has).</extracomment>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels. The height the dock asks for: each plot about 190 px, enough to read a curve&apos;s shape.</extracomment>
         <translation>Natočenie plošiny voči poslednému vynulovaniu (kladne proti smeru hodinových ručičiek)</translation>
     </message>
     <message>
@@ -2650,12 +2710,12 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
         <translation>rýchlosť</translation>
     </message>
     <message>
-        <source>variable</source>
-        <translation>premenná</translation>
+        <source>time before the pause</source>
+        <translation>čas pred pozastavením</translation>
     </message>
     <message>
-        <source>time</source>
-        <translation>čas</translation>
+        <source>time before now</source>
+        <translation>čas pred okamihom</translation>
     </message>
     <message>
         <source>Rotation</source>
