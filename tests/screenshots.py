@@ -124,6 +124,66 @@ def string_art(work: Path) -> tuple[StationHarness, MainWindow]:
     return harness, window
 
 
+def czech(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The main window with its docks, switched to Czech in the running window."""
+    harness, window = main_window(work)
+    window.set_language("cs")
+    harness.run(0.5)
+    return harness, window
+
+
+def dark(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The GRBL plotter in dark colours, a job waiting for the operator to go on."""
+    harness, window = _window("grbl-plotter", work)
+    window.set_theme("dark")
+    job = work / "square-with-a-pause.gcode"
+    job.write_text(
+        "G21 G90\nG0 X10 Y10\nM3 S1000\nG1 X60 F3000\nG1 Y60\nM0 (check the pen)\n"
+        "G1 X10\nG1 Y10\nM5\nG0 X0 Y0\n",
+        encoding="utf-8",
+    )
+    window.jobs_dock.show()
+    window.telemetry_dock.show()
+    window.jobs_dock.open_path(job)
+    window.jobs_dock.run_button.click()
+    harness.run(8.0)
+    return harness, window
+
+
+def drill(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The drill on the shared sample board, the first bit asked for."""
+    harness, window = _window("pcb-drill", work)
+    _page(window, "Drill")
+    window.jobs_dock.show()
+    window.jobs_dock.open_path(SHARED / "samples" / "pcb-driver" / "driver.dri")
+    window.jobs_dock.run_button.click()
+    harness.run(12.0)
+    return harness, window
+
+
+def jobs(work: Path) -> tuple[StationHarness, MainWindow]:
+    """A point-list job running on the stage, the jobs dock beside the Manual page."""
+    harness, window = _window("xy-stage", work)
+    job = work / "square.csv"
+    job.write_text(SQUARE, encoding="utf-8")
+    window.jobs_dock.show()
+    window.jobs_dock.open_path(job)
+    window.jobs_dock.run_button.click()
+    harness.run(4.0)
+    return harness, window
+
+
+def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The CoreXY plotter drawing the Unicorn file of the shared real data."""
+    harness, window = _window("corexy-plotter", work)
+    _page(window, "G-code")
+    window.jobs_dock.show()
+    window.jobs_dock.open_path(SHARED / "realdata" / "gcode" / "CNC-Drawinger_unicorn_BUNNY.gcode")
+    window.jobs_dock.run_button.click()
+    harness.run(40.0)
+    return harness, window
+
+
 SHOTS: dict[str, Callable[[Path], tuple[StationHarness, MainWindow]]] = {
     "main-window": main_window,
     "dynamics": dynamics,
@@ -132,6 +192,11 @@ SHOTS: dict[str, Callable[[Path], tuple[StationHarness, MainWindow]]] = {
     "developer": developer,
     "usb3": usb3,
     "string-art": string_art,
+    "czech": czech,
+    "dark": dark,
+    "drill": drill,
+    "jobs": jobs,
+    "plotter": plotter,
 }
 
 

@@ -349,7 +349,7 @@ class TelemetryDock(QDockWidget):
         self._titles[0] = (self.tr("position") + (f" ({units})" if units else ""), self._keys)
         velocity_unit = f" ({units}/s)" if units else ""
         self._titles[1] = (self.tr("velocity") + velocity_unit, self._keys)
-        if self.captions:
+        if getattr(self, "colours", None) is not None:  # shown once the colours are known
             self._show_title(0)
             self._show_title(1)
             self._show_time_label()
