@@ -16,6 +16,7 @@ from pathlib import Path
 from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import QApplication
 
+from app import i18n
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -62,8 +63,10 @@ def _hold_key(harness: StationHarness, window: MainWindow, key: Qt.Key, seconds:
     window.jog.key_release(key)
 
 
-def main_window(work: Path) -> tuple[StationHarness, MainWindow]:
+def main_window(work: Path, language: str | None = None) -> tuple[StationHarness, MainWindow]:
     harness, window = _window("xy-stage", work)
+    if language is not None:
+        window.set_language(language)
     job = work / "square.csv"
     job.write_text(SQUARE, encoding="utf-8")
     window.telemetry_dock.show()
@@ -126,10 +129,7 @@ def string_art(work: Path) -> tuple[StationHarness, MainWindow]:
 
 def czech(work: Path) -> tuple[StationHarness, MainWindow]:
     """The main window with its docks, switched to Czech in the running window."""
-    harness, window = main_window(work)
-    window.set_language("cs")
-    harness.run(0.5)
-    return harness, window
+    return main_window(work, "cs")
 
 
 def dark(work: Path) -> tuple[StationHarness, MainWindow]:
@@ -178,8 +178,11 @@ def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
     harness, window = _window("corexy-plotter", work)
     _page(window, "G-code")
     window.jobs_dock.show()
+    window.jobs_dock.skip_check.setChecked(True)  # M300/M18 left out, listed
     window.jobs_dock.open_path(SHARED / "realdata" / "gcode" / "CNC-Drawinger_unicorn_BUNNY.gcode")
     window.jobs_dock.run_button.click()
+    harness.run(5.0)
+    window.jobs_dock.continue_button.click()  # the file's M01 "Was registration test successful?"
     harness.run(40.0)
     return harness, window
 
@@ -203,6 +206,7 @@ SHOTS: dict[str, Callable[[Path], tuple[StationHarness, MainWindow]]] = {
 def main(names: list[str]) -> None:
     app = QApplication.instance() or QApplication(sys.argv)
     assert isinstance(app, QApplication)
+    i18n.install("en")  # as the station starts: English with its plural forms
     for name in names or list(SHOTS):
         with tempfile.TemporaryDirectory() as temp:
             harness, window = SHOTS[name](Path(temp))

@@ -105,7 +105,9 @@ def test_zero_button_resets_the_cross(
     qtbot: QtBot, harness: StationHarness, dock: TelemetryDock
 ) -> None:
     assert dock.cross.angle is None and not dock.zero_button.isEnabled()
+    assert dock.angle_label.text() == ""  # no rotation plotted: no lone dash under the cross
     choose(dock, Subscriber.ROTATION)
+    assert dock.angle_label.text() == "—"  # plotted, no value yet
     harness.connect()
     harness.emulator.rotation_rate_dps = 10.0
     harness.run(3.0)
@@ -117,6 +119,7 @@ def test_zero_button_resets_the_cross(
     assert 5.0 < dock.cross.angle < 15.0
     choose(dock, Subscriber.BATTERY_VOLTAGE)
     assert dock.cross.angle is None and not dock.zero_button.isEnabled()
+    assert dock.angle_label.text() == ""
 
 
 def test_export_buttons_write_files(

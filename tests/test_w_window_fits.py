@@ -219,3 +219,36 @@ def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
             assert not dock.options.draw
     finally:
         harness.close()
+
+
+def test_a_drill_job_with_three_reference_holes_still_fits_1280_by_800(
+    qtbot: QtBot, qapp: object, tmp_path: Path
+) -> None:
+    """The registration row of a loaded drill job (three references shown) kept within 1280 px.
+
+    In one row its side choice, three references with Pick and Here, and the
+    buttons ran the jobs dock 6 px past a 1280 px screen beside the Drill page.
+    """
+    harness = StationHarness(load_profile("pcb-drill"))
+    try:
+        window = _every_dock_open(qtbot, harness, tmp_path)
+        window.resize(SCREEN)
+        job = tmp_path / "board.drl"
+        job.write_text(
+            "M48\nMETRIC\nT1C0.8\n%\nT1\nX10.0Y10.0\nX40.0Y10.0\nX40.0Y30.0\nM30\n",
+            encoding="utf-8",
+        )
+        dock = window.jobs_dock
+        assert dock.open_path(job)
+        bar = dock.registration
+        assert bar.isVisible()
+        qtbot.mouseClick(bar.three_check, LEFT)
+        assert bar.count == 3 and bar.here_buttons[2].isVisible()
+        QApplication.processEvents()
+        hint = window.minimumSizeHint()
+        assert hint.width() <= SCREEN.width(), hint.width()
+        assert window.size() == SCREEN
+        for button in (*bar.pick_buttons, *bar.here_buttons, bar.register_button):
+            assert _fully_shown(window, button), button.objectName()
+    finally:
+        harness.close()

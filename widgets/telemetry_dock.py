@@ -424,7 +424,7 @@ class TelemetryDock(QDockWidget):
         self.cross = RotationCross()
         self.cross.colours = self.colours
         self.cross.setObjectName("rotation_cross")
-        self.angle_label = QLabel("—")
+        self.angle_label = QLabel()
         self.angle_label.setObjectName("rotation_angle")
         self.angle_label.setFont(monospace_font(2, bold=True))
         self.angle_label.setAlignment(Qt.AlignmentFlag.AlignHCenter)
@@ -603,7 +603,13 @@ class TelemetryDock(QDockWidget):
         if variable is not None and variable.key == ROTATION_KEY:
             angle = self.recorder.latest(variable.name)
         self.cross.set_angle(angle)
-        self.angle_label.setText("—" if angle is None else localized(f"{angle:+.2f}°"))
+        if angle is not None:
+            self.angle_label.setText(localized(f"{angle:+.2f}°"))
+        else:
+            # "—" only while the rotation is plotted and has no value yet; without it the
+            # cross says so, and a lone dash under it read as a glitch.
+            rotation = variable is not None and variable.key == ROTATION_KEY
+            self.angle_label.setText("—" if rotation else "")
 
     def showEvent(self, event: QShowEvent) -> None:
         super().showEvent(event)

@@ -2070,7 +2070,6 @@ Načíst jako:</translation>
     <name>RegistrationBar</name>
     <message>
         <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
-        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
         <translation>Spodní strana oboustranné desky: úloha zrcadlená v rámci svého rozsahu</translation>
     </message>
     <message>
@@ -2086,8 +2085,13 @@ Načíst jako:</translation>
         <translation>Spodní, zrcadleno v Y</translation>
     </message>
     <message>
-        <source>Register on holes</source>
-        <translation>Zaměřit podle otvorů</translation>
+        <source>Holes</source>
+        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
+        <translation>Otvory</translation>
+    </message>
+    <message>
+        <source>Register on holes: two (or three) reference holes of the job</source>
+        <translation>Zaměření podle otvorů: dva (nebo tři) referenční otvory úlohy</translation>
     </message>
     <message>
         <source>A reference hole: its number in drilling order</source>

@@ -2070,7 +2070,6 @@ Načítať ako:</translation>
     <name>RegistrationBar</name>
     <message>
         <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
-        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
         <translation>Spodná strana obojstrannej dosky: úloha zrkadlená v rámci svojho rozsahu</translation>
     </message>
     <message>
@@ -2086,8 +2085,13 @@ Načítať ako:</translation>
         <translation>Spodná, zrkadlená v Y</translation>
     </message>
     <message>
-        <source>Register on holes</source>
-        <translation>Zamerať podľa otvorov</translation>
+        <source>Holes</source>
+        <extracomment>At most this many reference holes (three: least squares with a residual). The operator wants to click reference ``k`` (0-based) in the preview; -1: stop picking. The job as its file says (what registration transforms; Clear goes back to it). How the loaded job was put on the board (side, registration).</extracomment>
+        <translation>Otvory</translation>
+    </message>
+    <message>
+        <source>Register on holes: two (or three) reference holes of the job</source>
+        <translation>Zameranie podľa otvorov: dva (alebo tri) referenčné otvory úlohy</translation>
     </message>
     <message>
         <source>A reference hole: its number in drilling order</source>

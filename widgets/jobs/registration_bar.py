@@ -16,13 +16,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QHBoxLayout,
-    QPushButton,
     QSpinBox,
+    QToolButton,
+    QVBoxLayout,
     QWidget,
 )
 
@@ -71,8 +72,22 @@ class RegistrationBar(QWidget):
         self._holes: list[Point] = []
         self.measured: list[Point | None] = [None] * MAX_REFERENCES
         t = self.texts = Texts(self)
-        row = QHBoxLayout(self)
-        row.setContentsMargins(0, 0, 0, 0)
+        # Two rows: in one row the three references ran the jobs dock past a 1280 px screen.
+        rows = QVBoxLayout(self)
+        rows.setContentsMargins(0, 0, 0, 0)
+        rows.setSpacing(2)
+        row = QHBoxLayout()
+        references = QHBoxLayout()
+        rows.addLayout(row)
+        rows.addLayout(references)
+        # Short: the row must fit beside the Drill page on a 1280 px screen; the
+        # tooltip says the rest.
+        references.addWidget(
+            t.label(
+                lambda: self.tr("Holes"),
+                lambda: self.tr("Register on holes: two (or three) reference holes of the job"),
+            )
+        )
         self.side_combo = QComboBox()
         self.side_combo.setObjectName("job_side")
         t.set(
@@ -91,10 +106,9 @@ class RegistrationBar(QWidget):
             t.item(self.side_combo, self.side_combo.count() - 1, label)
         self.side_combo.activated.connect(self._side_changed)
         row.addWidget(self.side_combo)
-        row.addWidget(t.label(lambda: self.tr("Register on holes")))
         self.hole_spins: list[QSpinBox] = []
-        self.pick_buttons: list[QPushButton] = []
-        self.here_buttons: list[QPushButton] = []
+        self.pick_buttons: list[QToolButton] = []
+        self.here_buttons: list[QToolButton] = []
         for k in range(MAX_REFERENCES):
             spin = QSpinBox()
             spin.setObjectName(f"job_reference_{k + 1}")
@@ -102,20 +116,21 @@ class RegistrationBar(QWidget):
                 spin.setToolTip, lambda: self.tr("A reference hole: its number in drilling order")
             )
             spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
-            pick = t.button(
+            pick = self._small_button(
                 lambda: self.tr("Pick"), lambda: self.tr("Then click the hole in the preview")
             )
             pick.setObjectName(f"job_reference_pick_{k + 1}")
             pick.setCheckable(True)
             pick.toggled.connect(lambda on, k=k: self._pick(k, on))
-            here = t.button(
+            here = self._small_button(
                 lambda: self.tr("Here"),
                 lambda: self.tr("The tool stands over this hole on the board: take its position"),
             )
             here.setObjectName(f"job_reference_here_{k + 1}")
             here.clicked.connect(lambda _c=False, k=k: self.take(k))
             for widget in (spin, pick, here):
-                row.addWidget(widget)
+                references.addWidget(widget)
+            references.addSpacing(8)
             self.hole_spins.append(spin)
             self.pick_buttons.append(pick)
             self.here_buttons.append(here)
@@ -130,6 +145,8 @@ class RegistrationBar(QWidget):
         )
         self.three_check.toggled.connect(self._count_changed)
         row.addWidget(self.three_check)
+        row.addStretch(1)
+        references.addStretch(1)
         self.register_button = t.button(lambda: self.tr("Register"))
         self.register_button.setObjectName("job_register")
         self.register_button.clicked.connect(self.apply)
@@ -138,9 +155,16 @@ class RegistrationBar(QWidget):
         self.clear_button.clicked.connect(self.clear)
         row.addWidget(self.register_button)
         row.addWidget(self.clear_button)
-        row.addStretch(1)
         self._count_changed()
         self.set_job(None)
+
+    def _small_button(self, make: Maker, tip: Maker) -> QToolButton:
+        """As wide as its text (a push button is 80 px at least): three references in a row."""
+        button = QToolButton()
+        button.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        self.texts.set(button.setText, make)
+        self.texts.set(button.setToolTip, tip)
+        return button
 
     @property
     def count(self) -> int:
