@@ -13,6 +13,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from pytestqt.qtbot import QtBot
 
 from app.jobs.formats.string_art.program import StringArtProgram, build_program
@@ -20,6 +22,7 @@ from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
+from widgets.jobs import dock as dock_module
 from widgets.jobs.dock import JobsDock
 from widgets.jobs.preview import THREAD_ALPHA
 from widgets.jobs.string_art_thread import (
@@ -143,3 +146,20 @@ def test_a_small_job_stays_exact_and_the_wound_counter_is_append_only() -> None:
     assert not counter.advance(1500)  # nothing new: nothing redrawn
     assert counter.advance(10)  # a new run: counted again from the start
     assert int(counter.counts.sum()) == 10
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    text=st.text(alphabet="ab\r\n\x0b\x1c\u2028 ", max_size=80),
+    chunk=st.integers(min_value=1, max_value=9),
+)
+def test_the_source_lines_split_in_pieces_are_the_files_lines(text: str, chunk: int) -> None:
+    """Split in pieces (the GUI thread gets the lock between them), the lines are the same.
+
+    A piece ends only after an LF, so a CR LF pair is never cut in two and a line
+    longer than a piece runs on; whatever the line ends, the result is
+    ``splitlines`` of the whole.
+    """
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(dock_module, "SPLIT_CHUNK_CHARS", chunk)
+        assert dock_module.split_lines(text) == text.splitlines()
