@@ -14,7 +14,7 @@ import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 ROOT = Path(__file__).resolve().parent.parent
@@ -894,6 +894,43 @@ def _poradi_2m(folder: Path, entries: int = 2_000_000, nails: int = 160) -> Path
     return poradi
 
 
+def _open_measuring_holds(app: Any, dock: Any, path: Path, settle_s: float) -> tuple[float, float]:
+    """Open ``path`` in ``dock`` on its loading thread: seconds until loaded, longest GUI hold.
+
+    A 5 ms timer on the GUI thread ticks throughout; the longest gap between
+    its ticks is how long the GUI thread went unserved.  ``settle_s`` more of
+    the event loop after the load takes in the first paint of the preview.
+    """
+    from PySide6.QtCore import QElapsedTimer, QTimer
+
+    clock = QElapsedTimer()
+    gaps: list[float] = []
+    last = [0.0]
+
+    def tick() -> None:
+        now = clock.nsecsElapsed() / 1e9
+        gaps.append(now - last[0])
+        last[0] = now
+
+    timer = QTimer()
+    timer.timeout.connect(tick)
+    timer.start(5)
+    clock.start()
+    dock.open_path(path, background=True)
+    while dock._loading is not None:
+        app.processEvents()
+        time.sleep(0.001)
+    loaded = clock.nsecsElapsed() / 1e9
+    if settle_s > 0:
+        dock.preview.plot_widget.viewport().update()
+        settle = time.perf_counter() + settle_s
+        while time.perf_counter() < settle:
+            app.processEvents()
+            time.sleep(0.001)
+    timer.stop()
+    return loaded, max(gaps, default=0.0)
+
+
 def bench_string_art_2m_dock() -> list[str]:
     """The same 2,000,000-entry poradi.txt opened in a shown jobs dock (string-art winder).
 
@@ -903,7 +940,6 @@ def bench_string_art_2m_dock() -> list[str]:
     """
     import tempfile
 
-    from PySide6.QtCore import QElapsedTimer, QTimer
     from PySide6.QtWidgets import QApplication
 
     from app.jobs.run.runner import JobRunner, JobState
@@ -922,35 +958,10 @@ def bench_string_art_2m_dock() -> list[str]:
             dock.resize(900, 700)
             dock.show()
             app.processEvents()
-            clock = QElapsedTimer()
-            gaps: list[float] = []
-            last = [0.0]
-
-            def tick(
-                clock: QElapsedTimer = clock, gaps: list[float] = gaps, last: list[float] = last
-            ) -> None:
-                now = clock.nsecsElapsed() / 1e9
-                gaps.append(now - last[0])
-                last[0] = now
-
-            timer = QTimer()
-            timer.timeout.connect(tick)
-            timer.start(5)
-            clock.start()
-            dock.open_path(poradi, background=True)
-            while dock._loading is not None:
-                app.processEvents()
-                time.sleep(0.001)
-            ready = clock.nsecsElapsed() / 1e9
-            dock.preview.plot_widget.viewport().update()
-            settle = time.perf_counter() + 0.5
-            while time.perf_counter() < settle:
-                app.processEvents()
-                time.sleep(0.001)
-            timer.stop()
+            ready, hold = _open_measuring_holds(app, dock, poradi, settle_s=0.5)
             if runner.state is not JobState.READY or runner.program is None:
                 raise RuntimeError(dock.messages.toPlainText())
-            results.append((ready, max(gaps, default=0.0), len(runner.program)))
+            results.append((ready, hold, len(runner.program)))
             dock.close()
             dock.deleteLater()
             runner.deleteLater()
@@ -973,7 +984,6 @@ def bench_huge_arcs() -> list[str]:
     """
     import tempfile
 
-    from PySide6.QtCore import QElapsedTimer, QTimer
     from PySide6.QtWidgets import QApplication
 
     from app.jobs.run.runner import JobRunner
@@ -993,30 +1003,10 @@ def bench_huge_arcs() -> list[str]:
             dock = JobsDock(station, runner, confirm=lambda _t: False, throttle_ms=0)
             dock.show()
             app.processEvents()
-            clock = QElapsedTimer()
-            gaps: list[float] = []
-            last = [0.0]
-
-            def tick(
-                clock: QElapsedTimer = clock, gaps: list[float] = gaps, last: list[float] = last
-            ) -> None:
-                now = clock.nsecsElapsed() / 1e9
-                gaps.append(now - last[0])
-                last[0] = now
-
-            timer = QTimer()
-            timer.timeout.connect(tick)
-            timer.start(5)
-            clock.start()
-            dock.open_path(path, background=True)
-            while dock._loading is not None:
-                app.processEvents()
-                time.sleep(0.001)
-            refused = clock.nsecsElapsed() / 1e9
-            timer.stop()
+            refused, hold = _open_measuring_holds(app, dock, path, settle_s=0.0)
             text = dock.messages.toPlainText()
             assert "arc too long" in text and runner.program is None, text
-            results.append((refused, max(gaps, default=0.0)))
+            results.append((refused, hold))
             dock.close()
             dock.deleteLater()
             app.processEvents()
