@@ -304,3 +304,30 @@ def test_garbage_from_the_unit_and_what_it_could_not_parse_are_counted_in_the_st
     usb3.run(0.05)
     assert window.rejected_label.text() == "rejected frames: 2"
     assert window.message_label.text() == "The unit did not understand a command (?;)"
+
+
+def test_send_all_moves_every_axis_in_one_command_and_refuses_all_or_nothing(
+    qtbot: QtBot, usb3: StationHarness, panel: Usb3Panel
+) -> None:
+    """FIDELITY S4-22: the unit's own tool had one Send for all three axes."""
+    type_distance(qtbot, panel.distances[X], "2.5")
+    type_distance(qtbot, panel.distances[Y], "0")
+    type_distance(qtbot, panel.distances[Z], "1.5")
+    mark = len(usb3.written)
+    click(qtbot, panel.send_all_button)
+    # One direction command for all three, then X and Z (Y stays): they start together.
+    assert sent_since(usb3, mark) == b"D+++;X000000000016000;Z000000000009600;"
+    wait_idle(usb3, X)
+    wait_idle(usb3, Z)
+    assert usb3.usb3_emulator.positions == (16000, 0, 9600)
+    assert [a.position for a in usb3.station.model.axes] == [2.5, 0.0, 1.5]
+
+    # Z back by 2 mm would leave the travel below the zero: X's move does not go either.
+    type_distance(qtbot, panel.distances[X], "-1")
+    type_distance(qtbot, panel.distances[Z], "-2")
+    mark = len(usb3.written)
+    click(qtbot, panel.send_all_button)
+    assert panel.send_all() is False
+    usb3.run(0.5)
+    assert sent_since(usb3, mark) == b""
+    assert usb3.usb3_emulator.positions == (16000, 0, 9600)

@@ -2810,6 +2810,14 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
         <translation>Nastavit polohu všech os tam, kde stojí, na 0 (C;)</translation>
     </message>
     <message>
+        <source>Send all</source>
+        <translation>Odeslat vše</translation>
+    </message>
+    <message>
+        <source>Move every axis by its distance, all starting together</source>
+        <translation>Posune každou osu o její vzdálenost, všechny se rozjedou zároveň</translation>
+    </message>
+    <message>
         <source>The unit moves in whole steps; top speed at this step size {0} mm/s</source>
         <translation>Jednotka se pohybuje po celých krocích; nejvyšší rychlost při tomto kroku {0} mm/s</translation>
     </message>

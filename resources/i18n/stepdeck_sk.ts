@@ -2810,6 +2810,14 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
         <translation>Nastaviť polohu všetkých osí tam, kde stoja, na 0 (C;)</translation>
     </message>
     <message>
+        <source>Send all</source>
+        <translation>Odoslať všetko</translation>
+    </message>
+    <message>
+        <source>Move every axis by its distance, all starting together</source>
+        <translation>Posunie každú os o jej vzdialenosť, všetky sa rozbehnú naraz</translation>
+    </message>
+    <message>
         <source>The unit moves in whole steps; top speed at this step size {0} mm/s</source>
         <translation>Jednotka sa pohybuje po celých krokoch; najvyššia rýchlosť pri tomto kroku {0} mm/s</translation>
     </message>

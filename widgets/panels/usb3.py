@@ -1,8 +1,9 @@
 """The three-axis unit's page, as its own C# tool had it: move by millimetres per axis.
 
 Per axis a signed distance, the step size and the thread (what the unit
-needs to turn millimetres into steps), and Send; one "Zero all" button zeroes
-all positions.  Because the unit moves in whole steps, the page shows the
+needs to turn millimetres into steps), and Send; "Send all" moves every axis
+by its distance in one command, as the tool's one Send did, and "Zero all"
+zeroes all positions.  Because the unit moves in whole steps, the page shows the
 distance that will really be moved next to the one typed.
 """
 
@@ -98,6 +99,15 @@ class Usb3Panel(QWidget):
             lambda: self.tr("Set every axis' position to 0 where it stands (C;)"),
         )
         self.zero_button.clicked.connect(self.zero_all)
+        # The unit's own tool had one Send for the three axes (FIDELITY S4-22): they start
+        # together; the per-axis Sends stay for moving one alone.
+        self.send_all_button = t.button(
+            lambda: self.tr("Send all"),
+            lambda: self.tr("Move every axis by its distance, all starting together"),
+        )
+        self.send_all_button.clicked.connect(self.send_all)
+        self.gate.bind(self.send_all_button, *self.distances)
+        grid.addWidget(self.send_all_button, len(self.distances) + 1, 4)
         grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
         grid.addWidget(self.note, len(self.distances) + 2, 0, 1, 6)
         grid.setColumnStretch(6, 1)
@@ -118,6 +128,14 @@ class Usb3Panel(QWidget):
             return False
         session = self.session
         return session is not None and session.move_relative(axis, distance)
+
+    def send_all(self) -> bool:
+        """Every axis by its distance in one command; False when refused (nothing moves)."""
+        if self.gate.refusal(*self.distances) is not None:
+            return False
+        distances = [field.value() or 0.0 for field in self.distances]
+        session = self.session
+        return session is not None and session.move_relative_axes(distances)
 
     def zero_all(self) -> None:
         if self.session is not None:

@@ -150,6 +150,27 @@ class Usb3Session(MachineSession):
         self._send(*move_commands(counts))
         return True
 
+    def move_relative_axes(self, deltas: Sequence[float]) -> bool:
+        """Every axis by its ``deltas`` mm in one command, as the unit's own tool's one Send.
+
+        All or nothing: an axis the gate refuses sends none of them, so the
+        axes never end up half moved.  An axis of less than one step stays.
+        """
+        if self._refuse_motion():
+            return False
+        deltas = list(deltas)[: min(3, self.axis_count)]
+        for axis, delta in enumerate(deltas):
+            if delta and self.gate.refuse(self.gate.refuse_relative(axis, delta, None)):
+                return False
+        counts = [0] * 3
+        for axis, delta in enumerate(deltas):
+            counts[axis] = nearest_reachable_count(delta, self.step_sizes[axis], self.threads[axis])
+        if not any(counts):
+            self.model.message.emit("Nothing to move: every distance is less than one step")
+            return False
+        self._send(*move_commands(counts))
+        return True
+
     def set_jog(self, directions: Sequence[int]) -> None:
         wanted = [max(-1, min(1, int(d))) for d in directions][: self.axis_count]
         wanted += [0] * (self.axis_count - len(wanted))
