@@ -29,6 +29,7 @@ import html
 import threading
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QObject, Qt, Signal
 from PySide6.QtWidgets import (
@@ -65,9 +66,11 @@ from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview,
 from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
-from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
 from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
+
+if TYPE_CHECKING:  # the dialog (and scikit-image behind it) loads when first opened
+    from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
 
 MESSAGE_LINES = 200
 #: A refused file's further refused lines listed under the first one.
@@ -604,6 +607,8 @@ class JobsDock(QDockWidget):
         program = self.runner.program
         board = program.job.params if isinstance(program, StringArtProgram) else None
         reach = next((a.travel for a in self.station.profile.axes if a.name == "X"), None)
+        from widgets.jobs.string_art_generator_dialog import StringArtGeneratorDialog
+
         dialog = StringArtGeneratorDialog(self.open_path, self, board=board, reach_mm=reach)
         dialog.finished.connect(self._generator_closed)
         self.generator_dialog = dialog

@@ -47,7 +47,6 @@ from gerbonara.graphic_objects import Arc, Flash, Line
 from gerbonara.utils import MM, Inch
 
 from app.jobs.formats.excellon.bits import plan_bits
-from app.jobs.formats.excellon.hole_order import order_holes
 from app.jobs.names import quoted, shown
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
 from app.jobs.reading import read_job_text
@@ -603,6 +602,10 @@ def plan_drilling(
         {name: len(holes) for name, holes in holes_by_tool.items()},
         smallest_first=smallest_first,
     )
+    # Imported here, not with the module: the optimiser brings numba and scipy (about
+    # 1.4 s), which the window does not need until a drill file is read (issue #23, launch).
+    from app.jobs.formats.excellon.hole_order import order_holes
+
     plans: list[ToolPlan] = []
     here = start
     for group in bits.groups:
