@@ -9,6 +9,8 @@ are delivered directly, so tests stay synchronous and deterministic.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from PySide6.QtCore import QObject, Signal
 
 from protocol.transport.base import Transport
@@ -19,18 +21,34 @@ class Link(QObject):
     disconnected = Signal(object)  # str reason, or None for an orderly close
     dataReceived = Signal(bytes)
     dataSent = Signal(bytes)  # exactly what was handed to the transport (for the TX log)
+    #: What the tap made of received bytes (see :meth:`set_tap`), instead of ``dataReceived``.
+    received = Signal(object)
 
     def __init__(self, transport: Transport, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.transport = transport
+        self._tap: Callable[[bytes], object] | None = None
         transport.set_listener(self)
+
+    def set_tap(self, tap: Callable[[bytes], object] | None) -> None:
+        """Run ``tap`` on received bytes where they arrive (the transport's reader thread).
+
+        A session whose loop must not wait for the GUI thread (G-code streaming:
+        the next line goes when an ``ok`` comes) does its part there; what
+        ``tap`` returns reaches the GUI thread as ``received``.
+        """
+        self._tap = tap
 
     # TransportListener, possibly on a foreign thread: only emit here.
     def connection_made(self) -> None:
         self.connected.emit()
 
     def data_received(self, data: bytes) -> None:
-        self.dataReceived.emit(data)
+        tap = self._tap
+        if tap is not None:
+            self.received.emit(tap(data))
+        else:
+            self.dataReceived.emit(data)
 
     def connection_lost(self, reason: str | None) -> None:
         self.disconnected.emit(reason)

@@ -23,11 +23,13 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import count
+from typing import Literal
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.gcode.feeder import STALE, Answer, BannerSeen, LineFeeder, Received
 from app.machines.gcode.line_targets import line_motion
 from app.machines.motion_gate import Refusal
 from app.machines.session import MachineSession
@@ -63,8 +65,6 @@ JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
-#: After a soft reset, answers are dropped and lines held until the banner, this long at most.
-BANNER_AFTER_RESET_S = 1.0
 #: Reports in a row, at least this far apart, that show every sent byte consumed and the
 #: machine idle with an empty planner while lines are unanswered: their answers were lost.
 LOST_ANSWER_REPORTS = 2
@@ -132,6 +132,10 @@ class GcodeSession(MachineSession):
         self.decoder = make_decoder()
         mode = StreamMode.COUNTING if settings.streaming == "counting" else StreamMode.PING_PONG
         self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
+        #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
+        self.feeder: LineFeeder[SentLine] = LineFeeder(
+            self.streamer, self.decoder, clock, link.write
+        )
         self.status: StatusReport | None = None
         self.errors = 0
         self._serials = count(1)
@@ -153,8 +157,6 @@ class GcodeSession(MachineSession):
         #: The stop under way ends a jog: no "lines not run" message for it.
         self._quiet_stop = False
         self._reset_requested_at: float | None = None
-        #: A soft reset was sent at this time and its banner has not come yet.
-        self._reset_sent_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
         #: Since when (station clock) reports show the board done with everything sent, while
@@ -168,7 +170,8 @@ class GcodeSession(MachineSession):
         self._timer.timeout.connect(self.tick)
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
-        link.dataReceived.connect(self._on_data)
+        link.received.connect(self._on_received)
+        link.set_tap(self.feeder.receive)
 
     # --- state the widgets and the runner read ---------------------------------
 
@@ -247,7 +250,8 @@ class GcodeSession(MachineSession):
             return False
         sent = SentLine(next(self._serials), line, origin, op_index)
         try:
-            self.streamer.queue(raw, sent)
+            with self.feeder.lock:
+                self.streamer.queue(raw, sent)
         except ValueError as exc:
             self.model.message.emit(f"Not sent: {line!r} ({exc})")
             return False
@@ -269,11 +273,21 @@ class GcodeSession(MachineSession):
         """Lines sent and not yet answered."""
         return self.streamer.in_flight
 
+    @property
+    def _reset_sent_at(self) -> float | None:
+        """When a soft reset was sent whose banner has not come yet (the feeder's)."""
+        return self.feeder.reset_sent_at
+
+    @_reset_sent_at.setter
+    def _reset_sent_at(self, value: float | None) -> None:
+        self.feeder.reset_sent_at = value
+
     def _pump(self) -> None:
-        if self._awaiting_banner():
-            return  # bytes sent while the board restarts are lost by the board itself
-        for raw, sent in self.streamer.sendable():
-            self.link.write(raw)
+        # Bytes sent while the board restarts are lost by the board itself: the feeder waits.
+        self._tell_written(self.feeder.pump())
+
+    def _tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
+        for raw, sent in written:
             self.frameSent.emit(sent.text, raw)
             self.lineSent.emit(sent)
 
@@ -304,10 +318,7 @@ class GcodeSession(MachineSession):
         self._realtime(CYCLE_START, "~ (resume)")
 
     def _awaiting_banner(self) -> bool:
-        sent = self._reset_sent_at
-        if sent is not None and self.clock.now() - sent > BANNER_AFTER_RESET_S:
-            self._reset_sent_at = sent = None  # a board that says nothing when it resets
-        return sent is not None
+        return self.feeder.awaiting_banner()
 
     def soft_reset(self) -> list[SentLine]:
         """Reset the device: its buffers are emptied, so nothing unanswered will be answered.
@@ -315,14 +326,19 @@ class GcodeSession(MachineSession):
         GRBL may still answer a line it was parsing (a stray ``ok`` after the reset):
         until its banner, answers belong to no line and new lines wait.
         """
-        self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
-        if self.link.is_open:
-            self._reset_sent_at = self.clock.now()
-        return self._forget_stream()
+        with self.feeder.lock:  # no line goes between the reset and its note
+            self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+            if self.link.is_open:
+                self._reset_sent_at = self.clock.now()
+            return self._forget_stream()
 
     def discard_queued(self) -> list[SentLine]:
-        """Drop lines not yet sent (the ones the device has stay and will be answered)."""
-        return self.streamer.discard_queued()
+        """Drop lines not yet sent (the ones the device has stay and will be answered).
+
+        Under the feeder's lock: once this returns the reader thread sends none of them.
+        """
+        with self.feeder.lock:
+            return self.streamer.discard_queued()
 
     # --- intents ------------------------------------------------------------------
 
@@ -341,8 +357,9 @@ class GcodeSession(MachineSession):
             self._quiet_stop = self.model.jog_lock_reason is not None
         if not self.link.is_open:
             return
-        self._dropped_by_stop = len(self.streamer.discard_queued())
-        self.feed_hold()
+        with self.feeder.lock:  # nothing more is fed from here on
+            self._dropped_by_stop = len(self.streamer.discard_queued())
+            self.feed_hold()
         self._reset_requested_at = self.clock.now()
         self.query_status()
 
@@ -524,15 +541,18 @@ class GcodeSession(MachineSession):
 
     def _forget_stream(self) -> list[SentLine]:
         self._relative = False  # GRBL's power-on and reset mode is G90
-        lost = self.streamer.clear()
+        with self.feeder.lock:
+            lost = self.streamer.clear()
         self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
         return lost
 
     def _on_connected(self) -> None:
-        self.decoder.reset()
-        self.streamer.clear()
+        with self.feeder.lock:
+            self.decoder.reset()
+            self.streamer.clear()
+            self.feeder.halted = False
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
@@ -551,7 +571,8 @@ class GcodeSession(MachineSession):
         self._jog_target = None
         self._jog_cancelling = False
         self._quiet_stop = False
-        lost = self.streamer.clear()
+        with self.feeder.lock:
+            lost = self.streamer.clear()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, moving=False, velocity=0.0)
         if reason is None:
@@ -568,11 +589,12 @@ class GcodeSession(MachineSession):
 
     def receive_injected(self, data: bytes) -> None:
         """Bytes a developer injects as the device's (developer pane): handled as if read."""
-        self._on_data(data)
+        self._on_received(self.feeder.receive(data))
 
-    def _on_data(self, data: bytes) -> None:
-        self._heard_unrecognised(data)  # kept until the device answers: whose words?
-        for reply in self.decoder.feed(data):
+    def _on_received(self, received: Received[SentLine]) -> None:
+        """A read from the device, decoded and matched on the reader thread (the feeder)."""
+        self._heard_unrecognised(received.data)  # kept until the device answers: whose words?
+        for reply, verdict in received.replies:
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
@@ -580,12 +602,11 @@ class GcodeSession(MachineSession):
             self._last_heard = self.clock.now()
             self._device_answered()
             self.frameReceived.emit(reply, reply_bytes(reply))
-            if isinstance(reply, Ok | ErrorReply) and self._awaiting_banner():
+            if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
-            if isinstance(reply, Ok):
-                self._answered(None)
-            elif isinstance(reply, ErrorReply):
-                self._answered(reply)
+            if isinstance(reply, Ok | ErrorReply):
+                entry = verdict.entry if isinstance(verdict, Answer) else None
+                self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
                 self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
@@ -595,27 +616,39 @@ class GcodeSession(MachineSession):
                         reply.code, reply.meaning
                     )
                 )
-
+                self._tell_written(self.feeder.release())
             elif isinstance(reply, Banner):
-                ours, self._reset_sent_at = self._reset_sent_at is not None, None
+                ours = isinstance(verdict, BannerSeen) and verdict.ours
                 self.replyText.emit(reply.text)
                 self.query_status()  # a board that just started: where is it, how big its planner
                 if ours:
                     self._pump()  # our reset's banner: what waited for it goes now
                     continue
                 lost = self._forget_stream()
+                if isinstance(verdict, BannerSeen):
+                    lost = verdict.lost + lost  # the feeder forgot them when it read the banner
                 if lost:
                     self.model.message.emit(
                         f"The device reset: {len(lost)} unanswered line(s) were not run"
                     )
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
+        self._tell_written(received.written)
 
-    def _answered(self, error: ErrorReply | None) -> None:
+    def _answered(
+        self,
+        error: ErrorReply | None,
+        entry: tuple[bytes, SentLine] | Literal["ask"] | None = "ask",
+    ) -> None:
+        """The reply to the oldest line: ``entry`` as the feeder matched it ("ask": match now)."""
         self._stall_told = False
-        entry = self.streamer.acknowledge()
-        if entry is None:
+        if entry == "ask":
+            with self.feeder.lock:
+                entry = self.streamer.acknowledge()
+        if entry is None or isinstance(entry, str):
             self.model.message.emit("A reply arrived for no line (ignored)")
+            if error is not None:
+                self._tell_written(self.feeder.release())
             return
         _, sent = entry
         self._seen_idle = False
@@ -636,6 +669,7 @@ class GcodeSession(MachineSession):
             if sent.origin in ("console", "intent"):
                 self.replyText.emit(f"ok  ← {sent.text}")
             self.lineAcknowledged.emit(sent)
+            self._pump()
         else:
             self.errors += 1
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
@@ -647,7 +681,8 @@ class GcodeSession(MachineSession):
                     + _hint(sent.text, error.code)
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
-        self._pump()
+            # Seen and handled (a failed job has taken back its queue): sending may go on.
+            self._tell_written(self.feeder.release())
 
     def _check_lost_answers(self, report: StatusReport, planner_empty: bool) -> None:
         """An ``ok`` lost on the wire would stall the stream forever: notice it, and say so.
