@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 from typing import Generic, TypeVar
 
 from protocol.clock import Clock
-from protocol.gcode.codec import AlarmReply, Banner, ErrorReply, Ok, Rejected
+from protocol.gcode.codec import AlarmReply, Banner, ErrorReply, Ok, Rejected, StatusReport
 from protocol.gcode.streaming import LineStreamer
 
 T = TypeVar("T")
@@ -69,7 +69,8 @@ class Received(Generic[T]):
     """One read from the transport, as the GUI thread gets it."""
 
     data: bytes
-    #: The decoded replies in order, each with its verdict (None for reports and the rest).
+    #: The decoded replies in order, each with its verdict: :class:`Answer`, :data:`STALE`,
+    #: :class:`BannerSeen`, a status report's unanswered lines, or None.
     replies: list[tuple[object, object]] = field(default_factory=list)
     #: The lines written after these replies freed room, in order.
     written: list[tuple[bytes, T]] = field(default_factory=list)
@@ -133,6 +134,10 @@ class LineFeeder(Generic[T]):
                         verdict = Answer(self.streamer.acknowledge())
                         if isinstance(reply, ErrorReply):
                             self.halted = True
+                elif isinstance(reply, StatusReport):
+                    # The lines unanswered as the report is read: those written later
+                    # went after it, so it says nothing about them (lost answers).
+                    verdict = self.streamer.unanswered_tags()
                 elif isinstance(reply, AlarmReply):
                     self.halted = True
                 elif isinstance(reply, Banner):

@@ -163,6 +163,8 @@ class GcodeSession(MachineSession):
         #: lines are unanswered, and how many reports in a row have.
         self._drained_since: float | None = None
         self._drained_reports = 0
+        #: The lines unanswered through every drained report so far (see _check_lost_answers).
+        self._lost_candidates: list[SentLine] = []
         self._stall_told = False
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -608,7 +610,7 @@ class GcodeSession(MachineSession):
                 entry = verdict.entry if isinstance(verdict, Answer) else None
                 self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
-                self._apply_status(reply)
+                self._apply_status(reply, verdict if isinstance(verdict, list) else None)
             elif isinstance(reply, AlarmReply):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(
@@ -684,7 +686,12 @@ class GcodeSession(MachineSession):
             # Seen and handled (a failed job has taken back its queue): sending may go on.
             self._tell_written(self.feeder.release())
 
-    def _check_lost_answers(self, report: StatusReport, planner_empty: bool) -> None:
+    def _check_lost_answers(
+        self,
+        report: StatusReport,
+        planner_empty: bool,
+        unanswered: list[SentLine] | None = None,
+    ) -> None:
         """An ``ok`` lost on the wire would stall the stream forever: notice it, and say so.
 
         GRBL answers every line once it has parsed it, so when its reports show
@@ -694,11 +701,19 @@ class GcodeSession(MachineSession):
         as answered.  A line that pauses the board (a dwell, a program stop) is
         still waited for; a board that reports no ``Bf:`` cannot show this, and
         the operator is told the stream waits.
+
+        ``unanswered``: the lines unanswered when the report was read (the feeder's
+        snapshot on the reader thread; lines written since went after the report).
+        Only lines unanswered through every report of the run count as lost.
         """
-        unanswered = self.streamer.unanswered_tags()
+        if unanswered is None:
+            unanswered = self.streamer.unanswered_tags()
+        if self._drained_since is not None:
+            unanswered = [sent for sent in unanswered if sent in self._lost_candidates]
         if not unanswered or report.state != "Idle":
             self._drained_since, self._drained_reports = None, 0
             return
+        self._lost_candidates = unanswered
         now = self.clock.now()
         drained = (
             report.rx_free is not None
@@ -722,8 +737,13 @@ class GcodeSession(MachineSession):
                 f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
                 "taken and run every line sent, so they count as answered"
             )
-            for _ in unanswered:
-                self._answered(None)
+            for sent in unanswered:
+                with self.feeder.lock:
+                    tags = self.streamer.unanswered_tags()
+                    if not tags or tags[0] != sent:
+                        break  # answered meanwhile after all
+                    entry = self.streamer.acknowledge()
+                self._answered(None, entry)
         elif not drained and waited >= SILENCE_S and not self._stall_told:
             self._stall_told = True
             self.model.message.emit(
@@ -731,7 +751,7 @@ class GcodeSession(MachineSession):
                 "waiting for its answer (without Bf: in its reports it cannot show it has them)"
             )
 
-    def _apply_status(self, report: StatusReport) -> None:
+    def _apply_status(self, report: StatusReport, unanswered: list[SentLine] | None = None) -> None:
         self._status_asked_at = None
         self.status = report
         if self._reset_requested_at is not None:
@@ -765,7 +785,7 @@ class GcodeSession(MachineSession):
         )
         if report.state == "Idle" and self.streamer.idle and planner_empty:
             self._seen_idle = True
-        self._check_lost_answers(report, planner_empty)
+        self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
 
