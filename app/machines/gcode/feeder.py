@@ -74,6 +74,9 @@ class Received(Generic[T]):
     replies: list[tuple[object, object]] = field(default_factory=list)
     #: The lines written after these replies freed room, in order.
     written: list[tuple[bytes, T]] = field(default_factory=list)
+    #: What went wrong reading these bytes (a bug, not the device's words): sending is held,
+    #: as after an error, until the GUI thread has stopped the machine.
+    failure: Exception | None = None
 
 
 class LineFeeder(Generic[T]):
@@ -93,8 +96,20 @@ class LineFeeder(Generic[T]):
         self._write = write
         #: A soft reset was sent at this time and its banner has not come yet.
         self.reset_sent_at: float | None = None
-        #: An error or alarm the GUI thread has not seen yet: nothing is sent meanwhile.
-        self.halted = False
+        #: Errors and alarms read here that the GUI thread has not seen yet: nothing is
+        #: sent while any is.  A count, not a flag: the GUI thread having seen the first
+        #: must not let lines go past a second it has not seen.
+        self.unseen = 0
+
+    @property
+    def halted(self) -> bool:
+        """An error or alarm not yet seen by the GUI thread holds the sending."""
+        return self.unseen > 0
+
+    def reset_halt(self) -> None:
+        """A fresh link: nothing from before it is waiting to be seen."""
+        with self.lock:
+            self.unseen = 0
 
     def awaiting_banner(self) -> bool:
         with self.lock:
@@ -116,35 +131,45 @@ class LineFeeder(Generic[T]):
     def release(self) -> list[tuple[bytes, T]]:
         """The GUI thread has seen the error or alarm: sending may go on (what it queued)."""
         with self.lock:
-            self.halted = False
+            self.unseen = max(0, self.unseen - 1)
             return self.pump()
 
     def receive(self, data: bytes) -> Received[T]:
         """Decode ``data``, match each answer to its line, and send what now fits."""
         received: Received[T] = Received(data)
         with self.lock:
-            for reply in self.decoder.feed(data):  # type: ignore[attr-defined]
-                verdict: object = None
-                if isinstance(reply, Rejected):
-                    pass
-                elif isinstance(reply, Ok | ErrorReply):
-                    if self.awaiting_banner():
-                        verdict = STALE  # an answer from before the reset: its line is gone
-                    else:
-                        verdict = Answer(self.streamer.acknowledge())
-                        if isinstance(reply, ErrorReply):
-                            self.halted = True
-                elif isinstance(reply, StatusReport):
-                    # The lines unanswered as the report is read: those written later
-                    # went after it, so it says nothing about them (lost answers).
-                    verdict = self.streamer.unanswered_tags()
-                elif isinstance(reply, AlarmReply):
-                    self.halted = True
-                elif isinstance(reply, Banner):
-                    ours = self.reset_sent_at is not None
-                    self.reset_sent_at = None
-                    lost = [] if ours else self.streamer.clear()
-                    verdict = BannerSeen(ours, lost)
-                received.replies.append((reply, verdict))
-            received.written = self.pump()
+            try:
+                self._match(data, received)
+                received.written = self.pump()
+            except Exception as exc:  # raised here, it would end the reader thread
+                # The link would go silent for good (no more reads, never "connected"),
+                # and what was matched so far may be wrong: hold, and let the GUI stop.
+                received.failure = exc
+                self.unseen += 1
         return received
+
+    def _match(self, data: bytes, received: Received[T]) -> None:
+        """Decode ``data`` into ``received``: each reply with its verdict (under the lock)."""
+        for reply in self.decoder.feed(data):  # type: ignore[attr-defined]
+            verdict: object = None
+            if isinstance(reply, Rejected):
+                pass
+            elif isinstance(reply, Ok | ErrorReply):
+                if self.awaiting_banner():
+                    verdict = STALE  # an answer from before the reset: its line is gone
+                else:
+                    verdict = Answer(self.streamer.acknowledge())
+                    if isinstance(reply, ErrorReply):
+                        self.unseen += 1
+            elif isinstance(reply, StatusReport):
+                # The lines unanswered as the report is read: those written later
+                # went after it, so it says nothing about them (lost answers).
+                verdict = self.streamer.unanswered_tags()
+            elif isinstance(reply, AlarmReply):
+                self.unseen += 1
+            elif isinstance(reply, Banner):
+                ours = self.reset_sent_at is not None
+                self.reset_sent_at = None
+                lost = [] if ours else self.streamer.clear()
+                verdict = BannerSeen(ours, lost)
+            received.replies.append((reply, verdict))

@@ -18,6 +18,7 @@ without losing its position.
 
 from __future__ import annotations
 
+import logging
 import math
 import re
 from collections.abc import Sequence
@@ -52,6 +53,8 @@ from protocol.gcode.codec import (
     make_decoder,
 )
 from protocol.gcode.streaming import LineStreamer, StreamMode
+
+_log = logging.getLogger(__name__)
 
 #: No reply to status queries for this long: the device is gone (the station reconnects).
 SILENCE_S = 2.0
@@ -551,10 +554,12 @@ class GcodeSession(MachineSession):
         return lost
 
     def _on_connected(self) -> None:
+        # The decoder is not reset here: the reader thread may already have decoded the
+        # board's first words (a banner, a status) before this runs, and a reset now
+        # would cut a reply in half.  It starts fresh, and is reset when a link ends.
         with self.feeder.lock:
-            self.decoder.reset()
             self.streamer.clear()
-            self.feeder.halted = False
+            self.feeder.reset_halt()
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
@@ -575,6 +580,9 @@ class GcodeSession(MachineSession):
         self._quiet_stop = False
         with self.feeder.lock:
             lost = self.streamer.clear()
+            # No reader runs until the station opens the link again (after this): a reply
+            # cut by the loss is not glued to the next link's first bytes.
+            self.decoder.reset()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, moving=False, velocity=0.0)
         if reason is None:
@@ -595,6 +603,9 @@ class GcodeSession(MachineSession):
 
     def _on_received(self, received: Received[SentLine]) -> None:
         """A read from the device, decoded and matched on the reader thread (the feeder)."""
+        if received.failure is not None:
+            self._reading_failed(received.failure)
+            return
         self._heard_unrecognised(received.data)  # kept until the device answers: whose words?
         for reply, verdict in received.replies:
             if isinstance(reply, Rejected):
@@ -636,6 +647,16 @@ class GcodeSession(MachineSession):
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
         self._tell_written(received.written)
+
+    def _reading_failed(self, failure: Exception) -> None:
+        """A bug in matching replies to lines: the count may be wrong, so the machine stops.
+
+        The feeder holds the sending meanwhile; the stop takes back what is queued.
+        """
+        _log.error("G-code replies could not be read", exc_info=failure)
+        self.model.message.emit(f"The device's replies could not be read ({failure}): stopping")
+        self.stop_all()
+        self._tell_written(self.feeder.release())
 
     def _answered(
         self,
