@@ -44,9 +44,14 @@ from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
 
-#: Lines handed to the session beyond those it can send at once: enough that the device's
-#: buffer never runs dry between replies, few enough that a pause or an error strands little.
-LINES_AHEAD = 24
+#: Lines handed to the session beyond those it can send at once.  The session's feeder sends
+#: them from the transport's reader thread as ``ok``\ s come, so they are what keeps the wire
+#: full while the GUI thread is busy: 200 short lines are about 0.3 s at 115 200 baud.  None of
+#: them is on the wire yet, so a pause or an abort takes them all back at once.
+LINES_AHEAD = 200
+#: The queue is topped up only once it has fallen below this: a refill every few dozen
+#: answers instead of a little work on every one.
+REFILL_BELOW = LINES_AHEAD - 40
 #: Position agreement (mm) for "the machine stands where the last answered line ends".
 AT_POSITION_MM = 0.01
 
@@ -215,6 +220,8 @@ class GcodeStream:
         completed here when nothing is pending.
         """
         program = self.program
+        if most is None and session.queued >= REFILL_BELOW:
+            return None  # enough waits in the session's queue
         sent = 0
         while self.next_index < len(program) and session.queued < LINES_AHEAD:
             if most is not None and sent >= most:

@@ -18,16 +18,19 @@ without losing its position.
 
 from __future__ import annotations
 
+import logging
 import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import count
+from typing import Literal
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.gcode.feeder import STALE, Answer, BannerSeen, LineFeeder, Received
 from app.machines.gcode.line_targets import line_motion
 from app.machines.motion_gate import Refusal
 from app.machines.session import MachineSession
@@ -51,6 +54,8 @@ from protocol.gcode.codec import (
 )
 from protocol.gcode.streaming import LineStreamer, StreamMode
 
+_log = logging.getLogger(__name__)
+
 #: No reply to status queries for this long: the device is gone (the station reconnects).
 SILENCE_S = 2.0
 #: Status queries unanswered before the link is shown stale (amber), and the least time.
@@ -63,8 +68,6 @@ JOG_STEP_S = 0.1
 JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
-#: After a soft reset, answers are dropped and lines held until the banner, this long at most.
-BANNER_AFTER_RESET_S = 1.0
 #: Reports in a row, at least this far apart, that show every sent byte consumed and the
 #: machine idle with an empty planner while lines are unanswered: their answers were lost.
 LOST_ANSWER_REPORTS = 2
@@ -132,6 +135,10 @@ class GcodeSession(MachineSession):
         self.decoder = make_decoder()
         mode = StreamMode.COUNTING if settings.streaming == "counting" else StreamMode.PING_PONG
         self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
+        #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
+        self.feeder: LineFeeder[SentLine] = LineFeeder(
+            self.streamer, self.decoder, clock, link.write
+        )
         self.status: StatusReport | None = None
         self.errors = 0
         self._serials = count(1)
@@ -153,14 +160,14 @@ class GcodeSession(MachineSession):
         #: The stop under way ends a jog: no "lines not run" message for it.
         self._quiet_stop = False
         self._reset_requested_at: float | None = None
-        #: A soft reset was sent at this time and its banner has not come yet.
-        self._reset_sent_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
         #: Since when (station clock) reports show the board done with everything sent, while
         #: lines are unanswered, and how many reports in a row have.
         self._drained_since: float | None = None
         self._drained_reports = 0
+        #: The lines unanswered through every drained report so far (see _check_lost_answers).
+        self._lost_candidates: list[SentLine] = []
         self._stall_told = False
         self._autotick = autotick
         self._timer = QTimer(self)
@@ -168,7 +175,8 @@ class GcodeSession(MachineSession):
         self._timer.timeout.connect(self.tick)
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
-        link.dataReceived.connect(self._on_data)
+        link.received.connect(self._on_received)
+        link.set_tap(self.feeder.receive)
 
     # --- state the widgets and the runner read ---------------------------------
 
@@ -247,7 +255,8 @@ class GcodeSession(MachineSession):
             return False
         sent = SentLine(next(self._serials), line, origin, op_index)
         try:
-            self.streamer.queue(raw, sent)
+            with self.feeder.lock:
+                self.streamer.queue(raw, sent)
         except ValueError as exc:
             self.model.message.emit(f"Not sent: {line!r} ({exc})")
             return False
@@ -269,11 +278,21 @@ class GcodeSession(MachineSession):
         """Lines sent and not yet answered."""
         return self.streamer.in_flight
 
+    @property
+    def _reset_sent_at(self) -> float | None:
+        """When a soft reset was sent whose banner has not come yet (the feeder's)."""
+        return self.feeder.reset_sent_at
+
+    @_reset_sent_at.setter
+    def _reset_sent_at(self, value: float | None) -> None:
+        self.feeder.reset_sent_at = value
+
     def _pump(self) -> None:
-        if self._awaiting_banner():
-            return  # bytes sent while the board restarts are lost by the board itself
-        for raw, sent in self.streamer.sendable():
-            self.link.write(raw)
+        # Bytes sent while the board restarts are lost by the board itself: the feeder waits.
+        self._tell_written(self.feeder.pump())
+
+    def _tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
+        for raw, sent in written:
             self.frameSent.emit(sent.text, raw)
             self.lineSent.emit(sent)
 
@@ -304,10 +323,7 @@ class GcodeSession(MachineSession):
         self._realtime(CYCLE_START, "~ (resume)")
 
     def _awaiting_banner(self) -> bool:
-        sent = self._reset_sent_at
-        if sent is not None and self.clock.now() - sent > BANNER_AFTER_RESET_S:
-            self._reset_sent_at = sent = None  # a board that says nothing when it resets
-        return sent is not None
+        return self.feeder.awaiting_banner()
 
     def soft_reset(self) -> list[SentLine]:
         """Reset the device: its buffers are emptied, so nothing unanswered will be answered.
@@ -315,14 +331,19 @@ class GcodeSession(MachineSession):
         GRBL may still answer a line it was parsing (a stray ``ok`` after the reset):
         until its banner, answers belong to no line and new lines wait.
         """
-        self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
-        if self.link.is_open:
-            self._reset_sent_at = self.clock.now()
-        return self._forget_stream()
+        with self.feeder.lock:  # no line goes between the reset and its note
+            self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+            if self.link.is_open:
+                self._reset_sent_at = self.clock.now()
+            return self._forget_stream()
 
     def discard_queued(self) -> list[SentLine]:
-        """Drop lines not yet sent (the ones the device has stay and will be answered)."""
-        return self.streamer.discard_queued()
+        """Drop lines not yet sent (the ones the device has stay and will be answered).
+
+        Under the feeder's lock: once this returns the reader thread sends none of them.
+        """
+        with self.feeder.lock:
+            return self.streamer.discard_queued()
 
     # --- intents ------------------------------------------------------------------
 
@@ -341,8 +362,9 @@ class GcodeSession(MachineSession):
             self._quiet_stop = self.model.jog_lock_reason is not None
         if not self.link.is_open:
             return
-        self._dropped_by_stop = len(self.streamer.discard_queued())
-        self.feed_hold()
+        with self.feeder.lock:  # nothing more is fed from here on
+            self._dropped_by_stop = len(self.streamer.discard_queued())
+            self.feed_hold()
         self._reset_requested_at = self.clock.now()
         self.query_status()
 
@@ -524,15 +546,20 @@ class GcodeSession(MachineSession):
 
     def _forget_stream(self) -> list[SentLine]:
         self._relative = False  # GRBL's power-on and reset mode is G90
-        lost = self.streamer.clear()
+        with self.feeder.lock:
+            lost = self.streamer.clear()
         self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
         return lost
 
     def _on_connected(self) -> None:
-        self.decoder.reset()
-        self.streamer.clear()
+        # The decoder is not reset here: the reader thread may already have decoded the
+        # board's first words (a banner, a status) before this runs, and a reset now
+        # would cut a reply in half.  It starts fresh, and is reset when a link ends.
+        with self.feeder.lock:
+            self.streamer.clear()
+            self.feeder.reset_halt()
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
@@ -551,7 +578,11 @@ class GcodeSession(MachineSession):
         self._jog_target = None
         self._jog_cancelling = False
         self._quiet_stop = False
-        lost = self.streamer.clear()
+        with self.feeder.lock:
+            lost = self.streamer.clear()
+            # No reader runs until the station opens the link again (after this): a reply
+            # cut by the loss is not glued to the next link's first bytes.
+            self.decoder.reset()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, moving=False, velocity=0.0)
         if reason is None:
@@ -568,11 +599,15 @@ class GcodeSession(MachineSession):
 
     def receive_injected(self, data: bytes) -> None:
         """Bytes a developer injects as the device's (developer pane): handled as if read."""
-        self._on_data(data)
+        self._on_received(self.feeder.receive(data))
 
-    def _on_data(self, data: bytes) -> None:
-        self._heard_unrecognised(data)  # kept until the device answers: whose words?
-        for reply in self.decoder.feed(data):
+    def _on_received(self, received: Received[SentLine]) -> None:
+        """A read from the device, decoded and matched on the reader thread (the feeder)."""
+        if received.failure is not None:
+            self._reading_failed(received.failure)
+            return
+        self._heard_unrecognised(received.data)  # kept until the device answers: whose words?
+        for reply, verdict in received.replies:
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
@@ -580,14 +615,13 @@ class GcodeSession(MachineSession):
             self._last_heard = self.clock.now()
             self._device_answered()
             self.frameReceived.emit(reply, reply_bytes(reply))
-            if isinstance(reply, Ok | ErrorReply) and self._awaiting_banner():
+            if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
-            if isinstance(reply, Ok):
-                self._answered(None)
-            elif isinstance(reply, ErrorReply):
-                self._answered(reply)
+            if isinstance(reply, Ok | ErrorReply):
+                entry = verdict.entry if isinstance(verdict, Answer) else None
+                self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
-                self._apply_status(reply)
+                self._apply_status(reply, verdict if isinstance(verdict, list) else None)
             elif isinstance(reply, AlarmReply):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(
@@ -595,27 +629,49 @@ class GcodeSession(MachineSession):
                         reply.code, reply.meaning
                     )
                 )
-
+                self._tell_written(self.feeder.release())
             elif isinstance(reply, Banner):
-                ours, self._reset_sent_at = self._reset_sent_at is not None, None
+                ours = isinstance(verdict, BannerSeen) and verdict.ours
                 self.replyText.emit(reply.text)
                 self.query_status()  # a board that just started: where is it, how big its planner
                 if ours:
                     self._pump()  # our reset's banner: what waited for it goes now
                     continue
                 lost = self._forget_stream()
+                if isinstance(verdict, BannerSeen):
+                    lost = verdict.lost + lost  # the feeder forgot them when it read the banner
                 if lost:
                     self.model.message.emit(
                         f"The device reset: {len(lost)} unanswered line(s) were not run"
                     )
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
+        self._tell_written(received.written)
 
-    def _answered(self, error: ErrorReply | None) -> None:
+    def _reading_failed(self, failure: Exception) -> None:
+        """A bug in matching replies to lines: the count may be wrong, so the machine stops.
+
+        The feeder holds the sending meanwhile; the stop takes back what is queued.
+        """
+        _log.error("G-code replies could not be read", exc_info=failure)
+        self.model.message.emit(f"The device's replies could not be read ({failure}): stopping")
+        self.stop_all()
+        self._tell_written(self.feeder.release())
+
+    def _answered(
+        self,
+        error: ErrorReply | None,
+        entry: tuple[bytes, SentLine] | Literal["ask"] | None = "ask",
+    ) -> None:
+        """The reply to the oldest line: ``entry`` as the feeder matched it ("ask": match now)."""
         self._stall_told = False
-        entry = self.streamer.acknowledge()
-        if entry is None:
+        if entry == "ask":
+            with self.feeder.lock:
+                entry = self.streamer.acknowledge()
+        if entry is None or isinstance(entry, str):
             self.model.message.emit("A reply arrived for no line (ignored)")
+            if error is not None:
+                self._tell_written(self.feeder.release())
             return
         _, sent = entry
         self._seen_idle = False
@@ -636,6 +692,7 @@ class GcodeSession(MachineSession):
             if sent.origin in ("console", "intent"):
                 self.replyText.emit(f"ok  ← {sent.text}")
             self.lineAcknowledged.emit(sent)
+            self._pump()
         else:
             self.errors += 1
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
@@ -647,9 +704,15 @@ class GcodeSession(MachineSession):
                     + _hint(sent.text, error.code)
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
-        self._pump()
+            # Seen and handled (a failed job has taken back its queue): sending may go on.
+            self._tell_written(self.feeder.release())
 
-    def _check_lost_answers(self, report: StatusReport, planner_empty: bool) -> None:
+    def _check_lost_answers(
+        self,
+        report: StatusReport,
+        planner_empty: bool,
+        unanswered: list[SentLine] | None = None,
+    ) -> None:
         """An ``ok`` lost on the wire would stall the stream forever: notice it, and say so.
 
         GRBL answers every line once it has parsed it, so when its reports show
@@ -659,11 +722,19 @@ class GcodeSession(MachineSession):
         as answered.  A line that pauses the board (a dwell, a program stop) is
         still waited for; a board that reports no ``Bf:`` cannot show this, and
         the operator is told the stream waits.
+
+        ``unanswered``: the lines unanswered when the report was read (the feeder's
+        snapshot on the reader thread; lines written since went after the report).
+        Only lines unanswered through every report of the run count as lost.
         """
-        unanswered = self.streamer.unanswered_tags()
+        if unanswered is None:
+            unanswered = self.streamer.unanswered_tags()
+        if self._drained_since is not None:
+            unanswered = [sent for sent in unanswered if sent in self._lost_candidates]
         if not unanswered or report.state != "Idle":
             self._drained_since, self._drained_reports = None, 0
             return
+        self._lost_candidates = unanswered
         now = self.clock.now()
         drained = (
             report.rx_free is not None
@@ -687,8 +758,13 @@ class GcodeSession(MachineSession):
                 f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
                 "taken and run every line sent, so they count as answered"
             )
-            for _ in unanswered:
-                self._answered(None)
+            for sent in unanswered:
+                with self.feeder.lock:
+                    tags = self.streamer.unanswered_tags()
+                    if not tags or tags[0] != sent:
+                        break  # answered meanwhile after all
+                    entry = self.streamer.acknowledge()
+                self._answered(None, entry)
         elif not drained and waited >= SILENCE_S and not self._stall_told:
             self._stall_told = True
             self.model.message.emit(
@@ -696,7 +772,7 @@ class GcodeSession(MachineSession):
                 "waiting for its answer (without Bf: in its reports it cannot show it has them)"
             )
 
-    def _apply_status(self, report: StatusReport) -> None:
+    def _apply_status(self, report: StatusReport, unanswered: list[SentLine] | None = None) -> None:
         self._status_asked_at = None
         self.status = report
         if self._reset_requested_at is not None:
@@ -730,7 +806,7 @@ class GcodeSession(MachineSession):
         )
         if report.state == "Idle" and self.streamer.idle and planner_empty:
             self._seen_idle = True
-        self._check_lost_answers(report, planner_empty)
+        self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
 

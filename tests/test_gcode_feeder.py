@@ -1,0 +1,147 @@
+"""The G-code feeder: the streaming loop on the transport's reader thread.
+
+What the operator relies on: a board's first words count however the reader
+thread and the window's thread interleave at connect; nothing more is written
+after an ``error`` until the window has seen every one; and a fault in
+reading the replies stops the machine instead of silencing the link.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.machine import LinkState
+from app.machines.gcode.feeder import LineFeeder
+from app.profiles import load_profile
+from app.station import Station
+from protocol.clock import ManualClock
+from protocol.gcode.codec import FEED_HOLD, make_decoder
+from protocol.gcode.streaming import LineStreamer, StreamMode
+from protocol.transport.base import Transport
+from tests.helpers.harness import StationHarness
+
+
+class UnannouncedPort(Transport):
+    """A port that opens without saying so: the test says when the window hears of it."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.sent: list[bytes] = []
+        self._open = False
+
+    def describe(self) -> str:
+        return "/dev/ttyACM0 @ 115200"
+
+    @property
+    def is_open(self) -> bool:
+        return self._open
+
+    def open(self) -> None:
+        self._open = True
+        self._mark_open()
+
+    def close(self) -> None:
+        was_open, self._open = self._open, False
+        self._mark_closed()
+        if was_open:
+            self.listener.connection_lost(None)
+
+    def write(self, data: bytes) -> None:
+        self.sent.append(bytes(data))
+
+
+@pytest.fixture
+def station(qtbot: QtBot) -> Iterator[Station]:
+    built = Station(load_profile("grbl-plotter"), ManualClock(), realtime=False)
+    try:
+        yield built
+    finally:
+        built.shutdown()
+
+
+def test_a_first_report_read_across_the_connect_still_connects(station: Station) -> None:
+    # The reader thread reads the board's first bytes as soon as the port opens; the
+    # window hears of the connection later.  A report cut in two around that moment
+    # is still one report (GRBL on a pty that had it buffered, or a slow window).
+    port = UnannouncedPort()
+    station.connect_transport(port)
+    session = station.gcode_session
+    assert session is not None and station.link is not None
+    first = session.feeder.receive(b"<Idle|MPos:1.000,2.000,0.000|FS:0,0")
+    port.listener.connection_made()  # the window runs its connect handling now
+    second = session.feeder.receive(b">\r\n")
+    station.link.received.emit(first)
+    station.link.received.emit(second)
+    assert station.model.link_state is LinkState.CONNECTED
+    assert session.rejected == 0
+    assert session.machine_state == "Idle"
+
+
+def test_a_reply_cut_by_a_lost_link_is_not_glued_to_the_next_links_first(
+    station: Station,
+) -> None:
+    port = UnannouncedPort()
+    station.connect_transport(port)
+    session = station.gcode_session
+    assert session is not None and station.link is not None
+    port.listener.connection_made()
+    station.link.received.emit(session.feeder.receive(b"<Idle|MPos:0.000,0.000,0.000|FS:0,0>\r\n"))
+    assert station.model.link_state is LinkState.CONNECTED
+    station.link.received.emit(session.feeder.receive(b"<Idle|MPos:5.0"))  # then the cable goes
+    port.close()
+    station.link.open()
+    port.listener.connection_made()
+    station.link.received.emit(session.feeder.receive(b"<Idle|MPos:7.000,8.000,0.000|FS:0,0>\r\n"))
+    assert station.model.link_state is LinkState.CONNECTED
+    assert session.rejected == 0
+    assert [axis.position for axis in station.model.axes][:2] == [7.0, 8.0]
+
+
+def test_after_two_errors_nothing_is_written_until_the_window_has_seen_both() -> None:
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, 128)
+    written: list[bytes] = []
+    feeder = LineFeeder(streamer, make_decoder(), ManualClock(), written.append)
+    for tag, line in enumerate((b"G0 X1\n", b"G7 X1\n", b"G7 X2\n")):
+        streamer.queue(line, tag)
+    assert [raw for raw, _ in feeder.pump()] == [b"G0 X1\n", b"G7 X1\n", b"G7 X2\n"]
+    streamer.queue(b"G0 X9\n", 3)
+    received = feeder.receive(b"ok\r\nerror:20\r\nerror:20\r\n")
+    assert received.written == []
+    assert feeder.pump() == []
+    assert feeder.release() == []  # the window has seen the first error, not the second
+    assert written == [b"G0 X1\n", b"G7 X1\n", b"G7 X2\n"]
+    assert feeder.release() == [(b"G0 X9\n", 3)]
+    assert written[-1] == b"G0 X9\n"
+
+
+def test_a_fault_reading_the_replies_stops_the_machine_and_sends_nothing_queued(
+    qtbot: QtBot, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    harness = StationHarness(load_profile("grbl-plotter"))
+    harness.connect()
+    harness.run(0.05)
+    try:
+        session = harness.gcode_session
+        messages: list[str] = []
+        harness.station.model.message.connect(messages.append)
+        for x in range(1, 40):
+            assert session.send_line(f"G1 X{x} F600")
+        harness.run(0.02)
+        assert session.streamer.queued > 0
+        before = len(harness.written)
+
+        def broken(data: bytes) -> list[object]:
+            raise RuntimeError("decoder bug")
+
+        monkeypatch.setattr(session.decoder, "feed", broken)
+        session.receive_injected(b"ok\r\n")
+        after = b"".join(harness.written[before:])
+        assert FEED_HOLD in after
+        assert b"G1" not in after
+        assert session.streamer.queued == 0
+        assert any("could not be read" in text and "decoder bug" in text for text in messages)
+    finally:
+        harness.close()
