@@ -69,6 +69,7 @@ from types import MappingProxyType
 from typing import ClassVar, Literal, overload
 
 import numpy as np
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.jobs.formats.string_art.geometry import (
     DRILL_CLEARANCE_MM,
@@ -312,7 +313,13 @@ def _unwrapped(start: float, turns: np.ndarray, wraps: np.ndarray) -> tuple[np.n
 class StringArtOperations(Sequence[Operation]):
     """A string-art program's operations: the drill phase kept, the winding made on demand."""
 
-    _STEPS = ("turn beside it", "needle out", "round the nail", "needle in")
+    #: Translated once per program (an operation is made each time it is read).
+    _STEPS = (
+        QT_TRANSLATE_NOOP("JobFile", "turn beside it"),
+        QT_TRANSLATE_NOOP("JobFile", "needle out"),
+        QT_TRANSLATE_NOOP("JobFile", "round the nail"),
+        QT_TRANSLATE_NOOP("JobFile", "needle in"),
+    )
 
     def __init__(
         self,
@@ -332,6 +339,8 @@ class StringArtOperations(Sequence[Operation]):
         self.r_out = r_out
         self.tail = tail
         self.size = len(head) + 4 * len(a_turn) + 1
+        self._steps = tuple(QCoreApplication.translate("JobFile", s) for s in self._STEPS)
+        self._label = QCoreApplication.translate("JobFile", "nail {0} ({1}/{2}): {3}")
 
     def __len__(self) -> int:
         return self.size
@@ -364,7 +373,7 @@ class StringArtOperations(Sequence[Operation]):
         entry += 1
         total = len(self.job.sequence)
         nail = self.job.sequence[entry]
-        message = f"nail {nail} ({entry + 1}/{total}): {self._STEPS[step]}"
+        message = self._label.format(nail, entry + 1, total, self._steps[step])
         if step == 0:
             target = {"A": float(self.a_turn[entry - 1])}
         elif step == 2:
@@ -396,8 +405,11 @@ def build_program(
         raise JobFileError(
             where.file,
             where.line,
-            f"a board of {job.params.radius_cm:g} cm radius leaves no room for the needle "
-            f"{settings.needle_in_mm:g} mm inside the nails",
+            QCoreApplication.translate(
+                "JobFile",
+                "a board of {0:g} cm radius leaves no room for the needle {1:g} mm inside "
+                "the nails",
+            ).format(job.params.radius_cm, settings.needle_in_mm),
         )
     b = _Builder()
     nails = job.params.nails
@@ -408,7 +420,15 @@ def build_program(
     dwell = f"G4 S{settings.drill_dwell_s:g}"
     dwell_ops: list[int] = []
 
-    b.add(Operation(OpKind.COMMENT, at_param, message=f"drill phase: {nails} nails"), -1, -1)
+    b.add(
+        Operation(
+            OpKind.COMMENT,
+            at_param,
+            message=QCoreApplication.translate("JobFile", "drill phase: {0} nails").format(nails),
+        ),
+        -1,
+        -1,
+    )
     above = f"{settings.drill_clearance_mm:g} mm above the board"
     b.move(at_param, "Z", 0.0, f"drill {above}", -1, -1)
     for nail in range(nails):
@@ -426,14 +446,33 @@ def build_program(
 
     first = sequence[0]
     at_first = job.entry_source(0)
-    b.add(Operation(OpKind.COMMENT, at_first, message=f"winding: {total} connections"), -1, -1)
     b.add(
-        Operation(OpKind.GCODE, at_first, message="drivers off while waiting", line="M18"), -1, -1
+        Operation(
+            OpKind.COMMENT,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "winding: {0} connections").format(total),
+        ),
+        -1,
+        -1,
+    )
+    b.add(
+        Operation(
+            OpKind.GCODE,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "drivers off while waiting"),
+            line="M18",
+        ),
+        -1,
+        -1,
     )
     wait_index = len(b.ops)
     b.add(
         Operation(
-            OpKind.WAIT, at_first, message=f"Insert the nails, tie the thread to nail {first}"
+            OpKind.WAIT,
+            at_first,
+            message=QCoreApplication.translate(
+                "JobFile", "Insert the nails, tie the thread to nail {0}"
+            ).format(first),
         ),
         first,
         0,
@@ -445,7 +484,12 @@ def build_program(
     b.move(at_first, "X", r_in, f"{step_in}: needle in", first, 0)
     b.turn_to(float(angles[first]), at_first, f"{step_in}: turn back", first, 0)
     b.add(
-        Operation(OpKind.GCODE, at_first, message="drill driver off while winding", line="M18 Z0"),
+        Operation(
+            OpKind.GCODE,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "drill driver off while winding"),
+            line="M18 Z0",
+        ),
         first,
         0,
     )
@@ -457,7 +501,9 @@ def build_program(
     tail = Operation(
         OpKind.COMMENT,
         job.entry_source(total - 1),
-        message=f"winding done: tie the thread off at nail {last}",
+        message=QCoreApplication.translate(
+            "JobFile", "winding done: tie the thread off at nail {0}"
+        ).format(last),
     )
     winding = total - 1
     nails_wound = np.asarray(sequence[1:], dtype=np.int32)
@@ -572,7 +618,10 @@ def load_string_art_program(
         raise JobFileError(
             path.name,
             0,
-            f"a string-art job needs the winder's axes A, X and Z (profile string-art); "
-            f"this machine has {', '.join(axis_names) or 'none'}",
+            QCoreApplication.translate(
+                "JobFile",
+                "a string-art job needs the winder's axes A, X and Z (profile string-art); "
+                "this machine has {0}",
+            ).format(", ".join(axis_names) or QCoreApplication.translate("JobFile", "none")),
         )
     return build_program(read_string_art(path, params), profile)
