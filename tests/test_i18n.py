@@ -23,6 +23,7 @@ from app.jobs.loaders import load_job
 from app.jobs.program import JobFileError, OpKind
 from app.machine import LinkState
 from app.profiles import available_profiles, load_profile
+from app.settings import StationSettings
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 from widgets.number_field import NumberField, format_number
@@ -363,3 +364,29 @@ def test_a_folder_opened_as_a_job_is_refused_in_the_language(
     with pytest.raises(JobFileError) as refused:
         load_job(folder, ("X", "Y"))
     assert refused.value.reason == expected
+
+
+@pytest.mark.parametrize(
+    ("language", "malformed", "bad_value"),
+    [
+        ("cs", "je poškozený: použijí se výchozí hodnoty", "Nastavení link/baud v souboru "),
+        ("sk", "je poškodený: použijú sa predvolené hodnoty", "Nastavenie link/baud v súbore "),
+    ],
+)
+def test_settings_warnings_speak_the_language_installed_when_they_are_shown(
+    tmp_path: Path, language: str, malformed: str, bad_value: str
+) -> None:
+    """The settings are read before the language is installed: their warnings wait for it."""
+    broken = tmp_path / "broken.ini"
+    broken.write_bytes(b"[main_window\npage=2")
+    corrupt = StationSettings(QSettings(str(broken), QSettings.Format.IniFormat))
+    odd = tmp_path / "odd.ini"
+    odd.write_text("[link]\nbaud=-5\n")
+    wrong = StationSettings(QSettings(str(odd), QSettings.Format.IniFormat))
+    assert wrong.baud is None  # read (and found wrong) while the station is still English
+    i18n.install(language, tmp_path / "qm")
+    (warning,) = corrupt.take_warnings()
+    assert str(broken) in warning
+    assert malformed in warning
+    (warning,) = wrong.take_warnings()
+    assert warning.startswith(bad_value)

@@ -2821,6 +2821,26 @@ sa nevykresľuje</translation>
     </message>
 </context>
 <context>
+    <name>Settings</name>
+    <message>
+        <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is malformed: defaults are used</source>
+        <translation>Súbor nastavení {0} je poškodený: použijú sa predvolené hodnoty</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is malformed: defaults are used; a copy is kept as {1}</source>
+        <translation>Súbor nastavení {0} je poškodený: použijú sa predvolené hodnoty; jeho kópia je uložená ako {1}</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is not readable: defaults are used</source>
+        <translation>Súbor nastavení {0} sa nedá prečítať: použijú sa predvolené hodnoty</translation>
+    </message>
+</context>
+<context>
     <name>StageParameter</name>
     <message>
         <source>Fast speed</source>
