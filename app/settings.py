@@ -251,15 +251,19 @@ class _MemoryStore:
 
 
 #: The warnings, translated when they are taken (see StationSettings.take_warnings).
-_BAD_VALUE = QT_TRANSLATE_NOOP(
-    "Settings", "Setting {0} in {1} was {2}; it should be {3}, so the default is used"
+_BAD_VALUE = str(
+    QT_TRANSLATE_NOOP(
+        "Settings", "Setting {0} in {1} was {2}; it should be {3}, so the default is used"
+    )
 )
-_MALFORMED = QT_TRANSLATE_NOOP("Settings", "Settings file {0} is malformed: defaults are used")
-_MALFORMED_KEPT = QT_TRANSLATE_NOOP(
-    "Settings", "Settings file {0} is malformed: defaults are used; a copy is kept as {1}"
+_MALFORMED = str(QT_TRANSLATE_NOOP("Settings", "Settings file {0} is malformed: defaults are used"))
+_MALFORMED_KEPT = str(
+    QT_TRANSLATE_NOOP(
+        "Settings", "Settings file {0} is malformed: defaults are used; a copy is kept as {1}"
+    )
 )
-_NOT_READABLE = QT_TRANSLATE_NOOP(
-    "Settings", "Settings file {0} is not readable: defaults are used"
+_NOT_READABLE = str(
+    QT_TRANSLATE_NOOP("Settings", "Settings file {0} is not readable: defaults are used")
 )
 
 

@@ -23,9 +23,8 @@ import os
 import stat
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication
-
 from app.jobs.program import JobFileError
+from app.jobs.texts import translate
 
 #: The largest job file read (a million-line G-code file is about 30 MB).
 MAX_JOB_BYTES = 100_000_000
@@ -36,16 +35,16 @@ HEAD_BYTES = 16_384
 def _kind(mode: int) -> str:
     """What a file that is not a regular file is, in the operator's language."""
     if stat.S_ISDIR(mode):
-        return QCoreApplication.translate("JobFile", "a folder")
+        return translate("JobFile", "a folder")
     if stat.S_ISFIFO(mode):
-        return QCoreApplication.translate("JobFile", "a named pipe")
+        return translate("JobFile", "a named pipe")
     if stat.S_ISCHR(mode):
-        return QCoreApplication.translate("JobFile", "a device")
+        return translate("JobFile", "a device")
     if stat.S_ISBLK(mode):
-        return QCoreApplication.translate("JobFile", "a block device")
+        return translate("JobFile", "a block device")
     if stat.S_ISSOCK(mode):
-        return QCoreApplication.translate("JobFile", "a socket")
-    return QCoreApplication.translate("JobFile", "not a regular file")
+        return translate("JobFile", "a socket")
+    return translate("JobFile", "not a regular file")
 
 
 def _megabytes(size: int) -> str:
@@ -76,9 +75,9 @@ def read_job_bytes(path: Path, limit: int = MAX_JOB_BYTES, *, first: int | None 
             raise JobFileError(
                 name,
                 0,
-                QCoreApplication.translate(
-                    "JobFile", "too large: {0}; job files are read up to {1}"
-                ).format(_megabytes(info.st_size), _megabytes(limit)),
+                translate("JobFile", "too large: {0}; job files are read up to {1}").format(
+                    _megabytes(info.st_size), _megabytes(limit)
+                ),
             )
         chunks: list[bytes] = []
         total = 0
@@ -93,9 +92,9 @@ def read_job_bytes(path: Path, limit: int = MAX_JOB_BYTES, *, first: int | None 
             raise JobFileError(
                 name,
                 0,
-                QCoreApplication.translate(
-                    "JobFile", "too large: over {0}; job files are read up to that"
-                ).format(_megabytes(limit)),
+                translate("JobFile", "too large: over {0}; job files are read up to that").format(
+                    _megabytes(limit)
+                ),
             )
         return b"".join(chunks)
     except OSError as exc:
@@ -105,28 +104,26 @@ def read_job_bytes(path: Path, limit: int = MAX_JOB_BYTES, *, first: int | None 
 
 
 def _cannot_read(exc: OSError) -> str:
-    return QCoreApplication.translate("JobFile", "cannot read: {0}").format(exc.strerror or exc)
+    return translate("JobFile", "cannot read: {0}").format(exc.strerror or exc)
 
 
 def _not_a_file(mode: int) -> str:
-    return QCoreApplication.translate("JobFile", "cannot read: {0}, not a job file").format(
-        _kind(mode)
-    )
+    return translate("JobFile", "cannot read: {0}, not a job file").format(_kind(mode))
 
 
 def utf16_reason(raw: bytes) -> str | None:
     """Why ``raw`` reads as UTF-16 (its byte-order mark or its NUL bytes), or None."""
     if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         if raw.startswith(codecs.BOM_UTF16_LE):
-            return QCoreApplication.translate(
+            return translate(
                 "JobFile", "UTF-16 text (little-endian byte-order mark): save it as UTF-8 or ASCII"
             )
-        return QCoreApplication.translate(
+        return translate(
             "JobFile", "UTF-16 text (big-endian byte-order mark): save it as UTF-8 or ASCII"
         )
     head = raw[:512]
     if len(head) >= 4 and head.count(0) * 3 >= len(head):
-        return QCoreApplication.translate(
+        return translate(
             "JobFile", "UTF-16 text (every other byte is zero): save it as UTF-8 or ASCII"
         )
     return None
@@ -137,7 +134,7 @@ def _binary(raw: bytes, name: str) -> None:
     at = raw.find(b"\x00")
     if at >= 0:
         line = raw.count(b"\n", 0, at) + 1
-        reason = QCoreApplication.translate(
+        reason = translate(
             "JobFile", "binary data (a zero byte at offset {0}): not a job file"
         ).format(at)
         raise JobFileError(name, line, reason)
@@ -161,7 +158,7 @@ def decode_job_text(raw: bytes, name: str, *, latin1_fallback: bool = False) -> 
         if latin1_fallback:
             return raw.decode("latin-1")
         line = raw.count(b"\n", 0, exc.start) + 1
-        reason = QCoreApplication.translate("JobFile", "not UTF-8 text (byte 0x{0:02x})")
+        reason = translate("JobFile", "not UTF-8 text (byte 0x{0:02x})")
         raise JobFileError(name, line, reason.format(raw[exc.start])) from None
 
 

@@ -1605,7 +1605,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a folder</source>
-        <extracomment>The largest job file read (a million-line G-code file is about 30 MB). How much of a file the format sniffers see.</extracomment>
+        <extracomment>How much of a file the format sniffers see.</extracomment>
         <translation>priečinok</translation>
     </message>
     <message>

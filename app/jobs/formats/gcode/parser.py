@@ -74,8 +74,8 @@ INCH_MM = 25.4
 
 
 #: Translated where it is used (a parameter line is refused in the operator's language).
-PARAMETER_REASON = QT_TRANSLATE_NOOP(
-    "JobFile", "named parameters/expressions are not G-code this machine runs"
+PARAMETER_REASON = str(
+    QT_TRANSLATE_NOOP("JobFile", "named parameters/expressions are not G-code this machine runs")
 )
 
 MOTION_WORDS = {"G0": RAPID, "G1": LINEAR, "G2": CW_ARC, "G3": CCW_ARC}

@@ -37,10 +37,10 @@ SPACES = re.compile(r"[ \t]{2,}")
 BARE_VALUE = re.compile(r"[ \t]*[Mm]0*(9[89])[ \t]+(\d+(?:\.\d*)?)[ \t]*")
 #: Their names are translated where they are shown.
 REALTIME = {
-    "?": QT_TRANSLATE_NOOP("JobFile", "status query"),
-    "!": QT_TRANSLATE_NOOP("JobFile", "feed hold"),
-    "~": QT_TRANSLATE_NOOP("JobFile", "cycle start"),
-    "\x18": QT_TRANSLATE_NOOP("JobFile", "soft reset"),
+    "?": str(QT_TRANSLATE_NOOP("JobFile", "status query")),
+    "!": str(QT_TRANSLATE_NOOP("JobFile", "feed hold")),
+    "~": str(QT_TRANSLATE_NOOP("JobFile", "cycle start")),
+    "\x18": str(QT_TRANSLATE_NOOP("JobFile", "soft reset")),
 }
 #: The cached tokenisations (per distinct line text) stop growing here: repeated lines
 #: (pen commands, dwells) are what the cache is for.

@@ -315,10 +315,10 @@ class StringArtOperations(Sequence[Operation]):
 
     #: Translated once per program (an operation is made each time it is read).
     _STEPS = (
-        QT_TRANSLATE_NOOP("JobFile", "turn beside it"),
-        QT_TRANSLATE_NOOP("JobFile", "needle out"),
-        QT_TRANSLATE_NOOP("JobFile", "round the nail"),
-        QT_TRANSLATE_NOOP("JobFile", "needle in"),
+        str(QT_TRANSLATE_NOOP("JobFile", "turn beside it")),
+        str(QT_TRANSLATE_NOOP("JobFile", "needle out")),
+        str(QT_TRANSLATE_NOOP("JobFile", "round the nail")),
+        str(QT_TRANSLATE_NOOP("JobFile", "needle in")),
     )
 
     def __init__(

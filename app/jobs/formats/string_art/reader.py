@@ -50,12 +50,12 @@ from pathlib import Path
 from types import MappingProxyType
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail_positions
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError, SourceRef
 from app.jobs.reading import decode_job_text, read_job_bytes, read_job_text
+from app.jobs.texts import translate
 
 PARAM_NAME = "param.txt"
 PORADI_NAME = "poradi.txt"
@@ -88,8 +88,8 @@ class StringArtParams:
     @property
     def shape(self) -> str:
         if self.tvar == 0:
-            return QCoreApplication.translate("JobFile", "circle")
-        return QCoreApplication.translate("JobFile", "{0}-gon").format(self.tvar)
+            return translate("JobFile", "circle")
+        return translate("JobFile", "{0}-gon").format(self.tvar)
 
     def check(self) -> str | None:
         """Why these parameters cannot make a board, or None when they can."""
@@ -159,11 +159,11 @@ class StringArtJob:
     def summary(self, estimate_s: float | None = None) -> str:
         """Totals for the operator: nails, connections, thread length, estimated time."""
         p = self.params
-        text = QCoreApplication.translate(
+        text = translate(
             "JobFile", "{0} nails on a {1} of {2:g} cm radius, {3} connections, thread {4:.1f} m"
         ).format(p.nails, p.shape, p.radius_cm, len(self.sequence), self.thread_length_mm() / 1000)
         if estimate_s is not None and math.isfinite(estimate_s):
-            text += QCoreApplication.translate("JobFile", ", about {0}").format(_clock(estimate_s))
+            text += translate("JobFile", ", about {0}").format(_clock(estimate_s))
         return text
 
 
@@ -178,7 +178,7 @@ class NeedsNailCount(JobFileError):
         super().__init__(
             path.name,
             0,
-            QCoreApplication.translate(
+            translate(
                 "JobFile",
                 "a nail list without {0}: give the board (shape, at least {1} nails, radius) "
                 "to load its {2} entries",
@@ -217,9 +217,7 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
             raise JobFileError(
                 path.name,
                 number,
-                QCoreApplication.translate("JobFile", "expected 'key = value', found {0}").format(
-                    quoted(line)
-                ),
+                translate("JobFile", "expected 'key = value', found {0}").format(quoted(line)),
             )
         if key not in PARAM_KEYS:
             continue  # the firmware ignores keys it does not know; so does the station
@@ -228,34 +226,26 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
             raise JobFileError(
                 path.name,
                 number,
-                QCoreApplication.translate("JobFile", "{0} given twice (first on line {1})").format(
-                    key, first
-                ),
+                translate("JobFile", "{0} given twice (first on line {1})").format(key, first),
             )
         parsed = _number(value)
         if parsed is None or math.isnan(parsed):
             raise JobFileError(
                 path.name,
                 number,
-                QCoreApplication.translate("JobFile", "{0} = {1} is not a number").format(
-                    key, repr(value[:40])
-                ),
+                translate("JobFile", "{0} = {1} is not a number").format(key, repr(value[:40])),
             )
         if not math.isfinite(parsed):
             raise JobFileError(
                 path.name,
                 number,
-                QCoreApplication.translate("JobFile", "{0} = {1} is too large").format(
-                    key, repr(value[:40])
-                ),
+                translate("JobFile", "{0} = {1} is too large").format(key, repr(value[:40])),
             )
         if key != "polomer_matrice" and parsed != int(parsed):
             raise JobFileError(
                 path.name,
                 number,
-                QCoreApplication.translate("JobFile", "{0} = {1} is not a whole number").format(
-                    key, value
-                ),
+                translate("JobFile", "{0} = {1} is not a whole number").format(key, value),
             )
         found[key] = (parsed, number, value)
     for key in PARAM_KEYS:
@@ -263,9 +253,7 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
             raise JobFileError(
                 path.name,
                 0,
-                QCoreApplication.translate(
-                    "JobFile", "no '{0} = …' line (line 0: missing, not wrong)"
-                ).format(key),
+                translate("JobFile", "no '{0} = …' line (line 0: missing, not wrong)").format(key),
             )
     lines = {key: found[key][1] for key in PARAM_KEYS}
     params = StringArtParams(
@@ -287,10 +275,10 @@ def _check_tvar(tvar: int) -> str | None:
     if tvar == 0 or 3 <= tvar <= MAX_TVAR:
         return None
     if tvar > MAX_TVAR:
-        return QCoreApplication.translate(
-            "JobFile", "tvar = {0}: a polygon has at most {1} sides"
-        ).format(_short(tvar), MAX_TVAR)
-    return QCoreApplication.translate(
+        return translate("JobFile", "tvar = {0}: a polygon has at most {1} sides").format(
+            _short(tvar), MAX_TVAR
+        )
+    return translate(
         "JobFile", "tvar = {0}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
     ).format(tvar)
 
@@ -299,12 +287,12 @@ def _check_nails(nails: int) -> str | None:
     if MIN_NAILS <= nails <= MAX_NAILS:
         return None
     if nails > MAX_NAILS:
-        return QCoreApplication.translate(
-            "JobFile", "pocet_hrebiku = {0}: a board has at most {1} nails"
-        ).format(_short(nails), MAX_NAILS)
-    return QCoreApplication.translate(
-        "JobFile", "pocet_hrebiku = {0}: a board needs at least {1} nails"
-    ).format(nails, MIN_NAILS)
+        return translate("JobFile", "pocet_hrebiku = {0}: a board has at most {1} nails").format(
+            _short(nails), MAX_NAILS
+        )
+    return translate("JobFile", "pocet_hrebiku = {0}: a board needs at least {1} nails").format(
+        nails, MIN_NAILS
+    )
 
 
 def _short(value: int) -> str:
@@ -318,10 +306,10 @@ def _check_radius(radius_cm: float) -> str | None:
         return None
     if math.isfinite(radius_cm) and radius_cm > MAX_RADIUS_CM:
         limit = f"{MAX_RADIUS_CM:g} cm"
-        return QCoreApplication.translate(
+        return translate(
             "JobFile", "polomer_matrice = {0:g} cm: a board's radius is at most {1}"
         ).format(radius_cm, limit)
-    return QCoreApplication.translate(
+    return translate(
         "JobFile",
         "polomer_matrice = {0:g} cm: the nails sit {1:g} cm inside the edge, so the radius "
         "must be larger than {1:g} cm",
@@ -387,26 +375,24 @@ def read_nail_list(path: Path) -> NailList:
         raise JobFileError(
             path.name,
             int(lines[k]),
-            QCoreApplication.translate(
-                "JobFile", "number {0} of the file: {1} is not a whole number"
-            ).format(k + 1, repr(text)),
+            translate("JobFile", "number {0} of the file: {1} is not a whole number").format(
+                k + 1, repr(text)
+            ),
         )
     if not len(starts):
-        raise JobFileError(
-            path.name, 0, QCoreApplication.translate("JobFile", "no nail indices in the file")
-        )
+        raise JobFileError(path.name, 0, translate("JobFile", "no nail indices in the file"))
     digits = ends - starts - signed
     long = np.flatnonzero(digits > MAX_INDEX_DIGITS)
     if len(long):
         k = int(long[0])
         text = (
-            QCoreApplication.translate(
+            translate(
                 "JobFile",
                 "the count of the file has {1} digits: out of range on any board "
                 "(at most {2} nails, {3} entries)",
             )
             if k == 0 and path.name.lower() == PORADI_NAME
-            else QCoreApplication.translate(
+            else translate(
                 "JobFile",
                 "number {0} of the file has {1} digits: out of range on any board "
                 "(at most {2} nails, {3} entries)",
@@ -421,14 +407,12 @@ def read_nail_list(path: Path) -> NailList:
         raise JobFileError(
             path.name,
             int(lines[MAX_ENTRIES + 1]),
-            QCoreApplication.translate("JobFile", "more than {0} nail indices").format(MAX_ENTRIES),
+            translate("JobFile", "more than {0} nail indices").format(MAX_ENTRIES),
         )
     del starts, ends, digits, signed
     values = np.fromstring(raw.translate(_TO_SPACES), dtype=np.int64, sep=" ")
     if len(values) != len(lines):  # cannot happen: every number was checked above
-        raise JobFileError(
-            path.name, 0, QCoreApplication.translate("JobFile", "could not read the nail indices")
-        )
+        raise JobFileError(path.name, 0, translate("JobFile", "could not read the nail indices"))
     counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
         return NailList(tuple(values.tolist()), lines, None, 0)
@@ -443,31 +427,31 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         raise JobFileError(
             name,
             nails.count_line,
-            QCoreApplication.translate(
-                "JobFile", "the count says {0} nail indices, but {1} follow"
-            ).format(nails.count, len(sequence)),
+            translate("JobFile", "the count says {0} nail indices, but {1} follow").format(
+                nails.count, len(sequence)
+            ),
         )
     if len(sequence) < 2:
         raise JobFileError(
             name,
             nails.count_line or 1,
-            QCoreApplication.translate("JobFile", "fewer than two nails: nothing to wind"),
+            translate("JobFile", "fewer than two nails: nothing to wind"),
         )
     array = np.asarray(sequence, dtype=np.int64)
     bad = np.flatnonzero((array < 0) | (array >= params.nails))
     if len(bad):
         i = int(bad[0])
         more = (
-            QCoreApplication.translate("JobFile", " ({0} more out of range)").format(len(bad) - 1)
+            translate("JobFile", " ({0} more out of range)").format(len(bad) - 1)
             if len(bad) > 1
             else ""
         )
         raise JobFileError(
             name,
             int(nails.lines[i]),
-            QCoreApplication.translate(
-                "JobFile", "entry {0}: nail {1} is out of range 0…{2}{3}"
-            ).format(i + 1, sequence[i], params.nails - 1, more),
+            translate("JobFile", "entry {0}: nail {1} is out of range 0…{2}{3}").format(
+                i + 1, sequence[i], params.nails - 1, more
+            ),
         )
     repeats = np.flatnonzero(array[1:] == array[:-1])
     if len(repeats):
@@ -475,7 +459,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         raise JobFileError(
             name,
             int(nails.lines[i]),
-            QCoreApplication.translate(
+            translate(
                 "JobFile", "entries {0} and {1}: nail {2} twice in a row (a thread to itself)"
             ).format(i, i + 1, sequence[i]),
         )
@@ -516,7 +500,7 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
             raise JobFileError(
                 poradi.name,
                 0,
-                QCoreApplication.translate("JobFile", "the board entered: {0}").format(reason),
+                translate("JobFile", "the board entered: {0}").format(reason),
             )
     check_sequence(poradi, nails, param)
     return StringArtJob(
@@ -538,9 +522,7 @@ def read_string_art(path: Path, param: StringArtParams | None = None) -> StringA
             raise JobFileError(
                 path.name,
                 0,
-                QCoreApplication.translate("JobFile", "no {0} beside it (the nail order)").format(
-                    PORADI_NAME
-                ),
+                translate("JobFile", "no {0} beside it (the nail order)").format(PORADI_NAME),
             )
         nails = read_nail_list(poradi)
         check_sequence(poradi, nails, params)
