@@ -20,7 +20,7 @@ from pytestqt.qtbot import QtBot
 
 from app import i18n
 from app.jobs.loaders import load_job
-from app.jobs.program import JobFileError, OpKind
+from app.jobs.program import JobFileError, OpKind, check_limits
 from app.machine import LinkState
 from app.profiles import available_profiles, load_profile
 from app.settings import StationSettings
@@ -314,14 +314,26 @@ UNKNOWN_TOOL = "M48\nINCH,TZ\nT01C0.0315\n%\nT02\nX1000Y1000\nM30\n"
 
 
 @pytest.mark.parametrize(
-    ("language", "refusal", "prompt", "travel"),
+    ("language", "refusal", "prompt", "travel", "outside"),
     [
-        ("cs", "neznámý nástroj: ", "vložte T01, 0.80 mm, otvorů: 3", "pojezd mezi otvory: "),
-        ("sk", "neznámy nástroj: ", "vložte T01, 0.80 mm, otvorov: 3", "pojazd medzi otvormi: "),
+        (
+            "cs",
+            "neznámý nástroj: ",
+            "vložte T01, 0.80 mm, otvorů: 3",
+            "pojezd mezi otvory: ",
+            "najet na X5.080 Y2.540 — X 5.08 je mimo meze pojezdu 0…3",
+        ),
+        (
+            "sk",
+            "neznámy nástroj: ",
+            "vložte T01, 0.80 mm, otvorov: 3",
+            "pojazd medzi otvormi: ",
+            "nabehnúť na X5.080 Y2.540 — X 5.08 je mimo rozsahu posuvu 0…3",
+        ),
     ],
 )
 def test_a_refused_job_file_and_the_bit_prompts_speak_the_language(
-    tmp_path: Path, language: str, refusal: str, prompt: str, travel: str
+    tmp_path: Path, language: str, refusal: str, prompt: str, travel: str, outside: str
 ) -> None:
     """Texts made on the loading thread are in the language installed when they are made."""
     bad = tmp_path / "bad.drl"
@@ -338,6 +350,9 @@ def test_a_refused_job_file_and_the_bit_prompts_speak_the_language(
     program = load_job(good, ("X", "Y"))
     assert [op.message for op in program if op.kind is OpKind.WAIT] == [prompt]
     assert any(travel in note for note in program.notes)
+    beyond = check_limits(program, {"X": (0.0, 3.0), "Y": (0.0, 3.0)})
+    assert len(beyond) == 2  # the holes at 0.2 and 0.3 inch
+    assert str(beyond[0]).endswith(outside)
 
     i18n.remove()  # back in English, the same files read as before
     with pytest.raises(JobFileError, match="unknown tool: "):

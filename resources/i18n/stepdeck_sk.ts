@@ -1664,6 +1664,20 @@ Napriek tomu odoslať do stroja?</translation>
         <source>not UTF-8 text (byte 0x{0:02x})</source>
         <translation>nejde o text v UTF-8 (bajt 0x{0:02x})</translation>
     </message>
+    <message>
+        <source>move to {0}</source>
+        <extracomment>G-code text a G-code machine is sent as written (G-code files); empty: the dialect renders the operation from its kind and target.</extracomment>
+        <translation>nabehnúť na {0}</translation>
+    </message>
+    <message>
+        <source>line {0}: {1} — {2}</source>
+        <translation>riadok {0}: {1} — {2}</translation>
+    </message>
+    <message>
+        <source>{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}</source>
+        <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
+        <translation>{0}: {1} — {2} {3:g} je mimo rozsahu posuvu {4:g}…{5:g}</translation>
+    </message>
 </context>
 <context>
     <name>JobPreview</name>
