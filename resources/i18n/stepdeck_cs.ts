@@ -1423,6 +1423,42 @@ Přesto odeslat do stroje?</translation>
         <translation>vrtání: hřebíků {0}</translation>
     </message>
     <message>
+        <source>{0:g} mm above the board</source>
+        <translation>{0:g} mm nad deskou</translation>
+    </message>
+    <message>
+        <source>drill {0}</source>
+        <translation>vrták {0}</translation>
+    </message>
+    <message>
+        <source>drill nail {0}</source>
+        <translation>vrtání pro hřebík {0}</translation>
+    </message>
+    <message>
+        <source>{0}: turn the base</source>
+        <translation>{0}: natočit základnu</translation>
+    </message>
+    <message>
+        <source>{0}: tool to its radius</source>
+        <translation>{0}: nástroj na jeho poloměr</translation>
+    </message>
+    <message>
+        <source>{0}: drill</source>
+        <translation>{0}: vrtat</translation>
+    </message>
+    <message>
+        <source>{0}: at the bottom</source>
+        <translation>{0}: na dně</translation>
+    </message>
+    <message>
+        <source>{0}: back {1}</source>
+        <translation>{0}: zpět {1}</translation>
+    </message>
+    <message>
+        <source>back to nail 0</source>
+        <translation>zpět k hřebíku 0</translation>
+    </message>
+    <message>
         <source>winding: {0} connections</source>
         <translation>navíjení: spojů {0}</translation>
     </message>
@@ -1433,6 +1469,26 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>Insert the nails, tie the thread to nail {0}</source>
         <translation>Vložte hřebíky, uvažte nit k hřebíku {0}</translation>
+    </message>
+    <message>
+        <source>start at nail {0}</source>
+        <translation>začátek u hřebíku {0}</translation>
+    </message>
+    <message>
+        <source>{0}: needle out</source>
+        <translation>{0}: jehla ven</translation>
+    </message>
+    <message>
+        <source>{0}: turn</source>
+        <translation>{0}: natočit</translation>
+    </message>
+    <message>
+        <source>{0}: needle in</source>
+        <translation>{0}: jehla dovnitř</translation>
+    </message>
+    <message>
+        <source>{0}: turn back</source>
+        <translation>{0}: natočit zpět</translation>
     </message>
     <message>
         <source>drill driver off while winding</source>

@@ -1423,6 +1423,42 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>vŕtanie: klincov {0}</translation>
     </message>
     <message>
+        <source>{0:g} mm above the board</source>
+        <translation>{0:g} mm nad doskou</translation>
+    </message>
+    <message>
+        <source>drill {0}</source>
+        <translation>vrták {0}</translation>
+    </message>
+    <message>
+        <source>drill nail {0}</source>
+        <translation>vŕtanie pre klinec {0}</translation>
+    </message>
+    <message>
+        <source>{0}: turn the base</source>
+        <translation>{0}: natočiť základňu</translation>
+    </message>
+    <message>
+        <source>{0}: tool to its radius</source>
+        <translation>{0}: nástroj na jeho polomer</translation>
+    </message>
+    <message>
+        <source>{0}: drill</source>
+        <translation>{0}: vŕtať</translation>
+    </message>
+    <message>
+        <source>{0}: at the bottom</source>
+        <translation>{0}: na dne</translation>
+    </message>
+    <message>
+        <source>{0}: back {1}</source>
+        <translation>{0}: späť {1}</translation>
+    </message>
+    <message>
+        <source>back to nail 0</source>
+        <translation>späť ku klincu 0</translation>
+    </message>
+    <message>
         <source>winding: {0} connections</source>
         <translation>navíjanie: spojov {0}</translation>
     </message>
@@ -1433,6 +1469,26 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>Insert the nails, tie the thread to nail {0}</source>
         <translation>Vložte klince, priviažte niť ku klincu {0}</translation>
+    </message>
+    <message>
+        <source>start at nail {0}</source>
+        <translation>začiatok pri klinci {0}</translation>
+    </message>
+    <message>
+        <source>{0}: needle out</source>
+        <translation>{0}: ihla von</translation>
+    </message>
+    <message>
+        <source>{0}: turn</source>
+        <translation>{0}: natočiť</translation>
+    </message>
+    <message>
+        <source>{0}: needle in</source>
+        <translation>{0}: ihla dnu</translation>
+    </message>
+    <message>
+        <source>{0}: turn back</source>
+        <translation>{0}: natočiť späť</translation>
     </message>
     <message>
         <source>drill driver off while winding</source>

@@ -429,20 +429,31 @@ def build_program(
         -1,
         -1,
     )
-    above = f"{settings.drill_clearance_mm:g} mm above the board"
-    b.move(at_param, "Z", 0.0, f"drill {above}", -1, -1)
+    # The labels' texts are translated once; each nail only fills them in.
+    above = QCoreApplication.translate("JobFile", "{0:g} mm above the board").format(
+        settings.drill_clearance_mm
+    )
+    b.move(
+        at_param, "Z", 0.0, QCoreApplication.translate("JobFile", "drill {0}").format(above), -1, -1
+    )
+    drill_nail = QCoreApplication.translate("JobFile", "drill nail {0}")
+    turn_base = QCoreApplication.translate("JobFile", "{0}: turn the base")
+    to_radius = QCoreApplication.translate("JobFile", "{0}: tool to its radius")
+    drill = QCoreApplication.translate("JobFile", "{0}: drill")
+    at_bottom = QCoreApplication.translate("JobFile", "{0}: at the bottom")
+    back_up = QCoreApplication.translate("JobFile", "{0}: back {1}")
     for nail in range(nails):
-        label = f"drill nail {nail}"
-        b.turn_to(float(angles[nail]), at_param, f"{label}: turn the base", nail, -1)
-        b.move(at_param, "X", float(radii[nail]), f"{label}: tool to its radius", nail, -1)
-        b.move(at_param, "Z", bottom, f"{label}: drill", nail, -1)
+        label = drill_nail.format(nail)
+        b.turn_to(float(angles[nail]), at_param, turn_base.format(label), nail, -1)
+        b.move(at_param, "X", float(radii[nail]), to_radius.format(label), nail, -1)
+        b.move(at_param, "Z", bottom, drill.format(label), nail, -1)
         dwell_ops.append(len(b.ops))
-        b.add(Operation(OpKind.GCODE, at_param, message=f"{label}: at the bottom", line=dwell),
+        b.add(Operation(OpKind.GCODE, at_param, message=at_bottom.format(label), line=dwell),
               nail, -1)  # fmt: skip
-        b.move(at_param, "Z", 0.0, f"{label}: back {above}", nail, -1)
-    zero = "back to nail 0"
-    b.turn_to(float(angles[0]), at_param, f"{zero}: turn the base", 0, -1)
-    b.move(at_param, "X", float(radii[0]), f"{zero}: tool to its radius", 0, -1)
+        b.move(at_param, "Z", 0.0, back_up.format(label, above), nail, -1)
+    zero = QCoreApplication.translate("JobFile", "back to nail 0")
+    b.turn_to(float(angles[0]), at_param, turn_base.format(zero), 0, -1)
+    b.move(at_param, "X", float(radii[0]), to_radius.format(zero), 0, -1)
 
     first = sequence[0]
     at_first = job.entry_source(0)
@@ -477,12 +488,38 @@ def build_program(
         first,
         0,
     )
-    step_in = f"start at nail {first}"
+    step_in = QCoreApplication.translate("JobFile", "start at nail {0}").format(first)
     first_out = float(radii[first]) + settings.needle_out_mm
-    b.move(at_first, "X", first_out, f"{step_in}: needle out", first, 0)
-    b.turn_to(float(angles[first] + after[first]), at_first, f"{step_in}: turn", first, 0)
-    b.move(at_first, "X", r_in, f"{step_in}: needle in", first, 0)
-    b.turn_to(float(angles[first]), at_first, f"{step_in}: turn back", first, 0)
+    b.move(
+        at_first,
+        "X",
+        first_out,
+        QCoreApplication.translate("JobFile", "{0}: needle out").format(step_in),
+        first,
+        0,
+    )
+    b.turn_to(
+        float(angles[first] + after[first]),
+        at_first,
+        QCoreApplication.translate("JobFile", "{0}: turn").format(step_in),
+        first,
+        0,
+    )
+    b.move(
+        at_first,
+        "X",
+        r_in,
+        QCoreApplication.translate("JobFile", "{0}: needle in").format(step_in),
+        first,
+        0,
+    )
+    b.turn_to(
+        float(angles[first]),
+        at_first,
+        QCoreApplication.translate("JobFile", "{0}: turn back").format(step_in),
+        first,
+        0,
+    )
     b.add(
         Operation(
             OpKind.GCODE,
