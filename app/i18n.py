@@ -24,6 +24,7 @@ from PySide6.QtCore import (
     QTranslator,
 )
 
+from app.jobs import texts
 from app.profiles import RESOURCES
 
 I18N_DIR = RESOURCES / "i18n"
@@ -93,6 +94,7 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
     app = QCoreApplication.instance()
     assert app is not None
     remove()
+    texts.use(QCoreApplication.translate)  # job texts made without Qt follow it too
     language = chosen_language(choice)
     path = compiled(language, cache_dir)
     if path is None:

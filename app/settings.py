@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Generic, TypeVar
 
-from PySide6.QtCore import QByteArray, QSettings
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QByteArray, QCoreApplication, QSettings
 
 from app.profiles import DEFAULT_PROFILE, TRANSPORTS, available_profiles
 
@@ -250,12 +250,32 @@ class _MemoryStore:
         pass
 
 
+#: The warnings, translated when they are taken (see StationSettings.take_warnings).
+_BAD_VALUE = str(
+    QT_TRANSLATE_NOOP(
+        "Settings", "Setting {0} in {1} was {2}; it should be {3}, so the default is used"
+    )
+)
+_MALFORMED = str(QT_TRANSLATE_NOOP("Settings", "Settings file {0} is malformed: defaults are used"))
+_MALFORMED_KEPT = str(
+    QT_TRANSLATE_NOOP(
+        "Settings", "Settings file {0} is malformed: defaults are used; a copy is kept as {1}"
+    )
+)
+_NOT_READABLE = str(
+    QT_TRANSLATE_NOOP("Settings", "Settings file {0} is not readable: defaults are used")
+)
+
+
 class StationSettings:
     """The station's remembered values, each read checked against its :class:`Spec`."""
 
     def __init__(self, store: QSettings | None) -> None:
         self.store: QSettings | _MemoryStore = store if store is not None else _MemoryStore()
-        self._warnings: list[str] = []
+        #: Each warning as its English template and values: it is translated when it is
+        #: taken, because the settings are read before the language (itself a setting)
+        #: is installed.
+        self._warnings: list[tuple[str, tuple[object, ...]]] = []
         self._warned: set[str] = set()
         if isinstance(self.store, QSettings):
             self._check_file(self.store)
@@ -295,17 +315,14 @@ class StationSettings:
     def take_warnings(self) -> list[str]:
         """The warnings not shown yet (each is shown once, at start)."""
         taken, self._warnings = self._warnings, []
-        return taken
+        return [QCoreApplication.translate("Settings", text).format(*args) for text, args in taken]
 
     def _bad(self, spec: Spec[T], what: str) -> T:
         if spec.key not in self._warned:
             self._warned.add(spec.key)
-            text = (
-                f"Setting {spec.key} in {self.file_name} was {what}; "
-                f"it should be {spec.expects}, so the default is used"
-            )
-            _log.warning(text)
-            self._warnings.append(text)
+            args = (spec.key, self.file_name, what, spec.expects)
+            _log.warning(_BAD_VALUE.format(*args))
+            self._warnings.append((_BAD_VALUE, args))
         return spec.default
 
     def _check_file(self, store: QSettings) -> None:
@@ -314,18 +331,18 @@ class StationSettings:
         if status is QSettings.Status.NoError:
             return
         path = Path(store.fileName())
-        reason = "malformed" if status is QSettings.Status.FormatError else "not readable"
+        text = _MALFORMED if status is QSettings.Status.FormatError else _NOT_READABLE
         kept = ""
         if status is QSettings.Status.FormatError and path.is_file():
             copy = path.with_name(path.name + UNREADABLE_SUFFIX)
             try:
                 shutil.copyfile(path, copy)
-                kept = f"; a copy is kept as {copy}"
+                text = _MALFORMED_KEPT
+                kept = str(copy)
             except OSError:
-                kept = ""
-        text = f"Settings file {path} is {reason}: defaults are used{kept}"
-        _log.warning(text)
-        self._warnings.append(text)
+                pass
+        _log.warning(text.format(path, kept))
+        self._warnings.append((text, (path, kept)))
 
     # --- named values ---------------------------------------------------------------
 

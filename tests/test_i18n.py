@@ -19,8 +19,11 @@ from PySide6.QtWidgets import QAbstractButton, QApplication, QDockWidget, QGroup
 from pytestqt.qtbot import QtBot
 
 from app import i18n
+from app.jobs.loaders import load_job
+from app.jobs.program import JobFileError, OpKind, check_limits
 from app.machine import LinkState
 from app.profiles import available_profiles, load_profile
+from app.settings import StationSettings
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 from widgets.number_field import NumberField, format_number
@@ -304,3 +307,101 @@ def test_panel_plurals_take_the_languages_three_forms(
     for count, expected in counts.items():
         text = QCoreApplication.translate("DynamicsPanel", "%n value(s) written", "", count)
         assert text == expected
+
+
+DRILL_FILE = "M48\nINCH,TZ\nT01C0.0315\n%\nT01\nX1000Y1000\nX2000Y1000\nX3000Y1000\nM30\n"
+UNKNOWN_TOOL = "M48\nINCH,TZ\nT01C0.0315\n%\nT02\nX1000Y1000\nM30\n"
+
+
+@pytest.mark.parametrize(
+    ("language", "refusal", "prompt", "travel", "outside"),
+    [
+        (
+            "cs",
+            "neznámý nástroj: ",
+            "vložte T01, 0.80 mm, otvorů: 3",
+            "pojezd mezi otvory: ",
+            "najet na X5.080 Y2.540 — X 5.08 je mimo meze pojezdu 0…3",
+        ),
+        (
+            "sk",
+            "neznámy nástroj: ",
+            "vložte T01, 0.80 mm, otvorov: 3",
+            "pojazd medzi otvormi: ",
+            "nabehnúť na X5.080 Y2.540 — X 5.08 je mimo rozsahu posuvu 0…3",
+        ),
+    ],
+)
+def test_a_refused_job_file_and_the_bit_prompts_speak_the_language(
+    tmp_path: Path, language: str, refusal: str, prompt: str, travel: str, outside: str
+) -> None:
+    """Texts made on the loading thread are in the language installed when they are made."""
+    bad = tmp_path / "bad.drl"
+    bad.write_text(UNKNOWN_TOOL)
+    good = tmp_path / "good.drl"
+    good.write_text(DRILL_FILE)
+    assert i18n.install(language, tmp_path / "qm") == language
+
+    with pytest.raises(JobFileError) as refused:
+        load_job(bad, ("X", "Y"))
+    assert refused.value.line == 5
+    assert refused.value.reason.startswith(refusal)
+    assert "T02" in refused.value.reason
+    program = load_job(good, ("X", "Y"))
+    assert [op.message for op in program if op.kind is OpKind.WAIT] == [prompt]
+    assert any(travel in note for note in program.notes)
+    beyond = check_limits(program, {"X": (0.0, 3.0), "Y": (0.0, 3.0)})
+    assert len(beyond) == 2  # the holes at 0.2 and 0.3 inch
+    assert str(beyond[0]).endswith(outside)
+
+    i18n.remove()  # back in English, the same files read as before
+    with pytest.raises(JobFileError, match="unknown tool: "):
+        load_job(bad, ("X", "Y"))
+    english = load_job(good, ("X", "Y"))
+    assert [op.message for op in english if op.kind is OpKind.WAIT] == [
+        "insert T01, 0.80 mm, 3 holes"
+    ]
+
+
+@pytest.mark.parametrize(
+    ("language", "expected"),
+    [
+        ("cs", "nelze číst: složka, ne soubor úlohy"),
+        ("sk", "nedá sa čítať: priečinok, nie súbor úlohy"),
+    ],
+)
+def test_a_folder_opened_as_a_job_is_refused_in_the_language(
+    tmp_path: Path, language: str, expected: str
+) -> None:
+    folder = tmp_path / "job.nc"
+    folder.mkdir()
+    i18n.install(language, tmp_path / "qm")
+    with pytest.raises(JobFileError) as refused:
+        load_job(folder, ("X", "Y"))
+    assert refused.value.reason == expected
+
+
+@pytest.mark.parametrize(
+    ("language", "malformed", "bad_value"),
+    [
+        ("cs", "je poškozený: použijí se výchozí hodnoty", "Nastavení link/baud v souboru "),
+        ("sk", "je poškodený: použijú sa predvolené hodnoty", "Nastavenie link/baud v súbore "),
+    ],
+)
+def test_settings_warnings_speak_the_language_installed_when_they_are_shown(
+    tmp_path: Path, language: str, malformed: str, bad_value: str
+) -> None:
+    """The settings are read before the language is installed: their warnings wait for it."""
+    broken = tmp_path / "broken.ini"
+    broken.write_bytes(b"[main_window\npage=2")
+    corrupt = StationSettings(QSettings(str(broken), QSettings.Format.IniFormat))
+    odd = tmp_path / "odd.ini"
+    odd.write_text("[link]\nbaud=-5\n")
+    wrong = StationSettings(QSettings(str(odd), QSettings.Format.IniFormat))
+    assert wrong.baud is None  # read (and found wrong) while the station is still English
+    i18n.install(language, tmp_path / "qm")
+    (warning,) = corrupt.take_warnings()
+    assert str(broken) in warning
+    assert malformed in warning
+    (warning,) = wrong.take_warnings()
+    assert warning.startswith(bad_value)

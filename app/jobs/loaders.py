@@ -27,6 +27,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.formats.excellon.reader import (
     build_drill_program,
     read_drill_file,
@@ -99,8 +101,13 @@ class AmbiguousFormat(JobFileError):
         super().__init__(
             path.name,
             0,
-            f"which format? {why}: "
-            f"{' or '.join(t.description for t in choices)} (choose one: {keys})",
+            QCoreApplication.translate(
+                "JobFile", "which format? {0}: {1} (choose one: {2})"
+            ).format(
+                why,
+                QCoreApplication.translate("JobFile", " or ").join(t.description for t in choices),
+                keys,
+            ),
         )
         self.path = path
         self.choices = tuple(choices)
@@ -153,16 +160,30 @@ def type_for(path: Path, chosen: str | None = None) -> JobType:
         return candidates[0]
     head = read_job_head(path, SNIFF_CHARS)
     if not head.strip():
-        raise JobFileError(path.name, 0, "the file is empty")
+        raise JobFileError(path.name, 0, QCoreApplication.translate("JobFile", "the file is empty"))
     pool = candidates or JOB_TYPES
     matches = [t for t in pool if t.sniff is not None and t.sniff(head)]
     if len(matches) == 1:
         return matches[0]
     if matches:
-        raise AmbiguousFormat(path, matches, "its content fits several job types")
+        raise AmbiguousFormat(
+            path,
+            matches,
+            QCoreApplication.translate("JobFile", "its content fits several job types"),
+        )
     if candidates:
-        raise AmbiguousFormat(path, candidates, f"its content fits no {extension} job type")
-    raise JobFileError(path.name, 0, "not a job file this station knows (unknown type)")
+        raise AmbiguousFormat(
+            path,
+            candidates,
+            QCoreApplication.translate("JobFile", "its content fits no {0} job type").format(
+                extension
+            ),
+        )
+    raise JobFileError(
+        path.name,
+        0,
+        QCoreApplication.translate("JobFile", "not a job file this station knows (unknown type)"),
+    )
 
 
 def loader_for(path: Path) -> JobLoader:
@@ -209,7 +230,11 @@ POINT_LIST = register_loader(
 def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -> Program:
     """A drill file (or ``.dri`` pair) as a drill or draw program on the first two axes."""
     if len(axis_names) < 2:
-        raise JobFileError(path.name, 0, "a drill job needs a machine with X and Y axes")
+        raise JobFileError(
+            path.name,
+            0,
+            QCoreApplication.translate("JobFile", "a drill job needs a machine with X and Y axes"),
+        )
     job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
     axes = (axis_names[0], axis_names[1])
     mode: Literal["drill", "draw"] = "draw" if options.draw else "drill"

@@ -20,6 +20,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.jobs.names import clipped, shown
+from app.jobs.texts import translate
 
 
 class OpKind(enum.Enum):
@@ -54,7 +55,7 @@ class Operation:
     def describe(self) -> str:
         if self.kind is OpKind.MOVE:
             where = " ".join(f"{axis}{value:.3f}" for axis, value in self.target.items())
-            return f"move to {where}"
+            return translate("JobFile", "move to {0}").format(where)
         if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
             return f"{self.kind.value}: {self.message}"
         if self.kind is OpKind.GCODE and self.line:
@@ -75,7 +76,9 @@ class LineProblem:
     reason: str
 
     def __str__(self) -> str:
-        return f"line {self.line}: {clipped(self.text)} — {self.reason}"
+        return translate("JobFile", "line {0}: {1} — {2}").format(
+            self.line, clipped(self.text), self.reason
+        )
 
 
 @dataclass(frozen=True)
@@ -211,9 +214,13 @@ class LimitViolation:
     high: float
 
     def __str__(self) -> str:
-        return (
-            f"{self.operation.source}: {self.operation.describe()} — {self.axis} {self.value:g} "
-            f"is outside {self.low:g}…{self.high:g}"
+        return translate("JobFile", "{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}").format(
+            self.operation.source,
+            self.operation.describe(),
+            self.axis,
+            self.value,
+            self.low,
+            self.high,
         )
 
 

@@ -24,23 +24,27 @@ import stat
 from pathlib import Path
 
 from app.jobs.program import JobFileError
+from app.jobs.texts import translate
 
 #: The largest job file read (a million-line G-code file is about 30 MB).
 MAX_JOB_BYTES = 100_000_000
 #: How much of a file the format sniffers see.
 HEAD_BYTES = 16_384
 
-_KINDS = (
-    (stat.S_ISDIR, "a folder"),
-    (stat.S_ISFIFO, "a named pipe"),
-    (stat.S_ISCHR, "a device"),
-    (stat.S_ISBLK, "a block device"),
-    (stat.S_ISSOCK, "a socket"),
-)
-
 
 def _kind(mode: int) -> str:
-    return next((name for test, name in _KINDS if test(mode)), "not a regular file")
+    """What a file that is not a regular file is, in the operator's language."""
+    if stat.S_ISDIR(mode):
+        return translate("JobFile", "a folder")
+    if stat.S_ISFIFO(mode):
+        return translate("JobFile", "a named pipe")
+    if stat.S_ISCHR(mode):
+        return translate("JobFile", "a device")
+    if stat.S_ISBLK(mode):
+        return translate("JobFile", "a block device")
+    if stat.S_ISSOCK(mode):
+        return translate("JobFile", "a socket")
+    return translate("JobFile", "not a regular file")
 
 
 def _megabytes(size: int) -> str:
@@ -56,23 +60,24 @@ def read_job_bytes(path: Path, limit: int = MAX_JOB_BYTES, *, first: int | None 
     try:
         mode = os.stat(path).st_mode
     except OSError as exc:
-        raise JobFileError(name, 0, f"cannot read: {exc.strerror or exc}") from None
+        raise JobFileError(name, 0, _cannot_read(exc)) from None
     if not stat.S_ISREG(mode):
-        raise JobFileError(name, 0, f"cannot read: {_kind(mode)}, not a job file")
+        raise JobFileError(name, 0, _not_a_file(mode))
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as exc:
-        raise JobFileError(name, 0, f"cannot read: {exc.strerror or exc}") from None
+        raise JobFileError(name, 0, _cannot_read(exc)) from None
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):  # swapped for something else since the check
-            raise JobFileError(name, 0, f"cannot read: {_kind(info.st_mode)}, not a job file")
+            raise JobFileError(name, 0, _not_a_file(info.st_mode))
         if info.st_size > limit:
             raise JobFileError(
                 name,
                 0,
-                f"too large: {_megabytes(info.st_size)}; job files are read up to "
-                f"{_megabytes(limit)}",
+                translate("JobFile", "too large: {0}; job files are read up to {1}").format(
+                    _megabytes(info.st_size), _megabytes(limit)
+                ),
             )
         chunks: list[bytes] = []
         total = 0
@@ -85,23 +90,42 @@ def read_job_bytes(path: Path, limit: int = MAX_JOB_BYTES, *, first: int | None 
             total += len(chunk)
         if total > limit:  # grew while being read
             raise JobFileError(
-                name, 0, f"too large: over {_megabytes(limit)}; job files are read up to that"
+                name,
+                0,
+                translate("JobFile", "too large: over {0}; job files are read up to that").format(
+                    _megabytes(limit)
+                ),
             )
         return b"".join(chunks)
     except OSError as exc:
-        raise JobFileError(name, 0, f"cannot read: {exc.strerror or exc}") from None
+        raise JobFileError(name, 0, _cannot_read(exc)) from None
     finally:
         os.close(fd)
+
+
+def _cannot_read(exc: OSError) -> str:
+    return translate("JobFile", "cannot read: {0}").format(exc.strerror or exc)
+
+
+def _not_a_file(mode: int) -> str:
+    return translate("JobFile", "cannot read: {0}, not a job file").format(_kind(mode))
 
 
 def utf16_reason(raw: bytes) -> str | None:
     """Why ``raw`` reads as UTF-16 (its byte-order mark or its NUL bytes), or None."""
     if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        order = "little" if raw.startswith(codecs.BOM_UTF16_LE) else "big"
-        return f"UTF-16 text ({order}-endian byte-order mark): save it as UTF-8 or ASCII"
+        if raw.startswith(codecs.BOM_UTF16_LE):
+            return translate(
+                "JobFile", "UTF-16 text (little-endian byte-order mark): save it as UTF-8 or ASCII"
+            )
+        return translate(
+            "JobFile", "UTF-16 text (big-endian byte-order mark): save it as UTF-8 or ASCII"
+        )
     head = raw[:512]
     if len(head) >= 4 and head.count(0) * 3 >= len(head):
-        return "UTF-16 text (every other byte is zero): save it as UTF-8 or ASCII"
+        return translate(
+            "JobFile", "UTF-16 text (every other byte is zero): save it as UTF-8 or ASCII"
+        )
     return None
 
 
@@ -110,7 +134,10 @@ def _binary(raw: bytes, name: str) -> None:
     at = raw.find(b"\x00")
     if at >= 0:
         line = raw.count(b"\n", 0, at) + 1
-        raise JobFileError(name, line, f"binary data (a zero byte at offset {at}): not a job file")
+        reason = translate(
+            "JobFile", "binary data (a zero byte at offset {0}): not a job file"
+        ).format(at)
+        raise JobFileError(name, line, reason)
 
 
 def decode_job_text(raw: bytes, name: str, *, latin1_fallback: bool = False) -> str:
@@ -131,7 +158,8 @@ def decode_job_text(raw: bytes, name: str, *, latin1_fallback: bool = False) -> 
         if latin1_fallback:
             return raw.decode("latin-1")
         line = raw.count(b"\n", 0, exc.start) + 1
-        raise JobFileError(name, line, f"not UTF-8 text (byte 0x{raw[exc.start]:02x})") from None
+        reason = translate("JobFile", "not UTF-8 text (byte 0x{0:02x})")
+        raise JobFileError(name, line, reason.format(raw[exc.start])) from None
 
 
 def read_job_text(path: Path, limit: int = MAX_JOB_BYTES, *, latin1_fallback: bool = False) -> str:

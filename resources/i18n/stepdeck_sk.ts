@@ -1057,6 +1057,685 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
 </context>
 <context>
+    <name>JobFile</name>
+    <message>
+        <source>{0}: {1} has no diameter: its {2} hole(s) are not drilled (give the tool a diameter in the file)</source>
+        <extracomment>Diameters closer than this (mm) are the same bit. Tools whose holes are not drilled (no diameter). What the operator is told: each duplicate and each tool without a diameter.</extracomment>
+        <translation>{0}: {1} nemá priemer: jeho otvory ({2}) sa nevŕtajú (doplňte nástroju priemer v súbore)</translation>
+    </message>
+    <message>
+        <source>{0}: {1} is {2:.2f} mm like {3}: its {4} hole(s) are drilled with {3}&apos;s bit, no change</source>
+        <translation>{0}: {1} má {2:.2f} mm ako {3}: jeho otvory ({4}) sa vŕtajú vrtákom {3}, bez výmeny</translation>
+    </message>
+    <message>
+        <source>no &apos;Units : 1/10000 Inch&apos; line: not an EAGLE .dri</source>
+        <extracomment>The highest tool number a drill file may use (Excellon writes two or three digits).</extracomment>
+        <translation>chýba riadok „Units : 1/10000 Inch“: nejde o .dri z EAGLE</translation>
+    </message>
+    <message>
+        <source>its drill file {0} is missing</source>
+        <translation>chýba k nemu vŕtací súbor {0}</translation>
+    </message>
+    <message>
+        <source>{0}… ({1} digits)</source>
+        <translation>{0}… ({1} číslic)</translation>
+    </message>
+    <message>
+        <source>tool number T{0} is above T{1}</source>
+        <translation>číslo nástroja T{0} je nad T{1}</translation>
+    </message>
+    <message>
+        <source>tool diameter {0} is not a number</source>
+        <translation>priemer nástroja {0} nie je číslo</translation>
+    </message>
+    <message>
+        <source>tool diameter of T{0:02d} is {1:g}: a drill must be wider than 0</source>
+        <translation>priemer T{0:02d} je {1:g}: vrták musí mať priemer väčší ako 0</translation>
+    </message>
+    <message>
+        <source>routed arcs (G02/G03) cannot be drilled</source>
+        <translation>frézované oblúky (G02/G03) sa nedajú vŕtať</translation>
+    </message>
+    <message>
+        <source>G85 slot without an end point: nothing to cut to</source>
+        <translation>drážka G85 bez koncového bodu: nie je kam frézovať</translation>
+    </message>
+    <message>
+        <source>no unit in the file; inch assumed, as the Excellon step is</source>
+        <translation>súbor neuvádza jednotky; predpokladajú sa palce, rovnako ako pri kroku Excellonu</translation>
+    </message>
+    <message>
+        <source>not an Excellon statement: {0}</source>
+        <translation>nejde o príkaz Excellonu: {0}</translation>
+    </message>
+    <message>
+        <source>unknown tool: {0} is not defined</source>
+        <translation>neznámy nástroj: {0} nie je definovaný</translation>
+    </message>
+    <message>
+        <source>integer coordinates, but the file gives no number format (metric)</source>
+        <translation>celočíselné súradnice, ale súbor neuvádza formát čísel (metrický)</translation>
+    </message>
+    <message>
+        <source>the Excellon reader cannot read {0} ({1})</source>
+        <translation>čítačka Excellonu nedokáže prečítať {0} ({1})</translation>
+    </message>
+    <message>
+        <source>coordinates before any tool is selected: {0}</source>
+        <translation>súradnice pred výberom nástroja: {0}</translation>
+    </message>
+    <message>
+        <source>coordinates before the header: {0}</source>
+        <translation>súradnice pred hlavičkou: {0}</translation>
+    </message>
+    <message>
+        <source>coordinates after the end of the program: {0}</source>
+        <translation>súradnice za koncom programu: {0}</translation>
+    </message>
+    <message>
+        <source>a coordinate too large for a number</source>
+        <translation>súradnica je príliš veľká</translation>
+    </message>
+    <message>
+        <source>no holes in the file: nothing to drill</source>
+        <translation>v súbore nie sú žiadne otvory: nie je čo vŕtať</translation>
+    </message>
+    <message>
+        <source>{0} of {1} is not in the tool list</source>
+        <translation>{0} zo súboru {1} nie je v zozname nástrojov</translation>
+    </message>
+    <message>
+        <source>{0} is {1:.3f} mm here but {2:.3f} mm in {3}</source>
+        <translation>{0} má tu {1:.3f} mm, ale v {3} {2:.3f} mm</translation>
+    </message>
+    <message>
+        <source>{0} drills {1} holes here but {2} in {3}: the files do not belong together</source>
+        <translation>{0} tu vŕta {1} otvorov, ale v {3} {2}: súbory k sebe nepatria</translation>
+    </message>
+    <message>
+        <source> (also {0})</source>
+        <extracomment>Duplicate tools and tools without a diameter, &quot;file:line: text&quot; (see bits.py).</extracomment>
+        <translation> (aj {0})</translation>
+    </message>
+    <message>
+        <source>insert {0}, {1:.2f} mm, {2} hole{3}</source>
+        <translation>vložte {0}, {1:.2f} mm, {2} otvor{3}</translation>
+    </message>
+    <message>
+        <source>insert {0}, {1:.2f} mm, {2} holes{3}</source>
+        <translation>vložte {0}, {1:.2f} mm, otvorov: {2}{3}</translation>
+    </message>
+    <message>
+        <source>pen for {0}, {1:.2f} mm, {2} hole{3}</source>
+        <translation>pero pre {0}, {1:.2f} mm, {2} otvor{3}</translation>
+    </message>
+    <message>
+        <source>pen for {0}, {1:.2f} mm, {2} holes{3}</source>
+        <translation>pero pre {0}, {1:.2f} mm, otvorov: {2}{3}</translation>
+    </message>
+    <message>
+        <source>travel between holes: {0:.1f} mm in file order, {1:.1f} mm optimised ({2:.1f} mm saved)</source>
+        <translation>pojazd medzi otvormi: {0:.1f} mm v poradí súboru, {1:.1f} mm po optimalizácii (ušetrené {2:.1f} mm)</translation>
+    </message>
+    <message>
+        <source>: warning: </source>
+        <translation>: upozornenie: </translation>
+    </message>
+    <message>
+        <source>arc target invalid: an R arc needs distinct ends (error:33): {0}</source>
+        <extracomment>Largest chord error of a flattened arc (mm, GRBL&apos;s $12) and the fewest segments one gets. The most chords one arc becomes; an arc needing more is refused. The most inner vertices all the arcs of one file become. GRBL&apos;s arc definition check: the end&apos;s radius may differ from the start&apos;s by this much… …and beyond it by at most 0.5 mm and 0.1 % of the radius (gcode.c).</extracomment>
+        <translation>neplatný cieľ oblúka: oblúk R potrebuje rôzne koncové body (error:33): {0}</translation>
+    </message>
+    <message>
+        <source>arc radius error: R {0:g} mm is less than half the chord {1:g} mm (error:34): {2}</source>
+        <translation>chyba polomeru oblúka: R {0:g} mm je menší ako polovica tetivy {1:g} mm (error:34): {2}</translation>
+    </message>
+    <message>
+        <source>arc without offsets: it needs I/J or R (error:35): {0}</source>
+        <translation>oblúk bez stredu: potrebuje I/J alebo R (error:35): {0}</translation>
+    </message>
+    <message>
+        <source>arc coordinates too large to draw: {0}</source>
+        <translation>súradnice oblúka sú príliš veľké na vykreslenie: {0}</translation>
+    </message>
+    <message>
+        <source>arc end not on its circle: radius {0:.4g} mm at the start, {1:.4g} mm at the end (error:33): {2}</source>
+        <translation>koniec oblúka neleží na jeho kružnici: polomer {0:.4g} mm na začiatku, {1:.4g} mm na konci (error:33): {2}</translation>
+    </message>
+    <message>
+        <source>arc too long: {0:.4g} m of radius {1:.4g} mm needs {2} chords at {3:g} mm (at most {4}); no machine&apos;s travel holds it</source>
+        <translation>oblúk je príliš dlhý: {0:.4g} m s polomerom {1:.4g} mm vyžaduje {2} úsečiek pri {3:g} mm (najviac {4}); taký pojazd nemá žiadny stroj</translation>
+    </message>
+    <message>
+        <source>arcs too many: the file&apos;s arcs need more than {0:,} vertices at {1:g} mm</source>
+        <translation>príliš veľa oblúkov: oblúky v súbore vyžadujú viac ako {0:,} vrcholov pri {1:g} mm</translation>
+    </message>
+    <message>
+        <source>more than 16 axes</source>
+        <extracomment>Pen lines sent as the profile&apos;s own pen command.</extracomment>
+        <translation>viac ako 16 osí</translation>
+    </message>
+    <message>
+        <source>no G-code to send in the file</source>
+        <translation>v súbore nie je žiadny G-kód na odoslanie</translation>
+    </message>
+    <message>
+        <source>named parameters/expressions are not G-code this machine runs</source>
+        <extracomment>Translated where it is used (a parameter line is refused in the operator&apos;s language).</extracomment>
+        <translation>pomenované parametre a výrazy nie sú G-kód, ktorý tento stroj vykonáva</translation>
+    </message>
+    <message>
+        <source>the {0}</source>
+        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter).</extracomment>
+        <translation>stroj {0}</translation>
+    </message>
+    <message>
+        <source>this machine</source>
+        <translation>tento stroj</translation>
+    </message>
+    <message>
+        <source>machine</source>
+        <translation>stroj</translation>
+    </message>
+    <message>
+        <source>word repeated: {0} twice (error:25): {1}</source>
+        <extracomment>A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
+        <translation>opakované slovo: {0} dvakrát (error:25): {1}</translation>
+    </message>
+    <message>
+        <source>max value exceeded: T{0} above T{1} (error:38)</source>
+        <translation>prekročená najväčšia hodnota: T{0} nad T{1} (error:38)</translation>
+    </message>
+    <message>
+        <source>negative value: {0} cannot be negative (error:4)</source>
+        <translation>záporná hodnota: {0} nesmie byť záporné (error:4)</translation>
+    </message>
+    <message>
+        <source>modal group violation: two motion words (error:21): {0}</source>
+        <translation>porušenie modálnej skupiny: dva príkazy pohybu (error:21): {0}</translation>
+    </message>
+    <message>
+        <source>invalid line number: N{0} above N{1} (error:27)</source>
+        <translation>neplatné číslo riadku: N{0} nad N{1} (error:27)</translation>
+    </message>
+    <message>
+        <source>M{0}: paused</source>
+        <translation>M{0}: pozastavené</translation>
+    </message>
+    <message>
+        <source>{0} cannot execute {1}</source>
+        <translation>{0} nevie vykonať {1}</translation>
+    </message>
+    <message>
+        <source>? not sent: the station asks for the status itself</source>
+        <translation>? neodoslané: stanica sa na stav pýta sama</translation>
+    </message>
+    <message>
+        <source>{0} ({1}) is a real-time command, not a line of a job</source>
+        <translation>{0} ({1}) je príkaz reálneho času, nie riadok úlohy</translation>
+    </message>
+    <message>
+        <source>arc without axis words (error:26): {0}</source>
+        <translation>oblúk bez súradníc osí (error:26): {0}</translation>
+    </message>
+    <message>
+        <source>feed rate undefined: {0} before any F sets one (error:22): {1}</source>
+        <translation>posuv nie je zadaný: {0} skôr, než ho nastaví F (error:22): {1}</translation>
+    </message>
+    <message>
+        <source>{0} is not ASCII</source>
+        <translation>{0} nie je ASCII</translation>
+    </message>
+    <message>
+        <source>{0} characters; a line holds at most {1}</source>
+        <translation>{0} znakov; riadok pojme najviac {1}</translation>
+    </message>
+    <message>
+        <source>{0} has no {1} axis</source>
+        <translation>{0} nemá os {1}</translation>
+    </message>
+    <message>
+        <source>not sent: {0} ({1})</source>
+        <translation>neodoslané: {0} ({1})</translation>
+    </message>
+    <message>
+        <source>{0} pen line sent as the {1}&apos;s {2}/{3}</source>
+        <translation>riadky pera odoslané ako {2}/{3} stroja {1}: {0}</translation>
+    </message>
+    <message>
+        <source>{0} pen lines sent as the {1}&apos;s {2}/{3}</source>
+        <translation>riadky pera odoslané ako {2}/{3} stroja {1}: {0}</translation>
+    </message>
+    <message>
+        <source>pen servo {0}: S{1:g} lowers the pen, S{2:g} lifts it</source>
+        <translation>servo pera {0}: S{1:g} pero spúšťa, S{2:g} dvíha</translation>
+    </message>
+    <message>
+        <source>Z heights are the pen: above 0 up, 0 or below down</source>
+        <translation>výška Z je pero: nad 0 hore, 0 a nižšie dole</translation>
+    </message>
+    <message>
+        <source>Z not sent on {0} line(s): Z is the {1}&apos;s pen and this file&apos;s Z never lifts it</source>
+        <translation>Z neodoslané na riadkoch: {0}; Z je pero stroja {1} a Z v tomto súbore ho nikdy nezdvíha</translation>
+    </message>
+    <message>
+        <source>{0} G21 line not sent: the machine works in mm</source>
+        <translation>riadky G21 neodoslané: {0}; stroj pracuje v mm</translation>
+    </message>
+    <message>
+        <source>{0} G21 lines not sent: the machine works in mm</source>
+        <translation>riadky G21 neodoslané: {0}; stroj pracuje v mm</translation>
+    </message>
+    <message>
+        <source>G4 P is seconds on the {0} (GRBL): {1} dwell(s) wait {2} in all; a file written for milliseconds (Marlin, Inkscape Unicorn) waits a thousand times too long here</source>
+        <translation>G4 P sú na stroji {0} (GRBL) sekundy: prestávky ({1}) čakajú spolu {2}; súbor písaný pre milisekundy (Marlin, Inkscape Unicorn) tu čaká tisíckrát dlhšie</translation>
+    </message>
+    <message>
+        <source>no pen commands: G0 moves are shown as travel, G1/G2/G3 as work</source>
+        <translation>žiadne príkazy pera: pohyby G0 sa zobrazujú ako prejazd, G1/G2/G3 ako práca</translation>
+    </message>
+    <message>
+        <source> and {0} more</source>
+        <translation> a ďalších {0}</translation>
+    </message>
+    <message>
+        <source>skipped {0} line(s): {1} (lines {2}{3})</source>
+        <translation>preskočené riadky: {0}: {1} (riadky {2}{3})</translation>
+    </message>
+    <message>
+        <source>could not split the file into lines</source>
+        <extracomment>One record per line: group 1 is the G0/G1 digit of a plain move (a comment may follow), empty for any other line.</extracomment>
+        <translation>súbor sa nedal rozdeliť na riadky</translation>
+    </message>
+    <message>
+        <source>could not read the coordinates</source>
+        <translation>súradnice sa nedali prečítať</translation>
+    </message>
+    <message>
+        <source>status query</source>
+        <extracomment>The longest line a board takes, without its line end (PROTOCOLS.md section 4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (PROTOCOLS §4). Their names are translated where they are shown.</extracomment>
+        <translation>dopyt na stav</translation>
+    </message>
+    <message>
+        <source>feed hold</source>
+        <translation>pozastavenie posuvu</translation>
+    </message>
+    <message>
+        <source>cycle start</source>
+        <translation>štart cyklu</translation>
+    </message>
+    <message>
+        <source>soft reset</source>
+        <translation>softvérový reset</translation>
+    </message>
+    <message>
+        <source>malformed G-code at {0} in {1}</source>
+        <extracomment>The cached tokenisations (per distinct line text) stop growing here: repeated lines (pen commands, dwells) are what the cache is for.</extracomment>
+        <translation>chybný G-kód pri {0} v {1}</translation>
+    </message>
+    <message>
+        <source>continue when ready</source>
+        <translation>pokračujte, keď budete pripravení</translation>
+    </message>
+    <message>
+        <source>expected {0} numbers, found {1}</source>
+        <translation>očakávaných čísel: {0}, nájdených: {1}</translation>
+    </message>
+    <message>
+        <source>not a number in {0}</source>
+        <translation>nie je číslo v {0}</translation>
+    </message>
+    <message>
+        <source>not a finite number in {0}</source>
+        <translation>nie je konečné číslo v {0}</translation>
+    </message>
+    <message>
+        <source>no positions in the file</source>
+        <translation>v súbore nie sú žiadne polohy</translation>
+    </message>
+    <message>
+        <source>turn beside it</source>
+        <extracomment>The winder&apos;s axes: base angle (deg), tool radius (mm), tool along the drill axis (mm). The nail each operation serves (-1: none). The sequence entry each operation winds to (-1: drill phase). The axis each MOVE sets (0 A, 1 X, 2 Z; -1 for other operations) and its value. Index of the operator&apos;s WAIT between drilling and winding. Model seconds on the profile it was built for (None without a profile). The largest outer radius (each nail&apos;s own is its radius plus ``needle_out_mm``). The dwells at the holes&apos; bottoms (``G4`` operations) and how long each is. Translated once per program (an operation is made each time it is read).</extracomment>
+        <translation>natočiť vedľa neho</translation>
+    </message>
+    <message>
+        <source>needle out</source>
+        <translation>ihla von</translation>
+    </message>
+    <message>
+        <source>round the nail</source>
+        <translation>okolo klinca</translation>
+    </message>
+    <message>
+        <source>needle in</source>
+        <translation>ihla dnu</translation>
+    </message>
+    <message>
+        <source>nail {0} ({1}/{2}): {3}</source>
+        <translation>klinec {0} ({1}/{2}): {3}</translation>
+    </message>
+    <message>
+        <source>a board of {0:g} cm radius leaves no room for the needle {1:g} mm inside the nails</source>
+        <translation>doska s polomerom {0:g} cm nenecháva miesto pre ihlu {1:g} mm vnútri klincov</translation>
+    </message>
+    <message>
+        <source>drill phase: {0} nails</source>
+        <translation>vŕtanie: klincov {0}</translation>
+    </message>
+    <message>
+        <source>{0:g} mm above the board</source>
+        <translation>{0:g} mm nad doskou</translation>
+    </message>
+    <message>
+        <source>drill {0}</source>
+        <translation>vrták {0}</translation>
+    </message>
+    <message>
+        <source>drill nail {0}</source>
+        <translation>vŕtanie pre klinec {0}</translation>
+    </message>
+    <message>
+        <source>{0}: turn the base</source>
+        <translation>{0}: natočiť základňu</translation>
+    </message>
+    <message>
+        <source>{0}: tool to its radius</source>
+        <translation>{0}: nástroj na jeho polomer</translation>
+    </message>
+    <message>
+        <source>{0}: drill</source>
+        <translation>{0}: vŕtať</translation>
+    </message>
+    <message>
+        <source>{0}: at the bottom</source>
+        <translation>{0}: na dne</translation>
+    </message>
+    <message>
+        <source>{0}: back {1}</source>
+        <translation>{0}: späť {1}</translation>
+    </message>
+    <message>
+        <source>back to nail 0</source>
+        <translation>späť ku klincu 0</translation>
+    </message>
+    <message>
+        <source>winding: {0} connections</source>
+        <translation>navíjanie: spojov {0}</translation>
+    </message>
+    <message>
+        <source>drivers off while waiting</source>
+        <translation>budiče vypnuté počas čakania</translation>
+    </message>
+    <message>
+        <source>Insert the nails, tie the thread to nail {0}</source>
+        <translation>Vložte klince, priviažte niť ku klincu {0}</translation>
+    </message>
+    <message>
+        <source>start at nail {0}</source>
+        <translation>začiatok pri klinci {0}</translation>
+    </message>
+    <message>
+        <source>{0}: needle out</source>
+        <translation>{0}: ihla von</translation>
+    </message>
+    <message>
+        <source>{0}: turn</source>
+        <translation>{0}: natočiť</translation>
+    </message>
+    <message>
+        <source>{0}: needle in</source>
+        <translation>{0}: ihla dnu</translation>
+    </message>
+    <message>
+        <source>{0}: turn back</source>
+        <translation>{0}: natočiť späť</translation>
+    </message>
+    <message>
+        <source>drill driver off while winding</source>
+        <translation>budič vŕtačky vypnutý počas navíjania</translation>
+    </message>
+    <message>
+        <source>winding done: tie the thread off at nail {0}</source>
+        <translation>navíjanie hotové: priviažte niť na klinci {0}</translation>
+    </message>
+    <message>
+        <source>a string-art job needs the winder&apos;s axes A, X and Z (profile string-art); this machine has {0}</source>
+        <translation>úloha string-art potrebuje osi navíjačky A, X a Z (profil string-art); tento stroj má {0}</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žiadne</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <extracomment>The most nails a board may have (boards are wound with a few hundred). The most sides of a polygonal board. The largest board radius, in cm (no winder turns a board of 10 m). The most nail indices in a sequence. A nail index with more digits is out of range on any board (MAX_NAILS has five).</extracomment>
+        <translation>kruhu</translation>
+    </message>
+    <message>
+        <source>{0}-gon</source>
+        <translation>{0}-uholníku</translation>
+    </message>
+    <message>
+        <source>{0} nails on a {1} of {2:g} cm radius, {3} connections, thread {4:.1f} m</source>
+        <extracomment>The line of each sequence entry in ``poradi_path`` (1-based; int32 for long lists). The line of each ``param.txt`` key (absent: supplied by the operator).</extracomment>
+        <translation>klincov: {0} na {1} s polomerom {2:g} cm, spojov: {3}, niť {4:.1f} m</translation>
+    </message>
+    <message>
+        <source>, about {0}</source>
+        <translation>, asi {0}</translation>
+    </message>
+    <message>
+        <source>a nail list without {0}: give the board (shape, at least {1} nails, radius) to load its {2} entries</source>
+        <translation>zoznam klincov bez {0}: zadajte dosku (tvar, najmenej {1} klincov, polomer), aby sa dali načítať jeho položky ({2})</translation>
+    </message>
+    <message>
+        <source>expected &apos;key = value&apos;, found {0}</source>
+        <translation>očakávané „kľúč = hodnota“, nájdené {0}</translation>
+    </message>
+    <message>
+        <source>{0} given twice (first on line {1})</source>
+        <translation>{0} zadané dvakrát (prvýkrát na riadku {1})</translation>
+    </message>
+    <message>
+        <source>{0} = {1} is not a number</source>
+        <translation>{0} = {1} nie je číslo</translation>
+    </message>
+    <message>
+        <source>{0} = {1} is too large</source>
+        <translation>{0} = {1} je príliš veľké</translation>
+    </message>
+    <message>
+        <source>{0} = {1} is not a whole number</source>
+        <translation>{0} = {1} nie je celé číslo</translation>
+    </message>
+    <message>
+        <source>no &apos;{0} = …&apos; line (line 0: missing, not wrong)</source>
+        <translation>chýba riadok „{0} = …“ (riadok 0: chýba, nie je chybný)</translation>
+    </message>
+    <message>
+        <source>tvar = {0}: a polygon has at most {1} sides</source>
+        <translation>tvar = {0}: mnohouholník má najviac {1} strán</translation>
+    </message>
+    <message>
+        <source>tvar = {0}: the shape must be 0 (a circle) or 3 or more (a regular polygon)</source>
+        <translation>tvar = {0}: tvar musí byť 0 (kruh) alebo 3 a viac (pravidelný mnohouholník)</translation>
+    </message>
+    <message>
+        <source>pocet_hrebiku = {0}: a board has at most {1} nails</source>
+        <translation>pocet_hrebiku = {0}: doska má najviac {1} klincov</translation>
+    </message>
+    <message>
+        <source>pocet_hrebiku = {0}: a board needs at least {1} nails</source>
+        <translation>pocet_hrebiku = {0}: doska potrebuje najmenej {1} klincov</translation>
+    </message>
+    <message>
+        <source>polomer_matrice = {0:g} cm: a board&apos;s radius is at most {1}</source>
+        <translation>polomer_matrice = {0:g} cm: polomer dosky je najviac {1}</translation>
+    </message>
+    <message>
+        <source>polomer_matrice = {0:g} cm: the nails sit {1:g} cm inside the edge, so the radius must be larger than {1:g} cm</source>
+        <translation>polomer_matrice = {0:g} cm: klince sú {1:g} cm od okraja, polomer preto musí byť väčší ako {1:g} cm</translation>
+    </message>
+    <message>
+        <source>number {0} of the file: {1} is not a whole number</source>
+        <extracomment>Byte classes of a nail list: separators, digits, signs, anything else.</extracomment>
+        <translation>číslo {0} v súbore: {1} nie je celé číslo</translation>
+    </message>
+    <message>
+        <source>no nail indices in the file</source>
+        <translation>v súbore nie sú žiadne čísla klincov</translation>
+    </message>
+    <message>
+        <source>the count of the file has {1} digits: out of range on any board (at most {2} nails, {3} entries)</source>
+        <translation>počet v súbore má {1} číslic: mimo rozsahu akejkoľvek dosky (najviac {2} klincov, {3} položiek)</translation>
+    </message>
+    <message>
+        <source>number {0} of the file has {1} digits: out of range on any board (at most {2} nails, {3} entries)</source>
+        <translation>číslo {0} v súbore má {1} číslic: mimo rozsahu akejkoľvek dosky (najviac {2} klincov, {3} položiek)</translation>
+    </message>
+    <message>
+        <source>more than {0} nail indices</source>
+        <translation>viac ako {0} čísel klincov</translation>
+    </message>
+    <message>
+        <source>could not read the nail indices</source>
+        <translation>čísla klincov sa nedali prečítať</translation>
+    </message>
+    <message>
+        <source>the count says {0} nail indices, but {1} follow</source>
+        <translation>počet uvádza {0} čísel klincov, ale nasleduje {1}</translation>
+    </message>
+    <message>
+        <source>fewer than two nails: nothing to wind</source>
+        <translation>menej ako dva klince: nie je čo navíjať</translation>
+    </message>
+    <message>
+        <source> ({0} more out of range)</source>
+        <translation> (mimo rozsahu sú ešte ďalšie: {0})</translation>
+    </message>
+    <message>
+        <source>entry {0}: nail {1} is out of range 0…{2}{3}</source>
+        <translation>položka {0}: klinec {1} je mimo rozsahu 0…{2}{3}</translation>
+    </message>
+    <message>
+        <source>entries {0} and {1}: nail {2} twice in a row (a thread to itself)</source>
+        <translation>položky {0} a {1}: klinec {2} dvakrát za sebou (niť sama k sebe)</translation>
+    </message>
+    <message>
+        <source>the board entered: {0}</source>
+        <translation>zadaná doska: {0}</translation>
+    </message>
+    <message>
+        <source>no {0} beside it (the nail order)</source>
+        <translation>vedľa neho chýba {0} (poradie klincov)</translation>
+    </message>
+    <message>
+        <source>which format? {0}: {1} (choose one: {2})</source>
+        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
+        <translation>ktorý formát? {0}: {1} (vyberte jeden: {2})</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> alebo </translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <extracomment>Lower-case extension (with the dot) → loader; the dock&apos;s first choice. Every registered job type in registration order: file-dialog filters and sniffing.</extracomment>
+        <translation>súbor je prázdny</translation>
+    </message>
+    <message>
+        <source>its content fits several job types</source>
+        <translation>obsah zodpovedá viacerým typom úloh</translation>
+    </message>
+    <message>
+        <source>its content fits no {0} job type</source>
+        <translation>obsah nezodpovedá žiadnemu typu úlohy {0}</translation>
+    </message>
+    <message>
+        <source>not a job file this station knows (unknown type)</source>
+        <translation>nejde o súbor úlohy, ktorý stanica pozná (neznámy typ)</translation>
+    </message>
+    <message>
+        <source>a drill job needs a machine with X and Y axes</source>
+        <translation>vŕtacia úloha potrebuje stroj s osami X a Y</translation>
+    </message>
+    <message>
+        <source>a folder</source>
+        <extracomment>How much of a file the format sniffers see.</extracomment>
+        <translation>priečinok</translation>
+    </message>
+    <message>
+        <source>a named pipe</source>
+        <translation>pomenovaná rúra</translation>
+    </message>
+    <message>
+        <source>a device</source>
+        <translation>zariadenie</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>blokové zariadenie</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>soket</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>nie je bežný súbor</translation>
+    </message>
+    <message>
+        <source>too large: {0}; job files are read up to {1}</source>
+        <translation>príliš veľký: {0}; súbory úloh sa čítajú do {1}</translation>
+    </message>
+    <message>
+        <source>too large: over {0}; job files are read up to that</source>
+        <translation>príliš veľký: nad {0}; súbory úloh sa čítajú len do tejto veľkosti</translation>
+    </message>
+    <message>
+        <source>cannot read: {0}</source>
+        <translation>nedá sa čítať: {0}</translation>
+    </message>
+    <message>
+        <source>cannot read: {0}, not a job file</source>
+        <translation>nedá sa čítať: {0}, nie súbor úlohy</translation>
+    </message>
+    <message>
+        <source>UTF-16 text (little-endian byte-order mark): save it as UTF-8 or ASCII</source>
+        <translation>text v UTF-16 (značka poradia bajtov little-endian): uložte ho ako UTF-8 alebo ASCII</translation>
+    </message>
+    <message>
+        <source>UTF-16 text (big-endian byte-order mark): save it as UTF-8 or ASCII</source>
+        <translation>text v UTF-16 (značka poradia bajtov big-endian): uložte ho ako UTF-8 alebo ASCII</translation>
+    </message>
+    <message>
+        <source>UTF-16 text (every other byte is zero): save it as UTF-8 or ASCII</source>
+        <translation>text v UTF-16 (každý druhý bajt je nula): uložte ho ako UTF-8 alebo ASCII</translation>
+    </message>
+    <message>
+        <source>binary data (a zero byte at offset {0}): not a job file</source>
+        <translation>binárne dáta (nulový bajt na pozícii {0}): nejde o súbor úlohy</translation>
+    </message>
+    <message>
+        <source>not UTF-8 text (byte 0x{0:02x})</source>
+        <translation>nejde o text v UTF-8 (bajt 0x{0:02x})</translation>
+    </message>
+    <message>
+        <source>move to {0}</source>
+        <extracomment>G-code text a G-code machine is sent as written (G-code files); empty: the dialect renders the operation from its kind and target.</extracomment>
+        <translation>nabehnúť na {0}</translation>
+    </message>
+    <message>
+        <source>line {0}: {1} — {2}</source>
+        <translation>riadok {0}: {1} — {2}</translation>
+    </message>
+    <message>
+        <source>{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}</source>
+        <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
+        <translation>{0}: {1} — {2} {3:g} je mimo rozsahu posuvu {4:g}…{5:g}</translation>
+    </message>
+</context>
+<context>
     <name>JobPreview</name>
     <message>
         <source>work</source>
@@ -2209,6 +2888,26 @@ sa nevykresľuje</translation>
     <message>
         <source>Motion refused: {0}</source>
         <translation>Pohyb odmietnutý: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Settings</name>
+    <message>
+        <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is malformed: defaults are used</source>
+        <translation>Súbor nastavení {0} je poškodený: použijú sa predvolené hodnoty</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is malformed: defaults are used; a copy is kept as {1}</source>
+        <translation>Súbor nastavení {0} je poškodený: použijú sa predvolené hodnoty; jeho kópia je uložená ako {1}</translation>
+    </message>
+    <message>
+        <source>Settings file {0} is not readable: defaults are used</source>
+        <translation>Súbor nastavení {0} sa nedá prečítať: použijú sa predvolené hodnoty</translation>
     </message>
 </context>
 <context>

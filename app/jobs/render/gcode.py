@@ -17,6 +17,7 @@ program export (:mod:`app.jobs.formats.string_art.export`):
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Mapping, Sequence
 
 from app.jobs.program import Operation, OpKind
@@ -95,7 +96,9 @@ def render_operation(
 
 def comment(text: str, width: int = MAX_LINE, prefix: str = "") -> str:
     """``prefix(text)`` as one G-code comment: ASCII, no nested parentheses, within ``width``."""
-    clean = text.encode("ascii", "replace").decode("ascii")
+    # A translated message keeps its letters without their accents ("Vložte" → "Vlozte").
+    plain = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
+    clean = plain.encode("ascii", "replace").decode("ascii")
     clean = clean.replace("(", "[").replace(")", "]").replace("\n", " ").strip()
     room = width - len(prefix) - 2
     if len(clean) > room:

@@ -17,6 +17,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from PySide6.QtCore import QCoreApplication
+
 #: Diameters closer than this (mm) are the same bit.
 SAME_BIT_MM = 0.0005
 
@@ -60,16 +62,22 @@ def plan_bits(
         if not diameter > 0:
             left_out.append(name)
             flags.append(
-                f"{where}: {name} has no diameter: its {holes} hole(s) are not drilled "
-                "(give the tool a diameter in the file)"
+                QCoreApplication.translate(
+                    "JobFile",
+                    "{0}: {1} has no diameter: its {2} hole(s) are not drilled "
+                    "(give the tool a diameter in the file)",
+                ).format(where, name, holes)
             )
             continue
         for index, group in enumerate(groups):
             if abs(group.diameter_mm - diameter) < SAME_BIT_MM:
                 groups[index] = BitGroup(group.tool, group.diameter_mm, (*group.tools, name))
                 flags.append(
-                    f"{where}: {name} is {diameter:.2f} mm like {group.tool}: "
-                    f"its {holes} hole(s) are drilled with {group.tool}'s bit, no change"
+                    QCoreApplication.translate(
+                        "JobFile",
+                        "{0}: {1} is {2:.2f} mm like {3}: its {4} hole(s) are drilled "
+                        "with {3}'s bit, no change",
+                    ).format(where, name, diameter, group.tool, holes)
                 )
                 break
         else:

@@ -45,6 +45,7 @@ from gerbonara.cam import FileSettings
 from gerbonara.excellon import ExcellonParser
 from gerbonara.graphic_objects import Arc, Flash, Line
 from gerbonara.utils import MM, Inch
+from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.excellon.bits import plan_bits
 from app.jobs.names import quoted, shown
@@ -162,7 +163,13 @@ def read_dri(path: Path) -> DriInfo:
             drill_file = re.split(r"[\\/]", line)[-1]
             in_plotfiles = False
     if unit is None:
-        raise JobFileError(path.name, 0, "no 'Units : 1/10000 Inch' line: not an EAGLE .dri")
+        raise JobFileError(
+            path.name,
+            0,
+            QCoreApplication.translate(
+                "JobFile", "no 'Units : 1/10000 Inch' line: not an EAGLE .dri"
+            ),
+        )
     return DriInfo(unit, step, absolute, tools, drill_file)
 
 
@@ -173,7 +180,13 @@ def _drill_file_of(dri: Path, info: DriInfo) -> Path:
     for candidate in candidates:
         if candidate.is_file() and candidate != dri:
             return candidate
-    raise JobFileError(dri.name, 0, f"its drill file {info.drill_file or dri.stem!r} is missing")
+    raise JobFileError(
+        dri.name,
+        0,
+        QCoreApplication.translate("JobFile", "its drill file {0} is missing").format(
+            repr(info.drill_file or dri.stem)
+        ),
+    )
 
 
 # --- reading ------------------------------------------------------------------------
@@ -246,9 +259,19 @@ def _prescan(name: str, lines: Sequence[str]) -> None:
         if (tool := _TOOL_LINE.match(line)) is not None:
             index = tool[1]
             if len(index) > 6 or int(index) > MAX_TOOL_NUMBER:
-                shown = index if len(index) <= 12 else f"{index[:6]}… ({len(index)} digits)"
+                shown = (
+                    index
+                    if len(index) <= 12
+                    else QCoreApplication.translate("JobFile", "{0}… ({1} digits)").format(
+                        index[:6], len(index)
+                    )
+                )
                 raise JobFileError(
-                    name, number, f"tool number T{shown} is above T{MAX_TOOL_NUMBER}"
+                    name,
+                    number,
+                    QCoreApplication.translate("JobFile", "tool number T{0} is above T{1}").format(
+                        shown, MAX_TOOL_NUMBER
+                    ),
                 )
             diameter = _TOOL_DIAMETER.search(tool[2])
             if diameter is not None:
@@ -256,19 +279,35 @@ def _prescan(name: str, lines: Sequence[str]) -> None:
                     value = float(diameter[1])
                 except ValueError:
                     raise JobFileError(
-                        name, number, f"tool diameter {diameter[1]!r} is not a number"
+                        name,
+                        number,
+                        QCoreApplication.translate(
+                            "JobFile", "tool diameter {0} is not a number"
+                        ).format(repr(diameter[1])),
                     ) from None
                 if not value > 0 or not math.isfinite(value):
                     raise JobFileError(
                         name,
                         number,
-                        f"tool diameter of T{int(index):02d} is {value:g}: a drill must be wider "
-                        "than 0",
+                        QCoreApplication.translate(
+                            "JobFile",
+                            "tool diameter of T{0:02d} is {1:g}: a drill must be wider than 0",
+                        ).format(int(index), value),
                     )
         elif _ROUTED_ARC.match(line):
-            raise JobFileError(name, number, "routed arcs (G02/G03) cannot be drilled")
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate("JobFile", "routed arcs (G02/G03) cannot be drilled"),
+            )
         elif (slot := _G85.match(line)) is not None and not slot["end"].strip():
-            raise JobFileError(name, number, "G85 slot without an end point: nothing to cut to")
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate(
+                    "JobFile", "G85 slot without an end point: nothing to cut to"
+                ),
+            )
 
 
 def _step_format(step: float, unit: str) -> tuple[int, int]:
@@ -330,7 +369,12 @@ def read_drill_file(
         )
         format_from = f"Excellon step setting ({excellon_step_inch:g} inch)"
         if not inch:
-            notes.append("0: no unit in the file; inch assumed, as the Excellon step is")
+            notes.append(
+                "0: "
+                + QCoreApplication.translate(
+                    "JobFile", "no unit in the file; inch assumed, as the Excellon step is"
+                )
+            )
 
     # G85 slots: gerbonara 1.5.0 only gets the end point; the start is ours to read.
     slot_starts: dict[int, str] = {}
@@ -356,27 +400,45 @@ def read_drill_file(
         cause = exc.__cause__ or exc
         reason = str(cause.args[0] if cause.args else cause)
         if isinstance(cause, ValueError) and "Unknown excellon statement" in reason:
-            reason = f"not an Excellon statement: {quoted(lines[parser.lineno - 1].strip())}"
+            reason = QCoreApplication.translate("JobFile", "not an Excellon statement: {0}").format(
+                quoted(lines[parser.lineno - 1].strip())
+            )
         elif "Undefined tool" in reason:
-            reason = f"unknown tool: {quoted(lines[parser.lineno - 1].strip())} is not defined"
+            reason = QCoreApplication.translate(
+                "JobFile", "unknown tool: {0} is not defined"
+            ).format(quoted(lines[parser.lineno - 1].strip()))
         elif "No number format" in reason:
-            reason = "integer coordinates, but the file gives no number format (metric)"
+            reason = QCoreApplication.translate(
+                "JobFile", "integer coordinates, but the file gives no number format (metric)"
+            )
         raise JobFileError(path.name, int(parser.lineno or 0), reason) from exc
     except Exception as exc:  # gerbonara's own failure: the line it was on, and what it said
         line = int(parser.lineno or 0)
         text_ = lines[line - 1].strip()[:60] if 0 < line <= len(lines) else ""
         raise JobFileError(
-            path.name, line, f"the Excellon reader cannot read {text_!r} ({exc})"
+            path.name,
+            line,
+            QCoreApplication.translate(
+                "JobFile", "the Excellon reader cannot read {0} ({1})"
+            ).format(repr(text_), exc),
         ) from exc
     notes += [f"0: {warning.message}" for warning in caught]
 
     for line, text_, message, state in parser.remarks:
         if "before first tool" in message:
-            reason = f"coordinates before any tool is selected: {quoted(text_)}"
+            reason = QCoreApplication.translate(
+                "JobFile", "coordinates before any tool is selected: {0}"
+            ).format(quoted(text_))
             raise JobFileError(path.name, line, reason)
         if message.startswith("Bare coordinate after end"):
-            where = "before the header" if state is None else "after the end of the program"
-            raise JobFileError(path.name, line, f"coordinates {where}: {quoted(text_)}")
+            reason = (
+                QCoreApplication.translate("JobFile", "coordinates before the header: {0}")
+                if state is None
+                else QCoreApplication.translate(
+                    "JobFile", "coordinates after the end of the program: {0}"
+                )
+            )
+            raise JobFileError(path.name, line, reason.format(quoted(text_)))
         if "implicit number format" not in message:  # we chose the format ourselves
             if "{index}" in message:  # gerbonara 1.5.0 forgets to fill it in
                 tool = _TOOL_LINE.match(text_.strip().upper())
@@ -425,7 +487,11 @@ def _assemble(
         def mm(value: float, unit: Any = unit, line: int = line) -> float:
             converted = float(unit.convert_to(MM, value))
             if not math.isfinite(converted):
-                raise JobFileError(path.name, line, "a coordinate too large for a number")
+                raise JobFileError(
+                    path.name,
+                    line,
+                    QCoreApplication.translate("JobFile", "a coordinate too large for a number"),
+                )
             return converted
 
         if isinstance(obj, Flash) and line in slot_starts:
@@ -453,10 +519,18 @@ def _assemble(
             )
             previous = (obj.x2, obj.y2)
         elif isinstance(obj, Arc):
-            raise JobFileError(path.name, line, "routed arcs (G02/G03) cannot be drilled")
+            raise JobFileError(
+                path.name,
+                line,
+                QCoreApplication.translate("JobFile", "routed arcs (G02/G03) cannot be drilled"),
+            )
 
     if not holes and not slots:
-        raise JobFileError(path.name, 0, "no holes in the file: nothing to drill")
+        raise JobFileError(
+            path.name,
+            0,
+            QCoreApplication.translate("JobFile", "no holes in the file: nothing to drill"),
+        )
     if info is not None and dri is not None:
         _check_against_dri(path, dri, info, tools, holes)
     zeros = "leading suppressed (TZ)"
@@ -502,21 +576,30 @@ def _check_against_dri(
         counts[hole.tool] = counts.get(hole.tool, 0) + 1
     for tool in tools:
         if tool.number not in info.tools:
-            raise JobFileError(dri.name, 0, f"{tool.name} of {path.name} is not in the tool list")
+            raise JobFileError(
+                dri.name,
+                0,
+                QCoreApplication.translate("JobFile", "{0} of {1} is not in the tool list").format(
+                    tool.name, path.name
+                ),
+            )
         diameter, used, line = info.tools[tool.number]
         if abs(diameter * factor - tool.diameter_mm) > 0.0005:
             raise JobFileError(
                 dri.name,
                 line,
-                f"{tool.name} is {diameter * factor:.3f} mm here but "
-                f"{tool.diameter_mm:.3f} mm in {path.name}",
+                QCoreApplication.translate(
+                    "JobFile", "{0} is {1:.3f} mm here but {2:.3f} mm in {3}"
+                ).format(tool.name, diameter * factor, tool.diameter_mm, path.name),
             )
         if used != counts.get(tool.name, 0):
             raise JobFileError(
                 dri.name,
                 line,
-                f"{tool.name} drills {used} holes here but {counts.get(tool.name, 0)} "
-                f"in {path.name}: the files do not belong together",
+                QCoreApplication.translate(
+                    "JobFile",
+                    "{0} drills {1} holes here but {2} in {3}: the files do not belong together",
+                ).format(tool.name, used, counts.get(tool.name, 0), path.name),
             )
 
 
@@ -621,14 +704,31 @@ def plan_drilling(
     return DrillPlan(job, tuple(plans), bits.flags)
 
 
-def bit_prompt(plan: ToolPlan, verb: str = "insert") -> str:
-    """What the operator reads at a bit change: "insert T02, 0.80 mm, 34 holes"."""
+def bit_prompt(plan: ToolPlan, mode: Literal["drill", "draw"] = "drill") -> str:
+    """What the operator reads at a bit change: "insert T02, 0.80 mm, 34 holes".
+
+    Translated when the program is built: one text per mode and English number
+    (the translations word the count so that one text fits every number).
+    """
     count = len(plan.holes)
-    also = f" (also {', '.join(plan.also)})" if plan.also else ""
-    return (
-        f"{verb} {plan.tool.name}, {plan.tool.diameter_mm:.2f} mm, "
-        f"{count} hole{'s' if count != 1 else ''}{also}"
+    also = (
+        QCoreApplication.translate("JobFile", " (also {0})").format(", ".join(plan.also))
+        if plan.also
+        else ""
     )
+    if mode == "drill":
+        text = (
+            QCoreApplication.translate("JobFile", "insert {0}, {1:.2f} mm, {2} hole{3}")
+            if count == 1
+            else QCoreApplication.translate("JobFile", "insert {0}, {1:.2f} mm, {2} holes{3}")
+        )
+    else:
+        text = (
+            QCoreApplication.translate("JobFile", "pen for {0}, {1:.2f} mm, {2} hole{3}")
+            if count == 1
+            else QCoreApplication.translate("JobFile", "pen for {0}, {1:.2f} mm, {2} holes{3}")
+        )
+    return text.format(plan.tool.name, plan.tool.diameter_mm, count, also)
 
 
 def build_drill_program(
@@ -654,8 +754,7 @@ def build_drill_program(
 
     for tool_plan in plan.tools:
         tool = tool_plan.tool
-        verb = "insert" if mode == "drill" else "pen for"
-        ops.append(Operation(OpKind.WAIT, tool.source, message=bit_prompt(tool_plan, verb)))
+        ops.append(Operation(OpKind.WAIT, tool.source, message=bit_prompt(tool_plan, mode)))
         for hole in tool_plan.holes:
             where = hole.source
             if mode == "drill":
@@ -673,11 +772,12 @@ def build_drill_program(
                 Operation(OpKind.PEN_UP, where),
             ]
     saved = plan.file_travel_mm - plan.travel_mm
-    note = (
-        f"travel between holes: {plan.file_travel_mm:.1f} mm in file order, "
-        f"{plan.travel_mm:.1f} mm optimised ({saved:.1f} mm saved)"
-    )
+    note = QCoreApplication.translate(
+        "JobFile",
+        "travel between holes: {0:.1f} mm in file order, {1:.1f} mm optimised ({2:.1f} mm saved)",
+    ).format(plan.file_travel_mm, plan.travel_mm, saved)
     # gerbonara's warnings and our remarks, "line: text", as file:line: text for the operator.
     name = shown(job.path.name)
-    remarks = tuple(f"{name}:{text.replace(': ', ': warning: ', 1)}" for text in job.notes)
+    warning = QCoreApplication.translate("JobFile", ": warning: ")
+    remarks = tuple(f"{name}:{text.replace(': ', warning, 1)}" for text in job.notes)
     return Program(job.name, tuple(ops), job.path, notes=(*remarks, *plan.flags, note))

@@ -20,6 +20,7 @@ import math
 from collections.abc import Mapping
 
 import numpy as np
+from PySide6.QtCore import QCoreApplication
 
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError
@@ -71,15 +72,20 @@ def flatten_arc(
             raise JobFileError(
                 file,
                 number,
-                f"arc target invalid: an R arc needs distinct ends (error:33): {quoted(code)}",
+                QCoreApplication.translate(
+                    "JobFile", "arc target invalid: an R arc needs distinct ends (error:33): {0}"
+                ).format(quoted(code)),
             )
         h2 = 4 * radius * radius - dx * dx - dy * dy
         if h2 < -1e-6 * max(1.0, radius * radius):
             raise JobFileError(
                 file,
                 number,
-                f"arc radius error: R {abs(radius):g} mm is less than half the chord "
-                f"{chord:g} mm (error:34): {quoted(code)}",
+                QCoreApplication.translate(
+                    "JobFile",
+                    "arc radius error: R {0:g} mm is less than half the chord {1:g} mm "
+                    "(error:34): {2}",
+                ).format(abs(radius), chord, quoted(code)),
             )
         h = -math.sqrt(max(h2, 0.0)) / chord
         if not clockwise:
@@ -91,10 +97,20 @@ def flatten_arc(
         cx, cy = sx + offsets.get("I", 0.0), sy + offsets.get("J", 0.0)
     else:
         raise JobFileError(
-            file, number, f"arc without offsets: it needs I/J or R (error:35): {quoted(code)}"
+            file,
+            number,
+            QCoreApplication.translate(
+                "JobFile", "arc without offsets: it needs I/J or R (error:35): {0}"
+            ).format(quoted(code)),
         )
     if not all(math.isfinite(v) for v in (sx, sy, ex, ey, cx, cy)):
-        raise JobFileError(file, number, f"arc coordinates too large to draw: {quoted(code)}")
+        raise JobFileError(
+            file,
+            number,
+            QCoreApplication.translate("JobFile", "arc coordinates too large to draw: {0}").format(
+                quoted(code)
+            ),
+        )
     r0 = math.hypot(sx - cx, sy - cy)
     r1 = math.hypot(ex - cx, ey - cy)
     if "R" not in offsets and grbl_rules:
@@ -105,8 +121,11 @@ def flatten_arc(
             raise JobFileError(
                 file,
                 number,
-                f"arc end not on its circle: radius {r0:.4g} mm at the start, {r1:.4g} mm at "
-                f"the end (error:33): {quoted(code)}",
+                QCoreApplication.translate(
+                    "JobFile",
+                    "arc end not on its circle: radius {0:.4g} mm at the start, {1:.4g} mm at the "
+                    "end (error:33): {2}",
+                ).format(r0, r1, quoted(code)),
             )
     a0 = math.atan2(sy - cy, sx - cx)
     a1 = math.atan2(ey - cy, ex - cx)
@@ -127,17 +146,21 @@ def flatten_arc(
         raise JobFileError(
             file,
             number,
-            f"arc too long: {radius * sweep / 1000:.4g} m of radius {radius:.4g} mm needs "
-            f"{segments} chords at {ARC_TOLERANCE_MM:g} mm (at most {MAX_ARC_SEGMENTS}); "
-            f"no machine's travel holds it",
+            QCoreApplication.translate(
+                "JobFile",
+                "arc too long: {0:.4g} m of radius {1:.4g} mm needs {2} chords at {3:g} mm (at "
+                "most {4}); no machine's travel holds it",
+            ).format(radius * sweep / 1000, radius, segments, ARC_TOLERANCE_MM, MAX_ARC_SEGMENTS),
         )
     segments = max(segments, MIN_ARC_SEGMENTS)
     if segments - 1 > budget:
         raise JobFileError(
             file,
             number,
-            f"arcs too many: the file's arcs need more than {MAX_ARC_VERTICES:,} vertices "
-            f"at {ARC_TOLERANCE_MM:g} mm",
+            QCoreApplication.translate(
+                "JobFile",
+                "arcs too many: the file's arcs need more than {0:,} vertices at {1:g} mm",
+            ).format(MAX_ARC_VERTICES, ARC_TOLERANCE_MM),
         )
     t = np.arange(1, segments) / segments
     angles = a0 + (-sweep if clockwise else sweep) * t

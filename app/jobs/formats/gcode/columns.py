@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.gcode.pen import DOWN, UP
 from app.jobs.formats.gcode.plain_moves import PlainMoves
@@ -91,7 +92,7 @@ class OperationColumns:
         n = len(self.texts)
         k = len(columns)
         if k > 16:
-            raise JobFileError(file, 0, "more than 16 axes")
+            raise JobFileError(file, 0, QCoreApplication.translate("JobFile", "more than 16 axes"))
         kinds = np.full(n, MOVE, dtype=np.uint8)
         lines = np.zeros(n, dtype=np.int32)
         motion = np.full(n, NO_MOTION, dtype=np.uint8)

@@ -36,6 +36,8 @@ import re
 from collections.abc import Sequence
 from pathlib import Path
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.formats.gcode.arcs import ARC_TOLERANCE_MM, MAX_ARC_SEGMENTS, MIN_ARC_SEGMENTS
 from app.jobs.formats.gcode.parser import AXIS_LETTERS, INCH_MM, PARAMETER_REASON, Parser
 from app.jobs.formats.gcode.pen import DOWN, UP
@@ -121,7 +123,9 @@ def load_gcode(
         if collecting:
             gc.enable()
     if not any(data.texts):
-        raise JobFileError(path.name, 0, "no G-code to send in the file")
+        raise JobFileError(
+            path.name, 0, QCoreApplication.translate("JobFile", "no G-code to send in the file")
+        )
     problems = tuple(sorted(parser.problems, key=lambda p: p.line))
     return GcodeProgram(
         path.stem,

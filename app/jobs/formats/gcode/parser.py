@@ -28,6 +28,7 @@ import math
 from collections.abc import Mapping, Sequence
 
 import numpy as np
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.jobs.formats.gcode.arcs import MAX_ARC_VERTICES, flatten_arc
 from app.jobs.formats.gcode.columns import OperationColumns
@@ -71,7 +72,11 @@ from app.profiles import GcodeSettings
 
 INCH_MM = 25.4
 
-PARAMETER_REASON = "named parameters/expressions are not G-code this machine runs"
+
+#: Translated where it is used (a parameter line is refused in the operator's language).
+PARAMETER_REASON = str(
+    QT_TRANSLATE_NOOP("JobFile", "named parameters/expressions are not G-code this machine runs")
+)
 
 MOTION_WORDS = {"G0": RAPID, "G1": LINEAR, "G2": CW_ARC, "G3": CCW_ARC}
 MOTION_NAMES = {code: word for word, code in MOTION_WORDS.items()}
@@ -104,8 +109,12 @@ class Parser:
         self.words = frozenset(w.upper() for w in settings.words)
         self.translate = translate_pen
         self.skip = skip_unsupported
-        self.who = f"the {machine_title}" if machine_title else "this machine"
-        self.title = machine_title or "machine"
+        self.who = (
+            QCoreApplication.translate("JobFile", "the {0}").format(machine_title)
+            if machine_title
+            else QCoreApplication.translate("JobFile", "this machine")
+        )
+        self.title = machine_title or QCoreApplication.translate("JobFile", "machine")
         self.z_is_pen = settings.z_is_pen
         self.feed_required = settings.feed_required
         self.dwell_p_seconds = settings.dwell_p_seconds
@@ -213,24 +222,36 @@ class Parser:
                 continue
             if word.letter in seen:
                 self._refuse(
-                    number, f"word repeated: {word.letter} twice (error:25): {quoted(code)}", code
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile", "word repeated: {0} twice (error:25): {1}"
+                    ).format(word.letter, quoted(code)),
+                    code,
                 )
             seen.add(word.letter)
             if word.letter == "T" and word.value > MAX_TOOL_NUMBER:
                 self._refuse(
                     number,
-                    f"max value exceeded: T{word.text} above T{MAX_TOOL_NUMBER} (error:38)",
+                    QCoreApplication.translate(
+                        "JobFile", "max value exceeded: T{0} above T{1} (error:38)"
+                    ).format(word.text, MAX_TOOL_NUMBER),
                     code,
                 )
             if word.letter in _NOT_NEGATIVE and word.value < 0:
                 self._refuse(
                     number,
-                    f"negative value: {word.letter}{word.text} cannot be negative (error:4)",
+                    QCoreApplication.translate(
+                        "JobFile", "negative value: {0} cannot be negative (error:4)"
+                    ).format(word.letter + word.text),
                     code,
                 )
         if motions > 1:
             self._refuse(
-                number, f"modal group violation: two motion words (error:21): {quoted(code)}", code
+                number,
+                QCoreApplication.translate(
+                    "JobFile", "modal group violation: two motion words (error:21): {0}"
+                ).format(quoted(code)),
+                code,
             )
 
     # --- one line ------------------------------------------------------------------
@@ -256,9 +277,18 @@ class Parser:
             digits = match.group().strip()[1:].strip()
             significant = digits.lstrip("0") or "0"
             if len(significant) > 8 or int(significant) > MAX_LINE_NUMBER:
-                shown = digits if len(digits) <= 20 else f"{digits[:12]}… ({len(digits)} digits)"
+                shown = (
+                    digits
+                    if len(digits) <= 20
+                    else QCoreApplication.translate("JobFile", "{0}… ({1} digits)").format(
+                        digits[:12], len(digits)
+                    )
+                )
                 self._refuse(
-                    number, f"invalid line number: N{shown} above N{MAX_LINE_NUMBER} (error:27)"
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile", "invalid line number: N{0} above N{1} (error:27)"
+                    ).format(shown, MAX_LINE_NUMBER),
                 )
             code = code[match.end() :]
         code = CHECKSUM.sub("", code).strip()
@@ -275,13 +305,30 @@ class Parser:
         elif code in REALTIME:
             self._realtime(number, code)
         elif PARAMETERS.search(code):
-            self._commit(number, code, [Pending(GCODE, code)], (PARAMETER_REASON,))
+            self._commit(
+                number,
+                code,
+                [Pending(GCODE, code)],
+                (QCoreApplication.translate("JobFile", PARAMETER_REASON),),
+            )
         elif wait := WAIT_RE.match(code):
-            message = comment or code[wait.end() :].strip() or f"M{wait.group(1)}: paused"
+            message = (
+                comment
+                or code[wait.end() :].strip()
+                or QCoreApplication.translate("JobFile", "M{0}: paused").format(wait.group(1))
+            )
             self._commit(number, code, [Pending(WAIT, "", message=message)], ())
         elif display := MESSAGE_RE.match(code):
             word = f"M{display.group(1)}"
-            reasons = () if word in self.words else (f"{self.who} cannot execute {word}",)
+            reasons = (
+                ()
+                if word in self.words
+                else (
+                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+                        self.who, word
+                    ),
+                )
+            )
             self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
         else:
             self._words(number, code, self.tokens.words(code, number))
@@ -290,18 +337,30 @@ class Parser:
         """A GRBL ``$`` command: sent as written where the machine knows it."""
         match = SYSTEM.match(code)
         word = "$" + (match.group(1) or "").upper() if match else "$"
-        reasons = () if word in self.words else (f"{self.who} cannot execute {word}",)
+        reasons = (
+            ()
+            if word in self.words
+            else (
+                QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+                    self.who, word
+                ),
+            )
+        )
         self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
 
     def _realtime(self, number: int, code: str) -> None:
         """A real-time byte on a line: the station sends ``?`` itself; the others never belong."""
-        what = REALTIME[code]
+        what = QCoreApplication.translate("JobFile", REALTIME[code])
         if code == "?":
             self.realtime_dropped += 1
-            message = "? not sent: the station asks for the status itself"
+            message = QCoreApplication.translate(
+                "JobFile", "? not sent: the station asks for the status itself"
+            )
             self._commit(number, code, [Pending(COMMENT, "", message=message)], ())
             return
-        reason = f"{what} ({quoted(code)}) is a real-time command, not a line of a job"
+        reason = QCoreApplication.translate(
+            "JobFile", "{0} ({1}) is a real-time command, not a line of a job"
+        ).format(what, quoted(code))
         self._commit(number, code, [Pending(GCODE, code, checked=True)], (reason,))
 
     def _words(self, number: int, code: str, words: tuple[Word, ...]) -> None:
@@ -414,7 +473,13 @@ class Parser:
             elif axes and not non_modal:
                 self._motion(number, code, words, params, commands, op, axes)
             elif {"G2", "G3"} & commands.keys() and not non_modal:
-                self._refuse(number, f"arc without axis words (error:26): {quoted(code)}", code)
+                self._refuse(
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile", "arc without axis words (error:26): {0}"
+                    ).format(quoted(code)),
+                    code,
+                )
             if whole:
                 op.pen = pen if pen is not None else -1
                 if op.kind != MOVE:
@@ -509,7 +574,9 @@ class Parser:
             name = MOTION_NAMES.get(op.motion, "G1")
             self._refuse(
                 number,
-                f"feed rate undefined: {name} before any F sets one (error:22): {quoted(code)}",
+                QCoreApplication.translate(
+                    "JobFile", "feed rate undefined: {0} before any F sets one (error:22): {1}"
+                ).format(name, quoted(code)),
                 code,
             )
         machine = "G53" in commands
@@ -565,9 +632,17 @@ class Parser:
             else:
                 found = self._check_words(op)
             if not op.text.isascii():
-                found += (f"{quoted(op.text)} is not ASCII",)
+                found += (
+                    QCoreApplication.translate("JobFile", "{0} is not ASCII").format(
+                        quoted(op.text)
+                    ),
+                )
             if len(op.text) > MAX_LINE_CHARS:
-                found += (f"{len(op.text)} characters; a line holds at most {MAX_LINE_CHARS}",)
+                found += (
+                    QCoreApplication.translate(
+                        "JobFile", "{0} characters; a line holds at most {1}"
+                    ).format(len(op.text), MAX_LINE_CHARS),
+                )
             reasons += [r for r in found if r not in reasons]
         return tuple(reasons)
 
@@ -579,13 +654,25 @@ class Parser:
                 name = normal(word.letter, word.value)
                 explicit_motion |= name in MOTION_WORDS
                 if name not in self.words:
-                    found.append(f"{self.who} cannot execute {name}")
+                    found.append(
+                        QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+                            self.who, name
+                        )
+                    )
             elif word.letter in AXIS_LETTERS and word.letter not in self.machine_axes:
-                found.append(f"{self.who} has no {word.letter} axis")
+                found.append(
+                    QCoreApplication.translate("JobFile", "{0} has no {1} axis").format(
+                        self.who, word.letter
+                    )
+                )
         if op.kind == MOVE and op.motion in MOTION_NAMES and not explicit_motion:
             name = MOTION_NAMES[op.motion]
             if name not in self.words:
-                found.append(f"{self.who} cannot execute {name}")
+                found.append(
+                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+                        self.who, name
+                    )
+                )
         return tuple(found)
 
     def _check_text(self, text: str) -> tuple[str, ...]:
@@ -600,7 +687,9 @@ class Parser:
     ) -> None:
         if reasons and self.skip:
             reason_text = "; ".join(reasons)
-            message = f"not sent: {code} ({reason_text})"
+            message = QCoreApplication.translate("JobFile", "not sent: {0} ({1})").format(
+                code, reason_text
+            )
             pending = [Pending(COMMENT, "", message=message)]
             self.skipped.append((number, code, tuple(reasons)))
         else:
@@ -618,42 +707,84 @@ class Parser:
         pens = self.pens
         translated = self.out.translated
         if translated:
-            plural = "line" if translated == 1 else "lines"
-            notes.append(
-                f"{translated} pen {plural} sent as the {self.title}'s "
-                f"{pens.pen_up.text}/{pens.pen_down.text}"
+            # One text per English form; the translations word it around the count.
+            text = (
+                QCoreApplication.translate("JobFile", "{0} pen line sent as the {1}'s {2}/{3}")
+                if translated == 1
+                else QCoreApplication.translate(
+                    "JobFile", "{0} pen lines sent as the {1}'s {2}/{3}"
+                )
             )
+            notes.append(text.format(translated, self.title, pens.pen_up.text, pens.pen_down.text))
         for word, (down, up) in sorted(pens.servo.items()):
-            notes.append(f"pen servo {word}: S{down:g} lowers the pen, S{up:g} lifts it")
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile", "pen servo {0}: S{1:g} lowers the pen, S{2:g} lifts it"
+                ).format(word, down, up)
+            )
         if pens.z_pen:
-            notes.append("Z heights are the pen: above 0 up, 0 or below down")
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile", "Z heights are the pen: above 0 up, 0 or below down"
+                )
+            )
         if self.z_dropped:
             notes.append(
-                f"Z not sent on {self.z_dropped} line(s): Z is the {self.title}'s pen and this "
-                "file's Z never lifts it"
+                QCoreApplication.translate(
+                    "JobFile",
+                    "Z not sent on {0} line(s): Z is the {1}'s pen and this file's Z never lifts "
+                    "it",
+                ).format(self.z_dropped, self.title)
             )
         if self.g21_dropped:
-            plural = "line" if self.g21_dropped == 1 else "lines"
-            notes.append(f"{self.g21_dropped} G21 {plural} not sent: the machine works in mm")
+            text = (
+                QCoreApplication.translate(
+                    "JobFile", "{0} G21 line not sent: the machine works in mm"
+                )
+                if self.g21_dropped == 1
+                else QCoreApplication.translate(
+                    "JobFile", "{0} G21 lines not sent: the machine works in mm"
+                )
+            )
+            notes.append(text.format(self.g21_dropped))
         if self.realtime_dropped:
-            notes.append("? not sent: the station asks for the status itself")
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile", "? not sent: the station asks for the status itself"
+                )
+            )
         if self.dwell_p_seen and self.dwell_p_seconds == 1.0:
             total = float(data.dwell_s.sum())
             notes.append(
-                f"G4 P is seconds on the {self.title} (GRBL): {len(data.dwell_s)} dwell(s) "
-                f"wait {_duration(total)} in all; a file written for milliseconds "
-                "(Marlin, Inkscape Unicorn) waits a thousand times too long here"
+                QCoreApplication.translate(
+                    "JobFile",
+                    "G4 P is seconds on the {0} (GRBL): {1} dwell(s) wait {2} in all; a file "
+                    "written for milliseconds (Marlin, Inkscape Unicorn) waits a thousand times "
+                    "too long here",
+                ).format(self.title, len(data.dwell_s), _duration(total))
             )
         if not data.pen_info and (data.kinds == MOVE).any():
-            notes.append("no pen commands: G0 moves are shown as travel, G1/G2/G3 as work")
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile", "no pen commands: G0 moves are shown as travel, G1/G2/G3 as work"
+                )
+            )
         by_reason: dict[str, list[int]] = {}
         for number, _code, reasons in self.skipped:
             for reason in reasons:
                 by_reason.setdefault(reason, []).append(number)
         for reason, numbers in by_reason.items():
             shown = ", ".join(str(n) for n in numbers[:10])
-            more = f" and {len(numbers) - 10} more" if len(numbers) > 10 else ""
-            notes.append(f"skipped {len(numbers)} line(s): {reason} (lines {shown}{more})")
+            more = (
+                QCoreApplication.translate("JobFile", " and {0} more").format(len(numbers) - 10)
+                if len(numbers) > 10
+                else ""
+            )
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile", "skipped {0} line(s): {1} (lines {2}{3})"
+                ).format(len(numbers), reason, shown, more)
+            )
         return tuple(notes)
 
 

@@ -15,6 +15,7 @@ import re
 
 import numpy as np
 import numpy.typing as npt
+from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.gcode.state import State
 from app.jobs.formats.gcode.words import MAX_LINE_CHARS, NUMBER, plain_code
@@ -55,7 +56,11 @@ class PlainMoves:
         else:
             plain = np.zeros(count, dtype=bool)
         if len(plain) != count:  # cannot happen: one record per line
-            raise JobFileError(self.file, 0, "could not split the file into lines")
+            raise JobFileError(
+                self.file,
+                0,
+                QCoreApplication.translate("JobFile", "could not split the file into lines"),
+            )
         plain_index = np.flatnonzero(plain)
         texts = [plain_code(lines[i]) for i in plain_index.tolist()]
         lengths = np.fromiter(map(len, texts), dtype=np.int64, count=len(texts))
@@ -78,7 +83,11 @@ class PlainMoves:
         per_line = 3 + has_f.astype(np.int64)
         starts = np.cumsum(per_line) - per_line
         if len(numbers) != int(per_line.sum()):  # cannot happen: the pattern admits numbers only
-            raise JobFileError(self.file, 0, "could not read the coordinates")
+            raise JobFileError(
+                self.file,
+                0,
+                QCoreApplication.translate("JobFile", "could not read the coordinates"),
+            )
         self.g = numbers[starts]
         self.x = numbers[starts + 1]
         self.y = numbers[starts + 2]
@@ -94,7 +103,9 @@ class PlainMoves:
         f = self.f[k0:k1]
         refused: dict[int, str] = {}
         for k in np.flatnonzero(f < 0)[:limit].tolist():
-            refused[k] = f"negative value: F{f[k]:g} cannot be negative (error:4)"
+            refused[k] = QCoreApplication.translate(
+                "JobFile", "negative value: {0} cannot be negative (error:4)"
+            ).format(f"F{f[k]:g}")
         if required:
             # The feed in force at each line: its own F, else the last one before it.
             known = ~np.isnan(f) & (f >= 0)
@@ -106,8 +117,9 @@ class PlainMoves:
             for k in bad[:limit].tolist():
                 refused.setdefault(
                     k,
-                    f"feed rate undefined: G1 before any F sets one (error:22): "
-                    f"{self.texts[k0 + k]!r}",
+                    QCoreApplication.translate(
+                        "JobFile", "feed rate undefined: {0} before any F sets one (error:22): {1}"
+                    ).format("G1", repr(self.texts[k0 + k])),
                 )
         return [
             JobFileError(self.file, int(self.lines[k0 + k]), refused[k])

@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 
@@ -33,7 +35,13 @@ PARAMETERS = re.compile(
 SPACES = re.compile(r"[ \t]{2,}")
 #: ``M98 800`` / ``M99 90``: the CoreXY plotter's step interval and servo level (PROTOCOLS §4).
 BARE_VALUE = re.compile(r"[ \t]*[Mm]0*(9[89])[ \t]+(\d+(?:\.\d*)?)[ \t]*")
-REALTIME = {"?": "status query", "!": "feed hold", "~": "cycle start", "\x18": "soft reset"}
+#: Their names are translated where they are shown.
+REALTIME = {
+    "?": str(QT_TRANSLATE_NOOP("JobFile", "status query")),
+    "!": str(QT_TRANSLATE_NOOP("JobFile", "feed hold")),
+    "~": str(QT_TRANSLATE_NOOP("JobFile", "cycle start")),
+    "\x18": str(QT_TRANSLATE_NOOP("JobFile", "soft reset")),
+}
 #: The cached tokenisations (per distinct line text) stop growing here: repeated lines
 #: (pen commands, dwells) are what the cache is for.
 TOKEN_CACHE_SIZE = 20_000
@@ -134,6 +142,10 @@ class Tokenizer:
                 at = match.end()
             rest = code[at:].strip()
             raise JobFileError(
-                self.file, number, f"malformed G-code at {rest[:20]!r} in {quoted(code)}"
+                self.file,
+                number,
+                QCoreApplication.translate("JobFile", "malformed G-code at {0} in {1}").format(
+                    repr(rest[:20]), quoted(code)
+                ),
             )
         return words

@@ -15,6 +15,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from types import MappingProxyType
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
 from app.jobs.reading import read_job_text
 
@@ -62,24 +64,44 @@ def parse_point_list(text: str, name: str, axis_names: Sequence[str], stem: str)
             ops.append(Operation(OpKind.COMMENT, where, message=line.lstrip("# ")))
             continue
         if _is_wait(line):
-            message = line.partition(":")[2].strip() or "continue when ready"
+            message = line.partition(":")[2].strip() or QCoreApplication.translate(
+                "JobFile", "continue when ready"
+            )
             ops.append(Operation(OpKind.WAIT, where, message=message))
             continue
         fields = _fields(line)
         if len(fields) != len(axis_names):
             raise JobFileError(
-                name, number, f"expected {len(axis_names)} numbers, found {len(fields)}"
+                name,
+                number,
+                QCoreApplication.translate("JobFile", "expected {0} numbers, found {1}").format(
+                    len(axis_names), len(fields)
+                ),
             )
         try:
             values = [float(f) for f in fields]
         except ValueError:
-            raise JobFileError(name, number, f"not a number in {line[:80]!r}") from None
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate("JobFile", "not a number in {0}").format(
+                    repr(line[:80])
+                ),
+            ) from None
         if not all(math.isfinite(v) for v in values):
-            raise JobFileError(name, number, f"not a finite number in {line[:80]!r}")
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate("JobFile", "not a finite number in {0}").format(
+                    repr(line[:80])
+                ),
+            )
         target = MappingProxyType(dict(zip(axis_names, values, strict=True)))
         ops.append(Operation(OpKind.MOVE, where, target))
     if not any(op.kind is OpKind.MOVE for op in ops):
-        raise JobFileError(name, 0, "no positions in the file")
+        raise JobFileError(
+            name, 0, QCoreApplication.translate("JobFile", "no positions in the file")
+        )
     return Program(stem, tuple(ops))
 
 

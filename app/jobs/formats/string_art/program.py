@@ -69,6 +69,7 @@ from types import MappingProxyType
 from typing import ClassVar, Literal, overload
 
 import numpy as np
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.jobs.formats.string_art.geometry import (
     DRILL_CLEARANCE_MM,
@@ -312,7 +313,13 @@ def _unwrapped(start: float, turns: np.ndarray, wraps: np.ndarray) -> tuple[np.n
 class StringArtOperations(Sequence[Operation]):
     """A string-art program's operations: the drill phase kept, the winding made on demand."""
 
-    _STEPS = ("turn beside it", "needle out", "round the nail", "needle in")
+    #: Translated once per program (an operation is made each time it is read).
+    _STEPS = (
+        str(QT_TRANSLATE_NOOP("JobFile", "turn beside it")),
+        str(QT_TRANSLATE_NOOP("JobFile", "needle out")),
+        str(QT_TRANSLATE_NOOP("JobFile", "round the nail")),
+        str(QT_TRANSLATE_NOOP("JobFile", "needle in")),
+    )
 
     def __init__(
         self,
@@ -332,6 +339,8 @@ class StringArtOperations(Sequence[Operation]):
         self.r_out = r_out
         self.tail = tail
         self.size = len(head) + 4 * len(a_turn) + 1
+        self._steps = tuple(QCoreApplication.translate("JobFile", s) for s in self._STEPS)
+        self._label = QCoreApplication.translate("JobFile", "nail {0} ({1}/{2}): {3}")
 
     def __len__(self) -> int:
         return self.size
@@ -364,7 +373,7 @@ class StringArtOperations(Sequence[Operation]):
         entry += 1
         total = len(self.job.sequence)
         nail = self.job.sequence[entry]
-        message = f"nail {nail} ({entry + 1}/{total}): {self._STEPS[step]}"
+        message = self._label.format(nail, entry + 1, total, self._steps[step])
         if step == 0:
             target = {"A": float(self.a_turn[entry - 1])}
         elif step == 2:
@@ -396,8 +405,11 @@ def build_program(
         raise JobFileError(
             where.file,
             where.line,
-            f"a board of {job.params.radius_cm:g} cm radius leaves no room for the needle "
-            f"{settings.needle_in_mm:g} mm inside the nails",
+            QCoreApplication.translate(
+                "JobFile",
+                "a board of {0:g} cm radius leaves no room for the needle {1:g} mm inside "
+                "the nails",
+            ).format(job.params.radius_cm, settings.needle_in_mm),
         )
     b = _Builder()
     nails = job.params.nails
@@ -408,44 +420,113 @@ def build_program(
     dwell = f"G4 S{settings.drill_dwell_s:g}"
     dwell_ops: list[int] = []
 
-    b.add(Operation(OpKind.COMMENT, at_param, message=f"drill phase: {nails} nails"), -1, -1)
-    above = f"{settings.drill_clearance_mm:g} mm above the board"
-    b.move(at_param, "Z", 0.0, f"drill {above}", -1, -1)
+    b.add(
+        Operation(
+            OpKind.COMMENT,
+            at_param,
+            message=QCoreApplication.translate("JobFile", "drill phase: {0} nails").format(nails),
+        ),
+        -1,
+        -1,
+    )
+    # The labels' texts are translated once; each nail only fills them in.
+    above = QCoreApplication.translate("JobFile", "{0:g} mm above the board").format(
+        settings.drill_clearance_mm
+    )
+    b.move(
+        at_param, "Z", 0.0, QCoreApplication.translate("JobFile", "drill {0}").format(above), -1, -1
+    )
+    drill_nail = QCoreApplication.translate("JobFile", "drill nail {0}")
+    turn_base = QCoreApplication.translate("JobFile", "{0}: turn the base")
+    to_radius = QCoreApplication.translate("JobFile", "{0}: tool to its radius")
+    drill = QCoreApplication.translate("JobFile", "{0}: drill")
+    at_bottom = QCoreApplication.translate("JobFile", "{0}: at the bottom")
+    back_up = QCoreApplication.translate("JobFile", "{0}: back {1}")
     for nail in range(nails):
-        label = f"drill nail {nail}"
-        b.turn_to(float(angles[nail]), at_param, f"{label}: turn the base", nail, -1)
-        b.move(at_param, "X", float(radii[nail]), f"{label}: tool to its radius", nail, -1)
-        b.move(at_param, "Z", bottom, f"{label}: drill", nail, -1)
+        label = drill_nail.format(nail)
+        b.turn_to(float(angles[nail]), at_param, turn_base.format(label), nail, -1)
+        b.move(at_param, "X", float(radii[nail]), to_radius.format(label), nail, -1)
+        b.move(at_param, "Z", bottom, drill.format(label), nail, -1)
         dwell_ops.append(len(b.ops))
-        b.add(Operation(OpKind.GCODE, at_param, message=f"{label}: at the bottom", line=dwell),
+        b.add(Operation(OpKind.GCODE, at_param, message=at_bottom.format(label), line=dwell),
               nail, -1)  # fmt: skip
-        b.move(at_param, "Z", 0.0, f"{label}: back {above}", nail, -1)
-    zero = "back to nail 0"
-    b.turn_to(float(angles[0]), at_param, f"{zero}: turn the base", 0, -1)
-    b.move(at_param, "X", float(radii[0]), f"{zero}: tool to its radius", 0, -1)
+        b.move(at_param, "Z", 0.0, back_up.format(label, above), nail, -1)
+    zero = QCoreApplication.translate("JobFile", "back to nail 0")
+    b.turn_to(float(angles[0]), at_param, turn_base.format(zero), 0, -1)
+    b.move(at_param, "X", float(radii[0]), to_radius.format(zero), 0, -1)
 
     first = sequence[0]
     at_first = job.entry_source(0)
-    b.add(Operation(OpKind.COMMENT, at_first, message=f"winding: {total} connections"), -1, -1)
     b.add(
-        Operation(OpKind.GCODE, at_first, message="drivers off while waiting", line="M18"), -1, -1
+        Operation(
+            OpKind.COMMENT,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "winding: {0} connections").format(total),
+        ),
+        -1,
+        -1,
+    )
+    b.add(
+        Operation(
+            OpKind.GCODE,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "drivers off while waiting"),
+            line="M18",
+        ),
+        -1,
+        -1,
     )
     wait_index = len(b.ops)
     b.add(
         Operation(
-            OpKind.WAIT, at_first, message=f"Insert the nails, tie the thread to nail {first}"
+            OpKind.WAIT,
+            at_first,
+            message=QCoreApplication.translate(
+                "JobFile", "Insert the nails, tie the thread to nail {0}"
+            ).format(first),
         ),
         first,
         0,
     )
-    step_in = f"start at nail {first}"
+    step_in = QCoreApplication.translate("JobFile", "start at nail {0}").format(first)
     first_out = float(radii[first]) + settings.needle_out_mm
-    b.move(at_first, "X", first_out, f"{step_in}: needle out", first, 0)
-    b.turn_to(float(angles[first] + after[first]), at_first, f"{step_in}: turn", first, 0)
-    b.move(at_first, "X", r_in, f"{step_in}: needle in", first, 0)
-    b.turn_to(float(angles[first]), at_first, f"{step_in}: turn back", first, 0)
+    b.move(
+        at_first,
+        "X",
+        first_out,
+        QCoreApplication.translate("JobFile", "{0}: needle out").format(step_in),
+        first,
+        0,
+    )
+    b.turn_to(
+        float(angles[first] + after[first]),
+        at_first,
+        QCoreApplication.translate("JobFile", "{0}: turn").format(step_in),
+        first,
+        0,
+    )
+    b.move(
+        at_first,
+        "X",
+        r_in,
+        QCoreApplication.translate("JobFile", "{0}: needle in").format(step_in),
+        first,
+        0,
+    )
+    b.turn_to(
+        float(angles[first]),
+        at_first,
+        QCoreApplication.translate("JobFile", "{0}: turn back").format(step_in),
+        first,
+        0,
+    )
     b.add(
-        Operation(OpKind.GCODE, at_first, message="drill driver off while winding", line="M18 Z0"),
+        Operation(
+            OpKind.GCODE,
+            at_first,
+            message=QCoreApplication.translate("JobFile", "drill driver off while winding"),
+            line="M18 Z0",
+        ),
         first,
         0,
     )
@@ -457,7 +538,9 @@ def build_program(
     tail = Operation(
         OpKind.COMMENT,
         job.entry_source(total - 1),
-        message=f"winding done: tie the thread off at nail {last}",
+        message=QCoreApplication.translate(
+            "JobFile", "winding done: tie the thread off at nail {0}"
+        ).format(last),
     )
     winding = total - 1
     nails_wound = np.asarray(sequence[1:], dtype=np.int32)
@@ -572,7 +655,10 @@ def load_string_art_program(
         raise JobFileError(
             path.name,
             0,
-            f"a string-art job needs the winder's axes A, X and Z (profile string-art); "
-            f"this machine has {', '.join(axis_names) or 'none'}",
+            QCoreApplication.translate(
+                "JobFile",
+                "a string-art job needs the winder's axes A, X and Z (profile string-art); "
+                "this machine has {0}",
+            ).format(", ".join(axis_names) or QCoreApplication.translate("JobFile", "none")),
         )
     return build_program(read_string_art(path, params), profile)

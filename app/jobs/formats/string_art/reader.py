@@ -55,6 +55,7 @@ from app.jobs.formats.string_art.geometry import NAIL_INSET_MM, nail_polar, nail
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError, SourceRef
 from app.jobs.reading import decode_job_text, read_job_bytes, read_job_text
+from app.jobs.texts import translate
 
 PARAM_NAME = "param.txt"
 PORADI_NAME = "poradi.txt"
@@ -86,7 +87,9 @@ class StringArtParams:
 
     @property
     def shape(self) -> str:
-        return "circle" if self.tvar == 0 else f"{self.tvar}-gon"
+        if self.tvar == 0:
+            return translate("JobFile", "circle")
+        return translate("JobFile", "{0}-gon").format(self.tvar)
 
     def check(self) -> str | None:
         """Why these parameters cannot make a board, or None when they can."""
@@ -156,12 +159,11 @@ class StringArtJob:
     def summary(self, estimate_s: float | None = None) -> str:
         """Totals for the operator: nails, connections, thread length, estimated time."""
         p = self.params
-        text = (
-            f"{p.nails} nails on a {p.shape} of {p.radius_cm:g} cm radius, "
-            f"{len(self.sequence)} connections, thread {self.thread_length_mm() / 1000:.1f} m"
-        )
+        text = translate(
+            "JobFile", "{0} nails on a {1} of {2:g} cm radius, {3} connections, thread {4:.1f} m"
+        ).format(p.nails, p.shape, p.radius_cm, len(self.sequence), self.thread_length_mm() / 1000)
         if estimate_s is not None and math.isfinite(estimate_s):
-            text += f", about {_clock(estimate_s)}"
+            text += translate("JobFile", ", about {0}").format(_clock(estimate_s))
         return text
 
 
@@ -176,8 +178,11 @@ class NeedsNailCount(JobFileError):
         super().__init__(
             path.name,
             0,
-            f"a nail list without {PARAM_NAME}: give the board (shape, at least {min_nails} "
-            f"nails, radius) to load its {entries} entries",
+            translate(
+                "JobFile",
+                "a nail list without {0}: give the board (shape, at least {1} nails, radius) "
+                "to load its {2} entries",
+            ).format(PARAM_NAME, min_nails, entries),
         )
         self.path = path
         self.min_nails = min_nails
@@ -209,23 +214,47 @@ def read_params(path: Path) -> tuple[StringArtParams, dict[str, int]]:
         key = key.strip().lower()
         value = value.partition("#")[0].strip().rstrip(";").strip()
         if not sep or not key:
-            raise JobFileError(path.name, number, f"expected 'key = value', found {quoted(line)}")
+            raise JobFileError(
+                path.name,
+                number,
+                translate("JobFile", "expected 'key = value', found {0}").format(quoted(line)),
+            )
         if key not in PARAM_KEYS:
             continue  # the firmware ignores keys it does not know; so does the station
         if key in found:
             first = found[key][1]
-            raise JobFileError(path.name, number, f"{key} given twice (first on line {first})")
+            raise JobFileError(
+                path.name,
+                number,
+                translate("JobFile", "{0} given twice (first on line {1})").format(key, first),
+            )
         parsed = _number(value)
         if parsed is None or math.isnan(parsed):
-            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is not a number")
+            raise JobFileError(
+                path.name,
+                number,
+                translate("JobFile", "{0} = {1} is not a number").format(key, repr(value[:40])),
+            )
         if not math.isfinite(parsed):
-            raise JobFileError(path.name, number, f"{key} = {value[:40]!r} is too large")
+            raise JobFileError(
+                path.name,
+                number,
+                translate("JobFile", "{0} = {1} is too large").format(key, repr(value[:40])),
+            )
         if key != "polomer_matrice" and parsed != int(parsed):
-            raise JobFileError(path.name, number, f"{key} = {value} is not a whole number")
+            raise JobFileError(
+                path.name,
+                number,
+                translate("JobFile", "{0} = {1} is not a whole number").format(key, value),
+            )
         found[key] = (parsed, number, value)
     for key in PARAM_KEYS:
         if key not in found:
-            raise JobFileError(path.name, 0, f"no '{key} = …' line (line 0: missing, not wrong)")
+            raise JobFileError(
+                path.name,
+                0,
+                translate("JobFile", "no '{0} = …' line (line 0: missing, not wrong)").format(key),
+            )
     lines = {key: found[key][1] for key in PARAM_KEYS}
     params = StringArtParams(
         tvar=int(found["tvar"][0]),
@@ -246,16 +275,24 @@ def _check_tvar(tvar: int) -> str | None:
     if tvar == 0 or 3 <= tvar <= MAX_TVAR:
         return None
     if tvar > MAX_TVAR:
-        return f"tvar = {_short(tvar)}: a polygon has at most {MAX_TVAR} sides"
-    return f"tvar = {tvar}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
+        return translate("JobFile", "tvar = {0}: a polygon has at most {1} sides").format(
+            _short(tvar), MAX_TVAR
+        )
+    return translate(
+        "JobFile", "tvar = {0}: the shape must be 0 (a circle) or 3 or more (a regular polygon)"
+    ).format(tvar)
 
 
 def _check_nails(nails: int) -> str | None:
     if MIN_NAILS <= nails <= MAX_NAILS:
         return None
     if nails > MAX_NAILS:
-        return f"pocet_hrebiku = {_short(nails)}: a board has at most {MAX_NAILS} nails"
-    return f"pocet_hrebiku = {nails}: a board needs at least {MIN_NAILS} nails"
+        return translate("JobFile", "pocet_hrebiku = {0}: a board has at most {1} nails").format(
+            _short(nails), MAX_NAILS
+        )
+    return translate("JobFile", "pocet_hrebiku = {0}: a board needs at least {1} nails").format(
+        nails, MIN_NAILS
+    )
 
 
 def _short(value: int) -> str:
@@ -269,11 +306,14 @@ def _check_radius(radius_cm: float) -> str | None:
         return None
     if math.isfinite(radius_cm) and radius_cm > MAX_RADIUS_CM:
         limit = f"{MAX_RADIUS_CM:g} cm"
-        return f"polomer_matrice = {radius_cm:g} cm: a board's radius is at most {limit}"
-    return (
-        f"polomer_matrice = {radius_cm:g} cm: the nails sit {NAIL_INSET_MM / 10:g} cm inside "
-        f"the edge, so the radius must be larger than {NAIL_INSET_MM / 10:g} cm"
-    )
+        return translate(
+            "JobFile", "polomer_matrice = {0:g} cm: a board's radius is at most {1}"
+        ).format(radius_cm, limit)
+    return translate(
+        "JobFile",
+        "polomer_matrice = {0:g} cm: the nails sit {1:g} cm inside the edge, so the radius "
+        "must be larger than {1:g} cm",
+    ).format(radius_cm, NAIL_INSET_MM / 10)
 
 
 @dataclass(frozen=True)
@@ -333,29 +373,46 @@ def read_nail_list(path: Path) -> NailList:
         k = int(np.flatnonzero(bad)[0])
         text = raw[starts[k] : min(ends[k], starts[k] + 40)].decode("utf-8", "replace")
         raise JobFileError(
-            path.name, int(lines[k]), f"number {k + 1} of the file: {text!r} is not a whole number"
+            path.name,
+            int(lines[k]),
+            translate("JobFile", "number {0} of the file: {1} is not a whole number").format(
+                k + 1, repr(text)
+            ),
         )
     if not len(starts):
-        raise JobFileError(path.name, 0, "no nail indices in the file")
+        raise JobFileError(path.name, 0, translate("JobFile", "no nail indices in the file"))
     digits = ends - starts - signed
     long = np.flatnonzero(digits > MAX_INDEX_DIGITS)
     if len(long):
         k = int(long[0])
-        what = "the count" if k == 0 and path.name.lower() == PORADI_NAME else f"number {k + 1}"
+        text = (
+            translate(
+                "JobFile",
+                "the count of the file has {1} digits: out of range on any board "
+                "(at most {2} nails, {3} entries)",
+            )
+            if k == 0 and path.name.lower() == PORADI_NAME
+            else translate(
+                "JobFile",
+                "number {0} of the file has {1} digits: out of range on any board "
+                "(at most {2} nails, {3} entries)",
+            )
+        )
         raise JobFileError(
             path.name,
             int(lines[k]),
-            f"{what} of the file has {int(digits[k])} digits: out of range on any board "
-            f"(at most {MAX_NAILS} nails, {MAX_ENTRIES} entries)",
+            text.format(k + 1, int(digits[k]), MAX_NAILS, MAX_ENTRIES),
         )
     if len(starts) > MAX_ENTRIES + 1:
         raise JobFileError(
-            path.name, int(lines[MAX_ENTRIES + 1]), f"more than {MAX_ENTRIES} nail indices"
+            path.name,
+            int(lines[MAX_ENTRIES + 1]),
+            translate("JobFile", "more than {0} nail indices").format(MAX_ENTRIES),
         )
     del starts, ends, digits, signed
     values = np.fromstring(raw.translate(_TO_SPACES), dtype=np.int64, sep=" ")
     if len(values) != len(lines):  # cannot happen: every number was checked above
-        raise JobFileError(path.name, 0, "could not read the nail indices")
+        raise JobFileError(path.name, 0, translate("JobFile", "could not read the nail indices"))
     counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
         return NailList(tuple(values.tolist()), lines, None, 0)
@@ -370,19 +427,31 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         raise JobFileError(
             name,
             nails.count_line,
-            f"the count says {nails.count} nail indices, but {len(sequence)} follow",
+            translate("JobFile", "the count says {0} nail indices, but {1} follow").format(
+                nails.count, len(sequence)
+            ),
         )
     if len(sequence) < 2:
-        raise JobFileError(name, nails.count_line or 1, "fewer than two nails: nothing to wind")
+        raise JobFileError(
+            name,
+            nails.count_line or 1,
+            translate("JobFile", "fewer than two nails: nothing to wind"),
+        )
     array = np.asarray(sequence, dtype=np.int64)
     bad = np.flatnonzero((array < 0) | (array >= params.nails))
     if len(bad):
         i = int(bad[0])
-        more = f" ({len(bad) - 1} more out of range)" if len(bad) > 1 else ""
+        more = (
+            translate("JobFile", " ({0} more out of range)").format(len(bad) - 1)
+            if len(bad) > 1
+            else ""
+        )
         raise JobFileError(
             name,
             int(nails.lines[i]),
-            f"entry {i + 1}: nail {sequence[i]} is out of range 0…{params.nails - 1}{more}",
+            translate("JobFile", "entry {0}: nail {1} is out of range 0…{2}{3}").format(
+                i + 1, sequence[i], params.nails - 1, more
+            ),
         )
     repeats = np.flatnonzero(array[1:] == array[:-1])
     if len(repeats):
@@ -390,7 +459,9 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
         raise JobFileError(
             name,
             int(nails.lines[i]),
-            f"entries {i} and {i + 1}: nail {sequence[i]} twice in a row (a thread to itself)",
+            translate(
+                "JobFile", "entries {0} and {1}: nail {2} twice in a row (a thread to itself)"
+            ).format(i, i + 1, sequence[i]),
         )
 
 
@@ -426,7 +497,11 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
     else:
         reason = param.check()
         if reason is not None:
-            raise JobFileError(poradi.name, 0, f"the board entered: {reason}")
+            raise JobFileError(
+                poradi.name,
+                0,
+                translate("JobFile", "the board entered: {0}").format(reason),
+            )
     check_sequence(poradi, nails, param)
     return StringArtJob(
         params=param,
@@ -444,7 +519,11 @@ def read_string_art(path: Path, param: StringArtParams | None = None) -> StringA
         params, lines = read_params(path)  # its errors first: the file the operator chose
         poradi = _partner(path, PORADI_NAME)
         if poradi is None:
-            raise JobFileError(path.name, 0, f"no {PORADI_NAME} beside it (the nail order)")
+            raise JobFileError(
+                path.name,
+                0,
+                translate("JobFile", "no {0} beside it (the nail order)").format(PORADI_NAME),
+            )
         nails = read_nail_list(poradi)
         check_sequence(poradi, nails, params)
         return StringArtJob(
