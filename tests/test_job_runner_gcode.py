@@ -411,3 +411,41 @@ def test_without_bf_a_path_that_comes_back_makes_the_boundary_lag_never_lead(
     stream = _stream_through("\n".join(lines) + "\n", tmp_path, 6)
     stream.status("Run", None, 0, (10.0, 0.0))  # on the way out, back, or out again
     assert stream.executed == 2  # the earliest: nothing it cannot prove
+
+
+@pytest.mark.parametrize("name", ["grbl-plotter", "corexy-plotter"])
+def test_a_board_that_resets_itself_mid_job_pauses_until_the_operator_resumes(
+    qtbot: QtBot, tmp_path: Path, name: str
+) -> None:
+    """A reset nobody here sent (the board's reset button, how many GRBL machines are
+    stopped by hand, or a power dip) must not be followed by the station moving the
+    machine again on its own: the job pauses; Resume looks and carries on, nothing skipped."""
+    plotter = StationHarness(load_profile(name))
+    plotter.connect()
+    plotter.run_until(lambda: plotter.gcode_session.planner_size > 0, timeout=1)
+    runner = JobRunner(plotter.station, tmp_path / "checkpoints")
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        assert runner.load(square_program()) == []
+        runner.start()
+        plotter.run_until(lambda: len(drawn(plotter)) >= 2, timeout=20)  # drawing the square
+        plotter.gcode_emulator.soft_reset()  # its own reset: the link stays up
+        plotter.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+        assert any("reset itself" in m for m in messages), messages
+        assert plotter.station.model.link_state is LinkState.CONNECTED
+        moves_when_paused = len(drawn(plotter))
+        sent_when_paused = len(plotter.written)
+        plotter.run(3.0)
+        assert len(drawn(plotter)) == moves_when_paused  # nothing moved on its own
+        job_lines = [w for w in plotter.written[sent_when_paused:] if w.strip() not in (b"?", b"")]
+        assert job_lines == []  # and nothing but status questions went out
+        runner.resume()
+        run_to_end(plotter, runner)
+        assert runner.state is JobState.DONE
+        strokes = [m for m in drawn(plotter) if m[2]]
+        for expected in (m for m in EXPECTED if m[2]):
+            assert expected in strokes  # none skipped
+    finally:
+        runner.deleteLater()
+        plotter.close()

@@ -10,6 +10,8 @@ program's own path back to where the machine stands.
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.run.driver import JobDriver, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
@@ -252,12 +254,32 @@ class GcodeDriver(JobDriver):
             self.proceed()
 
     def _on_reset(self) -> None:
-        """The device reset on its own (a banner): its planner is gone, look before going on."""
+        """The device was reset: its planner is gone, so look before going on.
+
+        A reset the station sent (to leave a hold) carries on once the machine
+        is seen.  A reset of the board's own — its reset button, which is how
+        many GRBL machines are stopped by hand, or a power dip — pauses the
+        job: whoever pressed it did not ask for the machine to move again, so
+        only the operator's Resume goes on (and the recheck then decides from
+        where, as after a lost link).
+        """
         if self.stream is None or self.runner.state not in CLOCK_RUNS:
             return
         self.stream.pending.clear()
         self._recheck = True
         self._asked_since_recheck = False
+        session = self.session
+        if session is not None and session.reset_by_device:
+            self._write_checkpoint(force=True)
+            self.runner.stop_short(
+                QCoreApplication.translate(
+                    "GcodeDriver",
+                    "The machine reset itself during the job (its reset button, or its "
+                    "power): the job is paused. Check the machine; Resume looks where it "
+                    "stands and carries on from there.",
+                )
+            )
+            return
         self.runner.note("The machine reset during the job; checking where it stands…")
         self.proceed()
 

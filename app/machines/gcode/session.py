@@ -152,6 +152,9 @@ class GcodeSession(MachineSession):
         self._jog_status_fresh = False
         #: Whether the board is in G91 after the lines sent (a reset brings back G90).
         self._relative = False
+        #: Whether the last :attr:`reset` was the board's own (a banner nobody here asked
+        #: for: its reset button, a power dip), not a soft reset the station sent.
+        self.reset_by_device = False
         #: Where the steps sent so far take each axis (None: no jog under way).
         self._jog_target: list[float] | None = None
         self._jog_told_end = False
@@ -335,7 +338,7 @@ class GcodeSession(MachineSession):
             self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
             if self.link.is_open:
                 self._reset_sent_at = self.clock.now()
-            return self._forget_stream()
+            return self._forget_stream(by_device=False)
 
     def discard_queued(self) -> list[SentLine]:
         """Drop lines not yet sent (the ones the device has stay and will be answered).
@@ -544,7 +547,8 @@ class GcodeSession(MachineSession):
 
     # --- link events and replies -------------------------------------------------------
 
-    def _forget_stream(self) -> list[SentLine]:
+    def _forget_stream(self, *, by_device: bool) -> list[SentLine]:
+        self.reset_by_device = by_device
         self._relative = False  # GRBL's power-on and reset mode is G90
         with self.feeder.lock:
             lost = self.streamer.clear()
@@ -637,7 +641,7 @@ class GcodeSession(MachineSession):
                 if ours:
                     self._pump()  # our reset's banner: what waited for it goes now
                     continue
-                lost = self._forget_stream()
+                lost = self._forget_stream(by_device=True)
                 if isinstance(verdict, BannerSeen):
                     lost = verdict.lost + lost  # the feeder forgot them when it read the banner
                 if lost:
