@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import sys
 import tempfile
+import time
 from collections.abc import Callable
 from pathlib import Path
 
@@ -48,9 +49,13 @@ def _page(window: MainWindow, title: str) -> None:
 
 
 def _settle(window: MainWindow) -> None:
+    """The window at its size, and the views that redraw on a real-time timer (the frame
+    log) given the time to."""
     window.resize(SCREEN)
-    for _ in range(5):
+    until = time.monotonic() + 0.5
+    while time.monotonic() < until:
         QApplication.processEvents()
+        time.sleep(0.01)
 
 
 def _hold_key(harness: StationHarness, window: MainWindow, key: Qt.Key, seconds: float) -> None:
