@@ -124,6 +124,23 @@ def bench_key_to_frame() -> list[str]:
     return [f"key press -> frame handed to the transport: p50 {p50:.3f} ms, p99 {p99:.3f} ms"]
 
 
+def _paint_counter() -> Any:
+    """An event filter counting the paints of the widgets it is installed on (``.paints``)."""
+    from PySide6.QtCore import QEvent, QObject
+
+    class PaintCounter(QObject):
+        def __init__(self) -> None:
+            super().__init__()
+            self.paints = 0
+
+        def eventFilter(self, _watched: QObject, event: QEvent) -> bool:
+            if event.type() == QEvent.Type.Paint:
+                self.paints += 1
+            return False
+
+    return PaintCounter()
+
+
 def _load() -> str:
     """The load average (1 and 5 min) a figure was measured under."""
     one, five, _ = os.getloadavg()
@@ -313,23 +330,13 @@ def _telemetry_run(throttle_ms: int | None, seconds: float = 5.0) -> tuple[float
     import math
 
     import numpy as np
-    from PySide6.QtCore import QEvent, QEventLoop, QObject, Qt, QTimer
+    from PySide6.QtCore import QEventLoop, Qt, QTimer
     from PySide6.QtWidgets import QApplication
 
     from app.profiles import load_profile
     from app.station import Station
     from app.telemetry import MAX_WINDOW_S, TelemetryRecorder
     from widgets.telemetry_dock import TelemetryDock
-
-    class PaintCounter(QObject):
-        def __init__(self) -> None:
-            super().__init__()
-            self.paints = 0
-
-        def eventFilter(self, _watched: QObject, event: QEvent) -> bool:
-            if event.type() == QEvent.Type.Paint:
-                self.paints += 1
-            return False
 
     def waves(t: np.ndarray, axis: int) -> tuple[np.ndarray, np.ndarray]:
         """Position and velocity of a sine sweep, a different period per axis."""
@@ -357,7 +364,7 @@ def _telemetry_run(throttle_ms: int | None, seconds: float = 5.0) -> tuple[float
     fed_values = [[v.tolist() for v in waves(ahead, axis)] for axis in range(2)]
     app.processEvents()
 
-    counter = PaintCounter()
+    counter = _paint_counter()
     dock.graphics.viewport().installEventFilter(counter)
     fed = 0
     wall_start = time.perf_counter()
@@ -400,7 +407,7 @@ def _telemetry_idle(with_dock: bool, seconds: float = 10.0) -> tuple[float, floa
     The station, the emulator's control loop and 10 frames a second run
     either way; with the dock, its plots scroll and hold every series.
     """
-    from PySide6.QtCore import QEvent, QEventLoop, QObject, QTimer
+    from PySide6.QtCore import QEventLoop, QTimer
     from PySide6.QtWidgets import QApplication
 
     from app.profiles import load_profile
@@ -410,23 +417,13 @@ def _telemetry_idle(with_dock: bool, seconds: float = 10.0) -> tuple[float, floa
     from protocol.stage.codec import Subscriber
     from widgets.telemetry_dock import TelemetryDock
 
-    class PaintCounter(QObject):
-        def __init__(self) -> None:
-            super().__init__()
-            self.paints = 0
-
-        def eventFilter(self, _watched: QObject, event: QEvent) -> bool:
-            if event.type() == QEvent.Type.Paint:
-                self.paints += 1
-            return False
-
     app = QApplication.instance() or QApplication([])
     station = Station(load_profile("xy-stage"), MonotonicClock(), realtime=True)
     station.connect_emulator()
     recorder = TelemetryRecorder(station)
     recorder.set_variable(Subscriber.BATTERY_VOLTAGE)
     dock = TelemetryDock(recorder)
-    counter = PaintCounter()
+    counter = _paint_counter()
     if with_dock:
         dock.resize(1200, 700)
         dock.show()
