@@ -623,9 +623,11 @@ def test_the_button_switches_off_stopping_everything_and_on_afresh(bench: Bench)
     bench.send(cmd(CommandId.JOG, 1))
     assert bench.step(20) == []  # off: nothing heard, nothing answered
     assert not bench.fw.axes[0].moving
+    stopped_at = bench.fw.axes[0].physical_um
     bench.fw.press_button()
     assert bench.fw.powered and bench.fw.motors_enabled
-    assert bench.fw.axes[0].position_um == 0.0  # the counters start afresh
+    # The counters start afresh from the absolute encoder (S3-30): where the axis stands.
+    assert bench.fw.axes[0].position_um == pytest.approx(stopped_at)
     assert bench.fw.parameter(0, EchoType.ACCELERATION) == 12_345  # FRAM kept it
     assert len(bench.step()) == 0 and len([bench.exchange()]) == 1
 
@@ -753,3 +755,115 @@ def test_command_log_records_what_was_executed(bench: Bench) -> None:
         (1, 0x0A, 7, False),
     ]
     assert log[0].time == pytest.approx(100.0)
+
+
+# -- FIDELITY S3-28, S3-30, S3-31, S3-36: step timer, power-on, shutdown, reset ------------
+
+
+def test_s3_28_the_step_rate_is_what_whole_psc_and_arr_give(bench: Bench) -> None:
+    """At 256 microsteps (1000 µm / 51200 = 0.01953125 µm) 50 mm/s asks 2.56 MHz: 31.25
+    ticks of the 80 MHz timer. ARR + 1 = 31 (truncated): 2 580 645.16 Hz, 50.403 mm/s."""
+    bench.write(EchoType.MICROSTEPS, 256)
+    bench.write(EchoType.ACCELERATION, 999_999)
+    bench.write(EchoType.FAST_SPEED, 50_000)
+    bench.exchange(cmd(CommandId.SPEED, 1))
+    bench.exchange(cmd(CommandId.MOVE_ABS, 40_000))
+    bench.idle(0.2)  # ramp over after 0.05 s, cruising
+    assert bench.fw.axes[0].velocity == pytest.approx(80e6 / 31 * 1000 / 51200)
+    assert bench.fw.axes[0].velocity == pytest.approx(50_403.2258, abs=1e-3)
+    # The defaults are exact periods (10 mm/s: 2500 ticks), so nothing changes there.
+    bench.write(EchoType.MICROSTEPS, 16)
+    bench.write(EchoType.FAST_SPEED, 10_000)
+    bench.exchange(cmd(CommandId.MOVE_ABS, 0))
+    bench.idle(0.5)
+    assert bench.fw.axes[0].velocity == -10_000
+
+
+def test_s3_30_power_on_counts_from_the_absolute_encoder() -> None:
+    """The stage is switched on where it was left: the encoder's reading is the position."""
+    bench = Bench(StageConfig(encoder_positions_um=(12_345.0, 30_000.0)))
+    echo = bench.exchange()
+    assert [p.data for p in echo.packets] == [12_345, 30_000]
+    assert bench.subscribe(Subscriber.X_ENCODER) == 12_345
+    # A zero set by the operator is the station's frame, not the machine's: after a
+    # power cycle the counter is the encoder's absolute position again.
+    bench.exchange(cmd(CommandId.SET_POS, 0))
+    assert x_position(bench.exchange()) == 0
+    bench.fw.press_button()
+    bench.fw.press_button()
+    assert x_position(bench.exchange()) == 12_345
+
+
+def test_s3_30_an_encoder_position_off_the_travel_is_refused() -> None:
+    with pytest.raises(ValueError, match="off its travel"):
+        StageFirmware(ManualClock(), StageConfig(encoder_positions_um=(60_000.0,)))
+
+
+def test_s3_31_the_shutdown_sequence_saves_the_step_count_and_power_on_restores_it() -> None:
+    bench = Bench(StageConfig(encoder_positions_um=(10_000.0,), save_steps_at_shutdown=True))
+    bench.exchange(cmd(CommandId.SET_POS, 0))  # the operator's zero at 10 mm from the switch
+    bench.exchange(cmd(CommandId.MOVE_ABS, 1_000))
+    bench.until(lambda e: x_status(e) == AxisStatus.TARGET_REACHED, 2.0)
+    bench.fw.press_button()  # a short press: the shutdown sequence
+    base = 0x28  # axis 0's saved count, then its mark (fram.py's map)
+    assert bench.fw.fram.dump(base, 8) == (3_200).to_bytes(4, "little") + bytes.fromhex("FE5AE957")
+    bench.fw.press_button()
+    assert x_position(bench.exchange()) == 1_000  # the operator's frame survived
+    # The count is used up: a power cut by the KillSwitch (no sequence) cannot bring it
+    # back, the encoder's reading counts then.
+    bench.fw.kill_switch()
+    bench.fw.press_button()
+    assert x_position(bench.exchange()) == 11_000
+
+
+def test_s3_31_without_the_option_nothing_is_saved_and_the_encoder_counts() -> None:
+    bench = Bench(StageConfig(encoder_positions_um=(10_000.0,)))
+    bench.exchange(cmd(CommandId.SET_POS, 0))
+    bench.fw.press_button()
+    assert bench.fw.fram.dump(0x28, 8) == bytes(8)
+    bench.fw.press_button()
+    assert x_position(bench.exchange()) == 10_000
+
+
+def test_s3_36_the_kill_switch_cuts_the_power_without_the_shutdown_sequence() -> None:
+    bench = Bench(StageConfig(save_steps_at_shutdown=True))
+    bench.exchange(cmd(CommandId.JOG, 1))
+    bench.idle(0.2)
+    bench.fw.kill_switch()
+    assert not bench.fw.powered and not bench.fw.motors_enabled
+    assert not any(axis.moving for axis in bench.fw.axes)
+    assert bench.fw.led is Led.OFF
+    assert bench.fw.fram.dump(0x28, 8) == bytes(8)  # nothing saved
+    bench.send(cmd(CommandId.JOG, 1))
+    assert bench.step(20) == []  # silent
+    bench.fw.kill_switch()  # already off: nothing more to cut
+    assert not bench.fw.powered
+
+
+def test_s3_36_a_long_press_resets_the_board_at_once() -> None:
+    """Held for the reset time the button restarts the firmware: axes stop dead, nothing is
+    saved, the board is on again at once, counting from the encoder, awake, slow speed
+    selected, and a host must open its session anew."""
+    bench = Bench(StageConfig(save_steps_at_shutdown=True))
+    bench.exchange(cmd(CommandId.SLEEP, 1), cmd(CommandId.SLEEP, 1))
+    bench.fw.press_button(held_s=bench.fw.config.reset_press_s)
+    assert bench.fw.powered and not bench.fw.sleeping
+    bench.exchange(cmd(CommandId.SPEED, 1), cmd(CommandId.SET_POS, 5_000))
+    bench.exchange(cmd(CommandId.JOG, 1))
+    bench.idle(0.2)
+    assert bench.fw.axes[0].moving
+    bench.send(cmd(CommandId.JOG, 1))  # arrived, not yet handled: the reset drops it
+    bench.fw.press_button(held_s=bench.fw.config.reset_press_s)
+    assert bench.fw.powered and bench.fw.motors_enabled
+    assert not bench.fw.axes[0].moving
+    assert not bench.fw.speed_is_fast(0)
+    assert bench.fw.led is Led.PAIRING  # no session until the host speaks again
+    assert bench.fw.fram.dump(0x28, 8) == bytes(8)  # nothing saved
+    assert bench.step(5) == []
+    stood = bench.fw.axes[0].physical_um
+    echo = bench.exchange()
+    assert stood > 100 and x_position(echo) == pytest.approx(stood, abs=1)
+    assert echo.packets[1].data == 0  # Y's SET_POS 5000 is forgotten: the encoder says 0
+    # A shorter press is the ordinary switch-off.
+    bench.fw.press_button(held_s=bench.fw.config.reset_press_s - 0.1)
+    assert not bench.fw.powered

@@ -19,8 +19,14 @@ Memory map (one 64-byte block per axis, base ``0x40 * axis``)::
     base + 0x1C  TYPE 9  lead of the screw µm/rev
     base + 0x20  TYPE A  full steps per revolution
     base + 0x24  TYPE B  travel            µm
+    base + 0x28  step count saved at shutdown  microsteps, int32  (FIDELITY S3-31)
+    base + 0x2C  0x57E95AFE while that count is valid
 
 TYPE C (encoder position) is measured, not stored, and has no address.
+The saved step count is not a parameter either: the shutdown sequence
+writes it when the board is set to, and power-on takes it (and marks it
+used, so a later power cut without the sequence cannot bring back a stale
+count).
 
 The original names one address: "Začiatočná adresa … maximálnej akcelerácie
 … 0x0000" (FIDELITY S3-14), so the acceleration starts the block; the rest
@@ -45,6 +51,11 @@ IHOLDDELAY_MASK = 0x0F
 #: written over the wire; it is there so a test can see that current writes keep
 #: every bit they do not own.
 DEFAULT_IHOLDDELAY = 6
+
+#: Where the shutdown sequence leaves the step count, and the mark that it is there.
+STEP_COUNT_OFFSET = 0x28
+STEP_COUNT_MARK_OFFSET = 0x2C
+STEP_COUNT_MARK = 0x57E95AFE
 
 _INT32_MIN = -(2**31)
 _INT32_MAX = 2**31 - 1
@@ -113,6 +124,25 @@ class Fram:
             return True
         self._store(address, old)
         return False
+
+    def save_step_count(self, axis: int, count: int) -> None:
+        """The shutdown sequence's last words: the axis's step count, marked valid."""
+        base = self._axis_base(axis)
+        self._store(base + STEP_COUNT_OFFSET, self._merge(0, EchoType.POSITION, count))
+        self._store(base + STEP_COUNT_MARK_OFFSET, STEP_COUNT_MARK)
+
+    def take_step_count(self, axis: int) -> int | None:
+        """The count saved at the last shutdown, or None; either way it is used up."""
+        base = self._axis_base(axis)
+        if self._load(base + STEP_COUNT_MARK_OFFSET) != STEP_COUNT_MARK:
+            return None
+        self._store(base + STEP_COUNT_MARK_OFFSET, 0)
+        return self._load(base + STEP_COUNT_OFFSET)
+
+    def _axis_base(self, axis: int) -> int:
+        if not 0 <= axis < self.axes:
+            raise ValueError(f"no axis {axis}")
+        return AXIS_STRIDE * axis
 
     def ihold_irun(self, axis: int) -> int:
         """The whole IHOLD_IRUN register of an axis."""

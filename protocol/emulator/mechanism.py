@@ -339,6 +339,12 @@ class Axis:
         return self._phase.position(self._x0, self._t)
 
     @property
+    def physical_um(self) -> float:
+        """Where the axis really is, from its low end switch: what an absolute encoder reads,
+        whatever SET_POS and homing have made of the logical frame."""
+        return self._physical()
+
+    @property
     def microsteps(self) -> int:
         """Logical position in whole microsteps, as the firmware's step counter holds it.
 

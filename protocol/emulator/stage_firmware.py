@@ -15,7 +15,6 @@ cycle, and each accepted frame is answered by one echo at its end.  On a
 
 from __future__ import annotations
 
-import enum
 from collections import deque
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -41,6 +40,8 @@ from protocol.stage.codec import (
     encode_echo,
     written_parameter,
 )
+from protocol.stage.driver import STEP_CLOCK_HZ, quantised_speed
+from protocol.stage.led import LedRing, led_ring
 
 #: Table 1.4 defaults of the XY stage.
 XY_STAGE_PARAMETERS: Mapping[EchoType, int] = MappingProxyType(
@@ -118,6 +119,16 @@ class StageConfig:
     #: Above this charge the charger tapers its current linearly down to 0 at 100 %.
     charge_taper_percent: float = 90.0
     board_temperature_c: float = 25.0
+    #: The step timer's clock (FIDELITY S3-28): speeds run at what whole PSC/ARR give.
+    step_clock_hz: int = STEP_CLOCK_HZ
+    #: Where each axis physically is when the board is first switched on, in µm from its
+    #: low end switch (the absolute encoder's reading, FIDELITY S3-30); missing axes at 0.
+    encoder_positions_um: tuple[float, ...] = ()
+    #: The original's option (FIDELITY S3-31): the shutdown sequence saves every axis's
+    #: step count to FRAM and power-on restores it instead of the encoder's reading.
+    save_steps_at_shutdown: bool = False
+    #: Holding the user button this long resets the board instead of switching it off.
+    reset_press_s: float = 3.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -187,15 +198,8 @@ def _fit(value: float) -> int:
     return max(DATA_MIN, min(DATA_MAX, round(value)))
 
 
-class Led(enum.Enum):
-    """The RGB LED ring's states (the original's table 7-4)."""
-
-    OFF = "off"
-    CHARGING = "red on"
-    LOW_BATTERY = "red, fast blink"
-    STANDBY = "green on"
-    PAIRING = "blue, slow blink"
-    TALKING = "blue on"
+#: The LED ring's states (the original's table 7-4); shared with the station.
+Led = LedRing
 
 
 @dataclass
@@ -262,6 +266,7 @@ class StageFirmware(ControlCycles):
         self._controls = [_AxisControl() for _ in range(self.config.axes)]
         self._store_defaults()
         self._axes = tuple(self._make_axis(i) for i in range(self.config.axes))
+        self._power_on()
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
         self._handlers: dict[int, _Handler] = {
             CommandId.NOP: self._nop,
@@ -309,46 +314,71 @@ class StageFirmware(ControlCycles):
 
     @property
     def led(self) -> Led:
-        """What the LED ring shows (FIDELITY S3-33, table 7-4), the first that applies:
-        the charger (red on), a low battery (red, fast blink), asleep (standby: green),
-        a host talking (a data session: blue on), else advertising for a host (pairing:
-        blue, slow blink)."""
+        """What the LED ring shows (FIDELITY S3-33, table 7-4): see :func:`led_ring`,
+        the same precedence the station draws from the device flags."""
         with self._lock:
             if not self._powered:
                 return Led.OFF
-            if self._battery.charger_connected:
-                return Led.CHARGING
-            if self._battery.charge < self.config.low_battery_percent:
-                return Led.LOW_BATTERY
-            if self._sleeping:
-                return Led.STANDBY
-            return Led.TALKING if self._session_open() else Led.PAIRING
+            return led_ring(self._device_flags())
 
-    def press_button(self) -> None:
-        """The user button (FIDELITY S3-36): switch off, or on again.
+    def press_button(self, held_s: float = 0.1) -> None:
+        """The user button (FIDELITY S3-36): on, off, or a reset when held long.
 
-        Switching off is the original's shutdown sequence: every axis stops dead,
-        the drivers are disabled, and the parameters stay in FRAM (they are written
-        there as they change); then the board hears nothing and answers nothing.
-        Switching on starts afresh: the step counters from 0, not homed, awake.
+        Off, a press switches on (see :meth:`_power_on`).  On, a short press runs
+        the original's shutdown sequence: every axis stops dead, the drivers are
+        disabled, the step counts go to FRAM if the board is set to save them
+        (the parameters are there already, written as they change), and the
+        firmware then cuts its own power through the KillSwitch.  Held for
+        ``reset_press_s`` or longer it resets the board: no shutdown sequence,
+        nothing saved, the firmware starts again at once as at power-on.
         """
         with self._lock:
-            if self._powered:
-                for axis in self._axes:
-                    axis.estop()
-                for control in self._controls:
-                    control.jog_direction = 0
-                self._queue.clear()
-                self._decoder = StageDecoder(self.config.axes)
-                self._last_frame = None
-                self._powered = False
+            if not self._powered:
+                self._powered = True
+                self._power_on()
                 return
-            self._powered = True
-            self._sleeping = False
-            for axis, control in zip(self._axes, self._controls, strict=True):
-                axis.set_position(0.0)
-                control.homed = False
-                control.fast = False
+            if held_s >= self.config.reset_press_s:
+                self._cut_power()
+                self._powered = True
+                self._power_on()
+                return
+            self._cut_power()
+            if self.config.save_steps_at_shutdown:
+                for index, axis in enumerate(self._axes):
+                    self.fram.save_step_count(index, axis.microsteps)
+
+    def kill_switch(self) -> None:
+        """The KillSwitch cuts the power outright (FIDELITY S3-36): what the shutdown
+        sequence ends with, here without the sequence before it, as when the board
+        hangs or the battery is pulled.  Everything stops dead and nothing is saved."""
+        with self._lock:
+            if self._powered:
+                self._cut_power()
+
+    def _cut_power(self) -> None:
+        """Power gone: axes stop dead, drivers off; the board hears and answers nothing."""
+        for axis in self._axes:
+            axis.estop()
+        for control in self._controls:
+            control.jog_direction = 0
+        self._queue.clear()
+        self._decoder = StageDecoder(self.config.axes)
+        self._last_frame = None
+        self._powered = False
+
+    def _power_on(self) -> None:
+        """The firmware's start: awake, slow speed, not homed, and every step counter set
+        from where the axis is (FIDELITY S3-30: the absolute encoder's reading), or from
+        the count the last shutdown saved (S3-31), which keeps the operator's zero."""
+        self._sleeping = False
+        for index, (axis, control) in enumerate(zip(self._axes, self._controls, strict=True)):
+            control.homed = False
+            control.fast = False
+            saved = self.fram.take_step_count(index)
+            if saved is not None and self.config.save_steps_at_shutdown:
+                axis.set_position(saved * axis.limits.microstep_um)
+            else:
+                axis.set_position(axis.physical_um)
 
     @property
     def rejected_frames(self) -> int:
@@ -654,10 +684,16 @@ class StageFirmware(ControlCycles):
                 self.fram.write(index, parameter, value)
 
     def _make_axis(self, index: int) -> Axis:
+        limits = self._limits(index)
+        positions = self.config.encoder_positions_um
+        where = positions[index] if index < len(positions) else 0.0
+        if not 0.0 <= where <= limits.travel_um:
+            raise ValueError(f"encoder position {where} µm of axis {index} is off its travel")
         return Axis(
-            self._limits(index),
+            limits,
             acceleration=self.fram.read(index, EchoType.ACCELERATION),
             start_speed=self.fram.read(index, EchoType.START_SPEED),
+            position_um=where,
         )
 
     def _limits(self, index: int) -> AxisLimits:
@@ -703,8 +739,11 @@ class StageFirmware(ControlCycles):
     # -- command handlers ------------------------------------------------------------------
 
     def _speed_of(self, index: int) -> float:
+        """The selected speed as the step timer runs it (FIDELITY S3-28)."""
         fast = self._controls[index].fast
-        return self.fram.read(index, EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED)
+        asked = self.fram.read(index, EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED)
+        microstep = self._axes[index].limits.microstep_um
+        return quantised_speed(asked, microstep, self.config.step_clock_hz)
 
     def _take_over(self, index: int) -> Axis:
         """The axis, with whatever the previous command left pending forgotten."""
@@ -755,7 +794,9 @@ class StageFirmware(ControlCycles):
     def _home(self, index: int, data: int, now: float) -> _Reply:
         if not self._may_move(index):
             return _REFUSED
-        self._take_over(index).home(self.fram.read(index, EchoType.SLOW_SPEED))
+        slow = self.fram.read(index, EchoType.SLOW_SPEED)
+        microstep = self._axes[index].limits.microstep_um
+        self._take_over(index).home(quantised_speed(slow, microstep, self.config.step_clock_hz))
         self._controls[index].homed = True
         return _DEFAULT_REPLY
 
