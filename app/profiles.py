@@ -15,6 +15,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_HZ
+
 RESOURCES = Path(__file__).resolve().parent.parent / "resources"
 MACHINES_DIR = RESOURCES / "machines"
 DEFAULT_PROFILE = "xy-stage"
@@ -59,6 +61,22 @@ class Capabilities:
     parameters: bool = False  # device-stored dynamics the Dynamics page reads and writes
     pen: bool = False
     drill: bool = False
+
+
+@dataclass(frozen=True)
+class DriverSettings:
+    """The stage's TMC2130 drivers and step timer ([driver] in the profile).
+
+    The wire carries the current scale CS (0…31) and speeds in µm/s; what the
+    motor gets follows from these: IRMS from VFS and Rsense (FIDELITY S3-18),
+    the real step rate from the timer clock (S3-28).  The original gives no
+    VFS or Rsense: the defaults are the TMC2130's VSENSE = 0 full scale
+    (0.32 V) and the usual 0.11 Ω sense resistor.
+    """
+
+    vfs_v: float = DEFAULT_VFS_V
+    rsense_ohm: float = DEFAULT_RSENSE_OHM
+    step_clock_hz: int = STEP_CLOCK_HZ
 
 
 #: What a GRBL-compatible board executes (PROTOCOLS.md §4 plus the usual GRBL extras).
@@ -119,6 +137,7 @@ class MachineProfile:
     #: it finished.  Judged against the travel when the profile is read, and again by the
     #: motion gate when the job goes there.
     park: Mapping[str, float] | None = None
+    driver: DriverSettings = field(default_factory=DriverSettings)
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
@@ -206,6 +225,11 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
                 f"{path}: [gcode] kinematics must be cartesian, corexy or cylindrical"
             )
     park = _park_from(_section(data, "park", path), axes, path) if "park" in data else None
+    driver = _build(DriverSettings, _section(data, "driver", path), path, "[driver]")
+    if not (driver.vfs_v > 0 and driver.rsense_ohm >= 0 and driver.step_clock_hz > 0):
+        raise ProfileError(
+            f"{path}: [driver] vfs_v and step_clock_hz must be positive, rsense_ohm not negative"
+        )
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -220,6 +244,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         source=path,
         gcode=gcode,
         park=park,
+        driver=driver,
     )
 
 

@@ -102,3 +102,40 @@ def test_the_overhead_follows_the_period() -> None:
     prog = program(move(HERE, X=20.0))
     slow_link = estimate(prog, load_profile("xy-stage"), {}, 0.5)
     assert slow_link.total_s - xy_estimate(prog).total_s == pytest.approx(0.2)
+
+
+def test_s3_28_the_estimate_runs_the_speed_the_step_timer_gives_as_the_emulator_does() -> None:
+    """At 256 microsteps 50 mm/s is 31.25 ticks of the 80 MHz timer; whole ticks make it
+    31, i.e. 50.403 mm/s. The estimate times the move at that speed, and the emulated
+    stage takes that long."""
+    from protocol.clock import ManualClock
+    from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+    from protocol.stage.codec import CommandFrame, CommandId, CommandPacket, encode_command
+
+    held_values = {
+        EchoType.MICROSTEPS: 256,
+        EchoType.FAST_SPEED: 50_000,
+        EchoType.ACCELERATION: 999_999,
+    }
+    held = {"X": held_values}
+    prog = program(move(HERE, X=40.0))
+    real = 80e6 / 31 / 51_200  # mm/s
+    assert real == pytest.approx(50.4032, abs=1e-4)
+    t_ramp, d_ramp = ramp(0.5, real, 999.999)
+    expected = 2 * t_ramp + (40 - 2 * d_ramp) / real
+    result = estimate(prog, load_profile("xy-stage"), held, PERIOD_S)
+    assert result.total_s == pytest.approx(expected + OVERHEAD, abs=1e-9)
+    exact = 2 * ramp(0.5, 50.0, 999.999)[0] + (40 - 2 * ramp(0.5, 50.0, 999.999)[1]) / 50.0
+    assert expected < exact - 0.005  # the quantisation is visible: 6 ms over 40 mm
+
+    clock = ManualClock()
+    stage = StageFirmware(clock, StageConfig(parameters=held_values))
+    nop = CommandPacket(CommandId.NOP)
+    for packet in (CommandPacket(CommandId.SPEED, 1), CommandPacket(CommandId.MOVE_ABS, 40_000)):
+        stage.receive(encode_command(CommandFrame((packet, nop), 0)))
+        clock.advance(0.005)
+        stage.run_until(clock.now())
+    # The move began in the cycle its frame arrived in and has run that one cycle.
+    remaining = stage.axes[0].time_to_idle()
+    assert remaining is not None
+    assert 0.005 + remaining == pytest.approx(expected, abs=1e-9)

@@ -27,6 +27,7 @@ that the station only ever sees as what the device then reports::
     menu M533 T444        usb3: the unit's menu sets step sizes and/or threads
     joystick X 1023       usb3: the X joystick reads 1023 (centred 500…524)
     charger on            xy-stage: plug the charger in (off unplugs it)
+    button long           xy-stage: hold the user button (a reset); kill: the KillSwitch
     alarm 1               G-code profiles: a limit switch trips (ALARM:1)
 
 ``help`` lists the controls of the running profile; a line that is not a
@@ -262,6 +263,18 @@ def _stage_rotation(stage: StageFirmware, args: Sequence[str]) -> None:
     stage.rotation_rate_dps = _number(args, "a rotation rate in °/s")
 
 
+def _stage_button(stage: StageFirmware, args: Sequence[str]) -> None:
+    if len(args) > 1 or (args and args[0].lower() != "long"):
+        raise ControlError("button takes nothing, or 'long' (held: a reset)")
+    stage.press_button(held_s=stage.config.reset_press_s if args else 0.1)
+
+
+def _stage_kill(stage: StageFirmware, args: Sequence[str]) -> None:
+    if args:
+        raise ControlError("kill takes nothing")
+    stage.kill_switch()
+
+
 USB3_CONTROLS: dict[str, Control[Usb3Firmware]] = {
     "menu": Control(
         "menu [M<mx><my><mz>] [T<tx><ty><tz>]",
@@ -281,6 +294,12 @@ STAGE_CONTROLS: dict[str, Control[StageFirmware]] = {
     "battery": Control("battery <0…100>", "set the battery's charge in %", _stage_battery),
     "temperature": Control("temperature <°C>", "set the board temperature", _stage_temperature),
     "rotation": Control("rotation <°/s>", "set the IMU's rotation rate", _stage_rotation),
+    "button": Control(
+        "button [long]",
+        "press the user button: on, or the shutdown sequence; long: reset the board",
+        _stage_button,
+    ),
+    "kill": Control("kill", "the KillSwitch cuts the power (no shutdown sequence)", _stage_kill),
 }
 
 GCODE_CONTROLS: dict[str, Control[GcodeFirmware]] = {

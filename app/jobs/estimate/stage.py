@@ -3,7 +3,8 @@
 Rather than a second, simpler motion model that would drift from the device,
 the program is replayed on the same :class:`~protocol.emulator.mechanism.Axis`
 the firmware emulator runs: trapezoids, start-speed jumps and triangular
-short moves come out exactly as the device does them.  Each move is one
+short moves come out exactly as the device does them, at the speed its step
+timer's whole PSC/ARR really give.  Each move is one
 ``time_to_idle`` and one ``advance`` in closed form, never small time steps,
 so a long job is estimated in a blink.
 
@@ -25,6 +26,7 @@ from app.jobs.program import OpKind, Program
 from app.profiles import MachineProfile
 from protocol.emulator.mechanism import Axis, AxisLimits
 from protocol.stage.codec import EchoType
+from protocol.stage.driver import quantised_speed
 
 #: The stage's control cycle (s): an echo leaves at the end of the cycle its frame arrived in.
 CONTROL_CYCLE_S = 0.005
@@ -75,7 +77,12 @@ def estimate_stage(
             start_speed=value(EchoType.START_SPEED),
             position_um=min(max(where, 0.0), travel_um),
         )
-        speeds[axis_profile.name] = value(EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED)
+        # The speed the step timer really runs (FIDELITY S3-28), as the device does.
+        speeds[axis_profile.name] = quantised_speed(
+            value(EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED),
+            lead_um / per_rev,
+            profile.driver.step_clock_hz,
+        )
     overhead = period_s / 2 + control_cycle_s
     elapsed = 0.0
     cumulative: list[float] = []
