@@ -107,3 +107,46 @@ def test_usb3_axes_show_their_state_right_after_connecting(qtbot: QtBot) -> None
         assert usb3.usb3_emulator.positions == (0, 0, 0)  # asking moved nothing
     finally:
         usb3.close()
+
+
+def test_s3_33_the_led_ring_is_drawn_from_the_device_flags(
+    harness: StationHarness, info: InfoPanel
+) -> None:
+    from protocol.stage.led import LedRing
+    from widgets.panels.info import LED_COLOURS
+
+    assert info.led_state() is None and info.led_text.text() == "LED ring: —"
+    harness.connect()
+    harness.run(1.5)  # the flags are asked at least once a second
+    assert info.led_state() is LedRing.TALKING
+    assert info.led_text.text() == "LED ring: blue"
+    assert LED_COLOURS[LedRing.TALKING] in info.led_lamp.styleSheet()
+    assert info.led_text.toolTip() == "Talking to this station"
+    harness.emulator.battery_charge = 10.0
+    harness.run(1.5)
+    assert info.led_state() is LedRing.LOW_BATTERY is harness.emulator.led
+    assert info.led_text.text() == "LED ring: red, blinking fast"
+    harness.emulator.charger_connected = True
+    harness.run(1.5)
+    assert info.led_state() is LedRing.CHARGING is harness.emulator.led
+    harness.emulator.charger_connected = False
+    harness.emulator.battery_charge = 80.0
+    harness.session.set_sleep(True)
+    harness.run(1.5)
+    assert info.led_state() is LedRing.STANDBY is harness.emulator.led
+    assert LED_COLOURS[LedRing.STANDBY] in info.led_lamp.styleSheet()
+    # Silent stage: the station no longer knows how the ring is lit.
+    harness.emulator.kill_switch()
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.LOST, timeout=3)
+    assert info.led_state() is None and info.led_text.text() == "LED ring: —"
+
+
+def test_s3_33_machines_without_device_flags_show_no_led_ring(qtbot: QtBot) -> None:
+    harness = StationHarness(load_profile("usb3"))
+    try:
+        panel = InfoPanel(harness.station.model)
+        qtbot.addWidget(panel)
+        panel.show()
+        assert not panel.led_text.isVisible() and not panel.led_lamp.isVisible()
+    finally:
+        harness.close()

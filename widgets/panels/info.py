@@ -3,7 +3,8 @@
 Everything here is read from the machine model on its change signals, so the
 panel shows exactly what the device last reported: positions and statuses
 per axis, the link state as a coloured lamp, the battery, the board
-temperature, and why the machine may refuse to move (charger, USB).
+temperature, why the machine may refuse to move (charger, USB), and the
+stage's LED ring as the device flags say it is lit (FIDELITY S3-33).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from PySide6.QtWidgets import (
 
 from app.machine import LinkState, MachineModel
 from protocol.stage.codec import DeviceFlag
+from protocol.stage.led import LedRing, led_ring
 from widgets.link_text import axis_status_text, link_detail_text, link_state_text
 from widgets.number_field import localized
 from widgets.retranslate import Texts
@@ -32,6 +34,16 @@ LINK_COLOURS: dict[LinkState, str] = {
     LinkState.STALE: "#e0a000",
     LinkState.LOST: "#d03030",
     LinkState.DISCONNECTED: "#8a8a8a",
+}
+
+#: The LED ring's colours, as drawn beside its state; blinking states say so in words.
+LED_COLOURS: dict[LedRing, str] = {
+    LedRing.OFF: "#8a8a8a",
+    LedRing.CHARGING: "#d03030",
+    LedRing.LOW_BATTERY: "#d03030",
+    LedRing.STANDBY: "#2e9e44",
+    LedRing.PAIRING: "#1f6fc0",
+    LedRing.TALKING: "#1f6fc0",
 }
 
 #: Status texts worth a colour; the rest stay in the normal text colour.
@@ -123,6 +135,17 @@ class InfoPanel(QFrame):
         column.addWidget(self.battery_text)
         column.addWidget(self.battery)
 
+        # The stage's LED ring, drawn from the device flags it reports (S3-33).
+        led_row = QHBoxLayout()
+        self.led_lamp = QLabel()
+        self.led_lamp.setObjectName("led_ring_lamp")
+        self.led_lamp.setFixedSize(12, 12)
+        self.led_text = QLabel()
+        self.led_text.setObjectName("led_ring_text")
+        led_row.addWidget(self.led_lamp)
+        led_row.addWidget(self.led_text, 1)
+        column.addLayout(led_row)
+
         self.temperature = QLabel()
         self.power_note = QLabel()
         self.power_note.setStyleSheet("color: #c06000;")
@@ -131,7 +154,14 @@ class InfoPanel(QFrame):
         # Battery and temperature come from subscriber variables; machines without
         # them (mains-powered units) do not show empty gauges.
         has_telemetry = self._model.profile.capabilities.subscribers
-        for widget in (self.battery, self.battery_text, self.temperature, self.power_note):
+        for widget in (
+            self.battery,
+            self.battery_text,
+            self.temperature,
+            self.power_note,
+            self.led_lamp,
+            self.led_text,
+        ):
             widget.setVisible(has_telemetry)
         return column
 
@@ -169,6 +199,7 @@ class InfoPanel(QFrame):
             status.setEnabled(live)
             position.setToolTip(tip)
             self._show_axis(index)
+        self._show_led()
 
     def _show_telemetry(self, _key: str = "") -> None:
         telemetry = self._model.telemetry
@@ -189,6 +220,62 @@ class InfoPanel(QFrame):
             else self.tr("board {0} °C").format(localized(f"{temperature:.1f}"))
         )
         self.power_note.setText(self._power_note())
+        self._show_led()
+
+    def led_state(self) -> LedRing | None:
+        """What the stage's ring shows now, or None while the station cannot know.
+
+        The device flags carry every condition of the ring's table; the station sees
+        them only over a live link, and while it talks the ring shows that (or what
+        outranks it): never pairing.
+        """
+        flags = self._model.telemetry.get("device_flags")
+        if flags is None or self._model.link_state is not LinkState.CONNECTED:
+            return None
+        return led_ring(int(flags))
+
+    def _show_led(self) -> None:
+        state = self.led_state()
+        colour = "transparent" if state is None else LED_COLOURS[state]
+        rim = LED_COLOURS[LedRing.OFF]
+        self.led_lamp.setStyleSheet(
+            f"background: {colour}; border-radius: 6px; border: 2px solid {rim};"
+        )
+        words = "—" if state is None else self._led_words(state)
+        self.led_text.setText(self.tr("LED ring: {0}").format(words))
+        self.led_text.setToolTip(
+            self.tr("The stage's LED ring as its device flags say it is lit")
+            if state is None
+            else self._led_meaning(state)
+        )
+
+    def _led_words(self, state: LedRing) -> str:
+        match state:
+            case LedRing.CHARGING:
+                return self.tr("red")
+            case LedRing.LOW_BATTERY:
+                return self.tr("red, blinking fast")
+            case LedRing.STANDBY:
+                return self.tr("green")
+            case LedRing.PAIRING:
+                return self.tr("blue, blinking slowly")
+            case LedRing.TALKING:
+                return self.tr("blue")
+        return self.tr("off")
+
+    def _led_meaning(self, state: LedRing) -> str:
+        match state:
+            case LedRing.CHARGING:
+                return self.tr("Charger connected")
+            case LedRing.LOW_BATTERY:
+                return self.tr("Battery low")
+            case LedRing.STANDBY:
+                return self.tr("Standby: the stage is asleep")
+            case LedRing.PAIRING:
+                return self.tr("Pairing: waiting for a host")
+            case LedRing.TALKING:
+                return self.tr("Talking to this station")
+        return self.tr("Off")
 
     def _power_note(self) -> str:
         """Charger, USB and low battery: the device's reasons to refuse motion."""
