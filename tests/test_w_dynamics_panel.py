@@ -190,3 +190,25 @@ def test_the_session_refuses_a_travel_beyond_the_mechanics_whoever_asks(
     assert messages == [
         "Not written: Y Travel (soft limit) must not exceed the mechanical travel, 50 mm"
     ]
+
+
+def test_s3_18_current_scales_show_the_rms_current_as_typed(panel: DynamicsPanel) -> None:
+    """IRMS = (CS+1)/32 · 0.32 V/(0.11 Ω + 20 mΩ)/√2 (the xy-stage profile's [driver])."""
+    irun, ihold = field(panel, X, EchoType.IRUN), field(panel, X, EchoType.IHOLD)
+    assert irun.value() == 16 and irun.note() == "= 925 mA"  # 17/32 · 1.7406 A
+    assert ihold.value() == 8 and ihold.note() == "= 490 mA"  # 9/32 · 1.7406 A
+    irun.setText("31")
+    assert irun.note() == "= 1.74 A"
+    irun.setText("40")  # not a current scale: nothing to tell
+    assert irun.note() == ""
+    assert "VFS 0.32 V, Rsense 0.11 Ω" in irun.toolTip()
+
+
+def test_s3_28_speeds_show_what_the_step_timer_really_runs(panel: DynamicsPanel) -> None:
+    fast = field(panel, X, EchoType.FAST_SPEED)
+    assert fast.value() == 10.0 and fast.note() == ""  # 2500 ticks: exact
+    field(panel, X, EchoType.MICROSTEPS).setText("256")
+    assert fast.note() == "→ 10.016"  # 156.25 ticks, 156 run
+    fast.setText("50")
+    assert fast.note() == "→ 50.403"  # 31.25 ticks, 31 run
+    assert field(panel, Y, EchoType.FAST_SPEED).note() == ""  # Y keeps 16 microsteps

@@ -99,6 +99,8 @@ class NumberField(QLineEdit):
         self._high = high
         self._decimals = decimals
         self._unit = unit
+        #: What follows the unit, derived from the value (e.g. a current scale's amperes).
+        self._note = ""
         self._step = step
         self._base_tooltip = tooltip
         self._problem: str | None = None
@@ -126,6 +128,20 @@ class NumberField(QLineEdit):
 
     def unit(self) -> str:
         return self._unit
+
+    def note(self) -> str:
+        return self._note
+
+    def set_note(self, text: str) -> None:
+        """Words drawn after the unit, such as what the typed value means on the machine."""
+        if text == self._note:
+            return
+        self._note = text
+        self._reserve_unit_space()
+        self.update()
+
+    def _suffix(self) -> str:
+        return " ".join(part for part in (self._unit, self._note) if part)
 
     def set_description(self, text: str) -> None:
         """What the field is for, the first line of its tooltip (the range follows)."""
@@ -236,20 +252,21 @@ class NumberField(QLineEdit):
         self._commit()
 
     def _reserve_unit_space(self) -> None:
-        if self._unit:
-            width = self.fontMetrics().horizontalAdvance(f" {self._unit}") + 6
-            self.setTextMargins(0, 0, width, 0)
+        suffix = self._suffix()
+        width = self.fontMetrics().horizontalAdvance(f" {suffix}") + 6 if suffix else 0
+        self.setTextMargins(0, 0, width, 0)
 
     def paintEvent(self, event: QPaintEvent) -> None:
         super().paintEvent(event)
-        if not self._unit:
+        suffix = self._suffix()
+        if not suffix:
             return
         painter = QPainter(self)
         painter.setPen(_UNIT_COLOUR)
         painter.setFont(self.font())
         area = self.rect().adjusted(0, 0, -6, 0)
         align = Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
-        painter.drawText(area, align, self._unit)
+        painter.drawText(area, align, suffix)
         painter.end()
 
 

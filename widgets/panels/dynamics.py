@@ -11,6 +11,11 @@ date); loading one shows what differs from the device and writes only that,
 after the operator confirms (and confirms again for another machine's file).
 Undo writes back what the last Apply or load replaced.
 
+Beside the raw current scales (IRUN, IHOLD: 0…31) the fields show the RMS
+current they give the motor (FIDELITY S3-18, from the profile's VFS and
+Rsense), and beside a speed the speed the step timer really runs when its
+whole PSC/ARR cannot give the one typed (S3-28), both as the value is typed.
+
 A value outside what the machine may take is framed red as it is typed and
 is not sent; the travel (the device's soft limit) may not exceed the
 profile's mechanical travel, since beyond it the device would drive into its
@@ -52,6 +57,7 @@ from app.scripting.parameters import (
 )
 from app.station import Station
 from protocol.stage.codec import EchoType
+from protocol.stage.driver import format_current, quantised_speed, rms_current_a
 from widgets.number_field import NumberField, localized
 from widgets.retranslate import Texts, bold
 
@@ -170,6 +176,10 @@ class DynamicsPanel(QWidget):
             self._show_parameter(axis_index, type_)
         self._update_enabled()
         t.also(self._retranslate_states)
+        for (axis_index, _type), number in self.fields.items():
+            number.textChanged.connect(lambda _text, a=axis_index: self._show_notes(a))
+        for axis_index in range(len(self._model.axes)):
+            self._show_notes(axis_index)
 
     # --- reflow ------------------------------------------------------------------
 
@@ -259,6 +269,46 @@ class DynamicsPanel(QWidget):
             self.updateGeometry()  # the height differs: a scroll area around it follows
         super().resizeEvent(event)
 
+    # --- what the values mean on the motor -----------------------------------------
+
+    def _show_notes(self, axis: int) -> None:
+        """The currents the scales give and the speeds the step timer runs, as typed."""
+        driver = self._station.profile.driver
+        for type_ in (EchoType.IRUN, EchoType.IHOLD):
+            number = self.fields.get((axis, int(type_)))
+            if number is None:
+                continue
+            cs = number.value()
+            note = ""
+            if cs is not None and cs == int(cs):
+                amperes = rms_current_a(int(cs), driver.vfs_v, driver.rsense_ohm)
+                note = "= " + localized(format_current(amperes))
+            number.set_note(note)
+        microstep = self._microstep_um(axis)
+        for type_ in (EchoType.FAST_SPEED, EchoType.SLOW_SPEED):
+            number = self.fields.get((axis, int(type_)))
+            if number is None:
+                continue
+            shown = number.value()
+            note = ""
+            if shown is not None and microstep is not None and shown > 0:
+                wire = BY_TYPE[type_].to_wire(shown)
+                real = quantised_speed(wire, microstep, driver.step_clock_hz) / 1000
+                if abs(real - shown) >= 0.0005:
+                    note = "→ " + localized(f"{real:.3f}")
+            number.set_note(note)
+
+    def _microstep_um(self, axis: int) -> float | None:
+        """One microstep (µm) as the fields hold lead, steps and microsteps, or None."""
+        values = [
+            self.fields[(axis, int(t))].value()
+            for t in (EchoType.LEAD, EchoType.STEPS_PER_REV, EchoType.MICROSTEPS)
+        ]
+        lead, steps, microsteps = values
+        if lead is None or not steps or not microsteps or lead <= 0:
+            return None
+        return lead * 1000 / (steps * microsteps)
+
     def _field(self, parameter: StageParameter, key: _Key) -> NumberField:
         low, high = wire_limits(parameter, self._station.profile.axes[key[0]])
 
@@ -269,6 +319,17 @@ class DynamicsPanel(QWidget):
             if parameter.type == EchoType.TRAVEL:
                 travel = localized(f"{parameter.to_shown(high):g}")
                 text += self.tr("; at most the mechanical travel, {0} mm").format(travel)
+            elif parameter.type in (EchoType.IRUN, EchoType.IHOLD):
+                driver = self._station.profile.driver
+                text += self.tr(
+                    "; current scale CS, the motor gets IRMS = (CS+1)/32 · VFS/(Rsense+20 mΩ)/√2"
+                    " (VFS {0} V, Rsense {1} Ω)"
+                ).format(localized(f"{driver.vfs_v:g}"), localized(f"{driver.rsense_ohm:g}"))
+            elif parameter.type in (EchoType.FAST_SPEED, EchoType.SLOW_SPEED):
+                text += self.tr(
+                    "; → the speed the step timer really runs, where its whole prescaler and"
+                    " reload values cannot give this one"
+                )
             return text
 
         field = NumberField(
