@@ -489,6 +489,14 @@
         <translation>; nejvýše mechanický rozsah pojezdu, {0} mm</translation>
     </message>
     <message>
+        <source>; current scale CS, the motor gets IRMS = (CS+1)/32 · VFS/(Rsense+20 mΩ)/√2 (VFS {0} V, Rsense {1} Ω)</source>
+        <translation>; proudová škála CS, motor dostává IRMS = (CS+1)/32 · VFS/(Rsense+20 mΩ)/√2 (VFS {0} V, Rsense {1} Ω)</translation>
+    </message>
+    <message>
+        <source>; → the speed the step timer really runs, where its whole prescaler and reload values cannot give this one</source>
+        <translation>; → rychlost, kterou krokový časovač skutečně jede, když ji jeho celočíselná předdělička a hodnota přetečení nedokážou nastavit přesně</translation>
+    </message>
+    <message>
         <source>Reading from the device…</source>
         <translation>Načítám ze zařízení…</translation>
     </message>
@@ -1024,7 +1032,7 @@ Přesto odeslat do stroje?</translation>
     <name>InfoPanel</name>
     <message>
         <source>Battery charge and voltage</source>
-        <extracomment>Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
+        <extracomment>The LED ring&apos;s colours, as drawn beside its state; blinking states say so in words. Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
         <translation>Nabití a napětí baterie</translation>
     </message>
     <message>
@@ -1050,6 +1058,62 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>board {0} °C</source>
         <translation>deska {0} °C</translation>
+    </message>
+    <message>
+        <source>LED ring: {0}</source>
+        <translation>LED kruh: {0}</translation>
+    </message>
+    <message>
+        <source>The stage&apos;s LED ring as its device flags say it is lit</source>
+        <translation>LED kruh stolku, jak svítí podle jeho stavových příznaků</translation>
+    </message>
+    <message>
+        <source>red</source>
+        <translation>červená</translation>
+    </message>
+    <message>
+        <source>red, blinking fast</source>
+        <translation>červená, rychle bliká</translation>
+    </message>
+    <message>
+        <source>green</source>
+        <translation>zelená</translation>
+    </message>
+    <message>
+        <source>blue, blinking slowly</source>
+        <translation>modrá, pomalu bliká</translation>
+    </message>
+    <message>
+        <source>blue</source>
+        <translation>modrá</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>nesvítí</translation>
+    </message>
+    <message>
+        <source>Charger connected</source>
+        <translation>Nabíječka připojena</translation>
+    </message>
+    <message>
+        <source>Battery low</source>
+        <translation>Baterie téměř vybitá</translation>
+    </message>
+    <message>
+        <source>Standby: the stage is asleep</source>
+        <translation>Pohotovost: stolek spí</translation>
+    </message>
+    <message>
+        <source>Pairing: waiting for a host</source>
+        <translation>Párování: čeká na hostitele</translation>
+    </message>
+    <message>
+        <source>Talking to this station</source>
+        <translation>Komunikuje s touto stanicí</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Vypnuto</translation>
     </message>
     <message>
         <source>charger connected</source>
@@ -2682,7 +2746,7 @@ Načíst jako:</translation>
     <name>NumberField</name>
     <message>
         <source>Allowed: {0}</source>
-        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this).</extracomment>
+        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this). What follows the unit, derived from the value (e.g. a current scale&apos;s amperes).</extracomment>
         <translation>Povoleno: {0}</translation>
     </message>
     <message>

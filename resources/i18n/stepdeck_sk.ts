@@ -489,6 +489,14 @@
         <translation>; najviac mechanický rozsah posuvu, {0} mm</translation>
     </message>
     <message>
+        <source>; current scale CS, the motor gets IRMS = (CS+1)/32 · VFS/(Rsense+20 mΩ)/√2 (VFS {0} V, Rsense {1} Ω)</source>
+        <translation>; prúdová škála CS, motor dostáva IRMS = (CS+1)/32 · VFS/(Rsense+20 mΩ)/√2 (VFS {0} V, Rsense {1} Ω)</translation>
+    </message>
+    <message>
+        <source>; → the speed the step timer really runs, where its whole prescaler and reload values cannot give this one</source>
+        <translation>; → rýchlosť, ktorou krokový časovač naozaj ide, keď ju jeho celočíselná preddelička a hodnota pretečenia nedokážu nastaviť presne</translation>
+    </message>
+    <message>
         <source>Reading from the device…</source>
         <translation>Načítavam zo zariadenia…</translation>
     </message>
@@ -1024,7 +1032,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>InfoPanel</name>
     <message>
         <source>Battery charge and voltage</source>
-        <extracomment>Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
+        <extracomment>The LED ring&apos;s colours, as drawn beside its state; blinking states say so in words. Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
         <translation>Nabitie a napätie batérie</translation>
     </message>
     <message>
@@ -1050,6 +1058,62 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>board {0} °C</source>
         <translation>doska {0} °C</translation>
+    </message>
+    <message>
+        <source>LED ring: {0}</source>
+        <translation>LED kruh: {0}</translation>
+    </message>
+    <message>
+        <source>The stage&apos;s LED ring as its device flags say it is lit</source>
+        <translation>LED kruh stolíka, ako svieti podľa jeho stavových príznakov</translation>
+    </message>
+    <message>
+        <source>red</source>
+        <translation>červená</translation>
+    </message>
+    <message>
+        <source>red, blinking fast</source>
+        <translation>červená, rýchlo bliká</translation>
+    </message>
+    <message>
+        <source>green</source>
+        <translation>zelená</translation>
+    </message>
+    <message>
+        <source>blue, blinking slowly</source>
+        <translation>modrá, pomaly bliká</translation>
+    </message>
+    <message>
+        <source>blue</source>
+        <translation>modrá</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>nesvieti</translation>
+    </message>
+    <message>
+        <source>Charger connected</source>
+        <translation>Nabíjačka pripojená</translation>
+    </message>
+    <message>
+        <source>Battery low</source>
+        <translation>Batéria takmer vybitá</translation>
+    </message>
+    <message>
+        <source>Standby: the stage is asleep</source>
+        <translation>Pohotovosť: stolík spí</translation>
+    </message>
+    <message>
+        <source>Pairing: waiting for a host</source>
+        <translation>Párovanie: čaká na hostiteľa</translation>
+    </message>
+    <message>
+        <source>Talking to this station</source>
+        <translation>Komunikuje s touto stanicou</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Vypnuté</translation>
     </message>
     <message>
         <source>charger connected</source>
@@ -2682,7 +2746,7 @@ Načítať ako:</translation>
     <name>NumberField</name>
     <message>
         <source>Allowed: {0}</source>
-        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this).</extracomment>
+        <extracomment>A number being typed: optional sign, digits, one decimal point or comma, digits. The note under a page&apos;s fields that says which one is wrong. An acceptable value was committed: Enter, focus out or an Up/Down step. The field turned acceptable or not acceptable (its buttons follow this). What follows the unit, derived from the value (e.g. a current scale&apos;s amperes).</extracomment>
         <translation>Povolené: {0}</translation>
     </message>
     <message>
