@@ -8,6 +8,7 @@ fSTEP = 80 MHz / ((PSC+1)(ARR+1)) with a 16-bit timer.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -76,3 +77,19 @@ def test_s3_33_the_led_ring_follows_the_device_flags_in_table_order() -> None:
     assert led_ring(DeviceFlag.SLEEPING | DeviceFlag.LOW_BATTERY) is LedRing.LOW_BATTERY
     assert led_ring(DeviceFlag.LOW_BATTERY | DeviceFlag.CHARGER) is LedRing.CHARGING
     assert led_ring(DeviceFlag.USB | DeviceFlag.DATA_SESSION) is LedRing.TALKING
+
+
+def test_s3_18_the_profile_names_the_drivers_vfs_and_rsense(tmp_path: Path) -> None:
+    from app.profiles import MACHINES_DIR, DriverSettings, ProfileError, load_profile
+
+    stage = load_profile("xy-stage").driver
+    assert (stage.vfs_v, stage.rsense_ohm, stage.step_clock_hz) == (0.32, 0.11, 80_000_000)
+    text = (MACHINES_DIR / "xy-stage.toml").read_text(encoding="utf-8")
+    other = tmp_path / "other.toml"
+    other.write_text(text.replace("vfs_v = 0.32", "vfs_v = 0.18"), encoding="utf-8")
+    assert load_profile(other).driver.vfs_v == 0.18
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace("vfs_v = 0.32", "vfs_v = 0"), encoding="utf-8")
+    with pytest.raises(ProfileError, match=r"\[driver\]"):
+        load_profile(bad)
+    assert load_profile("usb3").driver == DriverSettings()  # no [driver]: the defaults
