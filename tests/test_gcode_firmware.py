@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 
 from app.profiles import load_profile
 from protocol.clock import ManualClock
+from protocol.emulator import servo_pwm
 from protocol.emulator.gcode_firmware import (
     GcodeConfig,
     GcodeEvent,
@@ -211,6 +212,31 @@ def test_m99_lifts_the_corexy_pen_to_its_pwm_level() -> None:
     assert bench.do("M99 4000") == [Ok()]
     assert not bench.fw.pen_down and bench.fw.servo_level == 4000.0
     assert [e["down"] for e in bench.events("pen")] == [True, False]
+
+
+def test_s1_11_servo_pwm_is_50_hz_with_the_originals_compare_values() -> None:
+    """FIDELITY S1-11: clkdiv 40, wrap 62499 at 125 MHz is 50 Hz; Tab. 2 "Vztah střídy a
+    polohy serva": 0.5 ms = 1562 … 2.5 ms = 7812."""
+    assert servo_pwm.PWM_FREQUENCY_HZ == pytest.approx(50.0)
+    assert servo_pwm.level_for_pulse(servo_pwm.SERVO_MIN_PULSE_S) == 1562
+    assert servo_pwm.level_for_pulse(servo_pwm.SERVO_MAX_PULSE_S) == 7812
+    assert servo_pwm.level_for_pulse(0.0015) == 4687  # the middle, 1.5 ms
+    assert servo_pwm.pulse_width_s(1562) == pytest.approx(0.49984e-3)
+    assert servo_pwm.pulse_width_s(7812) == pytest.approx(2.49984e-3)
+    assert servo_pwm.compare_value(10**6) == 62_500  # above the wrap: high all period
+    with pytest.raises(ValueError):
+        servo_pwm.compare_value(-1)
+    with pytest.raises(ValueError):
+        servo_pwm.level_for_pulse(0.021)
+
+
+def test_s1_11_the_plotters_state_shows_the_servo_pulse_of_its_m99_level() -> None:
+    bench = Bench(corexy_plotter_config())
+    assert bench.fw.servo_pulse_s is None  # no M99 yet
+    assert bench.do("M99 7812") == [Ok()]
+    assert bench.fw.servo_pulse_s == pytest.approx(2.49984e-3)
+    assert bench.do("M99 1562") == [Ok()]
+    assert bench.fw.servo_pulse_s == pytest.approx(0.49984e-3)
 
 
 def test_bytes_sent_before_the_board_has_booted_are_lost() -> None:

@@ -96,6 +96,7 @@ from protocol.emulator.gcode_planner import (
     Planner,
     SetPosition,
 )
+from protocol.emulator.servo_pwm import pulse_width_s
 from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
 from protocol.gcode.words import Word, WordError, split_words, strip_comments
 
@@ -403,6 +404,13 @@ class GcodeFirmware(ControlCycles):
         """The last ``M99`` level, if any."""
         with self._lock:
             return self._interpreter.servo_level
+
+    @property
+    def servo_pulse_s(self) -> float | None:
+        """The pen servo's pulse, seconds, at the last ``M99`` level (50 Hz PWM, S1-11)."""
+        with self._lock:
+            level = self._interpreter.servo_level
+        return None if level is None else pulse_width_s(level)
 
     @property
     def drivers_off(self) -> frozenset[str]:
