@@ -216,6 +216,8 @@ class GcodeFirmware(ControlCycles):
         self._jog_cancelling = False
         #: Axes whose drivers ``M18`` switched off (a move switches them on again).
         self._drivers_off: set[str] = set()
+        #: The white button was pressed once: the next press sets the zero (S0-24).
+        self._white_pressed = False
         #: GRBL's settings ($$), kept only on a GRBL board; its check mode ($C).
         self._settings_table = self._initial_settings()
         self._check_mode = False
@@ -308,6 +310,60 @@ class GcodeFirmware(ControlCycles):
             self._send_banner()
             if self._alarm is not None:
                 self._send_line("[MSG:'$H'|'$X' to unlock]")
+
+    def white_button(self) -> str:
+        """The winder's white button (FIDELITY S0-24); returns what the press did.
+
+        "první stisknutí tlačítka … vypne udržovací proud … druhé stisknutí …
+        nastaví současnou pozici jako nulovou": the first press switches every
+        driver's holding current off, so the operator can turn the base and
+        move the needle by hand (:meth:`turn_by_hand`); the second declares
+        where they stand :attr:`GcodeConfig.hand_zero` ("nulovou pozici
+        lineárního pojezdu, která je nastavena na polomer_matrice": X is the
+        board radius).  A press while the machine runs or holds a program does
+        nothing (the original reads its buttons only while it waits), nor on
+        a machine without the buttons.
+        """
+        with self._lock:
+            zero = self.config.hand_zero
+            if zero is None or self.state != "Idle" or self._pending_line is not None:
+                self._log("white button ignored")
+                return "ignored"
+            if not self._white_pressed:
+                self._white_pressed = True
+                self._drivers_off.update(self.config.axes)
+                self._log("drivers off", axes="".join(self.config.axes), by="white button")
+                return "drivers off"
+            self._white_pressed = False
+            self._planner.place(zero)
+            self._interpreter.position = zero
+            self._log("setpos", pos=self._where(zero), by="white button")
+            return "zero set"
+
+    def turn_by_hand(self, axis: str, delta: float) -> bool:
+        """The operator turns an axis whose driver is off by ``delta`` of its units.
+
+        A driver that holds resists: only an axis with its driver off turns
+        (False otherwise), and a linear one only within its travel, where its
+        mechanics end.  The emulator keeps one position for the mechanism and
+        the step counter, so its reports follow the hand; the original's
+        counter does not see a shaft turned by hand, which is why it is zeroed
+        afterwards (and so is the emulator, by the second press or ``G92``).
+        """
+        with self._lock:
+            if axis not in self._drivers_off or self.state != "Idle":
+                return False
+            index = self.config.index(axis)
+            position = list(self._planner.position())
+            target = position[index] + delta
+            limits = self.config.travel[index]
+            if limits is not None:
+                target = min(max(target, limits[0]), limits[1])
+            position[index] = target
+            self._planner.place(tuple(position))
+            self._interpreter.position = tuple(position)
+            self._log("by hand", pos=self._where())
+            return True
 
     def trigger_alarm(self, code: int = 1) -> None:
         """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
