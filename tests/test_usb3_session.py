@@ -438,7 +438,7 @@ def test_s4_18_an_axis_stopped_at_an_end_switch_is_named_with_its_end(
     hits: list[tuple[int, str, float]] = []
     session.endSwitchHit.connect(lambda axis, which, mm: hits.append((axis, which, mm)))
 
-    assert session.move_relative(Y, 0.05)  # a move that ends where it was sent: no switch
+    assert session.move_relative(Y, 0.2)  # a move that ends where it was sent: no switch
     wait_idle(usb3, Y)
     usb3.run(1.0)
     assert hits == [] and not any("end switch" in m for m in said)
@@ -452,13 +452,13 @@ def test_s4_18_an_axis_stopped_at_an_end_switch_is_named_with_its_end(
     assert model.axes[X].position == 0.1
 
     # On the way down, a switch closes under Y (a lever, or where the mechanics put it).
-    assert session.move_relative(Y, -0.04)
+    assert session.move_relative(Y, -0.15)
     usb3.run(0.5)
     firmware.press_end_switch(AxisId.Y, "low")
     wait_idle(usb3, Y)
     usb3.run(1.0)
     assert hits[1][:2] == (Y, "low")
-    assert 0.01 < model.axes[Y].position < 0.05
+    assert 0.1 < model.axes[Y].position < 0.2
     assert any(m.startswith("Y stopped at its low end switch at ") for m in said)
 
     # Stopped on purpose (S;) short of the target is no switch.

@@ -353,8 +353,10 @@ class Usb3Session(MachineSession):
                 continue  # not heard since the move went out, or not silent long enough
             self._heading[axis] = None
             count = self._counts[axis]
-            if (target - count) * sign <= 0:
-                continue  # there (or past it: the unit's joystick took over)
+            if (target - count) * sign < StepSize.FULL.counts_per_pulse:
+                # There, past it (the unit's joystick took over), or less than a full step
+                # short: a unit whose step size changed on its menu rounds a move down.
+                continue
             which = "high" if sign > 0 else "low"
             position = count_to_mm(count, self.threads[axis])
             name = self.model.axes[axis].name
