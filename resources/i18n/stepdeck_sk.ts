@@ -2368,7 +2368,28 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>{0} stick: 500…524 is the dead zone; let go to centre it</source>
+        <extracomment>The unit&apos;s end switches (FIDELITY S4-18), closed where the axis is now.</extracomment>
         <translation>Páčka {0}: 500…524 je mŕtve pásmo; po pustení sa vráti na stred</translation>
+    </message>
+    <message>
+        <source>{0} end switch</source>
+        <translation>{0} koncový spínač</translation>
+    </message>
+    <message>
+        <source>Low</source>
+        <translation>Dolný</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s low end switch where the axis is now</source>
+        <translation>Zopnúť dolný koncový spínač osi {0} tam, kde os práve je</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>Horný</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s high end switch where the axis is now</source>
+        <translation>Zopnúť horný koncový spínač osi {0} tam, kde os práve je</translation>
     </message>
 </context>
 <context>
