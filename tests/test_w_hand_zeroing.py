@@ -17,6 +17,8 @@ import pytest
 from PySide6.QtCore import Qt
 from pytestqt.qtbot import QtBot
 
+from app.jobs.formats.string_art.program import build_program
+from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.program import Operation, OpKind, Program, SourceRef
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
@@ -127,3 +129,15 @@ def test_s0_24_release_is_refused_while_a_job_is_under_way(
     assert b"M18" not in sent(harness, mark) and not emulator.drivers_off
     assert any("a job is under way" in m for m in said)
     runner.abort()
+
+
+def test_s0_24_the_board_radius_follows_the_string_art_job_loaded(
+    winder: tuple[StationHarness, GcodePanel], tmp_path: Path
+) -> None:
+    harness, panel = winder
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    panel.follow_jobs(runner)
+    assert panel.board_radius.value() == 120.0
+    job = StringArtJob(StringArtParams(tvar=0, nails=8, radius_cm=14.5), (0, 3, 6, 1, 4))
+    assert runner.load(build_program(job, harness.station.profile)) == []
+    assert panel.board_radius.value() == 145.0

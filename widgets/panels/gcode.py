@@ -20,6 +20,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.jobs.formats.string_art.program import StringArtProgram
+from app.jobs.run.runner import JobRunner
 from app.machines.gcode.session import GcodeSession, SentLine, zeroes_by_hand
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
@@ -42,6 +44,7 @@ class GcodePanel(QWidget):
         self._station = station
         self._watched: GcodeSession | None = None
         self._motion_enabled = True
+        self._runner: JobRunner | None = None
         t = self.texts = Texts(self)
 
         machine = t.group(lambda: self.tr("Machine"))
@@ -242,6 +245,19 @@ class GcodePanel(QWidget):
             self.output.appendPlainText(
                 self.tr("! soft reset: %n unanswered line(s) dropped", "", len(lost))
             )
+
+    def follow_jobs(self, runner: JobRunner) -> None:
+        """The board radius follows the string-art job loaded (its ``polomer_matrice``)."""
+        self._runner = runner
+        runner.programChanged.connect(self._take_board_radius)
+        self._take_board_radius()
+
+    def _take_board_radius(self) -> None:
+        program = self._runner.program if self._runner is not None else None
+        if isinstance(program, StringArtProgram):
+            radius = program.job.params.radius_cm * 10.0
+            if self.board_radius.minimum() <= radius <= self.board_radius.maximum():
+                self.board_radius.setValue(radius)
 
     def release_motors(self) -> bool:
         """First step of zeroing by hand: the session judges it (gate) and sends ``M18``."""
