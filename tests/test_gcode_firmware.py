@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 
 from app.profiles import load_profile
 from protocol.clock import ManualClock
+from protocol.emulator import servo_pwm
 from protocol.emulator.gcode_firmware import (
     GcodeConfig,
     GcodeEvent,
@@ -30,6 +31,7 @@ from protocol.emulator.gcode_firmware import (
     grbl_plotter_config,
     string_art_config,
 )
+from protocol.emulator.gcode_machine import STRING_ART_BOARD_RADIUS_MM
 from protocol.gcode import (
     AlarmReply,
     Banner,
@@ -211,6 +213,31 @@ def test_m99_lifts_the_corexy_pen_to_its_pwm_level() -> None:
     assert bench.do("M99 4000") == [Ok()]
     assert not bench.fw.pen_down and bench.fw.servo_level == 4000.0
     assert [e["down"] for e in bench.events("pen")] == [True, False]
+
+
+def test_s1_11_servo_pwm_is_50_hz_with_the_originals_compare_values() -> None:
+    """FIDELITY S1-11: clkdiv 40, wrap 62499 at 125 MHz is 50 Hz; Tab. 2 "Vztah střídy a
+    polohy serva": 0.5 ms = 1562 … 2.5 ms = 7812."""
+    assert servo_pwm.PWM_FREQUENCY_HZ == pytest.approx(50.0)
+    assert servo_pwm.level_for_pulse(servo_pwm.SERVO_MIN_PULSE_S) == 1562
+    assert servo_pwm.level_for_pulse(servo_pwm.SERVO_MAX_PULSE_S) == 7812
+    assert servo_pwm.level_for_pulse(0.0015) == 4687  # the middle, 1.5 ms
+    assert servo_pwm.pulse_width_s(1562) == pytest.approx(0.49984e-3)
+    assert servo_pwm.pulse_width_s(7812) == pytest.approx(2.49984e-3)
+    assert servo_pwm.compare_value(10**6) == 62_500  # above the wrap: high all period
+    with pytest.raises(ValueError):
+        servo_pwm.compare_value(-1)
+    with pytest.raises(ValueError):
+        servo_pwm.level_for_pulse(0.021)
+
+
+def test_s1_11_the_plotters_state_shows_the_servo_pulse_of_its_m99_level() -> None:
+    bench = Bench(corexy_plotter_config())
+    assert bench.fw.servo_pulse_s is None  # no M99 yet
+    assert bench.do("M99 7812") == [Ok()]
+    assert bench.fw.servo_pulse_s == pytest.approx(2.49984e-3)
+    assert bench.do("M99 1562") == [Ok()]
+    assert bench.fw.servo_pulse_s == pytest.approx(0.49984e-3)
 
 
 def test_bytes_sent_before_the_board_has_booted_are_lost() -> None:
@@ -866,3 +893,26 @@ def test_grbl_lists_its_settings_as_grbl_1_1h_does() -> None:
     assert listed[:8] == ["$0=10", "$1=25", "$2=0", "$3=0", "$4=0", "$5=0", "$6=0", "$10=3"]
     assert {"$11=0.010", "$12=0.002", "$20=0", "$22=1", "$24=25.000", "$27=1.000"} <= set(listed)
     assert "$100=80.000" in listed and "$110=6000.000" in listed and "$130=300.000" in listed
+
+
+def test_s0_24_the_winders_white_button_frees_the_axes_then_sets_zero_at_the_board_radius() -> None:
+    """FIDELITY S0-24: "první stisknutí tlačítka … vypne udržovací proud … druhé stisknutí …
+    nastaví současnou pozici jako nulovou"; the linear zero is the board radius."""
+    bench = Bench(string_art_config())
+    assert bench.do("G0 A90 X50 Z5") == [Ok()]
+    assert not bench.fw.turn_by_hand("A", 10.0)  # a driver that holds resists the hand
+    assert bench.fw.white_button() == "drivers off"
+    assert bench.fw.drivers_off == {"A", "X", "Z"}
+    assert bench.fw.turn_by_hand("A", -30.0) and bench.fw.turn_by_hand("X", 25.0)
+    assert bench.fw.position() == {"A": 60.0, "X": 75.0, "Z": 5.0}
+    assert bench.fw.white_button() == "zero set"
+    assert bench.fw.position() == {"A": 0.0, "X": STRING_ART_BOARD_RADIUS_MM, "Z": 0.0}
+    # From here the program's coordinates hold: X 100 is 20 mm in from the board's edge.
+    assert bench.do("G0 X100") == [Ok()]
+    assert bench.fw.position()["X"] == 100.0 and "X" not in bench.fw.drivers_off
+    # A machine without the buttons, or one that is running, ignores a press.
+    assert Bench(corexy_plotter_config()).fw.white_button() == "ignored"
+    bench.send("G0 X10")
+    bench.run(0.1)
+    assert bench.fw.state == "Run"
+    assert bench.fw.white_button() == "ignored" and bench.fw.drivers_off == {"A", "Z"}

@@ -17,7 +17,8 @@ from app.jobs.run.runner import JobRunner, JobState
 from app.jobs.run.usb3 import ANSWER_TIMEOUT_S
 from app.machine import LinkState
 from app.profiles import load_profile
-from protocol.transport.loopback import Direction
+from protocol.emulator.usb3_firmware import Usb3Config, Usb3Firmware
+from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId, Move, StepSize, Thread, count_to_mm
 from tests.helpers.harness import StationHarness
 
@@ -215,3 +216,34 @@ def test_a_unit_moved_while_nobody_listened_is_asked_before_the_first_move(
     unit.run_until(lambda: finished(runner), timeout=30)
     assert runner.state is JobState.DONE and unit_at(unit, AxisId.X) == 4.5
     assert moves_executed(unit)[-1] == (AxisId.X, round(1.5 * 6400 / THREAD.pitch_mm))
+
+
+def test_s4_18_an_end_switch_mid_move_pauses_the_job_naming_the_axis_and_end(
+    tmp_path: Path,
+) -> None:
+    """FIDELITY S4-18: the unit stops the motor at its switch and reports only where it
+    stands; the job pauses with that news instead of going on (or on to the target) blindly."""
+    unit = StationHarness(load_profile("usb3"))
+    try:
+        ends = ((1e6, 1e6), (1e6, 12_800.0), (1e6, 1e6))  # Y's high switch 3 mm on at M10
+        firmware = Usb3Firmware(
+            unit.clock,
+            Usb3Config(step_sizes=(STEP,) * 3, threads=(THREAD,) * 3, end_switches=ends),
+        )
+        unit.station.connect_transport(LoopbackTransport(firmware, unit.clock, realtime=False))
+        unit.station.emulator = firmware
+        unit.run(0.3)
+        runner = JobRunner(unit.station, tmp_path / "checkpoints")
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        runner.load(route((0.0, 4.5), (1.5, 0.0)))
+        runner.start()
+        unit.run_until(lambda: runner.state is JobState.PAUSED, timeout=10)
+        assert unit_at(unit, AxisId.Y) == 3.0 and runner.done == 0
+        assert messages[-1].startswith("Y stopped at its high end switch at 3.000 mm during ")
+        assert "route.csv:1" in messages[-1]
+        sent = len(moves_executed(unit))
+        unit.run(3.0)
+        assert runner.state is JobState.PAUSED and len(moves_executed(unit)) == sent
+    finally:
+        unit.close()

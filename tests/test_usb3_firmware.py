@@ -438,3 +438,22 @@ def test_the_command_log_records_commands_in_order(bench: Bench) -> None:
         Move(X, 32),
     ]
     assert all(entry.time == pytest.approx(START + CYCLE) for entry in log)
+
+
+def test_s4_18_a_switch_closed_under_a_moving_axis_stops_it_and_it_says_where() -> None:
+    clock = ManualClock(start=START)
+    fw = Usb3Firmware(clock)
+    out = bytearray()
+    fw.set_output(out.extend)
+    fw.receive(encode(Move(X, 8000)))
+    for _ in range(round(1.0 / CYCLE)):
+        clock.advance(CYCLE)
+        fw.run_until(clock.now())
+    assert fw.moving(X)
+    fw.press_end_switch(X, "high")
+    for _ in range(round(1.0 / CYCLE)):
+        clock.advance(CYCLE)
+        fw.run_until(clock.now())
+    stopped = fw.positions[0]
+    assert not fw.moving(X) and 0 < stopped < 8000
+    assert ReplyDecoder().feed(bytes(out))[-1] == Position(X, stopped)

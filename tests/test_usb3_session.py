@@ -418,3 +418,54 @@ def test_after_connecting_every_axis_shows_where_it_stands_not_unknown(
     usb3.run(1.0)
     assert firmware.positions == (6400, -3200, 0)
     assert [a.status_text for a in model.axes] == ["idle"] * 3
+
+
+# --- end switches ----------------------------------------------------------------------
+
+
+def test_s4_18_an_axis_stopped_at_an_end_switch_is_named_with_its_end(
+    usb3: StationHarness,
+) -> None:
+    """FIDELITY S4-18: the unit stops the motor whose switch is pressed and only reports its
+    position; the station says which axis stopped at which end, and only then."""
+    ends = ((1e6, 640.0), (1e6, 1e6), (1e6, 1e6))  # X's high switch 0.1 mm on
+    firmware = Usb3Firmware(usb3.clock, Usb3Config(end_switches=ends))
+    usb3.station.connect_transport(LoopbackTransport(firmware, usb3.clock, realtime=False))
+    usb3.station.emulator = firmware  # as connect_emulator() does, with these switches
+    usb3.run(0.05)
+    session, model = usb3.usb3_session, usb3.station.model
+    said = messages(usb3)
+    hits: list[tuple[int, str, float]] = []
+    session.endSwitchHit.connect(lambda axis, which, mm: hits.append((axis, which, mm)))
+
+    assert session.move_relative(Y, 0.2)  # a move that ends where it was sent: no switch
+    wait_idle(usb3, Y)
+    usb3.run(1.0)
+    assert hits == [] and not any("end switch" in m for m in said)
+
+    assert session.move_relative(X, 0.5)
+    wait_idle(usb3, X)
+    usb3.run(1.0)
+    assert firmware.positions[X] == 640
+    assert hits == [(X, "high", 0.1)]
+    assert "X stopped at its high end switch at 0.100 mm, 0.400 mm short of its target" in said
+    assert model.axes[X].position == 0.1
+
+    # On the way down, a switch closes under Y (a lever, or where the mechanics put it).
+    assert session.move_relative(Y, -0.15)
+    usb3.run(0.5)
+    firmware.press_end_switch(AxisId.Y, "low")
+    wait_idle(usb3, Y)
+    usb3.run(1.0)
+    assert hits[1][:2] == (Y, "low")
+    assert 0.1 < model.axes[Y].position < 0.2
+    assert any(m.startswith("Y stopped at its low end switch at ") for m in said)
+
+    # Stopped on purpose (S;) short of the target is no switch.
+    hits.clear()
+    assert session.move_relative(X, -0.05)
+    usb3.run(0.3)
+    session.stop_all()
+    wait_idle(usb3, X)
+    usb3.run(1.0)
+    assert hits == []

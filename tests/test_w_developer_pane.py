@@ -431,3 +431,25 @@ def test_usb3_joystick_sliders_drive_the_unit_and_spring_back(qtbot: QtBot) -> N
         assert not usb3.usb3_emulator.moving(1)
     finally:
         usb3.close()
+
+
+def test_s4_18_a_usb3_end_switch_closed_from_the_pane_stops_the_move_and_is_named(
+    qtbot: QtBot,
+) -> None:
+    usb3 = StationHarness(load_profile("usb3"))
+    try:
+        usb3.connect()
+        pane = DeveloperPane(usb3.station)
+        qtbot.addWidget(pane)
+        pane.show()
+        said: list[str] = []
+        usb3.station.model.message.connect(said.append)
+        assert usb3.usb3_session.move_relative(0, 0.5)
+        usb3.run(1.0)
+        assert usb3.usb3_emulator.moving(0)
+        qtbot.mouseClick(pane.joystick_box.switch_buttons[(0, "high")], Qt.MouseButton.LeftButton)
+        usb3.run(1.0)
+        assert not usb3.usb3_emulator.moving(0)
+        assert any(m.startswith("X stopped at its high end switch at ") for m in said)
+    finally:
+        usb3.close()

@@ -99,3 +99,41 @@ def test_replies_parse_and_read_as_the_station_takes_them() -> None:
         parse_reply("ök")
     with pytest.raises(ValueError):
         parse_reply("")
+
+
+def test_s0_24_the_winders_white_button_and_hand_turning_from_the_pane(
+    qtbot: QtBot,
+) -> None:
+    """FIDELITY S0-24: the developer presses the emulated winder's white button (drivers
+    off), turns an axis by hand, presses again (zero here, X = board radius)."""
+    harness = StationHarness(load_profile("string-art"))
+    pane = DeveloperPane(harness.station)
+    qtbot.addWidget(pane)
+    pane.show()
+    harness.connect()
+    harness.run(0.3)
+    try:
+        box, emulator = pane.board_box, harness.gcode_emulator
+        assert box.white_button.isVisible() and box.white_button.isEnabled()
+        qtbot.mouseClick(box.hand_buttons[("A", 1)], LEFT)
+        assert emulator.position()["A"] == 0.0  # the driver holds
+        assert "A holds" in box.white_note.text()
+        qtbot.mouseClick(box.white_button, LEFT)
+        assert emulator.drivers_off == {"A", "X", "Z"}
+        qtbot.mouseClick(box.hand_buttons[("A", 1)], LEFT)
+        qtbot.mouseClick(box.hand_buttons[("X", 1)], LEFT)
+        assert emulator.position() == {"A": 5.0, "X": 1.0, "Z": 0.0}
+        harness.run(0.5)
+        assert [a.position for a in harness.station.model.axes] == [5.0, 1.0, 0.0]
+        qtbot.mouseClick(box.white_button, LEFT)
+        assert emulator.position() == {"A": 0.0, "X": 120.0, "Z": 0.0}
+        assert "zero set" in box.white_note.text()
+    finally:
+        harness.close()
+
+
+def test_the_plotters_pane_has_no_white_button(
+    plotter: tuple[StationHarness, DeveloperPane],
+) -> None:
+    _harness, pane = plotter
+    assert not pane.board_box.white_button.isVisible()

@@ -357,6 +357,9 @@ class MainWindow(QMainWindow):
             checkpoint_dir = Path(data) / "checkpoints"
         self.job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
         self.jobs_dock = JobsDock(self.station, self.job_runner, self)
+        gcode_panel = getattr(self, "gcode_panel", None)
+        if isinstance(gcode_panel, GcodePanel):
+            gcode_panel.follow_jobs(self.job_runner)  # the winder's board radius, zeroing by hand
         # Stop ends the job (its checkpoint kept): otherwise a G-code job took the stop's
         # reset for a device reset and carried on, moving the machine again by itself.
         self.jog.stopRequested.connect(self.job_runner.abort)

@@ -206,8 +206,11 @@ class EmulatorControls(QObject):
     # --- faults ----------------------------------------------------------------------------
 
     def press_end_switch(self, axis: int, which: SwitchName) -> None:
-        """Close an end switch where the axis is (a crash or a stuck lever)."""
-        if (emulator := self._emulator()) is not None:
+        """Close an end switch where the axis is (a crash or a stuck lever); stage or usb3."""
+        usb3 = self._station.usb3_emulator
+        if usb3 is not None and self.available:
+            usb3.press_end_switch(AxisId(axis), which)
+        elif (emulator := self._emulator()) is not None:
             emulator.press_end_switch(axis, which)
 
     def set_driver_fault(self, axis: int, fault: bool) -> None:

@@ -121,3 +121,15 @@ class GcodeEmulatorButtons(QObject):
     def alarm(self, code: int = 1) -> None:
         if (emulator := self._station.gcode_emulator) is not None:
             emulator.trigger_alarm(code)
+
+    def white_button(self) -> str:
+        """The winder's white button (S0-24): "drivers off", "zero set" or "ignored"."""
+        if (emulator := self._station.gcode_emulator) is not None:
+            return emulator.white_button()
+        return "ignored"
+
+    def turn_by_hand(self, axis: str, delta: float) -> bool:
+        """Turn an axis whose driver is off by hand; False when it holds (or no emulator)."""
+        if (emulator := self._station.gcode_emulator) is not None:
+            return emulator.turn_by_hand(axis, delta)
+        return False

@@ -107,6 +107,23 @@ class MotionGate:
         low, high = self.limits(axis)
         return min(high, max(low, target))
 
+    def refuse_release(self, busy: str | None = None) -> Refusal | None:
+        """Drivers off, the axes free to turn by hand (zeroing by hand), only at rest.
+
+        No motion is sent, but a machine whose drivers let go while it moves
+        loses its position and drops what it carries, and a job under way
+        (waiting or paused included) would go on from a position that is no
+        longer true.  ``busy`` is the session's own reason the machine is not
+        at rest (lines still to run, a stop under way), if any.
+        """
+        reason = self.model.motion_lock_reason() or self.model.jog_lock_reason
+        if reason is None and self.model.any_moving:
+            reason = "the machine is moving"
+        reason = reason or busy
+        if reason is None:
+            return None
+        return Refusal(f"the motors are not released: {reason}")
+
     def refuse(self, refusal: Refusal | None) -> bool:
         """Tell the operator (status bar) when refused; True when the motion must not go."""
         if refusal is None:

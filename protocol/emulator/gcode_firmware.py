@@ -96,6 +96,7 @@ from protocol.emulator.gcode_planner import (
     Planner,
     SetPosition,
 )
+from protocol.emulator.servo_pwm import pulse_width_s
 from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
 from protocol.gcode.words import Word, WordError, split_words, strip_comments
 
@@ -215,6 +216,8 @@ class GcodeFirmware(ControlCycles):
         self._jog_cancelling = False
         #: Axes whose drivers ``M18`` switched off (a move switches them on again).
         self._drivers_off: set[str] = set()
+        #: The white button was pressed once: the next press sets the zero (S0-24).
+        self._white_pressed = False
         #: GRBL's settings ($$), kept only on a GRBL board; its check mode ($C).
         self._settings_table = self._initial_settings()
         self._check_mode = False
@@ -307,6 +310,60 @@ class GcodeFirmware(ControlCycles):
             self._send_banner()
             if self._alarm is not None:
                 self._send_line("[MSG:'$H'|'$X' to unlock]")
+
+    def white_button(self) -> str:
+        """The winder's white button (FIDELITY S0-24); returns what the press did.
+
+        "první stisknutí tlačítka … vypne udržovací proud … druhé stisknutí …
+        nastaví současnou pozici jako nulovou": the first press switches every
+        driver's holding current off, so the operator can turn the base and
+        move the needle by hand (:meth:`turn_by_hand`); the second declares
+        where they stand :attr:`GcodeConfig.hand_zero` ("nulovou pozici
+        lineárního pojezdu, která je nastavena na polomer_matrice": X is the
+        board radius).  A press while the machine runs or holds a program does
+        nothing (the original reads its buttons only while it waits), nor on
+        a machine without the buttons.
+        """
+        with self._lock:
+            zero = self.config.hand_zero
+            if zero is None or self.state != "Idle" or self._pending_line is not None:
+                self._log("white button ignored")
+                return "ignored"
+            if not self._white_pressed:
+                self._white_pressed = True
+                self._drivers_off.update(self.config.axes)
+                self._log("drivers off", axes="".join(self.config.axes), by="white button")
+                return "drivers off"
+            self._white_pressed = False
+            self._planner.place(zero)
+            self._interpreter.position = zero
+            self._log("setpos", pos=self._where(zero), by="white button")
+            return "zero set"
+
+    def turn_by_hand(self, axis: str, delta: float) -> bool:
+        """The operator turns an axis whose driver is off by ``delta`` of its units.
+
+        A driver that holds resists: only an axis with its driver off turns
+        (False otherwise), and a linear one only within its travel, where its
+        mechanics end.  The emulator keeps one position for the mechanism and
+        the step counter, so its reports follow the hand; the original's
+        counter does not see a shaft turned by hand, which is why it is zeroed
+        afterwards (and so is the emulator, by the second press or ``G92``).
+        """
+        with self._lock:
+            if axis not in self._drivers_off or self.state != "Idle":
+                return False
+            index = self.config.index(axis)
+            position = list(self._planner.position())
+            target = position[index] + delta
+            limits = self.config.travel[index]
+            if limits is not None:
+                target = min(max(target, limits[0]), limits[1])
+            position[index] = target
+            self._planner.place(tuple(position))
+            self._interpreter.position = tuple(position)
+            self._log("by hand", pos=self._where())
+            return True
 
     def trigger_alarm(self, code: int = 1) -> None:
         """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
@@ -403,6 +460,13 @@ class GcodeFirmware(ControlCycles):
         """The last ``M99`` level, if any."""
         with self._lock:
             return self._interpreter.servo_level
+
+    @property
+    def servo_pulse_s(self) -> float | None:
+        """The pen servo's pulse, seconds, at the last ``M99`` level (50 Hz PWM, S1-11)."""
+        with self._lock:
+            level = self._interpreter.servo_level
+        return None if level is None else pulse_width_s(level)
 
     @property
     def drivers_off(self) -> frozenset[str]:

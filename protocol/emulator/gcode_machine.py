@@ -41,6 +41,9 @@ AXIS_LETTERS = "XYZA"
 COREXY_MM_PER_STEP = 0.00245
 #: The winder's base: 200 steps x 6 (gearing) x 8 microsteps per turn.
 STRING_ART_STEPS_PER_TURN = 200 * 6 * 8
+#: The board radius the emulated winder's white buttons set X to: the original reads its
+#: ``polomer_matrice`` from the SD card (12 cm in the examples); the emulator has no card.
+STRING_ART_BOARD_RADIUS_MM = 120.0
 
 
 class PenMapping(enum.Enum):
@@ -92,6 +95,10 @@ class GcodeConfig:
     truncate_steps: bool = False
     #: ``M18 [axes]`` switches drivers off (the winder while it waits, its drill while winding).
     drivers_off: bool = False
+    #: The winder's white buttons (FIDELITY S0-24): the first press switches every driver's
+    #: holding current off, the second declares the axes to stand at this position (A 0,
+    #: X the board radius, Z 0).  None: the machine has no such buttons.
+    hand_zero: tuple[float, ...] | None = None
     #: Units/min a G1 runs at before any F; None refuses it (``error:22``).
     default_feed: float | None = None
     #: Largest distance of an arc's chord from the arc (GRBL's $12).
@@ -127,6 +134,8 @@ class GcodeConfig:
             raise ValueError(f"axes are distinct letters from {AXIS_LETTERS}, got {self.axes!r}")
         if len(self.steps_per_unit) != count or len(self.travel) != count:
             raise ValueError("steps_per_unit and travel need one entry per axis")
+        if self.hand_zero is not None and len(self.hand_zero) != count:
+            raise ValueError("the white buttons' zero needs one entry per axis")
         if any(not (math.isfinite(s) and s > 0) for s in self.steps_per_unit):
             raise ValueError(f"steps per unit must be positive, got {self.steps_per_unit!r}")
         for limits in self.travel:
@@ -248,4 +257,5 @@ def string_art_config() -> GcodeConfig:
         pen=PenMapping.SPINDLE,
         default_feed=60_000.0,
         drivers_off=True,
+        hand_zero=(0.0, STRING_ART_BOARD_RADIUS_MM, 0.0),
     )

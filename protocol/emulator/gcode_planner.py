@@ -305,6 +305,15 @@ class Planner:
             self._released = True
         return True
 
+    def place(self, position: tuple[float, ...]) -> None:
+        """The tool is at ``position`` now, with nothing run to get there (moved by hand).
+
+        Only while no block is queued: a motion under way would jump.
+        """
+        if self._slots:
+            raise RuntimeError("the tool is placed only while nothing is queued")
+        self._position = tuple(position)
+
     def stop(self) -> None:
         """Stop at once where the tool is and forget every block (soft reset, alarm)."""
         self._position = self.position()

@@ -61,7 +61,7 @@ from itertools import pairwise
 
 from protocol.clock import Clock
 from protocol.emulator.cycles import ControlCycles
-from protocol.emulator.mechanism import Axis, AxisLimits
+from protocol.emulator.mechanism import Axis, AxisLimits, SwitchName
 from protocol.usb3.codec import (
     AxisId,
     Command,
@@ -350,6 +350,15 @@ class Usb3Firmware(ControlCycles):
             motor.target = None
             motor.jogging = True
             motor.axis.jog(direction, self.config.speed_table[index] * motor.unit)
+
+    def press_end_switch(self, axis: AxisId, which: SwitchName) -> None:
+        """Close an end switch where the axis is now (a lever pushed by hand, a crash).
+
+        An axis running toward it stops dead there, as at a switch the
+        mechanics placed (:attr:`Usb3Config.end_switches`), and reports.
+        """
+        with self._lock:
+            self._motors[axis].axis.trigger_end_switch(which)
 
     # -- the control cycle ---------------------------------------------------------
 

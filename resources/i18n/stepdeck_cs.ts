@@ -869,6 +869,34 @@
         <source>ALARM code</source>
         <translation>Kód ALARM</translation>
     </message>
+    <message>
+        <source>White button</source>
+        <translation>Bílé tlačítko</translation>
+    </message>
+    <message>
+        <source>The winder&apos;s white button: the first press switches the holding current off (turn the axes by hand), the second sets the zero there (X = board radius)</source>
+        <translation>Bílé tlačítko navíječky: první stisknutí vypne udržovací proud (osami lze otáčet rukou), druhé tam nastaví nulu (X = poloměr desky)</translation>
+    </message>
+    <message>
+        <source>Turn {0} by hand (its driver must be off)</source>
+        <translation>Otočit osou {0} rukou (její driver musí být vypnutý)</translation>
+    </message>
+    <message>
+        <source>drivers off: turn the axes by hand, then press again</source>
+        <translation>drivery vypnuty: otočte osami rukou a stiskněte znovu</translation>
+    </message>
+    <message>
+        <source>zero set here (X = board radius)</source>
+        <translation>nula nastavena zde (X = poloměr desky)</translation>
+    </message>
+    <message>
+        <source>ignored: the machine is busy</source>
+        <translation>ignorováno: stroj pracuje</translation>
+    </message>
+    <message>
+        <source>{0} holds: its driver is on</source>
+        <translation>{0} drží: její driver je zapnutý</translation>
+    </message>
 </context>
 <context>
     <name>GcodePanel</name>
@@ -953,6 +981,38 @@
         <translation>Vymazat konzoli</translation>
     </message>
     <message>
+        <source>Zero by hand</source>
+        <translation>Nulování rukou</translation>
+    </message>
+    <message>
+        <source>Release the motors, turn the base and move the needle by hand until nail 0 faces the needle and the needle stands at the board&apos;s edge, then Zero here: A 0, X the board radius, Z 0. Nothing moves.</source>
+        <translation>Uvolněte motory, rukou otočte podstavou a posuňte jehlu, až bude hřebík 0 proti jehle a jehla na okraji desky, pak Nula zde: A 0, X poloměr desky, Z 0. Nic se nepohne.</translation>
+    </message>
+    <message>
+        <source>Board radius: X where the needle meets the board&apos;s edge</source>
+        <translation>Poloměr desky: X, kde jehla stojí na okraji desky</translation>
+    </message>
+    <message>
+        <source>Release motors</source>
+        <translation>Uvolnit motory</translation>
+    </message>
+    <message>
+        <source>Switch every driver off (M18) so the axes turn by hand; refused while a job is under way or the machine moves</source>
+        <translation>Vypnout všechny drivery (M18), aby se osami dalo otáčet rukou; odmítnuto, dokud běží úloha nebo se stroj pohybuje</translation>
+    </message>
+    <message>
+        <source>Zero here</source>
+        <translation>Nula zde</translation>
+    </message>
+    <message>
+        <source>The axes stand at the zero: A 0, X the board radius, Z 0 (G92); nothing moves</source>
+        <translation>Osy stojí na nule: A 0, X poloměr desky, Z 0 (G92); nic se nepohne</translation>
+    </message>
+    <message>
+        <source>Board radius</source>
+        <translation>Poloměr desky</translation>
+    </message>
+    <message>
         <source>Beyond the travel</source>
         <translation>Mimo rozsah pojezdu</translation>
     </message>
@@ -1008,7 +1068,7 @@ Přesto odeslat do stroje?</translation>
     <name>GcodeSession</name>
     <message>
         <source>Stopped: {0} line(s) not run</source>
-        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers).</extracomment>
+        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers). The motors were released for zeroing by hand and nothing was sent since.</extracomment>
         <translation>Zastaveno: neprovedeno řádků: {0}</translation>
     </message>
     <message>
@@ -2372,7 +2432,28 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>{0} stick: 500…524 is the dead zone; let go to centre it</source>
+        <extracomment>The unit&apos;s end switches (FIDELITY S4-18), closed where the axis is now.</extracomment>
         <translation>Páčka {0}: 500…524 je mrtvé pásmo; po puštění se vrátí na střed</translation>
+    </message>
+    <message>
+        <source>{0} end switch</source>
+        <translation>{0} koncový spínač</translation>
+    </message>
+    <message>
+        <source>Low</source>
+        <translation>Dolní</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s low end switch where the axis is now</source>
+        <translation>Sepnout dolní koncový spínač osy {0} tam, kde osa právě je</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>Horní</translation>
+    </message>
+    <message>
+        <source>Close {0}&apos;s high end switch where the axis is now</source>
+        <translation>Sepnout horní koncový spínač osy {0} tam, kde osa právě je</translation>
     </message>
 </context>
 <context>

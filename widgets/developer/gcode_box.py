@@ -13,10 +13,12 @@ from PySide6.QtWidgets import (
 )
 
 from app.developer.gcode import QUICK_REPLIES, GcodeEmulatorButtons, inject_reply
+from app.machines.gcode.session import zeroes_by_hand
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField
 from widgets.retranslate import Texts
+from widgets.style import MINUS
 
 _ERROR_STYLE = "color: #b00020;"
 
@@ -110,6 +112,51 @@ class GcodeEmulatorBox(QGroupBox):
         grid.addWidget(self.alarm_code, 1, 0)
         grid.addWidget(self.alarm_button, 1, 1)
         grid.addWidget(self.note, 2, 0, 1, 2)
+        self.white_button = t.button(
+            lambda: self.tr("White button"),
+            lambda: self.tr(
+                "The winder's white button: the first press switches the holding current off "
+                "(turn the axes by hand), the second sets the zero there (X = board radius)"
+            ),
+        )
+        self.white_button.clicked.connect(self._white)
+        self.white_note = QLabel()
+        self.hand_buttons: dict[tuple[str, int], QPushButton] = {}
+        hand = QHBoxLayout()
+        for axis in station.profile.axes:
+            step = 5.0 if axis.kind == "rotary" else 1.0
+            for sign in (-1, 1):
+                button = QPushButton(f"{axis.name} {MINUS if sign < 0 else '+'}{step:g}")
+                t.set(
+                    button.setToolTip,
+                    lambda n=axis.name: self.tr("Turn {0} by hand (its driver must be off)").format(
+                        n
+                    ),
+                )
+                button.clicked.connect(lambda _=False, n=axis.name, d=sign * step: self._turn(n, d))
+                hand.addWidget(button)
+                self.hand_buttons[(axis.name, sign)] = button
+        self.winder_widgets: list[QWidget] = [self.white_button, self.white_note]
+        self.winder_widgets += list(self.hand_buttons.values())
+        grid.addWidget(self.white_button, 3, 0)
+        grid.addWidget(self.white_note, 3, 1)
+        grid.addLayout(hand, 4, 0, 1, 2)
+        settings = station.profile.gcode
+        winder = settings is not None and zeroes_by_hand(settings)
+        for widget in self.winder_widgets:
+            widget.setVisible(winder)
+
+    def _white(self) -> None:
+        done = self.buttons.white_button()
+        texts = {
+            "drivers off": self.tr("drivers off: turn the axes by hand, then press again"),
+            "zero set": self.tr("zero set here (X = board radius)"),
+        }
+        self.white_note.setText(texts.get(done, self.tr("ignored: the machine is busy")))
+
+    def _turn(self, axis: str, delta: float) -> None:
+        if not self.buttons.turn_by_hand(axis, delta):
+            self.white_note.setText(self.tr("{0} holds: its driver is on").format(axis))
 
     def _alarm(self) -> None:
         code = self.alarm_code.value()
@@ -122,4 +169,6 @@ class GcodeEmulatorBox(QGroupBox):
         enabled = self.buttons.available
         for widget in (self.hold_button, self.resume_button, self.alarm_code):
             widget.setEnabled(enabled)
+        for winder_widget in self.winder_widgets:
+            winder_widget.setEnabled(enabled)
         self.gate.set_enabled(enabled)

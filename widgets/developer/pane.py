@@ -351,6 +351,8 @@ class JoystickBox(QGroupBox):
         self.texts.set(self.setTitle, lambda: self.tr("Joystick (usb3 unit)"))
         self._controls = controls
         self.sliders: list[QSlider] = []
+        #: The unit's end switches (FIDELITY S4-18), closed where the axis is now.
+        self.switch_buttons: dict[tuple[int, str], QPushButton] = {}
         grid = QGridLayout(self)
         for index, name in enumerate(axis_names):
             slider = QSlider(Qt.Orientation.Horizontal)
@@ -367,6 +369,26 @@ class JoystickBox(QGroupBox):
             grid.addWidget(QLabel(name), index, 0)
             grid.addWidget(slider, index, 1)
             self.sliders.append(slider)
+            for column, which in enumerate(END_SWITCHES, start=2):
+                if which == END_SWITCHES[0]:
+                    button = self.texts.button(
+                        lambda: self.tr("{0} end switch").format(self.tr("Low")),
+                        lambda n=name: self.tr(
+                            "Close {0}'s low end switch where the axis is now"
+                        ).format(n),
+                    )
+                else:
+                    button = self.texts.button(
+                        lambda: self.tr("{0} end switch").format(self.tr("High")),
+                        lambda n=name: self.tr(
+                            "Close {0}'s high end switch where the axis is now"
+                        ).format(n),
+                    )
+                button.clicked.connect(
+                    lambda _=False, a=index, w=which: controls.press_end_switch(a, w)
+                )
+                self.switch_buttons[(index, which)] = button
+                grid.addWidget(button, index, column)
         controls.availabilityChanged.connect(self.setEnabled)
         self.setEnabled(controls.available)
 

@@ -20,11 +20,13 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.machines.gcode.session import GcodeSession, SentLine
+from app.jobs.formats.string_art.program import StringArtProgram
+from app.jobs.run.runner import JobRunner
+from app.machines.gcode.session import GcodeSession, SentLine, zeroes_by_hand
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.link_text import axis_status_text
-from widgets.number_field import localized
+from widgets.number_field import NumberField, localized
 from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
 
@@ -41,6 +43,8 @@ class GcodePanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._watched: GcodeSession | None = None
+        self._motion_enabled = True
+        self._runner: JobRunner | None = None
         t = self.texts = Texts(self)
 
         machine = t.group(lambda: self.tr("Machine"))
@@ -95,6 +99,8 @@ class GcodePanel(QWidget):
             buttons.addWidget(button, number // 3, number % 3)
         grid.addLayout(buttons, 2, 0, 1, 4)
 
+        self.hand_group = self._hand_zeroing(station)
+
         console = t.group(lambda: self.tr("Console"))
         box = QVBoxLayout(console)
         self.output = QPlainTextEdit()
@@ -122,9 +128,57 @@ class GcodePanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addWidget(machine)
+        layout.addWidget(self.hand_group)
         layout.addWidget(console, 1)
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
+
+    def _hand_zeroing(self, station: Station) -> QWidget:
+        """The winder's manual zeroing (its white buttons, FIDELITY S0-24): release, zero here."""
+        t = self.texts
+        group = t.group(lambda: self.tr("Zero by hand"))
+        settings = station.profile.gcode
+        group.setVisible(settings is not None and zeroes_by_hand(settings))
+        note = t.label(
+            lambda: self.tr(
+                "Release the motors, turn the base and move the needle by hand until nail 0 "
+                "faces the needle and the needle stands at the board's edge, then Zero here: "
+                "A 0, X the board radius, Z 0. Nothing moves."
+            )
+        )
+        note.setWordWrap(True)
+        x_axes = [a for a in station.profile.axes if a.name == "X"]
+        travel = x_axes[0].travel if x_axes else 1000.0
+        self.board_radius = NumberField(
+            0.0, travel, decimals=1, unit="mm", value=min(120.0, travel), name="board_radius"
+        )
+        t.set(
+            self.board_radius.set_description,
+            lambda: self.tr("Board radius: X where the needle meets the board's edge"),
+        )
+        self.release_button = self._button(
+            lambda: self.tr("Release motors"),
+            lambda: self.tr(
+                "Switch every driver off (M18) so the axes turn by hand; refused while a job "
+                "is under way or the machine moves"
+            ),
+            self.release_motors,
+        )
+        self.zero_here_button = self._button(
+            lambda: self.tr("Zero here"),
+            lambda: self.tr(
+                "The axes stand at the zero: A 0, X the board radius, Z 0 (G92); nothing moves"
+            ),
+            self.zero_here,
+        )
+        self.zero_here_button.setEnabled(False)
+        grid = QGridLayout(group)
+        grid.addWidget(note, 0, 0, 1, 3)
+        grid.addWidget(t.label(lambda: self.tr("Board radius")), 1, 0)
+        grid.addWidget(self.board_radius, 1, 1, 1, 2)
+        grid.addWidget(self.release_button, 2, 1)
+        grid.addWidget(self.zero_here_button, 2, 2)
+        return group
 
     def _button(self, caption: Maker, tip: Maker, slot: object) -> QPushButton:
         button = self.texts.button(caption, tip)
@@ -192,9 +246,49 @@ class GcodePanel(QWidget):
                 self.tr("! soft reset: %n unanswered line(s) dropped", "", len(lost))
             )
 
+    def follow_jobs(self, runner: JobRunner) -> None:
+        """The board radius follows the string-art job loaded (its ``polomer_matrice``)."""
+        self._runner = runner
+        runner.programChanged.connect(self._take_board_radius)
+        self._take_board_radius()
+
+    def _take_board_radius(self) -> None:
+        program = self._runner.program if self._runner is not None else None
+        if isinstance(program, StringArtProgram):
+            radius = program.job.params.radius_cm * 10.0
+            if self.board_radius.minimum() <= radius <= self.board_radius.maximum():
+                self.board_radius.setValue(radius)
+
+    def release_motors(self) -> bool:
+        """First step of zeroing by hand: the session judges it (gate) and sends ``M18``."""
+        released = self.session is not None and self.session.release_motors()
+        self._sync_hand_zeroing()
+        return released
+
+    def zero_here(self) -> bool:
+        """Second step: ``G92`` with X the board radius, once the motors are released."""
+        radius = self.board_radius.value()
+        if radius is None or self.session is None:
+            return False
+        zeroed = self.session.zero_here(radius)
+        self._sync_hand_zeroing()
+        return zeroed
+
+    def _sync_hand_zeroing(self, *_args: object) -> None:
+        session = self.session
+        released = session is not None and session.released_by_hand
+        self.zero_here_button.setEnabled(self._motion_enabled and released)
+
     def set_motion_enabled(self, enabled: bool) -> None:
-        for button in (self.home_button, self.pen_up_button, self.pen_down_button):
+        self._motion_enabled = enabled
+        for button in (
+            self.home_button,
+            self.pen_up_button,
+            self.pen_down_button,
+            self.release_button,
+        ):
             button.setEnabled(enabled)
+        self._sync_hand_zeroing()
 
     # --- the session's news ------------------------------------------------------------
 
@@ -206,6 +300,7 @@ class GcodePanel(QWidget):
         if session is not None:
             # Bound methods: Qt drops them with the panel (a lambda would outlive it).
             session.lineSent.connect(self._show_sent)
+            session.lineSent.connect(self._sync_hand_zeroing)
             session.replyText.connect(self._show_reply)
             session.statusChanged.connect(self._show_status)
 

@@ -19,6 +19,11 @@ the unit has said where each axis stands: a move of nothing (which ends at
 once, and so reports) asks it.  At the target, the operation counts as done;
 short of it, the move is sent again from the reported position, toward the
 same absolute target.  A unit that does not answer leaves the job paused.
+
+An axis the session finds stopped at an end switch (FIDELITY S4-18) pauses
+the job at once with that news, naming the axis and the end: the next step
+is not sent into a machine that ran into its stop, and the operator decides
+(resume asks where the axes stand and moves on toward the same target).
 """
 
 from __future__ import annotations
@@ -57,6 +62,7 @@ class Usb3Driver(SequentialDriver):
                 self._session.frameReceived.disconnect(self._on_frame)
                 self._session.ticked.disconnect(self._on_tick)
                 self._session.settingsChanged.disconnect(self._forget_positions)
+                self._session.endSwitchHit.disconnect(self._on_end_switch)
                 self._session.model.linkStateChanged.disconnect(self._forget_positions)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
@@ -71,6 +77,8 @@ class Usb3Driver(SequentialDriver):
             self._session.ticked.connect(self._on_tick)
             # Another thread changes what a count means: the model has the new positions.
             self._session.settingsChanged.connect(self._forget_positions)
+            # Judged before the session's tick reaches _on_tick: the switch, not the silence.
+            self._session.endSwitchHit.connect(self._on_end_switch)
             # While nobody listens the unit may move (it runs its move out; its joystick).
             self._session.model.linkStateChanged.connect(self._forget_positions)
 
@@ -154,6 +162,19 @@ class Usb3Driver(SequentialDriver):
         if axis in self._expected:
             self._heard[axis] = (mm, self.station.clock.now())
             self._judge()
+
+    def _on_end_switch(self, axis: int, which: str, mm: float) -> None:
+        """An axis of the operation under way stopped at a switch: pause, say which."""
+        index = self.in_flight
+        if index is None or not self._judging() or axis not in self._expected:
+            return
+        self._forget_move()
+        self._verify = True  # the resume asks where the axes stand before anything moves
+        name = self.station.profile.axes[axis].name
+        self.runner.stop_short(
+            f"{name} stopped at its {which} end switch at {mm:.3f} mm during "
+            f"{self._source(index)}: the job is paused; check the machine before resuming"
+        )
 
     def _on_tick(self) -> None:
         if self._since is None or not self._judging():

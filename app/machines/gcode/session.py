@@ -172,6 +172,8 @@ class GcodeSession(MachineSession):
         #: The lines unanswered through every drained report so far (see _check_lost_answers).
         self._lost_candidates: list[SentLine] = []
         self._stall_told = False
+        #: The motors were released for zeroing by hand and nothing was sent since.
+        self._released_by_hand = False
         self._autotick = autotick
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
@@ -243,6 +245,9 @@ class GcodeSession(MachineSession):
         line = text.strip()
         if not line:
             return False
+        # Any line after the release may move an axis (switching its driver on): a zero
+        # declared after it would no longer be where the operator put the axes.
+        self._released_by_hand = False
         if origin == "console" and not confirmed:
             refusal = self.beyond_travel(line)
             if refusal is not None:
@@ -391,6 +396,72 @@ class GcodeSession(MachineSession):
                     lost
                 )
             )
+
+    # --- zeroing by hand (the winder's white buttons, FIDELITY S0-24) -------------------
+
+    @property
+    def zeroes_by_hand(self) -> bool:
+        return zeroes_by_hand(self.settings)
+
+    @property
+    def released_by_hand(self) -> bool:
+        """The motors were released (:meth:`release_motors`) and nothing was sent since."""
+        return self._released_by_hand
+
+    def _busy(self) -> str | None:
+        """Why the machine is not at rest by the session's own account (None: it is)."""
+        if self.stopping:
+            return "a stop is under way"
+        if any(self._jog):
+            return "a jog is held"
+        if not self.streamer.idle or self._machine_moving() or self.machine_state == "Hold":
+            return "the machine is still running what it was sent"
+        return None
+
+    def release_motors(self) -> bool:
+        """Zeroing by hand, first step: every driver off (``M18``), the axes free to turn.
+
+        The winder's first white-button press: its holding current off, so the
+        operator turns the base and moves the needle by hand.  No motion is
+        sent; refused (with the reason) while a job is under way or the machine
+        moves or has anything left to run.
+        """
+        refusal = self.gate.refuse_release(self._busy())
+        if refusal is not None:
+            self.model.message.emit(f"Not released: {refusal}")
+            return False
+        if not self.send_line("M18", "intent"):
+            return False
+        self._released_by_hand = True
+        self.model.message.emit(
+            "Motors released: turn the axes by hand to the zero, then Zero here"
+        )
+        return True
+
+    def zero_here(self, board_radius: float) -> bool:
+        """Zeroing by hand, second step: the axes stand at the zero (``G92``), nothing moves.
+
+        The winder's second white-button press: the base's angle is 0, the
+        needle's X is the board radius (the original's linear zero is
+        ``polomer_matrice``; X here is measured from the centre), Z is 0.
+        Only after :meth:`release_motors` with nothing sent since, and under
+        the same conditions; a radius outside X's travel is refused.
+        """
+        if not self._released_by_hand:
+            self.model.message.emit("Not zeroed: release the motors first")
+            return False
+        refusal = self.gate.refuse_release(self._busy())
+        names = [a.name for a in self.model.profile.axes]
+        if refusal is None and "X" in names:
+            refusal = self.gate.refuse_target(names.index("X"), board_radius)
+        if refusal is not None:
+            self.model.message.emit(f"Not zeroed: {refusal}")
+            return False
+        words = " ".join(f"{name}{board_radius if name == 'X' else 0.0:.3f}" for name in names)
+        if not self.send_line(f"G92 {words}", "intent"):
+            return False
+        self.model.message.emit(f"Zeroed by hand: X is the board radius, {board_radius:g} mm")
+        return True
 
     def move_absolute(self, axis: int, position: float) -> bool:
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
@@ -568,6 +639,7 @@ class GcodeSession(MachineSession):
         self._status_asked_at = None
         self._reset_requested_at = None
         self._reset_sent_at = None
+        self._released_by_hand = False
         self._last_heard = self.clock.now()
         self._await_device()
         if self._autotick:
@@ -817,6 +889,14 @@ class GcodeSession(MachineSession):
 
 #: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).
 SETTING_DISABLED = 5
+
+
+def zeroes_by_hand(settings: GcodeSettings) -> bool:
+    """Whether the machine is zeroed by hand (the winder, S0-24): it turns about a centre
+    (X measured from it) and can release its motors and take a position declared
+    (``M18``, ``G92``)."""
+    words = settings.words
+    return settings.kinematics == "cylindrical" and "M18" in words and "G92" in words
 
 
 def _hint(line: str, code: int) -> str:

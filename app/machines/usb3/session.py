@@ -19,6 +19,17 @@ The unit reports an axis's position only while it moves and when it stops, so
 when it first answers the session asks every axis where it stands (a move of
 nothing, which ends at once and reports): the axes show their real positions,
 idle, from the start instead of "unknown" at 0 until they first move.
+
+End switches (FIDELITY S4-18): the unit stops the axis whose switch is
+pressed and reports where it stands, nothing more; the wire has no word for
+"end switch".  So the session keeps where each move it sent is heading (the
+unit adds a move sent while the axis still runs to its target): an axis that
+falls silent short of that target, in the direction it was heading, with no
+``S;`` sent, stopped at its switch on that side.  The session says so
+(``endSwitchHit`` and a message naming the axis and the end), so a job in
+progress pauses instead of sending the next step blindly.  Silence, not a
+repeated count, decides, as for a job: at its slowest speed a pulse takes
+longer than a report period.
 """
 
 from __future__ import annotations
@@ -76,6 +87,8 @@ class Usb3Session(MachineSession):
     """frameSent/frameReceived carry usb3 messages (or Rejected) with their bytes."""
 
     settingsChanged = Signal()
+    #: An axis stopped at an end switch: axis index, "low" or "high", position in mm.
+    endSwitchHit = Signal(int, str, float)
 
     def __init__(
         self,
@@ -101,6 +114,13 @@ class Usb3Session(MachineSession):
         self._asking = [False] * self.axis_count
         #: Where the jog leads sent so far take each axis (None: from its position).
         self._jog_end: list[float | None] = [None] * self.axis_count
+        #: Per axis: the count the moves sent are heading for, their direction and when the
+        #: last was sent (None: no move of the station's under way).
+        self._heading: list[tuple[int, int, float] | None] = [None] * 3
+        #: The direction register as the station last set it (``D``).
+        self._signs: list[int] = [1, 1, 1]
+        #: Station-clock time of each axis's last position report.
+        self._reported_at: list[float | None] = [None] * 3
         self._last_heard = clock.now()
         self._asked_at: float | None = None  # the last G; asked because the unit was quiet
         #: Which settings reports came since the link opened (the first always counts).
@@ -250,6 +270,7 @@ class Usb3Session(MachineSession):
             self._send_jog_lead(TICK_MS / 1000)
         now = self.clock.now()
         self._keep_alive(now)
+        self._check_end_switches(now)
         for axis, last in enumerate(self._last_report):
             if last is not None and now - last > STILL_AFTER_S:
                 self._last_report[axis] = None
@@ -299,9 +320,51 @@ class Usb3Session(MachineSession):
         if not self.link.is_open:
             return
         for message in messages:
+            self._track(message)
             raw = encode(message)
             self.link.write(raw)
             self.frameSent.emit(message, raw)
+
+    def _track(self, message: Message) -> None:
+        """Follow where the moves sent take each axis, as the unit counts them."""
+        if isinstance(message, SetDirection):
+            self._signs = list(message.signs)
+        elif isinstance(message, Move) and message.count:
+            axis = int(message.axis)
+            heading = self._heading[axis]
+            base = heading[0] if heading is not None else self._counts_of(axis)
+            sign = self._signs[axis]
+            self._heading[axis] = (base + sign * message.count, sign, self.clock.now())
+        elif isinstance(message, StopAll | ZeroAll):
+            # Stopped on purpose, or counted from a new zero: no target to fall short of.
+            self._heading = [None] * 3
+
+    def _counts_of(self, axis: int) -> int:
+        return self._counts[axis] if axis < self.axis_count else 0
+
+    def _check_end_switches(self, now: float) -> None:
+        """An axis silent short of where the station's moves were taking it is at a switch."""
+        for axis, heading in enumerate(self._heading):
+            reported = self._reported_at[axis]
+            if heading is None or axis >= self.axis_count:
+                continue
+            target, sign, sent_at = heading
+            if reported is None or reported < sent_at or now - reported < STILL_AFTER_S:
+                continue  # not heard since the move went out, or not silent long enough
+            self._heading[axis] = None
+            count = self._counts[axis]
+            if (target - count) * sign < StepSize.FULL.counts_per_pulse:
+                # There, past it (the unit's joystick took over), or less than a full step
+                # short: a unit whose step size changed on its menu rounds a move down.
+                continue
+            which = "high" if sign > 0 else "low"
+            position = count_to_mm(count, self.threads[axis])
+            name = self.model.axes[axis].name
+            self.model.message.emit(
+                f"{name} stopped at its {which} end switch at {position:.3f} mm, "
+                f"{count_to_mm(abs(target - count), self.threads[axis]):.3f} mm short of its target"
+            )
+            self.endSwitchHit.emit(axis, which, position)
 
     @staticmethod
     def _triple(values: Sequence[_T], default: _T) -> Triple[_T]:
@@ -316,6 +379,8 @@ class Usb3Session(MachineSession):
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
         self._asking = [False] * self.axis_count
+        self._heading = [None] * 3
+        self._reported_at = [None] * 3
         self._last_heard = self.clock.now()
         self._asked_at = None
         self._reported.clear()
@@ -378,6 +443,10 @@ class Usb3Session(MachineSession):
         if axis >= self.axis_count:
             return
         now = self.clock.now()
+        self._reported_at[axis] = now
+        heading = self._heading[axis]
+        if heading is not None and count == heading[0]:
+            self._heading[axis] = None  # arrived where the moves sent were taking it
         moved = count != self._counts[axis]
         last = self._last_report[axis]
         delta_mm = count_to_mm(count - self._counts[axis], self.threads[axis])
