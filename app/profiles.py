@@ -15,6 +15,8 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from protocol.drill.timing import DrillTiming
+
 RESOURCES = Path(__file__).resolve().parent.parent / "resources"
 MACHINES_DIR = RESOURCES / "machines"
 DEFAULT_PROFILE = "xy-stage"
@@ -119,6 +121,9 @@ class MachineProfile:
     #: it finished.  Judged against the travel when the profile is read, and again by the
     #: motion gate when the job goes there.
     park: Mapping[str, float] | None = None
+    #: The drill's timing constants ([timing] in the profile, FIDELITY S2-06): the
+    #: emulator runs them, the estimate and the session's timeouts count with them.
+    drill_timing: DrillTiming = field(default_factory=DrillTiming)
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
@@ -206,6 +211,14 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
                 f"{path}: [gcode] kinematics must be cartesian, corexy or cylindrical"
             )
     park = _park_from(_section(data, "park", path), axes, path) if "park" in data else None
+    drill_timing = DrillTiming()
+    if "timing" in data:
+        if dialect != "drill":
+            raise ProfileError(f"{path}: [timing] is for the drill dialect only")
+        try:
+            drill_timing = DrillTiming.from_table(_section(data, "timing", path))
+        except ValueError as exc:
+            raise ProfileError(f"{path}: [timing] {exc}") from exc
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -220,6 +233,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         source=path,
         gcode=gcode,
         park=park,
+        drill_timing=drill_timing,
     )
 
 

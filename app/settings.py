@@ -177,6 +177,7 @@ EXCELLON_STEPS = (1e-4, 1e-3, 1e-5)
 #: The jobs dock's reading options, by option name.
 JOB_OPTIONS: Mapping[str, Spec[object]] = {
     "draw": Spec("job_options/draw", False, "true or false", _truth),
+    "draw_crosses": Spec("job_options/draw_crosses", False, "true or false", _truth),
     "smallest_first": Spec("job_options/smallest_first", False, "true or false", _truth),
     "translate_pen": Spec("job_options/translate_pen", True, "true or false", _truth),
     "skip_unsupported": Spec("job_options/skip_unsupported", False, "true or false", _truth),

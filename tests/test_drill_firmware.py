@@ -227,22 +227,60 @@ def test_the_drill_depth_follows_the_sensor_setting() -> None:
     assert bench.fw.positions[2] == 112 - 78
 
 
-def test_pen_down_and_up_take_their_fixed_time_and_are_logged_with_the_position() -> None:
+def test_s2_24_kresli_and_zvedni_are_the_two_halves_of_the_drill_stroke() -> None:
     bench = Bench()
     bench.home()
     bench.send(move_x(40))
     bench.run_until_done()
     t0 = bench.elapsed
-    bench.send(PEN_DOWN, PEN_UP)
-    replies = bench.run(0.4)
+    bench.send(PEN_DOWN)
+    replies = bench.run_until_done()
+    # Vrtat's way down from the top: 412 microsteps at 2.5 ms, 206 pauses of 10 ms, 0.1 s.
+    first_down = 412 * 0.0025 + 206 * 0.010 + 0.1  # 3.19 s
     assert replies == [
         (round(t0 + 0.005, 6), received("K")),
-        (round(t0 + 0.005, 6), received("Z")),
-        (round(t0 + 0.15, 6), done("K")),
-        (round(t0 + 0.30, 6), done("Z")),
+        (round(t0 + end_of_cycle(first_down), 6), done("K")),
     ]
-    assert [(e.down, e.x, e.y) for e in bench.fw.pen_log] == [(True, 40, 0), (False, 40, 0)]
-    assert not bench.fw.pen_down
+    assert bench.fw.positions == (40, 0, 412)  # where the drill makes its hole
+    assert bench.fw.pen_down and not bench.fw.drill_log
+    t1 = bench.elapsed
+    bench.send(PEN_UP)
+    replies = bench.run_until_done()
+    up = 39 * 0.0025 + 0.1  # its way back: 0.1975 s
+    assert replies[-1] == (round(t1 + end_of_cycle(up), 6), done("Z"))
+    assert bench.fw.positions == (40, 0, 412 - 78)  # hovering, as after a V
+    # From the hover the pen comes down as a later V does: K + Z take one V.
+    t2 = bench.elapsed
+    bench.send(PEN_DOWN)
+    replies = bench.run_until_done()
+    later_down = 78 * 0.0025 + 39 * 0.010 + 0.1  # 0.685 s
+    assert replies[-1] == (round(t2 + end_of_cycle(later_down), 6), done("K"))
+    assert later_down + up == pytest.approx(LATER_DRILL_SECONDS)
+    assert [(e.down, e.x, e.y) for e in bench.fw.pen_log] == [
+        (True, 40, 0),
+        (False, 40, 0),
+        (True, 40, 0),
+    ]
+
+
+def test_s2_12_while_the_pen_is_down_the_following_coordinates_are_drawn() -> None:
+    bench = Bench()
+    bench.home()
+    bench.send(move_x(100), move_y(50))  # pen up: travel, nothing drawn
+    bench.run_until_done()
+    assert not bench.fw.drawing
+    bench.send(PEN_DOWN, move_x(300), move_y(250), move_x(100), PEN_UP)
+    bench.run_until_done()
+    # Each coordinate a stroke from where the pen stood: one axis at a time, X first.
+    assert [(s.x0, s.y0, s.x1, s.y1) for s in bench.fw.drawing] == [
+        (100, 50, 300, 50),
+        (300, 50, 300, 250),
+        (300, 250, 100, 250),
+    ]
+    bench.send(move_x(0), move_y(0))  # Zvedni ended the drawing
+    bench.run_until_done()
+    assert len(bench.fw.drawing) == 3
+    assert "drawn X100 Y50 to X300 Y50" in event_log_line(bench.fw.drawing[0])
 
 
 def test_park_runs_to_the_back_and_switches_the_motors_off() -> None:

@@ -1976,8 +1976,16 @@ Načíst jako:</translation>
         <translation>Otvory kreslit perem</translation>
     </message>
     <message>
-        <source>Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling</source>
-        <translation>Vrtací soubory: místo vrtání nakreslit perem křížek velikosti otvoru (K / Z)</translation>
+        <source>Drill files: instead of drilling, the pen goes down (K) at each bit&apos;s first hole, draws along the following holes, X then Y, and comes up (Z) after the last, as the original tool drew</source>
+        <translation>Vrtací soubory: místo vrtání sjede pero (K) na první otvor každého vrtáku, kreslí podél dalších otvorů, nejdřív X, pak Y, a za posledním se zvedne (Z), jak kreslil původní program</translation>
+    </message>
+    <message>
+        <source>Crosses at the holes</source>
+        <translation>Křížky na otvorech</translation>
+    </message>
+    <message>
+        <source>Drawn drill files: a pen cross the size of each hole instead of one line along the holes</source>
+        <translation>Kreslené vrtací soubory: perem křížek velikosti každého otvoru místo jedné čáry podél otvorů</translation>
     </message>
     <message>
         <source>Smallest bit first</source>

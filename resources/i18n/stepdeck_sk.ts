@@ -1976,8 +1976,16 @@ Načítať ako:</translation>
         <translation>Otvory kresliť perom</translation>
     </message>
     <message>
-        <source>Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling</source>
-        <translation>Vŕtacie súbory: namiesto vŕtania nakresliť perom krížik veľkosti otvoru (K / Z)</translation>
+        <source>Drill files: instead of drilling, the pen goes down (K) at each bit&apos;s first hole, draws along the following holes, X then Y, and comes up (Z) after the last, as the original tool drew</source>
+        <translation>Vŕtacie súbory: namiesto vŕtania zíde pero (K) na prvý otvor každého vrtáka, kreslí pozdĺž ďalších otvorov, najprv X, potom Y, a za posledným sa zdvihne (Z), ako kreslil pôvodný program</translation>
+    </message>
+    <message>
+        <source>Crosses at the holes</source>
+        <translation>Krížiky na otvoroch</translation>
+    </message>
+    <message>
+        <source>Drawn drill files: a pen cross the size of each hole instead of one line along the holes</source>
+        <translation>Kreslené vŕtacie súbory: perom krížik veľkosti každého otvoru namiesto jednej čiary pozdĺž otvorov</translation>
     </message>
     <message>
         <source>Smallest bit first</source>
