@@ -205,7 +205,7 @@ def test_the_dry_run_times_moves_axis_after_axis_at_the_step_periods() -> None:
     assert estimate.total_s == pytest.approx(estimate.cumulative_s[3] + park)
     homing = estimate_drill(program, profile, overhead_s=0.0, home_first=True)
     # From 0: to each switch (offset + 1), off it (1) and the offset again.
-    home = (50 + 1 + 1 + 50) * 0.0013 + (40 + 1 + 1 + 40) * 0.0015
+    home = (3 + 1 + 1 + 3) * 0.0013 + (86 + 1 + 1 + 86) * 0.0015
     assert homing.total_s == pytest.approx(estimate.total_s + home)
 
 

@@ -36,8 +36,12 @@ from typing import Any
 
 #: Seconds per microstep, per axis name.
 STEP_PERIODS_S: Mapping[str, float] = {"X": 0.0013, "Y": 0.0015, "Z": 0.0025}
-#: Microsteps from where each end switch opens to the machine's zero (``N`` steps them).
-ZERO_OFFSETS: Mapping[str, int] = {"X": 50, "Y": 40}
+#: Microsteps from where each end switch opens to the machine's zero (``N`` steps them):
+#: the original's ``Const Nulax = 3`` and ``Const Nulay = 86`` (FIDELITY S2-18; read from
+#: an OCR'd listing, the only source there is).  They only place the zero off the
+#: switches and fit the machine: X 3 microsteps (0.15 mm) past its switch, Y 86 (4.4 mm),
+#: the travel (an A5 board, S2-27) counted from there.
+ZERO_OFFSETS: Mapping[str, int] = {"X": 3, "Y": 86}
 #: Microsteps an end switch needs to open again once hit (``N`` backs off that far).
 SWITCH_HYSTERESIS = 1
 
