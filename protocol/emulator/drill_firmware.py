@@ -71,6 +71,7 @@ a cycle boundary says ``D`` at the end of the cycle in which ``d`` elapses.
 
 from __future__ import annotations
 
+import dataclasses
 from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -100,6 +101,10 @@ _EPS = 1e-9
 _SLOP = 1e-10
 #: Entries kept in each log, bounded for an emulator left running for days.
 LOG_LENGTH = 10_000
+#: The DrillConfig fields a DrillTiming sets.
+_TIMED = frozenset(
+    {"step_periods", "down_pause", "down_pause_every", "dwell", "after_wait", "return_full_steps"}
+)
 #: An acceleration high enough never to matter: speeds are jumped to anyway.
 _NO_RAMP = 1e12
 
@@ -317,6 +322,20 @@ class DrillFirmware(ControlCycles):
         )
         axis.set_position(0.0)
         return axis
+
+    def set_timing(self, drill_timing: DrillTiming) -> None:
+        """Run ``drill_timing``'s constants from the next procedure step on (S2-06)."""
+        with self._lock:
+            t = drill_timing
+            self.config = dataclasses.replace(
+                DrillConfig.with_timing(t),
+                **{
+                    f.name: getattr(self.config, f.name)
+                    for f in dataclasses.fields(DrillConfig)
+                    if f.name not in _TIMED
+                },
+            )
+            self._speeds = tuple(1.0 / p for p in self.config.step_periods)
 
     # -- EmulatedDevice --------------------------------------------------------
 

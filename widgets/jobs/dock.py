@@ -302,6 +302,8 @@ class JobsDock(QDockWidget):
         step.addWidget(self.step_combo)
         step.addStretch(1)
         self.draw_check.toggled.connect(self._options_changed)
+        # The drill's timing constants changed (S2-06): the open file is estimated anew.
+        self.station.drillTimingChanged.connect(self._options_changed)
         self.crosses_check.toggled.connect(self._options_changed)
         self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
