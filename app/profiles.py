@@ -15,6 +15,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from protocol.drill.timing import DrillTiming
 from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_HZ
 
 RESOURCES = Path(__file__).resolve().parent.parent / "resources"
@@ -138,6 +139,9 @@ class MachineProfile:
     #: motion gate when the job goes there.
     park: Mapping[str, float] | None = None
     driver: DriverSettings = field(default_factory=DriverSettings)
+    #: The drill's timing constants ([timing] in the profile, FIDELITY S2-06): the
+    #: emulator runs them, the estimate and the session's timeouts count with them.
+    drill_timing: DrillTiming = field(default_factory=DrillTiming)
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
@@ -230,6 +234,14 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         raise ProfileError(
             f"{path}: [driver] vfs_v and step_clock_hz must be positive, rsense_ohm not negative"
         )
+    drill_timing = DrillTiming()
+    if "timing" in data:
+        if dialect != "drill":
+            raise ProfileError(f"{path}: [timing] is for the drill dialect only")
+        try:
+            drill_timing = DrillTiming.from_table(_section(data, "timing", path))
+        except ValueError as exc:
+            raise ProfileError(f"{path}: [timing] {exc}") from exc
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -245,6 +257,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         gcode=gcode,
         park=park,
         driver=driver,
+        drill_timing=drill_timing,
     )
 
 

@@ -16,17 +16,19 @@ Tests pass their own QSettings file so they never touch the operator's.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import shutil
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Generic, TypeVar
+from typing import Any, Generic, TypeVar
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QByteArray, QCoreApplication, QSettings
 
 from app.profiles import DEFAULT_PROFILE, TRANSPORTS, available_profiles
+from protocol.drill.timing import INTEGER_CONSTANTS, TIMING_BOUNDS, DrillTiming
 
 ORGANISATION = "StepDeck"
 APPLICATION = "StepDeck"
@@ -177,6 +179,7 @@ EXCELLON_STEPS = (1e-4, 1e-3, 1e-5)
 #: The jobs dock's reading options, by option name.
 JOB_OPTIONS: Mapping[str, Spec[object]] = {
     "draw": Spec("job_options/draw", False, "true or false", _truth),
+    "draw_crosses": Spec("job_options/draw_crosses", False, "true or false", _truth),
     "smallest_first": Spec("job_options/smallest_first", False, "true or false", _truth),
     "translate_pen": Spec("job_options/translate_pen", True, "true or false", _truth),
     "skip_unsupported": Spec("job_options/skip_unsupported", False, "true or false", _truth),
@@ -186,6 +189,38 @@ JOB_OPTIONS: Mapping[str, Spec[object]] = {
         "one of 0.0001, 0.001, 0.00001 (inch)",
         _number_choice(EXCELLON_STEPS),
     ),
+}
+
+
+def _bounded(lo: float, hi: float, whole: bool) -> Callable[[object], float]:
+    """A number within ``lo…hi`` (a whole one for ``whole``), stored as a number or text."""
+
+    def convert(value: object) -> float:
+        if isinstance(value, bool):
+            raise BadValue("a truth value")
+        try:
+            number = float(value) if isinstance(value, int | float | str) else math.nan
+        except ValueError:
+            raise BadValue("not a number") from None
+        if not math.isfinite(number) or not lo <= number <= hi:
+            raise BadValue(f"{number:g} is out of range")
+        if whole and number != int(number):
+            raise BadValue("not a whole number")
+        return int(number) if whole else number
+
+    return convert
+
+
+#: The drill's timing constants as the operator set them in the station (FIDELITY S2-06),
+#: by constant name; absent: the profile's.
+DRILL_TIMING: Mapping[str, Spec[float]] = {
+    name: Spec(
+        f"drill_timing/{name}",
+        math.nan,
+        f"a number within {lo:g}…{hi:g}",
+        _bounded(lo, hi, name in INTEGER_CONSTANTS),
+    )
+    for name, (lo, hi) in TIMING_BOUNDS.items()
 }
 #: What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous.
 JOG_STEPS = (0.0, 0.1, 1.0, 10.0)
@@ -407,6 +442,31 @@ class StationSettings:
     def set_job_options(self, values: Mapping[str, object]) -> None:
         for name, value in values.items():
             self.write(JOB_OPTIONS[name], value)
+
+    def drill_timing(self, base: DrillTiming) -> DrillTiming:
+        """``base`` (the profile's) with the constants the operator set and stored."""
+        stored = {
+            name: self.read(spec)
+            for name, spec in DRILL_TIMING.items()
+            if self.store.contains(spec.key)
+        }
+        values: dict[str, Any] = {
+            name: value for name, value in stored.items() if not math.isnan(value)
+        }
+        if not values:
+            return base
+        try:
+            return dataclasses.replace(base, **values)
+        except ValueError:  # each is in bounds, so only a future cross-check could refuse
+            return base
+
+    def set_drill_timing(self, timing: DrillTiming | None) -> None:
+        """Store ``timing``'s constants; None: forget them (the profile's apply again)."""
+        for name, spec in DRILL_TIMING.items():
+            if timing is None:
+                self.store.remove(spec.key)
+            else:
+                self.write(spec, getattr(timing, name))
 
     def recent_jobs(self) -> list[str]:
         """The job files opened last, newest first (unusable entries left out)."""

@@ -20,6 +20,8 @@ procedure finishes, and the operator is told so.
 
 from __future__ import annotations
 
+import dataclasses
+
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.discovery import ble_uuids_for
@@ -34,6 +36,7 @@ from app.machines.stage.session import StageSession
 from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile
 from protocol.clock import Clock, MonotonicClock
+from protocol.drill.timing import DrillTiming
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.drill_firmware import DrillFirmware
 from protocol.emulator.gcode_firmware import GcodeFirmware
@@ -60,6 +63,8 @@ class Station(QObject):
     echoInjected = Signal(object)  # EchoFrame, for the frame log
     #: A link was closed on the operator's word (after the stop, when one was awaited).
     linkClosed = Signal()
+    #: The drill's timing constants changed (:meth:`set_drill_timing`): estimates are stale.
+    drillTimingChanged = Signal()
 
     def __init__(
         self,
@@ -310,6 +315,18 @@ class Station(QObject):
         if had_session:
             self.sessionChanged.emit()
             self.linkClosed.emit()
+
+    def set_drill_timing(self, timing: DrillTiming) -> None:
+        """The drill's timing constants from now on (FIDELITY S2-06: the teacher changes them).
+
+        The estimate and the session's timeouts read them from the profile; an
+        emulated drill runs them from its next procedure on.
+        """
+        self.profile = dataclasses.replace(self.profile, drill_timing=timing)
+        self.model.profile = self.profile
+        if isinstance(self.emulator, DrillFirmware):
+            self.emulator.set_timing(timing)
+        self.drillTimingChanged.emit()
 
     def set_period_ms(self, period_ms: int) -> None:
         self.period_ms = period_ms

@@ -4,11 +4,12 @@ Every duration asserted here is worked out by hand from the defaults: X steps
 1.3 ms, Y 1.5 ms and Z 2.5 ms per microstep with no ramps; at power-on the
 carriage stands 1200 (X) and 900 (Y) microsteps off the switch edges and the
 counters read 0 there; homing runs to the switch, backs off 1 microstep until
-it opens, then steps the offset (X 50, Y 40).  A drill stroke goes 400 + 12 =
-412 microsteps down at 2.5 ms (1.03 s) with a 10 ms pause after every second
-one (2.06 s), waits 0.1 s, comes back 39 full steps of 2 microsteps per 2.5 ms
-(0.0975 s) and waits 0.1 s: 3.3875 s; the drill then hovers 78 microsteps
-above the bottom, so later strokes take 0.8825 s.
+it opens, then steps the offset (X 3, Y 86: the original's Nulax/Nulay). A
+drill stroke goes 400 + 12 = 412 microsteps down at 2.5 ms (1.03 s) with a 10
+ms pause after every second one (2.06 s), waits 0.1 s, comes back 39 full
+steps of 2 microsteps per 2.5 ms (0.0975 s) and waits 0.1 s: 3.3875 s; the
+drill then hovers 78 microsteps above the bottom, so later strokes take 0.8825
+s.
 Control cycles are 5 ms; a procedure of duration d started at a cycle
 boundary is answered ``D`` at the end of the cycle in which d elapses.
 """
@@ -48,7 +49,7 @@ from protocol.emulator.drill_firmware import (
 
 START = 100.0
 CYCLE = 0.005
-HOME_SECONDS = (1200 + 1 + 50) * 0.0013 + (900 + 1 + 40) * 0.0015  # 1.6263 + 1.4115
+HOME_SECONDS = (1200 + 1 + 3) * 0.0013 + (900 + 1 + 86) * 0.0015  # 1.5652 + 1.4805
 DRILL_SECONDS = 412 * 0.0025 + 206 * 0.010 + 0.1 + 39 * 0.0025 + 0.1  # 3.3875
 LATER_DRILL_SECONDS = 78 * 0.0025 + 39 * 0.010 + 0.1 + 39 * 0.0025 + 0.1  # 0.8825
 
@@ -155,13 +156,27 @@ def test_homing_runs_x_then_y_to_the_switches_and_on_to_the_offsets() -> None:
     assert x == round(-1.0 / 0.0013) and y == 0  # 1.0 s of X: -769 microsteps
     assert not bench.fw.homed
     replies = bench.run(3.0)
-    assert replies == [(end_of_cycle(HOME_SECONDS), done("N"))]
-    assert replies[0][0] == 3.04  # 3.0378 s, answered at the end of its cycle
+    assert replies == [(round(end_of_cycle(HOME_SECONDS), 6), done("N"))]
+    assert replies[0][0] == 3.05  # 3.0457 s, answered at the end of its cycle
     assert bench.fw.positions == (0, 0, 0)
     assert bench.fw.homed and bench.fw.motors_on
     # The zero lies offset + 1 microsteps off each switch edge: the mechanisms show it.
     x_axis, y_axis, _ = bench.fw.axes
     assert not x_axis.end_switch_low and not y_axis.end_switch_low
+
+
+def test_s2_18_the_zero_lies_nulax_3_and_nulay_86_microsteps_off_the_switches() -> None:
+    """The original's ``Const Nulax = 3`` / ``Const Nulay = 86``: N steps them off the switches."""
+    assert DrillConfig().zero_offsets == (3, 86)
+    bench = Bench()
+    bench.home()
+    # From the zero, N runs back to each switch (offset + 1 microsteps, the switch's
+    # hysteresis), off it (1) and the offset out again: X 8 microsteps, Y 174.
+    t0 = bench.elapsed
+    bench.send(HOME)
+    replies = bench.run_until_done()
+    took = (3 + 1 + 1 + 3) * 0.0013 + (86 + 1 + 1 + 86) * 0.0015  # 0.2714 s
+    assert replies[-1] == (round(t0 + end_of_cycle(took), 6), done("N"))
 
 
 def test_after_homing_the_far_ends_of_the_travel_are_the_other_switches() -> None:
@@ -227,22 +242,60 @@ def test_the_drill_depth_follows_the_sensor_setting() -> None:
     assert bench.fw.positions[2] == 112 - 78
 
 
-def test_pen_down_and_up_take_their_fixed_time_and_are_logged_with_the_position() -> None:
+def test_s2_24_kresli_and_zvedni_are_the_two_halves_of_the_drill_stroke() -> None:
     bench = Bench()
     bench.home()
     bench.send(move_x(40))
     bench.run_until_done()
     t0 = bench.elapsed
-    bench.send(PEN_DOWN, PEN_UP)
-    replies = bench.run(0.4)
+    bench.send(PEN_DOWN)
+    replies = bench.run_until_done()
+    # Vrtat's way down from the top: 412 microsteps at 2.5 ms, 206 pauses of 10 ms, 0.1 s.
+    first_down = 412 * 0.0025 + 206 * 0.010 + 0.1  # 3.19 s
     assert replies == [
         (round(t0 + 0.005, 6), received("K")),
-        (round(t0 + 0.005, 6), received("Z")),
-        (round(t0 + 0.15, 6), done("K")),
-        (round(t0 + 0.30, 6), done("Z")),
+        (round(t0 + end_of_cycle(first_down), 6), done("K")),
     ]
-    assert [(e.down, e.x, e.y) for e in bench.fw.pen_log] == [(True, 40, 0), (False, 40, 0)]
-    assert not bench.fw.pen_down
+    assert bench.fw.positions == (40, 0, 412)  # where the drill makes its hole
+    assert bench.fw.pen_down and not bench.fw.drill_log
+    t1 = bench.elapsed
+    bench.send(PEN_UP)
+    replies = bench.run_until_done()
+    up = 39 * 0.0025 + 0.1  # its way back: 0.1975 s
+    assert replies[-1] == (round(t1 + end_of_cycle(up), 6), done("Z"))
+    assert bench.fw.positions == (40, 0, 412 - 78)  # hovering, as after a V
+    # From the hover the pen comes down as a later V does: K + Z take one V.
+    t2 = bench.elapsed
+    bench.send(PEN_DOWN)
+    replies = bench.run_until_done()
+    later_down = 78 * 0.0025 + 39 * 0.010 + 0.1  # 0.685 s
+    assert replies[-1] == (round(t2 + end_of_cycle(later_down), 6), done("K"))
+    assert later_down + up == pytest.approx(LATER_DRILL_SECONDS)
+    assert [(e.down, e.x, e.y) for e in bench.fw.pen_log] == [
+        (True, 40, 0),
+        (False, 40, 0),
+        (True, 40, 0),
+    ]
+
+
+def test_s2_12_while_the_pen_is_down_the_following_coordinates_are_drawn() -> None:
+    bench = Bench()
+    bench.home()
+    bench.send(move_x(100), move_y(50))  # pen up: travel, nothing drawn
+    bench.run_until_done()
+    assert not bench.fw.drawing
+    bench.send(PEN_DOWN, move_x(300), move_y(250), move_x(100), PEN_UP)
+    bench.run_until_done()
+    # Each coordinate a stroke from where the pen stood: one axis at a time, X first.
+    assert [(s.x0, s.y0, s.x1, s.y1) for s in bench.fw.drawing] == [
+        (100, 50, 300, 50),
+        (300, 50, 300, 250),
+        (300, 250, 100, 250),
+    ]
+    bench.send(move_x(0), move_y(0))  # Zvedni ended the drawing
+    bench.run_until_done()
+    assert len(bench.fw.drawing) == 3
+    assert "drawn X100 Y50 to X300 Y50" in event_log_line(bench.fw.drawing[0])
 
 
 def test_park_runs_to_the_back_and_switches_the_motors_off() -> None:

@@ -8,6 +8,7 @@ not from the reader: 1/10000 inch with leading zeros suppressed (``TZ``) means
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import pytest
@@ -207,15 +208,47 @@ def test_every_hole_drilled_once_and_ops_keep_their_line(shared_dir: Path) -> No
             assert dict(op.target) == {"X": hole.x_mm, "Y": hole.y_mm}
 
 
-def test_draw_mode_draws_a_cross_per_hole(shared_dir: Path) -> None:
+def test_cross_mode_draws_a_cross_per_hole(shared_dir: Path) -> None:
     job = read_drill_file(board(shared_dir, "driver"))
-    program = build_drill_program(job, mode="draw")
+    program = build_drill_program(job, mode="cross")
     assert not any(op.kind is OpKind.DRILL for op in program)
     assert sum(op.kind is OpKind.PEN_DOWN for op in program) == 2 * len(job.holes)
     strokes = [
         (index, where) for index, where, pen_down in program.positions() if pen_down
     ]  # each pen-down move ends a stroke as wide as its hole
     assert len(strokes) == 2 * len(job.holes)
+
+
+def test_s2_12_draw_mode_puts_the_pen_down_at_each_bits_first_hole_and_draws_along_the_rest(
+    shared_dir: Path,
+) -> None:
+    job = read_drill_file(board(shared_dir, "driver"))
+    plan = plan_drilling(job)
+    program = build_drill_program(job, mode="draw")
+    assert not any(op.kind is OpKind.DRILL for op in program)
+    kinds = [op.kind for op in program if op.kind is not OpKind.MOVE]
+    # Per bit: its prompt, Kresli at the first hole, Zvedni after the last.
+    assert kinds == [OpKind.WAIT, OpKind.PEN_DOWN, OpKind.PEN_UP] * len(plan.tools)
+    # What the pen draws, per bit: where it went down, then where each move took it.
+    pen_paths: list[list[tuple[float, float]]] = []
+    where: dict[str, float] = {}
+    for op in program:
+        if op.kind is OpKind.MOVE:
+            where.update(op.target)
+            if pen_paths and pen_paths[-1][-1:] != [(-1.0, -1.0)]:
+                pen_paths[-1].append((where["X"], where["Y"]))
+        elif op.kind is OpKind.PEN_DOWN:
+            pen_paths.append([(where["X"], where["Y"])])
+        elif op.kind is OpKind.PEN_UP:
+            pen_paths[-1].append((-1.0, -1.0))  # ended: later moves are travel
+    for tool_plan, path in zip(plan.tools, pen_paths, strict=True):
+        holes = [(h.x_mm, h.y_mm) for h in tool_plan.holes]
+        # From hole to hole an X stroke, then a Y stroke (none where the axis stays).
+        expected = [holes[0]]
+        for (x0, y0), (x1, y1) in itertools.pairwise(holes):
+            expected += [(x1, y0)] if x1 != x0 else []
+            expected += [(x1, y1)] if y1 != y0 else []
+        assert path == [*expected, (-1.0, -1.0)]
 
 
 def test_plan_is_never_longer_than_file_order(shared_dir: Path) -> None:

@@ -17,7 +17,7 @@ import pytest
 from pytestqt.qtbot import QtBot
 
 from app.jobs.estimate.drill import DRILL_CYCLE_S, FIRST_DRILL_CYCLE_S, estimate_drill
-from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
+from app.jobs.formats.excellon.reader import DrillMode, build_drill_program, read_drill_file
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.registration import Registration, register, registered
 from app.jobs.run.runner import JobRunner, JobState
@@ -51,9 +51,9 @@ def runner(drill: StationHarness, tmp_path: Path) -> Iterator[JobRunner]:
     built.deleteLater()
 
 
-def sample_program(shared_dir: Path, mode: str = "drill") -> Program:
+def sample_program(shared_dir: Path, mode: DrillMode = "drill") -> Program:
     job = read_drill_file(shared_dir / "samples/pcb-driver/driver")
-    return build_drill_program(job, mode="draw" if mode == "draw" else "drill")
+    return build_drill_program(job, mode=mode)
 
 
 def expected_holes(drill: StationHarness, program: Program) -> Counter[tuple[int, int]]:
@@ -119,10 +119,40 @@ def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_
     assert runner.elapsed_s == pytest.approx(eta, rel=0.05)
 
 
-def test_draw_mode_puts_the_pen_down_at_both_arms_of_every_cross(
+def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
     drill: StationHarness, runner: JobRunner, shared_dir: Path
 ) -> None:
     program = sample_program(shared_dir, "draw")
+    assert runner.load(program) == []
+    assert runner.estimate is not None
+    eta = runner.estimate.total_s
+    auto_confirm(runner)
+    runner.start()
+    run_to_end(drill, runner)
+
+    assert runner.state is JobState.DONE
+    session = drill.drill_session
+    bits = sum(op.kind is OpKind.WAIT for op in program)
+    pen = drill.drill_emulator.pen_log
+    assert [e.down for e in pen] == [True, False] * bits  # Kresli, Zvedni per bit
+    # The preview's pen-down segments (the program's path), in the machine's microsteps ...
+    path = program.preview_path("X", "Y")
+    steps = [(session.to_microsteps(X, x), session.to_microsteps(Y, y)) for x, y in path.coords]
+    previewed = [(*steps[i - 1], *steps[i]) for i in range(1, len(steps)) if path.pen[i]]
+    # ... are the strokes the pen drew on the machine, one for one, in order.
+    drawn = [(s.x0, s.y0, s.x1, s.y1) for s in drill.drill_emulator.drawing]
+    assert len(drawn) > SAMPLE_HOLES - 2 * bits
+    assert drawn == [seg for seg in previewed if seg[:2] != seg[2:]]
+    assert drill.drill_emulator.drill_log == ()
+    assert not drill.drill_emulator.pen_down
+    print(f"draw: ETA {eta:.2f} s, emulated {runner.elapsed_s:.2f} s")
+    assert runner.elapsed_s == pytest.approx(eta, rel=0.05)
+
+
+def test_cross_mode_puts_the_pen_down_at_both_arms_of_every_cross(
+    drill: StationHarness, runner: JobRunner, shared_dir: Path
+) -> None:
+    program = sample_program(shared_dir, "cross")
     assert runner.load(program) == []
     assert runner.estimate is not None
     eta = runner.estimate.total_s
@@ -168,14 +198,29 @@ def test_the_dry_run_times_moves_axis_after_axis_at_the_step_periods() -> None:
     # 0.195 + 0.39 + 0.1 + 0.0975 + 0.1 = 0.8825 s.
     assert estimate.cumulative_s[1] - estimate.cumulative_s[0] == pytest.approx(3.3875)
     assert estimate.cumulative_s[2] - estimate.cumulative_s[1] == pytest.approx(0.8825)
-    assert estimate.cumulative_s[3] - estimate.cumulative_s[2] == pytest.approx(0.15)
+    # K is V's way down (S2-24), from the hover: 0.195 + 0.39 + 0.1 s.
+    assert estimate.cumulative_s[3] - estimate.cumulative_s[2] == pytest.approx(0.685)
     # Then the park at X 0, Y 150 mm (the profile's): X back 198, Y on 2955 - 394 microsteps.
     park = 198 * 0.0013 + (2955 - 394) * 0.0015
     assert estimate.total_s == pytest.approx(estimate.cumulative_s[3] + park)
     homing = estimate_drill(program, profile, overhead_s=0.0, home_first=True)
     # From 0: to each switch (offset + 1), off it (1) and the offset again.
-    home = (50 + 1 + 1 + 50) * 0.0013 + (40 + 1 + 1 + 40) * 0.0015
+    home = (3 + 1 + 1 + 3) * 0.0013 + (86 + 1 + 1 + 86) * 0.0015
     assert homing.total_s == pytest.approx(estimate.total_s + home)
+
+
+def test_s2_24_the_estimate_times_kresli_and_zvedni_as_the_halves_of_vrtat() -> None:
+    profile = load_profile("pcb-drill")
+    where = SourceRef("t.drl", 1)
+    pen = [Operation(OpKind.PEN_DOWN, where), Operation(OpKind.PEN_UP, where)]
+    program = Program("t", (*pen, *pen, Operation(OpKind.DRILL, where)))
+    steps = estimate_drill(program, profile, overhead_s=0.0).cumulative_s
+    times = [b - a for a, b in zip((0.0, *steps), steps, strict=False)]
+    # The first K from the top of Z: 412 microsteps at 2.5 ms, 206 pauses of 10 ms, 0.1 s.
+    # Z: 39 full steps at 2.5 ms and 0.1 s.  Then K from the hover (78 microsteps), and a
+    # V from where Z left the pen: a later stroke.
+    assert times == pytest.approx([3.19, 0.1975, 0.685, 0.1975, 0.8825])
+    assert times[2] + times[3] == pytest.approx(times[4])
 
 
 def state_of(runner: JobRunner) -> JobState:

@@ -8,13 +8,22 @@ pages on the pcb-drill profile.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QLabel, QListWidget, QPushButton, QWidget
 from pytestqt.qtbot import QtBot
 
-from app.profiles import load_profile
+from app.jobs.estimate.drill import estimate_drill
+from app.jobs.program import Operation, OpKind, Program, SourceRef
+from app.machines.registry import dialect_for
+from app.profiles import MACHINES_DIR as PROFILES
+from app.profiles import ProfileError, load_profile
+from protocol.clock import ManualClock
+from protocol.drill.codec import Command
+from protocol.drill.timing import DrillTiming
+from protocol.emulator.drill_firmware import DrillFirmware
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 from widgets.panels.drill import LONG_MOVE_S, DrillPanel
@@ -252,3 +261,73 @@ def test_a_target_beyond_the_travel_is_shown_invalid_and_not_sent(
     assert panel.send_axis(0) is False
     drill.run(0.3)
     assert drill.written[mark:] == []
+
+
+# --- the timing constants, edited in the station (FIDELITY S2-06) ---------------------------
+
+
+def test_s2_06_the_drill_page_edits_the_timing_constants_and_the_station_keeps_them(
+    qtbot: QtBot, drill: StationHarness, tmp_path: Path
+) -> None:
+    drill.connect()
+    drill.run(0.02)
+    settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    window = MainWindow(drill.station, settings)
+    qtbot.addWidget(window)
+    box = window.drill_panel.timing_box
+    assert not box.isVisibleTo(window.drill_panel)  # folded away until asked for
+    click(qtbot, window.drill_panel.timing_toggle)
+    assert box.isVisibleTo(window.drill_panel)
+    assert box.fields["z_period_s"].text().startswith("2.50")  # ms, the reference 2.5
+    where = SourceRef("t.drl", 1)
+    program = Program("t", (Operation(OpKind.DRILL, where),))
+    before = estimate_drill(program, drill.station.profile, overhead_s=0.0).total_s
+    # Out of bounds: framed, named in the note, and Apply refuses.
+    box.fields["bottom_wait_s"].setText("9000")
+    assert not box.apply_button.isEnabled() and box.timing() is None
+    box.fields["bottom_wait_s"].setText("300")  # the teacher's 300 ms at the bottom
+    box.fields["z_period_s"].setText("5")
+    click(qtbot, box.apply_button)
+    timing = drill.station.profile.drill_timing
+    assert timing.bottom_wait_s == pytest.approx(0.3) and timing.z_period_s == pytest.approx(0.005)
+    # The estimate counts with them: 412 microsteps down at 5 ms instead of 2.5, 0.2 s
+    # more at the bottom, and the 39 full steps back at 5 ms.
+    after = estimate_drill(program, drill.station.profile, overhead_s=0.0).total_s
+    assert after - before == pytest.approx(412 * 0.0025 + 0.2 + 39 * 0.0025)
+    # The emulated drill runs them; the session's timeout waits for them.
+    emulator = drill.drill_emulator
+    assert emulator.config.dwell == pytest.approx(0.3)
+    assert emulator.config.step_periods[2] == pytest.approx(0.005)
+    assert drill.drill_session.expected_s(Command("V")) == pytest.approx(timing.first_cycle_s)
+    # Kept across launches: a new window on the reference profile shows and applies them.
+    window.close()
+    fresh = StationHarness(load_profile("pcb-drill"))
+    again = MainWindow(
+        fresh.station, QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    )
+    qtbot.addWidget(again)
+    assert fresh.station.profile.drill_timing == timing
+    assert again.drill_panel.timing_box.fields["bottom_wait_s"].value() == pytest.approx(300)
+    # Profile values: the profile's constants again, and nothing kept.
+    click(qtbot, again.drill_panel.timing_box.profile_button)
+    assert fresh.station.profile.drill_timing == DrillTiming()
+    stored = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    assert not any(key.startswith("drill_timing/") for key in stored.allKeys())
+    fresh.close()
+
+
+def test_s2_06_a_profiles_timing_table_sets_the_constants_within_their_bounds(
+    tmp_path: Path,
+) -> None:
+    text = (PROFILES / "pcb-drill.toml").read_text(encoding="utf-8")
+    path = tmp_path / "slow-drill.toml"
+    path.write_text(text + "\n[timing]\nz_period_s = 0.005\nreturn_full_steps = 50\n")
+    profile = load_profile(path)
+    assert profile.drill_timing == DrillTiming(z_period_s=0.005, return_full_steps=50)
+    emulator = dialect_for(profile).emulator(ManualClock(), profile)
+    assert isinstance(emulator, DrillFirmware)
+    assert emulator.config.step_periods[2] == 0.005 and emulator.config.return_full_steps == 50
+    for bad in ("z_period_s = 1.0", "return_full_steps = 2.5", "nozzle_s = 1"):
+        path.write_text(text + f"\n[timing]\n{bad}\n")
+        with pytest.raises(ProfileError, match=r"\[timing\]"):
+            load_profile(path)

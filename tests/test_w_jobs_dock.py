@@ -298,7 +298,7 @@ def test_clock_text() -> None:
     assert clock_text(None) == "--:--" and clock_text(float("nan")) == "--:--"
 
 
-def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
+def test_draw_mode_reloads_a_drill_file_as_a_pen_drawing(
     qtbot: QtBot, harness: StationHarness, tmp_path: Path, shared_dir: Path
 ) -> None:
     runner = JobRunner(harness.station, tmp_path / "checkpoints")
@@ -313,7 +313,7 @@ def test_draw_mode_reloads_a_drill_file_as_pen_crosses(
     qtbot.waitUntil(dock.open_button.isEnabled)  # the file re-read on the worker
     options = dock.options
     assert not options.draw and options.excellon_step_inch == 1e-4
-    # Where it applies, the loader builds pen crosses, which a machine with a pen runs.
+    # Where it applies, the loader builds a pen drawing, which a machine with a pen runs.
     program = load_job(drill_file, ["X", "Y"], dataclasses.replace(options, draw=True))
     kinds = {op.kind for op in program}
     assert OpKind.PEN_DOWN in kinds and OpKind.DRILL not in kinds

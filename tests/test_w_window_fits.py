@@ -174,10 +174,16 @@ def test_the_dynamics_page_reflows_instead_of_scrolling_sideways(
     [
         ("xy-stage", []),
         ("usb3", []),
-        ("pcb-drill", ["job_draw", "step", "job_smallest_first"]),
+        ("pcb-drill", ["job_draw", "job_draw_crosses", "step", "job_smallest_first"]),
         ("string-art", ["step", "job_smallest_first", "job_skip_unsupported"]),
-        ("grbl-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
-        ("corexy-plotter", ["job_draw", "step", "job_translate_pen", "job_skip_unsupported"]),
+        (
+            "grbl-plotter",
+            ["job_draw", "job_draw_crosses", "step", "job_translate_pen", "job_skip_unsupported"],
+        ),
+        (
+            "corexy-plotter",
+            ["job_draw", "job_draw_crosses", "step", "job_translate_pen", "job_skip_unsupported"],
+        ),
     ],
 )
 def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
@@ -195,6 +201,7 @@ def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
         dock = window.jobs_dock
         options = {
             "job_draw": dock.draw_check,
+            "job_draw_crosses": dock.crosses_check,
             "step": dock.step_combo,
             "job_smallest_first": dock.smallest_check,
             "job_translate_pen": dock.translate_pen_check,

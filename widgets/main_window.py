@@ -68,6 +68,7 @@ from app.settings import GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
 from app.version import station_version
+from protocol.drill.timing import DrillTiming
 from widgets.developer.pane import DeveloperPane
 from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
@@ -228,6 +229,8 @@ class MainWindow(QMainWindow):
         if station.profile.dialect == "drill":
             # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
             self.drill_panel = DrillPanel(station)
+            self._restore_drill_timing()
+            self.drill_panel.timing_box.applied.connect(self._remember_drill_timing)
             self._add_page(
                 lambda: self.tr("D&rill"),
                 self.drill_panel,
@@ -859,6 +862,20 @@ class MainWindow(QMainWindow):
             self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
+
+    def _restore_drill_timing(self) -> None:
+        """The drill's timing constants the operator set last time (FIDELITY S2-06)."""
+        base = self.station.profile.drill_timing
+        timing = self._settings.drill_timing(base) if self._remembers else base
+        if timing != base:
+            self.station.set_drill_timing(timing)
+            self.drill_panel.timing_box.show_timing(timing)
+
+    def _remember_drill_timing(self, timing: DrillTiming | None) -> None:
+        if not self._remembers:
+            return
+        self._settings.set_drill_timing(timing)
+        self._settings.sync()
 
     def _warn_about_settings(self) -> None:
         """Settings that could not be used: in the status bar and a box, once per start."""

@@ -57,7 +57,12 @@ def build_parser() -> argparse.ArgumentParser:
         choices=[t.key for t in JOB_TYPES],
         help="read the jobs as this type (for files whose name and content do not tell)",
     )
-    parser.add_argument("--draw", action="store_true", help="drill files: draw each hole")
+    parser.add_argument(
+        "--draw", action="store_true", help="drill files: draw along the holes with the pen"
+    )
+    parser.add_argument(
+        "--crosses", action="store_true", help="drill files, with --draw: a pen cross per hole"
+    )
     parser.add_argument(
         "--skip-unsupported",
         action="store_true",
@@ -167,6 +172,7 @@ def main(argv: Sequence[str], out: TextIO | None = None, err: TextIO | None = No
         return USAGE
     options = JobOptions(
         draw=args.draw,
+        draw_crosses=args.crosses,
         excellon_step_inch=args.excellon_step,
         skip_unsupported=args.skip_unsupported,
         gcode=profile.gcode,

@@ -25,11 +25,11 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
 
 from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.excellon.reader import (
+    DrillMode,
     build_drill_program,
     read_drill_file,
     sniff_dri,
@@ -55,7 +55,8 @@ __all__ = ["sniff_point_list"]
 class JobOptions:
     """The operator's choices that change how a file becomes a program."""
 
-    draw: bool = False  # drill files: draw each hole with the pen instead of drilling it
+    draw: bool = False  # drill files: drawn with the pen (Kresli … Zvedni per bit), not drilled
+    draw_crosses: bool = False  # drill files, drawn: a pen cross at each hole instead
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
     #: Drill files: prompt the bits smallest first instead of in the file's tool order.
     smallest_first: bool = False
@@ -237,7 +238,7 @@ def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
         )
     job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
     axes = (axis_names[0], axis_names[1])
-    mode: Literal["drill", "draw"] = "draw" if options.draw else "drill"
+    mode: DrillMode = ("cross" if options.draw_crosses else "draw") if options.draw else "drill"
     return build_drill_program(job, mode=mode, axes=axes, smallest_first=options.smallest_first)
 
 

@@ -105,10 +105,14 @@ def _usb3_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
 
 
 def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
-    """The plotter with the profile's X/Y travel in microsteps (the host's own conversion)."""
+    """The plotter with the profile's X/Y travel in microsteps (the host's own conversion).
+
+    And with the profile's timing constants ([timing], FIDELITY S2-06).
+    """
     x, y = profile.axes[0], profile.axes[1]
     travel = tuple(round(a.travel * a.steps_per_rev * a.microsteps / a.lead) for a in (x, y))
-    return DrillFirmware(clock, DrillConfig(travel=(travel[0], travel[1])))
+    config = DrillConfig.with_timing(profile.drill_timing, travel=(travel[0], travel[1]))
+    return DrillFirmware(clock, config)
 
 
 def _gcode_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:

@@ -43,8 +43,9 @@ the machine really did across station restarts::
     12.345000 0 MOVE_ABS 20000 1
 
 The pcb-drill firmware logs its events instead: every line received (or
-refused), every procedure done, every hole drilled and every pen movement,
-positions in microsteps, so a job's holes can be checked against the file::
+refused), every procedure done, every hole drilled, every pen movement and
+every stroke the pen drew (``drawn X… Y… to X… Y…``), positions in
+microsteps, so a job's holes can be checked against the file::
 
     4.000000 received X1234
     5.604200 done X1234
@@ -82,6 +83,7 @@ from protocol.clock import Clock, MonotonicClock
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.drill_firmware import (
     CommandDone,
+    DrawnSegment,
     DrilledHole,
     DrillFirmware,
     ExecutedCommand,
@@ -491,7 +493,10 @@ class CommandLogFile:
 
 
 def _log_line(entry: object) -> str:
-    if isinstance(entry, ExecutedCommand | CommandDone | DrilledHole | PenEvent | HomedAtPowerOn):
+    if isinstance(
+        entry,
+        ExecutedCommand | CommandDone | DrilledHole | PenEvent | DrawnSegment | HomedAtPowerOn,
+    ):
         return event_log_line(entry) + "\n"
     if isinstance(entry, dict):  # the G-code firmwares' events
         return gcode_log_line(entry) + "\n"

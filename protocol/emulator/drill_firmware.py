@@ -47,7 +47,15 @@ Decisions the contract leaves open, made here:
   down from the top, so Z then hovers above the board and later strokes are
   short.  The hole is logged at the bottom of the stroke, at the X/Y position
   it was drilled at.
-- ``K``/``Z`` (pen down/up) take a fixed time, the pen's solenoid settling.
+- ``K``/``Z`` (the original's ``Kresli``/``Zvedni``, FIDELITY S2-12/S2-24)
+  are the two halves of ``V``: ``K`` brings the pen down as ``V`` brings the
+  drill (to the sensor and the overtravel, with the pauses and the wait at the
+  bottom), ``Z`` takes it back up as ``V`` does (the 39 full steps and the
+  wait after).  While the pen is down every ``X``/``Y`` move draws: each is
+  logged as a :class:`DrawnSegment` from where the pen was to where it
+  stopped, so with one axis moving at a time a diagonal between two
+  coordinates is drawn as two strokes, X first, as the original's
+  ``Popojed X``/``Popojed Y`` drew it.
 - ``P`` runs X to 0, then Y to the back (its travel), then switches the motors
   off.  Any later motion switches them on again; the counters are kept (an
   idle stepper does not lose its position unless pushed).
@@ -63,6 +71,7 @@ a cycle boundary says ``D`` at the end of the cycle in which ``d`` elapses.
 
 from __future__ import annotations
 
+import dataclasses
 from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -78,7 +87,7 @@ from protocol.drill.codec import (
     encode_reply,
     error_reply,
 )
-from protocol.drill.timing import DRILL_OVERTRAVEL
+from protocol.drill.timing import DRILL_OVERTRAVEL, DrillTiming
 from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.mechanism import Axis, AxisLimits
 
@@ -92,6 +101,10 @@ _EPS = 1e-9
 _SLOP = 1e-10
 #: Entries kept in each log, bounded for an emulator left running for days.
 LOG_LENGTH = 10_000
+#: The DrillConfig fields a DrillTiming sets.
+_TIMED = frozenset(
+    {"step_periods", "down_pause", "down_pause_every", "dwell", "after_wait", "return_full_steps"}
+)
 #: An acceleration high enough never to matter: speeds are jumped to anyway.
 _NO_RAMP = 1e12
 
@@ -129,8 +142,6 @@ class DrillConfig:
     #: Seconds the drill stays at the bottom of the stroke, and waits after the return.
     dwell: float = timing.BOTTOM_WAIT_S
     after_wait: float = timing.AFTER_WAIT_S
-    #: Seconds the pen takes to go down or up.
-    pen_time: float = timing.PEN_TIME_S
     control_cycle: float = 0.005
     #: Run the ``N`` procedure at power-on, before any command, as the original does.
     home_at_power_on: bool = True
@@ -151,10 +162,22 @@ class DrillConfig:
             raise ValueError("the sensor depth and the Z full step must be positive")
         if self.return_full_steps <= 0 or self.down_pause_every <= 0:
             raise ValueError("the return stroke and the pause interval must be positive")
-        if min(self.dwell, self.after_wait, self.down_pause, self.pen_time) < 0 or not (
-            self.control_cycle > 0
-        ):
+        if min(self.dwell, self.after_wait, self.down_pause) < 0 or not (self.control_cycle > 0):
             raise ValueError("times must be >= 0 and the control cycle positive")
+
+    @classmethod
+    def with_timing(cls, drill_timing: DrillTiming, **others: object) -> DrillConfig:
+        """A machine with ``drill_timing``'s constants (a profile's ``[timing]``, S2-06)."""
+        t = drill_timing
+        return cls(
+            step_periods=(t.x_period_s, t.y_period_s, t.z_period_s),
+            down_pause=t.down_pause_s,
+            down_pause_every=t.down_pause_every,
+            dwell=t.bottom_wait_s,
+            after_wait=t.after_wait_s,
+            return_full_steps=t.return_full_steps,
+            **others,  # type: ignore[arg-type]
+        )
 
     @property
     def drill_depth(self) -> int:
@@ -203,13 +226,24 @@ class PenEvent:
 
 
 @dataclass(frozen=True, slots=True)
+class DrawnSegment:
+    """The pen, down, moved from (x0, y0) to (x1, y1) microsteps: a stroke on the paper."""
+
+    time: float
+    x0: int
+    y0: int
+    x1: int
+    y1: int
+
+
+@dataclass(frozen=True, slots=True)
 class HomedAtPowerOn:
     """The power-on homing finished (no command asked for it, so no reply), at ``time``."""
 
     time: float
 
 
-DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent | HomedAtPowerOn
+DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent | DrawnSegment | HomedAtPowerOn
 """Everything :attr:`DrillFirmware.event_log` records, in the order it happened."""
 
 
@@ -226,6 +260,8 @@ def event_log_line(event: DrillEvent) -> str:
             return f"{time:.6f} hole X{x} Y{y}"
         case PenEvent(time, down, x, y):
             return f"{time:.6f} pen {'down' if down else 'up'} X{x} Y{y}"
+        case DrawnSegment(time, x0, y0, x1, y1):
+            return f"{time:.6f} drawn X{x0} Y{y0} to X{x1} Y{y1}"
         case HomedAtPowerOn(time):
             return f"{time:.6f} homed at power-on"
     raise TypeError(f"not a drill event: {event!r}")
@@ -268,6 +304,7 @@ class DrillFirmware(ControlCycles):
         self._command_log: deque[ExecutedCommand] = deque(maxlen=LOG_LENGTH)
         self._drill_log: deque[DrilledHole] = deque(maxlen=LOG_LENGTH)
         self._pen_log: deque[PenEvent] = deque(maxlen=LOG_LENGTH)
+        self._drawing_log: deque[DrawnSegment] = deque(maxlen=LOG_LENGTH)
         self._event_log: deque[DrillEvent] = deque(maxlen=LOG_LENGTH)
         if cfg.home_at_power_on:
             # Started now, run from the first control cycle on, like any procedure.
@@ -285,6 +322,20 @@ class DrillFirmware(ControlCycles):
         )
         axis.set_position(0.0)
         return axis
+
+    def set_timing(self, drill_timing: DrillTiming) -> None:
+        """Run ``drill_timing``'s constants from the next procedure step on (S2-06)."""
+        with self._lock:
+            t = drill_timing
+            self.config = dataclasses.replace(
+                DrillConfig.with_timing(t),
+                **{
+                    f.name: getattr(self.config, f.name)
+                    for f in dataclasses.fields(DrillConfig)
+                    if f.name not in _TIMED
+                },
+            )
+            self._speeds = tuple(1.0 / p for p in self.config.step_periods)
 
     # -- EmulatedDevice --------------------------------------------------------
 
@@ -357,6 +408,12 @@ class DrillFirmware(ControlCycles):
         """Pen movements, oldest first."""
         with self._lock:
             return tuple(self._pen_log)
+
+    @property
+    def drawing(self) -> tuple[DrawnSegment, ...]:
+        """What the pen drew, stroke by stroke, oldest first."""
+        with self._lock:
+            return tuple(self._drawing_log)
 
     @property
     def event_log(self) -> tuple[DrillEvent, ...]:
@@ -452,6 +509,8 @@ class DrillFirmware(ControlCycles):
                 self._drill_log.append(event)
             case PenEvent():
                 self._pen_log.append(event)
+            case DrawnSegment():
+                self._drawing_log.append(event)
 
     # -- procedures ----------------------------------------------------------------
 
@@ -482,8 +541,12 @@ class DrillFirmware(ControlCycles):
         self._motors_on = True
         axis = self._axes[index]
         axis.start_speed = self._speeds[index]
+        x0, y0, _ = self.positions
         axis.move_to(float(min(target, self.config.travel[index])), self._speeds[index])
         yield self._until_idle(index)
+        x1, y1, _ = self.positions
+        if self._pen_down and (x1, y1) != (x0, y0):
+            self._log(DrawnSegment(self._now(), x0, y0, x1, y1))
 
     def _home(self) -> _Procedure:
         self._motors_on = True
@@ -498,6 +561,14 @@ class DrillFirmware(ControlCycles):
         self._homed = True
 
     def _drill(self) -> _Procedure:
+        yield from self._z_down(hole=True)
+        yield from self._z_up()
+
+    def _z_down(self, *, hole: bool) -> _Procedure:
+        """``Vrtat``'s first half (and all of ``Kresli``): down to the bottom, and the wait.
+
+        ``hole``: a drill is in, so the bottom of the stroke makes a hole (logged there).
+        """
         self._motors_on = True
         cfg = self.config
         z = self._axes[2]
@@ -511,12 +582,18 @@ class DrillFirmware(ControlCycles):
             if z.microsteps == bottom:
                 break
             yield cfg.down_pause
-        x, y, _ = self.positions
-        self._log(DrilledHole(self._now(), x, y))
+        if hole:
+            x, y, _ = self.positions
+            self._log(DrilledHole(self._now(), x, y))
         if here < bottom and bottom - here == cfg.down_pause_every:
             yield cfg.down_pause  # the pause after the last pair of microsteps
         yield cfg.dwell
-        up = down * cfg.z_microsteps_per_step
+
+    def _z_up(self) -> _Procedure:
+        """``Vrtat``'s second half (and all of ``Zvedni``): the return, and the wait after."""
+        cfg = self.config
+        z = self._axes[2]
+        up = cfg.z_microsteps_per_step / cfg.step_periods[2]
         z.start_speed = up
         climb = cfg.return_full_steps * cfg.z_microsteps_per_step
         z.move_to(float(max(z.microsteps - climb, 0)), up)
@@ -524,7 +601,10 @@ class DrillFirmware(ControlCycles):
         yield cfg.after_wait
 
     def _pen(self, *, down: bool) -> _Procedure:
-        yield self.config.pen_time
+        if down:
+            yield from self._z_down(hole=False)
+        else:
+            yield from self._z_up()
         self._pen_down = down
         x, y, _ = self.positions
         self._log(PenEvent(self._now(), down, x, y))

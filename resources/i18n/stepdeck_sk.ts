@@ -352,6 +352,14 @@
         <translation>Príkazy</translation>
     </message>
     <message>
+        <source>Timing…</source>
+        <translation>Časovanie…</translation>
+    </message>
+    <message>
+        <source>Show the drill&apos;s timing constants, to change them</source>
+        <translation>Ukázať časovacie konštanty vŕtačky a zmeniť ich</translation>
+    </message>
+    <message>
         <source>Move to (microsteps from zero)</source>
         <translation>Presunúť na (mikrokroky od nuly)</translation>
     </message>
@@ -430,6 +438,70 @@
     <message>
         <source>Link lost: {0}</source>
         <translation>Spojenie stratené: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>DrillTiming</name>
+    <message>
+        <source>X step period</source>
+        <extracomment>Each constant: its name, its caption, its unit, the factor from the constant&apos;s unit to the field&apos;s (seconds are shown in ms), and the field&apos;s decimals.</extracomment>
+        <translation>Perióda kroku X</translation>
+    </message>
+    <message>
+        <source>Y step period</source>
+        <translation>Perióda kroku Y</translation>
+    </message>
+    <message>
+        <source>Z step period</source>
+        <translation>Perióda kroku Z</translation>
+    </message>
+    <message>
+        <source>Pause going down</source>
+        <translation>Prestávka pri spúšťaní</translation>
+    </message>
+    <message>
+        <source>… after every</source>
+        <translation>… po každých</translation>
+    </message>
+    <message>
+        <source>Wait at the bottom</source>
+        <translation>Čakanie dole</translation>
+    </message>
+    <message>
+        <source>Wait after the return</source>
+        <translation>Čakanie po návrate</translation>
+    </message>
+    <message>
+        <source>Return stroke</source>
+        <translation>Spätný zdvih</translation>
+    </message>
+    <message>
+        <source>full steps</source>
+        <translation>celých krokov</translation>
+    </message>
+</context>
+<context>
+    <name>DrillTimingBox</name>
+    <message>
+        <source>Timing constants (teaching)</source>
+        <extracomment>The operator applied constants (a DrillTiming), or went back to the profile&apos;s (None).</extracomment>
+        <translation>Časovacie konštanty (výučba)</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Count with these constants: the estimate, the timeouts, the emulator</source>
+        <translation>Počítať s týmito konštantami: odhad, časové limity, emulátor</translation>
+    </message>
+    <message>
+        <source>Profile values</source>
+        <translation>Hodnoty profilu</translation>
+    </message>
+    <message>
+        <source>Back to the machine profile&apos;s constants</source>
+        <translation>Späť na konštanty profilu stroja</translation>
     </message>
 </context>
 <context>
@@ -2100,8 +2172,16 @@ Načítať ako:</translation>
         <translation>Otvory kresliť perom</translation>
     </message>
     <message>
-        <source>Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling</source>
-        <translation>Vŕtacie súbory: namiesto vŕtania nakresliť perom krížik veľkosti otvoru (K / Z)</translation>
+        <source>Drill files: instead of drilling, the pen goes down (K) at each bit&apos;s first hole, draws along the following holes, X then Y, and comes up (Z) after the last, as the original tool drew</source>
+        <translation>Vŕtacie súbory: namiesto vŕtania zíde pero (K) na prvý otvor každého vrtáka, kreslí pozdĺž ďalších otvorov, najprv X, potom Y, a za posledným sa zdvihne (Z), ako kreslil pôvodný program</translation>
+    </message>
+    <message>
+        <source>Crosses at the holes</source>
+        <translation>Krížiky na otvoroch</translation>
+    </message>
+    <message>
+        <source>Drawn drill files: a pen cross the size of each hole instead of one line along the holes</source>
+        <translation>Kreslené vŕtacie súbory: perom krížik veľkosti každého otvoru namiesto jednej čiary pozdĺž otvorov</translation>
     </message>
     <message>
         <source>Smallest bit first</source>
@@ -3047,7 +3127,7 @@ sa nevykresľuje</translation>
     <name>Settings</name>
     <message>
         <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
-        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
         <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
     </message>
     <message>
@@ -3162,7 +3242,7 @@ sa nevykresľuje</translation>
     <name>Station</name>
     <message>
         <source>Stopping every axis before closing the link…</source>
-        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). The drill&apos;s timing constants changed (:meth:`set_drill_timing`): estimates are stale. Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
         <translation>Pred ukončením spojenia zastavujem všetky osi…</translation>
     </message>
     <message>

@@ -256,9 +256,23 @@ class JobsDock(QDockWidget):
         t.set(
             self.draw_check.setToolTip,
             lambda: self.tr(
-                "Drill files: draw a pen cross the size of each hole (K / Z) instead of drilling"
+                "Drill files: instead of drilling, the pen goes down (K) at each bit's first"
+                " hole, draws along the following holes, X then Y, and comes up (Z) after the"
+                " last, as the original tool drew"
             ),
         )
+        self.crosses_check = QCheckBox()
+        t.set(self.crosses_check.setText, lambda: self.tr("Crosses at the holes"))
+        self.crosses_check.setObjectName("job_draw_crosses")
+        t.set(
+            self.crosses_check.setToolTip,
+            lambda: self.tr(
+                "Drawn drill files: a pen cross the size of each hole instead of one line"
+                " along the holes"
+            ),
+        )
+        self.crosses_check.setEnabled(False)
+        self.draw_check.toggled.connect(self.crosses_check.setEnabled)
         self.smallest_check = QCheckBox()
         t.set(self.smallest_check.setText, lambda: self.tr("Smallest bit first"))
         self.smallest_check.setObjectName("job_smallest_first")
@@ -288,6 +302,9 @@ class JobsDock(QDockWidget):
         step.addWidget(self.step_combo)
         step.addStretch(1)
         self.draw_check.toggled.connect(self._options_changed)
+        # The drill's timing constants changed (S2-06): the open file is estimated anew.
+        self.station.drillTimingChanged.connect(self._options_changed)
+        self.crosses_check.toggled.connect(self._options_changed)
         self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
         # G-code files: other flavours' pen commands, and lines the machine cannot run.
@@ -325,6 +342,7 @@ class JobsDock(QDockWidget):
         step.setContentsMargins(0, 0, 0, 0)
         offered: list[tuple[QWidget, bool]] = [
             (self.draw_check, pen),
+            (self.crosses_check, pen),
             (step_widget, pen or drill),
             (self.smallest_check, drill),
             (self.translate_pen_check, gcode and pen),
@@ -346,6 +364,7 @@ class JobsDock(QDockWidget):
         """The operator's reading options, to keep across launches (the main window stores)."""
         return {
             "draw": self.draw_check.isChecked(),
+            "draw_crosses": self.crosses_check.isChecked(),
             "smallest_first": self.smallest_check.isChecked(),
             "excellon_step_inch": float(self.step_combo.currentData()),
             "translate_pen": self.translate_pen_check.isChecked(),
@@ -356,6 +375,7 @@ class JobsDock(QDockWidget):
         """Set the reading options from ``values`` (unknown or malformed entries are ignored)."""
         checks = {
             "draw": self.draw_check,
+            "draw_crosses": self.crosses_check,
             "smallest_first": self.smallest_check,
             "translate_pen": self.translate_pen_check,
             "skip_unsupported": self.skip_check,
@@ -380,6 +400,7 @@ class JobsDock(QDockWidget):
         return JobOptions(
             # A choice kept from another machine's session never applies where it is hidden.
             draw=self.draw_check.isChecked() and profile.capabilities.pen,
+            draw_crosses=self.crosses_check.isChecked(),
             smallest_first=self.smallest_check.isChecked(),
             excellon_step_inch=float(self.step_combo.currentData()),
             translate_pen=self.translate_pen_check.isChecked(),

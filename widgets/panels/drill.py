@@ -32,6 +32,7 @@ from app.station import Station
 from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
+from widgets.panels.drill_timing import DrillTimingBox
 from widgets.retranslate import Texts, bold
 from widgets.style import compact, monospace_font
 
@@ -97,6 +98,19 @@ class DrillPanel(QWidget):
             # Each as wide as its caption: at the style's width the row outgrew a 1280 px screen.
             row.addWidget(compact(button))
             self.command_buttons[letter] = button
+
+        # The timing constants (FIDELITY S2-06), folded away until asked for.
+        self.timing_box = DrillTimingBox(station, station.profile.drill_timing)
+        self.timing_box.hide()
+        self.timing_toggle = t.button(
+            lambda: self.tr("Timing…"),
+            lambda: self.tr("Show the drill's timing constants, to change them"),
+        )
+        self.timing_toggle.setObjectName("timing_toggle")
+        self.timing_toggle.setCheckable(True)
+        self.timing_toggle.toggled.connect(self.timing_box.setVisible)
+        row.addStretch(1)
+        row.addWidget(compact(self.timing_toggle))
 
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
         grid = QGridLayout(axes)
@@ -195,6 +209,7 @@ class DrillPanel(QWidget):
         layout = QVBoxLayout(self)
         layout.addWidget(commands)
         layout.addWidget(axes)
+        layout.addWidget(self.timing_box)
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 

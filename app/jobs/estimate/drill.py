@@ -7,9 +7,12 @@ round trip (sent after the previous ``D``, started at the device's next
 control cycle).  A drill cycle is long the first time (the drill comes down
 from the top of Z) and short afterwards (it hovers where the original's
 39-full-step return leaves it); the station cannot ask where Z is, so the
-first ``V`` of every job is counted long: a second job on the same power-on
-is estimated about 2.5 s long.  The homing before the job (when the station
-has not seen one on this link) and the park after it are counted too.
+first way down of every job (a ``V`` or a ``K``) is counted long: a second
+job on the same power-on is estimated about 2.5 s long.  ``K`` and ``Z``
+are the halves of ``V`` (FIDELITY S2-24): ``K`` its way down, ``Z`` its way
+back.  Every constant is the profile's (``[timing]``, S2-06).  The homing
+before the job (when the station has not seen one on this link) and the park
+after it are counted too.
 """
 
 from __future__ import annotations
@@ -20,15 +23,9 @@ from decimal import ROUND_HALF_UP, Decimal
 from app.jobs.estimate.model import Estimate
 from app.jobs.program import OpKind, Program
 from app.profiles import MachineProfile
-from protocol.drill.timing import (
-    DRILL_CYCLE_S,
-    FIRST_DRILL_CYCLE_S,
-    PEN_TIME_S,
-    STEP_PERIODS_S,
-    home_s,
-)
+from protocol.drill.timing import DRILL_CYCLE_S, FIRST_DRILL_CYCLE_S
 
-__all__ = ["DRILL_CYCLE_S", "FIRST_DRILL_CYCLE_S", "PEN_TIME_S", "estimate_drill"]
+__all__ = ["DRILL_CYCLE_S", "FIRST_DRILL_CYCLE_S", "estimate_drill"]
 
 #: Per drill command: its ``D`` leaves at the end of the control cycle in which the procedure
 #: ends, half a 5 ms cycle late on average; the host's next command starts at the cycle after.
@@ -61,11 +58,13 @@ def estimate_drill(
         axis.name: Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
         for axis in profile.axes
     }
+    timing = profile.drill_timing
+    periods = timing.step_periods
     where = {name: _microsteps((start or {}).get(name, 0.0), k) for name, k in per_mm.items()}
     elapsed = 0.0
     if home_first and OpKind.MOVE in program.kinds():
         # N: X, then Y, to the switch and on to the zero (the station's first send).
-        elapsed += sum(home_s(name, steps) for name, steps in where.items()) + overhead_s
+        elapsed += sum(timing.home_s(name, steps) for name, steps in where.items()) + overhead_s
         where = dict.fromkeys(where, 0)
 
     def go(target_mm: Mapping[str, float]) -> float:
@@ -74,20 +73,25 @@ def estimate_drill(
             if name not in per_mm:
                 continue
             target = _microsteps(mm, per_mm[name])
-            took += abs(target - where[name]) * STEP_PERIODS_S.get(name, 0.0) + overhead_s
+            took += abs(target - where[name]) * periods.get(name, 0.0) + overhead_s
             where[name] = target
         return took
 
     cumulative: list[float] = []
-    strokes = 0
+    # Microsteps Z has to go down to the bottom of the stroke: from the top at first.
+    above = timing.first_down_microsteps
     for op in program:
         if op.kind is OpKind.MOVE:
             elapsed += go(op.target)
         elif op.kind is OpKind.DRILL:
-            elapsed += (FIRST_DRILL_CYCLE_S if strokes == 0 else DRILL_CYCLE_S) + overhead_s
-            strokes += 1
-        elif op.kind in (OpKind.PEN_DOWN, OpKind.PEN_UP):
-            elapsed += PEN_TIME_S + overhead_s
+            elapsed += timing.stroke_s(above) + overhead_s
+            above = timing.return_microsteps
+        elif op.kind is OpKind.PEN_DOWN:
+            elapsed += timing.down_s(above) + overhead_s
+            above = 0
+        elif op.kind is OpKind.PEN_UP:
+            elapsed += timing.up_s() + overhead_s
+            above = min(above + timing.return_microsteps, timing.first_down_microsteps)
         cumulative.append(elapsed)
     if profile.park and len(program):
         # The park after the last operation (and P, which moves nothing more, when it

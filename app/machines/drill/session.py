@@ -50,7 +50,6 @@ from protocol.drill.codec import (
     encode_command,
     encode_reply,
 )
-from protocol.drill.timing import FIRST_DRILL_CYCLE_S, PEN_TIME_S, STEP_PERIODS_S
 
 #: Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle.
 RECEIPT_TIMEOUT_S = 1.0
@@ -319,22 +318,27 @@ class DrillSession(MachineSession):
             self._watch_silence(now - since, 0.0, deadline - since, f"{what}: {waited}")
 
     def expected_s(self, command: Command) -> float:
-        """How long ``command``'s procedure should take on the reference machine."""
+        """How long ``command``'s procedure should take, by the profile's timing constants."""
+        timing = self.model.profile.drill_timing
+        periods = timing.step_periods
         letter = command.letter
         if letter in POSITION_LETTERS and command.value is not None:
             axes = self._axes_named(letter)
             if not axes:
                 return 0.0
             here = self.to_microsteps(axes[0], self.model.axes[axes[0]].position)
-            return abs(command.value - here) * STEP_PERIODS_S.get(letter, 0.0)
+            return abs(command.value - here) * periods.get(letter, 0.0)
         if letter == "V":
-            return FIRST_DRILL_CYCLE_S  # the longest stroke: the drill may start at the top
-        if letter in "KZ":
-            return PEN_TIME_S
+            return timing.first_cycle_s  # the longest stroke: the drill may start at the top
+        if letter == "K":
+            # Vrtat's way down (S2-24), the longest: the pen may start at the top.
+            return timing.down_s(timing.first_down_microsteps)
+        if letter == "Z":
+            return timing.up_s()
         # Home and park run the axes across their whole travel.
         return sum(
             self.to_microsteps(axis, self.model.profile.axes[axis].travel)
-            * STEP_PERIODS_S.get(self.model.profile.axes[axis].name, 0.0)
+            * periods.get(self.model.profile.axes[axis].name, 0.0)
             for axis in self._axes_named(POSITION_LETTERS)
         )
 

@@ -704,7 +704,13 @@ def plan_drilling(
     return DrillPlan(job, tuple(plans), bits.flags)
 
 
-def bit_prompt(plan: ToolPlan, mode: Literal["drill", "draw"] = "drill") -> str:
+# How a drill file becomes a program: drilled; drawn as the original drew (the pen down
+# at the first hole of each bit and along the following ones, FIDELITY S2-12); or a pen
+# cross at each hole (the station's own, an explicit option).
+DrillMode = Literal["drill", "draw", "cross"]
+
+
+def bit_prompt(plan: ToolPlan, mode: DrillMode = "drill") -> str:
     """What the operator reads at a bit change: "insert T02, 0.80 mm, 34 holes".
 
     Translated when the program is built: one text per mode and English number
@@ -731,19 +737,44 @@ def bit_prompt(plan: ToolPlan, mode: Literal["drill", "draw"] = "drill") -> str:
     return text.format(plan.tool.name, plan.tool.diameter_mm, count, also)
 
 
+def _drawn_along(holes: Sequence[Hole], ax: str, ay: str) -> list[Operation]:
+    """Pen down at the first hole, X then Y to each following one, pen up (S2-12)."""
+    if not holes:
+        return []
+    first = holes[0]
+    ops = [
+        Operation(OpKind.MOVE, first.source, MappingProxyType({ax: first.x_mm, ay: first.y_mm})),
+        Operation(OpKind.PEN_DOWN, first.source),
+    ]
+    x, y = first.x_mm, first.y_mm
+    for hole in holes[1:]:
+        for name, value, now in ((ax, hole.x_mm, x), (ay, hole.y_mm, y)):
+            if value != now:
+                ops.append(Operation(OpKind.MOVE, hole.source, MappingProxyType({name: value})))
+        x, y = hole.x_mm, hole.y_mm
+    ops.append(Operation(OpKind.PEN_UP, holes[-1].source))
+    return ops
+
+
 def build_drill_program(
     job: DrillJob,
     *,
-    mode: Literal["drill", "draw"] = "drill",
+    mode: DrillMode = "drill",
     start: tuple[float, float] = (0.0, 0.0),
     axes: tuple[str, str] = ("X", "Y"),
     smallest_first: bool = False,
 ) -> Program:
     """The job as operations: per bit a WAIT to insert it, then MOVE + DRILL per hole.
 
-    In draw mode each hole becomes a pen cross as wide as the hole (the
-    machine tries the job on paper before a board is risked).  Every
-    operation keeps its hole's file line.
+    ``draw``, the original's ``Kresli``/``Zvedni`` (FIDELITY S2-12): per bit the
+    pen goes down at its first hole, is drawn along the following holes in the
+    order they would be drilled, and comes up after the last.  The drill moves
+    one axis at a time (``X`` then ``Y``), so the pen draws each step from hole
+    to hole as an X stroke then a Y stroke; the program says so, one MOVE per
+    axis, and the preview shows the very strokes the pen will draw.  ``cross``
+    (the station's own, chosen explicitly): a pen cross as wide as each hole,
+    to try the job on paper before a board is risked.  Every operation keeps
+    its hole's file line.
     """
     plan = plan_drilling(job, start=start, smallest_first=smallest_first)
     ax, ay = axes
@@ -760,6 +791,8 @@ def build_drill_program(
             if mode == "drill":
                 ops += [goto(where, hole.x_mm, hole.y_mm), Operation(OpKind.DRILL, where)]
                 continue
+            if mode == "draw":
+                continue
             r = hole.diameter_mm / 2
             ops += [
                 goto(where, hole.x_mm - r, hole.y_mm),
@@ -771,6 +804,8 @@ def build_drill_program(
                 goto(where, hole.x_mm, hole.y_mm + r),
                 Operation(OpKind.PEN_UP, where),
             ]
+        if mode == "draw":
+            ops += _drawn_along(tool_plan.holes, ax, ay)
     saved = plan.file_travel_mm - plan.travel_mm
     note = QCoreApplication.translate(
         "JobFile",
