@@ -17,6 +17,7 @@ from itertools import pairwise
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.machine import LinkState
 from app.machines.usb3.session import JOG_LEAD_S, STILL_AFTER_S
 from app.profiles import load_profile
 from protocol.emulator.usb3_firmware import Usb3Config, Usb3Firmware
@@ -469,3 +470,23 @@ def test_s4_18_an_axis_stopped_at_an_end_switch_is_named_with_its_end(
     wait_idle(usb3, X)
     usb3.run(1.0)
     assert hits == []
+
+
+def test_a_link_gone_quiet_mid_move_is_a_lost_link_not_an_end_switch(unit: StationHarness) -> None:
+    """Replies lost after the axis reported on its way: its silence short of the target looks
+    like a switch, but nothing else is heard either. The session asks a harmless ``G;`` and,
+    unanswered, declares the link lost; it never names a switch the axis did not reach."""
+    session, model = unit.usb3_session, unit.station.model
+    said = messages(unit)
+    hits: list[tuple[int, str, float]] = []
+    session.endSwitchHit.connect(lambda axis, which, mm: hits.append((axis, which, mm)))
+    assert session.move_relative(X, 2.0)
+    unit.run(0.3)
+    assert 0 < model.axes[X].position < 2.0  # heard on its way
+    mark = len(unit.written)
+    unit.loopback.set_manipulator(lambda d, data: b"" if d is Direction.TO_HOST else data)
+    unit.run(1.0)
+    assert hits == [] and not any("end switch" in m for m in said)
+    assert b"G;" in sent_since(unit, mark)  # asked at once, not a second later
+    unit.run_until(lambda: model.link_state is LinkState.LOST, timeout=10)
+    assert hits == [] and not any("end switch" in m for m in said)

@@ -29,7 +29,10 @@ falls silent short of that target, in the direction it was heading, with no
 (``endSwitchHit`` and a message naming the axis and the end), so a job in
 progress pauses instead of sending the next step blindly.  Silence, not a
 repeated count, decides, as for a job: at its slowest speed a pulse takes
-longer than a report period.
+longer than a report period.  Silence of the whole link is not a switch: when
+nothing at all was heard since the axis fell silent, the session first asks a
+harmless ``G;``; the answer proves the unit is there, and no answer ends as a
+lost link.
 """
 
 from __future__ import annotations
@@ -351,12 +354,21 @@ class Usb3Session(MachineSession):
             target, sign, sent_at = heading
             if reported is None or reported < sent_at or now - reported < STILL_AFTER_S:
                 continue  # not heard since the move went out, or not silent long enough
-            self._heading[axis] = None
             count = self._counts[axis]
             if (target - count) * sign < StepSize.FULL.counts_per_pulse:
                 # There, past it (the unit's joystick took over), or less than a full step
                 # short: a unit whose step size changed on its menu rounds a move down.
+                self._heading[axis] = None
                 continue
+            if self._last_heard - reported < STILL_AFTER_S:
+                # Nothing at all heard since the axis fell silent: the link may be what went
+                # quiet, not the axis.  A harmless question decides: the unit's answer proves
+                # it is there (a switch), and no answer is a lost link, with no false alarm.
+                if self._asked_at is None or now - self._asked_at >= STILL_AFTER_S:
+                    self._asked_at = now
+                    self.request_settings()
+                continue
+            self._heading[axis] = None
             which = "high" if sign > 0 else "low"
             position = count_to_mm(count, self.threads[axis])
             name = self.model.axes[axis].name
@@ -432,6 +444,9 @@ class Usb3Session(MachineSession):
                     self.settingsChanged.emit()
             elif isinstance(reply, NotUnderstood):
                 self.model.message.emit("The unit did not understand a command (?;)")
+            # Any word from the unit settles an axis left silent short of its target: a
+            # switch, said before a job's own question about that axis is answered.
+            self._check_end_switches(self._last_heard)
 
     def _news(self, report: str, changed: bool) -> bool:
         """Whether a settings report is news: a change, or the first since the link opened."""
