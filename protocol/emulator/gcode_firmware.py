@@ -70,8 +70,9 @@ Decisions the contract leaves open, made here:
   ``G10`` is not taken).
 - GRBL answers ``G4`` and ``G92``/``G92.1`` only once the motion before
   them is done (it synchronises its planner; ``G4`` then dwells before
-  answering), and reads no line meanwhile; the GRBL board does the same.  The emulated GRBL plotter is set ``$10=3``, ``$22=1`` (it has
-  end switches); a fresh GRBL board has ``$10=1``, ``$22=0``.
+  answering), and reads no line meanwhile; the GRBL board does the same.
+- The emulated GRBL plotter is set ``$10=3``, ``$22=1`` (it has end
+  switches); a fresh GRBL board has ``$10=1``, ``$22=0``.
 """
 
 from __future__ import annotations
@@ -446,7 +447,7 @@ class GcodeFirmware(ControlCycles):
             return tuple(self._events)
 
     def status_report(self) -> str:
-        """What ``?`` answers now, fields in GRBL's order: ``<Run|MPos:1.000,2.000,0.000|FS:600,0>``."""
+        """What ``?`` answers now, ``<Run|MPos:1.000,2.000,0.000|FS:600,0>``."""
         with self._lock:
             state = self.state
             hold = self._planner.hold_state
