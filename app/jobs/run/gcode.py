@@ -6,9 +6,18 @@ lines answered but not yet run.  After a lost link or a reset the driver
 looks at the machine (a status report) before anything is sent again, and
 resumes from the first operation not known to have run, retracing the
 program's own path back to where the machine stands.
+
+Positions are compared in the program's coordinates: the machine position
+less the work offset (GRBL's G92) the board had when the job began — the
+work position, as long as the offset stays — so a job run after a ``G92``
+finds its place on its path, and the way back is sent as the work
+coordinates that reach it with the offset the board has then.
 """
 
 from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
 
@@ -55,6 +64,8 @@ class GcodeDriver(JobDriver):
     def __init__(self, runner: RunnerPort) -> None:
         super().__init__(runner)
         self.stream: GcodeStream | None = None
+        #: The work offset when the job began: program coordinates are machine less it.
+        self._origin: tuple[float, ...] = ()
         self.session: GcodeSession | None = None
         self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
@@ -102,11 +113,15 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        session = self.session
+        # The program's coordinates are the machine's less the work offset it had when the
+        # job began (GRBL's G92 offset; 0 elsewhere); the file's own G92 lines keep that so,
+        # as the loader applies them as GRBL does.
+        self._origin = tuple(session.work_offset or ()) if session is not None else ()
         self._waiting = None
         self._recheck = verify
         self._asked_since_recheck = False
         self._confirming = False
-        session = self.session
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -243,12 +258,12 @@ class GcodeDriver(JobDriver):
             # While a lost link is unresolved an idle machine proves nothing: it may have
             # lost what it had.  The recheck on resume decides.
             if stream is not None and not self._recheck:
-                stream.status(report.state, report.planner_free, planner_size, report.mpos)
+                stream.status(report.state, report.planner_free, planner_size, self._here(report))
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(report.state, report.planner_free, planner_size, report.mpos)
+        stream.status(report.state, report.planner_free, planner_size, self._here(report))
         self._write_checkpoint(force=False)
         if not stream.in_flight:
             self.proceed()
@@ -290,7 +305,8 @@ class GcodeDriver(JobDriver):
         assert program is not None and session is not None
         if report.state not in ("Idle", "Hold"):
             return  # still finishing what it had: the next report decides
-        ran = stream.ran_through(report.mpos) if report.state == "Idle" else None
+        here = self._here(report)
+        ran = stream.ran_through(here) if report.state == "Idle" else None
         if ran is not None:
             start = ran
             unanswered = ran - stream.answered
@@ -303,7 +319,7 @@ class GcodeDriver(JobDriver):
             note = f"{again} operation(s) may not have run and are sent again"
         self._recheck = False
         axes = [a.name for a in runner.station.profile.axes]
-        way_back = retrace(program, axes, start, self._sent_upto(stream, start), report.mpos)
+        way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
         stream.rewind(start)
         if report.state == "Hold":
             session.soft_reset()
@@ -312,6 +328,14 @@ class GcodeDriver(JobDriver):
             runner.finish()
             return
         state = resume_state(program, start, axes)
+        # Its moves are G90 lines, so work coordinates: the offset the board has now (a
+        # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
+        shift = {
+            name: self._offset(self._origin, i) - self._offset(report.wco or (), i)
+            for i, name in enumerate(axes)
+        }
+        state = replace(state, position={a: v + shift[a] for a, v in state.position.items()})
+        way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
         for line in preamble(state, stream.settings, way_back):
             session.send_line(line, "resume")
         runner.note(
@@ -320,6 +344,14 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
+
+    def _here(self, report: StatusReport) -> tuple[float, ...]:
+        """Where the machine stands in the program's coordinates (machine less the origin)."""
+        return tuple(m - self._offset(self._origin, i) for i, m in enumerate(report.mpos))
+
+    @staticmethod
+    def _offset(offsets: Sequence[float], axis: int) -> float:
+        return offsets[axis] if axis < len(offsets) else 0.0
 
     @staticmethod
     def _sent_upto(stream: GcodeStream, start: int) -> int:
