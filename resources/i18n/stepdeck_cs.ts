@@ -826,6 +826,10 @@
         <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer.</extracomment>
         <translation>Stroj se během úlohy sám resetoval (tlačítkem reset nebo výpadkem napájení): úloha je pozastavena. Zkontrolujte stroj; Pokračovat nejprve zjistí, kde stojí, a naváže odtud.</translation>
     </message>
+    <message>
+        <source>The machine is in alarm: the job stays paused. Check the machine, clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume.</source>
+        <translation>Stroj je v alarmu: úloha zůstává pozastavená. Zkontrolujte stroj, zrušte alarm (najetím do výchozí polohy příkazem $H, nebo odemčením příkazem $X, pokud jeho poloha stále odpovídá) a pak dejte Pokračovat.</translation>
+    </message>
 </context>
 <context>
     <name>GcodeEmulatorBox</name>

@@ -303,6 +303,21 @@ class GcodeDriver(JobDriver):
         session = self.session
         program = runner.program
         assert program is not None and session is not None
+        if report.state == "Alarm":
+            # A board that reset itself mid-motion (GRBL: ALARM:3, its position no longer
+            # trusted) or powered up with homing on takes no line until unlocked: streaming
+            # into it would only be refused (error:9), and unlocking is the operator's call.
+            # The job stays paused, still to be rechecked on the next Resume.
+            self._asked_since_recheck = False
+            runner.stop_short(
+                QCoreApplication.translate(
+                    "GcodeDriver",
+                    "The machine is in alarm: the job stays paused. Check the machine, "
+                    "clear the alarm (home it with $H, or unlock it with $X if its position "
+                    "is still right), then Resume.",
+                )
+            )
+            return
         if report.state not in ("Idle", "Hold"):
             return  # still finishing what it had: the next report decides
         here = self._here(report)
