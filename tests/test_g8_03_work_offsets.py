@@ -16,7 +16,9 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.run.gcode_stream import file_offset
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
@@ -165,6 +167,63 @@ def test_g8_03_a_job_after_g92_runs_offset_and_resumes_in_place_after_a_cut_link
     finally:
         runner.deleteLater()
         harness.close()
+
+
+def test_g8_03_a_board_that_lost_its_offset_in_a_reset_gets_it_back_on_resume(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """A USB GRBL board resets when its port reopens, and a reset clears G92: the rest of
+    the job would run shifted by the offset.  Resume sets it again at the resume point."""
+    harness = grbl_with_offset(3)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        assert runner.load(square_program()) == []
+        runner.start()
+        harness.run_until(lambda: len(drawn(harness)) >= 3, timeout=30)
+        harness.loopback.sever("cable pulled")
+        harness.gcode_emulator.soft_reset()  # the board resets as its port reopens
+        assert harness.gcode_emulator.work_offset()["X"] == 0.0
+        harness.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+        harness.loopback.set_manipulator(None)
+        harness.run_until(
+            lambda: harness.station.model.link_state is LinkState.CONNECTED, timeout=30
+        )
+        runner.resume()
+        harness.run_until(
+            lambda: runner.state in (JobState.DONE, JobState.FAILED, JobState.PAUSED), 60
+        )
+        assert runner.state is JobState.DONE, messages
+        assert harness.gcode_emulator.work_offset() == {"X": 20.0, "Y": 10.0, "Z": 0.0}
+        dx, dy = OFFSET
+        allowed = {(x + dx, y + dy) for x, y in SQUARE}
+        strokes = [(x, y) for x, y, down in drawn(harness) if down]
+        assert set(strokes) <= allowed, strokes  # nothing drawn shifted
+        for corner in SQUARE[1:]:
+            assert (corner[0] + dx, corner[1] + dy) in strokes  # none skipped
+        assert drawn(harness)[-1] == (dx, dy, False)
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
+def test_g8_03_the_files_own_g92_is_known_at_each_operation(tmp_path: Path) -> None:
+    profile = load_profile("grbl-plotter")
+    source = tmp_path / "g92.gcode"
+    source.write_text(
+        "G21 G90\nG0 X10 Y10\nG92 X0 Y0\nG1 X5 Y5 F1000\nG92 X1\nG0 X2\nG92.1\nG0 X3\n",
+        encoding="utf-8",
+    )
+    program = load_job(
+        source, ["X", "Y"], JobOptions(gcode=profile.gcode, machine_title=profile.title)
+    )
+    texts = [op.line for op in program]
+    at = {text: k for k, text in enumerate(texts)}
+    assert file_offset(program, at["G1 X5 Y5 F1000"], ["X", "Y"]) == {"X": 10.0, "Y": 10.0}
+    # At machine X15 (program 15): G92 X1 makes the X offset 14.
+    assert file_offset(program, at["G0 X2"], ["X", "Y"]) == {"X": 14.0, "Y": 10.0}
+    assert file_offset(program, at["G0 X3"], ["X", "Y"]) == {"X": 0.0, "Y": 0.0}
 
 
 def test_g8_03_a_job_is_checked_against_the_travel_with_the_offset(

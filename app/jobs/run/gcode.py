@@ -25,6 +25,8 @@ from app.jobs.run.driver import JobDriver, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     GcodeStream,
+    ResumeState,
+    file_offset,
     preamble,
     resume_state,
     retrace,
@@ -34,6 +36,8 @@ from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
 
+#: Work offsets closer than this (mm) are the same (GRBL reports three decimals).
+OFFSET_SAME_MM = 0.002
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
 #: Station-clock seconds between "operation under way" announcements while lines stream.
@@ -342,16 +346,17 @@ class GcodeDriver(JobDriver):
             runner.note(f"The machine is back: {note}")
             runner.finish()
             return
-        state = resume_state(program, start, axes)
+        planned = resume_state(program, start, axes)
         # Its moves are G90 lines, so work coordinates: the offset the board has now (a
         # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
+        now = report.wco or ()
         shift = {
-            name: self._offset(self._origin, i) - self._offset(report.wco or (), i)
+            name: self._offset(self._origin, i) - self._offset(now, i)
             for i, name in enumerate(axes)
         }
-        state = replace(state, position={a: v + shift[a] for a, v in state.position.items()})
+        state = replace(planned, position={a: v + shift[a] for a, v in planned.position.items()})
         way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
-        for line in preamble(state, stream.settings, way_back):
+        for line in preamble(state, stream.settings, way_back, self._restore(planned, start, now)):
             session.send_line(line, "resume")
         runner.note(
             f"Resuming at {program[start].source}: {note}; machine set up again "
@@ -359,6 +364,27 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
+
+    def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
+        """``G92`` setting again the work offset the job needs here, if the board lost it.
+
+        A board that reset (GRBL forgets G92; a USB board resets when its port
+        reopens) would run the rest of the file shifted.  Once the machine stands
+        at the resume point, ``G92`` calls it the file's work position there, which
+        gives back the offset the job began with plus the file's own.  Only on a
+        board that reports its offset (GRBL).
+        """
+        session = self.session
+        program = self.runner.program
+        if session is None or session.work_offset is None or program is None:
+            return []
+        axes = list(planned.position)
+        names = [a.name for a in self.runner.station.profile.axes]
+        own = file_offset(program, start, names)
+        wanted = {a: self._offset(self._origin, names.index(a)) + own[a] for a in axes}
+        if all(abs(self._offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
+            return []
+        return ["G92 " + " ".join(f"{a}{planned.position[a] - own[a]:.3f}" for a in axes)]
 
     def _here(self, report: StatusReport) -> tuple[float, ...]:
         """Where the machine stands in the program's coordinates (machine less the origin)."""
