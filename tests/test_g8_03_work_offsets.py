@@ -104,6 +104,7 @@ def test_g8_03_the_travel_is_judged_in_machine_coordinates(board: StationHarness
     # Work X-10 is machine X10: inside.
     assert session.beyond_travel("G0 X-10") is None
     assert session.beyond_travel("G91 G0 X285") is not None  # from machine 20: 305
+    assert session.beyond_travel("G53 G0 X290") is None  # G53: machine coordinates
     assert not session.move_absolute(0, 301.0)
     assert session.move_absolute(0, 295.0)
     settle(board)

@@ -227,7 +227,8 @@ class GcodeSession(MachineSession):
         motion = line_motion(text, self._relative, position, axes)
         for name, target in motion.targets.items():
             index = axes.index(name)
-            refusal = self.gate.refuse_target(index, target + self.model.axes[index].offset)
+            offset = 0.0 if motion.machine else self.model.axes[index].offset
+            refusal = self.gate.refuse_target(index, target + offset)
             if refusal is not None:
                 return Refusal(f"{text.strip()!r} would move {refusal}")
         return None
