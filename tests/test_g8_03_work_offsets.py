@@ -213,7 +213,7 @@ def test_g8_03_the_files_own_g92_is_known_at_each_operation(tmp_path: Path) -> N
     profile = load_profile("grbl-plotter")
     source = tmp_path / "g92.gcode"
     source.write_text(
-        "G21 G90\nG0 X10 Y10\nG92 X0 Y0\nG1 X5 Y5 F1000\nG92 X1\nG0 X2\nG92.1\nG0 X3\n",
+        "G21 G90\nG0 X10 Y10\nG4 P0.1\nG92 X0 Y0\nG1 X5 Y5 F1000\nG92 X1\nG0 X2\nG92.1\nG0 X3\n",
         encoding="utf-8",
     )
     program = load_job(
