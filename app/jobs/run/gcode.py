@@ -349,7 +349,9 @@ class GcodeDriver(JobDriver):
         planned = resume_state(program, start, axes)
         # Its moves are G90 lines, so work coordinates: the offset the board has now (a
         # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
-        now = report.wco or ()
+        # Leaving a hold takes a soft reset, which clears GRBL's G92 too (G54…G59 stay: the
+        # station sets none, so they are taken as 0).
+        now = () if report.state == "Hold" else report.wco or ()
         shift = {
             name: self._offset(self._origin, i) - self._offset(now, i)
             for i, name in enumerate(axes)
