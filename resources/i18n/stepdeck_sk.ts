@@ -823,7 +823,7 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine reset itself during the job (its reset button, or its power): the job is paused. Check the machine; Resume looks where it stands and carries on from there.</source>
-        <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer.</extracomment>
+        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer.</extracomment>
         <translation>Stroj sa počas úlohy sám resetoval (tlačidlom reset alebo výpadkom napájania): úloha je pozastavená. Skontrolujte stroj; Pokračovať najprv zistí, kde stojí, a nadviaže odtiaľ.</translation>
     </message>
     <message>
