@@ -42,12 +42,20 @@ class ParameterValue:
 class AxisState:
     name: str
     unit: str
+    #: The machine position: travel limits and every motion check use it.
     position: float = 0.0
+    #: The work coordinate offset (GRBL's WCO: machine minus work position); 0 elsewhere.
+    offset: float = 0.0
     velocity: float = 0.0
     status_code: int | None = None
     status_text: str = "unknown"
     moving: bool = False
     parameters: dict[int, ParameterValue] = field(default_factory=dict)
+
+    @property
+    def work_position(self) -> float:
+        """Where the axis is in work coordinates (what a G90 line's words mean on GRBL)."""
+        return self.position - self.offset
 
 
 class MachineModel(QObject):
@@ -89,11 +97,21 @@ class MachineModel(QObject):
         status_code: int | None = None,
         status_text: str | None = None,
         moving: bool | None = None,
+        offset: float | None = None,
     ) -> None:
         axis = self.axes[index]
-        before = (axis.position, axis.velocity, axis.status_code, axis.status_text, axis.moving)
+        before = (
+            axis.position,
+            axis.offset,
+            axis.velocity,
+            axis.status_code,
+            axis.status_text,
+            axis.moving,
+        )
         if position is not None:
             axis.position = position
+        if offset is not None:
+            axis.offset = offset
         if velocity is not None:
             axis.velocity = velocity
         if status_code is not None:
@@ -104,6 +122,7 @@ class MachineModel(QObject):
             axis.moving = moving
         if before != (
             axis.position,
+            axis.offset,
             axis.velocity,
             axis.status_code,
             axis.status_text,

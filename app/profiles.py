@@ -116,6 +116,9 @@ class GcodeSettings:
     #: a look-ahead planner): every move starts and ends at rest.
     junction_deviation: float | None = None
     planner_blocks: int = 15
+    #: A bare ``G92`` makes the current position the origin (the CoreXY plotter's firmware);
+    #: False: GRBL's, which refuses it (error:26) and needs the axes named.
+    bare_g92: bool = False
 
     @property
     def dwell_p_seconds(self) -> float:

@@ -26,6 +26,7 @@ from tests.bench_drill_order import bench_drill_order_50k, bench_drill_order_qua
 from tests.bench_eta import bench_gcode_eta  # noqa: E402
 from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
 from tests.bench_string_art_generator import bench_string_art_generator  # noqa: E402
+from tests.bench_work_offsets import bench_resume_file_offset  # noqa: E402
 
 if TYPE_CHECKING:
     from app.jobs.program import Program
@@ -1055,6 +1056,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_gcode_streaming,
     bench_string_art_generator,
     bench_gcode_eta,
+    bench_resume_file_offset,
 ]
 
 

@@ -348,6 +348,45 @@ def test_a_held_jog_moves_and_stops_on_release_without_an_alarm(
     record("jog", board, end)
 
 
+G92_JOB = """G21 G90
+G0 X10 Y10
+G92 X0 Y0
+G91
+G1 X5 F3000
+G90
+G0 X2 Y3
+"""
+
+
+def test_g8_03_a_job_with_g92_ends_at_the_same_machine_position_on_both(
+    qtbot: QtBot, board: Board, station: Station, tmp_path: Path
+) -> None:
+    """G92 sets a work offset: MPos stays, the relative +5 moves 5, X2 Y3 is machine 12, 13."""
+    session, answers = connect(qtbot, station, board)
+    source = tmp_path / "g92.gcode"
+    source.write_text(G92_JOB, encoding="utf-8")
+    program = load(source)
+    assert program.path(("X", "Y")).coords[-1].tolist() == [12.0, 13.0]  # the preview's end
+    runner = start(station, program, tmp_path)
+    finish(qtbot, runner)
+    assert runner.state is JobState.DONE, answers.messages
+    end = standing(qtbot, session)
+    assert end == pytest.approx((12.0, 13.0), abs=STEP)
+    model = station.model
+    assert (model.axes[0].work_position, model.axes[1].work_position) == pytest.approx(
+        (2.0, 3.0), abs=STEP
+    )
+    feedback: list[str] = []
+    session.replyText.connect(feedback.append)
+    assert session.send_line("$#")
+    qtbot.waitUntil(lambda: session.settled, timeout=15_000)
+    g92 = [text for text in feedback if text.startswith("[G92:")]
+    assert g92 == ["[G92:10.000,10.000,0.000]"], feedback
+    assert answers.errors() == []
+    no_alarm(board)
+    record("g92", board, end, [text for text, _ in answers.lines], g92)
+
+
 def test_a_link_cut_mid_job_pauses_the_job_and_says_so(
     qtbot: QtBot, board: Board, station: Station, tmp_path: Path
 ) -> None:

@@ -30,6 +30,7 @@ from protocol.gcode import (
     decode,
     encode_line,
     make_decoder,
+    with_work_offset,
 )
 from protocol.gcode.codec import GRBL_BANNER, PLOTTER_BANNER
 from protocol.gcode.words import Word, WordError, split_words, strip_comments
@@ -139,8 +140,31 @@ def test_a_status_report_decodes_into_its_fields() -> None:
             planner_free=15,
             rx_free=128,
             fields={"MPos": "1.000,2.000,0.000", "FS": "500,0", "Bf": "15,128"},
+            wpos=(1.0, 2.0, 0.0),
         ),
     )
+
+
+def test_g8_03_wco_gives_the_work_position_and_wpos_the_machine_position() -> None:
+    """GRBL: WPos = MPos - WCO, whichever of the two $10 makes it report."""
+    _, report = decode(b"<Idle|MPos:20.000,10.000,0.000|FS:0,0|WCO:15.000,5.000,0.000>\n")
+    assert isinstance(report, StatusReport)
+    assert report.mpos == (20.0, 10.0, 0.0)
+    assert report.wpos == (5.0, 5.0, 0.0)
+    assert report.wco == (15.0, 5.0, 0.0)
+    _, report = decode(b"<Run|WPos:5.000,5.000,0.000|FS:600,0|WCO:15.000,5.000,0.000>\n")
+    assert isinstance(report, StatusReport)
+    assert (report.mpos, report.wpos, report.work_reported) == ((20.0, 10.0, 0.0), (5, 5, 0), True)
+    # Most reports carry no WCO: the offset last heard completes them.
+    _, bare = decode(b"<Run|WPos:6.000,5.000,0.000|FS:600,0>\n")
+    assert isinstance(bare, StatusReport) and bare.wco is None
+    done = with_work_offset(bare, (15.0, 5.0, 0.0))
+    assert (done.mpos, done.wpos) == ((21.0, 10.0, 0.0), (6.0, 5.0, 0.0))
+    _, machine = decode(b"<Idle|MPos:21.000,10.000,0.000|FS:0,0>\n")
+    assert isinstance(machine, StatusReport)
+    assert with_work_offset(machine, (15.0, 5.0, 0.0)).wpos == (6.0, 5.0, 0.0)
+    assert with_work_offset(machine, None).wpos == (21.0, 10.0, 0.0)  # none heard: 0
+    assert isinstance(decode(b"<Idle|MPos:1,2,3|WCO:1,x,0>\n")[1], Rejected)
 
 
 def test_a_hold_report_carries_its_substate_and_wpos_is_accepted() -> None:
@@ -192,7 +216,14 @@ def test_split_and_glued_lines_through_the_reader() -> None:
         Ok(),
         ErrorReply(20),
         StatusReport(
-            "Run", (0.0, 0.0, 0.0), 0.0, 0.0, None, None, {"MPos": "0.000,0.000,0.000", "FS": "0,0"}
+            "Run",
+            (0.0, 0.0, 0.0),
+            0.0,
+            0.0,
+            None,
+            None,
+            {"MPos": "0.000,0.000,0.000", "FS": "0,0"},
+            wpos=(0.0, 0.0, 0.0),
         ),
         AlarmReply(2),
         Ok(),

@@ -351,6 +351,19 @@ def test_a_dwell_holds_the_next_move_in_order() -> None:
     assert moves[1]["t"] == pytest.approx(START + t0 + 1.15)
 
 
+def test_g8_grbl_answers_g4_only_after_the_dwell() -> None:
+    """GRBL's mc_dwell: synchronise the planner, dwell, then answer ``ok``."""
+    bench = Bench()
+    bench.send("G0 X10", "G4 P0.5", "G0 X0")
+    timed = bench.run(1.5)
+    oks = [t for t, reply in timed if reply == Ok()]
+    dwell = bench.events("dwell")[0]
+    assert len(oks) == 3
+    assert oks[1] >= round(dwell["t"] - START, 6) - 1e-9  # after the move (0.2 s) and 0.5 s
+    assert oks[1] >= 0.7
+    assert [e["line"] for e in bench.events("reply")] == ["G0 X10", "G4 P0.5", "G0 X0"]
+
+
 # -- the receive buffer and character counting --------------------------------------------------
 
 
@@ -760,14 +773,78 @@ def test_g20_takes_inches() -> None:
     assert bench.fw.position() == {"X": 25.4, "Y": 50.8, "Z": 0.0}
 
 
-def test_g92_says_where_the_tool_is() -> None:
+def test_g8_03_g92_sets_a_work_offset_and_the_machine_position_stays() -> None:
+    """GRBL 1.1: G92 = MPos - WPos; MPos stays, absolute targets are work coordinates."""
     bench = Bench()
     assert bench.do("G0 X20 Y10", "G92 X0 Y0") == [Ok()] * 2
-    assert bench.fw.position() == {"X": 0.0, "Y": 0.0, "Z": 0.0}
-    assert bench.fw.motor_counts() == (0, 0, 0)
-    assert bench.do("G0 X5") == [Ok()]
-    assert bench.fw.position()["X"] == 5.0
-    assert bench.events("setpos")[0]["pos"] == {"X": 0.0, "Y": 0.0, "Z": 0.0}
+    assert bench.fw.position() == {"X": 20.0, "Y": 10.0, "Z": 0.0}
+    assert bench.fw.work_offset() == {"X": 20.0, "Y": 10.0, "Z": 0.0}
+    assert bench.fw.motor_counts() == (1600, 800, 0)
+    # A relative move moves by what it says, not by the offset too.
+    assert bench.do("G91 G0 X5", "G90") == [Ok()] * 2
+    assert bench.fw.position()["X"] == 25.0
+    # An absolute target is a work position: X2 is machine X22.
+    assert bench.do("G0 X2 Y3") == [Ok()]
+    assert bench.fw.position() == {"X": 22.0, "Y": 13.0, "Z": 0.0}
+    # Only the named axes change their offset; inches count as inches.
+    assert bench.do("G20 G92 X1", "G21") == [Ok()] * 2
+    assert bench.fw.work_offset() == pytest.approx({"X": 22.0 - 25.4, "Y": 10.0, "Z": 0.0})
+    assert bench.events("offset")[0]["offset"] == {"X": 20.0, "Y": 10.0, "Z": 0.0}
+
+
+def test_g8_03_g92_1_clears_the_offset_and_a_soft_reset_does_too() -> None:
+    bench = Bench()
+    assert bench.do("G0 X20 Y10", "G92 X0 Y0", "G92.1", "G0 X2") == [Ok()] * 4
+    assert bench.fw.position()["X"] == 2.0
+    assert bench.fw.work_offset()["X"] == 0.0
+    assert bench.do("G92 X0") == [Ok()]
+    assert bench.fw.work_offset()["X"] == 2.0
+    bench.fw.soft_reset()
+    assert isinstance(bench.replies()[0], Banner)
+    assert bench.fw.work_offset()["X"] == 0.0  # GRBL's gc_init: G92 is not kept
+    assert bench.do("G92") == [ErrorReply(26)]  # no axis words, as GRBL
+
+
+def test_g8_03_status_reports_carry_wco_and_wpos_as_grbl() -> None:
+    bench = Bench()
+    assert bench.do("G0 X20 Y10", "G92 X5 Y5") == [Ok()] * 2
+    first = bench.status()
+    assert first.fields["MPos"] == "20.000,10.000,0.000"
+    assert first.fields["WCO"] == "15.000,5.000,0.000"
+    # While idle, every 10th report carries WCO again.
+    carried = ["WCO" in bench.status().fields for _ in range(20)]
+    assert carried == ([False] * 9 + [True]) * 2
+    # $10 bit 0 clear: WPos, the machine position minus the offset.
+    assert bench.do("$10=0") == [Ok()]
+    assert bench.status().fields["WPos"] == "5.000,5.000,0.000"
+    assert bench.do("G0 X7") == [Ok()]
+    assert bench.status().fields["WPos"] == "7.000,5.000,0.000"
+    # A change of offset: the very next report carries WCO.
+    assert bench.do("G92.1") == [Ok()]
+    report = bench.status()
+    assert report.fields["WCO"] == "0.000,0.000,0.000"
+    assert report.fields["WPos"] == "22.000,10.000,0.000"
+
+
+def test_g8_03_dollar_hash_lists_the_g92_offset() -> None:
+    bench = Bench()
+    replies = bench.do("G0 X20 Y10", "G92 X5 Y5", "$#")
+    texts = [r.text for r in replies if isinstance(r, Feedback)]
+    assert "[G92:15.000,5.000,0.000]" in texts
+    assert "[G54:0.000,0.000,0.000]" in texts
+    assert replies[-1] == Ok()
+
+
+def test_g8_03_g92_is_answered_once_the_motion_before_it_is_done() -> None:
+    """GRBL synchronises its planner on a work-offset change, then answers."""
+    bench = Bench()
+    bench.send("G1 X20 F1200", "G92 X0")  # 1 s of motion
+    timed = bench.run(2.0)
+    oks = [t for t, reply in timed if reply == Ok()]
+    move = bench.events("move")[0]
+    assert len(oks) == 2
+    assert oks[0] < 0.1  # the move is answered once planned
+    assert oks[1] >= round(move["t"] - START, 6) - 1e-9  # G92 once the move is done
 
 
 def test_g28_and_dollar_h_go_home() -> None:

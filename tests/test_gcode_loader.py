@@ -281,6 +281,21 @@ def test_relative_offsets_inches_and_continued_motion(tmp_path: Path) -> None:
     assert program.unsupported == ()
 
 
+def test_s1_07_a_bare_g92_on_the_corexy_plotter_makes_here_the_origin(tmp_path: Path) -> None:
+    """The preview and the travel check follow the firmware: bare G92 = "here is 0, 0"."""
+    text = "G90\nG0 X20 Y10\nG92\nG1 X5 Y5 F1000\nG0 X0 Y0\n"
+    program = load_for(write(tmp_path, text), "corexy-plotter")
+    assert targets(program) == [
+        (2, {"X": 20.0, "Y": 10.0}),
+        (4, {"X": 25.0, "Y": 15.0}),
+        (5, {"X": 20.0, "Y": 10.0}),
+    ]
+    # GRBL refuses it (error:26): the job is refused at load, not mid-job.
+    with pytest.raises(JobFileError) as caught:
+        load_for(write(tmp_path, text, "grbl.gcode"), "grbl-plotter")
+    assert "error:26" in str(caught.value) and ":3:" in str(caught.value)
+
+
 def test_plain_and_full_parser_agree(tmp_path: Path) -> None:
     """The fast path (plain lines) and the full parser (same lines with comments) agree."""
     rng = np.random.default_rng(3)

@@ -60,11 +60,19 @@ Decisions the contract leaves open, made here:
   GRBL's does (the step-rate figures kept for the other firmwares are the
   least the settings allow).  ``$C`` toggles check mode
   (lines parsed and answered, nothing moves); leaving it resets the board.
-- Status reports carry ``MPos`` (``WPos`` with ``$10`` bit 0 clear; the same
-  here, as there are no work offsets), ``FS`` and, with ``$10`` bit 1,
-  ``Bf`` (free planner blocks, free receive-buffer bytes, as GRBL counts
-  them).  The emulated GRBL plotter is set ``$10=3``, ``$22=1`` (it has
-  end switches); a fresh GRBL board has ``$10=1``, ``$22=0``.
+- Status reports carry ``MPos`` (``WPos``, machine position minus the work
+  offset, with ``$10`` bit 0 clear), ``FS`` and, with ``$10`` bit 1, ``Bf``
+  (free planner blocks, free receive-buffer bytes, as GRBL counts them).  A
+  GRBL board adds ``WCO:`` (its G92 work offset) as GRBL 1.1 does: in the
+  first report after a reset or an offset change, then every 10th report
+  while idle and every 30th while running, holding or jogging.  ``$#`` lists
+  the offsets (``[G92:...]`` is the G92 offset; G54…G59, G28 and G30 are 0:
+  ``G10`` is not taken).
+- GRBL answers ``G4`` and ``G92``/``G92.1`` only once the motion before
+  them is done (it synchronises its planner; ``G4`` then dwells before
+  answering), and reads no line meanwhile; the GRBL board does the same.
+- The emulated GRBL plotter is set ``$10=3``, ``$22=1`` (it has end
+  switches); a fresh GRBL board has ``$10=1``, ``$22=0``.
 """
 
 from __future__ import annotations
@@ -94,6 +102,7 @@ from protocol.emulator.gcode_planner import (
     Pause,
     PenChange,
     Planner,
+    SetOffset,
     SetPosition,
 )
 from protocol.emulator.servo_pwm import pulse_width_s
@@ -141,7 +150,10 @@ _GRBL_DEFAULTS: dict[int, float] = {
 _GRBL_DECIMAL = frozenset({11, 12, 24, 25, 27})
 
 _LINE_END = 0x0A
-_HELP = "[HLP:$$ $G $I $H $X ~ ! ? ctrl-x]"
+_HELP = "[HLP:$$ $# $G $I $H $X ~ ! ? ctrl-x]"
+#: GRBL 1.1's REPORT_WCO_REFRESH_BUSY_COUNT and _IDLE_COUNT: reports between two ``WCO:``.
+WCO_REFRESH_BUSY = 30
+WCO_REFRESH_IDLE = 10
 
 
 def grbl_line(raw: bytes) -> str | None:
@@ -172,6 +184,11 @@ def grbl_line(raw: bytes) -> str | None:
     return "".join(kept)
 
 
+def _axis_values(values: tuple[float, ...]) -> str:
+    """GRBL's comma-separated axis values, three decimals (mm)."""
+    return ",".join(f"{round(v, 3) + 0.0:.3f}" for v in values)
+
+
 def event_log_line(event: GcodeEvent) -> str:
     """One line of the emulator's ``--log`` file: the event as compact JSON."""
     return json.dumps(event, separators=(",", ":"))
@@ -199,6 +216,12 @@ class GcodeFirmware(ControlCycles):
         #: Blocks of the line being queued that did not fit yet, and its answer.
         self._pending: deque[Block] = deque()
         self._pending_line: tuple[int, str] | None = None
+        #: The pending line synchronises (GRBL's G4, G92): answered once the planner is empty.
+        self._pending_sync = False
+        #: GRBL's G92 work offset in effect (machine minus work position), and the status
+        #: reports left before the next ``WCO:`` field (0: the next one carries it).
+        self._work_offset = origin
+        self._wco_countdown = 0
         #: ``ok_when_done``: the line whose blocks run, answered when the planner is empty.
         self._running_line: tuple[int, str] | None = None
         self._status_wanted = False
@@ -306,6 +329,8 @@ class GcodeFirmware(ControlCycles):
             self._unacked = 0
             self._status_wanted = False
             self._interpreter.reset(self._planner.position())
+            self._work_offset = self._interpreter.offset
+            self._wco_countdown = 0
             self._log("reset", pos=self._where())
             self._send_banner()
             if self._alarm is not None:
@@ -385,6 +410,11 @@ class GcodeFirmware(ControlCycles):
         """Where the tool is now, per axis, in the machine's units."""
         with self._lock:
             return dict(zip(self.config.axes, self._planner.position(), strict=True))
+
+    def work_offset(self) -> dict[str, float]:
+        """GRBL's G92 offset in effect (machine minus work position); 0 on the other firmwares."""
+        with self._lock:
+            return dict(zip(self.config.axes, self._work_offset, strict=True))
 
     def motor_counts(self) -> tuple[int, ...]:
         """Each motor's step counter: CoreXY (a, b, z), otherwise one per axis."""
@@ -481,19 +511,30 @@ class GcodeFirmware(ControlCycles):
             return tuple(self._events)
 
     def status_report(self) -> str:
-        """What ``?`` answers now: ``<Run|MPos:1.000,2.000,0.000|FS:600,0|Bf:14,127>``."""
+        """What ``?`` answers now, ``<Run|MPos:1.000,2.000,0.000|FS:600,0>``."""
         with self._lock:
             state = self.state
             hold = self._planner.hold_state
             if state == "Hold":
                 state += ":0" if hold is HoldState.HELD else ":1"
-            where = ",".join(f"{round(p, 3) + 0.0:.3f}" for p in self._planner.position())
-            feed = self._planner.feed()
-            free_rx = self.config.rx_buffer - len(self._rx)
+            position = self._planner.position()
             mask = self.config.status_mask
             kind = "MPos" if mask & 1 else "WPos"
+            if not mask & 1:
+                position = tuple(p - o for p, o in zip(position, self._work_offset, strict=True))
+            where = _axis_values(position)
+            feed = self._planner.feed()
+            free_rx = self.config.rx_buffer - len(self._rx)
             buffers = f"|Bf:{self._planner.free},{free_rx}" if mask & 2 else ""
-            return f"<{state}|{kind}:{where}|FS:{feed:.0f},{self._spindle:.0f}{buffers}>"
+            wco = ""
+            if self.config.grbl:
+                if self._wco_countdown > 0:
+                    self._wco_countdown -= 1
+                else:
+                    busy = state.split(":")[0] in ("Run", "Hold", "Home", "Jog")
+                    self._wco_countdown = (WCO_REFRESH_BUSY if busy else WCO_REFRESH_IDLE) - 1
+                    wco = "|WCO:" + _axis_values(self._work_offset)
+            return f"<{state}|{kind}:{where}{buffers}|FS:{feed:.0f},{self._spindle:.0f}{wco}>"
 
     # -- the control cycle -----------------------------------------------------------------
 
@@ -578,6 +619,9 @@ class GcodeFirmware(ControlCycles):
             return
         self._pending.extend(result)
         self._pending_line = (length, text)
+        self._pending_sync = self.config.grbl and any(
+            isinstance(b, (Dwell, SetOffset)) for b in result
+        )
         self._queue_pending(self.time)
         if self._reset_after_answer:
             self._reset_after_answer = False
@@ -607,6 +651,13 @@ class GcodeFirmware(ControlCycles):
                 self._send_line(line)
         elif command == "$G":
             self._send_line(self._interpreter.modes())
+        elif command == "$#" and self.config.grbl:
+            zeros = _axis_values((0.0,) * len(self.config.axes))
+            for name in ("G54", "G55", "G56", "G57", "G58", "G59", "G28", "G30"):
+                self._send_line(f"[{name}:{zeros}]")
+            self._send_line(f"[G92:{_axis_values(self._interpreter.offset)}]")
+            self._send_line("[TLO:0.000]")
+            self._send_line(f"[PRB:{zeros}:0]")
         elif command == "$I":
             if not idle:
                 return NOT_IDLE
@@ -778,7 +829,7 @@ class GcodeFirmware(ControlCycles):
         if not self._pending and self._pending_line is not None:
             length, text = self._pending_line
             self._pending_line = None
-            if self.config.ok_when_done and len(self._planner):
+            if (self.config.ok_when_done or self._pending_sync) and len(self._planner):
                 self._running_line = (length, text)  # OK once its motion is done
             else:
                 self._answer(self.config.reply_ok, length, text, t)
@@ -810,6 +861,10 @@ class GcodeFirmware(ControlCycles):
                 self._log("pause", t)
             case SetPosition():
                 self._log("setpos", t, pos=self._where(block.position))
+            case SetOffset():
+                self._work_offset = block.offset
+                self._wco_countdown = 0  # GRBL: the next report carries WCO
+                self._log("offset", t, offset=self._where(block.offset))
         if self._running_line is not None and not len(self._planner):
             length, text = self._running_line
             self._running_line = None

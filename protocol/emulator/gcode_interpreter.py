@@ -7,9 +7,15 @@ dwell, units/distance modes, G92 or G28, motion, then ``M0``/``M2``.
 
 Decisions the contract leaves open, made here:
 
-- ``G92`` says where the tool is now: the position itself changes (what the
-  plotters' firmwares do), so ``MPos`` and the travel limits follow it; GRBL
-  would keep a separate work offset instead.
+- On a GRBL board (``grbl``) ``G92`` sets a work offset as GRBL 1.1 does: the
+  machine position stays, the offset becomes machine position minus the
+  given values (per named axis, the others keep theirs), and every absolute
+  target from then on is the written value plus the offset; ``G92.1`` clears
+  it, and a soft reset too (GRBL's ``gc_init``).  Both reach the planner as a
+  :class:`SetOffset` block, because GRBL synchronises on a work-offset change
+  (``FORCE_BUFFER_SYNC_DURING_WCO_CHANGE``).  Travel limits stay in machine
+  coordinates.  On the plotters' own firmwares ``G92`` says where the tool is
+  now: the position itself changes (what their firmwares do).
 - ``G28`` goes to 0 on every axis at the rapid rate, through the given
   point first when the line has axis words; ``$H`` (the firmware's) does the
   same without the point.
@@ -41,6 +47,7 @@ from protocol.emulator.gcode_planner import (
     Move,
     Pause,
     PenChange,
+    SetOffset,
     SetPosition,
 )
 from protocol.gcode.junctions import axis_limited, unit_vector
@@ -63,9 +70,12 @@ INVALID_TARGET = 33
 ARC_RADIUS_ERROR = 34
 NO_OFFSETS_IN_PLANE = 35
 
+#: ``G92.1`` (GRBL: clear the work offset), kept in the non-modal group under this number.
+G92_1 = 921
+
 _G_GROUPS = {
     **dict.fromkeys((0, 1, 2, 3), "motion"),
-    **dict.fromkeys((4, 28, 92), "non-modal"),
+    **dict.fromkeys((4, 28, 92, G92_1), "non-modal"),
     17: "plane",
     **dict.fromkeys((20, 21), "units"),
     **dict.fromkeys((90, 91), "distance"),
@@ -124,6 +134,8 @@ class Interpreter:
     def __init__(self, config: GcodeConfig, position: tuple[float, ...]) -> None:
         self.config = config
         self.position = position
+        #: GRBL's G92 work offset (machine minus work position), per axis; always 0 elsewhere.
+        self.offset: tuple[float, ...] = (0.0,) * len(position)
         self.modal = Modal()
         self.pen_down = False
         self.spindle_level = 0.0
@@ -131,8 +143,9 @@ class Interpreter:
         self.servo_level: float | None = None
 
     def reset(self, position: tuple[float, ...]) -> None:
-        """After a soft reset: GRBL's power-on modes, the pen up, the tool where it stopped."""
+        """After a soft reset: GRBL's power-on modes (no G92 offset), the pen up, the tool kept."""
         self.position = position
+        self.offset = (0.0,) * len(position)
         self.modal = Modal()
         self.pen_down = False
         self.spindle_level = 0.0
@@ -170,9 +183,12 @@ class Interpreter:
         for word in words:
             letter, value = word.letter, word.value
             if letter in ("G", "M"):
-                if not value.is_integer():
+                if letter == "G" and value == 92.1 and self.config.grbl:
+                    code = G92_1
+                elif not value.is_integer():
                     return UNSUPPORTED
-                code = int(value)
+                else:
+                    code = int(value)
                 groups = _G_GROUPS if letter == "G" else _M_GROUPS
                 group = groups.get(code)
                 if group is None or not self._supported(letter, code):
@@ -305,7 +321,19 @@ class Interpreter:
             named = [cfg.index(a) for a in cfg.axes if a in axis_words]
             blocks.append(DriversOff(tuple(named) or tuple(range(len(cfg.axes)))))
             axis_words = {}
-        if nonmodal == 92:
+        offset = self.offset
+        if nonmodal == 92 and cfg.grbl:
+            if not axis_words:
+                return NO_AXIS_WORDS
+            # GRBL: G92 = MPos - WPos for the named axes (always absolute, in the line's units).
+            offset = tuple(
+                position[i] - axis_words[a] * (1.0 if a == "A" else scale)
+                if a in axis_words
+                else offset[i]
+                for i, a in enumerate(cfg.axes)
+            )
+            blocks.append(SetOffset(offset))
+        elif nonmodal == 92:
             if not axis_words and not cfg.bare_g92:
                 return NO_AXIS_WORDS
             if axis_words:
@@ -341,6 +369,9 @@ class Interpreter:
             position = end
         elif motion_given in (2, 3):
             return NO_AXIS_WORDS
+        if nonmodal == G92_1:
+            offset = (0.0,) * len(cfg.axes)
+            blocks.append(SetOffset(offset))
 
         if set(values) - used:
             return UNUSED_WORDS
@@ -367,6 +398,7 @@ class Interpreter:
             spindle=spindle,
         )
         self.position = position
+        self.offset = offset
         self.pen_down = pen
         self.spindle_level = level
         self.step_rate = step_rate
@@ -384,7 +416,8 @@ class Interpreter:
         for axis, value in axis_words.items():
             index = self.config.index(axis)
             distance = value * (1.0 if axis == "A" else scale)
-            target[index] = distance if absolute else target[index] + distance
+            # An absolute value is a work coordinate: the G92 offset makes it a machine one.
+            target[index] = distance + self.offset[index] if absolute else target[index] + distance
         return tuple(target)
 
     def _moves(

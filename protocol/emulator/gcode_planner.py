@@ -149,13 +149,24 @@ class SetPosition:
 
 
 @dataclass(frozen=True, slots=True)
+class SetOffset:
+    """GRBL's ``G92``/``G92.1``: the work offset becomes ``offset``; the tool does not move.
+
+    Queued so that it takes effect once the motion before it is done (GRBL
+    synchronises its planner on a work-offset change).
+    """
+
+    offset: tuple[float, ...]
+
+
+@dataclass(frozen=True, slots=True)
 class DriversOff:
     """``M18``: the drivers of these axes (indices) lose their holding current until a move."""
 
     axes: tuple[int, ...]
 
 
-Block = Move | Dwell | PenChange | Pause | SetPosition | DriversOff
+Block = Move | Dwell | PenChange | Pause | SetPosition | SetOffset | DriversOff
 
 
 class HoldState(enum.Enum):

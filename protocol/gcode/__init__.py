@@ -20,6 +20,7 @@ from protocol.gcode.codec import (
     decode,
     encode_line,
     make_decoder,
+    with_work_offset,
 )
 from protocol.gcode.streaming import LineStreamer, StreamMode
 
@@ -45,4 +46,5 @@ __all__ = [
     "decode",
     "encode_line",
     "make_decoder",
+    "with_work_offset",
 ]

@@ -17,8 +17,8 @@ a line.  The CoreXY plotter's firmware says ``OK`` and ``ERROR:<n>``, GRBL
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from dataclasses import dataclass, field
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, replace
 
 from protocol.framing import DecodeResult, LineDecoder
 from protocol.framing import Rejected as Rejected  # re-exported for this dialect's readers
@@ -140,8 +140,14 @@ class AlarmReply:
 class StatusReport:
     """A ``<...>`` report, the answer to ``?``.
 
-    ``mpos`` is the machine position, or the work position when the board
-    reports only that (``fields`` says which came).  ``planner_free`` and
+    ``mpos`` is the machine position and ``wpos`` the work position (GRBL:
+    machine position minus the work coordinate offset ``wco``).  A GRBL board
+    reports one of the two (``$10`` bit 0) and its ``WCO:`` only now and then
+    (on a change, and every 10 to 30 reports), so a report alone may not tell
+    the other: then ``wco`` is None and the missing position is taken equal to
+    the reported one until :func:`with_work_offset` completes it with the
+    offset last heard (``work_reported`` says which one came).  A board without
+    work offsets reports ``MPos`` and the two are the same.  ``planner_free`` and
     ``rx_free`` come from ``Bf:`` when the board sends it.  ``fields`` holds
     every ``key:value`` field as written, for whatever else a board reports.
     """
@@ -155,6 +161,32 @@ class StatusReport:
     fields: Mapping[str, str] = field(default_factory=dict)
     #: What follows the state after a colon: ``Hold:0`` is hold complete, ``Hold:1`` braking.
     substate: str | None = None
+    #: The work position (``WPos``, or ``MPos`` minus the offset); see the class.
+    wpos: tuple[float, ...] = ()
+    #: The work coordinate offset (``WCO:``) when this report carried it or it was completed.
+    wco: tuple[float, ...] | None = None
+    #: The board reported ``WPos`` (``$10`` bit 0 clear), not ``MPos``.
+    work_reported: bool = False
+
+
+def with_work_offset(report: StatusReport, wco: Sequence[float] | None) -> StatusReport:
+    """``report`` with both positions, from its own ``WCO:`` or else ``wco`` (last heard).
+
+    Without either the offset is taken as 0 (a board without work offsets, or
+    one whose first report has not come yet: GRBL's first report carries it).
+    """
+    offset = report.wco if report.wco is not None else tuple(wco) if wco is not None else None
+    if offset is None:
+        offset = (0.0,) * len(report.mpos)
+    count = min(len(offset), len(report.mpos))
+    pad = tuple(offset[:count]) + (0.0,) * (len(report.mpos) - count)
+    if report.work_reported:
+        work = report.wpos
+        machine = tuple(w + o for w, o in zip(work, pad, strict=True))
+    else:
+        machine = report.mpos
+        work = tuple(m - o for m, o in zip(machine, pad, strict=True))
+    return replace(report, mpos=machine, wpos=work, wco=pad)
 
 
 @dataclass(frozen=True, slots=True)
@@ -237,6 +269,13 @@ def _parse_status(body: str) -> StatusReport | str:
     position = [_number(v) for v in where.split(",")]
     if not position or any(v is None for v in position):
         return f"bad position {where!r}"
+    wco: tuple[float, ...] | None = None
+    if "WCO" in fields:
+        offsets = [_number(v) for v in fields["WCO"].split(",")]
+        if len(offsets) != len(position) or any(v is None for v in offsets):
+            return f"bad work coordinate offset {fields['WCO']!r}"
+        wco = tuple(v for v in offsets if v is not None)
+    work_reported = "MPos" not in fields
     feed, spindle = 0.0, 0.0
     rates = fields.get("FS", fields.get("F"))
     if rates is not None:
@@ -252,9 +291,12 @@ def _parse_status(body: str) -> StatusReport | str:
         if len(counts) != 2 or counts[0] is None or counts[1] is None:
             return f"bad buffer state {fields['Bf']!r}"
         planner_free, rx_free = counts
-    return StatusReport(
+    reported = tuple(v for v in position if v is not None)
+    report = StatusReport(
         state=state,
-        mpos=tuple(v for v in position if v is not None),
+        mpos=reported,
+        wpos=reported,
+        work_reported=work_reported,
         feed=feed,
         spindle=spindle,
         planner_free=planner_free,
@@ -262,6 +304,7 @@ def _parse_status(body: str) -> StatusReport | str:
         fields=fields,
         substate=substate or None,
     )
+    return report if wco is None else with_work_offset(report, wco)
 
 
 def _parse_reply(text: str) -> GcodeReply | str:

@@ -903,8 +903,12 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine reset itself during the job (its reset button, or its power): the job is paused. Check the machine; Resume looks where it stands and carries on from there.</source>
-        <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. ``$G`` was sent after the set-up: nothing of the job goes before its answer.</extracomment>
+        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer.</extracomment>
         <translation>Stroj sa počas úlohy sám resetoval (tlačidlom reset alebo výpadkom napájania): úloha je pozastavená. Skontrolujte stroj; Pokračovať najprv zistí, kde stojí, a nadviaže odtiaľ.</translation>
+    </message>
+    <message>
+        <source>The machine is in alarm: the job stays paused. Check the machine, clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume.</source>
+        <translation>Stroj je v alarme: úloha zostáva pozastavená. Skontrolujte stroj, zrušte alarm (nájazdom do východiskovej polohy príkazom $H, alebo odomknutím príkazom $X, ak jeho poloha stále zodpovedá) a potom dajte Pokračovať.</translation>
     </message>
 </context>
 <context>
@@ -1140,7 +1144,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>GcodeSession</name>
     <message>
         <source>Stopped: {0} line(s) not run</source>
-        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers). The motors were released for zeroing by hand and nothing was sent since.</extracomment>
+        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers). The motors were released for zeroing by hand and nothing was sent since.</extracomment>
         <translation>Zastavené: nevykonaných riadkov: {0}</translation>
     </message>
     <message>
@@ -1164,7 +1168,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>InfoPanel</name>
     <message>
         <source>Battery charge and voltage</source>
-        <extracomment>The LED ring&apos;s colours, as drawn beside its state; blinking states say so in words. Status texts worth a colour; the rest stay in the normal text colour.</extracomment>
+        <extracomment>The LED ring&apos;s colours, as drawn beside its state; blinking states say so in words. Status texts worth a colour; the rest stay in the normal text colour. The machine position, shown beside the work position while they differ.</extracomment>
         <translation>Nabitie a napätie batérie</translation>
     </message>
     <message>
@@ -1258,6 +1262,14 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>battery low</source>
         <translation>slabá batéria</translation>
+    </message>
+    <message>
+        <source>machine {0}</source>
+        <translation>stroj {0}</translation>
+    </message>
+    <message>
+        <source>Machine position; the figure on the left is the work position (G92 work offset {0})</source>
+        <translation>Poloha stroja; údaj vľavo je pracovná poloha (pracovné posunutie G92 {0})</translation>
     </message>
 </context>
 <context>
@@ -1443,7 +1455,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>word repeated: {0} twice (error:25): {1}</source>
-        <extracomment>A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
+        <extracomment>A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); GRBL refuses it (error:26). A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
         <translation>opakované slovo: {0} dvakrát (error:25): {1}</translation>
     </message>
     <message>
@@ -1937,6 +1949,10 @@ Napriek tomu odoslať do stroja?</translation>
         <source>{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}</source>
         <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
         <translation>{0}: {1} — {2} {3:g} je mimo rozsahu posuvu {4:g}…{5:g}</translation>
+    </message>
+    <message>
+        <source>G92 without axis words (error:26): {0}</source>
+        <translation>G92 bez súradníc osí (error:26): {0}</translation>
     </message>
 </context>
 <context>
@@ -2571,7 +2587,7 @@ Načítať ako:</translation>
     <name>MachineModel</name>
     <message>
         <source>not connected</source>
-        <extracomment>Why the operator may not jog now though the machine may move (a job under way).</extracomment>
+        <extracomment>The machine position: travel limits and every motion check use it. The work coordinate offset (GRBL&apos;s WCO: machine minus work position); 0 elsewhere. Why the operator may not jog now though the machine may move (a job under way).</extracomment>
         <translation>nepripojené</translation>
     </message>
     <message>

@@ -75,7 +75,10 @@ class AbsolutePanel(QWidget):
             self.gate.refusal(self.targets[axis])
             return False
         session = self._station.session
-        return session is not None and session.move_absolute(axis, target)
+        # The target is a work position, as the DRO shows and a G90 line means (GRBL's G92
+        # offset added): the session takes machine positions.
+        offset = self._station.model.axes[axis].offset
+        return session is not None and session.move_absolute(axis, target + offset)
 
     def go_all(self) -> None:
         """Every axis or none: one bad target holds them all back."""

@@ -313,7 +313,7 @@ class GcodePanel(QWidget):
 
     def _show_status(self, report: object) -> None:
         state = getattr(report, "state", "?")
-        mpos = getattr(report, "mpos", ())
+        mpos = getattr(report, "wpos", ()) or getattr(report, "mpos", ())
         feed = getattr(report, "feed", 0.0)
         self.state_label.setText(
             self.tr("{0}   feed {1}").format(

@@ -2,9 +2,11 @@
 
 Everything here is read from the machine model on its change signals, so the
 panel shows exactly what the device last reported: positions and statuses
-per axis, the link state as a coloured lamp, the battery, the board
-temperature, why the machine may refuse to move (charger, USB), and the
-stage's LED ring as the device flags say it is lit (FIDELITY S3-33).
+per axis (the work position; where a board keeps a work offset, GRBL's
+G92, the machine position beside it as well, in small), the link state as
+a coloured lamp, the battery, the board temperature, why the machine may
+refuse to move (charger, USB), and the stage's LED ring as the device flags
+say it is lit (FIDELITY S3-33).
 """
 
 from __future__ import annotations
@@ -66,6 +68,8 @@ class InfoPanel(QFrame):
         self._model = model
         self.setFrameShape(QFrame.Shape.StyledPanel)
         self.positions: list[QLabel] = []
+        #: The machine position, shown beside the work position while they differ.
+        self.machine_positions: list[QLabel] = []
         self.statuses: list[QLabel] = []
         self.texts = Texts(self)
 
@@ -103,10 +107,15 @@ class InfoPanel(QFrame):
             status = QLabel()
             status.setObjectName(f"status_{axis.name}")
             status.setMinimumWidth(status.fontMetrics().horizontalAdvance("blocked: charger conn"))
+            machine = QLabel()
+            machine.setObjectName(f"machine_position_{axis.name}")
+            machine.setVisible(False)
             grid.addWidget(name, row, 0)
             grid.addWidget(position, row, 1)
             grid.addWidget(status, row, 2)
+            grid.addWidget(machine, row, 3)
             self.positions.append(position)
+            self.machine_positions.append(machine)
             self.statuses.append(status)
         return grid
 
@@ -169,7 +178,19 @@ class InfoPanel(QFrame):
 
     def _show_axis(self, index: int) -> None:
         axis = self._model.axes[index]
-        self.positions[index].setText(localized(f"{axis.position:.3f} {axis.unit}"))
+        self.positions[index].setText(localized(f"{axis.work_position:.3f} {axis.unit}"))
+        machine = self.machine_positions[index]
+        machine.setVisible(axis.offset != 0.0)
+        machine.setEnabled(self._model.link_state is LinkState.CONNECTED)
+        machine.setText(
+            self.tr("machine {0}").format(localized(f"{axis.position:.3f} {axis.unit}"))
+        )
+        machine.setToolTip(
+            self.tr(
+                "Machine position; the figure on the left is the work position "
+                "(G92 work offset {0})"
+            ).format(localized(f"{axis.offset:.3f} {axis.unit}"))
+        )
         status = self.statuses[index]
         status.setText(axis_status_text(axis.status_text))
         colour = _STATUS_COLOURS.get(axis.status_text)

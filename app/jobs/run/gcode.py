@@ -6,9 +6,18 @@ lines answered but not yet run.  After a lost link or a reset the driver
 looks at the machine (a status report) before anything is sent again, and
 resumes from the first operation not known to have run, retracing the
 program's own path back to where the machine stands.
+
+Positions are compared in the program's coordinates: the machine position
+less the work offset (GRBL's G92) the board had when the job began — the
+work position, as long as the offset stays — so a job run after a ``G92``
+finds its place on its path, and the way back is sent as the work
+coordinates that reach it with the offset the board has then.
 """
 
 from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
 
@@ -16,6 +25,8 @@ from app.jobs.run.driver import JobDriver, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     GcodeStream,
+    ResumeState,
+    file_offset,
     preamble,
     resume_state,
     retrace,
@@ -25,6 +36,8 @@ from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
 
+#: Work offsets closer than this (mm) are the same (GRBL reports three decimals).
+OFFSET_SAME_MM = 0.002
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
 #: Station-clock seconds between "operation under way" announcements while lines stream.
@@ -55,6 +68,8 @@ class GcodeDriver(JobDriver):
     def __init__(self, runner: RunnerPort) -> None:
         super().__init__(runner)
         self.stream: GcodeStream | None = None
+        #: The work offset when the job began: program coordinates are machine less it.
+        self._origin: tuple[float, ...] = ()
         self.session: GcodeSession | None = None
         self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
@@ -102,11 +117,15 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        session = self.session
+        # The program's coordinates are the machine's less the work offset it had when the
+        # job began (GRBL's G92 offset; 0 elsewhere); the file's own G92 lines keep that so,
+        # as the loader applies them as GRBL does.
+        self._origin = tuple(session.work_offset or ()) if session is not None else ()
         self._waiting = None
         self._recheck = verify
         self._asked_since_recheck = False
         self._confirming = False
-        session = self.session
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -243,12 +262,12 @@ class GcodeDriver(JobDriver):
             # While a lost link is unresolved an idle machine proves nothing: it may have
             # lost what it had.  The recheck on resume decides.
             if stream is not None and not self._recheck:
-                stream.status(report.state, report.planner_free, planner_size, report.mpos)
+                stream.status(report.state, report.planner_free, planner_size, self._here(report))
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(report.state, report.planner_free, planner_size, report.mpos)
+        stream.status(report.state, report.planner_free, planner_size, self._here(report))
         self._write_checkpoint(force=False)
         if not stream.in_flight:
             self.proceed()
@@ -288,9 +307,25 @@ class GcodeDriver(JobDriver):
         session = self.session
         program = runner.program
         assert program is not None and session is not None
+        if report.state == "Alarm":
+            # A board that reset itself mid-motion (GRBL: ALARM:3, its position no longer
+            # trusted) or powered up with homing on takes no line until unlocked: streaming
+            # into it would only be refused (error:9), and unlocking is the operator's call.
+            # The job stays paused, still to be rechecked on the next Resume.
+            self._asked_since_recheck = False
+            runner.stop_short(
+                QCoreApplication.translate(
+                    "GcodeDriver",
+                    "The machine is in alarm: the job stays paused. Check the machine, "
+                    "clear the alarm (home it with $H, or unlock it with $X if its position "
+                    "is still right), then Resume.",
+                )
+            )
+            return
         if report.state not in ("Idle", "Hold"):
             return  # still finishing what it had: the next report decides
-        ran = stream.ran_through(report.mpos) if report.state == "Idle" else None
+        here = self._here(report)
+        ran = stream.ran_through(here) if report.state == "Idle" else None
         if ran is not None:
             start = ran
             unanswered = ran - stream.answered
@@ -303,7 +338,7 @@ class GcodeDriver(JobDriver):
             note = f"{again} operation(s) may not have run and are sent again"
         self._recheck = False
         axes = [a.name for a in runner.station.profile.axes]
-        way_back = retrace(program, axes, start, self._sent_upto(stream, start), report.mpos)
+        way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
         stream.rewind(start)
         if report.state == "Hold":
             session.soft_reset()
@@ -311,8 +346,19 @@ class GcodeDriver(JobDriver):
             runner.note(f"The machine is back: {note}")
             runner.finish()
             return
-        state = resume_state(program, start, axes)
-        for line in preamble(state, stream.settings, way_back):
+        planned = resume_state(program, start, axes)
+        # Its moves are G90 lines, so work coordinates: the offset the board has now (a
+        # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
+        # Leaving a hold takes a soft reset, which clears GRBL's G92 too (G54…G59 stay: the
+        # station sets none, so they are taken as 0).
+        now = () if report.state == "Hold" else report.wco or ()
+        shift = {
+            name: self._offset(self._origin, i) - self._offset(now, i)
+            for i, name in enumerate(axes)
+        }
+        state = replace(planned, position={a: v + shift[a] for a, v in planned.position.items()})
+        way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
+        for line in preamble(state, stream.settings, way_back, self._restore(planned, start, now)):
             session.send_line(line, "resume")
         runner.note(
             f"Resuming at {program[start].source}: {note}; machine set up again "
@@ -320,6 +366,35 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
+
+    def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
+        """``G92`` setting again the work offset the job needs here, if the board lost it.
+
+        A board that reset (GRBL forgets G92; a USB board resets when its port
+        reopens) would run the rest of the file shifted.  Once the machine stands
+        at the resume point, ``G92`` calls it the file's work position there, which
+        gives back the offset the job began with plus the file's own.  Only on a
+        board that reports its offset (GRBL).
+        """
+        session = self.session
+        program = self.runner.program
+        if session is None or session.work_offset is None or program is None:
+            return []
+        axes = list(planned.position)
+        names = [a.name for a in self.runner.station.profile.axes]
+        own = file_offset(program, start, names)
+        wanted = {a: self._offset(self._origin, names.index(a)) + own[a] for a in axes}
+        if all(abs(self._offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
+            return []
+        return ["G92 " + " ".join(f"{a}{planned.position[a] - own[a]:.3f}" for a in axes)]
+
+    def _here(self, report: StatusReport) -> tuple[float, ...]:
+        """Where the machine stands in the program's coordinates (machine less the origin)."""
+        return tuple(m - self._offset(self._origin, i) for i, m in enumerate(report.mpos))
+
+    @staticmethod
+    def _offset(offsets: Sequence[float], axis: int) -> float:
+        return offsets[axis] if axis < len(offsets) else 0.0
 
     @staticmethod
     def _sent_upto(stream: GcodeStream, start: int) -> int:

@@ -33,13 +33,14 @@ feed of that point.
 from __future__ import annotations
 
 import math
+import re
 from collections import deque
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from app.jobs.program import OpKind, Program
+from app.jobs.program import OpKind, Program, ProgramPath
 from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
@@ -88,6 +89,73 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     last_down = downs[np.searchsorted(downs, index) - 1] if np.searchsorted(downs, index) else -1
     last_up = ups[np.searchsorted(ups, index) - 1] if np.searchsorted(ups, index) else -1
     return ResumeState(position, pen_down=bool(last_down > last_up))
+
+
+_COMMENT = re.compile(r"\([^)]*\)|;.*")
+_WORD = re.compile(r"([A-Za-z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+#: What a G92 line has (a literal search: a word pattern would be 20 times slower); lines
+#: where it is a coordinate's digits are told apart by their words.
+_G92_TEXT = re.compile(r"92(?![0-9])")
+
+
+def _position_before(
+    program: Program, path: ProgramPath | None, index: int, axes: Sequence[str]
+) -> np.ndarray:
+    """Where the program stands before operation ``index`` (NaN where it is not known)."""
+    data = getattr(program, "data", None)
+    if path is None and data is not None and index > 0:
+        row: np.ndarray = data.column_values(data.positions[index - 1 : index], axes)[0]
+        return row
+    if path is None:
+        return np.full(len(axes), np.nan)
+    first = int(np.searchsorted(path.ops, index, side="left"))
+    return path.coords[first - 1] if first else np.full(len(axes), np.nan)
+
+
+def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, float]:
+    """The file's own ``G92`` offset in force before operation ``index``, per axis.
+
+    As the loader applies it (GRBL's rule: program position minus the value
+    given; ``G92.1`` clears it; a bare ``G92``, where the machine takes it, calls
+    here 0), in the program's coordinates, so that program position minus it
+    is the file's work position.  0 for programs that are not G-code files.
+    Values are taken as millimetres (a ``G92`` under ``G20`` is not converted).
+    """
+    offset = dict.fromkeys(axes, 0.0)
+    data = getattr(program, "data", None)
+    texts = getattr(data, "texts", None)
+    if not isinstance(texts, list) or index <= 0:
+        return offset
+    # One regex pass over the text before ``index`` (a resume on a file of a million lines
+    # must not hold the GUI thread), the line of each hit counted from the one before.
+    joined = "\n".join(texts[:index])
+    candidates: list[int] = []
+    line, at = 0, 0
+    for hit in _G92_TEXT.finditer(joined):
+        line += joined.count("\n", at, hit.start())
+        at = hit.start()
+        if not candidates or candidates[-1] != line:
+            candidates.append(line)
+    if not candidates:
+        return offset
+    path = None if hasattr(data, "positions") else program.path(axes)
+    for k in candidates:
+        words = [(w.upper(), float(v)) for w, v in _WORD.findall(_COMMENT.sub("", texts[k]))]
+        codes = {v for w, v in words if w == "G"}
+        if 92.1 in codes:
+            offset = dict.fromkeys(axes, 0.0)
+            continue
+        if 92.0 not in codes:
+            continue
+        here = _position_before(program, path, k, axes)
+        given = {w: v for w, v in words if w in offset}
+        for i, axis in enumerate(axes):
+            where = 0.0 if math.isnan(here[i]) else float(here[i])
+            if axis in given:
+                offset[axis] = where - given[axis]
+            elif not given:
+                offset[axis] = where  # a bare G92: here is the origin
+    return offset
 
 
 #: On a cylindrical machine (the string-art winder) axes go back one at a time: the tool
@@ -147,12 +215,16 @@ def retrace(
 
 
 def preamble(
-    state: ResumeState, settings: GcodeSettings, way_back: Sequence[dict[str, float]] = ()
+    state: ResumeState,
+    settings: GcodeSettings,
+    way_back: Sequence[dict[str, float]] = (),
+    restore: Sequence[str] = (),
 ) -> list[str]:
     """Lines that put the machine into ``state`` without drawing or crossing on the way.
 
     ``way_back`` (see :func:`retrace`) is followed when given; otherwise the machine
-    goes straight there — on the winder one axis at a time.
+    goes straight there — on the winder one axis at a time.  ``restore`` goes out
+    once it is there (the work offset a reset took, set again).
     """
     lines = [settings.pen_up, "G90"]
     if way_back:
@@ -163,6 +235,7 @@ def preamble(
         lines += [f"G0 {a}{state.position[a]:.3f}" for a in ordered]
     elif state.position:
         lines.append("G0 " + " ".join(f"{a}{v:.3f}" for a, v in state.position.items()))
+    lines += restore
     if state.pen_down:
         lines.append(settings.pen_down)
     if state.relative:

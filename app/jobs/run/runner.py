@@ -202,7 +202,13 @@ class JobRunner(QObject):
         touches nothing of the runner or the station.
         """
         profile = self.station.profile
-        limits = profile.travel_limits()
+        # A job's coordinates are work coordinates (GRBL adds its G92 offset to them): the
+        # travel, in machine coordinates, is checked shifted by the offset the machine has.
+        offsets = {axis.name: axis.offset for axis in self.station.model.axes}
+        limits = {
+            name: (low - offsets.get(name, 0.0), high - offsets.get(name, 0.0))
+            for name, (low, high) in profile.travel_limits().items()
+        }
         refusals = self._driver.refusals
         timing = self._estimate_inputs()
 
@@ -578,8 +584,8 @@ class JobRunner(QObject):
         away = []
         for name in program.start_relative:
             axis = next((i for i, a in enumerate(model.axes) if a.name == name), None)
-            if axis is not None and abs(model.axes[axis].position) > START_TOLERANCE:
-                away.append(f"{name}{model.axes[axis].position:.3f}")
+            if axis is not None and abs(model.axes[axis].work_position) > START_TOLERANCE:
+                away.append(f"{name}{model.axes[axis].work_position:.3f}")
         if not away:
             return False
         axes = ", ".join(program.start_relative)
@@ -686,7 +692,7 @@ class JobRunner(QObject):
         model = self.station.model
         session = self.station.session
         profile = self.station.profile
-        start = {axis.name: axis.position for axis in model.axes}
+        start = {axis.name: axis.work_position for axis in model.axes}
         parameters = parameters_from_model(model)
         period_s = (session.period_ms if session is not None else self.station.period_ms) / 1000
         fast = session.fast_selected if session is not None else True

@@ -28,6 +28,9 @@ class LineMotion:
 
     targets: Mapping[str, float]
     relative_after: bool
+    #: The targets are machine coordinates (``G53``); otherwise work coordinates (GRBL adds
+    #: its work offset to them).
+    machine: bool = False
 
 
 def line_motion(
@@ -59,4 +62,4 @@ def line_motion(
         value = number * scale
         here = position.get(letter, 0.0)
         targets[letter] = here + value if mode and not machine else value
-    return LineMotion(targets, after)
+    return LineMotion(targets, after, machine)

@@ -51,6 +51,7 @@ from protocol.gcode.codec import (
     StatusReport,
     encode_line,
     make_decoder,
+    with_work_offset,
 )
 from protocol.gcode.streaming import LineStreamer, StreamMode
 
@@ -155,6 +156,8 @@ class GcodeSession(MachineSession):
         #: Whether the last :attr:`reset` was the board's own (a banner nobody here asked
         #: for: its reset button, a power dip), not a soft reset the station sent.
         self.reset_by_device = False
+        #: The board's work coordinate offset last reported (GRBL's WCO:), None before any.
+        self.work_offset: tuple[float, ...] | None = None
         #: Where the steps sent so far take each axis (None: no jog under way).
         self._jog_target: list[float] | None = None
         self._jog_told_end = False
@@ -220,10 +223,14 @@ class GcodeSession(MachineSession):
         except ValueError:
             return None
         axes = tuple(a.name for a in self.model.profile.axes)
-        position = {a.name: a.position for a in self.model.axes}
+        # The line's words are work coordinates (GRBL adds its offset); the travel is the
+        # machine's.
+        position = {a.name: a.work_position for a in self.model.axes}
         motion = line_motion(text, self._relative, position, axes)
         for name, target in motion.targets.items():
-            refusal = self.gate.refuse_target(axes.index(name), target)
+            index = axes.index(name)
+            offset = 0.0 if motion.machine else self.model.axes[index].offset
+            refusal = self.gate.refuse_target(index, target + offset)
             if refusal is not None:
                 return Refusal(f"{text.strip()!r} would move {refusal}")
         return None
@@ -464,12 +471,14 @@ class GcodeSession(MachineSession):
         return True
 
     def move_absolute(self, axis: int, position: float) -> bool:
+        """To the machine position ``position``: sent as the work position GRBL takes it for."""
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
             return False
         if self.gate.refuse(self.gate.refuse_target(axis, position)):
             return False
         name = self.model.profile.axes[axis].name
-        return self.send_line(f"G90 G0 {name}{position:.3f}", "intent")
+        work = position - self.model.axes[axis].offset
+        return self.send_line(f"G90 G0 {name}{work:.3f}", "intent")
 
     def move_relative(self, axis: int, delta: float) -> bool:
         """Sent as the absolute target it reaches, so the machine's distance mode stays G90."""
@@ -583,7 +592,8 @@ class GcodeSession(MachineSession):
             words = " ".join(f"{name}{delta:.3f}" for name, delta, _ in moves)
             line = f"$J=G91 G21 {words} {feed}"
         else:
-            words = " ".join(f"{name}{end:.3f}" for name, _, end in moves)
+            offsets = {a.name: a.offset for a in self.model.axes}
+            words = " ".join(f"{name}{end - offsets[name]:.3f}" for name, _, end in moves)
             line = f"G90 G1 {words} {feed}"
         if self.send_line(line, "jog"):
             self._jog_unanswered += 1
@@ -621,6 +631,8 @@ class GcodeSession(MachineSession):
     def _forget_stream(self, *, by_device: bool) -> list[SentLine]:
         self.reset_by_device = by_device
         self._relative = False  # GRBL's power-on and reset mode is G90
+        # GRBL forgets its G92 offset on a reset; its next report carries the offset it has.
+        self.work_offset = None
         with self.feeder.lock:
             lost = self.streamer.clear()
         self._seen_idle = False
@@ -850,6 +862,11 @@ class GcodeSession(MachineSession):
 
     def _apply_status(self, report: StatusReport, unanswered: list[SentLine] | None = None) -> None:
         self._status_asked_at = None
+        # GRBL sends its work offset (WCO:) only now and then: the last one heard completes
+        # the reports between, so both the machine and the work position are always known.
+        if report.wco is not None:
+            self.work_offset = report.wco
+        report = with_work_offset(report, self.work_offset)
         self.status = report
         if self._reset_requested_at is not None:
             held = report.state == "Hold" and report.substate in (None, "0")
@@ -869,6 +886,7 @@ class GcodeSession(MachineSession):
             self.model.update_axis(
                 axis,
                 position=report.mpos[axis],
+                offset=report.mpos[axis] - report.wpos[axis],
                 status_text=report.state.lower(),
                 moving=moving,
             )

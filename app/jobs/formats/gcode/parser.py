@@ -117,6 +117,9 @@ class Parser:
         self.title = machine_title or QCoreApplication.translate("JobFile", "machine")
         self.z_is_pen = settings.z_is_pen
         self.feed_required = settings.feed_required
+        #: A bare ``G92`` makes the current position the origin (the CoreXY plotter's
+        #: firmware); GRBL refuses it (error:26).
+        self.bare_g92 = settings.bare_g92
         self.dwell_p_seconds = settings.dwell_p_seconds
         #: A G4 with P was read (its unit is worth a note where it is seconds).
         self.dwell_p_seen = False
@@ -454,7 +457,7 @@ class Parser:
                 op.feed = value("F") * st.scale
             axes = [i for i in rest if self._is_axis(words[i].letter)]
             if "G92" in commands or "G92.1" in commands:
-                self._set_offsets(commands, words, axes)
+                self._set_offsets(number, code, commands, words, axes)
             elif "G28" in commands:
                 op.kind, op.motion = MOVE, HOME
                 op.target = dict.fromkeys(range(len(self.columns)), 0.0)
@@ -538,12 +541,38 @@ class Parser:
         return Pending(kind, own.text, translated=True, checked=False)
 
     def _set_offsets(
-        self, commands: Mapping[str, int], words: Sequence[Word], axes: Sequence[int]
+        self,
+        number: int,
+        code: str,
+        commands: Mapping[str, int],
+        words: Sequence[Word],
+        axes: Sequence[int],
     ) -> None:
-        """G92: the current machine position is called the given values from now on."""
+        """G92: the current machine position is called the given values from now on.
+
+        As GRBL keeps it (offset = machine position - given value, per named axis),
+        so the preview and the travel check show where the machine really goes; a
+        bare ``G92`` on a firmware that takes it (the CoreXY plotter's) calls the
+        current position 0 on every axis.
+        """
         st = self.state
         if "G92.1" in commands:
             st.offset = [0.0] * len(st.offset)
+            return
+        if "G92" in commands and not any(self._is_axis(w.letter) for w in words):
+            if not self.bare_g92:
+                self._refuse(
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile", "G92 without axis words (error:26): {0}"
+                    ).format(quoted(code)),
+                    code,
+                )
+                return
+            for c, here in enumerate(st.position):
+                if math.isnan(here):
+                    self.start_relative.add(c)
+                st.offset[c] = 0.0 if math.isnan(here) else here
             return
         for index in axes:
             word = words[index]
