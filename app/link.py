@@ -75,6 +75,15 @@ class Link(QObject):
         self.transport.write(data)
         self.dataSent.emit(data)
 
+    def write_from_tap(self, pieces: list[bytes]) -> None:
+        """:meth:`write` for the tap, where the bytes were read: all in one write, no other
+        thread woken (the serial port's reader writes them itself), then told piece by piece."""
+        if not self.transport.is_open:
+            return
+        self.transport.write_from_listener(b"".join(pieces))
+        for data in pieces:
+            self.dataSent.emit(data)
+
     @property
     def is_open(self) -> bool:
         return self.transport.is_open

@@ -83,7 +83,8 @@ class Run:
     def describe(self, who: str) -> str:
         return (
             f"{who}: {self.sent / self.elapsed:,.0f} bytes/s = {self.share:.1%} of the wire, "
-            f"{self.elapsed:.2f} s; processor per line {self.sender_cpu / self.lines * 1000:.3f} ms "
+            f"{self.elapsed:.2f} s; processor per line "
+            f"{self.sender_cpu / self.lines * 1000:.3f} ms "
             f"(emulator {self.emulator_cpu / self.lines * 1000:.3f} ms) {self.load}"
         )
 
@@ -270,9 +271,9 @@ def _peer(lines: list[str]) -> Run:
     assert gcode is not None
     with _emulator() as (path, pid):
         emulator_cpu = process_cpu_s(pid)
+        command = [sys.executable, str(Path(__file__)), "--peer-counting", path]
         child = subprocess.run(
-            [sys.executable, str(Path(__file__)), "--peer-counting", path, str(len(lines))]
-            + [str(gcode.rx_buffer)],
+            [*command, str(len(lines)), str(gcode.rx_buffer)],
             cwd=ROOT,
             check=True,
             capture_output=True,
@@ -294,7 +295,8 @@ def bench_gcode_streaming() -> list[str]:
         f"{len(lines)} lines of ~{sum(len(x) + 1 for x in lines) / len(lines):.0f} bytes, "
         "the session alone:",
         "  " + counting.describe("character counting") + " (goal >= 90 %)",
-        "  " + ping_pong.describe("ping-pong")
+        "  "
+        + ping_pong.describe("ping-pong")
         + f"; counting is {counting.share / ping_pong.share:.1f}x ping-pong (goal >= 2x)",
     ]
 
@@ -309,7 +311,8 @@ def bench_gcode_job_streaming() -> list[str]:
         "(runner + jobs dock, counting; until the machine is seen idle) beside grbl's "
         "stream.py character counting (reimplemented, its own process):",
         "  " + job.describe("job") + " (goals >= 95 % quiet, >= 85 % loaded; <= 0.3 ms a line)",
-        "  " + peer.describe("stream.py counting")
+        "  "
+        + peer.describe("stream.py counting")
         + f"; the job is {job.share / peer.share:.0%} of it",
     ]
 
