@@ -178,6 +178,13 @@ def _run_as_job(
         # The window's own event loop, waiting in the system as the application's does
         # (a loop of processEvents would spin, holding the interpreter lock the port's
         # reader thread needs for every reply).
+        said: list[str] = []
+        station.model.message.connect(said.append)
+        runner.message.connect(said.append)
+        model = station.model
+        model.linkStateChanged.connect(
+            lambda state: said.append(f"link {state.name.lower()} {model.link_detail}".strip())
+        )
         loop = QEventLoop()
         runner.stateChanged.connect(
             lambda state: loop.quit() if state is not JobState.RUNNING else None
@@ -193,7 +200,7 @@ def _run_as_job(
         elapsed = time.perf_counter() - start
         cpu, emulator_cpu = time.process_time() - cpu, process_cpu_s(emulator_pid) - emulator_cpu
         if runner.state is not JobState.DONE:
-            raise RuntimeError(f"job ended {runner.state}: {dock.messages.toPlainText()}")
+            raise RuntimeError(f"job ended {runner.state}: {' / '.join(said)}")
         dock.close()
         dock.deleteLater()
         runner.deleteLater()

@@ -128,7 +128,7 @@ def clock_text(seconds: float | None) -> str:
     return f"{hours}:{minutes:02d}:{secs:02d}" if hours else f"{minutes:02d}:{secs:02d}"
 
 
-#: While a job runs, the progress bar and count move at most this often (ms).
+# While a job runs, the progress bar and count move at most this often (ms).
 PROGRESS_BAR_MS = 100
 
 
@@ -180,7 +180,7 @@ class JobsDock(QDockWidget):
             throttle_ms=DEFAULT_THROTTLE_MS if throttle_ms is None else throttle_ms,
         )
         self.preview.setObjectName("job_preview")
-        #: While a job runs the bar and count move at most every _bar_ms (0: at once).
+        # While a job runs the bar and count move at most every _bar_ms (0: at once).
         self._bar_ms = PROGRESS_BAR_MS if throttle_ms is None or throttle_ms > 0 else 0
         self._bar_shown = QElapsedTimer()
         self._bar_timer = QTimer(self)
