@@ -230,9 +230,11 @@ class SerialTransport(Transport):
         Streaming (a G-code job) writes the next line as an answer is read;
         waking the writer thread for it cost a thread switch, and under load a
         wait for the interpreter, on every line.  Order is kept: with bytes in
-        the outbox, or the writer handing some over, these go behind them.  A
-        failed write is left for the reader, as the writer's is.  Any other
-        thread gets :meth:`write` (only the reader may block on the port).
+        the outbox, or the writer handing some over, these go behind them.  The
+        reader never waits for the port (its caller may hold a lock the window's
+        thread wants): on POSIX what the port does not take at once is left to
+        the writer, behind.  A failed write is left for the reader, as the
+        writer's is.  Any other thread gets :meth:`write`.
         """
         attempt = self._attempt
         if attempt is None or attempt.port is None or attempt.ended:
@@ -240,7 +242,10 @@ class SerialTransport(Transport):
         if not attempt.threads or threading.current_thread() is not attempt.threads[0]:
             self.write(data)
             return
-        with attempt.writing:
+        if not attempt.writing.acquire(blocking=False):  # the writer is handing bytes over
+            self.write(data)
+            return
+        try:
             with attempt.counting:
                 if attempt.queued:
                     attempt.queued += 1
@@ -248,10 +253,21 @@ class SerialTransport(Transport):
                     return
             if attempt.write_error is not None or attempt.stop.is_set():
                 return
+            port = attempt.port
+            fd = getattr(port, "fd", None)
+            if not isinstance(fd, int):
+                port.write(data)  # no descriptor of its own (not POSIX): pyserial's write
+                return
             try:
-                attempt.port.write(data)
-            except (serial.SerialException, OSError) as exc:
-                attempt.write_error = exc
+                sent = os.write(fd, data)
+            except BlockingIOError:
+                sent = 0
+            if sent < len(data):
+                self.write(data[sent:])
+        except (serial.SerialException, OSError) as exc:
+            attempt.write_error = exc
+        finally:
+            attempt.writing.release()
 
     # --- the threads -----------------------------------------------------------
 
