@@ -10,9 +10,10 @@ are delivered directly, so tests stay synchronous and deterministic.
 from __future__ import annotations
 
 import sys
+import threading
 from collections.abc import Callable
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QObject, Qt, QThread, Signal
 
 from protocol.transport.base import Transport
 
@@ -30,11 +31,17 @@ class Link(QObject):
     dataSent = Signal(bytes)  # exactly what was handed to the transport (for the TX log)
     #: What the tap made of received bytes (see :meth:`set_tap`), instead of ``dataReceived``.
     received = Signal(object)
+    #: The tap's results wait in the inbox (emitted once per batch, from the reader thread).
+    _inboxFilled = Signal()
 
     def __init__(self, transport: Transport, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.transport = transport
         self._tap: Callable[[bytes], object] | None = None
+        self._inbox: list[object] = []
+        self._inbox_lock = threading.Lock()
+        self._inbox_posted = False
+        self._inboxFilled.connect(self._deliver, Qt.ConnectionType.QueuedConnection)
         transport.set_listener(self)
 
     def set_tap(self, tap: Callable[[bytes], object] | None) -> None:
@@ -54,10 +61,29 @@ class Link(QObject):
 
     def data_received(self, data: bytes) -> None:
         tap = self._tap
-        if tap is not None:
-            self.received.emit(tap(data))
-        else:
+        if tap is None:
             self.dataReceived.emit(data)
+            return
+        result = tap(data)
+        if QThread.currentThread() is self.thread():
+            self.received.emit(result)  # a transport run on this thread: at once, as before
+            return
+        # From the reader thread: one wake-up of the window's thread per batch.  While it
+        # is busy the results gather here and are told in order, all before any later
+        # event of this link (a loss is emitted after them, so queued behind the wake-up).
+        with self._inbox_lock:
+            self._inbox.append(result)
+            if self._inbox_posted:
+                return
+            self._inbox_posted = True
+        self._inboxFilled.emit()
+
+    def _deliver(self) -> None:
+        with self._inbox_lock:
+            results, self._inbox = self._inbox, []
+            self._inbox_posted = False
+        for result in results:
+            self.received.emit(result)
 
     def connection_lost(self, reason: str | None) -> None:
         self.disconnected.emit(reason)
@@ -74,6 +100,15 @@ class Link(QObject):
             return
         self.transport.write(data)
         self.dataSent.emit(data)
+
+    def write_from_tap(self, pieces: list[bytes]) -> None:
+        """:meth:`write` for the tap, where the bytes were read: all in one write, no other
+        thread woken (the serial port's reader writes them itself), then told piece by piece."""
+        if not self.transport.is_open:
+            return
+        self.transport.write_from_listener(b"".join(pieces))
+        for data in pieces:
+            self.dataSent.emit(data)
 
     @property
     def is_open(self) -> bool:

@@ -1,31 +1,51 @@
-"""G-code streaming rate over a pty paced at 115200 baud: character counting vs ping-pong.
+"""G-code streaming rate over a pty paced at 115200 baud: the station against grbl's method.
 
 A pty has no speed, so the emulator runs with ``--baud 115200`` (10 bits a
 byte, 11 520 bytes/s each way) in real time, parsing lines once per 5 ms
 control cycle as the firmware does.  The lines are moves to where the pen
 already stands, so motion is never the bottleneck: the question is how well
 the sender keeps the wire busy.
-The station's G-code session streams the same short lines both ways; the
-figure is line bytes delivered per second as a share of the wire's rate.
-Run by ``tests/benchmark.py``.
+
+Two rows (``tests/benchmark.py --only gcode_streaming,gcode_job_streaming``):
+
+* ``gcode_streaming`` — the station's G-code session alone streams short lines
+  with character counting and with ping-pong;
+* ``gcode_job_streaming`` — 10 000 such lines run as a job (runner + jobs dock in
+  the window's own event loop, until the machine is seen idle), and in the same
+  run the peer: grbl's ``stream.py`` character counting, reimplemented here
+  (:func:`stream_counting`), as a separate plain process on the same emulator.
+  Beside each rate: processor time per line of the sender's process (the
+  station: every thread of this process; the peer: its own process) and of the
+  emulator's process, measured apart (``/proc/<pid>/stat``), and the load average.
+
+Run by ``tests/benchmark.py``; ``python tests/bench_streaming.py --peer-counting PATH
+COUNT RX`` is the peer's own process.
 """
 
 from __future__ import annotations
 
+import json
 import os
+import subprocess
 import sys
 import time
-from dataclasses import replace
+from collections import deque
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from tests.helpers.emulator_process import emulator_on_pty  # noqa: E402
+from tests.helpers.emulator_process import device_path, start_emulator, stop  # noqa: E402
 
 BAUD = 115200
 WIRE_BYTES_PER_S = BAUD / 10
+PROFILE = "corexy-plotter"
+#: Lines of the job row (the issue's figure).
+JOB_LINES = 10_000
 
 
 def _lines(count: int) -> list[str]:
@@ -33,8 +53,54 @@ def _lines(count: int) -> list[str]:
     return ["G1 X12.34 Y56.78"] * count
 
 
-def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> tuple[float, int]:
-    """Seconds to get every line answered, and the line bytes sent, in ``mode``.
+def _load() -> str:
+    one, five, _ = os.getloadavg()
+    return f"[load {one:.2f}/{five:.2f}]"
+
+
+def process_cpu_s(pid: int) -> float:
+    """User + system processor seconds of process ``pid`` so far (Linux ``/proc``)."""
+    with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+@dataclass(frozen=True)
+class Run:
+    """One streaming run: wall seconds, line bytes, and processor seconds on each side."""
+
+    elapsed: float
+    sent: int
+    lines: int
+    sender_cpu: float
+    emulator_cpu: float
+    load: str
+
+    @property
+    def share(self) -> float:
+        return self.sent / self.elapsed / WIRE_BYTES_PER_S
+
+    def describe(self, who: str) -> str:
+        return (
+            f"{who}: {self.sent / self.elapsed:,.0f} bytes/s = {self.share:.1%} of the wire, "
+            f"{self.elapsed:.2f} s; processor per line "
+            f"{self.sender_cpu / self.lines * 1000:.3f} ms "
+            f"(emulator {self.emulator_cpu / self.lines * 1000:.3f} ms) {self.load}"
+        )
+
+
+@contextmanager
+def _emulator() -> Iterator[tuple[str, int]]:
+    """A paced emulator of the plotter: its device path and process id."""
+    process = start_emulator("--profile", PROFILE, "--baud", str(BAUD))
+    try:
+        yield device_path(process), process.pid
+    finally:
+        stop(process)
+
+
+def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> Run:
+    """Stream ``lines`` through the station in ``mode`` until every one is answered.
 
     ``as_job``: the lines are a G-code file run by the job runner with the jobs dock
     showing it (progress, preview, the operation under way), as an operator runs it.
@@ -46,10 +112,10 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> tuple[float
     from app.station import Station
 
     app = QApplication.instance() or QApplication([])
-    profile = load_profile("corexy-plotter")
+    profile = load_profile(PROFILE)
     assert profile.gcode is not None
     profile = replace(profile, gcode=replace(profile.gcode, streaming=mode))
-    with emulator_on_pty("--profile", "corexy-plotter", "--baud", str(BAUD)) as path:
+    with _emulator() as (path, pid):
         station = Station(profile)
         try:
             station.connect_serial(path)
@@ -67,8 +133,9 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> tuple[float
                 app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 5)
             answered[0] = 0
             if as_job:
-                elapsed = _run_as_job(app, station, lines)
+                elapsed, cpu, emulator_cpu = _run_as_job(app, station, lines, pid)
             else:
+                cpu, emulator_cpu = time.process_time(), process_cpu_s(pid)
                 start = time.perf_counter()
                 for line in lines:
                     session.send_line(line, "console")
@@ -77,13 +144,18 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> tuple[float
                     if time.perf_counter() - start > 300:
                         raise RuntimeError(f"only {answered[0]} of {len(lines)} answered")
                 elapsed = time.perf_counter() - start
+                cpu, emulator_cpu = time.process_time() - cpu, process_cpu_s(pid) - emulator_cpu
         finally:
             station.shutdown()
-    return elapsed, sum(len(line) + 1 for line in lines)
+    sent = sum(len(line) + 1 for line in lines)
+    return Run(elapsed, sent, len(lines), cpu, emulator_cpu, _load())
 
 
-def _run_as_job(app: object, station: object, lines: list[str]) -> float:
-    """Seconds from Run to the job done (all answered and the machine seen idle)."""
+def _run_as_job(
+    app: object, station: object, lines: list[str], emulator_pid: int
+) -> tuple[float, float, float]:
+    """Seconds from Run to the job done (all answered and the machine seen idle), and the
+    processor seconds this process and the emulator's spent meanwhile."""
     import tempfile
 
     from PySide6.QtCore import QEventLoop, QTimer
@@ -106,11 +178,19 @@ def _run_as_job(app: object, station: object, lines: list[str]) -> float:
         # The window's own event loop, waiting in the system as the application's does
         # (a loop of processEvents would spin, holding the interpreter lock the port's
         # reader thread needs for every reply).
+        said: list[str] = []
+        station.model.message.connect(said.append)
+        runner.message.connect(said.append)
+        model = station.model
+        model.linkStateChanged.connect(
+            lambda state: said.append(f"link {state.name.lower()} {model.link_detail}".strip())
+        )
         loop = QEventLoop()
         runner.stateChanged.connect(
             lambda state: loop.quit() if state is not JobState.RUNNING else None
         )
         QTimer.singleShot(300_000, loop.quit)
+        cpu, emulator_cpu = time.process_time(), process_cpu_s(emulator_pid)
         start = time.perf_counter()
         runner.start()
         if runner.state is JobState.RUNNING:
@@ -118,42 +198,141 @@ def _run_as_job(app: object, station: object, lines: list[str]) -> float:
         if runner.state is JobState.RUNNING:
             raise RuntimeError(f"job stuck at {runner.done} of {len(lines)}")
         elapsed = time.perf_counter() - start
+        cpu, emulator_cpu = time.process_time() - cpu, process_cpu_s(emulator_pid) - emulator_cpu
         if runner.state is not JobState.DONE:
-            raise RuntimeError(f"job ended {runner.state}: {dock.messages.toPlainText()}")
+            raise RuntimeError(f"job ended {runner.state}: {' / '.join(said)}")
         dock.close()
         dock.deleteLater()
         runner.deleteLater()
-    return elapsed
+    return elapsed, cpu, emulator_cpu
+
+
+# --- the peer: grbl's stream.py, character counting --------------------------------------
+
+
+def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float, float]:
+    """Stream ``lines`` as grbl's ``stream.py`` does by character counting; (wall, processor) s.
+
+    Written here from the method (GRBL wiki, "Streaming a G-code program"), not
+    copied: remember the length of every line sent and not yet answered, and
+    before each line read replies (a blocking ``readline`` each) while the line
+    would overfill the board's receive buffer or a reply is waiting; each ``ok``
+    or ``error`` frees its line's bytes.  One thread, pyserial, nothing else.
+    The window is the station's (``rx_buffer - 1`` bytes unanswered at most), so
+    the two differ in how they send, not in how much they may.
+    The first line takes the pen there and is waited out (``?`` until Idle),
+    as the station's run does before it is timed.
+    """
+    import serial
+
+    port = serial.Serial(path, BAUD, timeout=2.0)
+    try:
+        port.readline()  # the board's banner (it answers nothing before it)
+        time.sleep(0.05)
+        port.reset_input_buffer()
+
+        def answered(reply: bytes) -> bool:
+            text = reply.strip().lower()
+            return text.startswith(b"ok") or text.startswith(b"error")
+
+        port.write(lines[0].strip().encode() + b"\n")
+        while not answered(port.readline()):
+            pass
+        while True:
+            port.write(b"?")
+            if port.readline().startswith(b"<Idle"):
+                break
+            time.sleep(0.05)
+        time.sleep(0.05)
+        port.reset_input_buffer()
+
+        in_flight: deque[int] = deque()
+        cpu = time.process_time()
+        start = time.perf_counter()
+        for line in lines:
+            block = line.strip().encode() + b"\n"
+            while in_flight and (sum(in_flight) + len(block) >= rx_buffer or port.in_waiting):
+                reply = port.readline()
+                if not reply:
+                    raise RuntimeError("the board stopped answering")
+                if answered(reply):
+                    in_flight.popleft()
+            port.write(block)
+            in_flight.append(len(block))
+        while in_flight:
+            reply = port.readline()
+            if not reply:
+                raise RuntimeError("the board stopped answering")
+            if answered(reply):
+                in_flight.popleft()
+        return time.perf_counter() - start, time.process_time() - cpu
+    finally:
+        port.close()
+
+
+def _peer(lines: list[str]) -> Run:
+    """The peer in a process of its own against a fresh emulator, as it would be run."""
+    from app.profiles import load_profile
+
+    gcode = load_profile(PROFILE).gcode
+    assert gcode is not None
+    with _emulator() as (path, pid):
+        emulator_cpu = process_cpu_s(pid)
+        command = [sys.executable, str(Path(__file__)), "--peer-counting", path]
+        child = subprocess.run(
+            [*command, str(len(lines)), str(gcode.rx_buffer)],
+            cwd=ROOT,
+            check=True,
+            capture_output=True,
+            text=True,
+        )
+        emulator_cpu = process_cpu_s(pid) - emulator_cpu
+    result = json.loads(child.stdout.strip().splitlines()[-1])
+    sent = sum(len(line) + 1 for line in lines)
+    return Run(result["elapsed"], sent, len(lines), result["cpu"], emulator_cpu, _load())
 
 
 def bench_gcode_streaming() -> list[str]:
+    """The session alone: character counting against ping-pong, 2000 short lines."""
     lines = _lines(2000)
-    results: dict[str, float] = {}
-    for mode in ("counting", "ping-pong"):
-        elapsed, sent = _stream(mode, lines)
-        results[mode] = sent / elapsed
-    # The issue's figure: 10 000 short lines as a job, with the load beside it (another
-    # process busy slows the window's thread, which no longer paces the stream).
-    job_lines = _lines(10_000)
-    load_before = os.getloadavg()[0]
-    job_elapsed, job_sent = _stream("counting", job_lines, as_job=True)
-    load_after = os.getloadavg()[0]
-    job = job_sent / job_elapsed
-    counting, ping_pong = results["counting"], results["ping-pong"]
+    counting = _stream("counting", lines)
+    ping_pong = _stream("ping-pong", lines)
     return [
         f"G-code streaming over a pty paced at {BAUD} baud ({WIRE_BYTES_PER_S:.0f} bytes/s), "
-        f"{len(lines)} lines of ~{sum(len(x) + 1 for x in lines) / len(lines):.0f} bytes:",
-        f"  character counting {counting:,.0f} bytes/s = {counting / WIRE_BYTES_PER_S:.0%} "
-        "of the wire (goal >= 90 %)",
-        f"  ping-pong {ping_pong:,.0f} bytes/s = {ping_pong / WIRE_BYTES_PER_S:.0%} of the wire; "
-        f"counting is {counting / ping_pong:.1f}x ping-pong (goal >= 2x)",
-        f"  {len(job_lines)} such lines as a G-code job (runner + jobs dock, counting; until "
-        f"the machine is seen idle): {job:,.0f} bytes/s = {job / WIRE_BYTES_PER_S:.0%} of the "
-        f"wire, {job_elapsed:.1f} s (load average {load_before:.1f} -> {load_after:.1f}; "
-        "goal >= 95 % quiet, >= 85 % loaded)",
+        f"{len(lines)} lines of ~{sum(len(x) + 1 for x in lines) / len(lines):.0f} bytes, "
+        "the session alone:",
+        "  " + counting.describe("character counting") + " (goal >= 90 %)",
+        "  "
+        + ping_pong.describe("ping-pong")
+        + f"; counting is {counting.share / ping_pong.share:.1f}x ping-pong (goal >= 2x)",
     ]
 
 
-if __name__ == "__main__":
-    for text in bench_gcode_streaming():
+def bench_gcode_job_streaming() -> list[str]:
+    """10 000 short lines as a job, and grbl's stream.py method on the same lines, same run."""
+    lines = _lines(JOB_LINES)
+    job = _stream("counting", lines, as_job=True)
+    peer = _peer(lines)
+    return [
+        f"{len(lines):,} short lines over a pty paced at {BAUD} baud, as a G-code job "
+        "(runner + jobs dock, counting; until the machine is seen idle) beside grbl's "
+        "stream.py character counting (reimplemented, its own process):",
+        "  " + job.describe("job") + " (goals >= 95 % quiet, >= 85 % loaded; <= 0.3 ms a line)",
+        "  "
+        + peer.describe("stream.py counting")
+        + f"; the job is {job.share / peer.share:.0%} of it",
+    ]
+
+
+def main(argv: list[str]) -> None:
+    if argv[:1] == ["--peer-counting"]:
+        path, count, rx_buffer = argv[1], int(argv[2]), int(argv[3])
+        elapsed, cpu = stream_counting(path, _lines(count), rx_buffer)
+        print(json.dumps({"elapsed": elapsed, "cpu": cpu}))
+        return
+    for text in bench_gcode_streaming() + bench_gcode_job_streaming():
         print(text)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

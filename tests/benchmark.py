@@ -24,7 +24,7 @@ if str(ROOT) not in sys.path:
 from protocol.clock import ManualClock  # noqa: E402
 from tests.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tests.bench_eta import bench_gcode_eta  # noqa: E402
-from tests.bench_streaming import bench_gcode_streaming  # noqa: E402
+from tests.bench_streaming import bench_gcode_job_streaming, bench_gcode_streaming  # noqa: E402
 from tests.bench_string_art_generator import bench_string_art_generator  # noqa: E402
 from tests.bench_work_offsets import bench_resume_file_offset  # noqa: E402
 
@@ -1054,16 +1054,61 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_string_art_2m_dock,
     bench_huge_arcs,
     bench_gcode_streaming,
+    bench_gcode_job_streaming,
     bench_string_art_generator,
     bench_gcode_eta,
     bench_resume_file_offset,
 ]
 
 
-def main() -> None:
-    for bench in BENCHMARKS:
-        for line in bench():
-            print(line, flush=True)
+def _busy_core() -> Any:
+    """A separate process spinning on one core, for ``--loaded`` (killed by the caller)."""
+    import subprocess
+
+    return subprocess.Popen([sys.executable, "-c", "while True: pass"])
+
+
+def _name(bench: Callable[[], list[str]]) -> str:
+    return bench.__name__.removeprefix("bench_")
+
+
+def main(argv: list[str] | None = None) -> None:
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0] if __doc__ else None)
+    parser.add_argument(
+        "--loaded",
+        action="store_true",
+        help="keep one core busy with a separate process (a busy loop) while measuring",
+    )
+    parser.add_argument(
+        "--only",
+        metavar="NAME[,NAME]",
+        help="run only these rows: " + ", ".join(_name(b) for b in BENCHMARKS),
+    )
+    args = parser.parse_args(argv)
+    chosen = BENCHMARKS
+    if args.only:
+        wanted = [name.strip().removeprefix("bench_") for name in args.only.split(",")]
+        known = {_name(b): b for b in BENCHMARKS}
+        unknown = [name for name in wanted if name not in known]
+        if unknown:
+            parser.error(f"no such row: {', '.join(unknown)} (rows: {', '.join(known)})")
+        chosen = [known[name] for name in wanted]
+    busy = _busy_core() if args.loaded else None
+    try:
+        if busy is not None:
+            time.sleep(1.0)  # let it take its core before the first figure
+            print(f"--loaded: one core kept busy by process {busy.pid} {_load()}", flush=True)
+        for bench in chosen:
+            for line in bench():
+                # Every figure with the load it was measured under (rows that measure it
+                # themselves, before and after, say so already).
+                print(line if "[load" in line else f"{line} {_load()}", flush=True)
+    finally:
+        if busy is not None:
+            busy.kill()
+            busy.wait()
 
 
 if __name__ == "__main__":

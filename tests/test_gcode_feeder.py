@@ -145,3 +145,20 @@ def test_a_fault_reading_the_replies_stops_the_machine_and_sends_nothing_queued(
         assert any("could not be read" in text and "decoder bug" in text for text in messages)
     finally:
         harness.close()
+
+
+def test_the_lines_an_answer_lets_go_are_written_where_it_was_read_in_one_write() -> None:
+    """On the reader thread the freed lines go in one write (one system call, no thread woken);
+    lines the window's thread pumps still go through the queued write, one by one."""
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, 20)
+    queued: list[bytes] = []
+    here: list[list[bytes]] = []
+    feeder = LineFeeder(streamer, make_decoder(), ManualClock(), queued.append, here.append)
+    for tag, line in enumerate((b"G0 X10 Y10 Z1\n", b"G0 X2\n", b"G0 X3\n", b"G0 X4\n")):
+        streamer.queue(line, tag)
+    assert [raw for raw, _ in feeder.pump()] == [b"G0 X10 Y10 Z1\n"]  # 14 of 19 bytes
+    assert queued == [b"G0 X10 Y10 Z1\n"] and here == []
+    received = feeder.receive(b"ok\r\n")  # 14 bytes freed: the other three fit
+    assert [raw for raw, _ in received.written] == [b"G0 X2\n", b"G0 X3\n", b"G0 X4\n"]
+    assert here == [[b"G0 X2\n", b"G0 X3\n", b"G0 X4\n"]]
+    assert queued == [b"G0 X10 Y10 Z1\n"]

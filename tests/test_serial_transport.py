@@ -558,3 +558,66 @@ def test_what_was_written_just_before_a_close_still_reaches_the_device(pty: Pty)
         assert pty.read(2) == b"!\x18"
         connect(transport)
     transport.close()
+
+
+# --- writing from the reader thread (G-code streaming) ------------------------------
+
+
+class Answering(Recorder):
+    """A listener that writes ``reply`` back from inside ``data_received``, as the feeder does."""
+
+    def __init__(self, transport: SerialTransport, reply: bytes) -> None:
+        super().__init__()
+        self.transport = transport
+        self.reply = reply
+
+    def data_received(self, data: bytes) -> None:
+        self.transport.write_from_listener(self.reply)
+        super().data_received(data)
+
+
+def test_an_answer_written_from_the_reader_goes_out_on_it_after_what_was_queued() -> None:
+    """The next line goes out on the reader thread itself (no other thread woken), but never
+    before bytes an earlier ``write`` queued: a status query, a reset, a line."""
+    writes: list[tuple[bytes, str]] = []
+    hold_first, reply_now = threading.Event(), threading.Event()
+
+    class OrderPort(FakePort):
+        def read(self, size: int = 1) -> bytes:
+            if reply_now.wait(0.05):
+                reply_now.clear()
+                return b"ok\n"
+            return b""
+
+        def write(self, data: bytes) -> int:
+            if data == b"first\n":
+                hold_first.wait(TIMEOUT)  # the writer thread is busy handing it over
+            writes.append((data, threading.current_thread().name))
+            return len(data)
+
+    transport = SerialTransport("/dev/ttyUSB0", serial_factory=lambda *a, **k: OrderPort())
+    listener = Answering(transport, b"next\n")
+    transport.set_listener(listener)
+    transport.open()
+    try:
+        assert listener.made.wait(TIMEOUT)
+        transport.write(b"first\n")  # the writer thread takes it and is held in the port
+        reply_now.set()  # the reader reads "ok" and answers with "next" meanwhile
+        deadline = time.monotonic() + TIMEOUT
+        while reply_now.is_set() and time.monotonic() < deadline:
+            time.sleep(0.01)
+        time.sleep(0.1)
+        assert writes == []  # "next" did not overtake "first"
+        hold_first.set()
+        while len(writes) < 2 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert [data for data, _ in writes] == [b"first\n", b"next\n"]
+
+        reply_now.set()  # nothing queued now: the reader writes the answer itself
+        while len(writes) < 3 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert writes[2] == (b"next\n", "serial-reader")
+    finally:
+        hold_first.set()
+        transport.close()
+    assert_serial_threads_end()

@@ -64,3 +64,35 @@ def test_a_long_done_part_grows_in_frozen_pieces_and_starts_over_on_a_new_run(
     finally:
         preview.close()
         harness.close()
+
+
+def test_the_done_dots_of_a_plain_point_job_grow_append_only(qtbot: QtBot) -> None:
+    """A plain point list gets a dot per point; the done dots are added, never all rebuilt
+    (a rebuild per progress step cost a 10 000-point job several ms a step)."""
+    harness = StationHarness(load_profile("xy-stage"))
+    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(preview)
+    ops = tuple(
+        move(SourceRef("dots.csv", i + 1), X=float(i % 50), Y=float(i // 50)) for i in range(500)
+    )
+    try:
+        preview.set_program(Program("dots", ops))
+        markers = preview.path_geometry.markers  # type: ignore[union-attr]
+        assert len(markers.x) == 500
+        preview.set_done(100)
+        rebuilt: list[object] = []
+        original = preview.done_markers.setData
+        preview.done_markers.setData = lambda *a, **k: rebuilt.append(k) or original(*a, **k)  # type: ignore[method-assign]
+        for done in (150, 151, 400, 500):
+            preview.set_done(done)
+            n = markers.done_count(done)
+            shown = preview.done_markers.data
+            np.testing.assert_array_equal(shown["x"], markers.x[:n])
+            np.testing.assert_array_equal(shown["y"], markers.y[:n])
+        assert rebuilt == []
+        preview.set_done(3)  # a new run: drawn again from the start
+        assert len(rebuilt) == 1
+        assert len(preview.done_markers.data) == markers.done_count(3)
+    finally:
+        preview.close()
+        harness.close()

@@ -122,6 +122,9 @@ DEFAULT_PROFILE = "xy-stage"
 #: cycle, so echoes leave within the 20 ms the contract allows.
 POLL_SECONDS = 0.002
 
+#: Host bytes a paced wire reads ahead of what it has delivered (a pty buffers about this).
+INBOUND_LIMIT = 4096
+
 #: A control line longer than this is nobody's command: it is dropped whole.
 MAX_CONTROL_LINE = 1024
 
@@ -573,6 +576,92 @@ def _flush(fd: int, outbox: bytearray, wire: PacedWire | None = None) -> None:
             wire.gave(written)
 
 
+class PacedLine:
+    """The serving loop's side of a paced wire: bytes in transit each way, and when to wake.
+
+    Waking for every byte the wire carries (87 µs at 115 200 baud) kept the
+    emulator's process busy for a third of a core while a host streamed, on a
+    machine whose other core ran the station.  Here host bytes are read off the
+    pty as soon as they come and handed to the firmware as the wire would have
+    delivered them, by the time its next control cycle runs (it reads none
+    before); replies leave as the wire carries them, the loop waking when the
+    next whole reply line has gone.  So it wakes per cycle, per host write and
+    per reply line.
+    """
+
+    def __init__(self, wire: PacedWire) -> None:
+        self.wire = wire
+        #: Host bytes read off the pty that the wire has not delivered yet.
+        self.inbound = bytearray()
+        self._inbound_waiting = 0
+        self._outbound_waiting = 0
+
+    def timeout(self, firmware: EmulatedDevice, clock: Clock, outbox: bytearray) -> float:
+        """Seconds until the next thing is due: a control cycle, or a reply line carried."""
+        timeout = POLL_SECONDS
+        next_cycle = getattr(firmware, "next_cycle_at", None)
+        if callable(next_cycle):
+            scale = float(getattr(clock, "factor", 1.0))
+            timeout = min(timeout, max(next_cycle() - clock.now(), 0.0) / scale)
+        elif self.inbound:
+            timeout = min(timeout, self.wire.wait_for_byte())
+        if outbox:
+            end = outbox.find(b"\n")
+            count = len(outbox) if end < 0 else end + 1
+            timeout = min(timeout, self.wire.reply_wait(time.monotonic(), count))
+        return timeout
+
+    def deliver(self, firmware: EmulatedDevice) -> None:
+        """Hand the firmware the host bytes the wire has delivered by now."""
+        now = time.monotonic()
+        count = min(self.wire.readable(now, self._inbound_waiting), len(self.inbound))
+        if count:
+            firmware.receive(bytes(self.inbound[:count]))
+            del self.inbound[:count]
+            self.wire.took(count)
+        self._inbound_waiting = len(self.inbound)
+
+    def flush(self, fd: int, outbox: bytearray) -> None:
+        """Write the reply bytes the wire has carried by now."""
+        if outbox:
+            room = min(self.wire.writable(time.monotonic(), self._outbound_waiting), len(outbox))
+            if room > 0:
+                try:
+                    written = os.write(fd, outbox[:room])
+                except BlockingIOError:
+                    outbox.clear()  # nobody reads the terminal: stale replies are worth nothing
+                    written = 0
+                del outbox[:written]
+                self.wire.gave(written)
+        self._outbound_waiting = len(outbox)
+
+
+def pump_paced(
+    firmware: EmulatedDevice,
+    fd: int,
+    clock: Clock,
+    outbox: bytearray,
+    line: PacedLine,
+    controls: ControlChannel | None = None,
+) -> None:
+    """One loop iteration on a paced wire (see :class:`PacedLine`)."""
+    # A host far ahead of the wire is held back by the pty's own buffer, as before.
+    watched = [fd] if len(line.inbound) < INBOUND_LIMIT else []
+    if controls is not None and controls.open:
+        watched.append(controls.fd)
+    readable, _, _ = select.select(watched, [], [], line.timeout(firmware, clock, outbox))
+    if fd in readable:
+        try:
+            line.inbound += os.read(fd, 4096)
+        except BlockingIOError:
+            pass
+    if controls is not None and controls.fd in readable:
+        controls.read()
+    line.deliver(firmware)
+    firmware.run_until(clock.now())
+    line.flush(fd, outbox)
+
+
 def serve(
     firmware: EmulatedDevice,
     fd: int,
@@ -586,9 +675,13 @@ def serve(
     """Run ``firmware`` against the terminal ``fd`` until ``should_stop()``."""
     outbox = bytearray()
     firmware.set_output(outbox.extend)
+    line = PacedLine(wire) if wire is not None else None
     try:
         while not should_stop():
-            pump(firmware, fd, clock, outbox, poll, controls, wire)
+            if line is not None:
+                pump_paced(firmware, fd, clock, outbox, line, controls)
+            else:
+                pump(firmware, fd, clock, outbox, poll, controls)
             if log is not None:
                 log.write_new()
     finally:

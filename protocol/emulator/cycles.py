@@ -41,6 +41,11 @@ class ControlCycles(ABC):
             while self._cycle_time(self._cycles + 1) <= t + _EPS:
                 self._run_cycle()
 
+    def next_cycle_at(self) -> float:
+        """Clock time at which the next control cycle is due (a serving loop sleeps till then)."""
+        with self._lock:
+            return self._cycle_time(self._cycles + 1)
+
     @property
     def time(self) -> float:
         """Clock time at the end of the last control cycle run."""

@@ -26,16 +26,21 @@ class PacedWire:
         self._to_device = _Credit(now)
         self._to_host = _Credit(now)
 
-    def readable(self, now: float) -> int:
-        """Host bytes the device may take off the line now."""
-        return self._to_device.available(now, self.bytes_per_s)
+    def readable(self, now: float, waiting: int = 0) -> int:
+        """Host bytes the device may take off the line now.
+
+        ``waiting``: bytes that were left on the line when bytes were last taken; the
+        line has been carrying them since, so their time counts in full however
+        long ago that was (the serving loop need not wake for every byte).
+        """
+        return self._to_device.available(now, self.bytes_per_s, waiting)
 
     def took(self, count: int) -> None:
         self._to_device.spend(count)
 
-    def writable(self, now: float) -> int:
-        """Reply bytes the line can carry to the host now."""
-        return self._to_host.available(now, self.bytes_per_s)
+    def writable(self, now: float, waiting: int = 0) -> int:
+        """Reply bytes the line can carry to the host now (``waiting``: as for readable)."""
+        return self._to_host.available(now, self.bytes_per_s, waiting)
 
     def gave(self, count: int) -> None:
         self._to_host.spend(count)
@@ -44,16 +49,24 @@ class PacedWire:
         """Seconds until one more byte fits, for the serving loop's select timeout."""
         return 1.0 / self.bytes_per_s
 
+    def reply_wait(self, now: float, count: int) -> float:
+        """Seconds until ``count`` reply bytes (all of them waiting) can have been carried."""
+        short = count - self._to_host.peek(now, self.bytes_per_s, count)
+        return max(short, 0) / self.bytes_per_s
+
 
 class _Credit:
     def __init__(self, now: float) -> None:
         self._bytes = 0.0
         self._at = now
 
-    def available(self, now: float, rate: float) -> int:
-        self._bytes = min(self._bytes + (now - self._at) * rate, MAX_CREDIT_BYTES)
+    def available(self, now: float, rate: float, waiting: int = 0) -> int:
+        self._bytes = self.peek(now, rate, waiting)
         self._at = now
         return int(self._bytes)
+
+    def peek(self, now: float, rate: float, waiting: int = 0) -> float:
+        return min(self._bytes + (now - self._at) * rate, MAX_CREDIT_BYTES + waiting)
 
     def spend(self, count: int) -> None:
         self._bytes -= count

@@ -73,6 +73,16 @@ class Transport(ABC):
     def write(self, data: bytes) -> None:
         """Queue bytes for the device; never blocks. Dropped silently when closed."""
 
+    def write_from_listener(self, data: bytes) -> None:
+        """Bytes for the device, from inside the listener's ``data_received``.
+
+        A transport that reads on a thread of its own may write them there and
+        then, after whatever :meth:`write` queued before (the serial port: an
+        answer's next line goes without waking another thread); by default, and
+        from any other thread, this is :meth:`write`.
+        """
+        self.write(data)
+
     @property
     @abstractmethod
     def is_open(self) -> bool: ...

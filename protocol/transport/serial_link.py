@@ -21,6 +21,7 @@ import errno
 import os
 import queue
 import re
+import select
 import sys
 import threading
 from collections.abc import Callable
@@ -34,6 +35,8 @@ from protocol.transport.base import Transport
 #: How long one read waits for bytes: short enough that a stop request is seen
 #: at once even if cancelling the read fails, long enough not to spin.
 READ_TIMEOUT_S = 0.05
+#: The most one read takes (a reply burst is far less).
+READ_SIZE = 4096
 #: A write that cannot finish in this time means the device stopped taking data;
 #: by then the station's link-health check has declared the link lost anyway.
 WRITE_TIMEOUT_S = 1.0
@@ -137,6 +140,12 @@ class _Attempt:
     write_error: BaseException | None = None
     threads: list[threading.Thread] = field(default_factory=list)
     flushed: threading.Event = field(default_factory=threading.Event)
+    #: Held while bytes are handed to the port (the writer's or the reader's).
+    writing: threading.Lock = field(default_factory=threading.Lock)
+    #: Guards ``queued`` only, never held across I/O (``write`` must not block).
+    counting: threading.Lock = field(default_factory=threading.Lock)
+    #: Data in the outbox the writer has not handed to the port yet.
+    queued: int = 0
 
 
 class SerialTransport(Transport):
@@ -211,7 +220,54 @@ class SerialTransport(Transport):
         attempt = self._attempt
         if attempt is None or attempt.port is None or attempt.ended:
             return
-        attempt.outbox.put(bytes(data))
+        with attempt.counting:
+            attempt.queued += 1
+            attempt.outbox.put(bytes(data))
+
+    def write_from_listener(self, data: bytes) -> None:
+        """On the reader thread: hand ``data`` to the port now, unless queued bytes come first.
+
+        Streaming (a G-code job) writes the next line as an answer is read;
+        waking the writer thread for it cost a thread switch, and under load a
+        wait for the interpreter, on every line.  Order is kept: with bytes in
+        the outbox, or the writer handing some over, these go behind them.  The
+        reader never waits for the port (its caller may hold a lock the window's
+        thread wants): on POSIX what the port does not take at once is left to
+        the writer, behind.  A failed write is left for the reader, as the
+        writer's is.  Any other thread gets :meth:`write`.
+        """
+        attempt = self._attempt
+        if attempt is None or attempt.port is None or attempt.ended:
+            return
+        if not attempt.threads or threading.current_thread() is not attempt.threads[0]:
+            self.write(data)
+            return
+        if not attempt.writing.acquire(blocking=False):  # the writer is handing bytes over
+            self.write(data)
+            return
+        try:
+            with attempt.counting:
+                if attempt.queued:
+                    attempt.queued += 1
+                    attempt.outbox.put(bytes(data))
+                    return
+            if attempt.write_error is not None or attempt.stop.is_set():
+                return
+            port = attempt.port
+            fd = getattr(port, "fd", None)
+            if not isinstance(fd, int):
+                port.write(data)  # no descriptor of its own (not POSIX): pyserial's write
+                return
+            try:
+                sent = os.write(fd, data)
+            except BlockingIOError:
+                sent = 0
+            if sent < len(data):
+                self.write(data[sent:])
+        except (serial.SerialException, OSError) as exc:
+            attempt.write_error = exc
+        finally:
+            attempt.writing.release()
 
     # --- the threads -----------------------------------------------------------
 
@@ -248,12 +304,48 @@ class SerialTransport(Transport):
 
     def _pass_bytes(self, attempt: _Attempt, port: serial.Serial) -> BaseException | None:
         """Read until stopped (None) or until the port or the writer fails (the error)."""
+        fd, abort = getattr(port, "fd", None), getattr(port, "pipe_abort_read_r", None)
+        if isinstance(fd, int) and isinstance(abort, int):
+            return self._pass_bytes_posix(attempt, fd, abort)
         try:
             while not attempt.stop.is_set():
                 if attempt.write_error is not None:
                     return attempt.write_error
                 data = port.read(max(1, port.in_waiting))
                 if data and not attempt.stop.is_set():
+                    self.listener.data_received(data)
+        except (serial.SerialException, OSError) as exc:
+            return exc
+        return None
+
+    def _pass_bytes_posix(self, attempt: _Attempt, fd: int, abort: int) -> BaseException | None:
+        """:meth:`_pass_bytes` on a POSIX port: one wait and one read for whatever has come.
+
+        pyserial's ``in_waiting`` + ``read`` took five system calls for a reply, and the
+        first read only one byte of it; each call lets another thread take the
+        interpreter, and a G-code stream's next line waits for the reply.
+        """
+        try:
+            while not attempt.stop.is_set():
+                if attempt.write_error is not None:
+                    return attempt.write_error
+                ready, _, _ = select.select([fd, abort], [], [], READ_TIMEOUT_S)
+                if abort in ready:
+                    os.read(abort, 1000)  # cancel_read(): the loop's checks say why
+                    continue
+                if fd not in ready:
+                    continue
+                try:
+                    data = os.read(fd, READ_SIZE)
+                except BlockingIOError:
+                    continue
+                if not data:
+                    # pyserial's words for it, which describe_serial_error knows
+                    raise serial.SerialException(
+                        "device reports readiness to read but returned no data "
+                        "(device disconnected or multiple access on port?)"
+                    )
+                if not attempt.stop.is_set():
                     self.listener.data_received(data)
         except (serial.SerialException, OSError) as exc:
             return exc
@@ -268,12 +360,16 @@ class SerialTransport(Transport):
             port = attempt.port
             if port is None:
                 continue
-            try:
-                if data == _FLUSHED:
+            if data == _FLUSHED:
+                with attempt.writing:
                     _quietly(port.flush)
-                    attempt.flushed.set()
-                    continue
-                port.write(data)
+                attempt.flushed.set()
+                continue
+            try:
+                with attempt.writing:
+                    port.write(data)
+                    with attempt.counting:
+                        attempt.queued -= 1
             except (serial.SerialException, OSError) as exc:
                 attempt.write_error = exc
                 _quietly(port.cancel_read)

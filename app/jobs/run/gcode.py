@@ -151,36 +151,41 @@ class GcodeDriver(JobDriver):
 
     def proceed(self) -> None:
         """Send what may be sent now; end, wait or pause when the stream says so."""
+        self._proceed()
+
+    def _proceed(self) -> bool:
+        """:meth:`proceed`; True when it has told the runner the progress (it fed lines)."""
         runner = self.runner
         stream, session = self.stream, self.session
         if stream is None or session is None:
             runner.link_pause()
-            return
+            return False
         if self._confirming:
-            return  # the answer to $G carries on
+            return False  # the answer to $G carries on
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True
                 session.query_status()
-            return  # _on_status carries on
+            return False  # _on_status carries on
         if runner.state is not JobState.RUNNING:
-            return
+            return False
         if runner.single_step and stream.in_flight:
-            return
+            return False
         # Single step: one operation that sends something, then the runner pauses.
         wait = stream.feed(session, 1 if runner.single_step else None)
         self._report(stream)
         if stream.in_flight:
-            return
+            return True
         if wait is not None or stream.sent_all:
             if not session.settled:
-                return  # the session's next status report can show it settled
+                return True  # the session's next status report can show it settled
             if wait is not None:
                 self._report(stream)
                 self._waiting = wait
                 runner.wait_for_operator(wait)
             else:
                 runner.finish()
+        return True
 
     def hold_back(self) -> None:
         """Pausing: take back the lines still queued in the session, not yet on the wire.
@@ -221,11 +226,12 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         if stream is None or sent.origin != "job" or not stream.acknowledge(sent):
             return
-        self._report(stream)
         if (runner.single_step or runner.state is JobState.PAUSING) and not stream.in_flight:
+            self._report(stream)
             runner.pause_reached()
             return
-        self.proceed()
+        if not self._proceed():  # feeding reports the progress itself: once a line, not twice
+            self._report(stream)
 
     def _on_reply_text(self, text: str) -> None:
         """The ``[GC:…]`` answer to the set-up's ``$G``: the job goes on only when it is right."""

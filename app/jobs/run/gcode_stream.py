@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.jobs.program import OpKind, Program, ProgramPath
+from app.jobs.program import Operation, OpKind, Program, ProgramPath
 from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
@@ -272,13 +272,15 @@ class GcodeStream:
 
     # --- what to send --------------------------------------------------------
 
-    def line_for(self, index: int) -> str | None:
-        """The text of operation ``index`` for this machine, None when nothing is sent.
+    def line_for(self, index: int, op: Operation | None = None) -> str | None:
+        """The text of operation ``index`` (``op``, when the caller has it) for this machine,
+        None when nothing is sent.
 
         A G-code file's line goes as written; other programs' moves are rendered at
         their slowest axis's top speed, in the profile's axis order.
         """
-        op = self.program[index]
+        if op is None:
+            op = self.program[index]
         if op.line:
             return render_operation(op, self.settings)
         return render_operation(
@@ -303,7 +305,7 @@ class GcodeStream:
             op = program[index]
             if op.kind is OpKind.WAIT:
                 return index
-            text = self.line_for(index)
+            text = self.line_for(index, op)  # a G-code file builds each operation when asked
             self.next_index += 1
             if text is None:
                 if not self.pending:

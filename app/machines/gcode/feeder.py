@@ -88,12 +88,16 @@ class LineFeeder(Generic[T]):
         decoder: object,
         clock: Clock,
         write: Callable[[bytes], None],
+        write_here: Callable[[list[bytes]], None] | None = None,
     ) -> None:
         self.lock = threading.RLock()
         self.streamer = streamer
         self.decoder = decoder
         self.clock = clock
         self._write = write
+        #: How :meth:`receive` writes the lines an answer let go, on the thread that read:
+        #: all at once (default: one ``write`` each).
+        self._write_here = write_here
         #: A soft reset was sent at this time and its banner has not come yet.
         self.reset_sent_at: float | None = None
         #: Errors and alarms read here that the GUI thread has not seen yet: nothing is
@@ -118,14 +122,21 @@ class LineFeeder(Generic[T]):
                 self.reset_sent_at = sent = None  # a board that says nothing when it resets
             return sent is not None
 
-    def pump(self) -> list[tuple[bytes, T]]:
-        """Write every queued line that fits now; the lines written."""
+    def pump(self, *, here: bool = False) -> list[tuple[bytes, T]]:
+        """Write every queued line that fits now; the lines written.
+
+        ``here``: on the thread that read the answer (:meth:`receive`), in one write.
+        """
         with self.lock:
             if self.halted or self.awaiting_banner():
                 return []
             out = self.streamer.sendable()
-            for raw, _tag in out:
-                self._write(raw)
+            if here and self._write_here is not None:
+                if out:
+                    self._write_here([raw for raw, _tag in out])
+            else:
+                for raw, _tag in out:
+                    self._write(raw)
             return out
 
     def release(self) -> list[tuple[bytes, T]]:
@@ -140,7 +151,7 @@ class LineFeeder(Generic[T]):
         with self.lock:
             try:
                 self._match(data, received)
-                received.written = self.pump()
+                received.written = self.pump(here=True)
             except Exception as exc:  # raised here, it would end the reader thread
                 # The link would go silent for good (no more reads, never "connected"),
                 # and what was matched so far may be wrong: hold, and let the GUI stop.

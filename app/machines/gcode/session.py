@@ -138,7 +138,7 @@ class GcodeSession(MachineSession):
         self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
         #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
         self.feeder: LineFeeder[SentLine] = LineFeeder(
-            self.streamer, self.decoder, clock, link.write
+            self.streamer, self.decoder, clock, link.write, link.write_from_tap
         )
         self.status: StatusReport | None = None
         self.errors = 0

@@ -1,0 +1,36 @@
+"""A tap's results, read on the transport's thread, reach the window's thread in order, batched."""
+
+from __future__ import annotations
+
+import threading
+
+from PySide6.QtCore import QCoreApplication
+from pytestqt.qtbot import QtBot
+
+from app.link import Link
+from tests.helpers.fake_transport import SilentPort
+
+
+def test_tap_results_from_the_reader_arrive_in_order_batched_and_before_the_loss(
+    qtbot: QtBot,
+) -> None:
+    link = Link(SilentPort())
+    link.set_tap(lambda data: data.decode())
+    events: list[str] = []
+    link.received.connect(lambda result: events.append(result))
+    link.disconnected.connect(lambda reason: events.append(f"lost: {reason}"))
+    posted: list[None] = []
+    link._inboxFilled.connect(lambda: posted.append(None))  # counts the wake-ups
+
+    def reader() -> None:  # the window's thread is not running events meanwhile
+        for chunk in (b"ok 1", b"ok 2", b"ok 3"):
+            link.data_received(chunk)
+        link.connection_lost("unplugged")
+
+    thread = threading.Thread(target=reader)
+    thread.start()
+    thread.join()
+    assert events == []
+    QCoreApplication.processEvents()
+    assert events == ["ok 1", "ok 2", "ok 3", "lost: unplugged"]
+    assert len(posted) == 1  # one wake-up of the window's thread for the three reads
