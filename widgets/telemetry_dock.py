@@ -204,7 +204,7 @@ class Trace(QGraphicsObject):
         self._rect = QRectF()
         self._y_range: tuple[float, float] | None = None
         self._t_range: tuple[float, float] | None = None
-        #: The view box the trace sits in, told when the data's bounds change.
+        # The view box the trace sits in, told when the data's bounds change.
         self.view: pg.ViewBox | None = None
 
     def set_points(self, t: FloatArray, y: FloatArray) -> None:
