@@ -39,7 +39,6 @@ from app.profiles import MachineProfile
 from protocol.clock import Clock, MonotonicClock
 from protocol.stage.codec import EchoFrame
 from protocol.transport.base import Transport
-from protocol.transport.ble import BleLoop, BleTransport
 from protocol.transport.loopback import LoopbackTransport
 from protocol.transport.serial_link import SerialTransport
 
@@ -49,6 +48,7 @@ if TYPE_CHECKING:
     from protocol.emulator.gcode_firmware import GcodeFirmware
     from protocol.emulator.stage_firmware import StageFirmware
     from protocol.emulator.usb3_firmware import Usb3Firmware
+    from protocol.transport.ble import BleLoop, BleTransport
 
 # The emulators' modules, imported with the first emulator made (see _emulator_as).
 _STAGE_FIRMWARE = "protocol.emulator.stage_firmware"
@@ -158,8 +158,11 @@ class Station(QObject):
     def device_id(self) -> str | None:
         """What to remember as "the last used device": port path or BLE address."""
         transport = self.link.transport if self.link else None
-        if isinstance(transport, BleTransport):
-            return transport.device.address if transport.device else transport.address
+        ble = sys.modules.get("protocol.transport.ble")  # imported with the first BLE link
+        if ble is not None and isinstance(transport, ble.BleTransport):
+            ble_transport = cast("BleTransport", transport)
+            device = ble_transport.device
+            return device.address if device else ble_transport.address
         if isinstance(transport, SerialTransport):
             return transport.port
         return None
@@ -195,6 +198,8 @@ class Station(QObject):
 
     def connect_ble(self, address: str | None) -> None:
         """Connect to the stage at ``address`` (the last used one), or the strongest found."""
+        from protocol.transport.ble import BleTransport
+
         self.emulator = None
         self.connect_transport(
             BleTransport(
@@ -208,6 +213,8 @@ class Station(QObject):
     def ble_loop(self) -> BleLoop:
         """The asyncio loop thread BLE runs on, started on first use and stopped at shutdown."""
         if self._ble_loop is None:
+            from protocol.transport.ble import BleLoop
+
             self._ble_loop = BleLoop()
         return self._ble_loop
 

@@ -608,9 +608,9 @@ def test_a_message_about_a_failing_link_goes_when_the_link_is_back(
 
 
 def test_the_first_window_imports_no_dock_and_no_plotting() -> None:
-    """The jobs dock (job formats, preview), the plots (pyqtgraph), the developer pane and
-    the emulators load on first use: a fresh interpreter that builds and shows the window
-    has none of them."""
+    """The jobs dock (job formats, preview), the plots (pyqtgraph), the developer pane, the
+    emulators, the BLE transport (bleak, asyncio) and the package metadata load on first
+    use: a fresh interpreter that builds and shows the window has none of them."""
     import subprocess
     import sys
 
@@ -621,7 +621,8 @@ def test_the_first_window_imports_no_dock_and_no_plotting() -> None:
         "s = Station(load_profile('xy-stage')); w = MainWindow(s); w.show(); app.processEvents();"
         "print(' '.join(sorted(m for m in ('pyqtgraph', 'widgets.jobs.dock',"
         " 'widgets.telemetry_dock', 'widgets.developer.pane', 'app.jobs.run.runner',"
-        " 'protocol.emulator.gcode_firmware', 'protocol.emulator.stage_firmware')"
+        " 'protocol.emulator.gcode_firmware', 'protocol.emulator.stage_firmware',"
+        " 'protocol.transport.ble', 'importlib.metadata')"
         " if m in sys.modules))); s.shutdown()"
     )
     root = Path(__file__).resolve().parent.parent
