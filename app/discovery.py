@@ -3,15 +3,24 @@
 Port listing is quick and synchronous; a BLE scan takes seconds and runs on
 the BLE loop thread, so it reports back through a Qt signal and the GUI
 thread never waits for it.
+
+The BLE transport (bleak, asyncio) is imported when a scan or a BLE link
+is first wanted, not with this module: the window's first paint would wait
+for it, and most sessions never use BLE.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
 from PySide6.QtCore import QObject, Signal
 
 from app.profiles import MachineProfile
-from protocol.transport.ble import BleDevice, BleLoop, BleUuids, scan
 from protocol.transport.serial_link import PortInfo, list_ports
+
+if TYPE_CHECKING:
+    from protocol.transport.ble import BleDevice, BleLoop, BleUuids
 
 __all__ = ["BleDevice", "BleScan", "PortInfo", "ble_uuids_for", "serial_ports"]
 
@@ -22,7 +31,32 @@ def serial_ports() -> list[PortInfo]:
     return list_ports()
 
 
+def __getattr__(name: str) -> object:
+    """``BleDevice``, imported from the BLE transport when first asked for."""
+    if name == "BleDevice":
+        from protocol.transport.ble import BleDevice
+
+        return BleDevice
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def scan(
+    loop: BleLoop,
+    *,
+    uuids: BleUuids,
+    name_prefix: str,
+    timeout: float,
+    on_done: Callable[[list[BleDevice] | str], None],
+) -> None:
+    """:func:`protocol.transport.ble.scan`, imported when a scan is first asked for."""
+    from protocol.transport.ble import scan as ble_scan
+
+    ble_scan(loop, uuids=uuids, name_prefix=name_prefix, timeout=timeout, on_done=on_done)
+
+
 def ble_uuids_for(profile: MachineProfile) -> BleUuids:
+    from protocol.transport.ble import BleUuids
+
     link = profile.link
     return BleUuids(link.ble_service_uuid, link.ble_write_uuid, link.ble_notify_uuid)
 

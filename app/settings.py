@@ -174,6 +174,9 @@ GEOMETRY: Spec[QByteArray | None] = Spec("main_window/geometry", None, "window g
 WINDOW_STATE: Spec[QByteArray | None] = Spec("main_window/state", None, "window layout", _blob)
 #: The page shown; the window has fewer, and checks the index again against its own count.
 PAGE = Spec("main_window/page", 0, "a page number within 0…31", _integer(0, 31))
+# The docks shown when the window was last closed, by object name, comma-separated: the
+# window builds its docks on first use, and these at start (None: a state saved before).
+DOCKS_SHOWN: Spec[str | None] = Spec("main_window/docks_shown", None, "dock names", _text)
 #: Excellon steps the jobs dock offers, in inches.
 EXCELLON_STEPS = (1e-4, 1e-3, 1e-5)
 #: The jobs dock's reading options, by option name.
@@ -252,6 +255,7 @@ ALL_SPECS: tuple[Spec[object], ...] = (
     BAUD,
     GEOMETRY,
     WINDOW_STATE,
+    DOCKS_SHOWN,
     PAGE,
     *JOB_OPTIONS.values(),
     *RECENT_JOBS,

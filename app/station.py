@@ -21,6 +21,8 @@ procedure finishes, and the operator is told so.
 from __future__ import annotations
 
 import dataclasses
+import sys
+from typing import TYPE_CHECKING, Any, cast
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
@@ -37,16 +39,24 @@ from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile
 from protocol.clock import Clock, MonotonicClock
 from protocol.drill.timing import DrillTiming
-from protocol.emulator.device import EmulatedDevice
-from protocol.emulator.drill_firmware import DrillFirmware
-from protocol.emulator.gcode_firmware import GcodeFirmware
-from protocol.emulator.stage_firmware import StageFirmware
-from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.stage.codec import EchoFrame
 from protocol.transport.base import Transport
-from protocol.transport.ble import BleLoop, BleTransport
 from protocol.transport.loopback import LoopbackTransport
 from protocol.transport.serial_link import SerialTransport
+
+if TYPE_CHECKING:
+    from protocol.emulator.device import EmulatedDevice
+    from protocol.emulator.drill_firmware import DrillFirmware
+    from protocol.emulator.gcode_firmware import GcodeFirmware
+    from protocol.emulator.stage_firmware import StageFirmware
+    from protocol.emulator.usb3_firmware import Usb3Firmware
+    from protocol.transport.ble import BleLoop, BleTransport
+
+# The emulators' modules, imported with the first emulator made (see _emulator_as).
+_STAGE_FIRMWARE = "protocol.emulator.stage_firmware"
+_USB3_FIRMWARE = "protocol.emulator.usb3_firmware"
+_DRILL_FIRMWARE = "protocol.emulator.drill_firmware"
+_GCODE_FIRMWARE = "protocol.emulator.gcode_firmware"
 
 RECONNECT_DELAYS = (0.5, 1.0, 2.0, 4.0)
 POLL_MS = 100
@@ -121,28 +131,42 @@ class Station(QObject):
     def gcode_session(self) -> GcodeSession | None:
         return self.session if isinstance(self.session, GcodeSession) else None
 
+    def _emulator_as(self, module: str, name: str) -> Any:
+        """The emulator if it is ``module.name``.
+
+        Emulators are imported when one is made (:mod:`app.machines.registry`);
+        a class whose module nobody imported has no instance, so the answer
+        needs no import.
+        """
+        loaded = sys.modules.get(module)
+        kind = getattr(loaded, name, None)
+        return self.emulator if kind is not None and isinstance(self.emulator, kind) else None
+
     @property
     def stage_emulator(self) -> StageFirmware | None:
-        return self.emulator if isinstance(self.emulator, StageFirmware) else None
+        return cast("StageFirmware | None", self._emulator_as(_STAGE_FIRMWARE, "StageFirmware"))
 
     @property
     def usb3_emulator(self) -> Usb3Firmware | None:
-        return self.emulator if isinstance(self.emulator, Usb3Firmware) else None
+        return cast("Usb3Firmware | None", self._emulator_as(_USB3_FIRMWARE, "Usb3Firmware"))
 
     @property
     def drill_emulator(self) -> DrillFirmware | None:
-        return self.emulator if isinstance(self.emulator, DrillFirmware) else None
+        return cast("DrillFirmware | None", self._emulator_as(_DRILL_FIRMWARE, "DrillFirmware"))
 
     @property
     def gcode_emulator(self) -> GcodeFirmware | None:
-        return self.emulator if isinstance(self.emulator, GcodeFirmware) else None
+        return cast("GcodeFirmware | None", self._emulator_as(_GCODE_FIRMWARE, "GcodeFirmware"))
 
     @property
     def device_id(self) -> str | None:
         """What to remember as "the last used device": port path or BLE address."""
         transport = self.link.transport if self.link else None
-        if isinstance(transport, BleTransport):
-            return transport.device.address if transport.device else transport.address
+        ble = sys.modules.get("protocol.transport.ble")  # imported with the first BLE link
+        if ble is not None and isinstance(transport, ble.BleTransport):
+            ble_transport = cast("BleTransport", transport)
+            device = ble_transport.device
+            return device.address if device else ble_transport.address
         if isinstance(transport, SerialTransport):
             return transport.port
         return None
@@ -178,6 +202,8 @@ class Station(QObject):
 
     def connect_ble(self, address: str | None) -> None:
         """Connect to the stage at ``address`` (the last used one), or the strongest found."""
+        from protocol.transport.ble import BleTransport
+
         self.emulator = None
         self.connect_transport(
             BleTransport(
@@ -191,6 +217,8 @@ class Station(QObject):
     def ble_loop(self) -> BleLoop:
         """The asyncio loop thread BLE runs on, started on first use and stopped at shutdown."""
         if self._ble_loop is None:
+            from protocol.transport.ble import BleLoop
+
             self._ble_loop = BleLoop()
         return self._ble_loop
 
@@ -324,8 +352,9 @@ class Station(QObject):
         """
         self.profile = dataclasses.replace(self.profile, drill_timing=timing)
         self.model.profile = self.profile
-        if isinstance(self.emulator, DrillFirmware):
-            self.emulator.set_timing(timing)
+        drill = self.drill_emulator
+        if drill is not None:
+            drill.set_timing(timing)
         self.drillTimingChanged.emit()
 
     def set_period_ms(self, period_ms: int) -> None:

@@ -605,3 +605,78 @@ def test_a_message_about_a_failing_link_goes_when_the_link_is_back(
     harness.station.model.message.emit("hello operator")
     harness.run(0.5)
     assert window.message_label.text() == "hello operator"
+
+
+def test_the_first_window_imports_no_dock_and_no_plotting() -> None:
+    """The jobs dock (job formats, preview), the plots (pyqtgraph), the developer pane, the
+    emulators, the BLE transport (bleak, asyncio) and the package metadata load on first
+    use: a fresh interpreter that builds and shows the window has none of them."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from PySide6.QtWidgets import QApplication; app = QApplication([]);"
+        "from app.profiles import load_profile; from app.station import Station;"
+        "from widgets.main_window import MainWindow;"
+        "s = Station(load_profile('xy-stage')); w = MainWindow(s); w.show(); app.processEvents();"
+        "print(' '.join(sorted(m for m in ('pyqtgraph', 'widgets.jobs.dock',"
+        " 'widgets.telemetry_dock', 'widgets.developer.pane', 'app.jobs.run.runner',"
+        " 'protocol.emulator.gcode_firmware', 'protocol.emulator.stage_firmware',"
+        " 'protocol.transport.ble', 'importlib.metadata')"
+        " if m in sys.modules))); s.shutdown()"
+    )
+    root = Path(__file__).resolve().parent.parent
+    env = {**__import__("os").environ, "QT_QPA_PLATFORM": "offscreen"}
+    result = subprocess.run(
+        [sys.executable, "-c", code], cwd=root, env=env, capture_output=True, text=True, check=True
+    )
+    assert result.stdout.strip() == ""
+
+
+def test_docks_are_built_when_first_shown_with_what_came_before(
+    qtbot: QtBot, harness: StationHarness
+) -> None:
+    window = _open_window(qtbot, harness)
+    assert window._telemetry_dock is None and window._developer_pane is None
+    assert window._jobs_dock is None and window._job_runner is None
+    harness.connect()
+    harness.session.move_absolute(0, 1.0)
+    harness.run(2.0)
+    qtbot.keyClick(window, Qt.Key.Key_T, Qt.KeyboardModifier.ControlModifier)
+    dock = window.telemetry_dock
+    assert dock.isVisible() and window.telemetry_action.isChecked()
+    t, x = dock._curves["X position"].getData()
+    assert len(t) > 10 and x[-1] == 1.0  # recorded before the dock existed
+    qtbot.keyClick(window, Qt.Key.Key_V, Qt.KeyboardModifier.ShiftModifier)
+    pane = window.developer_pane
+    assert pane.isVisible() and window.developer_action.isChecked()
+    assert len(pane.frame_log) > 10  # frames logged before the pane existed
+    # Tabbed with the plots; its own toggle and the menu's entry agree.
+    assert pane in window.tabifiedDockWidgets(dock)
+    pane.toggleViewAction().trigger()
+    assert not pane.isVisible() and not window.developer_action.isChecked()
+    # Stop with no job runner built yet is only a stop.
+    window.jog.stopRequested.emit()
+    assert window._job_runner is None
+
+
+def test_docks_shown_at_close_are_back_at_the_next_start(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    first = _open_window(qtbot, harness, settings=settings)
+    first.telemetry_action.trigger()
+    first.jobs_action.trigger()
+    first.jobs_action.trigger()  # built, then hidden again
+    assert first.telemetry_dock.isVisible() and not first.jobs_dock.isVisible()
+    first.close()
+
+    again = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    second = _open_window(qtbot, harness, settings=again)
+    assert second._telemetry_dock is not None and second._telemetry_dock.isVisible()
+    assert second.telemetry_action.isChecked()
+    assert second._jobs_dock is None and second._developer_pane is None
+    assert not second.jobs_action.isChecked()
+    second.jobs_action.trigger()  # placed where the first window had it
+    assert second.jobs_dock.isVisible()
+    assert second.dockWidgetArea(second.jobs_dock) == Qt.DockWidgetArea.RightDockWidgetArea

@@ -18,10 +18,13 @@ single panel can enforce:
 from __future__ import annotations
 
 import html
+from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import (
     QT_TRANSLATE_NOOP,
+    QCoreApplication,
     QEvent,
     QObject,
     QSettings,
@@ -60,17 +63,15 @@ from PySide6.QtWidgets import (
 )
 
 from app import i18n
+from app.developer.frame_log import FrameLog
 from app.i18n import LANGUAGES
 from app.jobs.names import shown
-from app.jobs.run.runner import JobRunner
 from app.machine import LinkState
-from app.settings import GEOMETRY, PAGE, WINDOW_STATE, StationSettings
+from app.settings import DOCKS_SHOWN, GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
 from app.telemetry import TelemetryRecorder
 from app.version import station_version
 from protocol.drill.timing import DrillTiming
-from widgets.developer.pane import DeveloperPane
-from widgets.jobs.dock import JobsDock
 from widgets.jog_input import JogInput
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
@@ -87,8 +88,15 @@ from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
-from widgets.telemetry_dock import TelemetryDock
 from widgets.theme import PlotColours, ThemeController
+
+if TYPE_CHECKING:
+    from PySide6.QtWidgets import QDockWidget
+
+    from app.jobs.run.runner import JobRunner
+    from widgets.developer.pane import DeveloperPane
+    from widgets.jobs.dock import JobsDock
+    from widgets.telemetry_dock import TelemetryDock
 
 #: How long a status-bar message stays (ms): long enough to read twice.
 MESSAGE_SHOWN_MS = 15_000
@@ -306,9 +314,7 @@ class MainWindow(QMainWindow):
         self._attach_session()
         self._update_lock()
         self._show_link_status()
-        self._build_jobs_dock(checkpoint_dir)
-        self._build_telemetry_dock()
-        self._build_developer_pane()
+        self._build_dock_actions(checkpoint_dir)
         self._build_theme_menu()
         self._build_language_menu()
         self._restore_settings()
@@ -354,47 +360,144 @@ class MainWindow(QMainWindow):
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
 
-    def _build_jobs_dock(self, checkpoint_dir: Path | None) -> None:
-        if checkpoint_dir is None:
-            data = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppDataLocation)
-            checkpoint_dir = Path(data) / "checkpoints"
-        self.job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
-        self.jobs_dock = JobsDock(self.station, self.job_runner, self)
-        gcode_panel = getattr(self, "gcode_panel", None)
-        if isinstance(gcode_panel, GcodePanel):
-            gcode_panel.follow_jobs(self.job_runner)  # the winder's board radius, zeroing by hand
+    def _build_dock_actions(self, checkpoint_dir: Path | None) -> None:
+        """The View menu's entries for the docks; each dock is built when first wanted.
+
+        The jobs dock (job formats, their readers, the preview's pyqtgraph),
+        the telemetry plots and the developer pane are most of what the window
+        would import and build, and none of them is on the first screen:
+        they come when shown (their menu entry or key, a job opened, a test
+        asking for one), or at start when the last session closed with them
+        shown.  What records from the start does so without its dock: the
+        telemetry recorder and the developer pane's frame log are made here,
+        so a dock opened later shows the history since the window opened.
+        """
+        self._checkpoint_dir = checkpoint_dir
+        self._job_runner: JobRunner | None = None
+        self._jobs_dock: JobsDock | None = None
+        self._telemetry_dock: TelemetryDock | None = None
+        self._developer_pane: DeveloperPane | None = None
+        self._colours: PlotColours | None = None
         # Stop ends the job (its checkpoint kept): otherwise a G-code job took the stop's
         # reset for a device reset and carried on, moving the machine again by itself.
-        self.jog.stopRequested.connect(self.job_runner.abort)
-        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_dock)
-        self.jobs_dock.hide()
-        self.jobs_dock.jobOpened.connect(self._remember_job)
-        action = self.jobs_dock.toggleViewAction()
-        action.setShortcut(QKeySequence("Ctrl+J"))
-        self.view_menu.addAction(action)
-
-    def _build_telemetry_dock(self) -> None:
+        self.jog.stopRequested.connect(self._abort_job)
         self.telemetry = TelemetryRecorder(self.station, parent=self)
-        self.telemetry_dock = TelemetryDock(self.telemetry, self)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.telemetry_dock)
-        self.telemetry_dock.hide()
-        action = self.telemetry_dock.toggleViewAction()
-        action.setShortcut(QKeySequence("Ctrl+T"))
-        self.view_menu.addAction(action)
-
-    def _build_developer_pane(self) -> None:
-        """Shift+V shows and hides it, from any focus, like the original tool's extension."""
-        self.developer_pane = DeveloperPane(self.station, self)
-        self.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.developer_pane)
-        # Tabbed with the plots rather than beside them: side by side the two need more
-        # than a 1280 px screen.  Either can still be dragged out to float.
-        self.tabifyDockWidget(self.telemetry_dock, self.developer_pane)
-        self.developer_pane.hide()
-        self.developer_action = self.developer_pane.toggleViewAction()
-        self.developer_action.setShortcut(QKeySequence("Shift+V"))
+        self.frame_log = FrameLog(self.station, parent=self)
+        self.jobs_action = self._dock_action(
+            lambda: QCoreApplication.translate("JobsDock", "Jobs"),
+            "Ctrl+J",
+            lambda: self.jobs_dock,
+        )
+        self.telemetry_action = self._dock_action(
+            lambda: QCoreApplication.translate("TelemetryDock", "Telemetry"),
+            "Ctrl+T",
+            lambda: self.telemetry_dock,
+        )
+        # Shift+V shows and hides it, from any focus, like the original tool's extension.
+        self.developer_action = self._dock_action(
+            lambda: QCoreApplication.translate("DeveloperPane", "Developer"),
+            "Shift+V",
+            lambda: self.developer_pane,
+        )
         self.developer_action.setShortcutContext(Qt.ShortcutContext.WindowShortcut)
         self.addAction(self.developer_action)
-        self.view_menu.addAction(self.developer_action)
+
+    def _dock_action(self, title: Maker, shortcut: str, dock: Callable[[], QDockWidget]) -> QAction:
+        """A checkable View entry standing for a dock's own toggle until the dock is built."""
+        action = QAction(self, checkable=True)
+        self.texts.set(action.setText, title)
+        action.setShortcut(QKeySequence(shortcut))
+        action.triggered.connect(lambda checked: dock().setVisible(checked))
+        self.view_menu.addAction(action)
+        return action
+
+    def _add_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
+        """Place a dock built just now where the last session left it, hidden until asked."""
+        self.addDockWidget(area, dock)
+        if not self.restoreDockWidget(dock):
+            dock.hide()
+        dock.toggleViewAction().toggled.connect(action.setChecked)
+        action.setChecked(not dock.isHidden())
+
+    @property
+    def job_runner(self) -> JobRunner:
+        if self._job_runner is None:
+            from app.jobs.run.runner import JobRunner
+
+            checkpoint_dir = self._checkpoint_dir
+            if checkpoint_dir is None:
+                data = QStandardPaths.writableLocation(
+                    QStandardPaths.StandardLocation.AppDataLocation
+                )
+                checkpoint_dir = Path(data) / "checkpoints"
+            self._job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
+            gcode_panel = getattr(self, "gcode_panel", None)
+            if isinstance(gcode_panel, GcodePanel):
+                # The winder's board radius, zeroing by hand, follows the job loaded.
+                gcode_panel.follow_jobs(self._job_runner)
+        return self._job_runner
+
+    def _abort_job(self) -> None:
+        if self._job_runner is not None:
+            self._job_runner.abort()
+
+    @property
+    def jobs_dock(self) -> JobsDock:
+        if self._jobs_dock is None:
+            from widgets.jobs.dock import JobsDock
+
+            dock = JobsDock(self.station, self.job_runner, self)
+            self._jobs_dock = dock
+            dock.jobOpened.connect(self._remember_job)
+            if self._remembers:
+                dock.restore_options(self._settings.job_options())
+            if self._colours is not None:
+                dock.preview.apply_colours(self._colours)
+            self._add_dock(dock, Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_action)
+        return self._jobs_dock
+
+    @property
+    def telemetry_dock(self) -> TelemetryDock:
+        if self._telemetry_dock is None:
+            from widgets.telemetry_dock import TelemetryDock
+
+            dock = TelemetryDock(self.telemetry, self)
+            self._telemetry_dock = dock
+            if self._colours is not None:
+                dock.apply_colours(self._colours)
+            self._add_dock(dock, Qt.DockWidgetArea.BottomDockWidgetArea, self.telemetry_action)
+            self._tabify_bottom()
+        return self._telemetry_dock
+
+    @property
+    def developer_pane(self) -> DeveloperPane:
+        if self._developer_pane is None:
+            from widgets.developer.pane import DeveloperPane
+
+            pane = DeveloperPane(self.station, self, frame_log=self.frame_log)
+            self._developer_pane = pane
+            self._add_dock(pane, Qt.DockWidgetArea.BottomDockWidgetArea, self.developer_action)
+            self._tabify_bottom()
+        return self._developer_pane
+
+    def _tabify_bottom(self) -> None:
+        """The plots and the developer pane share the bottom as tabs, unless placed otherwise.
+
+        Side by side the two need more than a 1280 px screen.  Either can still
+        be dragged out to float.
+        """
+        telemetry, developer = self._telemetry_dock, self._developer_pane
+        if telemetry is None or developer is None:
+            return
+        bottom = Qt.DockWidgetArea.BottomDockWidgetArea
+        if any(d.isFloating() or self.dockWidgetArea(d) != bottom for d in (telemetry, developer)):
+            return
+        if developer not in self.tabifiedDockWidgets(telemetry):
+            self.tabifyDockWidget(telemetry, developer)
+
+    def _built_docks(self) -> list[QDockWidget]:
+        docks = (self._jobs_dock, self._telemetry_dock, self._developer_pane)
+        return [dock for dock in docks if dock is not None]
 
     def _build_theme_menu(self) -> None:
         """View → Colours: as the desktop says (and when it changes), light or dark; kept."""
@@ -462,8 +565,11 @@ class MainWindow(QMainWindow):
         self.theme.set_choice(choice)
 
     def _apply_colours(self, colours: PlotColours) -> None:
-        self.jobs_dock.preview.apply_colours(colours)
-        self.telemetry_dock.apply_colours(colours)
+        self._colours = colours  # for the docks not built yet
+        if self._jobs_dock is not None:
+            self._jobs_dock.preview.apply_colours(colours)
+        if self._telemetry_dock is not None:
+            self._telemetry_dock.apply_colours(colours)
 
     def _build_status_bar(self) -> None:
         self.link_status = QLabel()
@@ -853,12 +959,22 @@ class MainWindow(QMainWindow):
         if not self._remembers:
             self.resize(980, 640)
             return
-        self.jobs_dock.restore_options(self._settings.job_options())
         geometry = self._settings.read(GEOMETRY)
         if geometry is None or not self.restoreGeometry(geometry):
             self.resize(980, 640)
         state = self._settings.read(WINDOW_STATE)
         if state is not None:
+            # The docks the last session showed are built first, so the state places them;
+            # a state saved before docks were built on demand does not say: all are built.
+            shown_docks = self._settings.read(DOCKS_SHOWN)
+            docks: dict[str, Callable[[], object]] = {
+                "jobs_dock": lambda: self.jobs_dock,
+                "telemetry_dock": lambda: self.telemetry_dock,
+                "developer_pane": lambda: self.developer_pane,
+            }
+            for name, build in docks.items():
+                if shown_docks is None or name in shown_docks.split(","):
+                    build()
             self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
@@ -905,8 +1021,11 @@ class MainWindow(QMainWindow):
             return
         self._settings.write(GEOMETRY, self.saveGeometry())
         self._settings.write(WINDOW_STATE, self.saveState())
+        shown_docks = [dock.objectName() for dock in self._built_docks() if not dock.isHidden()]
+        self._settings.write(DOCKS_SHOWN, ",".join(shown_docks))
         self._settings.write(PAGE, self.menu_panel.current)
-        self._settings.set_job_options(self.jobs_dock.option_values())
+        if self._jobs_dock is not None:
+            self._settings.set_job_options(self._jobs_dock.option_values())
         self._settings.sync()
 
     def _close_when_stopped(self) -> None:

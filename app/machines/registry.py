@@ -2,6 +2,10 @@
 
 The station looks the profile's dialect up here, so a machine family is
 added by registering its session and emulator, not by editing the station.
+
+The emulators are imported when one is made, not with this module: the
+G-code one alone brings its planner and numpy, and the window's first paint
+waits for every import of the station's.
 """
 
 from __future__ import annotations
@@ -19,16 +23,6 @@ from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile
 from protocol.clock import Clock
 from protocol.emulator.device import EmulatedDevice
-from protocol.emulator.drill_firmware import DrillConfig, DrillFirmware
-from protocol.emulator.gcode_firmware import (
-    GcodeConfig,
-    GcodeFirmware,
-    corexy_plotter_config,
-    grbl_plotter_config,
-    string_art_config,
-)
-from protocol.emulator.stage_firmware import StageConfig, StageFirmware
-from protocol.emulator.usb3_firmware import Usb3Firmware
 
 SessionFactory = Callable[[MachineModel, Link, Clock, MachineProfile, int, bool], MachineSession]
 EmulatorFactory = Callable[[Clock, MachineProfile], EmulatedDevice]
@@ -88,19 +82,24 @@ def _gcode_session(
     return GcodeSession(model, link, clock, profile.gcode, autotick=autotick)
 
 
-#: The emulated G-code machine for each kinematics a profile can name.
-GCODE_EMULATORS: dict[str, Callable[[], GcodeConfig]] = {
-    "corexy": corexy_plotter_config,
-    "cartesian": grbl_plotter_config,
-    "cylindrical": string_art_config,
+#: The emulated G-code machine for each kinematics a profile can name: the name of its
+#: configuration in :mod:`protocol.emulator.gcode_firmware`.
+GCODE_EMULATORS: dict[str, str] = {
+    "corexy": "corexy_plotter_config",
+    "cartesian": "grbl_plotter_config",
+    "cylindrical": "string_art_config",
 }
 
 
 def _stage_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    from protocol.emulator.stage_firmware import StageConfig, StageFirmware
+
     return StageFirmware(clock, StageConfig(axes=len(profile.axes)))
 
 
 def _usb3_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    from protocol.emulator.usb3_firmware import Usb3Firmware
+
     return Usb3Firmware(clock)
 
 
@@ -109,6 +108,8 @@ def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
 
     And with the profile's timing constants ([timing], FIDELITY S2-06).
     """
+    from protocol.emulator.drill_firmware import DrillConfig, DrillFirmware
+
     x, y = profile.axes[0], profile.axes[1]
     travel = tuple(round(a.travel * a.steps_per_rev * a.microsteps / a.lead) for a in (x, y))
     config = DrillConfig.with_timing(profile.drill_timing, travel=(travel[0], travel[1]))
@@ -116,8 +117,13 @@ def _drill_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
 
 
 def _gcode_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
+    from protocol.emulator import gcode_firmware
+
     kinematics = profile.gcode.kinematics if profile.gcode is not None else "cartesian"
-    return GcodeFirmware(clock, GCODE_EMULATORS[kinematics]())
+    config: Callable[[], gcode_firmware.GcodeConfig] = getattr(
+        gcode_firmware, GCODE_EMULATORS[kinematics]
+    )
+    return gcode_firmware.GcodeFirmware(clock, config())
 
 
 DIALECTS: dict[str, Dialect] = {

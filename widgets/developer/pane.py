@@ -562,13 +562,22 @@ class DeveloperPane(QDockWidget):
     """
 
     def __init__(
-        self, station: Station, parent: QWidget | None = None, *, log_capacity: int = LOG_CAPACITY
+        self,
+        station: Station,
+        parent: QWidget | None = None,
+        *,
+        log_capacity: int = LOG_CAPACITY,
+        frame_log: FrameLog | None = None,
     ) -> None:
+        """``frame_log``: one already recording (the window keeps one from its start, and
+        builds the pane when first shown); by default the pane starts its own."""
         super().__init__(parent)
         t = self.texts = Texts(self)
         t.set(self.setWindowTitle, lambda: self.tr("Developer"))
         self.setObjectName("developer_pane")  # for QMainWindow.saveState
-        self.frame_log = FrameLog(station, log_capacity, parent=self)
+        if frame_log is None:
+            frame_log = FrameLog(station, log_capacity, parent=self)
+        self.frame_log = frame_log
         self.emulator_controls = EmulatorControls(station, self)
 
         self.simulation = QCheckBox()

@@ -7,6 +7,8 @@ is instant, and a BLE scan reports back through a signal.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
@@ -21,13 +23,16 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.discovery import BAUD_RATES, BleDevice, BleScan, serial_ports
+from app.discovery import BAUD_RATES, BleScan, serial_ports
 from app.machine import LinkState
 from app.profiles import available_profiles
 from app.settings import StationSettings
 from app.station import Station
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.retranslate import Texts
+
+if TYPE_CHECKING:
+    from app.discovery import BleDevice
 
 TRANSPORTS = (
     ("emulator", QT_TRANSLATE_NOOP("ConnectionPanel", "Built-in emulator")),

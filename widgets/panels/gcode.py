@@ -9,6 +9,8 @@ hundreds of thousands); the developer pane's frame log shows everything.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from PySide6.QtWidgets import (
     QGridLayout,
     QHBoxLayout,
@@ -20,14 +22,15 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.jobs.formats.string_art.program import StringArtProgram
-from app.jobs.run.runner import JobRunner
 from app.machines.gcode.session import GcodeSession, SentLine, zeroes_by_hand
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.link_text import axis_status_text
 from widgets.number_field import NumberField, localized
 from widgets.retranslate import Maker, Texts
+
+if TYPE_CHECKING:
+    from app.jobs.run.runner import JobRunner
 from widgets.style import monospace_font
 
 CONSOLE_LINES = 2000
@@ -253,6 +256,9 @@ class GcodePanel(QWidget):
         self._take_board_radius()
 
     def _take_board_radius(self) -> None:
+        # Imported here, not with the page: job formats (numpy) load on first use.
+        from app.jobs.formats.string_art.program import StringArtProgram
+
         program = self._runner.program if self._runner is not None else None
         if isinstance(program, StringArtProgram):
             radius = program.job.params.radius_cm * 10.0
