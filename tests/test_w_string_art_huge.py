@@ -158,8 +158,10 @@ def test_the_source_lines_split_in_pieces_are_the_files_lines(text: str, chunk: 
 
     A piece ends only after an LF, so a CR LF pair is never cut in two and a line
     longer than a piece runs on; whatever the line ends, the result is
-    ``splitlines`` of the whole.
+    ``splitlines`` of the whole (kept as the text and where each line starts).
     """
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(dock_module, "SPLIT_CHUNK_CHARS", chunk)
-        assert dock_module.split_lines(text) == text.splitlines()
+        lines = dock_module.split_lines(text)
+        assert list(lines) == text.splitlines()
+        assert len(lines) == len(text.splitlines())
