@@ -52,7 +52,7 @@ import numpy as np
 import pyqtgraph as pg
 from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
 from PySide6.QtCore import QCoreApplication, QPointF, Qt, QTimer, Signal
-from PySide6.QtWidgets import QGraphicsItem, QHBoxLayout, QMessageBox, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QHBoxLayout, QMessageBox, QVBoxLayout, QWidget
 
 from app.jobs.formats.string_art.geometry import shortest_turn
 from app.jobs.formats.string_art.program import StringArtProgram
@@ -518,9 +518,6 @@ class JobPreview(QWidget):
         for side in ("left", "bottom"):
             # pyqtgraph would otherwise show "(kmm)" or "(µmm)": these are machine millimetres.
             self.plot.getAxis(side).enableAutoSIPrefix(False)
-            # Drawn from a pixmap until their range or size changes: the axes with their
-            # grid and labels were the dearest part of every repaint (a job's progress too).
-            self.plot.getAxis(side).setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         self.apply_colours(LIGHT)
         layout.addWidget(self.plot_widget, 1)
 
