@@ -355,9 +355,9 @@ CONVERT_CHUNK = 65_536
 
 def int_tuple(values: np.ndarray) -> tuple[int, ...]:
     """``tuple(values.tolist())`` in pieces, so the GUI thread gets the lock between them."""
-    out: list[int] = []
+    out: list[int] = [0] * len(values)  # its full size at once: growing it copied it over
     for start in range(0, len(values), CONVERT_CHUNK):
-        out += values[start : start + CONVERT_CHUNK].tolist()
+        out[start : start + CONVERT_CHUNK] = values[start : start + CONVERT_CHUNK].tolist()
     return tuple(out)
 
 
