@@ -8,6 +8,7 @@ are checked against the file itself, not against what the loader says.
 
 from __future__ import annotations
 
+import gc
 import random
 from pathlib import Path
 
@@ -15,8 +16,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from PySide6.QtGui import QImage
 from pytestqt.qtbot import QtBot
 
+from app.jobs.formats.string_art import reader as reader_module
 from app.jobs.formats.string_art.program import StringArtProgram, build_program
 from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.run.runner import JobRunner, JobState
@@ -158,8 +161,131 @@ def test_the_source_lines_split_in_pieces_are_the_files_lines(text: str, chunk: 
 
     A piece ends only after an LF, so a CR LF pair is never cut in two and a line
     longer than a piece runs on; whatever the line ends, the result is
-    ``splitlines`` of the whole.
+    ``splitlines`` of the whole (kept as the text and where each line starts).
     """
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(dock_module, "SPLIT_CHUNK_CHARS", chunk)
-        assert dock_module.split_lines(text) == text.splitlines()
+        lines = dock_module.split_lines(text)
+        assert list(lines) == text.splitlines()
+        assert len(lines) == len(text.splitlines())
+
+
+def _grey(image: QImage) -> np.ndarray:
+    """The image's RGB as integers (rows, columns, 3)."""
+    rgb = image.convertToFormat(QImage.Format.Format_RGB32)
+    raw = np.frombuffer(rgb.constBits(), np.uint8).reshape(rgb.height(), rgb.bytesPerLine() // 4, 4)
+    return raw[:, : rgb.width(), :3].astype(np.int64)
+
+
+def test_a_merged_thread_loaded_in_the_background_is_shown_painted_as_its_lines_would_be(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """Painted on the loading thread, the chords look as the line bands draw them; zoomed, the
+    bands are drawn again (an image scaled up would thicken the one-pixel lines)."""
+    order = sequence(EXACT_CONNECTIONS + 5000, nails=60, seed=4)
+    (tmp_path / "param.txt").write_text("tvar = 0\npocet_hrebiku = 60\npolomer_matrice = 12\n")
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text(f"{len(order)}\n" + ",".join(map(str, order)) + "\n")
+    harness = StationHarness(load_profile("string-art"))
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    dock = JobsDock(harness.station, runner, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(dock)
+    try:
+        dock.resize(900, 700)
+        dock.show()
+        qtbot.waitExposed(dock)
+        assert dock.open_path(poradi, background=True)
+        qtbot.waitUntil(lambda: dock._loading is None, timeout=120_000)
+        extras = dock.preview.string_art
+        assert extras.geometry is not None and extras.geometry.merged
+        picture = extras.picture.picture
+        assert picture is not None and extras.picture.isVisible()
+        assert not any(band.isVisible() for band in extras.thread_bands)
+        # The bands still hold the chords (shown when the view strays from the image's scale).
+        assert sum(len(band.getData()[0]) // 2 for band in extras.thread_bands) == (
+            extras.geometry.chords
+        )
+        qtbot.wait(200)
+        painted = _grey(dock.preview.plot_widget.grab().toImage())
+        extras._show_picture(False)
+        qtbot.wait(200)
+        drawn = _grey(dock.preview.plot_widget.grab().toImage())
+        assert painted.shape == drawn.shape
+        thread = (drawn != 255).any(axis=2)  # where anything is drawn (grid included)
+        assert thread.mean() > 0.05
+        # Each chord as dark as its windings: the same picture up to a pixel's placing.
+        assert np.abs(painted - drawn).mean() < 2.0
+        assert abs(float(painted[thread].mean()) - float(drawn[thread].mean())) < 4.0
+
+        extras._show_picture(True)
+        dock.preview.plot.getViewBox().scaleBy((0.3, 0.3))  # zoomed in: lines, not pixels
+        qtbot.waitUntil(lambda: not extras.picture.isVisible(), timeout=5000)
+        assert all(band.isVisible() for band in extras.thread_bands)
+    finally:
+        dock.close()
+        runner.deleteLater()
+        harness.close()
+
+
+def test_no_automatic_garbage_collection_while_the_dock_loads_a_file(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """A full collection on the loading thread held the interpreter lock (the GUI thread
+    waited a tenth of a second and more); it is off while the file loads, on again after."""
+    seen: list[bool] = []
+    real = dock_module.load_job
+
+    def load_job(*args: object, **kwargs: object) -> object:
+        seen.append(gc.isenabled())
+        return real(*args, **kwargs)  # type: ignore[arg-type]
+
+    order = sequence(1000, nails=40)
+    (tmp_path / "param.txt").write_text("tvar = 0\npocet_hrebiku = 40\npolomer_matrice = 12\n")
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text(f"{len(order)}\n" + ",".join(map(str, order)) + "\n")
+    harness = StationHarness(load_profile("string-art"))
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    dock = JobsDock(harness.station, runner, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(dock)
+    try:
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(dock_module, "load_job", load_job)
+            assert gc.isenabled()
+            assert dock.open_path(poradi, background=True)
+            qtbot.waitUntil(lambda: dock._loading is None, timeout=60_000)
+        assert seen == [False]
+        assert gc.isenabled()
+        assert isinstance(runner.program, StringArtProgram)
+    finally:
+        dock.close()
+        runner.deleteLater()
+        harness.close()
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    values=st.lists(st.integers(min_value=0, max_value=10_000), max_size=40),
+    chunk=st.integers(min_value=1, max_value=7),
+)
+def test_the_sequence_converted_in_pieces_is_the_same(values: list[int], chunk: int) -> None:
+    """Converted a piece at a time (the GUI thread gets the lock between pieces), the
+    sequence and its array are what one conversion gives, and a job's array is its own."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(reader_module, "CONVERT_CHUNK", chunk)
+        array = np.asarray(values, dtype=np.int64)
+        assert reader_module.int_tuple(array) == tuple(values)
+        assert reader_module.int_array(tuple(values)).tolist() == values
+        job = StringArtJob(StringArtParams(0, 10_001, 12.0), tuple(values))
+        assert job.indices.tolist() == values
+
+
+def test_a_read_job_keeps_the_files_numbers_as_its_array(tmp_path: Path) -> None:
+    order = sequence(500, nails=30)
+    (tmp_path / "param.txt").write_text("tvar = 0\npocet_hrebiku = 30\npolomer_matrice = 12\n")
+    poradi = tmp_path / "poradi.txt"
+    poradi.write_text(f"{len(order)}\n" + ",".join(map(str, order)) + "\n")
+    job = reader_module.read_string_art(poradi)
+    assert job.sequence == tuple(order)
+    assert job.indices.dtype == np.int64 and job.indices.tolist() == order
+    assert not job.indices.flags.writeable  # the job's own numbers: nobody changes them
+    assert job == StringArtJob(job.params, tuple(order))  # the array is not part of equality

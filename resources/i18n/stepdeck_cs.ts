@@ -1794,7 +1794,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>number {0} of the file: {1} is not a whole number</source>
-        <extracomment>Byte classes of a nail list: separators, digits, signs, anything else.</extracomment>
+        <extracomment>The sequence as int64 (what numpy reads; the tuple is made from it). Values converted between numpy and Python at a time: one conversion of millions holds the interpreter lock throughout (a tenth of a second), and the GUI thread waits for it. Byte classes of a nail list: separators, digits, signs, anything else.</extracomment>
         <translation>číslo {0} v souboru: {1} není celé číslo</translation>
     </message>
     <message>
@@ -1988,7 +1988,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Tažením posunete pohled, kolečkem zvětšíte, Celé ukáže vše; kliknutí (ne tažení) v dosahu nástroje po potvrzení natočí základnu a najede tam nástrojem</translation>
     </message>
     <message>
@@ -2090,7 +2090,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Preview: the {connections} connections are drawn merged, each of the {chords} different chords once, as dark as its windings make it</source>
-        <extracomment>The thread&apos;s opacity (of 255): low, so that where threads cross the colour deepens. A merged thread&apos;s bands (see the module of the thread geometry), all and wound. What the preview says when it draws the thread merged (&quot;&quot; when exact).</extracomment>
+        <extracomment>The thread&apos;s opacity (of 255): low, so that where threads cross the colour deepens. A merged thread&apos;s bands (see the module of the thread geometry), all and wound. The whole job&apos;s bands as one image painted on the loading thread, shown instead of ``thread_bands`` while the view is at the scale it was painted for. What the preview says when it draws the thread merged (&quot;&quot; when exact).</extracomment>
         <translation>Náhled: {connections} spojení je vykresleno sloučeně, každá z {chords} různých tětiv jednou, tím tmavší, čím víckrát je navinuta</translation>
     </message>
 </context>

@@ -25,12 +25,14 @@ message with a Continue button.
 
 from __future__ import annotations
 
+import gc
 import html
 import threading
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, overload
 
+import numpy as np
 from PySide6.QtCore import QCoreApplication, QElapsedTimer, QObject, Qt, QTimer, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -157,7 +159,7 @@ class JobsDock(QDockWidget):
         self.station = station
         self.runner = runner
         self._path: Path | None = None
-        self._source_lines: list[str] = []
+        self._source_lines: Sequence[str] = ()
         #: The file ``_source_lines`` came from and the program they were read for.
         self._source_lines_of: tuple[Path | None, Program | None] = (None, None)
         self._ask_board: BoardAsker = ask_board or ask_board_dialog(self)
@@ -169,7 +171,7 @@ class JobsDock(QDockWidget):
         #: An option changed while a file was being read: read it again when that ends.
         self._reread = False
         #: The source lines the loading thread read with the program (None: read them here).
-        self._prepared_lines: tuple[Path | None, list[str]] | None = None
+        self._prepared_lines: tuple[Path | None, Sequence[str]] | None = None
         self._loading: _Loading | None = None
         #: The "From photo…" dialog while it is open.
         self.generator_dialog: StringArtGeneratorDialog | None = None
@@ -1113,6 +1115,21 @@ class _Loading(QObject):
 
     def _run(self) -> None:
         result: object
+        # No automatic collection while the file is read: a full one walks the whole heap
+        # holding the interpreter lock (a tenth of a second and more), whichever thread
+        # it falls on, and the GUI thread waits; what a load makes has no cycles to find.
+        # Only this thread re-enables it, and only if it was on (one load at a time).
+        collecting = gc.isenabled()
+        gc.disable()
+        try:
+            result = self._result()
+        finally:
+            if collecting:
+                gc.enable()
+        self.done.emit(self.path, result)
+
+    def _result(self) -> object:
+        result: object
         try:
             program = load_job(self.path, self._axis_names, self._options)
             # The runner's checks and estimate too: for millions of operations they take
@@ -1127,32 +1144,67 @@ class _Loading(QObject):
             result = exc
         except Exception as exc:  # a loader bug must not take the window down
             result = f"{type(exc).__name__}: {exc}"
-        self.done.emit(self.path, result)
+        return result
 
 
-def _read_lines(path: Path | None) -> list[str]:
+def _read_lines(path: Path | None) -> Sequence[str]:
     """The job file's lines, for showing an operation's source as written (empty if unreadable).
 
     Skipped for very large files: the operations carry their own text, and a copy of
     a million lines is memory for nothing.
     """
     if path is None or _size(path) > SOURCE_LINES_MAX_BYTES:
-        return []
+        return ()
     try:
         text = read_job_text(path, SOURCE_LINES_MAX_BYTES, latin1_fallback=True)
     except JobFileError:
-        return []
+        return ()
     return split_lines(text)
 
 
 #: Characters split at a time: one ``str.splitlines`` holds the interpreter lock
 #: throughout, and on 8 MB that kept the GUI thread waiting for a quarter of a second.
-SPLIT_CHUNK_CHARS = 200_000
+SPLIT_CHUNK_CHARS = 65_536
 
 
-def split_lines(text: str) -> list[str]:
+class SourceLines(Sequence[str]):
+    """A file's lines as ``str.splitlines`` gives them, kept as the text and where each starts.
+
+    Not a list of millions of strings: that was a hundred megabytes for a
+    generator's 2-million-entry ``poradi.txt``, and every full garbage
+    collection walked all two million (on whichever thread it fell, holding
+    the interpreter lock).  A line is cut from the text when it is shown.
+    """
+
+    def __init__(self, text: str, starts: np.ndarray) -> None:
+        self._text = text
+        #: Where each line starts, then where the text ends (int64).
+        self._starts = starts
+
+    def __len__(self) -> int:
+        return len(self._starts) - 1
+
+    @overload
+    def __getitem__(self, index: int) -> str: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[str]: ...
+
+    def __getitem__(self, index: int | slice) -> str | Sequence[str]:
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        if index < 0:
+            index += len(self)
+        if not 0 <= index < len(self):
+            raise IndexError(index)
+        # The line with its line end (one of those splitlines knows), cut off as splitlines does.
+        piece = self._text[int(self._starts[index]) : int(self._starts[index + 1])].splitlines()
+        return piece[0] if piece else ""
+
+
+def split_lines(text: str) -> SourceLines:
     """``text.splitlines()`` in pieces, so the GUI thread gets the lock between them."""
-    lines: list[str] = []
+    lengths: list[np.ndarray] = []
     start = 0
     while start < len(text):
         end = start + SPLIT_CHUNK_CHARS
@@ -1165,6 +1217,10 @@ def split_lines(text: str) -> list[str]:
             end = cut + 1 if cut >= 0 else len(text)
         else:
             end = len(text)
-        lines += text[start:end].splitlines()
+        piece = text[start:end].splitlines(keepends=True)
+        lengths.append(np.fromiter(map(len, piece), dtype=np.int64, count=len(piece)))
         start = end
-    return lines
+    starts = np.zeros(1 + sum(len(part) for part in lengths), dtype=np.int64)
+    if len(starts) > 1:
+        np.cumsum(np.concatenate(lengths), out=starts[1:])
+    return SourceLines(text, starts)

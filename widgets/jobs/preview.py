@@ -61,6 +61,12 @@ from app.jobs.registration import hole_positions
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile
 from app.station import Station
+from widgets.jobs.string_art_picture import (
+    ThreadPicture,
+    ThreadPictureItem,
+    band_pen,
+    paint_thread,
+)
 from widgets.jobs.string_art_thread import (
     BAND_EDGES,
     ThreadGeometry,
@@ -240,13 +246,40 @@ def _bounds(
     return x0, x1, y0, y1
 
 
+def _fitted_scale(
+    bounds: tuple[float, float, float, float] | None, board_mm: float, view_px: tuple[float, float]
+) -> float:
+    """Device pixels per mm once a polar view is fitted to ``bounds`` and the board (its
+    :meth:`JobPreview.fit`: padding 5 % each side, aspect locked); 0 when not known."""
+    found = [bounds] if bounds is not None and not math.isnan(bounds[0] + bounds[2]) else []
+    if board_mm > 0:
+        found.append((-board_mm, board_mm, -board_mm, board_mm))
+    if not found or min(view_px) <= 0:
+        return 0.0
+    width = max(b[1] for b in found) - min(b[0] for b in found)
+    height = max(b[3] for b in found) - min(b[2] for b in found)
+    if width <= 0 or height <= 0:
+        return 0.0
+    return min(view_px[0] / (1.1 * width), view_px[1] / (1.1 * height))
+
+
 class ProgramGeometry:
     """The plottable shape of a program on two axes, computed once per program."""
 
     def __init__(
-        self, program: Program, x_axis: str, y_axis: str | None, *, polar: bool = False
+        self,
+        program: Program,
+        x_axis: str,
+        y_axis: str | None,
+        *,
+        polar: bool = False,
+        view_px: tuple[float, float] = (0.0, 0.0),
     ) -> None:
-        """``polar``: the axes are (angle, radius) and the program's path is to be projected."""
+        """``polar``: the axes are (angle, radius) and the program's path is to be projected.
+
+        ``view_px``: the plot's size in device pixels, when known: a merged string-art
+        thread is then painted into an image at the scale the view will fit it to.
+        """
         path = program.preview_path(x_axis, y_axis)
         if polar and y_axis is not None and program.preview_plane == "axes":
             path = board_plane(path)
@@ -267,6 +300,11 @@ class ProgramGeometry:
             # The needle's winding path is hidden under the thread: millions of points that
             # would only be handed to a hidden curve.
             self.work = PathArrays(_EMPTY, _EMPTY, np.empty(0, dtype=np.int64))
+        #: A merged thread's chords painted here (see :mod:`widgets.jobs.string_art_picture`).
+        self.thread_picture: ThreadPicture | None = None
+        if self.thread is not None and self.thread.merged and isinstance(program, StringArtProgram):
+            scale = _fitted_scale(self.bounds, program.job.params.radius_cm * 10.0, view_px)
+            self.thread_picture = paint_thread(self.thread, scale, WORK_COLOUR, THREAD_ALPHA)
 
     @staticmethod
     def _markers(program: Program, xs: np.ndarray, ys: np.ndarray, ops: np.ndarray) -> PathArrays:
@@ -575,12 +613,15 @@ class JobPreview(QWidget):
         off the GUI thread (hand the result to :meth:`prepare`)."""
         names = tuple(self.axis_names)
         polar = self.polar is not None
+        view = self.plot.getViewBox().size()
+        ratio = self.plot_widget.devicePixelRatioF()
+        view_px = (view.width() * ratio, view.height() * ratio) if self.isVisible() else (0.0, 0.0)
 
         def make(program: Program) -> ProgramGeometry | None:
             if not names:
                 return None
             y_axis = names[1] if len(names) > 1 else None
-            return ProgramGeometry(program, names[0], y_axis, polar=polar)
+            return ProgramGeometry(program, names[0], y_axis, polar=polar, view_px=view_px)
 
         return make
 
@@ -622,7 +663,8 @@ class JobPreview(QWidget):
             self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
             self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
         thread = self.path_geometry.thread if self.path_geometry is not None else None
-        self.string_art.set_program(program, thread)
+        picture = self.path_geometry.thread_picture if self.path_geometry is not None else None
+        self.string_art.set_program(program, thread, picture)
         if self.string_art.merged_note:
             self._say(self.string_art.merged_note)
         self._draw_done()
@@ -931,6 +973,11 @@ class StringArtPreviewExtras:
             self._segments(DONE_COLOUR, band_alpha(DONE_THREAD_ALPHA, k))
             for k in range(len(BAND_EDGES))
         ]
+        #: The whole job's bands as one image painted on the loading thread, shown instead
+        #: of ``thread_bands`` while the view is at the scale it was painted for.
+        self.picture = ThreadPictureItem(self._picture_strayed)
+        self.picture.setZValue(self.thread_bands[0].zValue())
+        plot.addItem(self.picture)
         self.nails = pg.ScatterPlotItem(
             size=4, symbol="o", pen=pg.mkPen(NAIL_COLOUR), brush=pg.mkBrush(NAIL_COLOUR)
         )
@@ -949,14 +996,20 @@ class StringArtPreviewExtras:
         self.merged_note = ""
 
     def _segments(self, colour: str, alpha: int) -> pg.PlotCurveItem:
-        pen = pg.mkPen(pg.mkColor(colour), width=1)
-        color = pen.color()
-        color.setAlpha(alpha)
-        pen.setColor(color)
-        curve = pg.PlotCurveItem(pen=pen, connect="pairs", skipFiniteCheck=True)
+        curve = pg.PlotCurveItem(pen=band_pen(colour, alpha), connect="pairs", skipFiniteCheck=True)
         curve.setSegmentedLineMode("on")
         self.plot.addItem(curve)
         return curve
+
+    def _show_picture(self, shown: bool) -> None:
+        """The painted image of the whole thread, or its bands drawn as lines."""
+        self.picture.setVisible(shown)
+        for band in self.thread_bands:
+            band.setVisible(not shown)
+
+    def _picture_strayed(self) -> None:
+        """The view was zoomed or resized: the image's lines would not be one pixel."""
+        self._show_picture(False)
 
     @property
     def thread_segments(self) -> int:
@@ -968,15 +1021,23 @@ class StringArtPreviewExtras:
         """The shown job's board radius (its edge, 15 mm beyond the nails), 0 without one."""
         return self.program.job.params.radius_cm * 10.0 if self.program is not None else 0.0
 
-    def set_program(self, program: Program | None, thread: ThreadGeometry | None = None) -> None:
+    def set_program(
+        self,
+        program: Program | None,
+        thread: ThreadGeometry | None = None,
+        picture: ThreadPicture | None = None,
+    ) -> None:
         """Show ``program``'s nails and thread when it is a string-art one, else nothing.
 
-        ``thread``: its layout, made on the loading thread (else it is made here).
+        ``thread``: its layout, made on the loading thread (else it is made here);
+        ``picture``: its merged chords painted there too (else they are drawn as lines).
         """
         active = isinstance(program, StringArtProgram)
         for item in self.replaced:
             item.setVisible(not active)
         self.merged_note = ""
+        self.picture.set_picture(picture if active and thread is not None else None)
+        self._show_picture(self.picture.picture is not None)
         for band in (*self.thread_bands, *self.done_bands):
             band.setData(_EMPTY, _EMPTY)
         if not isinstance(program, StringArtProgram):
@@ -994,11 +1055,10 @@ class StringArtPreviewExtras:
         if geometry.merged:
             self.thread.setData(_EMPTY, _EMPTY)
             self._wound = WoundCounter(geometry)
-            for band, (x, y) in zip(
-                self.thread_bands,
-                geometry.bands(geometry.counts(geometry.connections)),
-                strict=True,
-            ):
+            # The bands of the whole job were made with the geometry (the loading thread):
+            # counting two million connections here held the GUI thread.
+            whole = geometry.whole or geometry.bands(geometry.counts(geometry.connections))
+            for band, (x, y) in zip(self.thread_bands, whole, strict=True):
                 band.setData(x, y)
             self.merged_note = QCoreApplication.translate(
                 "JobPreview",

@@ -18,7 +18,7 @@ Pure numpy, no Qt: the dock's loading thread builds it with the preview's geomet
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -60,6 +60,9 @@ class ThreadGeometry:
     chord_ends: np.ndarray  # (chords, 2) nail indices
     #: The last operation of each nail's drill cycle, in drilling order.
     drill_ends: np.ndarray
+    #: Merged thread: per band, the x and y pairs of the whole job's chords (:meth:`bands`
+    #: of every connection), made here with the rest so the GUI thread only shows them.
+    whole: tuple[tuple[np.ndarray, np.ndarray], ...] = field(default=(), compare=False)
 
     @property
     def merged(self) -> bool:
@@ -72,7 +75,7 @@ class ThreadGeometry:
     @classmethod
     def of(cls, program: StringArtProgram) -> ThreadGeometry:
         xy = program.job.nail_positions()
-        sequence = np.asarray(program.job.sequence, dtype=np.int64)
+        sequence = program.job.indices
         connections = max(len(sequence) - 1, 0)
         drilling = np.flatnonzero((program.entry_of_op == -1) & (program.nail_of_op >= 0))
         nails = program.nail_of_op[drilling]
@@ -91,7 +94,8 @@ class ThreadGeometry:
         key = low * len(xy) + high  # the same chord whichever way it is wound
         unique, chord_of = np.unique(key, return_inverse=True)
         ends = np.column_stack((unique // len(xy), unique % len(xy)))
-        return cls(xy, (_EMPTY, _EMPTY), connections, chord_of.astype(np.int64), ends, drill_ends)
+        merged = cls(xy, (_EMPTY, _EMPTY), connections, chord_of.astype(np.int64), ends, drill_ends)
+        return replace(merged, whole=tuple(merged.bands(merged.counts(connections))))
 
     def counts(self, upto: int) -> np.ndarray:
         """Windings per chord among the first ``upto`` connections."""

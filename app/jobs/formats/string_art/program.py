@@ -160,9 +160,11 @@ class StringArtProgram(Program):
     def fingerprint(self) -> str:
         """The columns hashed: every operation's kind, axis and value, and what it serves."""
         digest = hashlib.sha256()
+        # The arrays' own memory, not a tobytes() copy: copying 64 MB holds the interpreter
+        # lock (the GUI thread waits), hashing a buffer does not.
         for column in (self.kind_codes, self.move_axis, self.move_values, self.nail_of_op):
-            digest.update(np.ascontiguousarray(column).tobytes())
-        digest.update(np.ascontiguousarray(self.entry_of_op).tobytes())
+            digest.update(np.ascontiguousarray(column).data.cast("B"))
+        digest.update(np.ascontiguousarray(self.entry_of_op).data.cast("B"))
         return digest.hexdigest()[:16]
 
     def limit_violations(self, limits: Mapping[str, tuple[float, float]]) -> list[LimitViolation]:
@@ -530,9 +532,7 @@ def build_program(
         first,
         0,
     )
-    turns, wraps = _winding_turns(
-        np.asarray(sequence, dtype=np.int64), angles, before, after, b.angle
-    )
+    turns, wraps = _winding_turns(job.indices, angles, before, after, b.angle)
     a_turn, a_wrap = _unwrapped(b.angle, turns, wraps)
     last = sequence[-1]
     tail = Operation(
@@ -543,7 +543,7 @@ def build_program(
         ).format(last),
     )
     winding = total - 1
-    nails_wound = np.asarray(sequence[1:], dtype=np.int32)
+    nails_wound = job.indices[1:].astype(np.int32)
     r_out = radii[nails_wound] + settings.needle_out_mm
     r_out_max = float(max(first_out, float(r_out.max()) if len(r_out) else first_out))
     head_axis = [_COLUMN[next(iter(op.target))] if op.target else -1 for op in b.ops]

@@ -48,6 +48,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
+from typing import Any
 
 import numpy as np
 
@@ -141,8 +142,27 @@ class StringArtJob:
     @cached_property
     def _thread_length_mm(self) -> float:
         # Once per job: a generator's list has millions of entries, and summaries repeat it.
-        points = self.nail_positions()[np.asarray(self.sequence, dtype=np.int64)]
+        points = self.nail_positions()[self.indices]
         return float(np.hypot(*np.diff(points, axis=0).T).sum())
+
+    @cached_property
+    def indices(self) -> np.ndarray:
+        """The sequence as a read-only int64 array, made once per job.
+
+        A job read from a file has it already (:meth:`read`).  Converting two
+        million Python ints in one numpy call holds the interpreter lock for a
+        tenth of a second, a stall of the window while the dock's worker
+        loads, and the loader, the preview and the summary each needed it.
+        """
+        return int_array(self.sequence)
+
+    @classmethod
+    def read(cls, indices: np.ndarray, **fields: Any) -> StringArtJob:
+        """A job read from a file whose numbers are already the array ``indices``."""
+        job = cls(**fields)
+        indices.flags.writeable = False
+        job.__dict__["indices"] = indices  # the cached property's value (the class is frozen)
+        return job
 
     def entry_source(self, entry: int) -> SourceRef:
         """Where sequence entry ``entry`` (0-based) is written."""
@@ -324,6 +344,29 @@ class NailList:
     lines: np.ndarray  # int32, the line of each entry
     count: int | None
     count_line: int
+    #: The sequence as int64 (what numpy reads; the tuple is made from it).
+    array: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64), compare=False)
+
+
+#: Values converted between numpy and Python at a time: one conversion of millions holds the
+#: interpreter lock throughout (a tenth of a second), and the GUI thread waits for it.
+CONVERT_CHUNK = 65_536
+
+
+def int_tuple(values: np.ndarray) -> tuple[int, ...]:
+    """``tuple(values.tolist())`` in pieces, so the GUI thread gets the lock between them."""
+    out: list[int] = [0] * len(values)  # its full size at once: growing it copied it over
+    for start in range(0, len(values), CONVERT_CHUNK):
+        out[start : start + CONVERT_CHUNK] = values[start : start + CONVERT_CHUNK].tolist()
+    return tuple(out)
+
+
+def int_array(values: Sequence[int]) -> np.ndarray:
+    """``np.asarray(values, dtype=np.int64)`` in pieces (see :func:`int_tuple`)."""
+    out = np.empty(len(values), dtype=np.int64)
+    for start in range(0, len(values), CONVERT_CHUNK):
+        out[start : start + CONVERT_CHUNK] = values[start : start + CONVERT_CHUNK]
+    return out
 
 
 #: Byte classes of a nail list: separators, digits, signs, anything else.
@@ -415,8 +458,9 @@ def read_nail_list(path: Path) -> NailList:
         raise JobFileError(path.name, 0, translate("JobFile", "could not read the nail indices"))
     counted = path.name.lower() == PORADI_NAME or int(values[0]) == len(values) - 1
     if not counted:
-        return NailList(tuple(values.tolist()), lines, None, 0)
-    return NailList(tuple(values[1:].tolist()), lines[1:], int(values[0]), int(lines[0]))
+        return NailList(int_tuple(values), lines, None, 0, values)
+    entries = values[1:]
+    return NailList(int_tuple(entries), lines[1:], int(values[0]), int(lines[0]), entries)
 
 
 def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None:
@@ -437,7 +481,7 @@ def check_sequence(path: Path, nails: NailList, params: StringArtParams) -> None
             nails.count_line or 1,
             translate("JobFile", "fewer than two nails: nothing to wind"),
         )
-    array = np.asarray(sequence, dtype=np.int64)
+    array = nails.array
     bad = np.flatnonzero((array < 0) | (array >= params.nails))
     if len(bad):
         i = int(bad[0])
@@ -492,7 +536,7 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
         if param_path is None:
             # What no board can take is refused before the operator is asked for one.
             check_sequence(poradi, nails, StringArtParams(0, MAX_NAILS, MAX_RADIUS_CM))
-            raise NeedsNailCount(poradi, max(nails.sequence) + 1, len(nails.sequence))
+            raise NeedsNailCount(poradi, int(nails.array.max()) + 1, len(nails.sequence))
         param, lines = read_params(param_path)
     else:
         reason = param.check()
@@ -503,7 +547,8 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
                 translate("JobFile", "the board entered: {0}").format(reason),
             )
     check_sequence(poradi, nails, param)
-    return StringArtJob(
+    return StringArtJob.read(
+        nails.array,
         params=param,
         sequence=nails.sequence,
         poradi_path=poradi,
@@ -526,8 +571,14 @@ def read_string_art(path: Path, param: StringArtParams | None = None) -> StringA
             )
         nails = read_nail_list(poradi)
         check_sequence(poradi, nails, params)
-        return StringArtJob(
-            params, nails.sequence, poradi, path, nails.lines, MappingProxyType(lines)
+        return StringArtJob.read(
+            nails.array,
+            params=params,
+            sequence=nails.sequence,
+            poradi_path=poradi,
+            param_path=path,
+            entry_lines=nails.lines,
+            param_lines=MappingProxyType(lines),
         )
     return load_string_art(path, param)
 
