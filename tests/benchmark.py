@@ -227,8 +227,15 @@ def bench_key_to_pty() -> list[str]:
     session = StageSession(model, link, MonotonicClock(), autotick=False)
     try:
         link.open()
+        # The session waits for the device's first word before it takes motion: the "device"
+        # speaks every 50 ms, as a stage does, until the session has heard it.
+        echo = encode_echo(EchoFrame((EchoPacket(0, 0, 0), EchoPacket(0, 0, 0)), 0, 0))
         deadline = time.monotonic() + 5.0
+        spoke = 0.0
         while model.link_state is not LinkState.CONNECTED and time.monotonic() < deadline:
+            if time.monotonic() - spoke >= 0.05:
+                os.write(master, echo)
+                spoke = time.monotonic()
             app.processEvents()
         assert model.link_state is LinkState.CONNECTED, model.link_detail
         _drain_quiet(master)  # the connect burst: speed select and the first reads
