@@ -226,3 +226,26 @@ def test_a_drag_pans_and_does_not_move(
         < 0
         < preview.plot.getViewBox().viewRange()[0][1]
     )
+
+
+def test_the_cached_axes_and_grid_follow_every_change_of_the_view(
+    qtbot: QtBot, preview: JobPreview
+) -> None:
+    """The axes are painted once into a pixmap (a running job's frame cost two thirds less):
+    after a pan or zoom they must look as freshly drawn ones do, never as the old picture."""
+    from PySide6.QtWidgets import QGraphicsItem
+
+    preview.set_program(sample_program())
+    view = preview.plot.getViewBox()
+    axes = [preview.plot.getAxis(side) for side in ("left", "bottom")]
+    cached = QGraphicsItem.CacheMode.DeviceCoordinateCache
+    assert all(axis.cacheMode() == cached for axis in axes)
+    first = preview.plot_widget.grab().toImage()
+    view.setRange(xRange=(100, 200), yRange=(-50, 50), padding=0)
+    qtbot.wait(50)
+    moved = preview.plot_widget.grab().toImage()
+    assert moved != first
+    for axis in axes:
+        axis.setCacheMode(QGraphicsItem.CacheMode.NoCache)  # drawn afresh, for comparison
+    qtbot.wait(50)
+    assert preview.plot_widget.grab().toImage() == moved

@@ -96,3 +96,53 @@ def test_the_done_dots_of_a_plain_point_job_grow_append_only(qtbot: QtBot) -> No
     finally:
         preview.close()
         harness.close()
+
+
+def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: QtBot) -> None:
+    """Past a piece's worth, done dots go to frozen items drawn from a pixmap: the growing
+    item stays small, and together they show exactly the done points, in order."""
+    from PySide6.QtWidgets import QGraphicsItem
+
+    harness = StationHarness(load_profile("xy-stage"))
+    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(preview)
+    count = 2 * TRAIL_PIECE_POINTS + 100
+    ops = tuple(
+        move(SourceRef("dots.csv", i + 1), X=float(i % 100), Y=float(i // 100))
+        for i in range(count)
+    )
+
+    def dots() -> tuple[np.ndarray, np.ndarray]:
+        items = [*preview.done_dots.frozen, preview.done_markers]
+        return (
+            np.concatenate([np.asarray(item.data["x"]) for item in items]),
+            np.concatenate([np.asarray(item.data["y"]) for item in items]),
+        )
+
+    try:
+        preview.set_program(Program("dots", ops))
+        markers = preview.path_geometry.markers  # type: ignore[union-attr]
+        preview.set_done(TRAIL_PIECE_POINTS + 10)
+        first = list(preview.done_dots.frozen)
+        assert len(first) == 1
+        assert first[0].cacheMode() == QGraphicsItem.CacheMode.DeviceCoordinateCache
+        kept = np.asarray(first[0].data["x"]).copy()
+        preview.set_done(count)
+        assert preview.done_dots.frozen[:1] == first  # the same item, untouched
+        np.testing.assert_array_equal(np.asarray(first[0].data["x"]), kept)
+        assert len(preview.done_dots.frozen) == 2
+        assert len(preview.done_markers.data) <= TRAIL_PIECE_POINTS
+        x, y = dots()
+        n = markers.done_count(count)
+        assert n == count
+        np.testing.assert_array_equal(x, markers.x[:n])
+        np.testing.assert_array_equal(y, markers.y[:n])
+
+        preview.set_done(3)  # a new run: drawn again from the start, the pieces gone
+        assert preview.done_dots.frozen == []
+        assert all(item not in preview.plot.items for item in first)
+        x, _ = dots()
+        np.testing.assert_array_equal(x, markers.x[: markers.done_count(3)])
+    finally:
+        preview.close()
+        harness.close()

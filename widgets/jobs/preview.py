@@ -52,7 +52,7 @@ import numpy as np
 import pyqtgraph as pg
 from pyqtgraph.GraphicsScene.mouseEvents import MouseClickEvent
 from PySide6.QtCore import QCoreApplication, QPointF, Qt, QTimer, Signal
-from PySide6.QtWidgets import QHBoxLayout, QMessageBox, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QGraphicsItem, QHBoxLayout, QMessageBox, QVBoxLayout, QWidget
 
 from app.jobs.formats.string_art.geometry import shortest_turn
 from app.jobs.formats.string_art.program import StringArtProgram
@@ -385,6 +385,68 @@ class DoneTrail:
             item.setVisible(visible)
 
 
+class DoneDots:
+    """The done dots of a plain point list, grown as :class:`DoneTrail` grows its line.
+
+    One scatter item given every done dot copies them all on each step and
+    paints them all on every frame (a 10 000-point job: about a third of the
+    window's work while it runs).  Here the growing piece holds at most
+    :data:`TRAIL_PIECE_POINTS` dots; full pieces are frozen into items of their
+    own, painted once into a pixmap and never touched again.
+    """
+
+    def __init__(self, plot: pg.PlotItem, tail: pg.ScatterPlotItem) -> None:
+        self.plot = plot
+        self.tail = tail  # the growing piece (the preview's done markers, as before)
+        self.frozen: list[pg.ScatterPlotItem] = []
+        self._markers: PathArrays | None = None
+        self._start = 0  # the first dot of the growing piece
+
+    @property
+    def shown(self) -> int:
+        return self._start + len(self.tail.data)
+
+    def reset(self) -> None:
+        for item in self.frozen:
+            self.plot.removeItem(item)
+        self.frozen = []
+        self._markers = None
+        self._start = 0
+        self.tail.setData(x=_EMPTY, y=_EMPTY)
+
+    def show(self, markers: PathArrays, count: int) -> None:
+        """Draw the first ``count`` dots of ``markers`` as done."""
+        if markers is not self._markers or count < self.shown:
+            self.reset()
+            self._markers = markers
+        if count == self.shown:
+            return
+        opts = self.tail.opts
+        while count - self._start > TRAIL_PIECE_POINTS:
+            end = self._start + TRAIL_PIECE_POINTS
+            piece = pg.ScatterPlotItem(
+                x=markers.x[self._start : end],
+                y=markers.y[self._start : end],
+                size=opts["size"],
+                symbol=opts["symbol"],
+                pen=opts["pen"],
+                brush=opts["brush"],
+            )
+            piece.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
+            piece.setVisible(self.tail.isVisible())
+            self.plot.addItem(piece)
+            self.frozen.append(piece)
+            self._start = end
+            self.tail.setData(x=_EMPTY, y=_EMPTY)
+        shown = self.shown
+        if count > shown:
+            self.tail.addPoints(x=markers.x[shown:count], y=markers.y[shown:count])
+
+    def set_visible(self, visible: bool) -> None:
+        for item in self.frozen:
+            item.setVisible(visible)
+
+
 class JobPreview(QWidget):
     """The path of a program, what is done of it and where the machine is; click to move.
 
@@ -448,6 +510,7 @@ class JobPreview(QWidget):
             DoneTrail(self.plot, self.done_travel_curve),
             DoneTrail(self.plot, self.done_work_curve),
         )
+        self.done_dots = DoneDots(self.plot, self.done_markers)
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
         if runner is not None:
@@ -516,8 +579,13 @@ class JobPreview(QWidget):
         self.plot.setLabel("bottom", names[0], units=unit)
         self.plot.setLabel("left", names[1] if len(names) > 1 else "", units=unit)
         for side in ("left", "bottom"):
+            axis = self.plot.getAxis(side)
             # pyqtgraph would otherwise show "(kmm)" or "(µmm)": these are machine millimetres.
-            self.plot.getAxis(side).enableAutoSIPrefix(False)
+            axis.enableAutoSIPrefix(False)
+            # The axes and their grid change only with the view; played from their picture on
+            # every repaint they were two thirds of a running job's preview frame (about
+            # 15 of 23 ms at 800 x 600).  Painted once into a pixmap, each frame blits it.
+            axis.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         self.apply_colours(LIGHT)
         layout.addWidget(self.plot_widget, 1)
 
@@ -544,6 +612,11 @@ class JobPreview(QWidget):
         self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
         self.work_markers = self._markers(WORK_COLOUR, 6)
         self.done_markers = self._markers(DONE_COLOUR, 6)
+        for item in (self.limits_curve, self.travel_curve, self.work_curve, self.work_markers):
+            # Unchanged while a job runs, yet repainted with every frame of its done part and
+            # position (10 000 dots drawn again and again): painted once into a pixmap
+            # instead, redrawn only when their data or the view changes.
+            item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         self.position_marker = pg.ScatterPlotItem(
             size=16,
             symbol="+",
@@ -911,21 +984,15 @@ class JobPreview(QWidget):
         if geometry is None:
             for trail in self.done_trails:
                 trail.reset()
-            self.done_markers.setData(x=_EMPTY, y=_EMPTY)
+            self.done_dots.reset()
             return
         for trail, path in zip(self.done_trails, (geometry.travel, geometry.work), strict=True):
             trail.show(path, path.done_count(self.done))  # append-only: no full rebuild
         self.done_trails[1].set_visible(self.done_work_curve.isVisible())
-        n = geometry.markers.done_count(self.done)
-        shown = len(self.done_markers.data)
-        if n > shown:
-            # Append-only, as the trails: a rebuild of every done dot per step cost a
-            # long plain-point job (10 000 dots) several ms a step on the window's thread.
-            self.done_markers.addPoints(
-                x=geometry.markers.x[shown:n], y=geometry.markers.y[shown:n]
-            )
-        elif n < shown:
-            self.done_markers.setData(x=geometry.markers.x[:n], y=geometry.markers.y[:n])
+        # Append-only, as the trails: a rebuild of every done dot per step cost a long
+        # plain-point job (10 000 dots) several ms a step on the window's thread.
+        self.done_dots.show(geometry.markers, geometry.markers.done_count(self.done))
+        self.done_dots.set_visible(self.done_markers.isVisible())
 
     def _draw_position(self) -> None:
         axes = self.model.axes
