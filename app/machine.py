@@ -57,6 +57,17 @@ class AxisState:
         """Where the axis is in work coordinates (what a G90 line's words mean on GRBL)."""
         return self.position - self.offset
 
+    def shown(self) -> tuple[float, float, float, int | None, str, bool]:
+        """What the axis shows: a change of any of it is an ``axisChanged``."""
+        return (
+            self.position,
+            self.offset,
+            self.velocity,
+            self.status_code,
+            self.status_text,
+            self.moving,
+        )
+
 
 class MachineModel(QObject):
     linkStateChanged = Signal(object)  # LinkState
@@ -100,14 +111,7 @@ class MachineModel(QObject):
         offset: float | None = None,
     ) -> None:
         axis = self.axes[index]
-        before = (
-            axis.position,
-            axis.offset,
-            axis.velocity,
-            axis.status_code,
-            axis.status_text,
-            axis.moving,
-        )
+        before = axis.shown()
         if position is not None:
             axis.position = position
         if offset is not None:
@@ -120,14 +124,7 @@ class MachineModel(QObject):
             axis.status_text = status_text
         if moving is not None:
             axis.moving = moving
-        if before != (
-            axis.position,
-            axis.offset,
-            axis.velocity,
-            axis.status_code,
-            axis.status_text,
-            axis.moving,
-        ):
+        if before != axis.shown():
             self.axisChanged.emit(index)
 
     def set_parameter(

@@ -330,7 +330,34 @@ class ProgramGeometry:
 TRAIL_PIECE_POINTS = 4096
 
 
-class DoneTrail:
+class FrozenPieces:
+    """Full pieces of a growing done part, each an item of its own never touched again.
+
+    Frozen pieces are painted once into a pixmap (they do not change), follow
+    the visibility of the growing item, and go on a reset.
+    """
+
+    def __init__(self, plot: pg.PlotItem) -> None:
+        self.plot = plot
+        self.frozen: list[pg.GraphicsObject] = []
+
+    def _freeze(self, piece: pg.GraphicsObject, visible: bool) -> None:
+        piece.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
+        piece.setVisible(visible)
+        self.plot.addItem(piece)
+        self.frozen.append(piece)
+
+    def _thaw(self) -> None:
+        for item in self.frozen:
+            self.plot.removeItem(item)
+        self.frozen = []
+
+    def set_visible(self, visible: bool) -> None:
+        for item in self.frozen:
+            item.setVisible(visible)
+
+
+class DoneTrail(FrozenPieces):
     """The done part of one path kind, drawn append-only as the job advances.
 
     Redrawing the whole done prefix on every progress step costs in proportion
@@ -341,17 +368,14 @@ class DoneTrail:
     """
 
     def __init__(self, plot: pg.PlotItem, tail: pg.PlotDataItem) -> None:
-        self.plot = plot
+        super().__init__(plot)
         self.tail = tail  # the growing piece (the preview's done curve, as before)
-        self.frozen: list[pg.PlotCurveItem] = []
         self._path: PathArrays | None = None
         self._start = 0  # the first point of the growing piece
         self._shown = 0  # points drawn in all
 
     def reset(self) -> None:
-        for item in self.frozen:
-            self.plot.removeItem(item)
-        self.frozen = []
+        self._thaw()
         self._path = None
         self._start = self._shown = 0
         self.tail.setData(_EMPTY, _EMPTY)
@@ -371,21 +395,15 @@ class DoneTrail:
                 pen=self.tail.opts["pen"],
                 connect="finite",
             )
-            piece.setVisible(self.tail.isVisible())
-            self.plot.addItem(piece)
-            self.frozen.append(piece)
+            self._freeze(piece, self.tail.isVisible())
             self._start = end - 1  # the next piece starts where this one ends: no gap
         self.tail.setData(
             path.x[self._start : count], path.y[self._start : count], connect="finite"
         )
         self._shown = count
 
-    def set_visible(self, visible: bool) -> None:
-        for item in self.frozen:
-            item.setVisible(visible)
 
-
-class DoneDots:
+class DoneDots(FrozenPieces):
     """The done dots of a plain point list, grown as :class:`DoneTrail` grows its line.
 
     One scatter item given every done dot copies them all on each step and
@@ -396,9 +414,8 @@ class DoneDots:
     """
 
     def __init__(self, plot: pg.PlotItem, tail: pg.ScatterPlotItem) -> None:
-        self.plot = plot
+        super().__init__(plot)
         self.tail = tail  # the growing piece (the preview's done markers, as before)
-        self.frozen: list[pg.ScatterPlotItem] = []
         self._markers: PathArrays | None = None
         self._start = 0  # the first dot of the growing piece
 
@@ -407,9 +424,7 @@ class DoneDots:
         return self._start + len(self.tail.data)
 
     def reset(self) -> None:
-        for item in self.frozen:
-            self.plot.removeItem(item)
-        self.frozen = []
+        self._thaw()
         self._markers = None
         self._start = 0
         self.tail.setData(x=_EMPTY, y=_EMPTY)
@@ -432,19 +447,12 @@ class DoneDots:
                 pen=opts["pen"],
                 brush=opts["brush"],
             )
-            piece.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
-            piece.setVisible(self.tail.isVisible())
-            self.plot.addItem(piece)
-            self.frozen.append(piece)
+            self._freeze(piece, self.tail.isVisible())
             self._start = end
             self.tail.setData(x=_EMPTY, y=_EMPTY)
         shown = self.shown
         if count > shown:
             self.tail.addPoints(x=markers.x[shown:count], y=markers.y[shown:count])
-
-    def set_visible(self, visible: bool) -> None:
-        for item in self.frozen:
-            item.setVisible(visible)
 
 
 class JobPreview(QWidget):
