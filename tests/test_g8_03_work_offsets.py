@@ -17,12 +17,13 @@ import pytest
 from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JobOptions, load_job
-from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.program import Program, SourceRef, move
 from app.jobs.run.gcode_stream import file_offset
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
+from tests.helpers.pen_square import SQUARE, square_program
 from widgets.panels.info import InfoPanel
 
 #: Where G92 X0 Y0 is said: machine (20, 10) becomes work (0, 0).
@@ -111,21 +112,6 @@ def test_g8_03_the_travel_is_judged_in_machine_coordinates(board: StationHarness
     assert board.gcode_emulator.position()["X"] == pytest.approx(295.0)
 
 
-SQUARE = [(10.0, 10.0), (110.0, 10.0), (110.0, 110.0), (10.0, 110.0), (10.0, 10.0)]
-
-
-def square_program() -> Program:
-    """Pen up, to the first corner, pen down, round the square, pen up, back to 0, 0."""
-    ops: list[Operation] = [Operation(OpKind.PEN_UP, SourceRef("square", 1))]
-    ops.append(move(SourceRef("square", 2), X=SQUARE[0][0], Y=SQUARE[0][1]))
-    ops.append(Operation(OpKind.PEN_DOWN, SourceRef("square", 3)))
-    for n, (x, y) in enumerate(SQUARE[1:], start=4):
-        ops.append(move(SourceRef("square", n), X=x, Y=y))
-    ops.append(Operation(OpKind.PEN_UP, SourceRef("square", 8)))
-    ops.append(move(SourceRef("square", 9), X=0.0, Y=0.0))
-    return Program("square", tuple(ops))
-
-
 def drawn(harness: StationHarness) -> list[tuple[float, float, bool]]:
     """Every move the emulator finished, in machine coordinates: (x, y, pen down)."""
     return [
@@ -143,7 +129,7 @@ def test_g8_03_a_job_after_g92_runs_offset_and_resumes_in_place_after_a_cut_link
     try:
         messages: list[str] = []
         runner.message.connect(messages.append)
-        assert runner.load(square_program()) == []
+        assert runner.load(square_program(back_home=True)) == []
         runner.start()
         harness.run_until(lambda: len(drawn(harness)) >= 5, timeout=30)
         harness.loopback.sever("cable pulled")
@@ -180,7 +166,7 @@ def test_g8_03_a_board_that_lost_its_offset_in_a_reset_gets_it_back_on_resume(
     try:
         messages: list[str] = []
         runner.message.connect(messages.append)
-        assert runner.load(square_program()) == []
+        assert runner.load(square_program(back_home=True)) == []
         runner.start()
         harness.run_until(lambda: len(drawn(harness)) >= 3, timeout=30)
         harness.loopback.sever("cable pulled")

@@ -12,23 +12,11 @@ from pathlib import Path
 
 from pytestqt.qtbot import QtBot
 
-from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-
-SQUARE = [(10.0, 10.0), (110.0, 10.0), (110.0, 110.0), (10.0, 110.0), (10.0, 10.0)]
-
-
-def square_program() -> Program:
-    ops: list[Operation] = [Operation(OpKind.PEN_UP, SourceRef("square", 1))]
-    ops.append(move(SourceRef("square", 2), X=SQUARE[0][0], Y=SQUARE[0][1]))
-    ops.append(Operation(OpKind.PEN_DOWN, SourceRef("square", 3)))
-    for n, (x, y) in enumerate(SQUARE[1:], start=4):
-        ops.append(move(SourceRef("square", n), X=x, Y=y))
-    ops.append(Operation(OpKind.PEN_UP, SourceRef("square", 8)))
-    return Program("square", tuple(ops))
+from tests.helpers.pen_square import SQUARE, square_program
 
 
 def strokes(harness: StationHarness) -> list[tuple[float, float]]:
