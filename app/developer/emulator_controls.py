@@ -16,7 +16,7 @@ from PySide6.QtCore import QObject, Signal
 from app.machine import LinkState
 from app.station import Station
 from protocol.emulator.device import EmulatedDevice
-from protocol.emulator.mechanism import SwitchName
+from protocol.emulator.mechanism import SwitchName as SwitchName  # the pane names its buttons by it
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId

@@ -701,7 +701,6 @@
     <name>EchoComposer</name>
     <message>
         <source>Inject echo</source>
-        <extracomment>How often the log view takes in what arrived: fast enough to feel live, slow enough that a 1 kHz stream costs ten redraws a second. Lines the view keeps; the log itself keeps :data:`LOG_CAPACITY` entries (saved in full).</extracomment>
         <translation>Vložiť echo</translation>
     </message>
     <message>
@@ -777,6 +776,7 @@
     </message>
     <message>
         <source>{0} end switch</source>
+        <extracomment>How often the log view takes in what arrived: fast enough to feel live, slow enough that a 1 kHz stream costs ten redraws a second. Lines the view keeps; the log itself keeps :data:`LOG_CAPACITY` entries (saved in full).</extracomment>
         <translation>{0} koncový spínač</translation>
     </message>
     <message>
@@ -2530,26 +2530,6 @@ Načítať ako:</translation>
         <source>{0} stick: 500…524 is the dead zone; let go to centre it</source>
         <extracomment>The unit&apos;s end switches (FIDELITY S4-18), closed where the axis is now.</extracomment>
         <translation>Páčka {0}: 500…524 je mŕtve pásmo; po pustení sa vráti na stred</translation>
-    </message>
-    <message>
-        <source>{0} end switch</source>
-        <translation>{0} koncový spínač</translation>
-    </message>
-    <message>
-        <source>Low</source>
-        <translation>Dolný</translation>
-    </message>
-    <message>
-        <source>Close {0}&apos;s low end switch where the axis is now</source>
-        <translation>Zopnúť dolný koncový spínač osi {0} tam, kde os práve je</translation>
-    </message>
-    <message>
-        <source>High</source>
-        <translation>Horný</translation>
-    </message>
-    <message>
-        <source>Close {0}&apos;s high end switch where the axis is now</source>
-        <translation>Zopnúť horný koncový spínač osi {0} tam, kde os práve je</translation>
     </message>
 </context>
 <context>

@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import QCoreApplication, Qt, QTimer
 from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -40,7 +40,12 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.developer.emulator_controls import END_SWITCHES, EmulatorControls, SimulationRefused
+from app.developer.emulator_controls import (
+    END_SWITCHES,
+    EmulatorControls,
+    SimulationRefused,
+    SwitchName,
+)
 from app.developer.frame_log import LOG_CAPACITY, FrameLog
 from app.developer.stage import (
     SUBSCRIBER_TEXT,
@@ -78,6 +83,37 @@ def _quiet(*widgets: QWidget) -> Iterator[None]:
     finally:
         for widget in widgets:
             widget.blockSignals(False)
+
+
+def _end_switch_button(
+    texts: Texts, controls: EmulatorControls, index: int, name: str, which: SwitchName
+) -> QPushButton:
+    """A button closing an emulated axis' low or high end switch where the axis stands.
+
+    The stage's box and the usb3 unit's joystick box have the same ones; the
+    texts are the emulator box's.
+    """
+    translate = QCoreApplication.translate
+    if which == END_SWITCHES[0]:
+        button = texts.button(
+            lambda: translate("EmulatorBox", "{0} end switch").format(
+                translate("EmulatorBox", "Low")
+            ),
+            lambda: translate(
+                "EmulatorBox", "Close {0}'s low end switch where the axis is now"
+            ).format(name),
+        )
+    else:
+        button = texts.button(
+            lambda: translate("EmulatorBox", "{0} end switch").format(
+                translate("EmulatorBox", "High")
+            ),
+            lambda: translate(
+                "EmulatorBox", "Close {0}'s high end switch where the axis is now"
+            ).format(name),
+        )
+    button.clicked.connect(lambda _=False: controls.press_end_switch(index, which))
+    return button
 
 
 class EchoComposer(QGroupBox):
@@ -240,23 +276,7 @@ class EmulatorBox(QGroupBox):
         for index, name in enumerate(axis_names):
             axes.addWidget(QLabel(f"<b>{name}</b>"), index, 0)
             for column, which in enumerate(END_SWITCHES, start=1):
-                if which == END_SWITCHES[0]:
-                    button = t.button(
-                        lambda: self.tr("{0} end switch").format(self.tr("Low")),
-                        lambda n=name: self.tr(
-                            "Close {0}'s low end switch where the axis is now"
-                        ).format(n),
-                    )
-                else:
-                    button = t.button(
-                        lambda: self.tr("{0} end switch").format(self.tr("High")),
-                        lambda n=name: self.tr(
-                            "Close {0}'s high end switch where the axis is now"
-                        ).format(n),
-                    )
-                button.clicked.connect(
-                    lambda _=False, a=index, w=which: controls.press_end_switch(a, w)
-                )
+                button = _end_switch_button(t, controls, index, name, which)
                 self.switch_buttons[(index, which)] = button
                 axes.addWidget(button, index, column)
             fault = QCheckBox()
@@ -370,23 +390,7 @@ class JoystickBox(QGroupBox):
             grid.addWidget(slider, index, 1)
             self.sliders.append(slider)
             for column, which in enumerate(END_SWITCHES, start=2):
-                if which == END_SWITCHES[0]:
-                    button = self.texts.button(
-                        lambda: self.tr("{0} end switch").format(self.tr("Low")),
-                        lambda n=name: self.tr(
-                            "Close {0}'s low end switch where the axis is now"
-                        ).format(n),
-                    )
-                else:
-                    button = self.texts.button(
-                        lambda: self.tr("{0} end switch").format(self.tr("High")),
-                        lambda n=name: self.tr(
-                            "Close {0}'s high end switch where the axis is now"
-                        ).format(n),
-                    )
-                button.clicked.connect(
-                    lambda _=False, a=index, w=which: controls.press_end_switch(a, w)
-                )
+                button = _end_switch_button(self.texts, controls, index, name, which)
                 self.switch_buttons[(index, which)] = button
                 grid.addWidget(button, index, column)
         controls.availabilityChanged.connect(self.setEnabled)

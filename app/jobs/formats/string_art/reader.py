@@ -546,16 +546,7 @@ def load_string_art(poradi: Path, param: StringArtParams | None = None) -> Strin
                 0,
                 translate("JobFile", "the board entered: {0}").format(reason),
             )
-    check_sequence(poradi, nails, param)
-    return StringArtJob.read(
-        nails.array,
-        params=param,
-        sequence=nails.sequence,
-        poradi_path=poradi,
-        param_path=param_path,
-        entry_lines=nails.lines,
-        param_lines=MappingProxyType(lines),
-    )
+    return _job(poradi, nails, param, param_path, lines)
 
 
 def read_string_art(path: Path, param: StringArtParams | None = None) -> StringArtJob:
@@ -569,18 +560,28 @@ def read_string_art(path: Path, param: StringArtParams | None = None) -> StringA
                 0,
                 translate("JobFile", "no {0} beside it (the nail order)").format(PORADI_NAME),
             )
-        nails = read_nail_list(poradi)
-        check_sequence(poradi, nails, params)
-        return StringArtJob.read(
-            nails.array,
-            params=params,
-            sequence=nails.sequence,
-            poradi_path=poradi,
-            param_path=path,
-            entry_lines=nails.lines,
-            param_lines=MappingProxyType(lines),
-        )
+        return _job(poradi, read_nail_list(poradi), params, path, lines)
     return load_string_art(path, param)
+
+
+def _job(
+    poradi: Path,
+    nails: NailList,
+    params: StringArtParams,
+    param_path: Path | None,
+    lines: dict[str, int],
+) -> StringArtJob:
+    """The job of a nail list read from ``poradi`` on the board ``params``, once it fits."""
+    check_sequence(poradi, nails, params)
+    return StringArtJob.read(
+        nails.array,
+        params=params,
+        sequence=nails.sequence,
+        poradi_path=poradi,
+        param_path=param_path,
+        entry_lines=nails.lines,
+        param_lines=MappingProxyType(lines),
+    )
 
 
 def _looks_like_params(path: Path) -> bool:
