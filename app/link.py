@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import sys
 import threading
+import time
 from collections.abc import Callable
 
-from PySide6.QtCore import QObject, Qt, QThread, Signal
+from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal
 
 from protocol.transport.base import Transport
 
@@ -22,6 +23,10 @@ from protocol.transport.base import Transport
 #: baud) twice over (the reader's turn, then the writer's): a busy window thread then
 #: paced the stream to 75-90 % of the wire; at 0.5 ms it ran at 94 %.
 TAP_SWITCH_INTERVAL_S = 0.0005
+#: The window hears of a tapped link's reads at most this often: a streaming job is answered
+#: some 700 times a second, and the reader thread has already sent what each answer let go,
+#: so the window takes them in batches, about once a frame.
+DELIVER_EVERY_S = 1 / 30
 
 
 class Link(QObject):
@@ -33,25 +38,39 @@ class Link(QObject):
     received = Signal(object)
     #: The tap's results wait in the inbox (emitted once per batch, from the reader thread).
     _inboxFilled = Signal()
+    #: The link ended, told from the reader thread: the inbox goes first.
+    _lostFromThread = Signal(object)
 
     def __init__(self, transport: Transport, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.transport = transport
         self._tap: Callable[[bytes], object] | None = None
+        self._merge: Callable[[list[object]], list[object]] | None = None
         self._inbox: list[object] = []
         self._inbox_lock = threading.Lock()
         self._inbox_posted = False
+        self._delivered_at = -DELIVER_EVERY_S
+        self._later = QTimer(self)
+        self._later.setSingleShot(True)
+        self._later.timeout.connect(self._deliver)
         self._inboxFilled.connect(self._deliver, Qt.ConnectionType.QueuedConnection)
+        self._lostFromThread.connect(self._lost, Qt.ConnectionType.QueuedConnection)
         transport.set_listener(self)
 
-    def set_tap(self, tap: Callable[[bytes], object] | None) -> None:
+    def set_tap(
+        self,
+        tap: Callable[[bytes], object] | None,
+        merge: Callable[[list[object]], list[object]] | None = None,
+    ) -> None:
         """Run ``tap`` on received bytes where they arrive (the transport's reader thread).
 
         A session whose loop must not wait for the GUI thread (G-code streaming:
         the next line goes when an ``ok`` comes) does its part there; what
-        ``tap`` returns reaches the GUI thread as ``received``.
+        ``tap`` returns reaches the GUI thread as ``received``.  ``merge`` makes
+        the results gathered meanwhile into as few as it can (one per batch).
         """
         self._tap = tap
+        self._merge = merge
         if tap is not None and sys.getswitchinterval() > TAP_SWITCH_INTERVAL_S:
             sys.setswitchinterval(TAP_SWITCH_INTERVAL_S)  # the reader's turn comes sooner
 
@@ -79,13 +98,34 @@ class Link(QObject):
         self._inboxFilled.emit()
 
     def _deliver(self) -> None:
+        """The inbox to the window, at most every :data:`DELIVER_EVERY_S` (later ones wait)."""
+        wait = self._delivered_at + DELIVER_EVERY_S - time.monotonic()
+        if wait > 0:
+            if not self._later.isActive():
+                self._later.start(max(1, round(wait * 1000)))
+            return  # still posted: the reader thread adds to the inbox without waking us
+        self._flush()
+
+    def _flush(self) -> None:
+        self._later.stop()
+        self._delivered_at = time.monotonic()
         with self._inbox_lock:
             results, self._inbox = self._inbox, []
             self._inbox_posted = False
+        if self._merge is not None and len(results) > 1:
+            results = self._merge(results)
         for result in results:
             self.received.emit(result)
 
     def connection_lost(self, reason: str | None) -> None:
+        if QThread.currentThread() is self.thread():
+            self._lost(reason)
+        else:
+            self._lostFromThread.emit(reason)
+
+    def _lost(self, reason: object) -> None:
+        """What was read before the loss is heard of before it (a waiting batch goes now)."""
+        self._flush()
         self.disconnected.emit(reason)
 
     # Used from the GUI thread.

@@ -7,6 +7,13 @@ looks at the machine (a status report) before anything is sent again, and
 resumes from the first operation not known to have run, retracing the
 program's own path back to where the machine stands.
 
+While the job runs its lines are pulled, and its answers counted, by the
+session's feeder on the transport's reader thread (see
+:mod:`app.machines.gcode.feeder`): the wire stays full whatever the window
+is doing.  This driver, on the GUI thread, lets the job be pulled only while
+it runs, hears of its answers once per batch (``jobAdvanced``), and reads and
+changes the stream under the feeder's lock.
+
 Positions are compared in the program's coordinates: the machine position
 less the work offset (GRBL's G92) the board had when the job began — the
 work position, as long as the offset stays — so a job run after a ``G92``
@@ -16,7 +23,9 @@ coordinates that reach it with the offset the board has then.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Sequence
+from contextlib import nullcontext
 from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
@@ -24,6 +33,7 @@ from PySide6.QtCore import QCoreApplication
 from app.jobs.run.driver import JobDriver, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
+    AtReport,
     GcodeStream,
     ResumeState,
     file_offset,
@@ -80,12 +90,20 @@ class GcodeDriver(JobDriver):
         #: ``$G`` was sent after the set-up: nothing of the job goes before its answer.
         self._confirming = False
 
+    def _locked(self) -> threading.RLock | nullcontext[None]:
+        """The feeder's lock: the reader thread pulls and counts the stream under it."""
+        session = self.session
+        return session.feeder.lock if session is not None else nullcontext()
+
     @property
     def in_flight(self) -> int | None:
         if self._waiting is not None:
             return self._waiting
         stream = self.stream
-        return stream.pending[0] if stream is not None and stream.pending else None
+        if stream is None:
+            return None
+        with self._locked():
+            return stream.pending[0] if stream.pending else None
 
     # --- session wiring --------------------------------------------------------
 
@@ -93,8 +111,9 @@ class GcodeDriver(JobDriver):
         old = self.session
         if old is not None:
             try:
+                old.follow_job(None)
                 old.lineSent.disconnect(self._on_sent)
-                old.lineAcknowledged.disconnect(self._on_ok)
+                old.jobAdvanced.disconnect(self._on_advanced)
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
                 old.reset.disconnect(self._on_reset)
@@ -104,11 +123,21 @@ class GcodeDriver(JobDriver):
         self.session = session if isinstance(session, GcodeSession) else None
         if self.session is not None:
             self.session.lineSent.connect(self._on_sent)
-            self.session.lineAcknowledged.connect(self._on_ok)
+            self.session.jobAdvanced.connect(self._on_advanced)
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
             self.session.reset.connect(self._on_reset)
             self.session.replyText.connect(self._on_reply_text)
+            self._follow()
+
+    def _follow(self) -> None:
+        """The session counts this job's answers (and may be let pull its lines)."""
+        session, stream = self.session, self.stream
+        if session is None or stream is None:
+            return
+        with session.feeder.lock:
+            stream.make = session.job_line
+            session.follow_job(stream)
 
     # --- what the runner asks ----------------------------------------------------
 
@@ -117,6 +146,7 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        self._follow()
         session = self.session
         # The program's coordinates are the machine's less the work offset it had when the
         # job began (GRBL's G92 offset; 0 elsewhere); the file's own G92 lines keep that so,
@@ -169,14 +199,25 @@ class GcodeDriver(JobDriver):
             return False  # _on_status carries on
         if runner.state is not JobState.RUNNING:
             return False
-        if runner.single_step and stream.in_flight:
-            return False
-        # Single step: one operation that sends something, then the runner pauses.
-        wait = stream.feed(session, 1 if runner.single_step else None)
+        with session.feeder.lock:
+            if runner.single_step and stream.in_flight:
+                return False
+        if runner.single_step:
+            # One operation that sends something, then the runner pauses.
+            with session.feeder.lock:
+                stream.feed(session, 1)
+        else:
+            session.pull_job()  # from here on the reader thread sends the job as room frees
+        with session.feeder.lock:
+            wait = stream.waiting_at
+            in_flight, sent_all, refused = stream.in_flight, stream.sent_all, stream.refused
         self._report(stream)
-        if stream.in_flight:
+        if in_flight:
             return True
-        if wait is not None or stream.sent_all:
+        if refused is not None:  # every line before it has been answered
+            runner.fail(*refused)
+            return True
+        if wait is not None or sent_all:
             if not session.settled:
                 return True  # the session's next status report can show it settled
             if wait is not None:
@@ -196,20 +237,25 @@ class GcodeDriver(JobDriver):
         stream, session = self.stream, self.session
         if stream is None or session is None:
             return
-        taken = [sent.op_index for sent in session.discard_queued() if sent.origin == "job"]
-        indices = [i for i in taken if i is not None]
+        with session.feeder.lock:  # the reader thread pulls no more from here on
+            taken = [sent.op_index for sent in session.discard_queued() if sent.origin == "job"]
+            indices = [i for i in taken if i is not None]
+            if indices:
+                stream.take_back(min(indices))
         if indices:
-            stream.take_back(min(indices))
             self._report(stream)
 
     def confirmed(self, index: int) -> None:
         """The operator confirmed the WAIT at ``index``."""
         self._waiting = None
         if self.stream is not None:
-            self.stream.rewind(index + 1)
+            with self._locked():
+                self.stream.rewind(index + 1)
 
     def stopped(self) -> None:
         """Abort or failure: the device was reset, so only executed operations count."""
+        if self.session is not None:
+            self.session.discard_queued()  # nothing more is pulled (the stop took it back)
         self._write_checkpoint(force=True)
 
     def forget(self) -> None:
@@ -221,16 +267,19 @@ class GcodeDriver(JobDriver):
         if self.stream is not None and sent.origin == "job" and sent.op_index is not None:
             self.stream.note_written(sent.op_index)
 
-    def _on_ok(self, sent: SentLine) -> None:
+    def _on_advanced(self) -> None:
+        """Lines of the job were answered (counted by the feeder): once per batch of replies."""
         stream = self.stream
         runner = self.runner
-        if stream is None or sent.origin != "job" or not stream.acknowledge(sent):
+        if stream is None:
             return
-        if (runner.single_step or runner.state is JobState.PAUSING) and not stream.in_flight:
+        with self._locked():
+            in_flight = stream.in_flight
+        if (runner.single_step or runner.state is JobState.PAUSING) and not in_flight:
             self._report(stream)
             runner.pause_reached()
             return
-        if not self._proceed():  # feeding reports the progress itself: once a line, not twice
+        if not self._proceed():  # feeding reports the progress itself: once a batch, not twice
             self._report(stream)
 
     def _on_reply_text(self, text: str) -> None:
@@ -256,6 +305,8 @@ class GcodeDriver(JobDriver):
             return
         if runner.state not in ACTIVE:
             return
+        if self.session is not None:
+            self.session.discard_queued()  # not one more line of the job after a refusal
         runner.fail(
             sent.op_index, f"the machine answered error:{code} ({meaning}) to {sent.text!r}"
         )
@@ -263,20 +314,35 @@ class GcodeDriver(JobDriver):
     def _on_status(self, report: StatusReport) -> None:
         stream = self.stream
         runner = self.runner
-        planner_size = self.session.planner_size if self.session else 0
         if stream is None or runner.state not in CLOCK_RUNS:
             # While a lost link is unresolved an idle machine proves nothing: it may have
             # lost what it had.  The recheck on resume decides.
             if stream is not None and not self._recheck:
-                stream.status(report.state, report.planner_free, planner_size, self._here(report))
+                self._status_to(stream, report)
             return
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
-        stream.status(report.state, report.planner_free, planner_size, self._here(report))
+        self._status_to(stream, report)
         self._write_checkpoint(force=False)
-        if not stream.in_flight:
+        with self._locked():
+            in_flight = stream.in_flight
+        if not in_flight:
             self.proceed()
+
+    def _status_to(self, stream: GcodeStream, report: StatusReport) -> None:
+        """The report to the stream, with the stream as it was when the report was read."""
+        session = self.session
+        planner_size = session.planner_size if session else 0
+        seen = session.job_at_report if session is not None else None
+        with self._locked():
+            stream.status(
+                report.state,
+                report.planner_free,
+                planner_size,
+                self._here(report),
+                seen if isinstance(seen, AtReport) else None,
+            )
 
     def _on_reset(self) -> None:
         """The device was reset: its planner is gone, so look before going on.
@@ -290,7 +356,8 @@ class GcodeDriver(JobDriver):
         """
         if self.stream is None or self.runner.state not in CLOCK_RUNS:
             return
-        self.stream.pending.clear()
+        with self._locked():
+            self.stream.pending.clear()
         self._recheck = True
         self._asked_since_recheck = False
         session = self.session
@@ -331,7 +398,8 @@ class GcodeDriver(JobDriver):
         if report.state not in ("Idle", "Hold"):
             return  # still finishing what it had: the next report decides
         here = self._here(report)
-        ran = stream.ran_through(here) if report.state == "Idle" else None
+        with session.feeder.lock:
+            ran = stream.ran_through(here) if report.state == "Idle" else None
         if ran is not None:
             start = ran
             unanswered = ran - stream.answered
@@ -345,7 +413,8 @@ class GcodeDriver(JobDriver):
         self._recheck = False
         axes = [a.name for a in runner.station.profile.axes]
         way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
-        stream.rewind(start)
+        with session.feeder.lock:
+            stream.rewind(start)
         if report.state == "Hold":
             session.soft_reset()
         if start >= len(program):

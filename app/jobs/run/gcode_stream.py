@@ -35,7 +35,7 @@ from __future__ import annotations
 import math
 import re
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,14 +45,28 @@ from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
 
-#: Lines handed to the session beyond those it can send at once.  The session's feeder sends
-#: them from the transport's reader thread as ``ok``\ s come, so they are what keeps the wire
-#: full while the GUI thread is busy: 200 short lines are about 0.3 s at 115 200 baud.  None of
-#: them is on the wire yet, so a pause or an abort takes them all back at once.
+#: Lines handed to the session beyond those it can send at once, when the GUI thread feeds it
+#: (:meth:`GcodeStream.feed`: single steps; a running job is pulled by the session's feeder
+#: on the reader thread instead, :meth:`GcodeStream.take`).  None of them is on the wire
+#: yet, so a pause or an abort takes them all back at once.
 LINES_AHEAD = 200
 #: The queue is topped up only once it has fallen below this: a refill every few dozen
 #: answers instead of a little work on every one.
 REFILL_BELOW = LINES_AHEAD - 40
+
+#: What a session makes of an operation's line to queue it: the encoded line and its tag, or
+#: why it cannot go (see :meth:`GcodeSession.job_line`).
+LineMaker = Callable[[str, int], "tuple[bytes, SentLine] | str"]
+
+
+@dataclass(frozen=True)
+class AtReport:
+    """The stream as a status report was read: the answered boundary, and lines pending."""
+
+    answered: int
+    pending: bool
+
+
 #: Position agreement (mm) for "the machine stands where the last answered line ends".
 AT_POSITION_MM = 0.01
 
@@ -250,7 +264,9 @@ class GcodeStream:
 
     Plain Python on purpose: the runner owns the Qt signals and the job state;
     this object only keeps the bookkeeping between the session's lines and the
-    program's operations.
+    program's operations.  While a job runs, the session's feeder pulls its
+    lines (:meth:`take`) and counts its answers (:meth:`count_answer`) on the
+    transport's reader thread, so every use holds the feeder's lock.
     """
 
     def __init__(self, program: Program, profile: MachineProfile, start: int) -> None:
@@ -269,6 +285,10 @@ class GcodeStream:
         #: Answered lines' operations not known executed, in order (the planner's share).
         self._planned: deque[int] = deque()
         self._answered_at_last_report = start
+        #: How the session makes a line ready to queue (set when a session follows the job).
+        self.make: LineMaker | None = None
+        #: The operation whose line could not go, and why (the job fails there).
+        self.refused: tuple[int, str] | None = None
 
     # --- what to send --------------------------------------------------------
 
@@ -318,7 +338,54 @@ class GcodeStream:
             sent += 1
         return None
 
+    def take(self, count: int) -> list[tuple[bytes, SentLine]]:
+        """The next lines to queue, at most ``count``: the session's feeder pulls them.
+
+        Stops before a WAIT (:attr:`waiting_at`), at the end, and at a line that
+        cannot go (:attr:`refused`, nothing taken from there on).  Operations that
+        send nothing are done when everything before them is.
+        """
+        out: list[tuple[bytes, SentLine]] = []
+        program, make = self.program, self.make
+        if make is None or self.refused is not None:
+            return out
+        while len(out) < count and self.next_index < len(program):
+            index = self.next_index
+            op = program[index]
+            if op.kind is OpKind.WAIT:
+                break
+            text = self.line_for(index, op)
+            if text is None:
+                self.next_index += 1
+                if not self.pending:
+                    self.answered = self.executed = index + 1
+                continue
+            made = make(text, index)
+            if isinstance(made, str):
+                self.refused = (index, f"{text!r} cannot be sent: {made}")
+                break
+            self.next_index += 1
+            self.pending.append(index)
+            out.append(made)
+        return out
+
+    @property
+    def waiting_at(self) -> int | None:
+        """The WAIT the stream has come to (nothing after it goes before the operator)."""
+        index = self.next_index
+        if index < len(self.program) and self.program[index].kind is OpKind.WAIT:
+            return index
+        return None
+
     # --- replies -------------------------------------------------------------
+
+    def count_answer(self, sent: SentLine) -> bool:
+        """An ``ok`` read for ``sent``: counted when it is this job's line (the feeder asks)."""
+        return sent.origin == "job" and self.acknowledge(sent)
+
+    def reported(self) -> AtReport:
+        """The stream as a status report is read (the feeder's snapshot for :meth:`status`)."""
+        return AtReport(self.answered, bool(self.pending))
 
     def acknowledge(self, sent: SentLine) -> bool:
         """An ``ok`` for a job line; False when it is not the one expected (not ours)."""
@@ -337,16 +404,22 @@ class GcodeStream:
         planner_free: int | None,
         planner_size: int,
         mpos: Sequence[float] | None = None,
+        seen: AtReport | None = None,
     ) -> None:
         """A status report: advance the executed boundary as far as it proves.
 
         ``planner_size`` is what the device reported free when idle (0: unknown,
         then only an idle machine with nothing pending, or ``mpos`` on the path
-        of an answered operation, proves anything).
+        of an answered operation, proves anything).  ``seen``: the stream as the
+        report was read (:meth:`reported`; None: now) — lines answered after it
+        was read may not have run, whatever it says.
         """
-        if state == "Idle" and not self.pending:
-            self._planned.clear()
-            self.executed = self.answered
+        if seen is None:
+            seen = self.reported()
+        if state == "Idle" and not seen.pending:
+            while self._planned and self._planned[0] < seen.answered:
+                self._planned.popleft()
+            self.executed = max(self.executed, seen.answered)
         elif (planner_free is None or not planner_size) and mpos is not None:
             answered = self._answered_at_last_report
             for k, index in enumerate(self._planned):
@@ -366,7 +439,7 @@ class GcodeStream:
             for _ in range(max(finished, 0)):
                 self._planned.popleft()
             self.executed = self._planned[0] if self._planned else self.answered
-        self._answered_at_last_report = self.answered
+        self._answered_at_last_report = seen.answered
 
     def _stands_on(self, index: int, mpos: Sequence[float]) -> bool:
         """Whether ``mpos`` lies on operation ``index``'s stretch of path (or its point)."""

@@ -6,19 +6,27 @@ thread (a paint, a busy machine), a job of short lines ran at a fraction of
 the wire.  So the bytes the transport reads are decoded here, on its reader
 thread: every ``ok``/``error`` is matched to its line in the
 :class:`~protocol.gcode.streaming.LineStreamer` (the ``ok`` accounting) and
-the lines queued behind are written at once.  The GUI thread gets the
+the lines queued behind are written at once.  A running job goes further
+(:class:`JobLines`): its next lines are pulled from the program here as room
+frees, and each ``ok`` is counted against the job's operations here, so the
+wire stays full whatever the GUI thread is doing.  The GUI thread gets the
 decoded replies, each with the line it answered, in batches; it keeps every
-decision (job states, what to queue, pause, abort).
+decision (job states, when the job may be pulled, pause, abort).
 
 What keeps the machine from moving when nobody asked:
 
-* only lines the GUI queued are ever sent, and one lock covers queueing,
-  sending and taking back, so a pause or abort (which takes back the queue
-  under the lock) stops the feeding at once;
+* only lines the GUI queued, or a job's lines while the GUI thread lets the
+  job be pulled, are ever sent; one lock covers queueing, pulling, sending and
+  taking back, and taking back the queue also stops the pulling
+  (:meth:`LineFeeder.discard_queued`, :meth:`LineFeeder.clear`), so a pause,
+  a stop or a reset stops the feeding at once, and only the GUI thread lets a
+  job be pulled again;
 * after an ``error`` or an ``ALARM`` nothing more is sent until the GUI
   thread has seen it (:meth:`LineFeeder.release`): a job that fails stops
   with nothing more written than before;
-* after a soft reset nothing is sent until the board's banner (as before);
+* after a soft reset nothing is sent until the board's banner (as before); a
+  banner nobody here asked for (the board reset itself) drops the queue and
+  stops the pulling before anything more could go;
 * the transport writes nothing once the link is closed.
 
 Plain Python, no Qt; in tests on a manual clock the transport calls it on
@@ -30,7 +38,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Generic, TypeVar
+from typing import Generic, Protocol, TypeVar
 
 from protocol.clock import Clock
 from protocol.gcode.codec import AlarmReply, Banner, ErrorReply, Ok, Rejected, StatusReport
@@ -40,6 +48,29 @@ T = TypeVar("T")
 
 #: After a soft reset, answers are dropped and lines held until the banner, this long at most.
 BANNER_AFTER_RESET_S = 1.0
+#: A pulled job keeps this many lines queued: more than the board's buffer can take at once
+#: (127 bytes are at most 63 two-byte lines), and nothing of it is on the wire yet.
+PULL_AHEAD = 64
+
+
+class JobLines(Protocol[T]):
+    """A running job as the reader thread sees it: its next lines, and its ``ok`` accounting.
+
+    Both are called under the feeder's lock, on whichever thread holds it.
+    """
+
+    def take(self, count: int) -> list[tuple[bytes, T]]:
+        """At most ``count`` next lines, encoded, each with its tag (fewer: the job stops
+        there for now: its end, a wait for the operator, a line it cannot send)."""
+        ...
+
+    def count_answer(self, tag: T) -> bool:
+        """An ``ok`` for the line ``tag``: True when it is the job's (counted there)."""
+        ...
+
+    def reported(self) -> object:
+        """What the job has as a status report is read (the report's snapshot of it)."""
+        ...
 
 
 class Stale:
@@ -49,11 +80,31 @@ class Stale:
 STALE = Stale()
 
 
+class Wrote:
+    """In a merged read's replies: the lines written after the replies before it (verdict)."""
+
+
+WROTE = Wrote()
+
+
 @dataclass(frozen=True)
 class Answer(Generic[T]):
-    """The verdict on an ``ok``/``error``: the line it answers (None: a reply for no line)."""
+    """The verdict on an ``ok``/``error``: the line it answers (None: a reply for no line).
+
+    ``counted``: an ``ok`` the running job has counted already (:meth:`JobLines.count_answer`).
+    """
 
     entry: tuple[bytes, T] | None
+    counted: bool = False
+
+
+@dataclass(frozen=True)
+class ReportSeen(Generic[T]):
+    """The verdict on a status report: what was unanswered as it was read, and the job's
+    snapshot then (:meth:`JobLines.reported`; None without a job)."""
+
+    unanswered: list[T]
+    job: object = None
 
 
 @dataclass(frozen=True)
@@ -70,13 +121,39 @@ class Received(Generic[T]):
 
     data: bytes
     #: The decoded replies in order, each with its verdict: :class:`Answer`, :data:`STALE`,
-    #: :class:`BannerSeen`, a status report's unanswered lines, or None.
+    #: :class:`BannerSeen`, :class:`ReportSeen`, or None (and, merged, :data:`WROTE`).
     replies: list[tuple[object, object]] = field(default_factory=list)
     #: The lines written after these replies freed room, in order.
     written: list[tuple[bytes, T]] = field(default_factory=list)
     #: What went wrong reading these bytes (a bug, not the device's words): sending is held,
     #: as after an error, until the GUI thread has stopped the machine.
     failure: Exception | None = None
+
+
+def merged(results: list[object]) -> list[object]:
+    """Reads the window takes in one go, made one (:meth:`Link.set_tap`'s ``merge``).
+
+    Consecutive reads join: their bytes, and their replies in order, each
+    read's lines let go after its replies (as :data:`WROTE`, so a line is told
+    as sent before its answer is).  A read that failed stays apart (the window
+    stops the machine on it, after the replies before it).
+    """
+    out: list[object] = []
+    for result in results:
+        last = out[-1] if out else None
+        if (
+            isinstance(last, Received)
+            and isinstance(result, Received)
+            and last.failure is None
+            and result.failure is None
+        ):
+            between = [(WROTE, last.written)] if last.written else []
+            out[-1] = Received(
+                last.data + result.data, last.replies + between + result.replies, result.written
+            )
+        else:
+            out.append(result)
+    return out
 
 
 class LineFeeder(Generic[T]):
@@ -104,6 +181,35 @@ class LineFeeder(Generic[T]):
         #: sent while any is.  A count, not a flag: the GUI thread having seen the first
         #: must not let lines go past a second it has not seen.
         self.unseen = 0
+        #: The running job: its answers are counted here while it is set.
+        self.job: JobLines[T] | None = None
+        #: Whether the job's next lines may be pulled (only the GUI thread sets it; anything
+        #: that takes back the queue clears it).
+        self.pulling = False
+
+    def follow(self, job: JobLines[T] | None) -> None:
+        """Count the answers of ``job`` here from now on (None: no job); it is not pulled."""
+        with self.lock:
+            self.job = job
+            self.pulling = False
+
+    def pull(self) -> list[tuple[bytes, T]]:
+        """Let the job's next lines be pulled as room frees; the lines written now."""
+        with self.lock:
+            self.pulling = self.job is not None
+            return self.pump()
+
+    def discard_queued(self) -> list[T]:
+        """Take back the lines not yet sent, and stop pulling the job (oldest first)."""
+        with self.lock:
+            self.pulling = False
+            return self.streamer.discard_queued()
+
+    def clear(self) -> list[T]:
+        """Forget every line (the board lost them: a reset, a lost link); stop pulling."""
+        with self.lock:
+            self.pulling = False
+            return self.streamer.clear()
 
     @property
     def halted(self) -> bool:
@@ -130,7 +236,11 @@ class LineFeeder(Generic[T]):
         with self.lock:
             if self.halted or self.awaiting_banner():
                 return []
-            out = self.streamer.sendable()
+            job, streamer = self.job, self.streamer
+            if self.pulling and job is not None and streamer.queued < PULL_AHEAD // 2:
+                for raw, tag in job.take(PULL_AHEAD - streamer.queued):
+                    streamer.queue(raw, tag)
+            out = streamer.sendable()
             if here and self._write_here is not None:
                 if out:
                     self._write_here([raw for raw, _tag in out])
@@ -159,6 +269,14 @@ class LineFeeder(Generic[T]):
                 self.unseen += 1
         return received
 
+    def acknowledge(self) -> Answer[T]:
+        """An ``ok`` for the oldest line in flight, counted by the job when it is its line."""
+        with self.lock:
+            entry = self.streamer.acknowledge()
+            job = self.job
+            counted = entry is not None and job is not None and job.count_answer(entry[1])
+            return Answer(entry, counted)
+
     def _match(self, data: bytes, received: Received[T]) -> None:
         """Decode ``data`` into ``received``: each reply with its verdict (under the lock)."""
         for reply in self.decoder.feed(data):  # type: ignore[attr-defined]
@@ -168,19 +286,25 @@ class LineFeeder(Generic[T]):
             elif isinstance(reply, Ok | ErrorReply):
                 if self.awaiting_banner():
                     verdict = STALE  # an answer from before the reset: its line is gone
-                else:
+                elif isinstance(reply, ErrorReply):
                     verdict = Answer(self.streamer.acknowledge())
-                    if isinstance(reply, ErrorReply):
-                        self.unseen += 1
+                    self.unseen += 1
+                else:
+                    verdict = self.acknowledge()
             elif isinstance(reply, StatusReport):
                 # The lines unanswered as the report is read: those written later
                 # went after it, so it says nothing about them (lost answers).
-                verdict = self.streamer.unanswered_tags()
+                job = self.job
+                verdict = ReportSeen(
+                    self.streamer.unanswered_tags(), None if job is None else job.reported()
+                )
             elif isinstance(reply, AlarmReply):
                 self.unseen += 1
             elif isinstance(reply, Banner):
                 ours = self.reset_sent_at is not None
                 self.reset_sent_at = None
-                lost = [] if ours else self.streamer.clear()
+                # A board that reset itself lost what it had: nothing more of the job goes
+                # before the GUI thread has seen that.
+                lost = [] if ours else self.clear()
                 verdict = BannerSeen(ours, lost)
             received.replies.append((reply, verdict))

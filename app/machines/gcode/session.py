@@ -24,13 +24,22 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 from itertools import count
-from typing import Literal
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
-from app.machines.gcode.feeder import STALE, Answer, BannerSeen, LineFeeder, Received
+from app.machines.gcode.feeder import (
+    STALE,
+    WROTE,
+    Answer,
+    BannerSeen,
+    JobLines,
+    LineFeeder,
+    Received,
+    ReportSeen,
+    merged,
+)
 from app.machines.gcode.line_targets import line_motion
 from app.machines.motion_gate import Refusal
 from app.machines.session import MachineSession
@@ -113,7 +122,9 @@ class GcodeSession(MachineSession):
     """frameSent carries the line text (or the real-time byte's name), frameReceived a reply."""
 
     lineSent = Signal(object)  # SentLine
-    lineAcknowledged = Signal(object)  # SentLine
+    lineAcknowledged = Signal(object)  # SentLine (not a job's line the job counted)
+    #: Lines of the followed job were answered (counted there): once per batch of replies.
+    jobAdvanced = Signal()
     lineFailed = Signal(object, int, str)  # SentLine, error code, meaning
     statusChanged = Signal(object)  # StatusReport
     #: A reply line worth showing the operator (the console): its text.
@@ -177,6 +188,8 @@ class GcodeSession(MachineSession):
         self._stall_told = False
         #: The motors were released for zeroing by hand and nothing was sent since.
         self._released_by_hand = False
+        #: What the followed job had as the last status report was read (its snapshot).
+        self.job_at_report: object = None
         self._autotick = autotick
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
@@ -184,7 +197,7 @@ class GcodeSession(MachineSession):
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.received.connect(self._on_received)
-        link.set_tap(self.feeder.receive)
+        link.set_tap(self.feeder.receive, merged)
 
     # --- state the widgets and the runner read ---------------------------------
 
@@ -283,6 +296,35 @@ class GcodeSession(MachineSession):
         self._pump()
         return True
 
+    def job_line(self, text: str, index: int) -> tuple[bytes, SentLine] | str:
+        """Operation ``index``'s line ``text`` made ready to queue (called while the job is
+        pulled, on the reader thread, under the feeder's lock); a str: why it cannot go."""
+        line = text.strip()
+        try:
+            raw = encode_line(line)
+        except ValueError as exc:
+            return str(exc)
+        if len(raw) > self.streamer.capacity:
+            return f"{len(raw)} bytes never fit the board's {self.streamer.rx_buffer}-byte buffer"
+        self._released_by_hand = False
+        self._seen_idle = False
+        if "9" in line:  # see send_line: G90/G91 are judged for the console's lines
+            self._relative = line_motion(line, self._relative, {}, ()).relative_after
+        return raw, SentLine(next(self._serials), line, "job", index)
+
+    def follow_job(self, job: JobLines[SentLine] | None) -> None:
+        """Count ``job``'s answers where they are read (None: no job any more); not pulled yet."""
+        self.feeder.follow(job)
+
+    def pull_job(self) -> None:
+        """Let the followed job's lines go as the board frees room, from the reader thread.
+
+        Anything that takes back the queue (a pause, a stop, a reset, a lost link)
+        stops that again; only this lets the job go on.
+        """
+        if self.link.is_open:
+            self._tell_written(self.feeder.pull())
+
     @property
     def queued(self) -> int:
         """Lines waiting for room in the device's buffer."""
@@ -357,8 +399,7 @@ class GcodeSession(MachineSession):
 
         Under the feeder's lock: once this returns the reader thread sends none of them.
         """
-        with self.feeder.lock:
-            return self.streamer.discard_queued()
+        return self.feeder.discard_queued()
 
     # --- intents ------------------------------------------------------------------
 
@@ -378,7 +419,7 @@ class GcodeSession(MachineSession):
         if not self.link.is_open:
             return
         with self.feeder.lock:  # nothing more is fed from here on
-            self._dropped_by_stop = len(self.streamer.discard_queued())
+            self._dropped_by_stop = len(self.feeder.discard_queued())
             self.feed_hold()
         self._reset_requested_at = self.clock.now()
         self.query_status()
@@ -633,8 +674,7 @@ class GcodeSession(MachineSession):
         self._relative = False  # GRBL's power-on and reset mode is G90
         # GRBL forgets its G92 offset on a reset; its next report carries the offset it has.
         self.work_offset = None
-        with self.feeder.lock:
-            lost = self.streamer.clear()
+        lost = self.feeder.clear()
         self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
@@ -645,7 +685,7 @@ class GcodeSession(MachineSession):
         # board's first words (a banner, a status) before this runs, and a reset now
         # would cut a reply in half.  It starts fresh, and is reset when a link ends.
         with self.feeder.lock:
-            self.streamer.clear()
+            self.feeder.clear()
             self.feeder.reset_halt()
         self._seen_idle = False
         self._status_asked_at = None
@@ -667,7 +707,7 @@ class GcodeSession(MachineSession):
         self._jog_cancelling = False
         self._quiet_stop = False
         with self.feeder.lock:
-            lost = self.streamer.clear()
+            lost = self.feeder.clear()
             # No reader runs until the station opens the link again (after this): a reply
             # cut by the loss is not glued to the next link's first bytes.
             self.decoder.reset()
@@ -695,7 +735,11 @@ class GcodeSession(MachineSession):
             self._reading_failed(received.failure)
             return
         self._heard_unrecognised(received.data)  # kept until the device answers: whose words?
+        advanced = False
         for reply, verdict in received.replies:
+            if reply is WROTE:
+                self._tell_written(verdict)  # type: ignore[arg-type]
+                continue
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
@@ -705,11 +749,21 @@ class GcodeSession(MachineSession):
             self.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
+            if isinstance(verdict, Answer) and verdict.counted:
+                self._answered(None, verdict.entry, counted=True)
+                advanced = True
+                continue
+            if advanced:  # the job hears of its answers before whatever came after them
+                advanced = False
+                self.jobAdvanced.emit()
             if isinstance(reply, Ok | ErrorReply):
                 entry = verdict.entry if isinstance(verdict, Answer) else None
                 self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
-                self._apply_status(reply, verdict if isinstance(verdict, list) else None)
+                if isinstance(verdict, ReportSeen):
+                    self._apply_status(reply, verdict.unanswered, verdict.job)
+                else:
+                    self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(
@@ -735,6 +789,8 @@ class GcodeSession(MachineSession):
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
         self._tell_written(received.written)
+        if advanced:
+            self.jobAdvanced.emit()
 
     def _reading_failed(self, failure: Exception) -> None:
         """A bug in matching replies to lines: the count may be wrong, so the machine stops.
@@ -749,14 +805,16 @@ class GcodeSession(MachineSession):
     def _answered(
         self,
         error: ErrorReply | None,
-        entry: tuple[bytes, SentLine] | Literal["ask"] | None = "ask",
+        entry: tuple[bytes, SentLine] | None,
+        *,
+        counted: bool = False,
     ) -> None:
-        """The reply to the oldest line: ``entry`` as the feeder matched it ("ask": match now)."""
+        """The reply to the oldest line, ``entry`` as the feeder matched it.
+
+        ``counted``: a job's line the job has counted already (told by :attr:`jobAdvanced`).
+        """
         self._stall_told = False
-        if entry == "ask":
-            with self.feeder.lock:
-                entry = self.streamer.acknowledge()
-        if entry is None or isinstance(entry, str):
+        if entry is None:
             self.model.message.emit("A reply arrived for no line (ignored)")
             if error is not None:
                 self._tell_written(self.feeder.release())
@@ -779,8 +837,9 @@ class GcodeSession(MachineSession):
         if error is None:
             if sent.origin in ("console", "intent"):
                 self.replyText.emit(f"ok  ← {sent.text}")
-            self.lineAcknowledged.emit(sent)
-            self._pump()
+            if not counted:
+                self.lineAcknowledged.emit(sent)
+                self._pump()
         else:
             self.errors += 1
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
@@ -846,13 +905,18 @@ class GcodeSession(MachineSession):
                 f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
                 "taken and run every line sent, so they count as answered"
             )
+            advanced = False
             for sent in unanswered:
                 with self.feeder.lock:
                     tags = self.streamer.unanswered_tags()
                     if not tags or tags[0] != sent:
                         break  # answered meanwhile after all
-                    entry = self.streamer.acknowledge()
-                self._answered(None, entry)
+                    answer = self.feeder.acknowledge()
+                self._answered(None, answer.entry, counted=answer.counted)
+                advanced = advanced or answer.counted
+            if advanced:
+                self.jobAdvanced.emit()
+                self._pump()
         elif not drained and waited >= SILENCE_S and not self._stall_told:
             self._stall_told = True
             self.model.message.emit(
@@ -860,8 +924,16 @@ class GcodeSession(MachineSession):
                 "waiting for its answer (without Bf: in its reports it cannot show it has them)"
             )
 
-    def _apply_status(self, report: StatusReport, unanswered: list[SentLine] | None = None) -> None:
+    def _apply_status(
+        self,
+        report: StatusReport,
+        unanswered: list[SentLine] | None = None,
+        job: object = None,
+    ) -> None:
+        """``unanswered`` and ``job``: the lines unanswered and the job's snapshot as the
+        report was read (on the reader thread; None: read now)."""
         self._status_asked_at = None
+        self.job_at_report = job
         # GRBL sends its work offset (WCO:) only now and then: the last one heard completes
         # the reports between, so both the machine and the work position are always known.
         if report.wco is not None:
