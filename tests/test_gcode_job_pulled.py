@@ -78,6 +78,12 @@ class BoardPort(Transport):
         with self._lock:
             self.sent.append(bytes(data))
 
+    def start_over(self) -> None:
+        """Forget what was written and answered so far (a fresh link's count)."""
+        with self._lock:
+            self.sent.clear()
+        self.answered = 0
+
     def lines(self) -> list[bytes]:
         """Every line written so far (real-time bytes left out)."""
         with self._lock:
@@ -433,3 +439,115 @@ def test_reads_taken_together_keep_every_line_told_as_sent_before_its_answer(
     qtbot.waitUntil(lambda: len(told) == 6, timeout=2000)
     assert len(heard) == 1  # three reads, heard of as one
     assert told == [f"sent {long}", "read ok"] * 3
+
+
+def resumed_after_a_pulled_cable(
+    station: Station, port: BoardPort, runner: JobRunner
+) -> list[bytes]:
+    """Twenty lines run, the cable pulled and put back, Resume: the way back sent (returned)."""
+    assert answer(station, port, 20) == 20
+    for _ in range(2):  # the planner empty: the twenty lines have run
+        read(station, b"<Run|MPos:4.750,1.000,0.000|Bf:15,127|FS:0,0>\r\n")
+    port.close()
+    assert runner.state is JobState.PAUSED
+    link = station.link
+    assert link is not None
+    link.open()
+    port.listener.connection_made()
+    read(station, IDLE)
+    port.start_over()
+    runner.resume()
+    read(station, b"<Idle|MPos:3.000,1.000,0.000|Bf:15,127|FS:0,0>\r\n")
+    return [line.strip() for line in port.lines()]
+
+
+def test_the_resumed_job_waits_for_its_way_back_to_be_answered(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    """A line of the job behind the way back would run even if the way back were refused."""
+    station, port = board
+    runner = started(station, port, tmp_path)
+    way_back = resumed_after_a_pulled_cable(station, port, runner)
+    assert b"G0 X4.750 Y1.000" in way_back
+    assert port.job_ops() == []
+    for _ in way_back[:-1]:
+        read(station, b"ok\r\n")
+        assert port.job_ops() == []
+    read(station, b"ok\r\n")
+    assert port.job_ops()[0] == 20  # then on from where it stopped
+    assert runner.state is JobState.RUNNING
+
+
+def test_a_refused_way_back_fails_the_resumed_job_before_any_of_its_lines(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    """Resuming, the machine is taken back to the program's place first; a board that refuses
+    the way back (say error:15, beyond its travel) would draw the rest somewhere else."""
+    station, port = board
+    runner = started(station, port, tmp_path)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    way_back = resumed_after_a_pulled_cable(station, port, runner)
+    refused = way_back.index(b"G0 X4.750 Y1.000")
+    for k in range(len(way_back)):
+        read(station, b"error:15\r\n" if k == refused else b"ok\r\n")
+    assert runner.state is JobState.FAILED
+    assert any("refused the way back" in text for text in messages)
+    read(station, b"ok\r\n" * 5)
+    assert port.job_ops() == []  # not one line of the job went
+
+
+def test_a_single_step_after_a_wait_sends_one_operation_only(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    station, port = board
+    ops: list[Operation] = [move(SourceRef("w", n + 1), X=n * PITCH, Y=1.0) for n in range(4)]
+    ops.append(Operation(OpKind.WAIT, SourceRef("w", 5), message="change the pen"))
+    ops += [move(SourceRef("w", n + 1), X=n * PITCH, Y=1.0) for n in range(5, 40)]
+    runner = JobRunner(station, tmp_path / "checkpoints")
+    assert runner.load(Program("w", tuple(ops))) == []
+    runner.start()
+    read(station, b"ok\r\n" + MODES + b"ok\r\n")
+    port.answered = 2
+    answer(station, port, 10)
+    read(station, IDLE)
+    assert runner.state is JobState.WAITING
+    assert port.job_ops() == [0, 1, 2, 3]
+    runner.pause()
+    runner.step()  # the operator steps on through the wait, one operation at a time
+    runner.confirm()  # the wait was the step
+    read(station, b"ok\r\n")  # a stray answer pumps the feeder: nothing is pulled
+    assert port.job_ops() == [0, 1, 2, 3]
+    runner.step()
+    answer(station, port, 10)
+    read(station, IDLE)
+    read(station, b"ok\r\n")
+    assert port.job_ops() == [0, 1, 2, 3, 5]
+    assert runner.state is JobState.PAUSED
+
+
+def test_a_pause_that_takes_back_the_set_up_sends_it_again_before_the_job(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    station, port = board
+    session = session_of(station)
+    busy = "G0 X1." + "0" * 25 + " Y1." + "0" * 25  # two fill the board's buffer
+    for _ in range(2):
+        assert session.send_line(busy, "console", confirmed=True)
+    runner = JobRunner(station, tmp_path / "checkpoints")
+    assert runner.load(job(40)) == []
+    runner.start()
+    assert [line.strip() for line in port.lines()] == [busy.encode()] * 2  # set-up queued
+    runner.pause()  # before the set-up could go: taken back with the job
+    assert runner.state is JobState.PAUSED
+    read(station, b"ok\r\nok\r\n" + IDLE)
+    assert len(port.lines()) == 2  # nothing went during the pause
+    port.answered = 2
+    runner.resume()
+    assert [line.strip() for line in port.lines()[2:]] == [b"G90 G21 G17", b"$G"]
+    read(station, b"ok\r\n" + MODES + b"ok\r\n")
+    port.answered = 4
+    answer(station, port, 60)
+    read(station, IDLE)
+    assert port.job_ops() == list(range(40))
+    assert runner.state is JobState.DONE

@@ -89,6 +89,13 @@ class GcodeDriver(JobDriver):
         self._shown_at = -1.0
         #: ``$G`` was sent after the set-up: nothing of the job goes before its answer.
         self._confirming = False
+        #: The operation the last resume went back to (a refused way back fails there).
+        self._resume_at = 0
+        #: Set-up and way-back lines sent and not yet answered: the job waits for them, so
+        #: that none of its lines runs on a machine they did not set up.
+        self._preparing = 0
+        #: A pause took back the set-up before it went: it goes again first on the resume.
+        self._redo_setup = False
 
     def _locked(self) -> threading.RLock | nullcontext[None]:
         """The feeder's lock: the reader thread pulls and counts the stream under it."""
@@ -114,6 +121,7 @@ class GcodeDriver(JobDriver):
                 old.follow_job(None)
                 old.lineSent.disconnect(self._on_sent)
                 old.jobAdvanced.disconnect(self._on_advanced)
+                old.lineAcknowledged.disconnect(self._on_line_ok)
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
                 old.reset.disconnect(self._on_reset)
@@ -124,6 +132,7 @@ class GcodeDriver(JobDriver):
         if self.session is not None:
             self.session.lineSent.connect(self._on_sent)
             self.session.jobAdvanced.connect(self._on_advanced)
+            self.session.lineAcknowledged.connect(self._on_line_ok)
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
             self.session.reset.connect(self._on_reset)
@@ -156,6 +165,8 @@ class GcodeDriver(JobDriver):
         self._recheck = verify
         self._asked_since_recheck = False
         self._confirming = False
+        self._preparing = 0
+        self._redo_setup = False
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -168,7 +179,7 @@ class GcodeDriver(JobDriver):
         """
         words = session.settings.words
         for line in setup_lines(words):
-            session.send_line(line, "setup")
+            self._preparing += session.send_line(line, "setup")
         if "$G" in words:
             self._confirming = session.send_line("$G", "setup")
 
@@ -177,6 +188,7 @@ class GcodeDriver(JobDriver):
         if self.stream is not None:
             self._recheck = True
             self._asked_since_recheck = False
+            self._preparing = 0  # lost with the link: the recheck sets the machine up again
             self._write_checkpoint(force=True)
 
     def proceed(self) -> None:
@@ -190,8 +202,15 @@ class GcodeDriver(JobDriver):
         if stream is None or session is None:
             runner.link_pause()
             return False
-        if self._confirming:
-            return False  # the answer to $G carries on
+        running = runner.state is JobState.RUNNING
+        if self._redo_setup and running and not self._recheck:
+            self._redo_setup = False
+            self._set_up(session)
+        preparing = self._confirming or self._preparing > 0
+        if preparing or self._recheck or not running or runner.single_step:
+            session.hold_job()  # the job is pulled only while it runs on its own
+        if preparing:
+            return False  # the answer to the set-up or the way back carries on
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True
@@ -220,6 +239,7 @@ class GcodeDriver(JobDriver):
         if wait is not None or sent_all:
             if not session.settled:
                 return True  # the session's next status report can show it settled
+            session.hold_job()
             if wait is not None:
                 self._report(stream)
                 self._waiting = wait
@@ -238,10 +258,21 @@ class GcodeDriver(JobDriver):
         if stream is None or session is None:
             return
         with session.feeder.lock:  # the reader thread pulls no more from here on
-            taken = [sent.op_index for sent in session.discard_queued() if sent.origin == "job"]
-            indices = [i for i in taken if i is not None]
+            taken = session.discard_queued()
+            indices = [s.op_index for s in taken if s.origin == "job" and s.op_index is not None]
             if indices:
                 stream.take_back(min(indices))
+        origins = {sent.origin for sent in taken}
+        if "resume" in origins:
+            # The way back did not all go: on the resume the machine is looked at again and
+            # a way back made from where it stands then.
+            self._preparing = 0
+            self._recheck = True
+            self._asked_since_recheck = False
+        if "setup" in origins:
+            self._preparing = 0
+            self._confirming = False
+            self._redo_setup = True
         if indices:
             self._report(stream)
 
@@ -254,18 +285,29 @@ class GcodeDriver(JobDriver):
 
     def stopped(self) -> None:
         """Abort or failure: the device was reset, so only executed operations count."""
+        self._preparing = 0
         if self.session is not None:
-            self.session.discard_queued()  # nothing more is pulled (the stop took it back)
+            self.session.hold_job()  # nothing more is pulled (the stop took the queue back)
         self._write_checkpoint(force=True)
 
     def forget(self) -> None:
         self._waiting = None
+        if self.session is not None:
+            self.session.hold_job()
 
     # --- replies ------------------------------------------------------------------
 
     def _on_sent(self, sent: SentLine) -> None:
         if self.stream is not None and sent.origin == "job" and sent.op_index is not None:
             self.stream.note_written(sent.op_index)
+
+    def _on_line_ok(self, sent: SentLine) -> None:
+        """The set-up or the way back answered, line by line: the job goes on after the last."""
+        if sent.origin not in ("setup", "resume") or not self._preparing:
+            return
+        self._preparing -= 1
+        if not self._preparing:
+            self.proceed()
 
     def _on_advanced(self) -> None:
         """Lines of the job were answered (counted by the feeder): once per batch of replies."""
@@ -296,17 +338,24 @@ class GcodeDriver(JobDriver):
 
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
         runner = self.runner
-        if sent.origin == "setup" and runner.state in ACTIVE:
+        if sent.origin in ("setup", "resume") and runner.state in ACTIVE:
+            # The job runs only on a machine set up as the program expects it (back at its
+            # place, pen and modes restored): refused, the rest would run elsewhere.
             self._confirming = False
+            if self.session is not None:
+                self.session.hold_job()
             refused = f"{sent.text!r}: error:{code} ({meaning})"
-            runner.fail(0, f"the machine refused the set-up {refused}")
+            if sent.origin == "setup":
+                runner.fail(0, f"the machine refused the set-up {refused}")
+            else:
+                runner.fail(self._resume_at, f"the machine refused the way back {refused}")
             return
         if self.stream is None or sent.origin != "job" or sent.op_index is None:
             return
         if runner.state not in ACTIVE:
             return
         if self.session is not None:
-            self.session.discard_queued()  # not one more line of the job after a refusal
+            self.session.hold_job()  # not one more line of the job after a refusal
         runner.fail(
             sent.op_index, f"the machine answered error:{code} ({meaning}) to {sent.text!r}"
         )
@@ -358,6 +407,7 @@ class GcodeDriver(JobDriver):
             return
         with self._locked():
             self.stream.pending.clear()
+        self._preparing = 0  # the reset took what was left of it
         self._recheck = True
         self._asked_since_recheck = False
         session = self.session
@@ -411,6 +461,7 @@ class GcodeDriver(JobDriver):
             again = stream.answered - stream.executed
             note = f"{again} operation(s) may not have run and are sent again"
         self._recheck = False
+        self._resume_at = start
         axes = [a.name for a in runner.station.profile.axes]
         way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
         with session.feeder.lock:
@@ -434,7 +485,7 @@ class GcodeDriver(JobDriver):
         state = replace(planned, position={a: v + shift[a] for a, v in planned.position.items()})
         way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
         for line in preamble(state, stream.settings, way_back, self._restore(planned, start, now)):
-            session.send_line(line, "resume")
+            self._preparing += session.send_line(line, "resume")
         runner.note(
             f"Resuming at {program[start].source}: {note}; machine set up again "
             f"({'pen down' if state.pen_down else 'pen up'}, at the program's position)"

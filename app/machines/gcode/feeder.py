@@ -199,6 +199,11 @@ class LineFeeder(Generic[T]):
             self.pulling = self.job is not None
             return self.pump()
 
+    def hold(self) -> None:
+        """Pull no more of the job until :meth:`pull` (lines already queued stay)."""
+        with self.lock:
+            self.pulling = False
+
     def discard_queued(self) -> list[T]:
         """Take back the lines not yet sent, and stop pulling the job (oldest first)."""
         with self.lock:

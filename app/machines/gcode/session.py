@@ -316,6 +316,10 @@ class GcodeSession(MachineSession):
         """Count ``job``'s answers where they are read (None: no job any more); not pulled yet."""
         self.feeder.follow(job)
 
+    def hold_job(self) -> None:
+        """Pull nothing more of the job (what is queued stays: see :meth:`discard_queued`)."""
+        self.feeder.hold()
+
     def pull_job(self) -> None:
         """Let the followed job's lines go as the board frees room, from the reader thread.
 
