@@ -20,37 +20,8 @@ from app.station import Station
 from protocol.clock import ManualClock
 from protocol.gcode.codec import FEED_HOLD, make_decoder
 from protocol.gcode.streaming import LineStreamer, StreamMode
-from protocol.transport.base import Transport
+from tests.helpers.fake_transport import UnannouncedPort
 from tests.helpers.harness import StationHarness
-
-
-class UnannouncedPort(Transport):
-    """A port that opens without saying so: the test says when the window hears of it."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.sent: list[bytes] = []
-        self._open = False
-
-    def describe(self) -> str:
-        return "/dev/ttyACM0 @ 115200"
-
-    @property
-    def is_open(self) -> bool:
-        return self._open
-
-    def open(self) -> None:
-        self._open = True
-        self._mark_open()
-
-    def close(self) -> None:
-        was_open, self._open = self._open, False
-        self._mark_closed()
-        if was_open:
-            self.listener.connection_lost(None)
-
-    def write(self, data: bytes) -> None:
-        self.sent.append(bytes(data))
 
 
 @pytest.fixture

@@ -35,7 +35,7 @@ from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import load_profile
 from app.station import Station
 from protocol.clock import ManualClock
-from protocol.transport.base import Transport
+from tests.helpers.fake_transport import UnannouncedPort
 
 #: More lines than the window's thread ever queued ahead of the board (200).
 JOB_OPS = 600
@@ -46,47 +46,23 @@ _X = re.compile(rb"^G1 X([0-9.]+)")
 PITCH = 0.25
 
 
-class BoardPort(Transport):
-    """A port whose board is the test: it records what is written, from any thread."""
+class BoardPort(UnannouncedPort):
+    """A port whose board is the test: what was written, as lines and as job operations."""
 
     def __init__(self) -> None:
-        super().__init__()
-        self.sent: list[bytes] = []
+        super().__init__("/dev/ttyUSB0 @ 115200")
         #: Lines the test (the board) has answered so far.
         self.answered = 0
-        self._lock = threading.Lock()
-        self._open = False
-
-    def describe(self) -> str:
-        return "/dev/ttyUSB0 @ 115200"
-
-    @property
-    def is_open(self) -> bool:
-        return self._open
-
-    def open(self) -> None:
-        self._open = True
-        self._mark_open()
-
-    def close(self) -> None:
-        was_open, self._open = self._open, False
-        self._mark_closed()
-        if was_open:
-            self.listener.connection_lost(None)
-
-    def write(self, data: bytes) -> None:
-        with self._lock:
-            self.sent.append(bytes(data))
 
     def start_over(self) -> None:
         """Forget what was written and answered so far (a fresh link's count)."""
-        with self._lock:
+        with self.sent_lock:
             self.sent.clear()
         self.answered = 0
 
     def lines(self) -> list[bytes]:
         """Every line written so far (real-time bytes left out)."""
-        with self._lock:
+        with self.sent_lock:
             joined = b"".join(self.sent)
         joined = re.sub(rb"[?!~\x18\x80-\xff]", b"", joined)  # GRBL's real-time bytes
         return [line for line in re.split(rb"(?<=\n)", joined) if line.endswith(b"\n")]
