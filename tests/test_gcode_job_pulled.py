@@ -207,32 +207,26 @@ def test_a_stop_leaves_nothing_more_to_pull(
     assert runner.state is JobState.ABORTED
 
 
-def test_a_board_that_reset_itself_gets_nothing_more_before_the_window_knows(
-    board: tuple[Station, BoardPort], tmp_path: Path
+@pytest.mark.parametrize(
+    ("board_says", "then"),
+    [
+        (b"\r\nGrbl 1.1h ['$' for help]\r\nok\r\nok\r\n", JobState.PAUSED),
+        (b"error:20\r\nok\r\nok\r\n", JobState.FAILED),
+    ],
+    ids=["the board reset itself", "an error"],
+)
+def test_what_stops_the_job_stops_the_pulling_before_the_window_knows(
+    board: tuple[Station, BoardPort], tmp_path: Path, board_says: bytes, then: JobState
 ) -> None:
     station, port = board
     runner = started(station, port, tmp_path)
     assert answer(station, port, 20) == 20
     written = port.job_ops()
-    late = read_unseen(station, b"\r\nGrbl 1.1h ['$' for help]\r\nok\r\nok\r\n")
-    assert port.job_ops() == written
+    late = read_unseen(station, board_says)
+    assert port.job_ops() == written  # held on the reader side, the window not yet told
     tell(station, late)
     read(station, IDLE)
-    assert runner.state is JobState.PAUSED
-    assert port.job_ops() == written
-
-
-def test_an_error_stops_the_pulling_at_once_and_for_good(
-    board: tuple[Station, BoardPort], tmp_path: Path
-) -> None:
-    station, port = board
-    runner = started(station, port, tmp_path)
-    assert answer(station, port, 20) == 20
-    written = port.job_ops()
-    late = read_unseen(station, b"error:20\r\nok\r\nok\r\n")
-    assert port.job_ops() == written  # held on the reader side, the window not yet told
-    tell(station, late)  # the window sees the error: the job fails
-    assert runner.state is JobState.FAILED
+    assert runner.state is then
     read(station, b"ok\r\n" * 5)
     assert port.job_ops() == written
 
