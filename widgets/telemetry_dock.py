@@ -36,8 +36,17 @@ from pathlib import Path
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QPointF, QRectF, QSize, Qt
-from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen, QPolygonF, QShowEvent
+from PySide6.QtCore import QCoreApplication, QPointF, QRect, QRectF, QSize, Qt
+from PySide6.QtGui import (
+    QColor,
+    QFont,
+    QPainter,
+    QPaintEvent,
+    QPen,
+    QPolygonF,
+    QRegion,
+    QShowEvent,
+)
 from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
@@ -179,6 +188,56 @@ class RotationCross(QWidget):
         painter.drawText(QPointF(x - 14 * ux + 8 * px - 4, y - 14 * uy + 8 * py + 4), label)
 
 
+def _padded(low: float, high: float) -> tuple[float, float]:
+    """A vertical extent with some height even for a flat line (an empty one is never painted)."""
+    if high > low:
+        return low, high
+    pad = max(abs(low), 1.0) * 1e-9
+    return low - pad, high + pad
+
+
+def changed_spans(
+    old_t: FloatArray, old_y: FloatArray, new_t: FloatArray, new_y: FloatArray
+) -> list[tuple[float, float]] | None:
+    """The stretches of time where a polyline through the new points differs from the old one.
+
+    A scrolling window changes a curve at its ends only: samples (or
+    min/max blocks) arrive at the right and leave at the left, while the
+    points between are the very same numbers, at other indices.  The two
+    point lists are aligned on the middle point of the new one; the run of
+    equal points around it is left alone, and each end beyond it is a span
+    from the outermost point of either list to the first equal point (the
+    segment joining a changed point to it changes too).  ``[]`` when nothing
+    changed; None when no such run is found (repaint the whole curve).
+    """
+    n, m = len(new_t), len(old_t)
+    if n == 0 or m == 0:
+        return [] if n == m else None
+    middle = n // 2
+    anchor = new_t[middle]
+    at_new = int(np.searchsorted(new_t, anchor, side="left"))
+    at_old = int(np.searchsorted(old_t, anchor, side="left"))
+    if at_old >= m or old_t[at_old] != anchor:
+        return None
+    shift = at_old - at_new  # new point i is old point i + shift
+    first, stop = max(0, -shift), min(n, m - shift)
+    equal = (new_t[first:stop] == old_t[first + shift : stop + shift]) & (
+        new_y[first:stop] == old_y[first + shift : stop + shift]
+    )
+    differ = np.flatnonzero(~equal) + first
+    before, after = differ[differ < middle], differ[differ > middle]
+    if middle in differ:
+        return None
+    low = int(before[-1]) + 1 if len(before) else first
+    high = int(after[0]) if len(after) else stop  # new[low:high] == old[low + shift:high + shift]
+    spans = []
+    if low > 0 or low + shift > 0:
+        spans.append((float(min(new_t[0], old_t[0])), float(new_t[low])))
+    if high < n or high + shift < m:
+        spans.append((float(new_t[high - 1]), float(max(new_t[-1], old_t[-1]))))
+    return spans
+
+
 class Trace(QGraphicsObject):
     """One curve: a 1-pixel polyline through points already reduced for the screen.
 
@@ -197,20 +256,29 @@ class Trace(QGraphicsObject):
 
     def __init__(self, colour: str) -> None:
         super().__init__()
+        # Paints get the exposed rectangle: a frame usually repaints a sliver of the curve.
+        self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption)
         self._pen = pg.mkPen(colour, width=1)  # cosmetic: one pixel whatever the scale
         self._t: FloatArray = np.empty(0)
         self._y: FloatArray = np.empty(0)
         self._polygon = QPolygonF()
         self._rect = QRectF()
+        self._rect_y: tuple[float, float] | None = None  # the rectangle's exact vertical extent
         self._y_range: tuple[float, float] | None = None
         self._t_range: tuple[float, float] | None = None
         # The view box the trace sits in, told when the data's bounds change.
         self.view: pg.ViewBox | None = None
 
     def set_points(self, t: FloatArray, y: FloatArray) -> None:
-        """Draw the points ``(t, y)`` (finite, ``t`` ascending), replacing the last ones."""
+        """Draw the points ``(t, y)`` (finite, ``t`` ascending), replacing the last ones.
+
+        Only the stretches of the curve that differ from the last points are
+        marked for repainting (see :func:`changed_spans`); a new vertical
+        extent tells the view (its auto-range), and bounds that no longer
+        hold the points are widened, with room to the right for what comes.
+        """
         n = len(t)
-        self.prepareGeometryChange()
+        spans = changed_spans(self._t, self._y, t, y)
         self._t, self._y = t, y
         polygon = pg.functions.create_qpolygonf(n)
         if n:
@@ -218,16 +286,62 @@ class Trace(QGraphicsObject):
             points[:, 0] = t
             points[:, 1] = y
             low, high = float(y.min()), float(y.max())
-            self._t_range = (float(t[0]), float(t[-1]))
-            self._y_range = (low, high)
-            self._rect = QRectF(t[0], low, t[-1] - t[0], high - low)
+            t_range: tuple[float, float] | None = (float(t[0]), float(t[-1]))
+            y_range: tuple[float, float] | None = (low, high)
         else:
-            self._t_range = self._y_range = None
-            self._rect = QRectF()
+            t_range = y_range = None
         self._polygon = polygon
-        self.update()
-        if self.view is not None:
+        self._t_range = t_range
+        bounds_changed = y_range != self._y_range
+        self._y_range = y_range
+        if not self._covers(t_range, y_range):
+            self.prepareGeometryChange()
+            self._rect = self._room_for(t_range, y_range)
+            self._rect_y = _padded(*y_range) if y_range is not None else None
+            self.update()
+        elif spans is None:
+            self.update()
+        elif spans:
+            self._repaint(spans)
+        if bounds_changed and self.view is not None:
             self.view.itemBoundsChanged(self)
+
+    def _covers(
+        self, t_range: tuple[float, float] | None, y_range: tuple[float, float] | None
+    ) -> bool:
+        """Whether the bounding rectangle holds the points and is no taller than they need."""
+        if t_range is None or y_range is None:
+            return self._rect.isNull()
+        rect = self._rect
+        if rect.isNull() or t_range[0] < rect.left() or t_range[1] > rect.right():
+            return False
+        return self._rect_y == _padded(*y_range)
+
+    def _repaint(self, spans: list[tuple[float, float]]) -> None:
+        """Have the stretches ``spans`` (times, full height) repainted, each on its own.
+
+        Through the scene, not ``update(rect)``: an item keeps one dirty
+        rectangle, which would join a change at the left end and one at the
+        right into the whole width.
+        """
+        scene = self.scene()
+        if scene is None:
+            return
+        top, height = self._rect.top(), self._rect.height()
+        for start, stop in spans:
+            scene.update(self.mapRectToScene(QRectF(start, top, max(stop - start, 1e-9), height)))
+
+    @staticmethod
+    def _room_for(
+        t_range: tuple[float, float] | None, y_range: tuple[float, float] | None
+    ) -> QRectF:
+        """Bounds for the points, reaching a quarter of their span further right."""
+        if t_range is None or y_range is None:
+            return QRectF()
+        start, stop = t_range
+        stop += max(stop - start, 1.0) / 4
+        low, high = _padded(*y_range)
+        return QRectF(start, low, stop - start, high - low)
 
     def getData(self) -> tuple[FloatArray, FloatArray]:
         return self._t, self._y
@@ -247,13 +361,63 @@ class Trace(QGraphicsObject):
     def paint(
         self,
         painter: QPainter,
-        _option: QStyleOptionGraphicsItem,
+        option: QStyleOptionGraphicsItem,
         _widget: QWidget | None = None,
     ) -> None:
         if self._polygon.isEmpty():
             return
         painter.setPen(self._pen)
-        painter.drawPolyline(self._polygon)
+        n = len(self._t)
+        for start, stop in self._exposed(painter, option):
+            # One point beyond each end: the segments crossing into the exposed stretch.
+            first = max(0, int(np.searchsorted(self._t, start, side="left")) - 1)
+            last = min(n, int(np.searchsorted(self._t, stop, side="right")) + 1)
+            if first == 0 and last == n:
+                painter.drawPolyline(self._polygon)
+            elif last > first:
+                painter.drawPolyline(self._polygon.mid(first, last - first))
+
+    @staticmethod
+    def _exposed(painter: QPainter, option: QStyleOptionGraphicsItem) -> list[tuple[float, float]]:
+        """The stretches of time (item coordinates) that this paint can change.
+
+        The view tells an item one exposed rectangle, the hull of what it
+        repaints; when it repaints a few separate strips (the new samples at
+        the right, the leaving ones at the left), the paint engine's clip has
+        them one by one, in device pixels.  They are used only when they
+        agree with the view's hull, else the hull is drawn.
+        """
+        exposed = option.exposedRect
+        hull = [(exposed.left(), exposed.right())]
+        engine = painter.paintEngine()
+        clip = engine.systemClip() if engine is not None else QRegion()
+        if clip.rectCount() < 2:
+            return hull
+        inverse, invertible = painter.deviceTransform().inverted()
+        if not invertible or inverse.m12() != 0.0 or inverse.m21() != 0.0:
+            return hull
+        scale, offset = inverse.m11(), inverse.dx()  # device x -> item x (no rotation here)
+        margin = 2 * abs(scale)  # pen and rounding reach at most this far past a strip
+        rects: list[QRect] = list(clip)  # type: ignore[call-overload]  # iterable, unlike its stub
+        columns = {(rect.left(), rect.right() + 1) for rect in rects}  # one per band and strip
+        pieces = sorted(
+            (min(a, b) - margin, max(a, b) + margin)
+            for a, b in ((scale * left + offset, scale * right + offset) for left, right in columns)
+        )
+        if pieces[0][0] > exposed.left() + 2 * margin or (
+            max(stop for _, stop in pieces) < exposed.right() - 2 * margin
+        ):
+            return hull  # not the view's strips after all: draw what the view said
+        merged: list[tuple[float, float]] = []
+        for start, stop in pieces:
+            start, stop = max(start, exposed.left()), min(stop, exposed.right())
+            if stop < start:
+                continue
+            if merged and start <= merged[-1][1]:
+                merged[-1] = (merged[-1][0], max(merged[-1][1], stop))
+            else:
+                merged.append((start, stop))
+        return merged
 
 
 class _PlotArea(pg.GraphicsLayoutWidget):  # type: ignore[misc]
@@ -634,9 +798,10 @@ class TelemetryDock(QDockWidget):
 
         The time axis is fixed (it counts back from the view's end), so time
         going by moves the curves, not the axis: a shift of the items, with no
-        new data for pyqtgraph to process and no axis to repaint.  Nothing is
-        touched, and so nothing repainted, when no curve changed and the shift
-        would be under half a pixel.
+        new data for pyqtgraph to process and no axis to repaint.  The shift
+        goes by whole pixels, with the view's end the first pixel boundary at
+        or after the newest sample: between two shifts (0.6 s in a 10-minute
+        window) a frame repaints only what changed at the curves' ends.
         """
         if not self.isVisible():
             return  # a hidden dock costs nothing; showEvent catches up
@@ -647,32 +812,29 @@ class TelemetryDock(QDockWidget):
             self.variable_plot.setXRange(-window, 0.0, padding=0)
         end = recorder.view_end()
         points = self._max_points()
-        changed = False
         for name, curve in self._curves.items():
-            changed = self._update_curve(name, name, curve, points) or changed
+            self._update_curve(name, name, curve, points)
         variable = recorder.variable_name
         if variable is not None:
-            changed = (
-                self._update_curve("variable", variable, self.variable_curve, points) or changed
-            )
+            self._update_curve("variable", variable, self.variable_curve, points)
         pixel_s = window / max(1.0, points / 2)
-        if changed or abs(end - self._shown_end) >= pixel_s / 2:
-            self._shown_end = end
+        shown_end = math.ceil(end / pixel_s) * pixel_s
+        if shown_end != self._shown_end:
+            self._shown_end = shown_end
             for curve in (*self._curves.values(), self.variable_curve):
-                curve.setPos(-end, 0.0)
+                curve.setPos(-shown_end, 0.0)
         self._show_angle()
         # Settle auto-ranges and view transforms now: left to the paint, they change the
         # scene during it and every frame gets painted twice.
         self.graphics.scene().prepareForPaint()
 
-    def _update_curve(self, slot: str, name: str, curve: Trace, points: int) -> bool:
-        """Give ``curve`` the envelope of ``name`` unless it already has it; True if it changed."""
+    def _update_curve(self, slot: str, name: str, curve: Trace, points: int) -> None:
+        """Give ``curve`` the envelope of ``name`` unless it already has it."""
         drawn = (self.recorder.revision(name), points)
         if self._drawn.get(slot) == drawn:
-            return False
+            return
         self._drawn[slot] = drawn
         curve.set_points(*self.recorder.envelope(name, points))
-        return True
 
     def _max_points(self) -> int:
         """One min/max pair per pixel of plot width: all a screen can show."""
