@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QCoreApplication, QPointF, QRect, QRectF, QSize, Qt
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import (
     QColor,
     QFont,
@@ -44,7 +44,6 @@ from PySide6.QtGui import (
     QPaintEvent,
     QPen,
     QPolygonF,
-    QRegion,
     QShowEvent,
 )
 from PySide6.QtWidgets import (
@@ -249,9 +248,15 @@ class Trace(QGraphicsObject):
     time.  This item copies the points straight into a ``QPolygonF`` (a
     numpy view of its memory), keeps its bounds from the same arrays, and
     paints one ``drawPolyline`` with a cosmetic pen.  Its view hears of new
-    bounds from ``set_points`` alone: sliding it in time changes no vertical
-    range, and the horizontal one is fixed.  ``dataBounds`` is what the
-    view's auto-range asks.
+    bounds from ``set_points`` alone, and only when the vertical extent
+    changed: sliding it in time changes no vertical range, and the
+    horizontal one is fixed.  ``dataBounds`` is what the view's auto-range
+    asks.
+
+    New points usually differ from the last ones at the ends only (a
+    scrolling window): ``set_points`` then repaints nothing itself but hands
+    back the stretch that changed, and a paint draws only the points in the
+    exposed rectangle, so a frame costs a sliver of the curve.
     """
 
     def __init__(self, colour: str) -> None:
@@ -269,13 +274,17 @@ class Trace(QGraphicsObject):
         # The view box the trace sits in, told when the data's bounds change.
         self.view: pg.ViewBox | None = None
 
-    def set_points(self, t: FloatArray, y: FloatArray) -> None:
+    def set_points(self, t: FloatArray, y: FloatArray) -> QRectF:
         """Draw the points ``(t, y)`` (finite, ``t`` ascending), replacing the last ones.
 
-        Only the stretches of the curve that differ from the last points are
-        marked for repainting (see :func:`changed_spans`); a new vertical
-        extent tells the view (its auto-range), and bounds that no longer
-        hold the points are widened, with room to the right for what comes.
+        Returns the part of the scene the caller must repaint: the hull of
+        the stretches where the curve changed (:func:`changed_spans`), at the
+        curve's full height; a null rectangle when nothing is left to repaint
+        (nothing changed, or the whole item was marked for repainting here).
+        The caller joins the curves' rectangles into one repaint: the view
+        paints one rectangle several times faster than a few apart.  New
+        bounds that no longer hold the points are widened, with room to the
+        right for what comes.
         """
         n = len(t)
         spans = changed_spans(self._t, self._y, t, y)
@@ -285,15 +294,15 @@ class Trace(QGraphicsObject):
             points = pg.functions.ndarray_from_qpolygonf(polygon)
             points[:, 0] = t
             points[:, 1] = y
-            low, high = float(y.min()), float(y.max())
             t_range: tuple[float, float] | None = (float(t[0]), float(t[-1]))
-            y_range: tuple[float, float] | None = (low, high)
+            y_range: tuple[float, float] | None = (float(y.min()), float(y.max()))
         else:
             t_range = y_range = None
         self._polygon = polygon
         self._t_range = t_range
         bounds_changed = y_range != self._y_range
         self._y_range = y_range
+        dirty = QRectF()
         if not self._covers(t_range, y_range):
             self.prepareGeometryChange()
             self._rect = self._room_for(t_range, y_range)
@@ -301,10 +310,13 @@ class Trace(QGraphicsObject):
             self.update()
         elif spans is None:
             self.update()
-        elif spans:
-            self._repaint(spans)
+        elif spans and self.scene() is not None:
+            start, stop = spans[0][0], spans[-1][1]
+            top, height = self._rect.top(), self._rect.height()
+            dirty = self.mapRectToScene(QRectF(start, top, max(stop - start, 1e-9), height))
         if bounds_changed and self.view is not None:
             self.view.itemBoundsChanged(self)
+        return dirty
 
     def _covers(
         self, t_range: tuple[float, float] | None, y_range: tuple[float, float] | None
@@ -316,20 +328,6 @@ class Trace(QGraphicsObject):
         if rect.isNull() or t_range[0] < rect.left() or t_range[1] > rect.right():
             return False
         return self._rect_y == _padded(*y_range)
-
-    def _repaint(self, spans: list[tuple[float, float]]) -> None:
-        """Have the stretches ``spans`` (times, full height) repainted, each on its own.
-
-        Through the scene, not ``update(rect)``: an item keeps one dirty
-        rectangle, which would join a change at the left end and one at the
-        right into the whole width.
-        """
-        scene = self.scene()
-        if scene is None:
-            return
-        top, height = self._rect.top(), self._rect.height()
-        for start, stop in spans:
-            scene.update(self.mapRectToScene(QRectF(start, top, max(stop - start, 1e-9), height)))
 
     @staticmethod
     def _room_for(
@@ -364,60 +362,20 @@ class Trace(QGraphicsObject):
         option: QStyleOptionGraphicsItem,
         _widget: QWidget | None = None,
     ) -> None:
+        """The points in the exposed stretch, and one beyond each end (segments crossing in)."""
         if self._polygon.isEmpty():
             return
         painter.setPen(self._pen)
-        n = len(self._t)
-        for start, stop in self._exposed(painter, option):
-            # One point beyond each end: the segments crossing into the exposed stretch.
-            first = max(0, int(np.searchsorted(self._t, start, side="left")) - 1)
-            last = min(n, int(np.searchsorted(self._t, stop, side="right")) + 1)
-            if first == 0 and last == n:
-                painter.drawPolyline(self._polygon)
-            elif last > first:
-                painter.drawPolyline(self._polygon.mid(first, last - first))
-
-    @staticmethod
-    def _exposed(painter: QPainter, option: QStyleOptionGraphicsItem) -> list[tuple[float, float]]:
-        """The stretches of time (item coordinates) that this paint can change.
-
-        The view tells an item one exposed rectangle, the hull of what it
-        repaints; when it repaints a few separate strips (the new samples at
-        the right, the leaving ones at the left), the paint engine's clip has
-        them one by one, in device pixels.  They are used only when they
-        agree with the view's hull, else the hull is drawn.
-        """
         exposed = option.exposedRect
-        hull = [(exposed.left(), exposed.right())]
-        engine = painter.paintEngine()
-        clip = engine.systemClip() if engine is not None else QRegion()
-        if clip.rectCount() < 2:
-            return hull
-        inverse, invertible = painter.deviceTransform().inverted()
-        if not invertible or inverse.m12() != 0.0 or inverse.m21() != 0.0:
-            return hull
-        scale, offset = inverse.m11(), inverse.dx()  # device x -> item x (no rotation here)
-        margin = 2 * abs(scale)  # pen and rounding reach at most this far past a strip
-        rects: list[QRect] = list(clip)  # type: ignore[call-overload]  # iterable, unlike its stub
-        columns = {(rect.left(), rect.right() + 1) for rect in rects}  # one per band and strip
-        pieces = sorted(
-            (min(a, b) - margin, max(a, b) + margin)
-            for a, b in ((scale * left + offset, scale * right + offset) for left, right in columns)
-        )
-        if pieces[0][0] > exposed.left() + 2 * margin or (
-            max(stop for _, stop in pieces) < exposed.right() - 2 * margin
-        ):
-            return hull  # not the view's strips after all: draw what the view said
-        merged: list[tuple[float, float]] = []
-        for start, stop in pieces:
-            start, stop = max(start, exposed.left()), min(stop, exposed.right())
-            if stop < start:
-                continue
-            if merged and start <= merged[-1][1]:
-                merged[-1] = (merged[-1][0], max(merged[-1][1], stop))
-            else:
-                merged.append((start, stop))
-        return merged
+        # The pen and the view's rounding reach past the exposed rectangle: 2 pixels.
+        margin = 2 * abs(painter.deviceTransform().inverted()[0].m11())
+        n = len(self._t)
+        first = max(0, int(np.searchsorted(self._t, exposed.left() - margin, side="left")) - 1)
+        last = min(n, int(np.searchsorted(self._t, exposed.right() + margin, side="right")) + 1)
+        if first == 0 and last == n:
+            painter.drawPolyline(self._polygon)
+        elif last > first:
+            painter.drawPolyline(self._polygon.mid(first, last - first))
 
 
 class _PlotArea(pg.GraphicsLayoutWidget):  # type: ignore[misc]
@@ -810,31 +768,38 @@ class TelemetryDock(QDockWidget):
         if window != self._shown_window:
             self._shown_window = window
             self.variable_plot.setXRange(-window, 0.0, padding=0)
-        end = recorder.view_end()
         points = self._max_points()
-        for name, curve in self._curves.items():
-            self._update_curve(name, name, curve, points)
-        variable = recorder.variable_name
-        if variable is not None:
-            self._update_curve("variable", variable, self.variable_curve, points)
         pixel_s = window / max(1.0, points / 2)
-        shown_end = math.ceil(end / pixel_s) * pixel_s
+        shown_end = math.ceil(recorder.view_end() / pixel_s) * pixel_s
         if shown_end != self._shown_end:
             self._shown_end = shown_end
             for curve in (*self._curves.values(), self.variable_curve):
                 curve.setPos(-shown_end, 0.0)
+        # From the view's left edge, not the window's start (up to a pixel earlier): the
+        # curves' left ends then stay put between shifts, and only their right ends change.
+        since = shown_end - window
+        dirty = QRectF()
+        for name, curve in self._curves.items():
+            dirty |= self._update_curve(name, name, curve, points, since)
+        variable = recorder.variable_name
+        if variable is not None:
+            dirty |= self._update_curve("variable", variable, self.variable_curve, points, since)
+        if not dirty.isNull():
+            self.graphics.scene().update(dirty)
         self._show_angle()
         # Settle auto-ranges and view transforms now: left to the paint, they change the
         # scene during it and every frame gets painted twice.
         self.graphics.scene().prepareForPaint()
 
-    def _update_curve(self, slot: str, name: str, curve: Trace, points: int) -> None:
-        """Give ``curve`` the envelope of ``name`` unless it already has it."""
-        drawn = (self.recorder.revision(name), points)
+    def _update_curve(
+        self, slot: str, name: str, curve: Trace, points: int, since: float
+    ) -> QRectF:
+        """Give ``curve`` the envelope of ``name`` unless it already has it; what to repaint."""
+        drawn = (self.recorder.revision(name, since), points)
         if self._drawn.get(slot) == drawn:
-            return
+            return QRectF()
         self._drawn[slot] = drawn
-        curve.set_points(*self.recorder.envelope(name, points))
+        return curve.set_points(*self.recorder.envelope(name, points, since))
 
     def _max_points(self) -> int:
         """One min/max pair per pixel of plot width: all a screen can show."""
