@@ -33,6 +33,9 @@ Decisions worth knowing before changing it:
   shown samples as a min/max envelope of about the plot's pixel count,
   reusing the blocks it reduced for the previous frame (:class:`PeakEnvelope`),
   so a 10-minute window at 1 kHz costs a view only the samples that are new.
+  A view that moves by whole pixels asks from its left edge (``since``), so
+  the envelope's left end stays put between moves and only the right end
+  changes from one frame to the next.
 * **Throttled** ``updated``.  Samples may come at 1 kHz; the screen needs
   ~60 Hz.  ``updated`` fires at once after a quiet spell, then at most once
   per ``throttle_ms`` (60 Hz by default) while samples keep coming (the last change is never
