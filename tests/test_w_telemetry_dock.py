@@ -260,11 +260,13 @@ def _assert_spans_cover_the_changes(
     window=st.integers(500, 20_000),
     step=st.integers(0, 400),
     points=st.sampled_from([200, 1000, 2000]),
+    pinned=st.booleans(),
 )
 def test_changed_spans_cover_every_change_of_a_scrolling_envelope(
-    seed: int, window: int, step: int, points: int
+    seed: int, window: int, step: int, points: int, pinned: bool
 ) -> None:
-    """Two consecutive frames of a window sliding over samples, reduced as the dock draws them."""
+    """Two consecutive frames of a window sliding over samples, reduced as the dock draws them
+    (``pinned``: from a left edge that stays put between the dock's whole-pixel shifts)."""
     rng = np.random.default_rng(seed)
     total = window + step + 1
     t = np.arange(total) / 1000
@@ -272,7 +274,7 @@ def test_changed_spans_cover_every_change_of_a_scrolling_envelope(
     envelope = PeakEnvelope()
     old = envelope.reduce(t, y, 0, window, points)
     old = (old[0].copy(), old[1].copy())
-    new = envelope.reduce(t, y, step, window + step, points)
+    new = envelope.reduce(t, y, 0 if pinned else step, window + step, points)
     spans = _assert_spans_cover_the_changes(old, new)
     if step == 0:
         assert spans == []
@@ -280,6 +282,8 @@ def test_changed_spans_cover_every_change_of_a_scrolling_envelope(
         # A scrolling window changes at its ends only: the middle is left alone.
         assert spans is not None
         assert sum(stop - start for start, stop in spans) < (t[window] - t[0]) / 4
+        if pinned:  # and with the left end pinned, at the right end alone
+            assert len(spans) == 1 and spans[0][0] > t[window // 2]
 
 
 @settings(max_examples=60, deadline=None)

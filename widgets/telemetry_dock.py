@@ -207,16 +207,27 @@ def changed_spans(
 
     A scrolling window changes a curve at its ends only: samples (or
     min/max blocks) arrive at the right and leave at the left, while the
-    points between are the very same numbers, at other indices.  The two
-    point lists are aligned on the middle point of the new one; the run of
-    equal points around it is left alone, and each end beyond it is a span
-    from the outermost point of either list to the first equal point (the
-    segment joining a changed point to it changes too).  ``[]`` when nothing
-    changed; None when no such run is found (repaint the whole curve).
+    points between are the very same numbers, at other indices.  Lists of
+    one length that differ in a few consecutive points only (the usual
+    frame: a new tail) give one span, from the first changed point's
+    neighbour to the last one's (the segments joining them change too).
+    Otherwise the two lists are aligned on the middle point of the new
+    one; the run of equal points around it is left alone, and each end
+    beyond it is a span from the outermost point of either list to the
+    first equal point.  ``[]`` when nothing changed; None when no such run
+    is found (repaint the whole curve).
     """
     n, m = len(new_t), len(old_t)
     if n == 0 or m == 0:
         return [] if n == m else None
+    if n == m:  # the usual frame: the same blocks, a new tail
+        differ = np.flatnonzero((new_t != old_t) | (new_y != old_y))
+        if len(differ) == 0:
+            return []
+        first, last = int(differ[0]), int(differ[-1])
+        if last - first < 8 and last - first + 1 == len(differ):  # a few points in a row
+            low, high = max(0, first - 1), min(n - 1, last + 1)
+            return [(float(min(new_t[low], old_t[low])), float(max(new_t[high], old_t[high])))]
     middle = n // 2
     anchor = new_t[middle]
     at_new = int(np.searchsorted(new_t, anchor, side="left"))
