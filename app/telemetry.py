@@ -33,6 +33,9 @@ Decisions worth knowing before changing it:
   shown samples as a min/max envelope of about the plot's pixel count,
   reusing the blocks it reduced for the previous frame (:class:`PeakEnvelope`),
   so a 10-minute window at 1 kHz costs a view only the samples that are new.
+  A view that moves by whole pixels asks from its left edge (``since``), so
+  the envelope's left end stays put between moves and only the right end
+  changes from one frame to the next.
 * **Throttled** ``updated``.  Samples may come at 1 kHz; the screen needs
   ~60 Hz.  ``updated`` fires at once after a quiet spell, then at most once
   per ``throttle_ms`` (60 Hz by default) while samples keep coming (the last change is never
@@ -413,8 +416,8 @@ class TelemetryRecorder(QObject):
         unit = self.unit(name)
         return f"{name} ({unit})" if unit else name
 
-    def revision(self, name: str) -> tuple[int, int, int]:
-        """Differs whenever :meth:`data` for ``name`` answers differently.
+    def revision(self, name: str, since: float | None = None) -> tuple[int, int, int]:
+        """Differs whenever :meth:`data` (or :meth:`envelope` with ``since``) answers differently.
 
         A view can skip redrawing a curve whose revision it has drawn: the
         count of changes, and the running numbers of the first and last shown
@@ -425,7 +428,7 @@ class TelemetryRecorder(QObject):
             t, base = series.frozen[0], 0
         else:
             t, base = series.buffer.view()[0], series.buffer.first_index
-        first, last = self._shown_slice(t)
+        first, last = self._shown_slice(t, since)
         return series.revision, base + first, base + last
 
     @property
@@ -464,28 +467,34 @@ class TelemetryRecorder(QObject):
         first, last = self._shown_slice(t)
         return t[first:last], y[first:last]
 
-    def envelope(self, name: str, max_points: int) -> tuple[FloatArray, FloatArray]:
+    def envelope(
+        self, name: str, max_points: int, since: float | None = None
+    ) -> tuple[FloatArray, FloatArray]:
         """The shown samples reduced for drawing to about ``max_points`` points.
 
         Minimum and maximum per block of samples (see :class:`PeakEnvelope`):
         every peak survives, and a frame costs only the samples that are new.
         Windows with fewer samples come back exactly as :meth:`data` gives them.
+        ``since`` leaves out the samples before it too: a view whose left edge
+        is a little later than the window's start (it moves by whole pixels)
+        pins its curves' left end there, so that end stays put between moves.
         """
         series = self._get(name)
         if series.frozen is not None:
             t, y = series.frozen
-            first, last = self._shown_slice(t)
+            first, last = self._shown_slice(t, since)
             return PeakEnvelope().reduce(t, y, first, last, max_points)
         buffer = series.buffer
         t, y = buffer.view()
-        first, last = self._shown_slice(t)
+        first, last = self._shown_slice(t, since)
         return series.envelope.reduce(
             t, y, first, last, max_points, base=buffer.first_index, epoch=buffer.epoch
         )
 
-    def _shown_slice(self, t: FloatArray) -> tuple[int, int]:
+    def _shown_slice(self, t: FloatArray, since: float | None = None) -> tuple[int, int]:
         end = self.view_end()
-        first = int(np.searchsorted(t, end - self._window_s, side="left"))
+        start = end - self._window_s if since is None else max(end - self._window_s, since)
+        first = int(np.searchsorted(t, start, side="left"))
         last = int(np.searchsorted(t, end, side="right"))
         return first, last
 

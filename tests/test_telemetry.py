@@ -456,3 +456,31 @@ def test_recorded_velocity_drops_to_zero_when_the_session_says_the_axis_stopped(
     model.update_axis(0, moving=False, velocity=0.0)
     assert recorder.latest("X velocity") == 0.0
     assert recorder.latest("X position") == 10.0
+
+
+def test_envelope_since_pins_the_left_end_while_samples_come_in(
+    recorder: TelemetryRecorder,
+) -> None:
+    """A view whose left edge lies a little after the window's start draws from that edge:
+    new samples then change the envelope's right end only, and the revision says so."""
+    rate = 1000
+    t = np.arange(600 * rate) / rate - 600.0  # ten minutes at 1 kHz, up to now
+    y = np.cos(t / 3.0)
+    recorder.extend("X position", t[:-500], y[:-500])
+    recorder.set_window_s(MAX_WINDOW_S)
+    since = -599.5  # the view's left edge: half a second after the window's start
+    before_t, before_y = recorder.envelope("X position", 2000, since)
+    before_t, before_y = before_t.copy(), before_y.copy()
+    assert before_t[0] >= since
+    first_t, _ = recorder.data("X position")
+    assert first_t[0] < since  # the recorder's own window still starts earlier
+    recorder.extend("X position", t[-500:], y[-500:])
+    after_t, after_y = recorder.envelope("X position", 2000, since)
+    assert after_t[0] == before_t[0] and after_y[0] == before_y[0]
+    _, first, last = recorder.revision("X position", since)
+    shown_t, shown_y = recorder.data("X position")
+    assert last - first == np.count_nonzero(shown_t >= since)
+    np.testing.assert_array_equal(after_t[-1:], shown_t[-1:])
+    # Every peak from the edge on survives.
+    inside = shown_t >= since
+    assert (after_y.min(), after_y.max()) == (shown_y[inside].min(), shown_y[inside].max())

@@ -10,16 +10,20 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from PySide6.QtCore import Qt
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from PySide6.QtCore import QEvent, QObject, Qt
 from PySide6.QtGui import QImage
-from PySide6.QtWidgets import QFileDialog
+from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
 from pytestqt.qtbot import QtBot
 
 from app.profiles import load_profile
-from app.telemetry import TelemetryRecorder
+from app.station import Station
+from app.telemetry import MAX_WINDOW_S, PeakEnvelope, TelemetryRecorder
+from protocol.clock import ManualClock
 from protocol.stage.codec import CommandFrame, Subscriber, decode
 from tests.helpers.harness import StationHarness
-from widgets.telemetry_dock import TelemetryDock
+from widgets.telemetry_dock import TelemetryDock, changed_spans
 
 LEFT = Qt.MouseButton.LeftButton
 
@@ -94,8 +98,14 @@ def test_curves_receive_the_recorded_data(harness: StationHarness, dock: Telemet
     assert dock.variable_plot.viewRange()[0] == pytest.approx([-10.0, 0.0])
     period = harness.session.period_ms / 1000
     assert dock.variable_curve.pos().x() == pytest.approx(-dock.recorder.view_end(), abs=period)
+    # The curves move by whole pixels; the view's end is the first pixel boundary at or
+    # after now, so the newest sample is never cut off at the right edge.
+    pixel = 10.0 / (dock._max_points() / 2)
+    shift = -dock.variable_curve.pos().x()
+    assert 0.0 <= shift - dock.recorder.view_end() < pixel
+    assert shift / pixel == pytest.approx(round(shift / pixel))
     newest = dock.variable_curve.pos().x() + t[-1]
-    assert -2 * period <= newest <= 0.0  # rotation rides every other frame
+    assert -2 * period - pixel <= newest <= 0.0  # rotation rides every other frame
     assert dock.variable_curve.pos().x() == dock._curves["X position"].pos().x()
     assert "rotation (°)" in dock.title(dock.variable_plot)
     assert "X" in dock.title(dock.position_plot) and "Y" in dock.title(dock.velocity_plot)
@@ -222,3 +232,134 @@ def test_captions_sit_beside_the_data_and_apart(dock: TelemetryDock) -> None:
         assert upper.bottom() <= lower.top()
     assert "battery voltage (V)" in dock.title(dock.variable_plot)
     assert all(plot.getViewBox().height() >= 40 for plot in dock.plots)
+
+
+def _segments(t: np.ndarray, y: np.ndarray) -> set[tuple[float, float, float, float]]:
+    return {(a, b, c, d) for a, b, c, d in zip(t[:-1], y[:-1], t[1:], y[1:], strict=True)}
+
+
+def _assert_spans_cover_the_changes(
+    old: tuple[np.ndarray, np.ndarray], new: tuple[np.ndarray, np.ndarray]
+) -> list[tuple[float, float]] | None:
+    """Every segment (or lone point) in one polyline and not the other lies in a span."""
+    spans = changed_spans(old[0], old[1], new[0], new[1])
+    if spans is None:
+        return None  # the whole curve is repainted
+    before, after = _segments(*old), _segments(*new)
+    changed = [(t0, t1) for t0, _, t1, _ in before ^ after]
+    lone = [{(float(t[0]), float(y[0]))} if len(t) == 1 else set() for t, y in (old, new)]
+    changed += [(t0, t0) for t0, _ in lone[0] ^ lone[1]]  # a curve of one point: a dot
+    for t0, t1 in changed:
+        assert any(start <= t0 and t1 <= stop for start, stop in spans), (t0, t1, spans)
+    return spans
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    seed=st.integers(0, 2**16),
+    window=st.integers(500, 20_000),
+    step=st.integers(0, 400),
+    points=st.sampled_from([200, 1000, 2000]),
+    pinned=st.booleans(),
+)
+def test_changed_spans_cover_every_change_of_a_scrolling_envelope(
+    seed: int, window: int, step: int, points: int, pinned: bool
+) -> None:
+    """Two consecutive frames of a window sliding over samples, reduced as the dock draws them
+    (``pinned``: from a left edge that stays put between the dock's whole-pixel shifts)."""
+    rng = np.random.default_rng(seed)
+    total = window + step + 1
+    t = np.arange(total) / 1000
+    y = rng.normal(size=total).cumsum()
+    envelope = PeakEnvelope()
+    old = envelope.reduce(t, y, 0, window, points)
+    old = (old[0].copy(), old[1].copy())
+    new = envelope.reduce(t, y, 0 if pinned else step, window + step, points)
+    spans = _assert_spans_cover_the_changes(old, new)
+    if step == 0:
+        assert spans == []
+    elif step < window // 20 and window > 4 * points:
+        # A scrolling window changes at its ends only: the middle is left alone.
+        assert spans is not None
+        assert sum(stop - start for start, stop in spans) < (t[window] - t[0]) / 4
+        if pinned:  # and with the left end pinned, at the right end alone
+            assert len(spans) == 1 and spans[0][0] > t[window // 2]
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    old=st.lists(st.tuples(st.integers(0, 30), st.integers(-3, 3)), max_size=30),
+    new=st.lists(st.tuples(st.integers(0, 30), st.integers(-3, 3)), max_size=30),
+)
+def test_changed_spans_cover_any_change(
+    old: list[tuple[int, int]], new: list[tuple[int, int]]
+) -> None:
+    """Whatever two curves are, nothing that differs is left out of the repaint."""
+
+    def curve(points: list[tuple[int, int]]) -> tuple[np.ndarray, np.ndarray]:
+        points = sorted(points)
+        return (
+            np.array([p[0] for p in points], dtype=float),
+            np.array([p[1] for p in points], dtype=float),
+        )
+
+    _assert_spans_cover_the_changes(curve(old), curve(new))
+
+
+def _window_pixels(widget: QWidget) -> QImage:
+    """What the window shows now (its backing store), not a fresh rendering of it."""
+    screen = widget.screen()
+    return screen.grabWindow(widget.winId()).toImage()
+
+
+def test_a_scrolling_frame_repaints_a_sliver_and_shows_the_full_picture(qtbot: QtBot) -> None:
+    """Between whole-pixel shifts a frame repaints only the curves' ends, yet shows what a
+    full repaint shows."""
+    clock = ManualClock()
+    station = Station(load_profile("xy-stage"), clock, realtime=False)
+    recorder = TelemetryRecorder(station, throttle_ms=0, scroll_ms=0)
+    dock = TelemetryDock(recorder)
+    qtbot.addWidget(dock)
+    dock.resize(1000, 600)
+    dock.show()
+    qtbot.waitExposed(dock)
+    dock.window_combo.setCurrentIndex(dock.window_combo.findData(MAX_WINDOW_S))
+    rate = 1000
+    rng = np.random.default_rng(3)
+    t = np.arange(int(MAX_WINDOW_S * rate)) / rate
+    names = ("X position", "X velocity", "Y position", "Y velocity")
+    walks = {name: rng.normal(size=len(t) + 400).cumsum() for name in names}
+    for name in names:
+        recorder.extend(name, t, walks[name][: len(t)])
+    clock.advance(MAX_WINDOW_S)
+    dock.redraw()
+    QApplication.processEvents()
+
+    regions: list[int] = []  # the area each paint covers, in pixels
+
+    class Regions(QObject):
+        def eventFilter(self, _watched: QObject, event: QEvent) -> bool:
+            if event.type() == QEvent.Type.Paint:
+                region = event.region()  # type: ignore[attr-defined]
+                regions.append(sum(rect.width() * rect.height() for rect in region))
+            return False
+
+    watcher = Regions()
+    viewport = dock.graphics.viewport()
+    viewport.installEventFilter(watcher)
+    fed = len(t)
+    for _ in range(20):  # 20 frames of 16 samples, about one pixel of a 10-minute window
+        clock.advance(0.016)
+        new_t = np.arange(fed, fed + 16) / rate
+        for name in names:
+            recorder.extend(name, new_t, walks[name][fed : fed + 16])
+        fed += 16
+        QApplication.processEvents()
+    viewport.removeEventFilter(watcher)
+    shown = _window_pixels(dock)
+    assert len(regions) >= 15
+    slivers = [area for area in regions if area < viewport.width() * viewport.height() / 20]
+    assert len(slivers) >= len(regions) - 3  # a shift or two repaint the lot
+    viewport.repaint()
+    assert _window_pixels(dock) == shown
+    recorder.deleteLater()

@@ -17,11 +17,16 @@ time per frame, same run).
 
 The time axis counts back from the view's end and never moves: time going
 by shifts the curve items (``setPos``), which needs neither new data nor a
-new axis picture, so the axes are cached as pixmaps.  A curve whose shown
-samples did not change is not handed data again, and a redraw with no
-changed curve and less than half a pixel to shift touches nothing, so
-nothing is repainted.  Each redraw settles the plots' ranges before the
-paint, or pyqtgraph would paint every frame twice.  pyqtgraph's OpenGL path
+new axis picture, so the axes are cached as pixmaps.  The shift goes by
+whole pixels (the view's end is the first pixel boundary at or after now),
+and each curve is drawn from the view's left edge, so between two shifts
+(0.6 s in a 10-minute window) only the curves' right ends change: a frame
+repaints one narrow rectangle over them (:func:`changed_spans` finds what
+changed, :meth:`Trace.paint` draws only the points in it), not the plots.
+A whole repaint costs several milliseconds; the sliver, a fraction of one.
+A curve whose shown samples did not change is not handed data again.
+Each redraw settles the plots' ranges before the paint, or pyqtgraph would
+paint every frame twice.  pyqtgraph's OpenGL path
 is not used: it needs a GL context, which the offscreen benchmark (and many
 remote desktops) lack, so no gain from it could be measured.
 
@@ -37,7 +42,15 @@ from pathlib import Path
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import QCoreApplication, QPointF, QRectF, QSize, Qt
-from PySide6.QtGui import QColor, QFont, QPainter, QPaintEvent, QPen, QPolygonF, QShowEvent
+from PySide6.QtGui import (
+    QColor,
+    QFont,
+    QPainter,
+    QPaintEvent,
+    QPen,
+    QPolygonF,
+    QShowEvent,
+)
 from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
@@ -179,6 +192,67 @@ class RotationCross(QWidget):
         painter.drawText(QPointF(x - 14 * ux + 8 * px - 4, y - 14 * uy + 8 * py + 4), label)
 
 
+def _padded(low: float, high: float) -> tuple[float, float]:
+    """A vertical extent with some height even for a flat line (an empty one is never painted)."""
+    if high > low:
+        return low, high
+    pad = max(abs(low), 1.0) * 1e-9
+    return low - pad, high + pad
+
+
+def changed_spans(
+    old_t: FloatArray, old_y: FloatArray, new_t: FloatArray, new_y: FloatArray
+) -> list[tuple[float, float]] | None:
+    """The stretches of time where a polyline through the new points differs from the old one.
+
+    A scrolling window changes a curve at its ends only: samples (or
+    min/max blocks) arrive at the right and leave at the left, while the
+    points between are the very same numbers, at other indices.  Lists of
+    one length that differ in a few consecutive points only (the usual
+    frame: a new tail) give one span, from the first changed point's
+    neighbour to the last one's (the segments joining them change too).
+    Otherwise the two lists are aligned on the middle point of the new
+    one; the run of equal points around it is left alone, and each end
+    beyond it is a span from the outermost point of either list to the
+    first equal point.  ``[]`` when nothing changed; None when no such run
+    is found (repaint the whole curve).
+    """
+    n, m = len(new_t), len(old_t)
+    if n == 0 or m == 0:
+        return [] if n == m else None
+    if n == m:  # the usual frame: the same blocks, a new tail
+        differ = np.flatnonzero((new_t != old_t) | (new_y != old_y))
+        if len(differ) == 0:
+            return []
+        first, last = int(differ[0]), int(differ[-1])
+        if last - first < 8 and last - first + 1 == len(differ):  # a few points in a row
+            low, high = max(0, first - 1), min(n - 1, last + 1)
+            return [(float(min(new_t[low], old_t[low])), float(max(new_t[high], old_t[high])))]
+    middle = n // 2
+    anchor = new_t[middle]
+    at_new = int(np.searchsorted(new_t, anchor, side="left"))
+    at_old = int(np.searchsorted(old_t, anchor, side="left"))
+    if at_old >= m or old_t[at_old] != anchor:
+        return None
+    shift = at_old - at_new  # new point i is old point i + shift
+    first, stop = max(0, -shift), min(n, m - shift)
+    equal = (new_t[first:stop] == old_t[first + shift : stop + shift]) & (
+        new_y[first:stop] == old_y[first + shift : stop + shift]
+    )
+    differ = np.flatnonzero(~equal) + first
+    before, after = differ[differ < middle], differ[differ > middle]
+    if middle in differ:
+        return None
+    low = int(before[-1]) + 1 if len(before) else first
+    high = int(after[0]) if len(after) else stop  # new[low:high] == old[low + shift:high + shift]
+    spans = []
+    if low > 0 or low + shift > 0:
+        spans.append((float(min(new_t[0], old_t[0])), float(new_t[low])))
+    if high < n or high + shift < m:
+        spans.append((float(new_t[high - 1]), float(max(new_t[-1], old_t[-1]))))
+    return spans
+
+
 class Trace(QGraphicsObject):
     """One curve: a 1-pixel polyline through points already reduced for the screen.
 
@@ -190,44 +264,98 @@ class Trace(QGraphicsObject):
     time.  This item copies the points straight into a ``QPolygonF`` (a
     numpy view of its memory), keeps its bounds from the same arrays, and
     paints one ``drawPolyline`` with a cosmetic pen.  Its view hears of new
-    bounds from ``set_points`` alone: sliding it in time changes no vertical
-    range, and the horizontal one is fixed.  ``dataBounds`` is what the
-    view's auto-range asks.
+    bounds from ``set_points`` alone, and only when the vertical extent
+    changed: sliding it in time changes no vertical range, and the
+    horizontal one is fixed.  ``dataBounds`` is what the view's auto-range
+    asks.
+
+    New points usually differ from the last ones at the ends only (a
+    scrolling window): ``set_points`` then repaints nothing itself but hands
+    back the stretch that changed, and a paint draws only the points in the
+    exposed rectangle, so a frame costs a sliver of the curve.
     """
 
     def __init__(self, colour: str) -> None:
         super().__init__()
+        # Paints get the exposed rectangle: a frame usually repaints a sliver of the curve.
+        self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemUsesExtendedStyleOption)
         self._pen = pg.mkPen(colour, width=1)  # cosmetic: one pixel whatever the scale
         self._t: FloatArray = np.empty(0)
         self._y: FloatArray = np.empty(0)
         self._polygon = QPolygonF()
         self._rect = QRectF()
+        self._rect_y: tuple[float, float] | None = None  # the rectangle's exact vertical extent
         self._y_range: tuple[float, float] | None = None
         self._t_range: tuple[float, float] | None = None
         # The view box the trace sits in, told when the data's bounds change.
         self.view: pg.ViewBox | None = None
 
-    def set_points(self, t: FloatArray, y: FloatArray) -> None:
-        """Draw the points ``(t, y)`` (finite, ``t`` ascending), replacing the last ones."""
+    def set_points(self, t: FloatArray, y: FloatArray) -> QRectF:
+        """Draw the points ``(t, y)`` (finite, ``t`` ascending), replacing the last ones.
+
+        Returns the part of the scene the caller must repaint: the hull of
+        the stretches where the curve changed (:func:`changed_spans`), at the
+        curve's full height; a null rectangle when nothing is left to repaint
+        (nothing changed, or the whole item was marked for repainting here).
+        The caller joins the curves' rectangles into one repaint: the view
+        paints one rectangle several times faster than a few apart.  New
+        bounds that no longer hold the points are widened, with room to the
+        right for what comes.
+        """
         n = len(t)
-        self.prepareGeometryChange()
+        spans = changed_spans(self._t, self._y, t, y)
         self._t, self._y = t, y
         polygon = pg.functions.create_qpolygonf(n)
         if n:
             points = pg.functions.ndarray_from_qpolygonf(polygon)
             points[:, 0] = t
             points[:, 1] = y
-            low, high = float(y.min()), float(y.max())
-            self._t_range = (float(t[0]), float(t[-1]))
-            self._y_range = (low, high)
-            self._rect = QRectF(t[0], low, t[-1] - t[0], high - low)
+            t_range: tuple[float, float] | None = (float(t[0]), float(t[-1]))
+            y_range: tuple[float, float] | None = (float(y.min()), float(y.max()))
         else:
-            self._t_range = self._y_range = None
-            self._rect = QRectF()
+            t_range = y_range = None
         self._polygon = polygon
-        self.update()
-        if self.view is not None:
+        self._t_range = t_range
+        bounds_changed = y_range != self._y_range
+        self._y_range = y_range
+        dirty = QRectF()
+        if not self._covers(t_range, y_range):
+            self.prepareGeometryChange()
+            self._rect = self._room_for(t_range, y_range)
+            self._rect_y = _padded(*y_range) if y_range is not None else None
+            self.update()
+        elif spans is None:
+            self.update()
+        elif spans and self.scene() is not None:
+            start, stop = spans[0][0], spans[-1][1]
+            top, height = self._rect.top(), self._rect.height()
+            dirty = self.mapRectToScene(QRectF(start, top, max(stop - start, 1e-9), height))
+        if bounds_changed and self.view is not None:
             self.view.itemBoundsChanged(self)
+        return dirty
+
+    def _covers(
+        self, t_range: tuple[float, float] | None, y_range: tuple[float, float] | None
+    ) -> bool:
+        """Whether the bounding rectangle holds the points and is no taller than they need."""
+        if t_range is None or y_range is None:
+            return self._rect.isNull()
+        rect = self._rect
+        if rect.isNull() or t_range[0] < rect.left() or t_range[1] > rect.right():
+            return False
+        return self._rect_y == _padded(*y_range)
+
+    @staticmethod
+    def _room_for(
+        t_range: tuple[float, float] | None, y_range: tuple[float, float] | None
+    ) -> QRectF:
+        """Bounds for the points, reaching a quarter of their span further right."""
+        if t_range is None or y_range is None:
+            return QRectF()
+        start, stop = t_range
+        stop += max(stop - start, 1.0) / 4
+        low, high = _padded(*y_range)
+        return QRectF(start, low, stop - start, high - low)
 
     def getData(self) -> tuple[FloatArray, FloatArray]:
         return self._t, self._y
@@ -247,13 +375,23 @@ class Trace(QGraphicsObject):
     def paint(
         self,
         painter: QPainter,
-        _option: QStyleOptionGraphicsItem,
+        option: QStyleOptionGraphicsItem,
         _widget: QWidget | None = None,
     ) -> None:
+        """The points in the exposed stretch, and one beyond each end (segments crossing in)."""
         if self._polygon.isEmpty():
             return
         painter.setPen(self._pen)
-        painter.drawPolyline(self._polygon)
+        exposed = option.exposedRect
+        # The pen and the view's rounding reach past the exposed rectangle: 2 pixels.
+        margin = 2 * abs(painter.deviceTransform().inverted()[0].m11())
+        n = len(self._t)
+        first = max(0, int(np.searchsorted(self._t, exposed.left() - margin, side="left")) - 1)
+        last = min(n, int(np.searchsorted(self._t, exposed.right() + margin, side="right")) + 1)
+        if first == 0 and last == n:
+            painter.drawPolyline(self._polygon)
+        elif last > first:
+            painter.drawPolyline(self._polygon.mid(first, last - first))
 
 
 class _PlotArea(pg.GraphicsLayoutWidget):  # type: ignore[misc]
@@ -634,9 +772,10 @@ class TelemetryDock(QDockWidget):
 
         The time axis is fixed (it counts back from the view's end), so time
         going by moves the curves, not the axis: a shift of the items, with no
-        new data for pyqtgraph to process and no axis to repaint.  Nothing is
-        touched, and so nothing repainted, when no curve changed and the shift
-        would be under half a pixel.
+        new data for pyqtgraph to process and no axis to repaint.  The shift
+        goes by whole pixels, with the view's end the first pixel boundary at
+        or after the newest sample: between two shifts (0.6 s in a 10-minute
+        window) a frame repaints only what changed at the curves' ends.
         """
         if not self.isVisible():
             return  # a hidden dock costs nothing; showEvent catches up
@@ -645,34 +784,38 @@ class TelemetryDock(QDockWidget):
         if window != self._shown_window:
             self._shown_window = window
             self.variable_plot.setXRange(-window, 0.0, padding=0)
-        end = recorder.view_end()
         points = self._max_points()
-        changed = False
+        pixel_s = window / max(1.0, points / 2)
+        shown_end = math.ceil(recorder.view_end() / pixel_s) * pixel_s
+        if shown_end != self._shown_end:
+            self._shown_end = shown_end
+            for curve in (*self._curves.values(), self.variable_curve):
+                curve.setPos(-shown_end, 0.0)
+        # From the view's left edge, not the window's start (up to a pixel earlier): the
+        # curves' left ends then stay put between shifts, and only their right ends change.
+        since = shown_end - window
+        dirty = QRectF()
         for name, curve in self._curves.items():
-            changed = self._update_curve(name, name, curve, points) or changed
+            dirty |= self._update_curve(name, name, curve, points, since)
         variable = recorder.variable_name
         if variable is not None:
-            changed = (
-                self._update_curve("variable", variable, self.variable_curve, points) or changed
-            )
-        pixel_s = window / max(1.0, points / 2)
-        if changed or abs(end - self._shown_end) >= pixel_s / 2:
-            self._shown_end = end
-            for curve in (*self._curves.values(), self.variable_curve):
-                curve.setPos(-end, 0.0)
+            dirty |= self._update_curve("variable", variable, self.variable_curve, points, since)
+        if not dirty.isNull():
+            self.graphics.scene().update(dirty)
         self._show_angle()
         # Settle auto-ranges and view transforms now: left to the paint, they change the
         # scene during it and every frame gets painted twice.
         self.graphics.scene().prepareForPaint()
 
-    def _update_curve(self, slot: str, name: str, curve: Trace, points: int) -> bool:
-        """Give ``curve`` the envelope of ``name`` unless it already has it; True if it changed."""
-        drawn = (self.recorder.revision(name), points)
+    def _update_curve(
+        self, slot: str, name: str, curve: Trace, points: int, since: float
+    ) -> QRectF:
+        """Give ``curve`` the envelope of ``name`` unless it already has it; what to repaint."""
+        drawn = (self.recorder.revision(name, since), points)
         if self._drawn.get(slot) == drawn:
-            return False
+            return QRectF()
         self._drawn[slot] = drawn
-        curve.set_points(*self.recorder.envelope(name, points))
-        return True
+        return curve.set_points(*self.recorder.envelope(name, points, since))
 
     def _max_points(self) -> int:
         """One min/max pair per pixel of plot width: all a screen can show."""
