@@ -105,7 +105,7 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> Run:
     ``as_job``: the lines are a G-code file run by the job runner with the jobs dock
     showing it (progress, preview, the operation under way), as an operator runs it.
     """
-    from PySide6.QtCore import QEventLoop
+    from PySide6.QtCore import QEventLoop, QTimer
     from PySide6.QtWidgets import QApplication
 
     from app.profiles import load_profile
@@ -135,14 +135,20 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> Run:
             if as_job:
                 elapsed, cpu, emulator_cpu = _run_as_job(app, station, lines, pid)
             else:
+                # Waited for in an event loop, not a spinning one: the processor time is then
+                # the station's, not this loop's.
+                loop = QEventLoop()
+                session.lineAcknowledged.connect(
+                    lambda _sent: loop.quit() if answered[0] >= len(lines) else None
+                )
+                QTimer.singleShot(300_000, loop.quit)
                 cpu, emulator_cpu = time.process_time(), process_cpu_s(pid)
                 start = time.perf_counter()
                 for line in lines:
                     session.send_line(line, "console")
-                while answered[0] < len(lines):
-                    app.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 5)
-                    if time.perf_counter() - start > 300:
-                        raise RuntimeError(f"only {answered[0]} of {len(lines)} answered")
+                loop.exec()
+                if answered[0] < len(lines):
+                    raise RuntimeError(f"only {answered[0]} of {len(lines)} answered")
                 elapsed = time.perf_counter() - start
                 cpu, emulator_cpu = time.process_time() - cpu, process_cpu_s(pid) - emulator_cpu
         finally:
