@@ -411,10 +411,19 @@ def test_reads_taken_together_keep_every_line_told_as_sent_before_its_answer(
     assert told == [f"sent {long}", "read ok"] * 3
 
 
+#: A console line of 63 bytes: two of them fill the board's buffer (126 of 127 bytes).
+BUSY = "G0 X1." + "0" * 26 + " Y1." + "0" * 26
+#: Where the machine stands when the cable is back: off the job's path.
+STANDING = b"<Idle|MPos:3.000,1.000,0.000|Bf:15,127|FS:0,0>\r\n"
+
+
 def resumed_after_a_pulled_cable(
-    station: Station, port: BoardPort, runner: JobRunner
+    station: Station, port: BoardPort, runner: JobRunner, *, busy: bool = False
 ) -> list[bytes]:
-    """Twenty lines run, the cable pulled and put back, Resume: the way back sent (returned)."""
+    """Twenty lines run, the cable pulled and put back, Resume: the lines sent (returned).
+
+    ``busy``: two console lines fill the board's buffer first, so the way back waits.
+    """
     assert answer(station, port, 20) == 20
     for _ in range(2):  # the planner empty: the twenty lines have run
         read(station, b"<Run|MPos:4.750,1.000,0.000|Bf:15,127|FS:0,0>\r\n")
@@ -426,8 +435,11 @@ def resumed_after_a_pulled_cable(
     port.listener.connection_made()
     read(station, IDLE)
     port.start_over()
+    if busy:
+        for _ in range(2):
+            assert session_of(station).send_line(BUSY, "console", confirmed=True)
     runner.resume()
-    read(station, b"<Idle|MPos:3.000,1.000,0.000|Bf:15,127|FS:0,0>\r\n")
+    read(station, STANDING)
     return [line.strip() for line in port.lines()]
 
 
@@ -444,6 +456,30 @@ def test_the_resumed_job_waits_for_its_way_back_to_be_answered(
         read(station, b"ok\r\n")
         assert port.job_ops() == []
     read(station, b"ok\r\n")
+    assert port.job_ops()[0] == 20  # then on from where it stopped
+    assert runner.state is JobState.RUNNING
+
+
+def test_a_pause_that_takes_back_the_way_back_looks_at_the_machine_again_on_resume(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    """Half a way back would leave the machine somewhere the job does not expect: a pause that
+    takes back any of it makes the resume look where the machine stands and go back anew."""
+    station, port = board
+    runner = started(station, port, tmp_path)
+    assert resumed_after_a_pulled_cable(station, port, runner, busy=True) == [BUSY.encode()] * 2
+    runner.pause()  # the way back still queued behind the console's lines: taken back
+    assert runner.state is JobState.PAUSED
+    read(station, b"ok\r\nok\r\n" + STANDING)
+    assert len(port.lines()) == 2  # nothing of the way back, nothing of the job
+    port.answered = 2
+    runner.resume()  # asks where the machine stands (a status query) before anything else
+    assert len(port.lines()) == 2
+    read(station, STANDING)
+    way_back = [line.strip() for line in port.lines()[2:]]
+    assert b"G0 X4.750 Y1.000" in way_back
+    assert port.job_ops() == []
+    read(station, b"ok\r\n" * len(way_back))
     assert port.job_ops()[0] == 20  # then on from where it stopped
     assert runner.state is JobState.RUNNING
 
@@ -501,13 +537,12 @@ def test_a_pause_that_takes_back_the_set_up_sends_it_again_before_the_job(
 ) -> None:
     station, port = board
     session = session_of(station)
-    busy = "G0 X1." + "0" * 25 + " Y1." + "0" * 25  # two fill the board's buffer
     for _ in range(2):
-        assert session.send_line(busy, "console", confirmed=True)
+        assert session.send_line(BUSY, "console", confirmed=True)
     runner = JobRunner(station, tmp_path / "checkpoints")
     assert runner.load(job(40)) == []
     runner.start()
-    assert [line.strip() for line in port.lines()] == [busy.encode()] * 2  # set-up queued
+    assert [line.strip() for line in port.lines()] == [BUSY.encode()] * 2  # set-up queued
     runner.pause()  # before the set-up could go: taken back with the job
     assert runner.state is JobState.PAUSED
     read(station, b"ok\r\nok\r\n" + IDLE)
