@@ -66,7 +66,7 @@ def bench_drill_order_quality() -> list[str]:
     """Per real board: StepDeck's travel against OR-Tools (GLS, 3 s a tool), same starts."""
     from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
-    boards = sorted((ROOT.parent / "shared" / "realdata" / "excellon").iterdir())
+    boards = sorted((ROOT / "tests" / "data" / "realdata" / "excellon").iterdir())
     lines = []
     for path in boards:
         plan = plan_drilling(read_drill_file(path))

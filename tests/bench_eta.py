@@ -1,6 +1,6 @@
 """The G-code estimate against the emulator's run time and against real GRBL (grbl-sim).
 
-For each real file of ``../shared/realdata/gcode`` as the GRBL plotter runs it
+For each real file of ``tests/data/realdata/gcode`` as the GRBL plotter runs it
 (``grbl-plotter`` profile, the station's translation of its pen commands):
 
 * ``ETA``: :func:`app.jobs.estimate.gcode.estimate_gcode`;
@@ -32,7 +32,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-SHARED = ROOT.parent / "shared"
+DATA = ROOT / "tests" / "data"
 CYCLE = 0.005
 #: GRBL's settings matching the grbl-plotter profile (and the emulated board).
 GRBL_SETTINGS = (
@@ -159,11 +159,11 @@ def bench_gcode_eta() -> list[str]:
     profile = load_profile("grbl-plotter")
     options = JobOptions(gcode=profile.gcode, machine_title=profile.title)
     slow = os.environ.get("STEPDECK_SLOW") == "1" and grbl_sim.compiler() is not None
-    exe = grbl_sim.build(SHARED / "grbl") if slow else None
+    exe = grbl_sim.build(ROOT / "tests" / "third_party" / "grbl") if slow else None
     out = ["G-code ETA (grbl-plotter, junction planner; the files' G4 dwells left out):"]
     with tempfile.TemporaryDirectory() as name:
         directory = Path(name)
-        for source in sorted((SHARED / "realdata" / "gcode").glob("*.gcode")):
+        for source in sorted((DATA / "realdata" / "gcode").glob("*.gcode")):
             path = _lines_without_dwells(source, directory)
             program = load_job(path, [axis.name for axis in profile.axes], options)
             assert isinstance(program, GcodeProgram)

@@ -595,9 +595,9 @@ def bench_drill_eta() -> list[str]:
     from tests.helpers.harness import StationHarness
 
     app = QApplication.instance() or QApplication([])
-    shared = ROOT.parent / "shared"
-    boards = [shared / "samples" / "pcb-driver" / "driver"]
-    boards += sorted((shared / "realdata" / "excellon").iterdir())
+    data = ROOT / "tests" / "data"
+    boards = [data / "samples" / "pcb-driver" / "driver"]
+    boards += sorted((data / "realdata" / "excellon").iterdir())
     lines = []
     with tempfile.TemporaryDirectory() as checkpoints:
         for path in boards:
@@ -635,9 +635,9 @@ def bench_drill_order() -> list[str]:
     from app.jobs.formats.excellon.hole_order import order_holes
     from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
-    shared = ROOT.parent / "shared"
-    boards = [shared / "samples" / "pcb-driver" / "driver"]
-    boards += sorted((shared / "realdata" / "excellon").iterdir())
+    data = ROOT / "tests" / "data"
+    boards = [data / "samples" / "pcb-driver" / "driver"]
+    boards += sorted((data / "realdata" / "excellon").iterdir())
     lines = []
     for path in boards:
         start = time.perf_counter()

@@ -23,7 +23,8 @@ from tests.helpers.harness import StationHarness
 QStandardPaths.setTestModeEnabled(True)
 
 ROOT = Path(__file__).resolve().parent.parent
-SHARED = ROOT.parent / "shared"
+DATA = ROOT / "tests" / "data"
+THIRD_PARTY = ROOT / "tests" / "third_party"
 
 
 def pytest_sessionstart(session: pytest.Session) -> None:
@@ -88,7 +89,6 @@ def harness(qapp: object) -> Iterator[StationHarness]:
 
 
 @pytest.fixture
-def shared_dir() -> Path:
-    """The shared job files, beside the repo as CI has it."""
-    assert SHARED.is_dir(), f"{SHARED} is missing: clone the repo beside shared/"
-    return SHARED
+def data_dir() -> Path:
+    """Real job files and samples (``tests/data``; origin and licence in its SOURCES.md)."""
+    return DATA

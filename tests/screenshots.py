@@ -23,8 +23,8 @@ from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 
 OUT = Path(__file__).resolve().parent.parent / "resources" / "screenshots"
-#: The shared job files, beside the repo (as the tests find them).
-SHARED = Path(__file__).resolve().parent.parent.parent / "shared"
+#: The real job files and samples kept with the tests (tests/data).
+SHARED = Path(__file__).resolve().parent / "data"
 SCREEN = QSize(1280, 800)
 SQUARE = "# square\n5, 5\n40, 5\n40, 40\n5, 40\n5, 5\n20, 20\n5, 5\n5, 5\n"
 
@@ -123,7 +123,7 @@ def usb3(work: Path) -> tuple[StationHarness, MainWindow]:
 
 
 def string_art(work: Path) -> tuple[StationHarness, MainWindow]:
-    """The winder on the cardioid board of the shared samples (read where they lie)."""
+    """The winder on the cardioid board of the samples in tests/data."""
     harness, window = _window("string-art", work)
     window.jobs_dock.show()
     window.jobs_dock.open_path(SHARED / "samples" / "string-art-cardioid" / "poradi.txt")
@@ -156,7 +156,7 @@ def dark(work: Path) -> tuple[StationHarness, MainWindow]:
 
 
 def drill(work: Path) -> tuple[StationHarness, MainWindow]:
-    """The drill on the shared sample board, the first bit asked for."""
+    """The drill on the sample board in tests/data, the first bit asked for."""
     harness, window = _window("pcb-drill", work)
     _page(window, "Drill")
     window.jobs_dock.show()
@@ -179,7 +179,7 @@ def jobs(work: Path) -> tuple[StationHarness, MainWindow]:
 
 
 def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
-    """The CoreXY plotter drawing the Unicorn file of the shared real data."""
+    """The CoreXY plotter drawing the Unicorn file of tests/data/realdata."""
     harness, window = _window("corexy-plotter", work)
     _page(window, "G-code")
     window.jobs_dock.show()

@@ -102,8 +102,8 @@ def test_a_tool_without_a_diameter_is_flagged_not_prompted_and_its_holes_left_ou
     assert sum(drilled_lines(program).values()) == 2
 
 
-def test_the_sample_board_smallest_first_drills_the_same_holes(shared_dir: Path) -> None:
-    job = read_drill_file(shared_dir / "samples" / "pcb-driver" / "driver")
+def test_the_sample_board_smallest_first_drills_the_same_holes(data_dir: Path) -> None:
+    job = read_drill_file(data_dir / "samples" / "pcb-driver" / "driver")
     plain = build_drill_program(job)
     small = build_drill_program(job, smallest_first=True)
     assert drilled_lines(small) == drilled_lines(plain)

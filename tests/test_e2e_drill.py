@@ -74,7 +74,7 @@ def test_the_sample_job_drills_every_hole_once_over_a_real_pty(
     qtbot: QtBot,
     emulator: tuple[str, Path],
     station: Station,
-    shared_dir: Path,
+    data_dir: Path,
     tmp_path: Path,
 ) -> None:
     began = time.monotonic()
@@ -86,7 +86,7 @@ def test_the_sample_job_drills_every_hole_once_over_a_real_pty(
     assert session.home(0)
     qtbot.waitUntil(lambda: not session.busy, timeout=10_000)
 
-    program = build_drill_program(read_drill_file(shared_dir / "samples/pcb-driver/driver"))
+    program = build_drill_program(read_drill_file(data_dir / "samples/pcb-driver/driver"))
     runner = JobRunner(station, tmp_path / "checkpoints")
     asked: list[str] = []
 
@@ -176,7 +176,7 @@ def test_a_registered_board_homes_prompts_drills_every_hole_once_where_it_lies_a
     qtbot: QtBot,
     emulator: tuple[str, Path],
     station: Station,
-    shared_dir: Path,
+    data_dir: Path,
     tmp_path: Path,
 ) -> None:
     """Issue 21's end to end: jogged reference holes → registration to a micrometre →
@@ -191,7 +191,7 @@ def test_a_registered_board_homes_prompts_drills_every_hole_once_where_it_lies_a
     qtbot.waitUntil(lambda: "homed at power-on" in log_events(log), timeout=5000)
     assert session.homes_before_job
 
-    program = build_drill_program(read_drill_file(shared_dir / "samples/pcb-driver/driver"))
+    program = build_drill_program(read_drill_file(data_dir / "samples/pcb-driver/driver"))
     holes = hole_positions(program)
     per_mm = (session.microsteps_per_mm(0), session.microsteps_per_mm(1))
     first, second, angle = board_on_microsteps(holes, per_mm)

@@ -98,11 +98,11 @@ def run(
 
 
 def test_a_real_drawing_streams_to_the_end_within_the_buffer_and_draws_the_file(
-    qtbot: QtBot, emulator: tuple[str, Path], station: Station, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, data_dir: Path, tmp_path: Path
 ) -> None:
     path, log = emulator
     connect(qtbot, station, path)
-    source = shared_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
+    source = data_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
     # The Unicorn servo lines become the plotter's M3/M4; the few it has no use for
     # (motors on/off, the registration stop) are left out, as the operator chose.
     options = JobOptions(
@@ -174,11 +174,11 @@ GRBL = load_profile("grbl-plotter")
 @pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
 @pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
 def test_arcs_go_as_written_and_the_board_ends_each_where_the_preview_does(
-    qtbot: QtBot, emulator: tuple[str, Path], station: Station, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, data_dir: Path, tmp_path: Path
 ) -> None:
     path, log = emulator
     connect(qtbot, station, path)
-    source = shared_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
+    source = data_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
     options = JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title, skip_unsupported=True)
     program = load_job(source, ["X", "Y"], options)
     arcs = [op for op in program if op.line[:3] in ("G02", "G03")]

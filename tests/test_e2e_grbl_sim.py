@@ -1,6 +1,6 @@
 """End to end against real GRBL 1.1h (grbl-sim), and the same scenarios against the emulator.
 
-GRBL's own source, compiled for the PC (``../shared/grbl``, built once into a
+GRBL's own source, compiled for the PC (``tests/third_party/grbl``, built once into a
 cache outside the repository by :mod:`tests.helpers.grbl_sim`), is served on
 a pty with a fresh board's defaults: ``$10=1`` (no ``Bf:`` in its reports),
 ``$20=0`` and ``$22=0``.  The station connects to it as to a board and runs
@@ -60,9 +60,9 @@ def grbl_sim_exe() -> Path:
     """grbl-sim built once per machine; the tests skip only when no C compiler is there."""
     if grbl_sim.compiler() is None:
         pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
-    shared = Path(__file__).resolve().parent.parent.parent / "shared" / "grbl"
-    assert shared.is_dir(), f"{shared} is missing: clone the repo beside shared/"
-    return grbl_sim.build(shared)
+    source = Path(__file__).resolve().parent / "third_party" / "grbl"
+    assert source.is_dir(), f"{source} is missing"
+    return grbl_sim.build(source)
 
 
 @dataclass
@@ -229,8 +229,8 @@ def test_a_small_job_runs_to_its_end_with_every_line_answered_ok(
     record("small job", board, end, [text for text, _ in answers.lines])
 
 
-def _real_file_head(shared_dir: Path, tmp_path: Path, lines: int | None) -> Path:
-    source = shared_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
+def _real_file_head(data_dir: Path, tmp_path: Path, lines: int | None) -> Path:
+    source = data_dir / "realdata/gcode/Escriba_gcodetools_calibration.gcode"
     if lines is None:
         return source
     head = tmp_path / "head.gcode"
@@ -263,17 +263,17 @@ def _run_real_file(
 
 
 def test_the_head_of_a_real_file_with_arcs_streams_and_ends_at_its_last_point(
-    qtbot: QtBot, board: Board, station: Station, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, board: Board, station: Station, data_dir: Path, tmp_path: Path
 ) -> None:
-    source = _real_file_head(shared_dir, tmp_path, 120)
+    source = _real_file_head(data_dir, tmp_path, 120)
     record("real file head", board, *_run_real_file(qtbot, board, station, source, tmp_path))
 
 
 @SLOW
 def test_the_whole_gcodetools_file_streams_and_ends_at_its_last_point(
-    qtbot: QtBot, board: Board, station: Station, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, board: Board, station: Station, data_dir: Path, tmp_path: Path
 ) -> None:
-    source = _real_file_head(shared_dir, tmp_path, None)
+    source = _real_file_head(data_dir, tmp_path, None)
     ran = _run_real_file(qtbot, board, station, source, tmp_path, SLOW_JOB_TIMEOUT_MS)
     record("real file", board, *ran)
 

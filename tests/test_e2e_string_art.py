@@ -232,7 +232,7 @@ def run_to_end(winder: StationHarness, runner: JobRunner) -> None:
 
 @pytest.mark.parametrize("sample", ["hexagon", "cardioid"])
 def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
-    winder: StationHarness, runner: JobRunner, shared_dir: Path, sample: str
+    winder: StationHarness, runner: JobRunner, data_dir: Path, sample: str
 ) -> None:
     """Drill every nail, wait untouched, wind the first connections with a pause half way.
 
@@ -242,7 +242,7 @@ def test_every_nail_is_drilled_once_then_it_waits_then_winds_in_file_order(
     """
     wall = time.perf_counter()
     begun = winder.clock.now()
-    full = read_string_art(shared_dir / "samples" / f"string-art-{sample}" / "poradi.txt")
+    full = read_string_art(data_dir / "samples" / f"string-art-{sample}" / "poradi.txt")
     job = shortened(full, CONNECTIONS)
     program = build_program(job, winder.station.profile)
     board = Board.of(job)

@@ -1,7 +1,7 @@
 """Excellon drill files from real CAD tools read into the right holes, and refused when broken.
 
 Expected counts, sizes and coordinates were worked out by hand from the files
-(``../shared/realdata/excellon`` and the EAGLE pair in ``../shared/samples``),
+(``tests/data/realdata/excellon`` and the EAGLE pair in ``tests/data/samples``),
 not from the reader: 1/10000 inch with leading zeros suppressed (``TZ``) means
 ``X18350`` is 1.8350 inch = 46.609 mm.
 """
@@ -26,10 +26,10 @@ from app.jobs.program import JobFileError, OpKind
 INCH = 25.4
 
 
-def board(shared_dir: Path, name: str) -> Path:
+def board(data_dir: Path, name: str) -> Path:
     if name == "driver":
-        return shared_dir / "samples" / "pcb-driver" / "driver"
-    return shared_dir / "realdata" / "excellon" / name
+        return data_dir / "samples" / "pcb-driver" / "driver"
+    return data_dir / "realdata" / "excellon" / name
 
 
 # name → unit, {tool: (holes, diameter in mm)}
@@ -99,9 +99,9 @@ COORDINATES = [
 
 
 @pytest.mark.parametrize("name", list(EXPECTED))
-def test_every_board_loads_with_its_tools_and_hole_counts(shared_dir: Path, name: str) -> None:
+def test_every_board_loads_with_its_tools_and_hole_counts(data_dir: Path, name: str) -> None:
     unit, tools = EXPECTED[name]
-    job = read_drill_file(board(shared_dir, name))
+    job = read_drill_file(board(data_dir, name))
     assert job.unit == unit
     assert job.hole_counts() == {tool: count for tool, (count, _) in tools.items()}
     for tool, (_, diameter) in tools.items():
@@ -109,26 +109,26 @@ def test_every_board_loads_with_its_tools_and_hole_counts(shared_dir: Path, name
     assert all(hole.diameter_mm == job.tool(hole.tool).diameter_mm for hole in job.holes)
 
 
-def test_totals_match_sources_md(shared_dir: Path) -> None:
-    uno = read_drill_file(board(shared_dir, "tracespace_eagle_arduino-uno.drd"))
-    core = read_drill_file(board(shared_dir, "tracespace_core.TXT"))
+def test_totals_match_sources_md(data_dir: Path) -> None:
+    uno = read_drill_file(board(data_dir, "tracespace_eagle_arduino-uno.drd"))
+    core = read_drill_file(board(data_dir, "tracespace_core.TXT"))
     assert (len(uno.holes), len(uno.tools)) == (169, 6)
     assert (len(core.holes), len(core.tools)) == (92, 3)
 
 
 @pytest.mark.parametrize(("name", "line", "tool", "x", "y"), COORDINATES)
 def test_coordinates_checked_by_hand(
-    shared_dir: Path, name: str, line: int, tool: str, x: float, y: float
+    data_dir: Path, name: str, line: int, tool: str, x: float, y: float
 ) -> None:
-    job = read_drill_file(board(shared_dir, name))
+    job = read_drill_file(board(data_dir, name))
     [hole] = [h for h in job.holes if h.source.line == line]
-    assert hole.source.file == board(shared_dir, name).name
+    assert hole.source.file == board(data_dir, name).name
     assert hole.tool == tool
     assert (hole.x_mm, hole.y_mm) == (pytest.approx(x, abs=1e-6), pytest.approx(y, abs=1e-6))
 
 
-def test_eagle_pair_takes_units_and_tools_from_the_dri(shared_dir: Path) -> None:
-    folder = shared_dir / "samples" / "pcb-driver"
+def test_eagle_pair_takes_units_and_tools_from_the_dri(data_dir: Path) -> None:
+    folder = data_dir / "samples" / "pcb-driver"
     from_drill = read_drill_file(folder / "driver")
     from_dri = read_drill_file(folder / "driver.dri")
     assert from_drill.info_file == from_dri.info_file == folder / "driver.dri"
@@ -139,9 +139,9 @@ def test_eagle_pair_takes_units_and_tools_from_the_dri(shared_dir: Path) -> None
 
 
 def test_dri_that_disagrees_with_its_drill_file_is_refused(
-    shared_dir: Path, tmp_path: Path
+    data_dir: Path, tmp_path: Path
 ) -> None:
-    folder = shared_dir / "samples" / "pcb-driver"
+    folder = data_dir / "samples" / "pcb-driver"
     (tmp_path / "driver").write_text((folder / "driver").read_text())
     dri = (folder / "driver.dri").read_text().replace("T02   0.0320inch      6", "T02 0.0320inch 7")
     (tmp_path / "driver.dri").write_text(dri)
@@ -152,8 +152,8 @@ def test_dri_that_disagrees_with_its_drill_file_is_refused(
     assert "T02 drills 7 holes" in caught.value.reason
 
 
-def test_g85_slots_are_read_with_both_ends(shared_dir: Path) -> None:
-    job = read_drill_file(board(shared_dir, "pcb2gcode_kicad4_slots_G85.drl"))
+def test_g85_slots_are_read_with_both_ends(data_dir: Path) -> None:
+    job = read_drill_file(board(data_dir, "pcb2gcode_kicad4_slots_G85.drl"))
     ends = [(s.tool, s.source.line, s.x0_mm, s.y0_mm, s.x1_mm, s.y1_mm) for s in job.slots]
     assert ends == [
         ("T02", 39, 96.901, -65.701, 96.901, -67.7),
@@ -162,21 +162,21 @@ def test_g85_slots_are_read_with_both_ends(shared_dir: Path) -> None:
     ]
 
 
-def test_excellon_step_applies_to_a_file_without_format(shared_dir: Path) -> None:
-    core = board(shared_dir, "tracespace_core.TXT")
+def test_excellon_step_applies_to_a_file_without_format(data_dir: Path) -> None:
+    core = board(data_dir, "tracespace_core.TXT")
     job = read_drill_file(core, excellon_step_inch=1e-3)
     first = job.holes[0]
     assert (first.x_mm, first.y_mm) == (pytest.approx(1.743 * INCH), pytest.approx(1.155 * INCH))
     assert "step" in job.format_from
     # a file with its own format line ignores the setting
     uno = read_drill_file(
-        board(shared_dir, "tracespace_eagle_arduino-uno.drd"), excellon_step_inch=1e-3
+        board(data_dir, "tracespace_eagle_arduino-uno.drd"), excellon_step_inch=1e-3
     )
     assert uno.holes[0].x_mm == pytest.approx(1.6910 * INCH)
 
 
-def test_drill_program_waits_for_each_tool_then_moves_and_drills(shared_dir: Path) -> None:
-    job = read_drill_file(board(shared_dir, "pcb2gcode_kicad4_slots_G85.drl"))
+def test_drill_program_waits_for_each_tool_then_moves_and_drills(data_dir: Path) -> None:
+    job = read_drill_file(board(data_dir, "pcb2gcode_kicad4_slots_G85.drl"))
     program = build_drill_program(job, mode="drill")
     waits = [op.message for op in program if op.kind is OpKind.WAIT]
     assert waits == [
@@ -197,8 +197,8 @@ def test_drill_program_waits_for_each_tool_then_moves_and_drills(shared_dir: Pat
     assert (102.599, -69.7) in drilled and (100.601, -60.7) in drilled
 
 
-def test_every_hole_drilled_once_and_ops_keep_their_line(shared_dir: Path) -> None:
-    job = read_drill_file(board(shared_dir, "tracespace_eagle_arduino-uno.drd"))
+def test_every_hole_drilled_once_and_ops_keep_their_line(data_dir: Path) -> None:
+    job = read_drill_file(board(data_dir, "tracespace_eagle_arduino-uno.drd"))
     program = build_drill_program(job)
     lines = [op.source.line for op in program if op.kind is OpKind.DRILL]
     assert sorted(lines) == sorted(h.source.line for h in job.holes)
@@ -208,8 +208,8 @@ def test_every_hole_drilled_once_and_ops_keep_their_line(shared_dir: Path) -> No
             assert dict(op.target) == {"X": hole.x_mm, "Y": hole.y_mm}
 
 
-def test_cross_mode_draws_a_cross_per_hole(shared_dir: Path) -> None:
-    job = read_drill_file(board(shared_dir, "driver"))
+def test_cross_mode_draws_a_cross_per_hole(data_dir: Path) -> None:
+    job = read_drill_file(board(data_dir, "driver"))
     program = build_drill_program(job, mode="cross")
     assert not any(op.kind is OpKind.DRILL for op in program)
     assert sum(op.kind is OpKind.PEN_DOWN for op in program) == 2 * len(job.holes)
@@ -220,9 +220,9 @@ def test_cross_mode_draws_a_cross_per_hole(shared_dir: Path) -> None:
 
 
 def test_s2_12_draw_mode_puts_the_pen_down_at_each_bits_first_hole_and_draws_along_the_rest(
-    shared_dir: Path,
+    data_dir: Path,
 ) -> None:
-    job = read_drill_file(board(shared_dir, "driver"))
+    job = read_drill_file(board(data_dir, "driver"))
     plan = plan_drilling(job)
     program = build_drill_program(job, mode="draw")
     assert not any(op.kind is OpKind.DRILL for op in program)
@@ -251,8 +251,8 @@ def test_s2_12_draw_mode_puts_the_pen_down_at_each_bits_first_hole_and_draws_alo
         assert path == [*expected, (-1.0, -1.0)]
 
 
-def test_plan_is_never_longer_than_file_order(shared_dir: Path) -> None:
-    job: DrillJob = read_drill_file(board(shared_dir, "driver"))
+def test_plan_is_never_longer_than_file_order(data_dir: Path) -> None:
+    job: DrillJob = read_drill_file(board(data_dir, "driver"))
     plan = plan_drilling(job)
     assert plan.travel_mm <= plan.file_travel_mm
     assert sorted(h.source.line for t in plan.tools for h in t.holes) == sorted(
@@ -264,12 +264,12 @@ def test_plan_is_never_longer_than_file_order(shared_dir: Path) -> None:
     "name",
     ["driver", "driver.dri", "tracespace_core.TXT", "tracespace_kicad_mchck.drl", "uno"],
 )
-def test_loader_registry_opens_drill_files(shared_dir: Path, name: str) -> None:
+def test_loader_registry_opens_drill_files(data_dir: Path, name: str) -> None:
     path = {
-        "driver": board(shared_dir, "driver"),
-        "driver.dri": board(shared_dir, "driver").with_suffix(".dri"),
-        "uno": board(shared_dir, "tracespace_eagle_arduino-uno.drd"),
-    }.get(name, board(shared_dir, name))
+        "driver": board(data_dir, "driver"),
+        "driver.dri": board(data_dir, "driver").with_suffix(".dri"),
+        "uno": board(data_dir, "tracespace_eagle_arduino-uno.drd"),
+    }.get(name, board(data_dir, name))
     program = load_job(path, ("X", "Y", "Z"))
     assert any(op.kind is OpKind.DRILL for op in program)
     assert program.axes == ("X", "Y")

@@ -31,8 +31,8 @@ PLOTTERS = ("corexy-plotter", "grbl-plotter")
 XY = ("X", "Y")
 
 
-def real(shared_dir: Path, name: str) -> Path:
-    return shared_dir / "realdata" / "gcode" / name
+def real(data_dir: Path, name: str) -> Path:
+    return data_dir / "realdata" / "gcode" / name
 
 
 def load_for(path: Path, profile_name: str, **options: bool) -> GcodeProgram:
@@ -81,8 +81,8 @@ def unsupported_lines(program: GcodeProgram) -> list[int]:
 
 @pytest.mark.parametrize("profile", PLOTTERS)
 @pytest.mark.parametrize("name", [BUNNY, ESCRIBA, MAKELANGELO])
-def test_every_real_file_loads_for_both_plotters(shared_dir: Path, profile: str, name: str) -> None:
-    program = load_for(real(shared_dir, name), profile)
+def test_every_real_file_loads_for_both_plotters(data_dir: Path, profile: str, name: str) -> None:
+    program = load_for(real(data_dir, name), profile)
     assert len(program) > 100
     assert sum(1 for _ in program) == len(program)
     assert [p.line for p in program.unsupported] == sorted(p.line for p in program.unsupported)
@@ -90,11 +90,11 @@ def test_every_real_file_loads_for_both_plotters(shared_dir: Path, profile: str,
     assert moves and all(program[i].line for i in moves)  # every move is sent as a line
     # Every operation points at a real line of the file, in file order.
     lines = [op.source.line for op in program]
-    assert lines == sorted(lines) and lines[-1] <= len(file_lines(real(shared_dir, name)))
+    assert lines == sorted(lines) and lines[-1] <= len(file_lines(real(data_dir, name)))
 
 
-def test_bunny_pen_is_the_servo_and_is_translated(shared_dir: Path) -> None:
-    path = real(shared_dir, BUNNY)
+def test_bunny_pen_is_the_servo_and_is_translated(data_dir: Path) -> None:
+    path = real(data_dir, BUNNY)
     downs = numbered(path, r"^M300 S30(\.0*)?\b")
     ups = numbered(path, r"^M300 S50(\.0*)?\b")
     assert len(downs) == 184 and len(ups) == 185
@@ -119,8 +119,8 @@ def test_bunny_pen_is_the_servo_and_is_translated(shared_dir: Path) -> None:
         assert len(dwells) == len(numbered(path, r"^G4 P150"))
 
 
-def test_bunny_unsupported_lines_on_the_corexy_plotter(shared_dir: Path) -> None:
-    path = real(shared_dir, BUNNY)
+def test_bunny_unsupported_lines_on_the_corexy_plotter(data_dir: Path) -> None:
+    path = real(data_dir, BUNNY)
     program = load_for(path, "corexy-plotter")
     assert file_lines(path)[10].startswith("M18")  # line 11, the first M18
     assert [(p.line, p.text) for p in program.unsupported] == [
@@ -139,8 +139,8 @@ def test_bunny_unsupported_lines_on_the_corexy_plotter(shared_dir: Path) -> None
     assert at_line[4306].kind is OpKind.GCODE and at_line[4306].line == "G1 F150.00"
 
 
-def test_bunny_on_the_grbl_plotter_keeps_g21(shared_dir: Path) -> None:
-    program = load_for(real(shared_dir, BUNNY), "grbl-plotter")
+def test_bunny_on_the_grbl_plotter_keeps_g21(data_dir: Path) -> None:
+    program = load_for(real(data_dir, BUNNY), "grbl-plotter")
     first = program[1]  # after the two comment lines' first
     assert [op.line for op in program if op.source.line == 3] == ["G21"]
     assert unsupported_lines(program) == [11, 13, 4304, 4308]
@@ -158,8 +158,8 @@ def escriba_arcs(path: Path) -> dict[int, tuple[float, float]]:
     return arcs
 
 
-def test_escriba_arcs_end_where_written(shared_dir: Path) -> None:
-    path = real(shared_dir, ESCRIBA)
+def test_escriba_arcs_end_where_written(data_dir: Path) -> None:
+    path = real(data_dir, ESCRIBA)
     arcs = escriba_arcs(path)
     assert len(arcs) == 151
     for profile in PLOTTERS:
@@ -181,8 +181,8 @@ def test_escriba_arcs_end_where_written(shared_dir: Path) -> None:
         assert (counts[arc_ops] >= 4).all()
 
 
-def test_escriba_arcs_refused_on_corexy_sent_on_grbl(shared_dir: Path) -> None:
-    path = real(shared_dir, ESCRIBA)
+def test_escriba_arcs_refused_on_corexy_sent_on_grbl(data_dir: Path) -> None:
+    path = real(data_dir, ESCRIBA)
     arcs = escriba_arcs(path)
     corexy = load_for(path, "corexy-plotter")
     reasons = {(p.line, p.reason) for p in corexy.unsupported}
@@ -209,21 +209,21 @@ def test_escriba_arcs_refused_on_corexy_sent_on_grbl(shared_dir: Path) -> None:
     assert any("Z heights are the pen" in note for note in grbl_plotter.notes)
 
 
-def test_escriba_z_heights_are_the_pen(shared_dir: Path) -> None:
-    program = load_for(real(shared_dir, ESCRIBA), "grbl-plotter")
+def test_escriba_z_heights_are_the_pen(data_dir: Path) -> None:
+    program = load_for(real(data_dir, ESCRIBA), "grbl-plotter")
     at_line = {}
     for op in program:
         at_line.setdefault(op.source.line, []).append(op)
     assert [op.kind for op in at_line[10]] == [OpKind.PEN_UP]  # G00 Z5.000000
     assert at_line[10][0].line == "M5"
-    assert file_lines(real(shared_dir, ESCRIBA))[27] == "G01 Z-0.125000 F100.0(Penetrate)"
+    assert file_lines(real(data_dir, ESCRIBA))[27] == "G01 Z-0.125000 F100.0(Penetrate)"
     penetrate = at_line[28]
     assert [op.kind for op in penetrate] == [OpKind.PEN_DOWN, OpKind.GCODE]
     assert [op.line for op in penetrate] == ["M3 S1000", "G01 F100.0"]
 
 
-def test_makelangelo_waits_home_and_servo(shared_dir: Path) -> None:
-    path = real(shared_dir, MAKELANGELO)
+def test_makelangelo_waits_home_and_servo(data_dir: Path) -> None:
+    path = real(data_dir, MAKELANGELO)
     downs = numbered(path, r"^M280 P0 S25\b")
     ups = numbered(path, r"^M280 P0 S90\b")
     for profile in PLOTTERS:
@@ -458,8 +458,8 @@ def test_real_time_bytes_on_a_line(tmp_path: Path) -> None:
     assert [(p.line, p.text) for p in program.unsupported] == [(3, "!")]
 
 
-def test_pen_lines_sent_as_written_when_not_translated(shared_dir: Path) -> None:
-    program = load_for(real(shared_dir, BUNNY), "corexy-plotter", translate_pen=False)
+def test_pen_lines_sent_as_written_when_not_translated(data_dir: Path) -> None:
+    program = load_for(real(data_dir, BUNNY), "corexy-plotter", translate_pen=False)
     downs = of_kind(program, OpKind.PEN_DOWN)
     assert program[downs[0]].line == "M300 S30"
     refused = {p.line for p in program.unsupported if p.reason.endswith("cannot execute M300")}
@@ -512,8 +512,8 @@ def test_words_are_compared_normalised(tmp_path: Path) -> None:
     assert program[4].kind is OpKind.COMMENT  # G21: not sent
 
 
-def test_skipping_unsupported_lines(shared_dir: Path) -> None:
-    program = load_for(real(shared_dir, BUNNY), "corexy-plotter", skip_unsupported=True)
+def test_skipping_unsupported_lines(data_dir: Path) -> None:
+    program = load_for(real(data_dir, BUNNY), "corexy-plotter", skip_unsupported=True)
     assert program.unsupported == ()
     skipped = [op for op in program if op.source.line in (11, 13, 4304, 4308)]
     assert all(op.kind is OpKind.COMMENT and op.line == "" for op in skipped)
@@ -620,8 +620,8 @@ def test_limit_violations_name_the_line(tmp_path: Path) -> None:
     assert program.limit_violations({"X": (0, 400), "Y": (0, 300)}) == []
 
 
-def test_fingerprint_follows_what_is_sent(shared_dir: Path) -> None:
-    path = real(shared_dir, BUNNY)
+def test_fingerprint_follows_what_is_sent(data_dir: Path) -> None:
+    path = real(data_dir, BUNNY)
     a = load_for(path, "corexy-plotter").fingerprint()
     assert a == load_for(path, "corexy-plotter").fingerprint()
     assert a != load_for(path, "grbl-plotter").fingerprint()  # other pen commands
@@ -630,8 +630,8 @@ def test_fingerprint_follows_what_is_sent(shared_dir: Path) -> None:
 # --- the preview ---------------------------------------------------------------------------
 
 
-def test_preview_of_bunny_has_work_and_travel(shared_dir: Path) -> None:
-    program = load_for(real(shared_dir, BUNNY), "corexy-plotter")
+def test_preview_of_bunny_has_work_and_travel(data_dir: Path) -> None:
+    program = load_for(real(data_dir, BUNNY), "corexy-plotter")
     geometry = ProgramGeometry(program, "X", "Y")
     assert np.isfinite(geometry.work.x).sum() > 3000
     assert np.isfinite(geometry.travel.x).sum() > 100
@@ -652,13 +652,13 @@ def test_preview_without_pen_commands(tmp_path: Path) -> None:
 # --- registry ---------------------------------------------------------------------------------
 
 
-def test_registered_by_extension_and_content(shared_dir: Path, tmp_path: Path) -> None:
+def test_registered_by_extension_and_content(data_dir: Path, tmp_path: Path) -> None:
     for extension in (".gcode", ".nc", ".ngc", ".gc", ".g", ".tap"):
         assert loader_for(tmp_path / f"x{extension}").__name__ == "load_gcode_job"
-    head = real(shared_dir, BUNNY).read_text(encoding="utf-8")[:4096]
+    head = real(data_dir, BUNNY).read_text(encoding="utf-8")[:4096]
     assert sniff_gcode(head)
-    assert sniff_gcode(real(shared_dir, ESCRIBA).read_text(encoding="utf-8")[:4096])
-    assert sniff_gcode(real(shared_dir, MAKELANGELO).read_text(encoding="utf-8")[:4096])
+    assert sniff_gcode(real(data_dir, ESCRIBA).read_text(encoding="utf-8")[:4096])
+    assert sniff_gcode(real(data_dir, MAKELANGELO).read_text(encoding="utf-8")[:4096])
     assert not sniff_gcode("M48\nINCH,TZ\nT01C0.0315\n%\nT01\nX18350Y22100\n")
     assert not sniff_gcode("1.0, 2.0\n3.0, 4.0\n")
     extensionless = tmp_path / "plot"
@@ -712,14 +712,14 @@ def test_g4_p_is_read_in_the_unit_of_the_machines_firmware(
 
 
 def test_the_unicorn_files_dwells_are_seconds_on_grbl_and_the_operator_is_told(
-    shared_dir: Path,
+    data_dir: Path,
 ) -> None:
     """G8-01: 369 x G4 P150 (meant as ms) wait over 15 hours on a GRBL board."""
-    program = load_for(real(shared_dir, BUNNY), "grbl-plotter", skip_unsupported=True)
+    program = load_for(real(data_dir, BUNNY), "grbl-plotter", skip_unsupported=True)
     assert program.data.dwell_s.sum() == pytest.approx(369 * 150)
     assert any("G4 P is seconds" in note and "15 h 22 min" in note for note in program.notes)
     assert not any(
-        "G4 P" in note for note in load_for(real(shared_dir, BUNNY), "corexy-plotter").notes
+        "G4 P" in note for note in load_for(real(data_dir, BUNNY), "corexy-plotter").notes
     )
 
 
@@ -730,9 +730,9 @@ def test_estimate_diagonal_is_limited_per_axis(tmp_path: Path) -> None:
     assert estimate_gcode(program, plotter()).total_s == pytest.approx(s / v + v / a)
 
 
-def test_dry_run_estimate_dispatches_to_gcode(shared_dir: Path) -> None:
+def test_dry_run_estimate_dispatches_to_gcode(data_dir: Path) -> None:
     profile = load_profile("corexy-plotter")
-    program = load_for(real(shared_dir, BUNNY), "corexy-plotter")
+    program = load_for(real(data_dir, BUNNY), "corexy-plotter")
     result = estimate(program, profile, {}, 0.1)
     assert len(result.cumulative_s) == len(program)
     dwells = 369 * 0.15  # the file's G4 P150 after every pen move

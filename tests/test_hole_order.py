@@ -66,8 +66,8 @@ REAL_BOARDS = [
 
 
 @pytest.mark.parametrize("name", REAL_BOARDS)
-def test_real_boards_are_shorter_than_file_order(shared_dir: Path, name: str) -> None:
-    plan = plan_drilling(read_drill_file(shared_dir / name))
+def test_real_boards_are_shorter_than_file_order(data_dir: Path, name: str) -> None:
+    plan = plan_drilling(read_drill_file(data_dir / name))
     assert plan.travel_mm < plan.file_travel_mm
     for tool in plan.tools:
         assert tool.travel_mm <= tool.file_travel_mm
@@ -87,19 +87,19 @@ PREVIOUS_TRAVEL_MM = {
 
 
 @pytest.mark.parametrize("name", sorted(PREVIOUS_TRAVEL_MM))
-def test_real_boards_no_longer_than_the_previous_order(shared_dir: Path, name: str) -> None:
-    plan = plan_drilling(read_drill_file(shared_dir / name))
+def test_real_boards_no_longer_than_the_previous_order(data_dir: Path, name: str) -> None:
+    plan = plan_drilling(read_drill_file(data_dir / name))
     assert plan.travel_mm <= PREVIOUS_TRAVEL_MM[name] + 1e-3
 
 
-def test_every_real_board_has_a_previous_figure(shared_dir: Path) -> None:
-    on_disk = {f"realdata/excellon/{p.name}" for p in (shared_dir / "realdata/excellon").iterdir()}
+def test_every_real_board_has_a_previous_figure(data_dir: Path) -> None:
+    on_disk = {f"realdata/excellon/{p.name}" for p in (data_dir / "realdata/excellon").iterdir()}
     assert on_disk <= set(PREVIOUS_TRAVEL_MM)
 
 
 @pytest.mark.parametrize("name", REAL_BOARDS)
-def test_every_hole_once_and_tools_grouped(shared_dir: Path, name: str) -> None:
-    job = read_drill_file(shared_dir / name)
+def test_every_hole_once_and_tools_grouped(data_dir: Path, name: str) -> None:
+    job = read_drill_file(data_dir / name)
     plan = plan_drilling(job)
     names = [t.tool.name for t in plan.tools]
     assert len(names) == len(set(names))  # each tool one contiguous group, drilled once

@@ -51,8 +51,8 @@ def runner(drill: StationHarness, tmp_path: Path) -> Iterator[JobRunner]:
     built.deleteLater()
 
 
-def sample_program(shared_dir: Path, mode: DrillMode = "drill") -> Program:
-    job = read_drill_file(shared_dir / "samples/pcb-driver/driver")
+def sample_program(data_dir: Path, mode: DrillMode = "drill") -> Program:
+    job = read_drill_file(data_dir / "samples/pcb-driver/driver")
     return build_drill_program(job, mode=mode)
 
 
@@ -93,9 +93,9 @@ def run_to_end(drill: StationHarness, runner: JobRunner, timeout: float = 400.0)
 
 
 def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_the_eta(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     assert runner.load(program) == []
     assert runner.estimate is not None
     eta = runner.estimate.total_s
@@ -120,9 +120,9 @@ def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_
 
 
 def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir, "draw")
+    program = sample_program(data_dir, "draw")
     assert runner.load(program) == []
     assert runner.estimate is not None
     eta = runner.estimate.total_s
@@ -150,9 +150,9 @@ def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
 
 
 def test_cross_mode_puts_the_pen_down_at_both_arms_of_every_cross(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir, "cross")
+    program = sample_program(data_dir, "cross")
     assert runner.load(program) == []
     assert runner.estimate is not None
     eta = runner.estimate.total_s
@@ -234,9 +234,9 @@ def reconnect(drill: StationHarness) -> None:
 
 
 def test_a_link_cut_during_a_received_drill_cycle_resumes_without_drilling_it_again(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     messages: list[str] = []
     runner.message.connect(messages.append)
     assert runner.load(program) == []
@@ -273,10 +273,10 @@ def test_a_link_cut_during_a_received_drill_cycle_resumes_without_drilling_it_ag
 
 
 def test_a_drill_command_lost_with_the_link_is_the_operators_call_and_a_move_is_repeated(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
     """A V that went out unacknowledged may have drilled: the operator, not the runner, decides."""
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     moves = [i for i, op in enumerate(program) if op.kind is OpKind.MOVE]
     cut_at = {drills[3], moves[10]}  # a V that never arrives, then an X/Y that may not
@@ -327,10 +327,10 @@ def test_a_drill_command_lost_with_the_link_is_the_operators_call_and_a_move_is_
 
 
 def test_a_lost_receipt_is_not_a_reason_to_drill_twice(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
     """The drill took the V, but its RV and DV never came back: asked, then counted as drilled."""
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     target = drills[6]
 
@@ -369,10 +369,10 @@ def test_a_lost_receipt_is_not_a_reason_to_drill_twice(
 
 
 def test_a_restarted_station_asks_about_the_checkpoints_next_hole(
-    drill: StationHarness, shared_dir: Path, tmp_path: Path
+    drill: StationHarness, data_dir: Path, tmp_path: Path
 ) -> None:
     """After a crash nothing is known of the last V: the operator is asked, nothing is sent."""
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     first = JobRunner(drill.station, tmp_path / "checkpoints")
     assert first.load(program) == []
@@ -401,9 +401,9 @@ def test_a_restarted_station_asks_about_the_checkpoints_next_hole(
 
 
 def test_a_refused_command_fails_the_job_at_its_line(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     messages: list[str] = []
     runner.message.connect(messages.append)
     first_drill = next(i for i, op in enumerate(program) if op.kind is OpKind.DRILL)
@@ -422,10 +422,10 @@ def test_a_refused_command_fails_the_job_at_its_line(
 
 
 def test_a_silent_link_mid_drill_is_noticed_paused_and_recovered_without_reconnecting(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
     """The port stays open but no byte passes (a pulled RS232 cable): no reply, no hang."""
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     drills = [i for i, op in enumerate(program) if op.kind is OpKind.DRILL]
     states: list[LinkState] = []
     drill.station.model.linkStateChanged.connect(states.append)
@@ -458,10 +458,10 @@ def test_a_silent_link_mid_drill_is_noticed_paused_and_recovered_without_reconne
 
 
 def test_a_registered_board_is_drilled_every_hole_once_at_its_transformed_position(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
     """Jogged points → registration → the runner's travel check → holes where the board is."""
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     # The board lies 1.5° askew, 20 mm right and 15 mm up; the operator "jogs" over two holes.
     truth = Registration(math.radians(1.5), (20.0, 15.0))
     moves = [op.target for op in program if op.kind is OpKind.MOVE]
@@ -485,9 +485,9 @@ def test_a_registered_board_is_drilled_every_hole_once_at_its_transformed_positi
 
 
 def test_a_registration_that_puts_holes_off_the_bed_is_refused_by_the_travel_check(
-    drill: StationHarness, runner: JobRunner, shared_dir: Path
+    drill: StationHarness, runner: JobRunner, data_dir: Path
 ) -> None:
-    program = sample_program(shared_dir)
+    program = sample_program(data_dir)
     off_bed = registered(program, Registration(0.0, (-30.0, 0.0)))
     refused = runner.load(off_bed)
     assert refused and all(v.axis == "X" and v.value < 0 for v in refused)

@@ -163,8 +163,8 @@ def test_moves_on_one_axis_are_completed_and_other_operations_kept() -> None:
         registered(Program("q", (move(WHERE, X=1.0),)), quarter)
 
 
-def test_the_sample_board_registered_keeps_every_hole_and_tool_prompt(shared_dir: Path) -> None:
-    job = read_drill_file(shared_dir / "samples/pcb-driver/driver")
+def test_the_sample_board_registered_keeps_every_hole_and_tool_prompt(data_dir: Path) -> None:
+    job = read_drill_file(data_dir / "samples/pcb-driver/driver")
     program = build_drill_program(job)
     truth = Registration(math.radians(-2.0), (15.0, 20.0))
     out = registered(program, truth)

@@ -45,12 +45,12 @@ from app.profiles import load_profile
 WINDER = ("A", "X", "Z")
 
 
-def sample(shared_dir: Path, name: str) -> Path:
-    return shared_dir / "samples" / f"string-art-{name}"
+def sample(data_dir: Path, name: str) -> Path:
+    return data_dir / "samples" / f"string-art-{name}"
 
 
-def realdata(shared_dir: Path) -> Path:
-    return shared_dir / "realdata" / "stringart" / "threadArt_cat-sequence_160pins.txt"
+def realdata(data_dir: Path) -> Path:
+    return data_dir / "realdata" / "stringart" / "threadArt_cat-sequence_160pins.txt"
 
 
 def job_of(tvar: int, nails: int, radius_cm: float, sequence: list[int]) -> StringArtJob:
@@ -151,9 +151,9 @@ def test_thread_length_is_the_sum_of_chords() -> None:
     ],
 )
 def test_samples_load_from_either_file_of_the_pair(
-    shared_dir: Path, name: str, params: StringArtParams, count: int, start: tuple[int, ...]
+    data_dir: Path, name: str, params: StringArtParams, count: int, start: tuple[int, ...]
 ) -> None:
-    folder = sample(shared_dir, name)
+    folder = sample(data_dir, name)
     job = read_string_art(folder / "poradi.txt")
     assert job.params == params
     assert len(job.sequence) == count and job.sequence[:5] == start
@@ -163,8 +163,8 @@ def test_samples_load_from_either_file_of_the_pair(
     assert load_job(folder / "poradi.txt", WINDER).fingerprint() == program.fingerprint()
 
 
-def test_a_generator_list_needs_the_board_then_loads(shared_dir: Path) -> None:
-    path = realdata(shared_dir)
+def test_a_generator_list_needs_the_board_then_loads(data_dir: Path) -> None:
+    path = realdata(data_dir)
     with pytest.raises(NeedsNailCount) as caught:
         load_job(path, WINDER)
     assert caught.value.min_nails == 160  # indices 0…159
@@ -179,12 +179,12 @@ def test_a_generator_list_needs_the_board_then_loads(shared_dir: Path) -> None:
 
 
 def test_the_registry_tells_string_art_from_point_lists_and_drill_files(
-    shared_dir: Path, tmp_path: Path
+    data_dir: Path, tmp_path: Path
 ) -> None:
     for path in (
-        sample(shared_dir, "cardioid") / "param.txt",
-        sample(shared_dir, "hexagon") / "poradi.txt",
-        realdata(shared_dir),
+        sample(data_dir, "cardioid") / "param.txt",
+        sample(data_dir, "hexagon") / "poradi.txt",
+        realdata(data_dir),
     ):
         assert loader_for(path) is load_string_art_job, path
     points = tmp_path / "points.txt"
@@ -196,9 +196,9 @@ def test_the_registry_tells_string_art_from_point_lists_and_drill_files(
     assert sniff_string_art("TVAR=6\r\n")
 
 
-def test_a_machine_without_the_winders_axes_is_refused(shared_dir: Path) -> None:
+def test_a_machine_without_the_winders_axes_is_refused(data_dir: Path) -> None:
     with pytest.raises(JobFileError, match="axes A, X and Z") as caught:
-        load_job(sample(shared_dir, "cardioid") / "poradi.txt", ("X", "Y"))
+        load_job(sample(data_dir, "cardioid") / "poradi.txt", ("X", "Y"))
     assert caught.value.line == 0
 
 
@@ -357,7 +357,7 @@ def test_no_turn_exceeds_half_a_turn_and_the_nails_come_in_file_order(data: st.D
 
 
 def test_drill_phase_as_the_firmware_then_drivers_off_wait_and_start_back_at_angle_0(
-    shared_dir: Path,
+    data_dir: Path,
 ) -> None:
     """FIDELITY S0-15, S0-16, S0-18, S0-19, S0-25: the firmware's drilling and winding start.
 
@@ -369,7 +369,7 @@ def test_drill_phase_as_the_firmware_then_drivers_off_wait_and_start_back_at_ang
     first nail, turn between it and the next one, needle in, turn back to angle 0,
     the drill's driver off.
     """
-    job = read_string_art(sample(shared_dir, "hexagon") / "poradi.txt")
+    job = read_string_art(sample(data_dir, "hexagon") / "poradi.txt")
     program = build_program(job)
     angles, radii = job.nail_polar()
     states = replay(program)
@@ -418,8 +418,8 @@ def test_every_connection_is_wound_once_not_the_firmwares_off_by_one() -> None:
     assert len(wraps) == len(sequence) - 1
 
 
-def test_sources_point_at_the_files(shared_dir: Path) -> None:
-    folder = sample(shared_dir, "cardioid")
+def test_sources_point_at_the_files(data_dir: Path) -> None:
+    folder = sample(data_dir, "cardioid")
     program = build_program(read_string_art(folder / "poradi.txt"))
     drill = program[program.indices_of(OpKind.MOVE)[0]]
     assert str(drill.source) == "param.txt:2"  # pocet_hrebiku
@@ -428,8 +428,8 @@ def test_sources_point_at_the_files(shared_dir: Path) -> None:
     assert program.kinds() == {OpKind.MOVE, OpKind.WAIT, OpKind.COMMENT, OpKind.GCODE}
 
 
-def test_program_arrays_agree_with_the_operations(shared_dir: Path) -> None:
-    program = build_program(read_string_art(sample(shared_dir, "cardioid") / "poradi.txt"))
+def test_program_arrays_agree_with_the_operations(data_dir: Path) -> None:
+    program = build_program(read_string_art(sample(data_dir, "cardioid") / "poradi.txt"))
     for axes in (("A", "X", "Z"), ("X", "Q")):
         fast, slow = program.path(axes), Program.path(program, axes)  # arrays vs operations
         assert np.array_equal(fast.ops, slow.ops)
@@ -500,8 +500,8 @@ def test_the_estimate_counts_the_drills_dwells() -> None:
     assert step == pytest.approx(0.25)
 
 
-def test_summary_shows_the_totals(shared_dir: Path) -> None:
-    job = read_string_art(sample(shared_dir, "cardioid") / "poradi.txt")
+def test_summary_shows_the_totals(data_dir: Path) -> None:
+    job = read_string_art(sample(data_dir, "cardioid") / "poradi.txt")
     text = job.summary(3725.0)
     assert text.startswith("200 nails on a circle of 14.5 cm radius, 400 connections, thread ")
     assert text.endswith(", about 1:02:05")

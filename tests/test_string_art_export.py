@@ -23,15 +23,15 @@ from app.profiles import GcodeSettings, load_profile
 AT = SourceRef("job.nc", 7)
 
 
-def sample(shared_dir: Path, name: str) -> Path:
-    return shared_dir / "samples" / f"string-art-{name}"
+def sample(data_dir: Path, name: str) -> Path:
+    return data_dir / "samples" / f"string-art-{name}"
 
 
 @pytest.mark.parametrize("name", ["cardioid", "hexagon"])
 def test_sd_files_come_out_as_the_samples_are_written(
-    shared_dir: Path, tmp_path: Path, name: str
+    data_dir: Path, tmp_path: Path, name: str
 ) -> None:
-    folder = sample(shared_dir, name)
+    folder = sample(data_dir, name)
     job = read_string_art(folder / "poradi.txt")
     param, poradi = export_sd_files(job, tmp_path / "sd")
     assert (param.name, poradi.name) == ("param.txt", "poradi.txt")
@@ -41,9 +41,9 @@ def test_sd_files_come_out_as_the_samples_are_written(
 
 @pytest.mark.parametrize("name", ["cardioid", "hexagon"])
 def test_export_then_load_gives_back_the_same_job(
-    shared_dir: Path, tmp_path: Path, name: str
+    data_dir: Path, tmp_path: Path, name: str
 ) -> None:
-    job = read_string_art(sample(shared_dir, name) / "param.txt")
+    job = read_string_art(sample(data_dir, name) / "param.txt")
     profile = load_profile("string-art")
     export_sd_files(job, tmp_path)
     again = read_string_art(tmp_path / "param.txt")
@@ -51,8 +51,8 @@ def test_export_then_load_gives_back_the_same_job(
     assert build_program(again, profile).fingerprint() == build_program(job, profile).fingerprint()
 
 
-def test_a_generator_list_exports_as_a_counted_pair(shared_dir: Path, tmp_path: Path) -> None:
-    path = shared_dir / "realdata" / "stringart" / "threadArt_cat-sequence_160pins.txt"
+def test_a_generator_list_exports_as_a_counted_pair(data_dir: Path, tmp_path: Path) -> None:
+    path = data_dir / "realdata" / "stringart" / "threadArt_cat-sequence_160pins.txt"
     job = load_string_art(path, StringArtParams(0, 160, 30.55))
     export_sd_files(job, tmp_path)
     assert (tmp_path / "poradi.txt").read_text().startswith("4001,0,87,9,89,")
@@ -60,9 +60,9 @@ def test_a_generator_list_exports_as_a_counted_pair(shared_dir: Path, tmp_path: 
     assert read_string_art(tmp_path / "poradi.txt") == job
 
 
-def test_gcode_export(shared_dir: Path, tmp_path: Path) -> None:
+def test_gcode_export(data_dir: Path, tmp_path: Path) -> None:
     profile = load_profile("string-art")
-    job = read_string_art(sample(shared_dir, "hexagon") / "poradi.txt")
+    job = read_string_art(sample(data_dir, "hexagon") / "poradi.txt")
     program = build_program(job, profile)
     path = export_gcode(program, tmp_path / "hexagon.nc", profile)
     raw = path.read_bytes()

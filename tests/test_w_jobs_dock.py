@@ -299,12 +299,12 @@ def test_clock_text() -> None:
 
 
 def test_draw_mode_reloads_a_drill_file_as_a_pen_drawing(
-    qtbot: QtBot, harness: StationHarness, tmp_path: Path, shared_dir: Path
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path, data_dir: Path
 ) -> None:
     runner = JobRunner(harness.station, tmp_path / "checkpoints")
     dock = JobsDock(harness.station, runner)
     qtbot.addWidget(dock)
-    drill_file = shared_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
+    drill_file = data_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
     assert dock.open_path(drill_file) is False  # the XY stage cannot drill: refused, listed
     # The stage has no pen: the option is not offered, and a choice kept from a machine
     # with a pen does not apply here.
@@ -320,7 +320,7 @@ def test_draw_mode_reloads_a_drill_file_as_a_pen_drawing(
 
 
 def test_a_drill_job_on_the_drill_shows_its_travel_saving_and_microsteps(
-    qtbot: QtBot, tmp_path: Path, shared_dir: Path
+    qtbot: QtBot, tmp_path: Path, data_dir: Path
 ) -> None:
     drill = StationHarness(load_profile("pcb-drill"))
     try:
@@ -328,7 +328,7 @@ def test_a_drill_job_on_the_drill_shows_its_travel_saving_and_microsteps(
         runner = JobRunner(drill.station, tmp_path / "checkpoints")
         dock = JobsDock(drill.station, runner)
         qtbot.addWidget(dock)
-        assert dock.open_path(shared_dir / "samples/pcb-driver/driver")
+        assert dock.open_path(data_dir / "samples/pcb-driver/driver")
         log = dock.messages.toPlainText()
         assert "mm in file order" in log and "mm optimised" in log
         runner.step()  # the first tool's WAIT, once the drill homed (FIDELITY S2-26)

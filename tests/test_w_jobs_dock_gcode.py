@@ -75,9 +75,9 @@ def test_gcode_options_show_on_a_gcode_machine_only(
 
 
 def test_a_file_the_plotter_cannot_run_is_refused_line_by_line_until_skipping_is_chosen(
-    qtbot: QtBot, plotter: StationHarness, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, plotter: StationHarness, data_dir: Path, tmp_path: Path
 ) -> None:
-    bunny = shared_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
+    bunny = data_dir / "realdata/gcode/CNC-Drawinger_unicorn_BUNNY.gcode"
     dock = make_dock(qtbot, plotter, tmp_path)
     assert not dock.open_path(bunny)
     text = messages(dock)
@@ -99,11 +99,11 @@ def test_a_file_the_plotter_cannot_run_is_refused_line_by_line_until_skipping_is
 
 
 def test_a_bare_nail_list_asks_for_the_board_once_and_loads(
-    qtbot: QtBot, winder: StationHarness, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, winder: StationHarness, data_dir: Path, tmp_path: Path
 ) -> None:
     asked: list[NeedsNailCount] = []
     dock = make_dock(qtbot, winder, tmp_path, asked)
-    path = shared_dir / "realdata/stringart/threadArt_cat-sequence_160pins.txt"
+    path = data_dir / "realdata/stringart/threadArt_cat-sequence_160pins.txt"
     assert dock.open_path(path)
     assert len(asked) == 1 and asked[0].min_nails <= 160
     program = dock.runner.program
@@ -116,10 +116,10 @@ def test_a_bare_nail_list_asks_for_the_board_once_and_loads(
 
 
 def test_exports_write_the_sd_files_and_the_gcode(
-    qtbot: QtBot, winder: StationHarness, shared_dir: Path, tmp_path: Path
+    qtbot: QtBot, winder: StationHarness, data_dir: Path, tmp_path: Path
 ) -> None:
     dock = make_dock(qtbot, winder, tmp_path)
-    sample = shared_dir / "samples/string-art-hexagon/poradi.txt"
+    sample = data_dir / "samples/string-art-hexagon/poradi.txt"
     assert dock.open_path(sample)
     assert dock.export_button.isEnabled()
     out = tmp_path / "sd"

@@ -1,8 +1,8 @@
 """Real GRBL 1.1h (grbl-sim, GRBL's own source compiled for the PC) on a pseudo-terminal.
 
-Test-only: the source stays in ``../shared/grbl`` (GPL) and is built once per
+Test-only: the source stays in ``tests/third_party/grbl`` (GPL) and is built once per
 machine into a cache directory outside the repository, with the system C
-compiler, as ``../shared/grbl/BUILD.md`` says.  ``python -m
+compiler, as ``tests/third_party/grbl/BUILD.md`` says.  ``python -m
 tests.helpers.grbl_sim EXE WORKDIR`` then serves it like the emulator's
 ``--pty``: it prints the device path on its first line and copies bytes both
 ways until SIGTERM.  Every byte from the host and every line from GRBL goes
