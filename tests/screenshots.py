@@ -24,7 +24,7 @@ from widgets.main_window import MainWindow
 
 OUT = Path(__file__).resolve().parent.parent / "resources" / "screenshots"
 #: The real job files and samples kept with the tests (tests/data).
-SHARED = Path(__file__).resolve().parent / "data"
+DATA = Path(__file__).resolve().parent / "data"
 SCREEN = QSize(1280, 800)
 SQUARE = "# square\n5, 5\n40, 5\n40, 40\n5, 40\n5, 5\n20, 20\n5, 5\n5, 5\n"
 
@@ -126,7 +126,7 @@ def string_art(work: Path) -> tuple[StationHarness, MainWindow]:
     """The winder on the cardioid board of the samples in tests/data."""
     harness, window = _window("string-art", work)
     window.jobs_dock.show()
-    window.jobs_dock.open_path(SHARED / "samples" / "string-art-cardioid" / "poradi.txt")
+    window.jobs_dock.open_path(DATA / "samples" / "string-art-cardioid" / "poradi.txt")
     window.jobs_dock.run_button.click()
     harness.run(5.0)
     return harness, window
@@ -160,7 +160,7 @@ def drill(work: Path) -> tuple[StationHarness, MainWindow]:
     harness, window = _window("pcb-drill", work)
     _page(window, "Drill")
     window.jobs_dock.show()
-    window.jobs_dock.open_path(SHARED / "samples" / "pcb-driver" / "driver.dri")
+    window.jobs_dock.open_path(DATA / "samples" / "pcb-driver" / "driver.dri")
     window.jobs_dock.run_button.click()
     harness.run(12.0)
     return harness, window
@@ -184,7 +184,7 @@ def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
     _page(window, "G-code")
     window.jobs_dock.show()
     window.jobs_dock.skip_check.setChecked(True)  # M300/M18 left out, listed
-    window.jobs_dock.open_path(SHARED / "realdata" / "gcode" / "CNC-Drawinger_unicorn_BUNNY.gcode")
+    window.jobs_dock.open_path(DATA / "realdata" / "gcode" / "CNC-Drawinger_unicorn_BUNNY.gcode")
     window.jobs_dock.run_button.click()
     harness.run(5.0)
     window.jobs_dock.continue_button.click()  # the file's M01 "Was registration test successful?"

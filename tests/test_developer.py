@@ -171,7 +171,7 @@ def test_an_echo_for_the_wrong_axis_count_is_refused(harness: StationHarness) ->
 
 def test_the_protocol_example_echo_in_words() -> None:
     echo = EchoFrame((EchoPacket(0, 1, 12345), EchoPacket(0, 0, 0)), 1, 3712)
-    assert encode_echo(echo).startswith(b"<010123450000000001003712*")  # PROTOCOLS.md 1.1
+    assert encode_echo(echo).startswith(b"<010123450000000001003712*")  # docs/protocols.md §1.1
     assert describe_echo(echo, NAMES, UNITS) == (
         "X pos 12.345 mm accelerating | Y pos 0.000 mm idle | battery voltage 3712 mV"
     )

@@ -1,4 +1,4 @@
-"""The drill codec against PROTOCOLS.md section 3: exact bytes, round trips, resynchronisation.
+"""The drill codec against docs/protocols.md §3: exact bytes, round trips, resynchronisation.
 
 Commands end with CR, replies with CR LF; every byte sequence below is
 written out by hand from the contract, not produced by the encoder under test.

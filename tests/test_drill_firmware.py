@@ -1,4 +1,4 @@
-"""The emulated PCB drill against PROTOCOLS.md section 3, driven through encoded commands.
+"""The emulated PCB drill against docs/protocols.md §3, driven through encoded commands.
 
 Every duration asserted here is worked out by hand from the defaults: X steps
 1.3 ms, Y 1.5 ms and Z 2.5 ms per microstep with no ramps; at power-on the

@@ -1,4 +1,4 @@
-"""The drill session against the emulated plotter on a test clock (PROTOCOLS.md section 3).
+"""The drill session against the emulated plotter on a test clock (docs/protocols.md §3).
 
 What goes on the wire (one command at a time, CR-terminated, host rounding),
 what the model then shows, what the emulated machine really did (its drill

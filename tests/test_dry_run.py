@@ -1,6 +1,6 @@
 """The dry run's times, checked against trapezoids worked out by hand.
 
-XY stage defaults (PROTOCOLS.md table 1.4): fast 10 mm/s, slow 2 mm/s,
+XY stage defaults (docs/protocols.md §1.4): fast 10 mm/s, slow 2 mm/s,
 acceleration 20 mm/s², start speed 0.5 mm/s.  The driver jumps to the start
 speed, ramps, cruises and ramps back down, jumping to a stop from 0.5 mm/s.
 """

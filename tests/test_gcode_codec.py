@@ -1,4 +1,4 @@
-"""The G-code codec against PROTOCOLS.md section 4 and GRBL 1.1's reply forms.
+"""The G-code codec against docs/protocols.md §4 and GRBL 1.1's reply forms.
 
 Every wire line below is written out by hand the way GRBL (or the CoreXY
 plotter, which says ``OK``) sends it, CR LF included.

@@ -1,4 +1,4 @@
-"""The emulated G-code boards against PROTOCOLS.md section 4, driven through encoded lines.
+"""The emulated G-code boards against docs/protocols.md §4, driven through encoded lines.
 
 Every duration is worked out by hand.  The GRBL plotter has 80 steps/mm,
 motors of at most 8000 steps/s and 80 000 steps/s² (100 mm/s, 1000 mm/s²); a

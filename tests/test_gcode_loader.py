@@ -741,7 +741,7 @@ def test_dry_run_estimate_dispatches_to_gcode(data_dir: Path) -> None:
 
 
 def test_the_plotters_own_bare_value_words_are_sent_as_written(tmp_path: Path) -> None:
-    """``M98 <µs>`` and ``M99 <pwm>`` carry a value with no letter (PROTOCOLS.md §4)."""
+    """``M98 <µs>`` and ``M99 <pwm>`` carry a value with no letter (docs/protocols.md §4)."""
     path = write(tmp_path, "M98 800\nM99 90\nG1 X10 Y10 F3000\n")
     program = load_for(path, "corexy-plotter")
     assert [(op.kind, op.line) for op in program] == [

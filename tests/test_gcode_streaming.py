@@ -1,4 +1,4 @@
-"""Ping-pong and character counting (PROTOCOLS.md section 4), as pure bookkeeping."""
+"""Ping-pong and character counting (docs/protocols.md §4), as pure bookkeeping."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The stage codec against PROTOCOLS.md section 1: exact bytes, round trips, resynchronisation."""
+"""The stage codec against docs/protocols.md §1: exact bytes, round trips, resynchronisation."""
 
 from __future__ import annotations
 

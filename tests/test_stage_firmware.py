@@ -1,4 +1,4 @@
-"""The emulated stage firmware against PROTOCOLS.md 1.2-1.6, driven through encoded frames.
+"""The emulated stage firmware against docs/protocols.md §1.2-1.6, driven through encoded frames.
 
 Every number asserted here is worked out by hand from the XY-stage defaults
 (fast 10000 µm/s, slow 2000 µm/s, acceleration 20000 µm/s², start speed

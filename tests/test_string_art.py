@@ -1,10 +1,10 @@
 """String-art jobs: nail geometry, reading and checking the files, and the winder's program.
 
-Expected values are worked out by hand from the geometry (DESIGN.md, "Job
-files"): nails sit 1.5 cm inside the board's edge, so a board of radius R cm
-has its nails (or its polygon's corners) on the circle of R·10 - 15 mm; a
-regular n-gon's edge midpoint is the closest a point of it comes to the
-centre, (R·10 - 15)·cos(π/n) mm.
+Expected values are worked out by hand from the original firmware's geometry (as
+app/jobs/formats/string_art/geometry.py states it): nails sit 1.5 cm inside the
+board's edge, so a board of radius R cm has its nails (or its polygon's corners)
+on the circle of R·10 - 15 mm; a regular n-gon's edge midpoint is the closest a
+point of it comes to the centre, (R·10 - 15)·cos(π/n) mm.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The usb3 codec against PROTOCOLS.md section 2: exact bytes, round trips, resynchronisation.
+"""The usb3 codec against docs/protocols.md §2: exact bytes, round trips, resynchronisation.
 
 Numbers are worked out by hand from the contract: a count is 1/32 step, 200
 full steps turn the screw once, so 1 mm is 6400 / pitch counts.

@@ -1,4 +1,4 @@
-"""The emulated usb3 unit against PROTOCOLS.md section 2, driven through encoded commands.
+"""The emulated usb3 unit against docs/protocols.md §2, driven through encoded commands.
 
 Every number asserted here is worked out by hand from the defaults: a speed
 table from 9.375 to 300 pulses/s (index i: 9.375 + 290.625 (i / 31)², slow at low

@@ -1,4 +1,4 @@
-"""The usb3 session against the emulated unit, on a manual clock (PROTOCOLS.md section 2).
+"""The usb3 session against the emulated unit, on a manual clock (docs/protocols.md §2).
 
 The station, its session and the emulated unit run exactly as in the app,
 joined by the loopback transport; time moves only through the harness, so

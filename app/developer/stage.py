@@ -38,14 +38,14 @@ def _lower_first(text: str) -> str:
     return text[:1].lower() + text[1:]
 
 
-#: What an echo packet's TYPE says its DATA holds, in words (PROTOCOLS.md 1.3).
+#: What an echo packet's TYPE says its DATA holds, in words (docs/protocols.md §1.3).
 TYPE_TEXT: dict[int, str] = {
     EchoType.POSITION: "position",
     EchoType.VELOCITY: "velocity",
     **{t: _lower_first(p.label) for t, p in BY_TYPE.items()},
 }
 
-#: Subscriber variables in words (PROTOCOLS.md 1.5).
+#: Subscriber variables in words (docs/protocols.md §1.5).
 SUBSCRIBER_TEXT: dict[int, str] = {
     Subscriber.NONE: "none",
     Subscriber.BATTERY_VOLTAGE: "battery voltage",
@@ -142,7 +142,7 @@ def parse_data(value: Field, where: str) -> int:
 
 
 def parse_type(value: Field, where: str) -> int:
-    """TYPE 0…C: position, velocity or a parameter (PROTOCOLS.md 1.3)."""
+    """TYPE 0…C: position, velocity or a parameter (docs/protocols.md §1.3)."""
     code = _parse_hex(value, where, "TYPE")
     if not 0 <= code <= _MAX_TYPE:
         raise InjectError(f"{where} TYPE: {code:X} is outside 0…{_MAX_TYPE:X}")

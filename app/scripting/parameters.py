@@ -1,7 +1,7 @@
 """Stored device parameters for scripts and snapshots: read, verified writes, TOML files, diffs.
 
-The stage keeps its dynamics, currents and mechanics per axis (PROTOCOLS.md
-1.4).  A snapshot saves all of them with the machine, its firmware and the
+The stage keeps its dynamics, currents and mechanics per axis (docs/protocols.md
+§1.4).  A snapshot saves all of them with the machine, its firmware and the
 date, so a restore can first show what differs and write only that: a
 blind restore of another machine's settings has broken machines before
 (a grblHAL restore, the UGS settings import).
@@ -184,7 +184,7 @@ def firmware_of(station: Station) -> str:
     value = station.model.telemetry.get("firmware_version")
     if value is None:
         return "unknown"
-    number = round(value)  # 010200 is 1.2.0 (PROTOCOLS.md 1.5)
+    number = round(value)  # 010200 is 1.2.0 (docs/protocols.md §1.5)
     return f"{number // 10000}.{number // 100 % 100}.{number % 100}"
 
 

@@ -1,4 +1,4 @@
-"""The PCB drill's dialect: one-letter procedures with receipt and done replies (PROTOCOLS.md 3)."""
+"""The PCB drill's dialect: one-letter procedures with R and D replies (docs/protocols.md §3)."""
 
 from protocol.drill.codec import (
     COMMAND_LETTERS,

@@ -1,4 +1,4 @@
-"""Codec of the PCB drill's one-letter procedures over RS232 (PROTOCOLS.md section 3).
+"""Codec of the PCB drill's one-letter procedures over RS232 (docs/protocols.md §3).
 
 The codec is shared by the station (encodes commands, decodes replies) and the
 firmware emulator (decodes commands, encodes replies), so both sides agree on
@@ -16,7 +16,7 @@ command's CR and a reply whose CR went missing are both accepted, since a
 serial terminal or an adapter may add or drop them.
 
 Positions are absolute microsteps from the machine's zero and never negative:
-the host converts millimetres and does all rounding (PROTOCOLS.md section 3).
+the host converts millimetres and does all rounding (docs/protocols.md §3).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""How long the reference PCB drill takes for each procedure (PROTOCOLS.md section 3).
+"""How long the reference PCB drill takes for each procedure (docs/protocols.md §3).
 
 The one timing table of the drill: the emulator's defaults are built from it,
 the job estimate sums it, and the session's reply timeouts wait as long as it

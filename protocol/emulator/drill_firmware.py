@@ -1,4 +1,4 @@
-"""Firmware of the PCB drilling/drawing plotter, emulated (PROTOCOLS.md section 3).
+"""Firmware of the PCB drilling/drawing plotter, emulated (docs/protocols.md §3).
 
 It is the device side of the ``drill`` dialect written from the contract
 alone, so the station's drill session and the Excellon jobs can be run and

@@ -1,4 +1,4 @@
-"""The stage's FRAM: where the per-axis parameters of PROTOCOLS.md table 1.4 live.
+"""The stage's FRAM: where the per-axis parameters of docs/protocols.md §1.4 live.
 
 The emulator keeps the parameters as bytes, at fixed addresses and LSB first,
 rather than in a dict, so that what a test (or the developer pane) inspects is

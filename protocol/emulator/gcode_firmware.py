@@ -1,4 +1,4 @@
-"""Firmware of the G-code machines (plotters, the string-art winder), emulated (PROTOCOLS.md 4).
+"""Firmware of the G-code machines (plotters, string-art winder), emulated (docs/protocols.md §4).
 
 It is the device side of the ``gcode`` dialect written from the contract and
 GRBL 1.1's documented behaviour, so the station's streaming can be tested

@@ -1,7 +1,7 @@
 """The G-code machines the emulator knows: kinematics, travel, motors, replies, pen.
 
 One firmware serves the CoreXY pen plotter, GRBL servo plotters and the
-string-art winder (PROTOCOLS.md section 4); what differs between them is
+string-art winder (docs/protocols.md §4); what differs between them is
 data, kept here so the interpreter, the planner and the firmware read one
 description.
 

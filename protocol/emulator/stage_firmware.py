@@ -1,4 +1,4 @@
-"""Firmware of the battery XY stage, emulated (PROTOCOLS.md section 1).
+"""Firmware of the battery XY stage, emulated (docs/protocols.md §1).
 
 It is the device side of the ``stage`` dialect written from the contract alone,
 so the station can be developed and tested against it with no board attached,

@@ -1,4 +1,4 @@
-"""Firmware of the three-axis USB unit, emulated (PROTOCOLS.md section 2).
+"""Firmware of the three-axis USB unit, emulated (docs/protocols.md §2).
 
 It is the device side of the ``usb3`` dialect written from the contract alone,
 so the station's usb3 session can be developed and tested with no unit

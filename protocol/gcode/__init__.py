@@ -1,4 +1,4 @@
-"""The plotters' and the winder's dialect: GRBL-style G-code lines (PROTOCOLS.md section 4)."""
+"""The plotters' and the winder's dialect: GRBL-style G-code lines (docs/protocols.md §4)."""
 
 from protocol.gcode.codec import (
     ALARM_MESSAGES,

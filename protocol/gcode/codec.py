@@ -1,4 +1,4 @@
-"""Codec of the ``gcode`` dialect: GRBL-style lines and replies (PROTOCOLS.md section 4).
+"""Codec of the ``gcode`` dialect: GRBL-style lines and replies (docs/protocols.md §4).
 
 The station encodes G-code lines and decodes what the board says; the
 emulator answers in the same forms, so both sides agree on the wire format by

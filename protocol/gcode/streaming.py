@@ -1,4 +1,4 @@
-"""Which G-code lines may go out now: ping-pong or character counting (PROTOCOLS.md section 4).
+"""Which G-code lines may go out now: ping-pong or character counting (docs/protocols.md §4).
 
 A board acknowledges every line, in order, with ``ok`` or ``error:<n>``, and
 drops bytes that do not fit its receive buffer.  Ping-pong waits for each

@@ -1,4 +1,4 @@
-"""The XY stage's dialect: command/echo/subscriber frames (PROTOCOLS.md section 1)."""
+"""The XY stage's dialect: command/echo/subscriber frames (docs/protocols.md §1)."""
 
 from protocol.stage.codec import (
     BLOCKED_STATUSES,

@@ -1,4 +1,4 @@
-"""Codec of the XY stage's command/echo/subscriber frames (PROTOCOLS.md section 1).
+"""Codec of the XY stage's command/echo/subscriber frames (docs/protocols.md §1).
 
 The codec is shared by the station and the firmware emulator, so both sides
 agree on the wire format by construction.  Decoding never raises on wire

@@ -4,7 +4,7 @@ The ring shows one state at a time.  The table lists the states, not their
 precedence; this reading takes the first that applies: the charger (red on),
 a low battery (red, fast blink), asleep (standby: green on), a host talking
 (a data session: blue on), else advertising for a host (pairing: blue, slow
-blink).  The device flags (PROTOCOLS.md 1.5, SS 07) carry every one of those
+blink).  The device flags (docs/protocols.md §1.5, SS 07) carry every one of those
 conditions, so the emulator lights its ring and the station draws it from
 the same function.
 """

@@ -64,7 +64,7 @@ __all__ = [
 _log = logging.getLogger(__name__)
 _T = TypeVar("_T")
 
-#: The advertised-name prefix of the XY stage (PROTOCOLS.md 1.7).
+#: The advertised-name prefix of the XY stage (docs/protocols.md §1.7).
 DEFAULT_NAME_PREFIX = "XY-STAGE"
 #: Every BLE link carries at least 20 bytes per write (MTU 23 minus 3 bytes of header).
 FALLBACK_WRITE_SIZE = 20

@@ -1,4 +1,4 @@
-"""The three-axis USB unit's dialect: ``;``-terminated text (PROTOCOLS.md section 2)."""
+"""The three-axis USB unit's dialect: ``;``-terminated text (docs/protocols.md §2)."""
 
 from protocol.usb3.codec import (
     COUNTS_PER_REV,

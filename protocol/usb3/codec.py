@@ -1,4 +1,4 @@
-"""Codec of the three-axis USB unit's ``;``-terminated text (PROTOCOLS.md section 2).
+"""Codec of the three-axis USB unit's ``;``-terminated text (docs/protocols.md §2).
 
 The codec is shared by the station (encodes commands, decodes replies) and the
 firmware emulator (decodes commands, encodes replies), so both sides agree on

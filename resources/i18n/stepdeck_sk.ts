@@ -1569,7 +1569,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>status query</source>
-        <extracomment>The longest line a board takes, without its line end (PROTOCOLS.md section 4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (PROTOCOLS §4). Their names are translated where they are shown.</extracomment>
+        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5). Their names are translated where they are shown.</extracomment>
         <translation>dopyt na stav</translation>
     </message>
     <message>

@@ -45,8 +45,9 @@ def cache_dir() -> Path:
     return Path(base) / f"stepdeck-grbl-sim-{os.getuid()}"
 
 
-def build(shared_grbl: Path) -> Path:
-    """``grbl_sim.exe`` built from a copy of ``shared_grbl``, once (a lock guards parallel runs)."""
+def build(source: Path) -> Path:
+    """``grbl_sim.exe`` built from a copy of ``source`` (GRBL with grbl-sim), once (a lock guards
+    parallel runs)."""
     out = cache_dir()
     out.mkdir(parents=True, exist_ok=True)
     exe = out / "grbl" / SIM_DIR / "grbl_sim.exe"
@@ -59,7 +60,7 @@ def build(shared_grbl: Path) -> Path:
         tree = out / "grbl"
         if tree.exists():
             shutil.rmtree(tree)
-        shutil.copytree(shared_grbl, tree)
+        shutil.copytree(source, tree)
         result = subprocess.run(
             ["make", "-C", str(tree / SIM_DIR), "new", "FLAGS=-g -O3 -fcommon"],
             capture_output=True,

@@ -31,7 +31,7 @@ from protocol.stage.driver import quantised_speed
 #: The stage's control cycle (s): an echo leaves at the end of the cycle its frame arrived in.
 CONTROL_CYCLE_S = 0.005
 
-#: What the XY stage holds until the station has read otherwise (PROTOCOLS.md table 1.4).
+#: What the XY stage holds until the station has read otherwise (docs/protocols.md §1.4).
 DEFAULT_PARAMETERS: Mapping[int, int] = {
     EchoType.FAST_SPEED: 10_000,
     EchoType.SLOW_SPEED: 2_000,

@@ -1,4 +1,4 @@
-"""One operation as the G-code line a G-code machine is sent (PROTOCOLS.md §4).
+"""One operation as the G-code line a G-code machine is sent (docs/protocols.md §4).
 
 Pure functions, shared by the G-code session's job streaming and the
 program export (:mod:`app.jobs.formats.string_art.export`):
@@ -25,7 +25,7 @@ from app.profiles import GcodeSettings, MachineProfile
 
 #: The usual order of axis words on a G-code line.
 GCODE_AXIS_ORDER = ("X", "Y", "Z", "A", "B", "C")
-#: The longest line a G-code device takes, without the ``\n`` (PROTOCOLS.md §4: 80 with it).
+#: The longest line a G-code device takes, without the ``\n`` (docs/protocols.md §4: 80 with it).
 MAX_LINE = 79
 
 

@@ -1,4 +1,4 @@
-"""The PCB drill/plotter's session (PROTOCOLS.md section 3).
+"""The PCB drill/plotter's session (docs/protocols.md §3).
 
 The plotter takes one-letter procedures, one at a time: the host sends a
 command, the device answers ``R<letter>`` when it has it and ``D<letter>``
@@ -149,7 +149,7 @@ class DrillSession(MachineSession):
     def homed_since_connect(self) -> bool:
         """An ``N`` has finished since this link opened.
 
-        The drill reports nothing but ``R``/``D``/``E`` (PROTOCOLS.md 3): it
+        The drill reports nothing but ``R``/``D``/``E`` (docs/protocols.md §3): it
         cannot say whether it homed at power-on, nor whether it was switched
         off and on while the link was down.  So the station counts only what
         it saw itself, and a new link starts unhomed.

@@ -1,4 +1,4 @@
-"""The G-code session: plotters and the string-art winder (PROTOCOLS.md section 4).
+"""The G-code session: plotters and the string-art winder (docs/protocols.md §4).
 
 Lines are streamed, not sent one by one: with *character counting* the
 session keeps up to 127 unacknowledged bytes in the device's 128-byte

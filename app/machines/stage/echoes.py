@@ -1,4 +1,4 @@
-"""How the stage's echoes change the machine model (PROTOCOLS.md 1.3 to 1.5).
+"""How the stage's echoes change the machine model (docs/protocols.md §1.3 to §1.5).
 
 Kept apart from the session so that the developer pane can fold an injected
 echo into the model exactly as a received one, with or without a link.

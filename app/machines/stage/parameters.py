@@ -1,4 +1,4 @@
-"""The stage's stored parameters (PROTOCOLS.md 1.4) as the operator sees them.
+"""The stage's stored parameters (docs/protocols.md §1.4) as the operator sees them.
 
 The wire carries integers in µm, µm/s and raw register values; the dynamics
 panel shows millimetres.  One table holds labels, units, scales and ranges so

@@ -51,7 +51,7 @@ STALE_PERIODS = 3
 LOST_AFTER_S = 2.0
 JOG_RELEASE_REPEATS = 3
 MAX_BURST = 16
-#: Until the stage's own dynamics are read: its documented defaults (PROTOCOLS.md table 1.4).
+#: Until the stage's own dynamics are read: its documented defaults (docs/protocols.md §1.4).
 DEFAULT_FAST_UM_S = 10_000
 DEFAULT_SLOW_UM_S = 2_000
 DEFAULT_ACCELERATION_UM_S2 = 20_000

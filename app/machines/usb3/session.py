@@ -1,4 +1,4 @@
-"""The three-axis USB unit's session (PROTOCOLS.md section 2).
+"""The three-axis USB unit's session (docs/protocols.md §2).
 
 The unit takes relative moves in 1/32-step counts and reports positions
 while it moves; it has no jog command, so a held key becomes a stream of

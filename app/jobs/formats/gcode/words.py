@@ -16,7 +16,7 @@ from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 
-#: The longest line a board takes, without its line end (PROTOCOLS.md section 4: 80 bytes).
+#: The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes).
 MAX_LINE_CHARS = 79
 
 #: A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``.
@@ -33,7 +33,8 @@ PARAMETERS = re.compile(
     r"[#\[\]]|^[Oo]|[Gg]0*6[5-7](?![\d.])|\b(?:IF|WHILE|GOTO|DO|END)\b", re.IGNORECASE
 )
 SPACES = re.compile(r"[ \t]{2,}")
-#: ``M98 800`` / ``M99 90``: the CoreXY plotter's step interval and servo level (PROTOCOLS §4).
+#: ``M98 800`` / ``M99 90``: the CoreXY plotter's step interval and servo level
+#: (docs/protocols.md §4.5).
 BARE_VALUE = re.compile(r"[ \t]*[Mm]0*(9[89])[ \t]+(\d+(?:\.\d*)?)[ \t]*")
 #: Their names are translated where they are shown.
 REALTIME = {

@@ -1,6 +1,6 @@
 """A string-art job as the winder runs it: drill every nail, wait, then wind the thread.
 
-The winder (PROTOCOLS.md §4) turns the board on a base (A, degrees), moves
+The winder (docs/protocols.md §4) turns the board on a base (A, degrees), moves
 the needle or drill radially (X, mm from the centre) and along the drill
 axis tilted 74.333° to the board (Z, mm; 0 is retracted, the tool clear of
 the board).  The program assumes the base at A = 0 when it starts (after

@@ -1,6 +1,6 @@
 """String-art jobs: the SD-card pair ``param.txt`` + ``poradi.txt``, read and checked.
 
-The winder's original firmware read two files (DESIGN.md, "Job files"):
+The winder's original firmware read two files from its SD card:
 
 * ``param.txt``: ``key = value`` lines — ``tvar`` (0 = circle, n ≥ 3 = a
   regular n-gon), ``pocet_hrebiku`` (the nail count) and ``polomer_matrice``
