@@ -114,7 +114,7 @@ def install(home: Path, command: str) -> list[Path]:
     shutil.copyfile(ICON, files["svg"])
     for size in PNG_SIZES:
         path = files[f"png{size}"]
-        if not icon_png(size).save(str(path), b"PNG"):
+        if not icon_png(size).save(str(path)):  # PNG, from the suffix
             raise OSError(f"cannot write {path}")
     return list(files.values())
 
