@@ -9,14 +9,24 @@ way to add build requirements dynamically (an in-tree backend wrapping it).
 
 from __future__ import annotations
 
+import tomllib
+from pathlib import Path
 from typing import Any
 
 from setuptools import build_meta
 from setuptools.build_meta import *  # noqa: F403  (every hook, unchanged but the one below)
 
-#: The same bounds as the runtime dependency: its lrelease reads the .ts the app is tested with.
-LRELEASE_FROM = "PySide6-Essentials>=6.6,<6.12"
+PYPROJECT = Path(__file__).resolve().parent / "pyproject.toml"
+
+
+def lrelease_requirement() -> str:
+    """PySide6 as the station depends on it: its lrelease reads the .ts the app is tested with."""
+    project = tomllib.loads(PYPROJECT.read_text(encoding="utf-8"))["project"]
+    for requirement in project["dependencies"]:
+        if requirement.lower().startswith("pyside6-essentials"):
+            return str(requirement)
+    return "PySide6-Essentials"
 
 
 def get_requires_for_build_wheel(config_settings: dict[str, Any] | None = None) -> list[str]:
-    return [*build_meta.get_requires_for_build_wheel(config_settings), LRELEASE_FROM]
+    return [*build_meta.get_requires_for_build_wheel(config_settings), lrelease_requirement()]
