@@ -17,7 +17,15 @@ PACKAGE = "stepdeck_resources"
 
 def _folder() -> Path:
     """The resources as a folder on disk (Qt, TOML and lrelease all read real files)."""
-    root = files(PACKAGE)
+    try:
+        root = files(PACKAGE)
+    except ModuleNotFoundError:
+        # A checkout run without installing (PYTHONPATH=.), or an editable install made
+        # before resources/ was mapped to the package: the folder is beside app/.
+        checkout = Path(__file__).resolve().parent.parent / "resources"
+        if (checkout / "__init__.py").is_file():
+            return checkout
+        raise
     if not isinstance(root, Path):
         # pip and pipx always install unpacked; a zip import would need extracting first.
         raise RuntimeError(f"StepDeck's resources must be installed as files, not in {root}")

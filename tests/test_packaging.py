@@ -217,3 +217,11 @@ def test_every_runtime_dependency_is_in_the_third_party_notices() -> None:
     notices = (ROOT / "THIRD_PARTY_NOTICES.md").read_text(encoding="utf-8").lower()
     names = [re.split(r"[ <>=!~;\[]", requirement)[0] for requirement in project["dependencies"]]
     assert names and not [name for name in names if name.lower() not in notices]
+
+
+def test_a_checkout_run_without_installing_finds_its_resources_beside_app(tmp_path: Path) -> None:
+    # No site-packages (-S): neither an editable install's finder nor an installed wheel.
+    code = "from app.resources import MACHINES_DIR; print(MACHINES_DIR)"
+    result = _run([sys.executable, "-S", "-c", code], tmp_path, {"PYTHONPATH": str(ROOT)})
+    assert result.returncode == 0, result.stderr
+    assert Path(result.stdout.strip()) == ROOT / "resources" / "machines"
