@@ -182,6 +182,13 @@ def test_installed_emulator_command_starts(installed: Path, elsewhere: Elsewhere
     assert "grbl-plotter" in result.stdout  # the profiles it offers come from the package
 
 
+@pytest.mark.parametrize("command", ["run", "string-art"])
+def test_installed_subcommands_start(installed: Path, elsewhere: Elsewhere, command: str) -> None:
+    result = _run([installed / "stepdeck", command, "--help"], elsewhere.cwd, elsewhere.env)
+    assert result.returncode == 0, result.stderr
+    assert f"stepdeck {command}" in result.stdout
+
+
 def test_installed_window_opens_in_czech_with_its_icon(
     installed: Path, elsewhere: Elsewhere
 ) -> None:
