@@ -19,7 +19,7 @@ from types import TracebackType
 from typing import TextIO
 
 from PySide6.QtCore import QSettings
-from PySide6.QtGui import QGuiApplication
+from PySide6.QtGui import QGuiApplication, QIcon
 from PySide6.QtWidgets import QApplication, QDialog, QInputDialog, QMainWindow, QMessageBox
 
 from app import i18n
@@ -31,6 +31,7 @@ from app.profiles import (
     available_profiles,
     load_profile,
 )
+from app.resources import ICON
 from app.settings import BAUD_RANGE, StationSettings, default_settings
 from app.station import Station
 
@@ -39,6 +40,7 @@ SUBCOMMANDS = {
     "check": "app.cli.check",
     "run": "app.cli.run",
     "string-art": "app.cli.string_art",
+    "install-desktop": "app.cli.install_desktop",
 }
 
 
@@ -63,7 +65,8 @@ def build_parser() -> argparse.ArgumentParser:
         prog="stepdeck",
         description="Control station for small stepper-motor machines.",
         epilog="stepdeck check JOB… --profile P: check job files without a window "
-        "(stepdeck check --help).",
+        "(stepdeck check --help).  stepdeck install-desktop: add StepDeck to the desktop's "
+        "application menu for this user.",
     )
     parser.add_argument(
         "job",
@@ -301,6 +304,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     assert isinstance(app, QApplication)
     app.setApplicationName("StepDeck")
     app.setOrganizationName("StepDeck")
+    app.setWindowIcon(QIcon(str(ICON)))
+    app.setDesktopFileName("stepdeck")  # Wayland: the icon and name of stepdeck.desktop
     settings = StationSettings(default_settings())
     i18n.install(settings.language)  # before any widget is built
     launcher = start(args, settings)

@@ -1,11 +1,13 @@
 """Which language the station speaks, and loading its translation.
 
 The ``.ts`` sources live in ``resources/i18n`` (edited with Qt Linguist and
-kept current with ``pyside6-lupdate``).  The compiled ``.qm`` files are not
-kept in the repository: the first start in a language compiles its ``.ts``
-with the ``lrelease`` PySide6 ships, into the station's cache, and later
-starts reuse it until the ``.ts`` changes.  English is the source language;
-its own ``.ts`` carries only the plural forms ("1 setting", "2 settings").
+kept current with ``pyside6-lupdate``).  The compiled ``.qm`` files are never
+kept in the repository: building the wheel compiles them into the package
+(setup.py), so an installed station reads them as shipped.  A source checkout
+has only the ``.ts``: its first start in a language compiles it with the
+``lrelease`` PySide6 ships, into the station's cache, and later starts reuse
+that until the ``.ts`` changes.  English is the source language; its own
+``.ts`` carries only the plural forms ("1 setting", "2 settings").
 """
 
 from __future__ import annotations
@@ -25,9 +27,8 @@ from PySide6.QtCore import (
 )
 
 from app.jobs import texts
-from app.profiles import RESOURCES
+from app.resources import I18N_DIR
 
-I18N_DIR = RESOURCES / "i18n"
 #: The languages offered, by code, each named in itself (a user who cannot read the
 #: current language still finds their own).
 LANGUAGES = {"en": "English", "cs": "Čeština", "sk": "Slovenčina"}
@@ -51,8 +52,29 @@ def _cache_dir() -> Path:
     return Path(QStandardPaths.writableLocation(location)) / "i18n"
 
 
+def shipped(language: str, folder: Path = I18N_DIR) -> Path | None:
+    """The ``.qm`` the wheel's build compiled, unless a newer ``.ts`` lies beside it.
+
+    An installed station has no ``.ts`` and takes the ``.qm`` as it is; a checkout
+    where one was compiled in place must not keep reading it after the ``.ts`` moved on.
+    """
+    qm = folder / f"stepdeck_{language}.qm"
+    if not qm.is_file():
+        return None
+    source = qm.with_suffix(".ts")
+    if source.is_file() and source.stat().st_mtime > qm.stat().st_mtime:
+        return None
+    return qm
+
+
 def compiled(language: str, cache_dir: Path | None = None) -> Path | None:
-    """The ``.qm`` of ``language``, compiled now if it is missing or older than its ``.ts``."""
+    """The ``.qm`` of ``language``: the shipped one, else its ``.ts`` compiled into the cache.
+
+    The cached one is compiled now if it is missing or older than its ``.ts``.
+    """
+    ready = shipped(language)
+    if ready is not None:
+        return ready
     source = I18N_DIR / f"stepdeck_{language}.ts"
     if not source.is_file():
         return None

@@ -1,8 +1,9 @@
 """Machine profiles: what the station knows about a machine before it talks to it.
 
-A profile is a TOML file in ``resources/machines``; the station reads the
-dialect, link defaults, axes and capabilities from it, so supporting another
-machine of a known family is a file, not code.
+A profile is a TOML file in ``resources/machines`` (package data, see
+app/resources.py); the station reads the dialect, link defaults, axes and
+capabilities from it, so supporting another machine of a known family is a
+file, not code.
 """
 
 from __future__ import annotations
@@ -15,11 +16,10 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from app.resources import MACHINES_DIR as MACHINES_DIR  # where callers find the shipped ones
 from protocol.drill.timing import DrillTiming
 from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_HZ
 
-RESOURCES = Path(__file__).resolve().parent.parent / "resources"
-MACHINES_DIR = RESOURCES / "machines"
 DEFAULT_PROFILE = "xy-stage"
 DIALECTS = ("stage", "usb3", "drill", "gcode")
 TRANSPORTS = ("emulator", "serial", "ble")

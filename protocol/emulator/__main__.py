@@ -72,7 +72,6 @@ import signal
 import sys
 import threading
 import time
-import tty
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -512,6 +511,22 @@ def _log_line(entry: object) -> str:
     return f"{getattr(entry, 'time', 0.0):.6f} {getattr(entry, 'command', entry)}\n"
 
 
+def pty_unavailable() -> str | None:
+    """Why this system cannot serve on a pseudo-terminal; None when it can.
+
+    Pseudo-terminals (and ``tty``, ``termios`` underneath) are POSIX: Linux, macOS,
+    the BSDs.  They are imported when serving starts, never at the top, so that
+    ``--help`` and every import of this module work on Windows too.
+    """
+    try:
+        import tty  # noqa: F401  (only asked whether it is there)
+    except ImportError as exc:
+        return f"this Python has no terminal control ({exc})"
+    if not hasattr(os, "openpty"):
+        return "this Python has no os.openpty"
+    return None
+
+
 def open_pty() -> tuple[int, int, str]:
     """A raw pseudo-terminal: ``(master_fd, slave_fd, slave_path)``.
 
@@ -520,6 +535,8 @@ def open_pty() -> tuple[int, int, str]:
     The master is non-blocking so that a host that stops reading can never stall
     the firmware's loop.
     """
+    import tty  # POSIX only: see pty_unavailable
+
     master, slave = os.openpty()
     tty.setraw(slave)
     os.set_blocking(master, False)
@@ -850,6 +867,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_usage(sys.stderr)
         print(
             "stepdeck-emulator: nothing to serve on; try --pty and open the printed path",
+            file=sys.stderr,
+        )
+        return 2
+    reason = pty_unavailable()
+    if reason is not None:
+        print(
+            "stepdeck-emulator: --pty needs a POSIX system (Linux, macOS, BSD) for its "
+            f"pseudo-terminal: {reason}; the station's built-in emulator (stepdeck "
+            "--emulator) works everywhere",
             file=sys.stderr,
         )
         return 2
