@@ -37,9 +37,7 @@ OUTSIDE_DOCUMENT = re.compile(r"\bPROTOCOLS\b|\b(?:DESIGN|STYLE|FIDELITY)\.md\b"
 FOREIGN = (PurePosixPath("tests/third_party"), PurePosixPath("tests/data"))
 #: Known references in files another change owns, each with the text that must still be
 #: there; once fixed, the entry must go (the test says so), so none lingers.
-PENDING: dict[PurePosixPath, str] = {
-    PurePosixPath("app/profiles.py"): "(PROTOCOLS.md §4 plus the usual GRBL extras)",
-}
+PENDING: dict[PurePosixPath, str] = {}
 
 #: ``Path(__file__)`` followed by ``.resolve()``/``.absolute()`` and parents.
 FILE_CHAIN = re.compile(
