@@ -10,6 +10,7 @@ from the emulator's own ``--log``, not from what the station says.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 from pathlib import Path
@@ -17,6 +18,7 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import Program, SourceRef, move
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
@@ -154,3 +156,101 @@ def _x_reports_beyond(record: list[tuple[str, bytes]], limit: float) -> int:
             if isinstance(reply, Position) and reply.axis == X and reply.count > limit:
                 beyond += 1
     raise AssertionError("S; never went out")
+
+
+# --- G-code: a line that lost bytes and is still valid --------------------------------------
+
+#: G-code's real-time bytes go on at once: no line holds them.
+GCODE_REALTIME = frozenset(b"?!~\x18") | frozenset(range(0x80, 0x100))
+PLOT = [
+    "G0 X5.000 Y5.000",
+    "M3 S1000",
+    "G1 X18.000 Y18.000 F3000",
+    "G1 X30.000 Y18.000 F600",  # slow: off the path for a good second, several reports
+    "G1 X30.000 Y5.000",
+    "M5",
+    "G0 X0.000 Y0.000",
+]
+
+
+def _events(log: Path) -> list[dict[str, object]]:
+    found = []
+    for line in _lines(log):
+        try:
+            found.append(json.loads(line))
+        except ValueError:
+            continue
+    return found
+
+
+def test_a_gcode_line_that_lost_bytes_is_stopped_when_the_plotter_leaves_the_path(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """``G1 X18.000 Y18.000 F3000`` arrives as ``G1 X18.F3000`` (12 bytes lost), a valid line.
+
+    The board draws along Y = 5 instead of to (18, 18): its reports leave the
+    path sent, the station holds and resets it, and the job fails naming a
+    line of the file.  By the board's log: the stroke after the mangled one is
+    never finished, and the job's last move (home to 0, 0) never runs.
+    """
+    log = tmp_path / "grbl.log"
+    process = start_emulator("--profile", "grbl-plotter", "--log", str(log))
+    mangled: list[bytes] = []
+
+    def tamper(message: bytes) -> bytes:
+        if message.strip() == b"G1 X18.000 Y18.000 F3000" and not mangled:
+            mangled.append(message)
+            return b"G1 X18.F3000\n"
+        return message
+
+    source = tmp_path / "plot.gcode"
+    source.write_text("\n".join(PLOT) + "\n", encoding="utf-8")
+    profile = load_profile("grbl-plotter")
+    program = load_job(source, ["X", "Y"], JobOptions(gcode=profile.gcode))
+    relay = None
+    station = Station(profile)
+    messages: list[str] = []
+    try:
+        relay = TamperRelay(
+            device_path(process),
+            tmp_path / "port",
+            end=b"\n",
+            host_end=b"\n",
+            tamper=tamper,
+            passthrough=GCODE_REALTIME,
+        )
+        _connected(qtbot, station, relay.link, messages)
+        session = station.gcode_session
+        assert session is not None
+        qtbot.waitUntil(lambda: session.planner_size > 0, timeout=STEP_TIMEOUT_MS)
+        runner = _run(qtbot, station, program, tmp_path, messages)
+        assert mangled, "the line never went out"
+        assert runner.state is JobState.FAILED, messages[-5:]
+        failed = next(m for m in messages if m.startswith("Job failed at plot.gcode:"))
+        assert "Machine stopped: it reported X " in failed
+        assert "expected X " in failed
+        # The line it was on: the mangled one, or the one it drew from the wrong place.
+        assert "(G1 X18.000 Y18.000 F3000)" in failed or "(G1 X30.000 Y18.000 F600)" in failed
+        assert failed.startswith(("Job failed at plot.gcode:3", "Job failed at plot.gcode:4"))
+
+        qtbot.waitUntil(
+            lambda: any(e["event"] == "reset" for e in _events(log)), timeout=STEP_TIMEOUT_MS
+        )
+        events = _events(log)
+        lines = [e["text"] for e in events if e["event"] == "line"]
+        assert "G1 X18.F3000" in lines  # the board got the mangled line
+        moves = [e for e in events if e["event"] == "move"]
+        ends = [(round(m["pos"]["X"], 3), round(m["pos"]["Y"], 3)) for m in moves]  # type: ignore[index]
+        # Held on the wrong stroke or the one after it: nothing further ran, and the job never
+        # went home as if it were done.
+        assert (30.0, 5.0) not in ends
+        assert ends[-1] != (0.0, 0.0)
+        held = next(i for i, e in enumerate(events) if e["event"] == "hold")
+        after = [e for e in events[held:] if e["event"] == "line"]
+        assert after == [], after  # no line of the job reached the board after the hold
+        print(f"\nSUPERVISION | grbl-plotter | moves ended before the hold: {ends}; {failed}")
+    finally:
+        station.shutdown()
+        if relay is not None:
+            relay.close()
+        stop(process)

@@ -80,8 +80,8 @@ class Deviation:
     #: The nearest point the machine was allowed to be at (on the path, or where it rests).
     expected: Point
     distance: float
-    #: The move the machine was on (the leg nearest to what was seen, still ahead), or the
-    #: last one sent when the machine ran past it.
+    #: The move the machine was on (of the leg it was last seen on and the next, the one
+    #: nearer to what was seen), or the last one sent when the machine ran past it.
     label: str
     tag: object = None
 
@@ -165,6 +165,15 @@ class Envelope:
         self._legs.append(Leg(start, self._point(target), label, tag))
         return self._serial + len(self._legs) - 1
 
+    def jump(self, point: Sequence[float], label: str, tag: object = None) -> int | None:
+        """The machine's own coordinates jump to ``point`` once the moves before are done
+        (a plotter firmware's ``G92``): the path goes on from there, nothing moves between."""
+        if self.end is None:
+            return None
+        here = self._point(point)
+        self._legs.append(Leg(here, here, label, tag))
+        return self._serial + len(self._legs) - 1
+
     def add_box(
         self,
         low: Sequence[float],
@@ -229,6 +238,8 @@ class Envelope:
                 self._anchor = point  # moved by its own controls: it rests there now
                 return None
             return self._deviation(point)
+        if _distance(point, anchor) <= self.tolerance:
+            return None  # still where the last leg behind it ended (before a jump, say)
         for i, leg in enumerate(self._legs):
             if leg.distance(point) <= self.tolerance:
                 if i:
@@ -249,7 +260,9 @@ class Envelope:
         if not self._legs:
             fault = Fault.OUTSIDE_TRAVEL if outside else Fault.MOVED_AT_REST
             return Deviation(fault, point, anchor, _distance(point, anchor), "", None)
-        nearest = min(self._legs, key=lambda leg: leg.distance(point))
+        # The move it was on: the last one it was seen on, or the next (a report further
+        # ahead would name a move the machine never reached, one that passes nearby).
+        nearest = min(self._legs[:2], key=lambda leg: leg.distance(point))
         last = self._legs[-1]
         expected = nearest.nearest(point)
         distance = nearest.distance(point)

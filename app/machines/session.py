@@ -35,7 +35,7 @@ class MachineSession(QObject):
     ticked = Signal()  # one period passed (station-clock time for whoever waits on the device)
     #: A held jog ended without a release (dead-man or travel end): forget what is held.
     jogEnded = Signal(str)
-    #: The machine went where no move sent it and was stopped (a MotionFault): a job fails.
+    # The machine went where no move sent it and was stopped (a MotionFault): a job fails.
     motionFault = Signal(object)
 
     def __init__(
