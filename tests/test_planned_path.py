@@ -137,3 +137,24 @@ def test_every_point_of_an_arc_passes_and_the_path_goes_on_from_its_end(
         seen = (centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a))
         assert envelope.check(seen) is None, (k, seen)
     assert envelope.check(centre) is None
+
+
+@settings(max_examples=500, deadline=None)
+@given(
+    st.lists(
+        st.one_of(
+            st.sampled_from(["G0", "G1", "G2", "G3", "G20", "G21", "G53", "G90", "G91", "G92"]),
+            st.sampled_from(["X", "Y", "I", "J", "R", "F", "$J=", "M18", "G92.1", "(c)", ";"]),
+            st.floats(-1e6, 1e6, allow_nan=False).map(lambda v: f"{v:.3f}"),
+            st.text(alphabet="GXYIJRF.-+ 0123456789$=", max_size=8),
+        ),
+        max_size=10,
+    ),
+    st.booleans(),
+)
+def test_any_line_is_read_without_an_exception(parts: list[str], grbl: bool) -> None:
+    planned = path(grbl=grbl, at=(10.0, 10.0))
+    planned.line("".join(parts), "fuzz")
+    planned.line(" ".join(parts), "fuzz")
+    end = planned.envelope.end
+    assert end is None or len(end) == 2

@@ -377,7 +377,12 @@ class GcodeSession(MachineSession):
 
     def _tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
         for raw, sent in written:
-            self._planned.line(sent.text, sent.text, sent.op_index)
+            try:
+                self._planned.line(sent.text, sent.text, sent.op_index)
+            except (ValueError, ArithmeticError):
+                # A line this reading cannot place is not followed; the stream goes on.
+                _log.exception("the path of %r could not be followed", sent.text)
+                self.envelope.release()
             self.frameSent.emit(sent.text, raw)
             self.lineSent.emit(sent)
 
@@ -1011,7 +1016,14 @@ class GcodeSession(MachineSession):
         )
         if report.state == "Idle" and self.streamer.idle and planner_empty:
             self._seen_idle = True
-            if placed and not self.stopping and len(report.mpos) >= self.axis_count:
+            # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
+            offset_known = self.work_offset is not None or not self.jogs_with_command
+            if (
+                placed
+                and offset_known
+                and not self.stopping
+                and len(report.mpos) >= self.axis_count
+            ):
                 # Standing with every line answered: where the next lines start from.
                 self._planned.anchor(report.mpos, report.wco or ())
         self._check_lost_answers(report, planner_empty, unanswered)
