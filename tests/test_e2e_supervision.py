@@ -164,11 +164,11 @@ def _x_reports_beyond(record: list[tuple[str, bytes]], limit: float) -> int:
 GCODE_REALTIME = frozenset(b"?!~\x18") | frozenset(range(0x80, 0x100))
 PLOT = [
     "G0 X5.000 Y5.000",
-    "M3 S1000",
+    "{pen_down}",
     "G1 X18.000 Y18.000 F3000",
     "G1 X30.000 Y18.000 F600",  # slow: off the path for a good second, several reports
     "G1 X30.000 Y5.000",
-    "M5",
+    "{pen_up}",
     "G0 X0.000 Y0.000",
 ]
 
@@ -183,8 +183,9 @@ def _events(log: Path) -> list[dict[str, object]]:
     return found
 
 
+@pytest.mark.parametrize("profile_name", ["grbl-plotter", "corexy-plotter"])
 def test_a_gcode_line_that_lost_bytes_is_stopped_when_the_plotter_leaves_the_path(
-    qtbot: QtBot, tmp_path: Path
+    qtbot: QtBot, tmp_path: Path, profile_name: str
 ) -> None:
     """``G1 X18.000 Y18.000 F3000`` arrives as ``G1 X18.F3000`` (12 bytes lost), a valid line.
 
@@ -193,8 +194,8 @@ def test_a_gcode_line_that_lost_bytes_is_stopped_when_the_plotter_leaves_the_pat
     line of the file.  By the board's log: the stroke after the mangled one is
     never finished, and the job's last move (home to 0, 0) never runs.
     """
-    log = tmp_path / "grbl.log"
-    process = start_emulator("--profile", "grbl-plotter", "--log", str(log))
+    log = tmp_path / "board.log"
+    process = start_emulator("--profile", profile_name, "--log", str(log))
     mangled: list[bytes] = []
 
     def tamper(message: bytes) -> bytes:
@@ -203,10 +204,13 @@ def test_a_gcode_line_that_lost_bytes_is_stopped_when_the_plotter_leaves_the_pat
             return b"G1 X18.F3000\n"
         return message
 
+    profile = load_profile(profile_name)
+    settings = profile.gcode
+    assert settings is not None
     source = tmp_path / "plot.gcode"
-    source.write_text("\n".join(PLOT) + "\n", encoding="utf-8")
-    profile = load_profile("grbl-plotter")
-    program = load_job(source, ["X", "Y"], JobOptions(gcode=profile.gcode))
+    text = "\n".join(PLOT).format(pen_down=settings.pen_down, pen_up=settings.pen_up)
+    source.write_text(text + "\n", encoding="utf-8")
+    program = load_job(source, ["X", "Y"], JobOptions(gcode=settings))
     relay = None
     station = Station(profile)
     messages: list[str] = []
@@ -248,7 +252,7 @@ def test_a_gcode_line_that_lost_bytes_is_stopped_when_the_plotter_leaves_the_pat
         held = next(i for i, e in enumerate(events) if e["event"] == "hold")
         after = [e for e in events[held:] if e["event"] == "line"]
         assert after == [], after  # no line of the job reached the board after the hold
-        print(f"\nSUPERVISION | grbl-plotter | moves ended before the hold: {ends}; {failed}")
+        print(f"\nSUPERVISION | {profile_name} | moves ended before the hold: {ends}; {failed}")
     finally:
         station.shutdown()
         if relay is not None:
