@@ -373,7 +373,7 @@ class Usb3Session(MachineSession):
                 if isinstance(message, ZeroAll):
                     envelope.anchor((0,))  # every count starts again from 0
                 else:
-                    envelope.loosen("S;")  # it stops somewhere on the way it was going
+                    envelope.loosen("stopped by S;")  # somewhere on the way it was going
 
     # --- supervision: the reports follow the moves sent ----------------------------------
 
