@@ -22,6 +22,9 @@ from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_
 
 DEFAULT_PROFILE = "xy-stage"
 DIALECTS = ("stage", "usb3", "drill", "gcode")
+#: How far a reported position may stray from the path of the moves sent ([supervision]
+#: tolerance_mm): a few steps, a rounded report and a report read while the move went on.
+DEFAULT_SUPERVISION_TOLERANCE_MM = 0.5
 TRANSPORTS = ("emulator", "serial", "ble")
 
 
@@ -145,6 +148,9 @@ class MachineProfile:
     #: The drill's timing constants ([timing] in the profile, FIDELITY S2-06): the
     #: emulator runs them, the estimate and the session's timeouts count with them.
     drill_timing: DrillTiming = field(default_factory=DrillTiming)
+    #: How far a reported position may be from the path of the moves in flight before the
+    #: station stops the machine (mm, or degrees on a rotary axis).
+    supervision_tolerance_mm: float = DEFAULT_SUPERVISION_TOLERANCE_MM
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""
@@ -245,6 +251,17 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
             drill_timing = DrillTiming.from_table(_section(data, "timing", path))
         except ValueError as exc:
             raise ProfileError(f"{path}: [timing] {exc}") from exc
+    supervision = _section(data, "supervision", path)
+    unknown = set(supervision) - {"tolerance_mm"}
+    if unknown:
+        raise ProfileError(f"{path}: [supervision] knows only tolerance_mm, not {sorted(unknown)}")
+    tolerance = supervision.get("tolerance_mm", DEFAULT_SUPERVISION_TOLERANCE_MM)
+    if (
+        isinstance(tolerance, bool)
+        or not isinstance(tolerance, int | float)
+        or not 0 < tolerance < math.inf
+    ):
+        raise ProfileError(f"{path}: [supervision] tolerance_mm must be a length > 0 (mm)")
     period = int(data.get("period_ms", 100))
     if not 20 <= period <= 1000:
         raise ProfileError(f"{path}: period_ms must be within 20…1000")
@@ -261,6 +278,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         park=park,
         driver=driver,
         drill_timing=drill_timing,
+        supervision_tolerance_mm=float(tolerance),
     )
 
 

@@ -433,7 +433,9 @@ def resumed_after_a_pulled_cable(
     assert link is not None
     link.open()
     port.listener.connection_made()
-    read(station, IDLE)
+    # The board's first report says where it stands (the station judges every later report
+    # against the path from there).
+    read(station, STANDING)
     port.start_over()
     if busy:
         for _ in range(2):

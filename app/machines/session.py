@@ -14,6 +14,7 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.motion_gate import MotionGate
+from app.machines.supervision import MotionFault
 from protocol.clock import Clock
 from protocol.sniff import sounds_like
 
@@ -34,6 +35,8 @@ class MachineSession(QObject):
     ticked = Signal()  # one period passed (station-clock time for whoever waits on the device)
     #: A held jog ended without a release (dead-man or travel end): forget what is held.
     jogEnded = Signal(str)
+    # The machine went where no move sent it and was stopped (a MotionFault): a job fails.
+    motionFault = Signal(object)
 
     def __init__(
         self, model: MachineModel, link: Link, clock: Clock, parent: QObject | None = None
@@ -235,6 +238,12 @@ class MachineSession(QObject):
         detail = f"no answer: is this a {profile.title}? Check the profile, baud and port{heard}"
         self.model.set_link_state(LinkState.CONNECTING, detail)
         self.model.message.emit(f"{self.link.describe()}: {detail}")
+
+    def _stop_for_fault(self, fault: MotionFault) -> None:
+        """A report left the envelope of the moves sent: stop now, say why, tell the job."""
+        self.stop_all()
+        self.model.message.emit(fault.text)
+        self.motionFault.emit(fault)
 
     def _unsupported(self, what: str) -> bool:
         self.model.message.emit(

@@ -3576,6 +3576,33 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     </message>
 </context>
 <context>
+    <name>Supervision</name>
+    <message>
+        <source>outside the travel</source>
+        <translation>mimo pojezd</translation>
+    </message>
+    <message>
+        <source>past the target</source>
+        <translation>za cílem</translation>
+    </message>
+    <message>
+        <source>moved while nothing was sent</source>
+        <translation>pohnul se, ačkoli nic nebylo odesláno</translation>
+    </message>
+    <message>
+        <source>off the path of the moves sent</source>
+        <translation>mimo dráhu odeslaných pohybů</translation>
+    </message>
+    <message>
+        <source>no move</source>
+        <translation>žádný pohyb</translation>
+    </message>
+    <message>
+        <source>Machine stopped: it reported {0}, {1} ({2}); expected {3}, {4} mm away</source>
+        <translation>Stroj zastaven: hlásil {0}, {1} ({2}); očekáváno {3}, vzdálenost {4} mm</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryDock</name>
     <message>
         <source>Telemetry</source>

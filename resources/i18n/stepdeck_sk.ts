@@ -3576,6 +3576,33 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
     </message>
 </context>
 <context>
+    <name>Supervision</name>
+    <message>
+        <source>outside the travel</source>
+        <translation>mimo dráhy pojazdu</translation>
+    </message>
+    <message>
+        <source>past the target</source>
+        <translation>za cieľom</translation>
+    </message>
+    <message>
+        <source>moved while nothing was sent</source>
+        <translation>pohol sa, hoci nič nebolo odoslané</translation>
+    </message>
+    <message>
+        <source>off the path of the moves sent</source>
+        <translation>mimo dráhy odoslaných pohybov</translation>
+    </message>
+    <message>
+        <source>no move</source>
+        <translation>žiadny pohyb</translation>
+    </message>
+    <message>
+        <source>Machine stopped: it reported {0}, {1} ({2}); expected {3}, {4} mm away</source>
+        <translation>Stroj zastavený: hlásil {0}, {1} ({2}); očakávané {3}, vzdialenosť {4} mm</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryDock</name>
     <message>
         <source>Telemetry</source>

@@ -21,6 +21,7 @@ running itself to the dialect's :class:`~app.jobs.run.driver.JobDriver`
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,6 +35,8 @@ from app.jobs.run.checkpoint import CheckpointStore
 from app.jobs.run.driver import LINK_DOWN, JobDriver, UnsupportedOperation
 from app.jobs.run.drivers import driver_for
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
+from app.machines.session import MachineSession
+from app.machines.supervision import MotionFault
 from app.station import Station
 
 __all__ = ["JobRunner", "JobState", "UnsupportedOperation"]
@@ -635,8 +638,26 @@ class JobRunner(QObject):
         session = self.station.session
         if session is self._session:
             return
+        old = self._session
+        if isinstance(old, MachineSession):
+            with contextlib.suppress(RuntimeError, TypeError):  # gone with its link already
+                old.motionFault.disconnect(self._on_motion_fault)
         self._session = session
         self._driver.bind(session)
+        if session is not None:
+            session.motionFault.connect(self._on_motion_fault)
+
+    def _on_motion_fault(self, fault: MotionFault) -> None:
+        """The session stopped a machine that went where nothing sent it: the job fails there.
+
+        Not a pause: the machine is not where the job's books say, so nothing of
+        it may go on by itself; the checkpoint stays for a resume once the
+        operator has looked.
+        """
+        if self._state not in ACTIVE:
+            return
+        index = fault.op_index if fault.op_index is not None else self.current_index
+        self.fail(index if index is not None else self._done, fault.text)
 
     def _on_link_state(self, state: object) -> None:
         if state in LINK_DOWN and self._state in CLOCK_RUNS:

@@ -14,6 +14,13 @@ show the link stale, amber, and 2 s without a reply lost, red), ``!`` holds,
 ``~`` resumes, 0x18 resets.  A stop is a feed hold followed by a soft reset
 once the machine stands, which throws away what the device had buffered
 without losing its position.
+
+Every status report's machine position is judged against the path of the
+lines written (:mod:`app.machines.gcode.planned_path`): a line mangled on the
+wire into another valid one (G-code has no checksum) shows as a report off
+that path, past its end or outside the travel, and the session stops the
+machine (feed hold, then the reset) and names the line.  A wrong line whose
+motion stays within the tolerance of the path sent cannot be told apart.
 """
 
 from __future__ import annotations
@@ -29,6 +36,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.envelope import Envelope
 from app.machines.gcode.feeder import (
     STALE,
     WROTE,
@@ -41,8 +49,10 @@ from app.machines.gcode.feeder import (
     merged,
 )
 from app.machines.gcode.line_targets import line_motion
+from app.machines.gcode.planned_path import PlannedPath
 from app.machines.motion_gate import Refusal
 from app.machines.session import MachineSession
+from app.machines.supervision import MotionFault, fault_text
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
 from protocol.gcode.codec import (
@@ -190,6 +200,19 @@ class GcodeSession(MachineSession):
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
+        # The path of the lines written, which every status report must follow.
+        self.envelope = Envelope(
+            [self.gate.limits(axis) for axis in range(self.axis_count)],
+            model.profile.supervision_tolerance_mm,
+            # At rest a report moves the anchor (a board that came back, say): only the lines
+            # written are judged, and each is, through the report that shows it run.
+            hold_at_rest=False,
+        )
+        self._planned = PlannedPath(
+            self.envelope,
+            tuple(axis.name for axis in model.profile.axes),
+            grbl="$J" in settings.words,
+        )
         self._autotick = autotick
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
@@ -354,6 +377,12 @@ class GcodeSession(MachineSession):
 
     def _tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
         for raw, sent in written:
+            try:
+                self._planned.line(sent.text, sent.text, sent.op_index)
+            except (ValueError, ArithmeticError):
+                # A line this reading cannot place is not followed; the stream goes on.
+                _log.exception("the path of %r could not be followed", sent.text)
+                self.envelope.release()
             self.frameSent.emit(sent.text, raw)
             self.lineSent.emit(sent)
 
@@ -578,6 +607,7 @@ class GcodeSession(MachineSession):
         if self.jogs_with_command:
             self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
             self._jog_cancelling = True
+            self.envelope.release()  # stopped short of the steps sent: idle, it is anchored
             self.query_status()
         else:
             self._quiet_stop = True
@@ -678,6 +708,8 @@ class GcodeSession(MachineSession):
         self._relative = False  # GRBL's power-on and reset mode is G90
         # GRBL forgets its G92 offset on a reset; its next report carries the offset it has.
         self.work_offset = None
+        self.envelope.release()  # judged again from where it stands once idle
+        self._planned.reset_modes()
         lost = self.feeder.clear()
         self._seen_idle = False
         self._jog_unanswered = 0
@@ -696,6 +728,8 @@ class GcodeSession(MachineSession):
         self._reset_requested_at = None
         self._reset_sent_at = None
         self._released_by_hand = False
+        self.envelope.release()
+        self._planned.reset_modes()
         self._last_heard = self.clock.now()
         self._await_device()
         if self._autotick:
@@ -769,6 +803,7 @@ class GcodeSession(MachineSession):
                 else:
                     self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
+                self.envelope.release()  # stopped by itself; it may have lost its position
                 self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
                 self.model.message.emit(
                     QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
@@ -846,6 +881,7 @@ class GcodeSession(MachineSession):
                 self._pump()
         else:
             self.errors += 1
+            self.envelope.release()  # the refused line runs not: the path is not known
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
             if sent.origin == "jog":
                 self._jog_unanswered = 0
@@ -938,12 +974,16 @@ class GcodeSession(MachineSession):
         report was read (on the reader thread; None: read now)."""
         self._status_asked_at = None
         self.job_at_report = job
+        # A work position without any offset heard yet is no machine position.
+        placed = not report.work_reported or report.wco is not None or self.work_offset is not None
         # GRBL sends its work offset (WCO:) only now and then: the last one heard completes
         # the reports between, so both the machine and the work position are always known.
         if report.wco is not None:
             self.work_offset = report.wco
         report = with_work_offset(report, self.work_offset)
         self.status = report
+        if placed:
+            self._supervise(report)
         if self._reset_requested_at is not None:
             held = report.state == "Hold" and report.substate in (None, "0")
             if held or report.state in ("Idle", "Alarm"):
@@ -976,9 +1016,31 @@ class GcodeSession(MachineSession):
         )
         if report.state == "Idle" and self.streamer.idle and planner_empty:
             self._seen_idle = True
+            # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
+            offset_known = self.work_offset is not None or not self.jogs_with_command
+            if (
+                placed
+                and offset_known
+                and not self.stopping
+                and len(report.mpos) >= self.axis_count
+            ):
+                # Standing with every line answered: where the next lines start from.
+                self._planned.anchor(report.mpos, report.wco or ())
         self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
+
+    def _supervise(self, report: StatusReport) -> None:
+        """A report off the path of the lines written stops the machine, naming the line."""
+        if report.state in ("Home", "Alarm") or len(report.mpos) < self.axis_count:
+            return
+        deviation = self.envelope.check(report.mpos[: self.axis_count])
+        if deviation is None:
+            return
+        self.envelope.release()  # one stop, one message: judged again once it stands
+        names = [axis.name for axis in self.model.profile.axes]
+        tag = deviation.tag if isinstance(deviation.tag, int) else None
+        self._stop_for_fault(MotionFault(fault_text(deviation, names), tag))
 
 
 #: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).

@@ -22,6 +22,7 @@ from app.machines.stage.echoes import STATUS_TEXT as STATUS_TEXT  # re-exported 
 from app.machines.stage.echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
 from app.machines.stage.echoes import StageEchoes
 from app.machines.stage.parameters import BY_TYPE, beyond_mechanics
+from app.machines.stage.supervision import StageSupervisor
 from protocol.clock import Clock
 from protocol.stage.codec import (
     PARAMETERS,
@@ -107,6 +108,8 @@ class StageSession(MachineSession):
         self._background: list[deque[CommandPacket]] = [deque() for _ in range(self.axis_count)]
         self._read_in_last_frame = [False] * self.axis_count
         self.echoes = StageEchoes(model, clock)
+        #: Every echoed position is judged against the moves sent (stopped when off them).
+        self.supervisor = StageSupervisor(model, self.gate)
         self._shift_held = False
         self._device_fast: bool | None = None
         self._last_echo: float | None = None
@@ -256,6 +259,7 @@ class StageSession(MachineSession):
         packets = tuple(self._next_packet(axis) for axis in range(self.axis_count))
         frame = CommandFrame(packets, self.subscribers.next(self.clock.now()))
         raw = encode_command(frame)
+        self.supervisor.sent(packets)
         self.link.write(raw)
         self.frameSent.emit(frame, raw)
 
@@ -343,6 +347,7 @@ class StageSession(MachineSession):
         self._device_fast = None
         self._jog = [0] * self.axis_count
         self._jog_limited = [0] * self.axis_count
+        self.supervisor.release()
         self._await_device()
         self._sync_speed()
         self.read_all_parameters()
@@ -397,7 +402,10 @@ class StageSession(MachineSession):
         if self.model.link_state in (LinkState.STALE, LinkState.LOST):
             self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
         self._device_answered()
+        fault = self.supervisor.judge(echo)
         self.echoes.apply(echo)
+        if fault is not None:
+            self._stop_for_fault(fault)
 
     def shutdown(self) -> None:
         self._timer.stop()

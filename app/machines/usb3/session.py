@@ -33,10 +33,22 @@ longer than a report period.  Silence of the whole link is not a switch: when
 nothing at all was heard since the axis fell silent, the session first asks a
 harmless ``G;``; the answer proves the unit is there, and no answer ends as a
 lost link.
+
+Every position report is judged against the path of the moves the session
+sent (:mod:`app.machines.envelope`, in counts, one path per axis: the unit
+runs its axes independently): from the count the axis was last seen at,
+through each move's target.  The wire has no checksum, so a corrupted digit
+can turn a 3 mm move into a run of a kilometre; a report past the target (or
+off the way back after a reversal) by more than the profile's tolerance stops
+the unit at once (``S;``) and says which move, what was seen and what was
+expected.  At rest the unit's joystick may move an axis: only the station's
+own moves are judged, from the report that shows the axis moving until it
+falls silent.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import TypeVar
 
@@ -44,7 +56,9 @@ from PySide6.QtCore import QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.envelope import Envelope
 from app.machines.session import MachineSession
+from app.machines.supervision import MotionFault, fault_text
 from protocol.clock import Clock
 from protocol.usb3.codec import (
     TOP_PULSE_RATE,
@@ -64,6 +78,7 @@ from protocol.usb3.codec import (
     Threads,
     Triple,
     ZeroAll,
+    count_per_mm,
     count_to_mm,
     encode,
     move_commands,
@@ -124,6 +139,12 @@ class Usb3Session(MachineSession):
         self._signs: list[int] = [1, 1, 1]
         #: Station-clock time of each axis's last position report.
         self._reported_at: list[float | None] = [None] * 3
+        #: Per axis, the path (in counts) of the moves sent that the reports must follow.
+        self._envelopes = [
+            Envelope([(-math.inf, math.inf)], 1.0, hold_at_rest=False) for _ in range(3)
+        ]
+        for axis in range(3):
+            self._scale_envelope(axis)
         self._last_heard = clock.now()
         self._asked_at: float | None = None  # the last G; asked because the unit was quiet
         #: Which settings reports came since the link opened (the first always counts).
@@ -258,6 +279,7 @@ class Usb3Session(MachineSession):
 
     def set_thread(self, axis: int, thread: Thread) -> None:
         self.threads[axis] = thread
+        self._scale_envelope(axis)
         self._send(Threads(self._triple(self.threads, DEFAULT_THREAD)))
         self._refresh_positions()
         self.settingsChanged.emit()
@@ -277,6 +299,9 @@ class Usb3Session(MachineSession):
         for axis, last in enumerate(self._last_report):
             if last is not None and now - last > STILL_AFTER_S:
                 self._last_report[axis] = None
+                if self._heading[axis] is None and self._envelopes[axis].known:
+                    # Still where the moves sent ended: at rest, the joystick's to move.
+                    self._envelopes[axis].anchor((self._counts[axis],))
                 self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
         self.ticked.emit()
 
@@ -336,11 +361,58 @@ class Usb3Session(MachineSession):
             axis = int(message.axis)
             heading = self._heading[axis]
             base = heading[0] if heading is not None else self._counts_of(axis)
+            if heading is None and axis < self.axis_count and self._zeroing[axis]:
+                base = 0  # counted from the zero C; set, whose report is still to come
             sign = self._signs[axis]
             self._heading[axis] = (base + sign * message.count, sign, self.clock.now())
+            self._expect(axis, heading is None, base, base + sign * message.count)
         elif isinstance(message, StopAll | ZeroAll):
             # Stopped on purpose, or counted from a new zero: no target to fall short of.
             self._heading = [None] * 3
+            for envelope in self._envelopes:
+                if isinstance(message, ZeroAll):
+                    envelope.anchor((0,))  # every count starts again from 0
+                else:
+                    envelope.loosen("stopped by S;")  # somewhere on the way it was going
+
+    # --- supervision: the reports follow the moves sent ----------------------------------
+
+    def _scale_envelope(self, axis: int) -> None:
+        """The tolerance and travel in counts, which the thread turns into millimetres."""
+        per_mm = count_per_mm(self.threads[axis]) if axis < self.axis_count else 6400.0
+        envelope = self._envelopes[axis]
+        envelope.tolerance = self.model.profile.supervision_tolerance_mm * per_mm
+        if axis < self.axis_count:
+            low, high = self.gate.limits(axis)
+            envelope.limits = ((low * per_mm, high * per_mm),)
+
+    def _expect(self, axis: int, fresh: bool, base: int, target: int) -> None:
+        """A move to ``target`` went out: the axis's reports must follow it there."""
+        envelope = self._envelopes[axis]
+        if fresh:
+            if self._reported_at[axis] is None:
+                envelope.release()  # not heard on this link yet: where it starts is not known
+                return
+            envelope.anchor((base,))
+        name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
+        mm = count_to_mm(target - base, self.threads[axis])
+        envelope.add_line((target,), f"{name} {mm:+.3f} mm, {target - base:+d} counts")
+
+    def _judge_report(self, axis: int, count: int) -> bool:
+        """Whether a report is where the moves sent allow; if not the unit is stopped."""
+        envelope = self._envelopes[axis]
+        if not envelope.known or (self._zeroing[axis] and not envelope.in_flight):
+            envelope.anchor((count,))  # the first word of this axis, or a new zero
+            return True
+        deviation = envelope.check((count,))
+        if deviation is None:
+            return True
+        name = self.model.axes[axis].name
+        text = fault_text(deviation, [name], scale=1 / count_per_mm(self.threads[axis]))
+        for each in self._envelopes:
+            each.release()  # stopped: the next reports say where it stands
+        self._stop_for_fault(MotionFault(text))
+        return False
 
     def _counts_of(self, axis: int) -> int:
         return self._counts[axis] if axis < self.axis_count else 0
@@ -393,6 +465,8 @@ class Usb3Session(MachineSession):
         self._asking = [False] * self.axis_count
         self._heading = [None] * 3
         self._reported_at = [None] * 3
+        for envelope in self._envelopes:
+            envelope.release()
         self._last_heard = self.clock.now()
         self._asked_at = None
         self._reported.clear()
@@ -457,6 +531,7 @@ class Usb3Session(MachineSession):
     def _apply_position(self, axis: AxisId, count: int) -> None:
         if axis >= self.axis_count:
             return
+        self._judge_report(axis, count)
         now = self.clock.now()
         self._reported_at[axis] = now
         heading = self._heading[axis]
@@ -468,8 +543,10 @@ class Usb3Session(MachineSession):
         self._counts[axis] = count
         position = count_to_mm(count, self.threads[axis])
         if self._asking[axis] and last is None:
-            # The answer to "where are you?": where it stands, not a move to there.
+            # The answer to "where are you?": where it stands, not a move to there (and the
+            # new zero, when C; went before the question).
             self._asking[axis] = False
+            self._zeroing[axis] = False
             self.model.update_axis(
                 axis, position=position, velocity=0.0, status_text="idle", moving=False
             )
