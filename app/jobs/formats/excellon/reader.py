@@ -685,22 +685,20 @@ def plan_drilling(
         {name: len(holes) for name, holes in holes_by_tool.items()},
         smallest_first=smallest_first,
     )
-    # Imported here, not with the module: the optimiser brings numba and scipy (about
-    # 1.4 s), which the window does not need until a drill file is read (issue #23, launch).
-    from app.jobs.formats.excellon.hole_order import order_holes
+    # Imported here, not with the module: the window does not need the optimiser (and
+    # fast-tsp) until a drill file is read (issue #23, launch).
+    from app.jobs.formats.excellon.hole_order import order_tools
 
     plans: list[ToolPlan] = []
-    here = start
-    for group in bits.groups:
-        holes = [h for name in group.tools for h in holes_by_tool[name]]
-        result = order_holes([(h.x_mm, h.y_mm) for h in holes], start=here)
+    groups = [[h for name in g.tools for h in holes_by_tool[name]] for g in bits.groups]
+    results = order_tools([[(h.x_mm, h.y_mm) for h in holes] for holes in groups], start=start)
+    for group, holes, result in zip(bits.groups, groups, results, strict=True):
         ordered = tuple(holes[i] for i in result.order)
         plans.append(
             ToolPlan(
                 job.tool(group.tool), ordered, result.file_length, result.length, group.tools[1:]
             )
         )
-        here = (ordered[-1].x_mm, ordered[-1].y_mm)
     return DrillPlan(job, tuple(plans), bits.flags)
 
 
