@@ -23,7 +23,9 @@ would write.  This module only does what gerbonara 1.5.0 does not:
   gerbonara 1.5.0 mishandles, found before it sees them: a ``G85`` with no
   end point (it would drop the slot), routed arcs ``G02``/``G03`` (it fails
   with an internal error), a tool with a zero or negative diameter, a tool
-  number above :data:`MAX_TOOL_NUMBER`, and coordinates too large for a number;
+  number above :data:`MAX_TOOL_NUMBER`, coordinates too large for a number,
+  and more than :data:`MAX_HOLES` holes, a repeat's (``R…``) counted before
+  gerbonara makes them one by one;
 * **warnings**: everything else gerbonara warns about (a tool defined twice,
   commands after the end…) is kept with its line in ``DrillJob.notes`` and
   shown to the operator with the program's notes.
@@ -55,6 +57,10 @@ from app.jobs.reading import read_job_text
 DEFAULT_EXCELLON_STEP_INCH = 1e-4
 #: The highest tool number a drill file may use (Excellon writes two or three digits).
 MAX_TOOL_NUMBER = 999
+#: The most holes (slot ends counted) a drill file may ask for, repeats (``R…``) included:
+#: boards have tens to a few thousand holes; 50 000 (the benchmark's board) still checks in
+#: seconds, where a repeat count of nine digits made gerbonara build holes until memory ran out.
+MAX_HOLES = 50_000
 MM_PER_INCH = 25.4
 
 
@@ -244,6 +250,8 @@ _COORD = re.compile(r"(?:X([-+]?)([0-9.]*))?(?:Y([-+]?)([0-9.]*))?")
 _TOOL_LINE = re.compile(r"^T0*(\d+)(?![\d])(.*)$")
 _TOOL_DIAMETER = re.compile(r"C([-+]?[0-9.]*)")
 _ROUTED_ARC = re.compile(r"^G0?[23](?![0-9])")
+_REPEAT = re.compile(r"^R([0-9]*)")
+_HOLE_WORD = re.compile(r"[XY][-+]?[0-9.]")
 
 
 def _read_text(path: Path) -> str:
@@ -252,10 +260,42 @@ def _read_text(path: Path) -> str:
 
 def _prescan(name: str, lines: Sequence[str]) -> None:
     """Refuse what gerbonara 1.5.0 would drop, mangle or fail on (see the module notes)."""
+    holes = 0  # at most: each coordinate line one hole, a slot two, a repeat its count
     for number, raw in enumerate(lines, start=1):
         line = raw.strip().upper()
         if not line or line.startswith(";"):
             continue
+        if (repeat := _REPEAT.match(line)) is not None:
+            digits = repeat[1].lstrip("0") or "0"
+            count = int(digits) if len(digits) <= 9 else MAX_HOLES + 1  # no int() of a flood
+            if count > MAX_HOLES:
+                raise JobFileError(
+                    name,
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile",
+                        "repeat {0} asks for {1} holes; a drill file may have at most {2}",
+                    ).format(
+                        quoted(line[:24]),
+                        f"{count:,}"
+                        if len(digits) <= 9
+                        else QCoreApplication.translate("JobFile", "{0}… ({1} digits)").format(
+                            digits[:6], len(digits)
+                        ),
+                        f"{MAX_HOLES:,}",
+                    ),
+                )
+            holes += count
+        elif _HOLE_WORD.search(line):
+            holes += 2 if "G85" in line else 1
+        if holes > MAX_HOLES:
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate(
+                    "JobFile", "more than {0} holes by this line; a drill file may have at most {0}"
+                ).format(f"{MAX_HOLES:,}"),
+            )
         if (tool := _TOOL_LINE.match(line)) is not None:
             index = tool[1]
             if len(index) > 6 or int(index) > MAX_TOOL_NUMBER:
