@@ -247,9 +247,10 @@ def test_hilbert_curve_visits_neighbouring_cells_in_turn() -> None:
 
 def test_neighbour_candidates_are_mostly_the_true_nearest() -> None:
     pts = np.random.default_rng(9).uniform(0, 100, size=(3000, 2))
-    found = batch_search.neighbour_candidates(pts, 6)
+    found, near = batch_search.neighbour_candidates(pts, 6)
     d = np.hypot(pts[:, None, 0] - pts[None, :, 0], pts[:, None, 1] - pts[None, :, 1])
     np.fill_diagonal(d, np.inf)
     nearest = np.argmin(d, axis=1)
     assert np.mean([nearest[i] in found[i] for i in range(len(pts))]) > 0.95
     assert np.all(found != np.arange(len(pts))[:, None])
+    assert np.allclose(near, d[np.arange(len(pts))[:, None], found])

@@ -32,7 +32,7 @@ MAX_ROUNDS = 40  # most of the gain comes in 15-20 rounds; later ones each move 
 LONG_PER_ROUND = 32  # reversals longer than SHORT_SPAN are taken one by one, the best first
 SHORT_SPAN = 24  # reversals up to this many holes are chosen all at once, like insertions
 _EPS = 1e-9
-_BITS = 16
+_BITS = 16  # a coarser grid leaves holes tied in a cell in index order: 4 % longer tours
 
 
 def hilbert_keys(pts: FloatArray, low: FloatArray, extent: float) -> IntArray:
@@ -54,8 +54,8 @@ def hilbert_keys(pts: FloatArray, low: FloatArray, extent: float) -> IntArray:
     return d
 
 
-def neighbour_candidates(pts: FloatArray, k: int = NEIGHBOURS) -> IntArray:
-    """For every point, ``k`` near others (-1 where there are fewer), read off four Hilbert curves.
+def neighbour_candidates(pts: FloatArray, k: int = NEIGHBOURS) -> tuple[IntArray, FloatArray]:
+    """For every point, ``k`` near others (-1 where fewer) and their distances, off four curves.
 
     Points near each other in space are mostly near each other along a
     Hilbert curve, except across the curve's folds; curves over shifted
@@ -85,8 +85,9 @@ def neighbour_candidates(pts: FloatArray, k: int = NEIGHBOURS) -> IntArray:
     dist[repeat] = np.inf
     keep = np.argsort(dist, axis=1, kind="stable")[:, :k]
     out = np.take_along_axis(cand, keep, axis=1)
-    out[~np.isfinite(np.take_along_axis(dist, keep, axis=1))] = -1
-    return np.ascontiguousarray(out)
+    near = np.take_along_axis(dist, keep, axis=1)
+    out[~np.isfinite(near)] = -1
+    return np.ascontiguousarray(out), np.ascontiguousarray(near)
 
 
 def first_tour(pts: FloatArray, start: tuple[float, float]) -> IntArray:
@@ -103,12 +104,14 @@ def order_big(pts: FloatArray, start: tuple[float, float]) -> IntArray:
     """A short open path from ``start`` through ``pts`` (indices), for tools of any size."""
     n = len(pts)
     z = np.append(pts[:, 0] + 1j * pts[:, 1], complex(start[0], start[1]))
-    neighbours = neighbour_candidates(pts)
+    neighbours, near = neighbour_candidates(pts)
     tour = np.concatenate([[n], first_tour(pts, start)]).astype(np.int64)
-    return improve(z, neighbours, tour)[1:]
+    return improve(z, neighbours, near, tour)[1:]
 
 
-def improve(z: npt.NDArray[np.complex128], neighbours: IntArray, tour: IntArray) -> IntArray:
+def improve(
+    z: npt.NDArray[np.complex128], neighbours: IntArray, near: FloatArray, tour: IntArray
+) -> IntArray:
     """Batched 2-opt and insertion over neighbour pairs until no move pays (see the module)."""
     size = len(tour)
     last = size - 1
@@ -130,10 +133,11 @@ def improve(z: npt.NDArray[np.complex128], neighbours: IntArray, tour: IntArray)
         edge[:-1] = np.abs(np.diff(zt))
         a = np.repeat(active, k)
         c = neighbours[active].reshape(-1)
+        d_ac = near[active].reshape(-1)
         listed = c >= 0
-        a, c = a[listed], c[listed]
+        a, c, d_ac = a[listed], c[listed], d_ac[listed]
         p, q = pos[a], pos[c]
-        moves = _moves(zt, edge, p, q, np.abs(z[a] - z[c]), last)
+        moves = _moves(zt, edge, p, q, d_ac, last)
         accepted = None if moves is None else _disjoint(*moves, last)
         if moves is None or accepted is None or len(accepted) == 0:
             if full:
