@@ -1,6 +1,6 @@
 """What a new user waits for and installs: ``python tests/measure_install.py`` prints the figures.
 
-From a fresh clone of this repository's committed HEAD, in a temporary folder:
+From a fresh clone of this repository's committed HEAD (or ``--rev``), in a temporary folder:
 
 * **install and launch**: the README's install-and-launch command (the part
   after the system packages: ``python3 -m venv .venv && .venv/bin/pip install
@@ -72,9 +72,14 @@ print(f"loaded {done - started:.6f} {done - ready:.6f} {len(program)}", flush=Tr
 """
 
 
-def readme_install_command() -> str:
+def readme_install_command(rev: str) -> str:
     """The README's launch command from ``python3 -m venv`` on (the apt step is the system's)."""
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    text = subprocess.run(
+        ["git", "-C", str(ROOT), "show", f"{rev}:README.md"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
     block = re.search(r"<!-- launch-command -->\s*```sh\n(.*?)\n```", text, re.S)
     if block is None:
         raise SystemExit("README has no launch-command block")
@@ -98,6 +103,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--cold", action="store_true", help="install without pip's cache")
     parser.add_argument("--display", action="store_true", help="use the real display")
     parser.add_argument("--keep", action="store_true", help="keep the temporary folder")
+    parser.add_argument("--rev", default="HEAD", help="measure this commit (default: HEAD)")
     args = parser.parse_args(argv)
 
     folder = Path(tempfile.mkdtemp(prefix="stepdeck-measure-"))
@@ -108,7 +114,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.cold:
         env["PIP_NO_CACHE_DIR"] = "1"
     clone = folder / "stepdeck"
-    install = readme_install_command()
+    install = readme_install_command(args.rev)
     wrapper = folder / "first_paint.py"
     wrapper.write_text(FIRST_PAINT)
     launch = re.sub(r"\.venv/bin/stepdeck\s*$", f".venv/bin/python {wrapper}", install)
@@ -118,6 +124,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         started = time.time()
         subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True, env=env)
+        if args.rev != "HEAD":
+            subprocess.run(["git", "-C", str(clone), "checkout", "-q", args.rev], check=True)
         cloned = time.time()
         shell = subprocess.run(
             ["bash", "-c", launch], cwd=clone, env=env, capture_output=True, text=True
@@ -154,7 +162,10 @@ def main(argv: list[str] | None = None) -> int:
         else:
             shutil.rmtree(folder, ignore_errors=True)
 
-    print(f"measured {time.strftime('%Y-%m-%d %H:%M')} [load {load[0]:.2f}/{load[1]:.2f}]")
+    print(
+        f"measured {args.rev} on {time.strftime('%Y-%m-%d %H:%M')} "
+        f"[load {load[0]:.2f}/{load[1]:.2f}]"
+    )
     print(f"install-and-launch command: {install}")
     cache = "without pip's cache" if args.cold else "pip's cache as it was"
     print(
