@@ -66,7 +66,7 @@ def board_path(
     if fast_tsp is None:  # pragma: no cover - see the import
         raise RuntimeError("fast-tsp is not installed")
     n = len(pts)
-    group = np.append(np.asarray(tool, dtype=np.int64), -1)  # the start: before the first tool
+    group = np.append(np.asarray(tool, dtype=np.int16), -1)  # the start: before the first tool
     nodes = np.vstack([pts, np.asarray(start, dtype=np.float64)[None, :]]).astype(np.float32)
     dx = nodes[:, 0, None] - nodes[None, :, 0]
     dy = nodes[:, 1, None] - nodes[None, :, 1]
