@@ -41,10 +41,11 @@ AVAILABLE = fast_tsp is not None
 LARGEST = 3000  # holes on a board: the matrix is (n+2)^2 4-byte integers, 36 MB here
 HOP = 15_000  # the longest distance in matrix units, and the price of a change of tool
 FORBIDDEN = 63_000  # an edge no good tour takes (the solver takes integers up to 65 535)
-BUDGET_BASE_S = 0.03  # wall-clock; a board of a few hundred holes settles in 5-20 ms of it
+BUDGET_BASE_S = 0.05  # a board of a few hundred holes settles in 5-20 ms of it
 BUDGET_PER_HOLE_S = 50e-6
 BUDGET_MAX_S = 0.2
 TRIES = 3  # a budget mostly spent waiting for the processor is given again, up to this often
+STRETCH_MAX_S = 2.0  # and stretched by the share of the processor the thread got, up to this
 
 
 def budget_for(holes: int) -> float:
@@ -96,25 +97,28 @@ def board_path(
 
 
 def _solve(matrix: npt.NDArray[np.int32], budget: float) -> list[int]:
-    """fast-tsp's best tour in ``budget`` seconds of this thread's processor time, near enough.
+    """fast-tsp's best tour in about ``budget`` seconds of this thread's processor time.
 
-    The budget is wall-clock: on a loaded machine most of it may pass with
-    the thread waiting, and the tour would depend on the load.  When less
-    than half of it was spent computing, the search runs again and the
-    shorter tour is kept.
+    fast-tsp's budget is wall-clock: on a loaded machine most of it may pass
+    with the thread waiting, and the tour would depend on the load.  When
+    less than half of it was spent computing, the search runs again with the
+    wall-clock budget stretched by the share the thread got (at most
+    ``STRETCH_MAX_S``), and the shorter tour is kept.
     """
     assert fast_tsp is not None
     best: list[int] = []
     best_length = math.inf
+    wall = budget
     for _ in range(TRIES):
         cpu = time.thread_time()
-        tour = [int(c) for c in fast_tsp.find_tour(matrix, duration_seconds=budget)]
+        tour = [int(c) for c in fast_tsp.find_tour(matrix, duration_seconds=wall)]
         used = time.thread_time() - cpu
         length = float(matrix[tour, np.roll(tour, -1)].sum(dtype=np.int64))
         if length < best_length:
             best, best_length = tour, length
         if used >= 0.5 * budget:
             break
+        wall = min(wall * budget / max(used, budget / 50), STRETCH_MAX_S)
     return best
 
 
