@@ -45,7 +45,7 @@ BUDGET_BASE_S = 0.05  # a board of a few hundred holes settles in 5-20 ms of it
 BUDGET_PER_HOLE_S = 50e-6
 BUDGET_MAX_S = 0.2
 TRIES = 3  # a budget mostly spent waiting for the processor is given again, up to this often
-STRETCH_MAX_S = 2.0  # and stretched by the share of the processor the thread got, up to this
+STRETCH_MAX_S = 1.0  # and stretched by the share of the processor the thread got, up to this
 
 
 def budget_for(holes: int) -> float:
