@@ -125,3 +125,24 @@ def test_m_code_loops_never_run(code: str, args: str, profile: str) -> None:
     else:
         assert status == check.OK
         assert re.search(r": [23] operations", out.splitlines()[0]), out
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    st.one_of(
+        numbers,
+        st.text(alphabet="0123456789.+-eE", min_size=1, max_size=12),
+    ),
+    st.sampled_from(["X{0}Y1.0", "X1.0Y{0}", "R2X{0}", "X1.0Y1.0G85X{0}Y1.0"]),
+)
+def test_excellon_coordinates_of_any_spelling_are_loaded_or_refused_on_their_line(
+    number: str, template: str
+) -> None:
+    status, out = _check("x.drl", HEAD + template.format(number) + "\nM30\n", "pcb-drill")
+    _no_nan_travel(out)
+    assert "could not convert" not in out  # Python's words are not a reason
+    if status == check.REFUSED:
+        first = out.splitlines()[0]
+        assert first.startswith("x.drl:7: ") and REFUSAL.match(first), first
+    else:
+        assert status == check.OK, out

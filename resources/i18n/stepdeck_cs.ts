@@ -1341,6 +1341,10 @@ Přesto odeslat do stroje?</translation>
         <translation>celočíselné souřadnice, ale soubor neuvádí formát čísel (metrický)</translation>
     </message>
     <message>
+        <source>a coordinate is not a number: {0}</source>
+        <translation>souřadnice není číslo: {0}</translation>
+    </message>
+    <message>
         <source>the Excellon reader cannot read {0} ({1})</source>
         <translation>čtečka Excellonu nedokáže přečíst {0} ({1})</translation>
     </message>

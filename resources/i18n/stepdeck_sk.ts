@@ -1341,6 +1341,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>celočíselné súradnice, ale súbor neuvádza formát čísel (metrický)</translation>
     </message>
     <message>
+        <source>a coordinate is not a number: {0}</source>
+        <translation>súradnica nie je číslo: {0}</translation>
+    </message>
+    <message>
         <source>the Excellon reader cannot read {0} ({1})</source>
         <translation>čítačka Excellonu nedokáže prečítať {0} ({1})</translation>
     </message>

@@ -451,6 +451,10 @@ def read_drill_file(
             reason = QCoreApplication.translate(
                 "JobFile", "integer coordinates, but the file gives no number format (metric)"
             )
+        elif isinstance(cause, ValueError) and "could not convert" in reason:
+            reason = QCoreApplication.translate(
+                "JobFile", "a coordinate is not a number: {0}"
+            ).format(quoted(lines[parser.lineno - 1].strip()))
         raise JobFileError(path.name, int(parser.lineno or 0), reason) from exc
     except Exception as exc:  # gerbonara's own failure: the line it was on, and what it said
         line = int(parser.lineno or 0)
