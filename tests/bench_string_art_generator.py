@@ -43,7 +43,14 @@ def bench_quality() -> list[str]:
         f"{settings.lines}, thread {settings.thread_mm:g} mm, skip {skip}, raster "
         f"{settings.resolution} px; error of the thread picture against the target on the board"
     ]
-    for name, make in {**TEST_IMAGES, "camera photo": _camera}.items():
+    images = dict(TEST_IMAGES)
+    try:
+        import skimage.data  # noqa: F401  (the bench extra: pip install -e '.[bench]')
+
+        images["camera photo"] = _camera
+    except ImportError:
+        lines.append("  camera photo: scikit-image not installed (pip install -e '.[bench]')")
+    for name, make in images.items():
         target = target_darkness(make(SOURCE_PX), Adjust(), settings.resolution)
         result = run(BOARD, target, settings)
         weighted = measure(target, result.darkness, result.mask)

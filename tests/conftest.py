@@ -27,18 +27,6 @@ DATA = ROOT / "tests" / "data"
 THIRD_PARTY = ROOT / "tests" / "third_party"
 
 
-def pytest_sessionstart(session: pytest.Session) -> None:
-    """Compile the hole-order kernels before any test runs (once per checkout; then cached).
-
-    numba compiles on first use, which in a fresh checkout takes seconds to
-    tens of seconds on a busy machine; inside a widget test that waits a few
-    seconds for a drill job to load, that first use would look like a hang.
-    """
-    from app.jobs.formats.excellon.hole_order import compile_kernels
-
-    compile_kernels()
-
-
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
         if {"qapp", "qtbot"} & set(getattr(item, "fixturenames", ())):

@@ -442,6 +442,26 @@ def _cases() -> list[Case]:
     # --- 5. G-code that GRBL refuses is refused before anything moves -------------------
     g = "grbl-plotter"
     add(Case("gcode-ok", "ok.gcode", GCODE_OK, g, Loaded(3)))
+    # "X1e308" is X1 and E308 to G-code (no exponents): the refusal names E 308 and says so
+    # (issue 30: it said "E 308 is outside nan…nan").
+    add(
+        Case(
+            "gcode-exponent",
+            "e.gcode",
+            "G0 X1 Y1 F1000\nG1 X1e308\n",
+            g,
+            Refused("e.gcode:2", "no E axis"),
+        )
+    )
+    add(
+        Case(
+            "gcode-huge",
+            "far.gcode",
+            "G0 X1 Y1 F1000\nG1 X" + "9" * 70 + "\n",
+            g,
+            Refused("far.gcode:2", "outside 0…"),
+        )
+    )
     add(
         Case(
             "arc-end-off-circle",
@@ -754,6 +774,53 @@ def _cases() -> list[Case]:
             "M48\nMETRIC,TZ\nT01C0.8\n%\nM30\n",
             d,
             Refused("none.drl:0", "no holes"),
+        )
+    )
+    # Repeats: a count is bounded before gerbonara makes its holes one by one (issue 30:
+    # R999999999 in a 9-line file ran past 60 s at 3.9 GB).
+    add(
+        Case(
+            "excellon-repeat-flood",
+            "rep.drl",
+            EXCELLON_HEAD + "X1.0Y1.0\nR999999999X0.1\nX2.0Y2.0\nM30\n",
+            d,
+            Refused("rep.drl:7", "repeat"),
+        )
+    )
+    add(
+        Case(
+            "excellon-repeat-digit-flood",
+            "rep.drl",
+            EXCELLON_HEAD + "X1.0Y1.0\nR" + "9" * 5000 + "X0.1\nM30\n",
+            d,
+            Refused("rep.drl:7", "repeat"),
+        )
+    )
+    add(
+        Case(
+            "excellon-repeats-add-up",
+            "rep.drl",
+            EXCELLON_HEAD + "X1.0Y1.0\nR30000X0.001\nR30000Y0.001\nM30\n",
+            d,
+            Refused("rep.drl:8", "50,000"),
+        )
+    )
+    add(
+        Case(
+            "excellon-repeat-ok",
+            "rep.drl",
+            EXCELLON_HEAD + "X1.0Y1.0\nR3X1.0\nM30\n",
+            d,
+            Loaded(1 + 2 * 4),
+        )
+    )
+    add(
+        Case(
+            "excellon-pattern-repeat",
+            "pat.drl",
+            EXCELLON_HEAD + "M25\nX1.0Y1.0\nM01\nM02X10.0Y0\nM08\nM30\n",
+            d,
+            Refused("pat.drl:6", "M25"),
         )
     )
 

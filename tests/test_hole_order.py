@@ -14,7 +14,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app.jobs.formats.excellon.hole_order import order_holes, travel_length
+from app.jobs.formats.excellon import batch_search, path_solver
+from app.jobs.formats.excellon.hole_order import order_holes, order_tools, travel_length
 from app.jobs.formats.excellon.reader import plan_drilling, read_drill_file
 
 coordinate = st.floats(-200, 200, allow_nan=False, allow_infinity=False)
@@ -86,10 +87,23 @@ PREVIOUS_TRAVEL_MM = {
 }
 
 
+# The same with the order it replaced (numba-compiled iterated 2-opt/Or-opt per tool, commit
+# 50271ad), measured on the day: the board-wide fast-tsp order must be no longer on any board.
+NUMBA_TRAVEL_MM = {
+    "samples/pcb-driver/driver": 630.937,
+    "realdata/excellon/pcb2gcode_kicad4_slots_G85.drl": 301.603,
+    "realdata/excellon/tracespace_core.TXT": 242.911,
+    "realdata/excellon/tracespace_eagle_BusPirate-v3.6a-SSOP.drd": 655.382,
+    "realdata/excellon/tracespace_eagle_arduino-uno.drd": 975.461,
+    "realdata/excellon/tracespace_kicad_mchck.drl": 271.030,
+}
+
+
 @pytest.mark.parametrize("name", sorted(PREVIOUS_TRAVEL_MM))
 def test_real_boards_no_longer_than_the_previous_order(data_dir: Path, name: str) -> None:
     plan = plan_drilling(read_drill_file(data_dir / name))
     assert plan.travel_mm <= PREVIOUS_TRAVEL_MM[name] + 1e-3
+    assert plan.travel_mm <= NUMBA_TRAVEL_MM[name] + 1e-3
 
 
 def test_every_real_board_has_a_previous_figure(data_dir: Path) -> None:
@@ -133,3 +147,110 @@ def test_clustered_board_with_far_outliers() -> None:
     result = order_holes(pts, start=(150.0, 150.0))
     assert sorted(result.order) == list(range(len(pts)))
     assert result.length <= result.file_length
+
+
+# --- the board as one tour, and the numpy-only search for big tools ---------------------------
+
+
+def _chained(tools: list[np.ndarray], results: list, start: tuple[float, float]) -> float:
+    """Travel of the plan as the machine drives it: each tool from the last one's end."""
+    here, total = start, 0.0
+    for pts, result in zip(tools, results, strict=True):
+        ordered = pts[list(result.order)]
+        total += travel_length(ordered, here)
+        if len(ordered):
+            here = (float(ordered[-1, 0]), float(ordered[-1, 1]))
+    return total
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(point_sets, min_size=1, max_size=5), st.tuples(coordinate, coordinate))
+def test_tools_keep_their_holes_and_their_order(
+    tools: list[list[tuple[float, float]]], start: tuple[float, float]
+) -> None:
+    arrays = [np.asarray(t, dtype=np.float64).reshape(-1, 2) for t in tools]
+    results = order_tools(tools, start=start)
+    assert len(results) == len(tools)
+    for pts, result in zip(arrays, results, strict=True):
+        assert sorted(result.order) == list(range(len(pts)))
+        assert result.length <= result.file_length
+    assert sum(r.length for r in results) == pytest.approx(_chained(arrays, results, start))
+
+
+def test_a_tool_ends_where_the_next_one_is_cheap_to_reach() -> None:
+    """Two rows, the second beside the first's left end: the first row is drilled towards it."""
+    first = [(10.0 + i, 0.0) for i in range(10)]  # from x = 10 to 19
+    second = [(0.0, float(j)) for j in range(1, 11)]  # a column at x = 0
+    results = order_tools([first, second], start=(15.0, 0.0))
+    ordered = [first[i] for i in results[0].order]
+    assert ordered[-1] == (10.0, 0.0)  # 5 mm right, 9 mm back: ends next to the column
+
+
+def test_a_split_board_tour_is_joined_tool_by_tool(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A search cut short may interleave two tools: each tool's holes are taken in turn."""
+    pts = np.asarray([(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (3.0, 0.0)])
+    tool = np.asarray([0, 1, 0, 1])
+    # the cycle: dummy 5, start 4, then the holes along the line: tools 0 1 0 1
+    monkeypatch.setattr(path_solver, "_solve", lambda matrix, budget: [5, 4, 0, 1, 2, 3])
+    order, whole = path_solver.board_path(pts, tool, (-1.0, 0.0))
+    assert not whole
+    assert order.tolist() == [0, 2, 1, 3]
+
+
+def test_without_fast_tsp_every_size_is_ordered_by_the_numpy_search(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(path_solver, "AVAILABLE", False)
+    pts = np.random.default_rng(11).uniform(0, 100, size=(400, 2))
+    result = order_holes(pts)
+    assert sorted(result.order) == list(range(400))
+    assert result.length < 0.85 * math.sqrt(400 * 100 * 100)
+
+
+@settings(max_examples=60, deadline=None)
+@given(point_sets.filter(lambda p: len(p) >= 3), st.tuples(coordinate, coordinate))
+def test_numpy_search_returns_every_hole_once(
+    points: list[tuple[float, float]], start: tuple[float, float]
+) -> None:
+    pts = np.asarray(points, dtype=np.float64)
+    tour = batch_search.order_big(pts, start)
+    assert sorted(tour.tolist()) == list(range(len(pts)))
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 4), st.integers(0, 4)), min_size=3, max_size=80))
+def test_numpy_search_on_grids_and_duplicates(points: list[tuple[int, int]]) -> None:
+    pts = np.asarray(points, dtype=np.float64)
+    tour = batch_search.order_big(pts, (0.0, 0.0))
+    assert sorted(tour.tolist()) == list(range(len(pts)))
+    first = batch_search.first_tour(pts, (0.0, 0.0))
+    assert travel_length(pts[tour]) <= travel_length(pts[first]) + 1e-9
+
+
+def test_numpy_search_shortens_a_big_random_board() -> None:
+    """Above path_solver.LARGEST: within ~15 % of 0.7124 * sqrt(n * area) (random uniform)."""
+    n = path_solver.LARGEST + 2000
+    pts = np.random.default_rng(4).uniform(0, 300, size=(n, 2))
+    result = order_holes(pts)
+    assert sorted(result.order) == list(range(n))
+    assert result.length < 0.82 * math.sqrt(n * 300 * 300)
+
+
+def test_hilbert_curve_visits_neighbouring_cells_in_turn() -> None:
+    """On a 4 x 4 grid the curve's order moves one cell at a time (a Hilbert curve's property)."""
+    grid = np.asarray([(x, y) for x in range(4) for y in range(4)], dtype=np.float64)
+    centres = (grid + 0.5) / 4  # in the unit square, one point in each of its 4 x 4 cells
+    order = np.argsort(batch_search.hilbert_keys(centres, np.zeros(2), 1.0))
+    steps = np.abs(np.diff(grid[order], axis=0)).sum(axis=1)
+    assert np.all(steps == 1.0)
+
+
+def test_neighbour_candidates_are_mostly_the_true_nearest() -> None:
+    pts = np.random.default_rng(9).uniform(0, 100, size=(3000, 2))
+    found, near = batch_search.neighbour_candidates(pts, 6)
+    d = np.hypot(pts[:, None, 0] - pts[None, :, 0], pts[:, None, 1] - pts[None, :, 1])
+    np.fill_diagonal(d, np.inf)
+    nearest = np.argmin(d, axis=1)
+    assert np.mean([nearest[i] in found[i] for i in range(len(pts))]) > 0.95
+    assert np.all(found != np.arange(len(pts))[:, None])
+    assert np.allclose(near, d[np.arange(len(pts))[:, None], found])

@@ -52,6 +52,7 @@ def test_stepdeck_check(case: Case, tmp_path: Path) -> None:
     status, out, err = _run_check(path, case)
     assert "\x1b" not in out and "\u202e" not in out  # names escaped, never raw
     assert all(len(line) < 400 for line in out.splitlines())  # a hostile line is quoted cut
+    assert "nan…" not in out and "…nan" not in out  # a refusal names the travel, never NaN
     expect = case.expect
     first = out.splitlines()[0] if out else ""
     if isinstance(expect, Refused) and not expect.where:  # a usage error

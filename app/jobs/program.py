@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import enum
 import hashlib
+import math
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -214,6 +215,10 @@ class LimitViolation:
     high: float
 
     def __str__(self) -> str:
+        if math.isnan(self.low) or math.isnan(self.high):  # an axis the machine does not have
+            return translate("JobFile", "{0}: {1} — {2} {3:g}: the machine has no {2} axis").format(
+                self.operation.source, self.operation.describe(), self.axis, self.value
+            )
         return translate("JobFile", "{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}").format(
             self.operation.source,
             self.operation.describe(),

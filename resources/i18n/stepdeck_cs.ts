@@ -1285,7 +1285,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>no &apos;Units : 1/10000 Inch&apos; line: not an EAGLE .dri</source>
-        <extracomment>The highest tool number a drill file may use (Excellon writes two or three digits).</extracomment>
+        <extracomment>The highest tool number a drill file may use (Excellon writes two or three digits). The most holes (slot ends counted) a drill file may ask for, repeats (``R…``) included: boards have tens to a few thousand holes; 50 000 (the benchmark&apos;s board) still checks in seconds, where a repeat count of nine digits made gerbonara build holes until memory ran out.</extracomment>
         <translation>chybí řádek „Units : 1/10000 Inch“: nejde o .dri z EAGLE</translation>
     </message>
     <message>
@@ -1569,7 +1569,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>status query</source>
-        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5). Their names are translated where they are shown.</extracomment>
+        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. A word whose number is written with an exponent (``X1e308``): G-code reads it as two words. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5). Their names are translated where they are shown.</extracomment>
         <translation>dotaz na stav</translation>
     </message>
     <message>
@@ -1947,12 +1947,32 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}</source>
-        <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
         <translation>{0}: {1} — {2} {3:g} je mimo meze pojezdu {4:g}…{5:g}</translation>
     </message>
     <message>
         <source>G92 without axis words (error:26): {0}</source>
         <translation>G92 bez souřadnic os (error:26): {0}</translation>
+    </message>
+    <message>
+        <source>repeat {0} asks for {1} holes; a drill file may have at most {2}</source>
+        <translation>opakování {0} žádá {1} otvorů; vrtací soubor smí mít nejvýše {2}</translation>
+    </message>
+    <message>
+        <source>more than {0} holes by this line; a drill file may have at most {0}</source>
+        <translation>po tomto řádku více než {0} otvorů; vrtací soubor smí mít nejvýše {0}</translation>
+    </message>
+    <message>
+        <source>a coordinate is not a number: {0}</source>
+        <translation>souřadnice není číslo: {0}</translation>
+    </message>
+    <message>
+        <source>{0} is not a G-code number (G-code has no exponent): it reads as {1} and {2}, and {3} has no {4} axis</source>
+        <translation>{0} není číslo G-kódu (G-kód nezná exponent): čte se jako {1} a {2} a {3} nemá osu {4}</translation>
+    </message>
+    <message>
+        <source>{0}: {1} — {2} {3:g}: the machine has no {2} axis</source>
+        <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
+        <translation>{0}: {1} — {2} {3:g}: stroj nemá osu {2}</translation>
     </message>
 </context>
 <context>

@@ -2,34 +2,37 @@
 
 CAD tools write holes in whatever order their data structures hold them,
 and on a slow stepper table the travel between holes is most of a job's
-time.  A k-d tree gives every hole its few nearest others at once; nearest
-neighbour builds a first tour from those lists (a grid finds the nearest
-hole left when they are all drilled); then 2-opt and Or-opt, trying only
-moves that join a hole to a listed neighbour, remove crossings and detours
-in near-linear time.  The scalar loops are in ``tour_kernels`` (compiled by
-numba), so a 50 000-hole board is ordered in a fraction of a second.  The
-tour is an open path from the machine's position (the drill does not
+time.  Two searches, chosen by measurement (README, "Benchmarks"), share
+the work, and neither compiles anything on the operator's machine:
+
+- up to ``path_solver.LARGEST`` holes a board (every real board we have,
+  and the 22-3000 holes boards people drill), fast-tsp's compiled
+  Lin-Kernighan search on a distance matrix of the whole board, tools in
+  order, in milliseconds: shorter than OR-Tools' guided local search given
+  seconds a tool;
+- above that, where a matrix no longer fits (and where fast-tsp has no
+  wheel), tool by tool, a numpy-only batched 2-opt and insertion search from
+  a Hilbert curve (``batch_search``): 50 000 holes in 0.4-0.5 s of processor
+  time, some 12 % above the expected optimum on random boards.
+
+The tour is an open path from the machine's position (the drill does not
 return), and the file order wins whenever it is not longer.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
-from scipy.spatial import cKDTree
 
-from app.jobs.formats.excellon import tour_kernels
+from app.jobs.formats.excellon import batch_search, path_solver
 
 Points = Sequence[tuple[float, float]] | npt.NDArray[np.float64]
+FloatArray = npt.NDArray[np.float64]
+IntArray = npt.NDArray[np.int64]
 
-NEIGHBOURS = 10  # candidates per hole for nearest-neighbour steps, 2-opt and Or-opt moves
-MAX_POPS_PER_HOLE = 200  # bounds the search on pathological input; real boards stop far sooner
-KICK_WORK = 1_000_000  # kicks x holes: each kick may copy the tour back, so big boards get fewer
-KICKS_PER_HOLE = 20  # small boards: enough kicks to settle, few enough to stay in milliseconds
 _EPS = 1e-9
 
 
@@ -55,63 +58,76 @@ def order_holes(
     start: tuple[float, float] = (0.0, 0.0),
 ) -> OrderResult:
     """A short drilling order for ``points`` starting at ``start``; never longer than file order."""
-    pts = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+    return order_tools([points], start=start)[0]
+
+
+def order_tools(
+    tools: Sequence[Points], *, start: tuple[float, float] = (0.0, 0.0)
+) -> list[OrderResult]:
+    """Each tool's order, tool after tool, each starting where the one before ended.
+
+    A board small enough for a matrix is ordered as one tour with the tools
+    in the given order (``path_solver.board_path``); otherwise, or if that
+    search left a tool split, tool by tool (and the shorter plan is kept).
+    Then, tool by tool, the file order replaces any order that is not shorter
+    from where that tool begins.
+    """
+    arrays = [np.asarray(points, dtype=np.float64).reshape(-1, 2) for points in tools]
+    filled = [pts for pts in arrays if len(pts)]
+    total = sum(len(pts) for pts in filled)
+    board: list[OrderResult] | None = None
+    if path_solver.AVAILABLE and 2 < total <= path_solver.LARGEST:
+        tool = np.concatenate([np.full(len(p), i, dtype=np.int64) for i, p in enumerate(filled)])
+        order, whole = path_solver.board_path(np.vstack(filled), tool, start)
+        ends = np.cumsum([0, *(len(pts) for pts in filled)])
+        pieces = iter([order[ends[i] : ends[i + 1]] - ends[i] for i in range(len(filled))])
+        tours = [next(pieces) if len(pts) else np.zeros(0, dtype=np.int64) for pts in arrays]
+        board = _chain(arrays, start, lambda index, _pts, _here: tours[index])
+        if whole:
+            return board
+    by_tool = _chain(arrays, start, lambda _index, pts, here: _tool_tour(pts, here))
+    if board is not None and _total(board) <= _total(by_tool):
+        return board
+    return by_tool
+
+
+def _total(plan: list[OrderResult]) -> float:
+    return sum(result.length for result in plan)
+
+
+def _chain(
+    arrays: list[FloatArray],
+    start: tuple[float, float],
+    tour_of: Callable[[int, FloatArray, tuple[float, float]], IntArray],
+) -> list[OrderResult]:
+    """Tool after tool from ``start``: each tool's tour, or its file order where not longer."""
+    results = []
+    here = start
+    for index, pts in enumerate(arrays):
+        result = _never_worse(pts, tour_of(index, pts, here), here)
+        results.append(result)
+        if result.order:
+            x, y = pts[result.order[-1]]
+            here = (float(x), float(y))
+    return results
+
+
+def _tool_tour(pts: FloatArray, start: tuple[float, float]) -> IntArray:
+    n = len(pts)
+    if n <= 2:
+        return np.arange(n, dtype=np.int64)  # _never_worse tries it both ways
+    if path_solver.AVAILABLE and n <= path_solver.LARGEST:
+        return path_solver.board_path(pts, np.zeros(n, dtype=np.int64), start)[0]
+    return batch_search.order_big(pts, start)
+
+
+def _never_worse(pts: FloatArray, tour: IntArray, start: tuple[float, float]) -> OrderResult:
+    """``tour`` (or its reverse, for two holes), or the file order where that is not longer."""
     n = len(pts)
     file_length = travel_length(pts, start)
-    if n <= 2:
-        order = list(range(n))
-        if n == 2 and travel_length(pts[::-1], start) < file_length - _EPS:
-            order.reverse()
-        return OrderResult(tuple(order), travel_length(pts[order], start), file_length)
-    neighbours = _neighbour_lists(pts, NEIGHBOURS)
-    xs = np.ascontiguousarray(np.append(pts[:, 0], start[0]))
-    ys = np.ascontiguousarray(np.append(pts[:, 1], start[1]))
-    cell, cells = _grid(pts, 2.0)
-    first = int(np.argmin(np.hypot(pts[:, 0] - start[0], pts[:, 1] - start[1])))
-    tour = tour_kernels.nearest_neighbour(xs, ys, neighbours, cells, cell, first)
-    kicks = min(KICKS_PER_HOLE * n, KICK_WORK // n)
-    tour = tour_kernels.local_search(xs, ys, neighbours, tour, MAX_POPS_PER_HOLE * n, kicks, 0)
-    length = travel_length(pts[tour], start)
-    if length >= file_length:
+    candidates = [tour, tour[::-1]] if n == 2 else [tour]
+    best = min(candidates, key=lambda order: travel_length(pts[order], start))
+    length = travel_length(pts[best], start)
+    if length >= file_length - _EPS:
         return OrderResult(tuple(range(n)), file_length, file_length)
-    return OrderResult(tuple(tour.tolist()), length, file_length)
-
-
-def _grid(pts: npt.NDArray[np.float64], per_cell: float) -> tuple[float, npt.NDArray[np.int64]]:
-    """A cell size holding about ``per_cell`` points on average, and every point's (col, row)."""
-    low = pts.min(axis=0)
-    extent = np.maximum(pts.max(axis=0) - low, 1e-9)
-    # Holes all on one line (a connector row) have no area: size the cells from the length,
-    # or the grid degenerates into thousands of empty cells that the ring search must walk.
-    area = max(float(extent[0] * extent[1]), float(extent.max()) ** 2 / len(pts))
-    cell = math.sqrt(area * per_cell / len(pts)) or float(extent.max())
-    cell = max(cell, float(extent.max()) / 4096, 1e-9)  # never more than 4096 cells a side
-    return cell, np.ascontiguousarray(np.floor((pts - low) / cell).astype(np.int64))
-
-
-def _neighbour_lists(pts: npt.NDArray[np.float64], k: int) -> npt.NDArray[np.int64]:
-    """For every point, up to ``k`` nearest others (nearest first), -1 where there are fewer.
-
-    The point itself may appear among its duplicates; the kernels skip it.
-    """
-    n = len(pts)
-    take = min(k + 1, n)
-    _, index = cKDTree(pts).query(pts, k=take)
-    index = np.asarray(index, dtype=np.int64).reshape(n, take)
-    index[index >= n] = -1
-    return np.ascontiguousarray(index)
-
-
-def compile_kernels() -> None:
-    """Compile (or load from numba's cache) the ordering kernels now, on a tiny board.
-
-    The first use in a fresh install compiles them, which takes tens of seconds
-    on a slow machine: the install command and the test session do it up
-    front, so an operator's first drill file loads at once.
-    """
-    order_holes([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)])
-
-
-if __name__ == "__main__":
-    compile_kernels()
-    print("hole-order kernels ready")
+    return OrderResult(tuple(int(i) for i in best), length, file_length)

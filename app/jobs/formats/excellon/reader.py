@@ -23,7 +23,9 @@ would write.  This module only does what gerbonara 1.5.0 does not:
   gerbonara 1.5.0 mishandles, found before it sees them: a ``G85`` with no
   end point (it would drop the slot), routed arcs ``G02``/``G03`` (it fails
   with an internal error), a tool with a zero or negative diameter, a tool
-  number above :data:`MAX_TOOL_NUMBER`, and coordinates too large for a number;
+  number above :data:`MAX_TOOL_NUMBER`, coordinates too large for a number,
+  and more than :data:`MAX_HOLES` holes, a repeat's (``R…``) counted before
+  gerbonara makes them one by one;
 * **warnings**: everything else gerbonara warns about (a tool defined twice,
   commands after the end…) is kept with its line in ``DrillJob.notes`` and
   shown to the operator with the program's notes.
@@ -55,6 +57,10 @@ from app.jobs.reading import read_job_text
 DEFAULT_EXCELLON_STEP_INCH = 1e-4
 #: The highest tool number a drill file may use (Excellon writes two or three digits).
 MAX_TOOL_NUMBER = 999
+#: The most holes (slot ends counted) a drill file may ask for, repeats (``R…``) included:
+#: boards have tens to a few thousand holes; 50 000 (the benchmark's board) still checks in
+#: seconds, where a repeat count of nine digits made gerbonara build holes until memory ran out.
+MAX_HOLES = 50_000
 MM_PER_INCH = 25.4
 
 
@@ -244,6 +250,8 @@ _COORD = re.compile(r"(?:X([-+]?)([0-9.]*))?(?:Y([-+]?)([0-9.]*))?")
 _TOOL_LINE = re.compile(r"^T0*(\d+)(?![\d])(.*)$")
 _TOOL_DIAMETER = re.compile(r"C([-+]?[0-9.]*)")
 _ROUTED_ARC = re.compile(r"^G0?[23](?![0-9])")
+_REPEAT = re.compile(r"^R([0-9]*)")
+_HOLE_WORD = re.compile(r"[XY][-+]?[0-9.]")
 
 
 def _read_text(path: Path) -> str:
@@ -252,10 +260,42 @@ def _read_text(path: Path) -> str:
 
 def _prescan(name: str, lines: Sequence[str]) -> None:
     """Refuse what gerbonara 1.5.0 would drop, mangle or fail on (see the module notes)."""
+    holes = 0  # at most: each coordinate line one hole, a slot two, a repeat its count
     for number, raw in enumerate(lines, start=1):
         line = raw.strip().upper()
         if not line or line.startswith(";"):
             continue
+        if (repeat := _REPEAT.match(line)) is not None:
+            digits = repeat[1].lstrip("0") or "0"
+            count = int(digits) if len(digits) <= 9 else MAX_HOLES + 1  # no int() of a flood
+            if count > MAX_HOLES:
+                raise JobFileError(
+                    name,
+                    number,
+                    QCoreApplication.translate(
+                        "JobFile",
+                        "repeat {0} asks for {1} holes; a drill file may have at most {2}",
+                    ).format(
+                        quoted(line[:24]),
+                        f"{count:,}"
+                        if len(digits) <= 9
+                        else QCoreApplication.translate("JobFile", "{0}… ({1} digits)").format(
+                            digits[:6], len(digits)
+                        ),
+                        f"{MAX_HOLES:,}",
+                    ),
+                )
+            holes += count
+        elif _HOLE_WORD.search(line):
+            holes += 2 if "G85" in line else 1
+        if holes > MAX_HOLES:
+            raise JobFileError(
+                name,
+                number,
+                QCoreApplication.translate(
+                    "JobFile", "more than {0} holes by this line; a drill file may have at most {0}"
+                ).format(f"{MAX_HOLES:,}"),
+            )
         if (tool := _TOOL_LINE.match(line)) is not None:
             index = tool[1]
             if len(index) > 6 or int(index) > MAX_TOOL_NUMBER:
@@ -411,6 +451,10 @@ def read_drill_file(
             reason = QCoreApplication.translate(
                 "JobFile", "integer coordinates, but the file gives no number format (metric)"
             )
+        elif isinstance(cause, ValueError) and "could not convert" in reason:
+            reason = QCoreApplication.translate(
+                "JobFile", "a coordinate is not a number: {0}"
+            ).format(quoted(lines[parser.lineno - 1].strip()))
         raise JobFileError(path.name, int(parser.lineno or 0), reason) from exc
     except Exception as exc:  # gerbonara's own failure: the line it was on, and what it said
         line = int(parser.lineno or 0)
@@ -685,22 +729,20 @@ def plan_drilling(
         {name: len(holes) for name, holes in holes_by_tool.items()},
         smallest_first=smallest_first,
     )
-    # Imported here, not with the module: the optimiser brings numba and scipy (about
-    # 1.4 s), which the window does not need until a drill file is read (issue #23, launch).
-    from app.jobs.formats.excellon.hole_order import order_holes
+    # Imported here, not with the module: the window does not need the optimiser (and
+    # fast-tsp) until a drill file is read (issue #23, launch).
+    from app.jobs.formats.excellon.hole_order import order_tools
 
     plans: list[ToolPlan] = []
-    here = start
-    for group in bits.groups:
-        holes = [h for name in group.tools for h in holes_by_tool[name]]
-        result = order_holes([(h.x_mm, h.y_mm) for h in holes], start=here)
+    groups = [[h for name in g.tools for h in holes_by_tool[name]] for g in bits.groups]
+    results = order_tools([[(h.x_mm, h.y_mm) for h in holes] for holes in groups], start=start)
+    for group, holes, result in zip(bits.groups, groups, results, strict=True):
         ordered = tuple(holes[i] for i in result.order)
         plans.append(
             ToolPlan(
                 job.tool(group.tool), ordered, result.file_length, result.length, group.tools[1:]
             )
         )
-        here = (ordered[-1].x_mm, ordered[-1].y_mm)
     return DrillPlan(job, tuple(plans), bits.flags)
 
 

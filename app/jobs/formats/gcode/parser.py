@@ -52,6 +52,7 @@ from app.jobs.formats.gcode.program import (
 from app.jobs.formats.gcode.state import Pending, State
 from app.jobs.formats.gcode.words import (
     CHECKSUM,
+    EXPONENT,
     LINE_NUMBER,
     MAX_LINE_CHARS,
     MESSAGE_RE,
@@ -689,6 +690,23 @@ class Parser:
                         )
                     )
             elif word.letter in AXIS_LETTERS and word.letter not in self.machine_axes:
+                exponent = EXPONENT.search(op.text) if word.letter == "E" else None
+                if exponent is not None:
+                    # "X1e308": G-code numbers have no exponent, so it reads as X1 and E308
+                    found.append(
+                        QCoreApplication.translate(
+                            "JobFile",
+                            "{0} is not a G-code number (G-code has no exponent): "
+                            "it reads as {1} and {2}, and {3} has no {4} axis",
+                        ).format(
+                            exponent[0],
+                            exponent[1],
+                            "E" + exponent[2][1:],
+                            self.who,
+                            word.letter,
+                        )
+                    )
+                    continue
                 found.append(
                     QCoreApplication.translate("JobFile", "{0} has no {1} axis").format(
                         self.who, word.letter

@@ -21,6 +21,8 @@ MAX_LINE_CHARS = 79
 
 #: A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``.
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
+#: A word whose number is written with an exponent (``X1e308``): G-code reads it as two words.
+EXPONENT = re.compile(r"([A-DF-Za-df-z][ \t]*[-+]?(?:\d+\.?\d*|\.\d+))([eE][-+]?\d+)")
 WORD = re.compile(rf"[ \t]*([A-Za-z])[ \t]*({NUMBER})(?![\d.])")
 WORDS = re.compile(rf"(?:[ \t]*[A-Za-z][ \t]*{NUMBER}(?![\d.]))*[ \t]*")
 COMMENT_RE = re.compile(r"\(([^)]*)\)?|;(.*)")
