@@ -213,3 +213,45 @@ def test_only_pen_down_moves_count_as_drawing(tmp_path: Path) -> None:
     assert not stream.draws_between(0, 4)  # set-up, pen up, travel, pen down
     assert stream.draws_between(3, 5)  # the first side
     assert not stream.draws_between(8, 10)  # pen up, travel home
+
+
+@pytest.mark.parametrize("name", ["grbl-plotter", "corexy-plotter"])
+def test_a_station_restarted_mid_job_resumes_from_its_checkpoint_drawing_each_stroke_once(
+    qtbot: QtBot, tmp_path: Path, name: str
+) -> None:
+    """The station quits while the cable is out; the board runs on with what it got.  The
+    checkpoint keeps how far the job was proven run and how far it was sent: the new run
+    looks at the machine, and its place proves the rest."""
+    profile = load_profile(name)
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    program = zigzag(profile, tmp_path)
+    first = JobRunner(harness.station, tmp_path / "checkpoints")
+    try:
+        assert first.load(program) == []
+        first.start()
+        harness.run_until(lambda: len(pen_down_moves(harness)) >= 4, timeout=60)
+        harness.loopback.sever("cable pulled")
+        harness.run_until(lambda: first.state is JobState.PAUSED, timeout=5)
+        first.abort()  # the station quits
+    finally:
+        first.deleteLater()
+    record = next((tmp_path / "checkpoints").glob("*.json")).read_text(encoding="utf-8")
+    assert '"sent"' in record
+    harness.run(8.0)  # the board runs on alone
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.CONNECTED, 30)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        assert runner.load(program) == []
+        assert runner.resume_available is not None
+        runner.resume_from_checkpoint()
+        run_as_the_api_does(harness, runner)
+        assert runner.state is JobState.DONE, messages
+        assert pen_down_moves(harness) == EXPECTED
+        assert any("every answered line ran" in m for m in messages), messages
+    finally:
+        runner.deleteLater()
+        harness.close()

@@ -135,8 +135,13 @@ class RunnerPort(Protocol):
         """A streaming driver's progress: the first ``done`` operations are answered, the
         first ``executed`` (default: ``done``) known to have run."""
 
-    def record(self, completed: int) -> None:
-        """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace)."""
+    def record(self, completed: int, sent: int | None = None) -> None:
+        """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace),
+        and ``[0, sent)`` as perhaps sent."""
+
+    @property
+    def checkpoint_sent(self) -> int | None:
+        """For a run resumed from its checkpoint: how far the interrupted run may have sent."""
 
     def fail(self, index: int, reason: str) -> None: ...
 

@@ -162,6 +162,9 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        sent = runner.checkpoint_sent if verify else None
+        if sent is not None and sent > index:
+            self.stream.written = sent  # what the interrupted run may have got to the machine
         self._follow()
         session = self.session
         # The program's coordinates are the machine's less the work offset it had when the
@@ -633,4 +636,4 @@ class GcodeDriver(JobDriver):
         if not force and now - self._checkpoint_at < CHECKPOINT_EVERY_S:
             return
         self._checkpoint_at = now
-        runner.record(stream.executed - 1)
+        runner.record(stream.executed - 1, max(stream.written, stream.answered))

@@ -98,6 +98,8 @@ class JobRunner(QObject):
         self._pause_requested = False
         self._question: int | None = None  # the operation the operator is asked about
         self._choice: ResumeChoice | None = None  # where to go on, for the operator to pick
+        #: While a run resumed from its checkpoint begins: how far the interrupted one sent.
+        self._checkpoint_sent: int | None = None
         #: Paused until the operator acts (an alarm, a board that restarted): nothing resumes
         #: it on its own (the scripting API ends the job instead).
         self._operator_hold = False
@@ -450,7 +452,11 @@ class JobRunner(QObject):
             return
         index = self._resume_available
         self._resume_available = None
-        self._begin(index, single_step=False, verify=True)
+        self._checkpoint_sent = self._checkpoints.sent(self._program)
+        try:
+            self._begin(index, single_step=False, verify=True)
+        finally:
+            self._checkpoint_sent = None
 
     def checkpoint_placement(self, base: Program) -> Placement | None:
         """How an interrupted run of ``base`` (as read from its file) was put on the board."""
@@ -532,9 +538,13 @@ class JobRunner(QObject):
         if self._executed != told_executed:
             self.executedChanged.emit(self._executed, total)
 
-    def record(self, completed: int) -> None:
+    def record(self, completed: int, sent: int | None = None) -> None:
         if self._program is not None and self._state in ACTIVE:
-            self._write_checkpoint(self._program, completed)
+            self._write_checkpoint(self._program, completed, sent)
+
+    @property
+    def checkpoint_sent(self) -> int | None:
+        return self._checkpoint_sent
 
     def fail(self, index: int, reason: str) -> None:
         if self._state not in ACTIVE:
@@ -792,7 +802,7 @@ class JobRunner(QObject):
 
     # --- checkpoint ----------------------------------------------------------
 
-    def _write_checkpoint(self, program: Program, completed: int) -> bool:
+    def _write_checkpoint(self, program: Program, completed: int, sent: int | None = None) -> bool:
         """Record progress; a job that cannot record it stops (FAILED) rather than run on.
 
         Without its checkpoint an interrupted job could only be run again from the
@@ -800,7 +810,7 @@ class JobRunner(QObject):
         operator can still see where it stands.
         """
         try:
-            self._checkpoints.write(program, completed, self._placed)
+            self._checkpoints.write(program, completed, self._placed, sent)
         except OSError as exc:
             if self._state in ACTIVE and not self._failing:
                 self._failing = True
