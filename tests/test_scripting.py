@@ -458,3 +458,52 @@ def test_an_alarm_mid_job_is_said_once_and_fails_the_job_with_progress_saying_so
         assert plotter.station.gcode_session.errors == 0
     finally:
         plotter.close()
+
+
+def test_a_resume_line_only_the_operator_can_pick_is_asked_of_on_decision(
+    qapp: object, tmp_path: Path
+) -> None:
+    """The board reset mid-stroke while the cable was out (its banner lost): where it stands
+    proves nothing, and a stroke is among the lines not proven run.  The script answers
+    for the operator: True resumes from the first line not proven run."""
+    plotter = stepdeck.connect("grbl-plotter", emulator=True, simulated=True)
+    try:
+        job = tmp_path / "zigzag.gcode"
+        job.write_text(
+            "G21 G90\nM3 S1000\n"
+            + "".join(f"G1 X{40 * (k % 2)} Y{k} F3000\n" for k in range(1, 20))
+            + "M5\n",
+            encoding="utf-8",
+        )
+        station = plotter.station
+        emulator = station.gcode_emulator
+        assert emulator is not None and station.loopback is not None
+        loopback = station.loopback
+        asked: list[tuple[str, str, str]] = []
+        cut: list[bool] = []
+
+        def progress(p: stepdeck.Progress) -> None:
+            if p.done >= 4 and emulator.state == "Run" and not cut:
+                cut.append(True)
+                loopback.sever("cable pulled")
+                emulator.soft_reset()  # mid-stroke; its banner goes nowhere
+
+        def decide(question: str, again: str, done: str) -> bool:
+            asked.append((question, again, done))
+            return True
+
+        result = plotter.run(
+            job, on_progress=progress, on_decision=decide, checkpoint_dir=tmp_path / "ck"
+        )
+        assert result.operations == 22
+        assert len(asked) == 1, asked
+        assert "not proven" in asked[0][0] and "first not proven" in asked[0][1]
+        drawn = [
+            (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3))
+            for e in emulator.event_log
+            if e["event"] == "move" and e["pen"]
+        ]
+        for k in range(1, 20):  # none skipped
+            assert (40.0 * (k % 2), float(k)) in drawn
+    finally:
+        plotter.close()
