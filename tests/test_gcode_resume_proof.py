@@ -255,3 +255,9 @@ def test_a_station_restarted_mid_job_resumes_from_its_checkpoint_drawing_each_st
     finally:
         runner.deleteLater()
         harness.close()
+
+
+def test_moves_in_a_row_to_the_same_point_are_one_place(tmp_path: Path) -> None:
+    lines = ["G21 G90", "G0 X10 Y10", "M3 S1000", "G1 X20 Y10 F3000", "G1 X20 Y10", "M5"]
+    stream = _streamed(tmp_path, lines, answered=2, written=6)
+    assert stream.stands_after((20.0, 10.0), 2, 6) == 4

@@ -509,14 +509,18 @@ class GcodeStream:
             vertex = int(np.searchsorted(path.ops, end, side="left"))
             if vertex == 0:
                 continue  # before any move: not a place known
-            if vertex in places:
-                continue
             expected = path.coords[vertex - 1][:count]
             known = ~np.isnan(expected)
             if not known.any() or float(np.max(np.abs(expected[known] - here[known]))) > (
                 AT_POSITION_MM
             ):
                 continue
+            # Moves in a row that end at the same point (a move of nothing, one of another
+            # axis) are one place: standing there the machine has not gone away and back.
+            while vertex > 1 and np.array_equal(
+                path.coords[vertex - 2][:count], path.coords[vertex - 1][:count], equal_nan=True
+            ):
+                vertex -= 1
             places.add(vertex)
             first = end if first is None else first
         return first if len(places) == 1 else None
