@@ -73,6 +73,7 @@ def test_the_operator_picks_the_resume_line_with_the_candidates_highlighted(
     choice = runner.resume_choice
     assert choice is not None
     assert dock.resume_choice.isVisible()
+    assert dock.resume_choice.label.text() == choice.text
     assert not dock.resume_button.isEnabled()  # Resume alone would not say where
     # Strokes among the candidates: nothing is picked for the operator.
     assert choice.default is None and dock.resume_choice.chosen() is None

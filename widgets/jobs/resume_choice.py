@@ -9,7 +9,6 @@ segments highlighted in the preview, and nothing moves until one is picked.
 
 from __future__ import annotations
 
-import html
 from collections.abc import Callable
 
 from PySide6.QtCore import Qt
@@ -58,6 +57,7 @@ class ResumeChoicePanel(QFrame):
         self.label = QLabel()
         self.label.setObjectName("job_resume_choice_text")
         self.label.setWordWrap(True)
+        self.label.setTextFormat(Qt.TextFormat.PlainText)
         self.lines = QListWidget()
         self.lines.setObjectName("job_resume_lines")
         self.lines.setMaximumHeight(120)
@@ -94,7 +94,7 @@ class ResumeChoicePanel(QFrame):
         if program is None:
             return
         self._choice = choice
-        self.label.setText(html.escape(choice.text))
+        self.label.setText(choice.text)
         self.lines.blockSignals(True)
         self.lines.clear()
         for index in list(choice.candidates)[:ROWS_SHOWN]:
