@@ -428,6 +428,7 @@ class GcodeDriver(JobDriver):
         session = self.session
         if session is not None and session.reset_by_device:
             self._chosen = None  # a pick made before the restart was for a machine it forgot
+            self._waiting = None  # a WAIT under way is offered again if the pick is before it
             self._write_checkpoint(force=True)
             if not (self._position_lost and self._choice_open):  # said once
                 self._position_lost = True
