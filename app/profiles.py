@@ -122,6 +122,10 @@ class GcodeSettings:
     #: A bare ``G92`` makes the current position the origin (the CoreXY plotter's firmware);
     #: False: GRBL's, which refuses it (error:26) and needs the axes named.
     bare_g92: bool = False
+    #: The board answers a line only once its motion is done (the CoreXY plotter), not once
+    #: planned (GRBL): every answered line ran, and an unanswered one is at most the one
+    #: under way — what a resume after a fault can take as proven.
+    ok_when_done: bool = False
 
     @property
     def dwell_p_seconds(self) -> float:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -404,3 +405,103 @@ def test_a_link_cut_mid_job_pauses_the_job_and_says_so(
     assert any("Link lost" in m or "lost" in m.lower() for m in answers.messages), answers.messages
     assert answers.errors() == []
     record("cut link", board, (0.0, 0.0), runner.state)
+
+
+def _answered_per_boot(board: Board) -> list[list[str]]:
+    """The host lines GRBL answered ``ok``, boot by boot (its own replies, in order: each
+    ``ok`` answers the oldest line not yet answered; a restart forgets them all)."""
+    boots: list[list[str]] = [[]]
+    waiting: list[str] = []
+    for event in _wire_events(board):
+        if event["event"] == "restart":
+            boots.append([])
+            waiting.clear()
+        elif event["event"] == "line":
+            waiting.append(str(event["text"]))
+        elif event["event"] == "reply":
+            text = str(event["text"])
+            if (text == "ok" or text.startswith("error:")) and waiting:
+                line = waiting.pop(0)
+                if text == "ok":
+                    boots[-1].append(line)
+            elif text.startswith("Grbl "):
+                waiting.clear()
+    return boots
+
+
+def _wire_events(board: Board) -> list[dict[str, object]]:
+    found = []
+    for line in board.log.read_text(encoding="utf-8").splitlines():
+        try:
+            found.append(json.loads(line))
+        except ValueError:
+            continue
+    return found
+
+
+def _stands_idle_unplugged(board: Board, since: int) -> bool:
+    """The board's own report, asked while its port is unplugged, says it stands idle."""
+    replies = [e for e in _wire_events(board)[since:] if e["event"] == "reply"]
+    return any(str(e["text"]).startswith("<Idle") for e in replies)
+
+
+def test_a_board_that_restarts_when_its_port_reopens_draws_each_stroke_once(
+    qtbot: QtBot, grbl_sim_exe: Path, station: Station, tmp_path: Path
+) -> None:
+    """Real GRBL on an Arduino restarts whenever its port is opened.  Pulled mid-job and
+    plugged back, it comes back at 0, 0 with nothing planned: the station says so once,
+    asks the operator to home or check the tool and to pick the line; the zig-zag (the
+    station once drew all of it again, though 19 of its 21 operations had run) is drawn
+    once."""
+    workdir = tmp_path / "grbl"
+    workdir.mkdir()
+    port = tmp_path / "ttyACM0"
+    process = grbl_sim.start(grbl_sim_exe, workdir, port, restart_on_open=True)
+    try:
+        device_path(process)
+        board = Board("grbl-sim", str(port), workdir / "wire.log", lambda: stop(process))
+        station.reconnect_delays = (0.2, 0.5, 1.0)
+        session, answers = connect(qtbot, station, board)
+        said: list[str] = []
+        source = tmp_path / "zigzag.gcode"
+        job = ["G21 G90", "M3 S1000"]
+        job += [f"G1 X{40 * (k % 2)} Y{k} F3000" for k in range(1, 39)]
+        job.append("M5")
+        source.write_text("\n".join(job) + "\n", encoding="utf-8")
+        program = load(source)
+        assert len(program) == 41
+        runner = start(station, program, tmp_path)
+        runner.message.connect(said.append)
+        # Pulled while the board has a planner full of answered lines and more are to come.
+        qtbot.waitUntil(lambda: runner.executed >= 6, timeout=JOB_TIMEOUT_MS)
+        unplugged_at = len(_wire_events(board))
+        os.kill(process.pid, signal.SIGUSR1)  # the USB cable pulled
+        qtbot.waitUntil(lambda: runner.state is JobState.PAUSED, timeout=30_000)
+        # It runs on with what it had, and stands: its own reports say so.
+        qtbot.waitUntil(lambda: _stands_idle_unplugged(board, unplugged_at), timeout=120_000)
+        ran_before = [line for line in _answered_per_boot(board)[-1] if line in job]
+        os.kill(process.pid, signal.SIGUSR2)  # plugged back: the board restarts on the open
+        qtbot.waitUntil(lambda: runner.resume_choice is not None, timeout=60_000)
+        choice = runner.resume_choice
+        assert choice is not None and choice.position_lost
+        assert runner.state is JobState.PAUSED and runner.needs_operator
+        assert len([m for m in said if "restarted" in m]) == 1, said  # said once
+        # The operator checks the tool (the board restarted at 0, 0, where it reports) and
+        # picks the first line the paper does not show: after what the board had run.
+        pick = len(ran_before)
+        assert ran_before == job[:pick] and pick < len(job)
+        assert pick in choice.candidates, (pick, choice)
+        runner.resume_at(pick)
+        finish(qtbot, runner)
+        assert runner.state is JobState.DONE, said[-3:]
+        end = standing(qtbot, session)
+        assert end == pytest.approx((0.0, 38.0), abs=STEP)
+        # Every stroke of the file answered once over both boots, in order: each ran once
+        # (the pen lines go again with the way back, which sets the pen).
+        strokes = [line for line in job if line.startswith("G1")]
+        answered = [line for boot in _answered_per_boot(board) for line in boot]
+        assert [line for line in answered if line in strokes] == strokes, answered
+        assert answers.errors() == []
+        no_alarm(board)
+    finally:
+        stop(process)

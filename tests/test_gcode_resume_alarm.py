@@ -27,6 +27,10 @@ def strokes(harness: StationHarness) -> list[tuple[float, float]]:
     ]
 
 
+def moves(harness: StationHarness) -> list[dict[str, object]]:
+    return [e for e in harness.gcode_emulator.event_log if e["event"] == "move"]
+
+
 def test_resume_after_a_self_reset_into_alarm_waits_for_the_unlock(
     qtbot: QtBot, tmp_path: Path
 ) -> None:
@@ -44,17 +48,27 @@ def test_resume_after_a_self_reset_into_alarm_waits_for_the_unlock(
         harness.gcode_emulator.soft_reset()
         harness.gcode_emulator.trigger_alarm(3)
         harness.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
+        harness.run(1.0)
         assert harness.station.model.link_state is LinkState.CONNECTED
+        assert len(messages) == 1 and "restarted" in messages[0], messages  # said once
+        choice = runner.resume_choice
+        assert choice is not None and choice.position_lost
         sent_before = len(harness.written)
-        runner.resume()
+        # The operator picks the line before clearing the alarm: the machine is looked at
+        # first, and an alarm keeps the job paused, said once.
+        drawn_so_far = len(moves(harness))
+        pick = [i for i, op in enumerate(runner.program or ()) if op.target][drawn_so_far]
+        assert pick in choice.candidates
+        runner.resume_at(pick)
         harness.run_until(lambda: runner.state is JobState.PAUSED, timeout=5)
-        assert any("in alarm" in m for m in messages), messages
         harness.run(2.0)
-        assert runner.state is JobState.PAUSED
+        alarms = [m for m in messages if "in alarm" in m]
+        assert len(alarms) == 1, messages
+        assert runner.state is JobState.PAUSED and runner.needs_operator
         job_lines = [w for w in harness.written[sent_before:] if w.strip() not in (b"?", b"")]
         assert job_lines == []  # nothing streamed into the alarm
         assert harness.gcode_session.errors == 0
-        # The operator unlocks it; Resume now carries the job to its end.
+        # The operator unlocks it; Resume now carries the job to its end from the pick.
         assert harness.gcode_session.send_line("$X")
         harness.run_until(lambda: harness.gcode_session.machine_state == "Idle", timeout=5)
         runner.resume()
@@ -63,8 +77,7 @@ def test_resume_after_a_self_reset_into_alarm_waits_for_the_unlock(
         )
         assert runner.state is JobState.DONE, messages
         drawn = strokes(harness)
-        for corner in SQUARE[1:]:
-            assert corner in drawn  # none skipped
+        assert drawn == SQUARE[1:]  # each side once, none skipped
     finally:
         runner.deleteLater()
         harness.close()

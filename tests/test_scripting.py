@@ -416,3 +416,94 @@ def test_cancelling_an_awaited_move_stops_the_machine(qapp: object) -> None:
     where, moving = asyncio.run(scenario())
     assert not moving
     assert 0 < where < 40
+
+
+def test_an_alarm_mid_job_is_said_once_and_fails_the_job_with_progress_saying_so(
+    qapp: object, tmp_path: Path
+) -> None:
+    """Real GRBL after a reset in motion: ALARM:3, its banner, and no line taken until
+    unlocked.  The API once resumed into it ~30 times a second (271 messages in 15 s),
+    its progress saying "running", the job never ending."""
+    plotter = stepdeck.connect("grbl-plotter", emulator=True, simulated=True)
+    try:
+        job = tmp_path / "zigzag.gcode"
+        job.write_text(
+            "G21 G90\nM3 S1000\n"
+            + "".join(f"G1 X{40 * (k % 2)} Y{k} F3000\n" for k in range(1, 30))
+            + "M5\n",
+            encoding="utf-8",
+        )
+        emulator = plotter.station.gcode_emulator
+        assert emulator is not None
+        said: list[str] = []
+        states: list[str] = []
+
+        def progress(p: stepdeck.Progress) -> None:
+            states.append(p.state)
+            if p.done >= 6 and "reset" not in states:
+                states.append("reset")
+                emulator.soft_reset()  # its reset button in mid-motion
+                emulator.trigger_alarm(3)
+
+        with pytest.raises(stepdeck.JobFailed) as failed:
+            plotter.run(
+                job, on_progress=progress, on_message=said.append, checkpoint_dir=tmp_path / "ck"
+            )
+        about_it = [m for m in said if "restarted" in m or "alarm" in m]
+        assert len(about_it) == 1, said  # said once
+        assert "restarted" in str(failed.value)
+        assert states[-1] == "failed"  # the progress says how the job stands
+        # Nothing was streamed into the alarm: the board refused no line.
+        assert plotter.station.gcode_session is not None
+        assert plotter.station.gcode_session.errors == 0
+    finally:
+        plotter.close()
+
+
+def test_a_resume_line_only_the_operator_can_pick_is_asked_of_on_decision(
+    qapp: object, tmp_path: Path
+) -> None:
+    """The board reset mid-stroke while the cable was out (its banner lost): where it stands
+    proves nothing, and a stroke is among the lines not proven run.  The script answers
+    for the operator: True resumes from the first line not proven run."""
+    plotter = stepdeck.connect("grbl-plotter", emulator=True, simulated=True)
+    try:
+        job = tmp_path / "zigzag.gcode"
+        job.write_text(
+            "G21 G90\nM3 S1000\n"
+            + "".join(f"G1 X{40 * (k % 2)} Y{k} F3000\n" for k in range(1, 20))
+            + "M5\n",
+            encoding="utf-8",
+        )
+        station = plotter.station
+        emulator = station.gcode_emulator
+        assert emulator is not None and station.loopback is not None
+        loopback = station.loopback
+        asked: list[tuple[str, str, str]] = []
+        cut: list[bool] = []
+
+        def progress(p: stepdeck.Progress) -> None:
+            if p.done >= 4 and emulator.state == "Run" and not cut:
+                cut.append(True)
+                loopback.sever("cable pulled")
+                emulator.soft_reset()  # mid-stroke; its banner goes nowhere
+
+        def decide(question: str, again: str, done: str) -> bool:
+            asked.append((question, again, done))
+            return True
+
+        result = plotter.run(
+            job, on_progress=progress, on_decision=decide, checkpoint_dir=tmp_path / "ck"
+        )
+        assert result.operations == 22
+        assert len(asked) == 1, asked
+        assert "not proven" in asked[0][0] and "first not proven" in asked[0][1]
+        drawn = [
+            (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3))
+            for e in emulator.event_log
+            if e["event"] == "move" and e["pen"]
+        ]
+        for k in range(1, 20):  # none skipped
+            assert (40.0 * (k % 2), float(k)) in drawn
+    finally:
+        plotter.close()

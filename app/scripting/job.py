@@ -92,7 +92,12 @@ def run_job(
       True carries on, False aborts.  Without it a prompt aborts the job.
     * ``on_decision(question, again, done) -> bool``: after a lost link only
       the operator can tell whether an operation ran; True sends it again.
-      Without it the job aborts there (its checkpoint kept).
+      Without it the job aborts there (its checkpoint kept).  On G-code, where
+      several lines may or may not have run, True resumes from the first not
+      proven run, False after the last sent.
+    * A pause only the operator can end (an alarm, a board that restarted and
+      lost its position, a resume line to pick without ``on_decision``) ends
+      the job: JobFailed, with what was said, the checkpoint kept.
     * ``resume``: when a checkpoint of this job waits, True resumes from it,
       False starts over (discarding it); None refuses to choose (JobRefused).
     """
@@ -198,6 +203,24 @@ def run_job(
             if clock.now() >= progress_due[0]:
                 progress_due[0] = clock.now() + PROGRESS_EVERY_S
                 report()
+            choice = runner.resume_choice
+            if runner.needs_operator and choice is not None and on_decision is not None:
+                # Only the operator can say where the job goes on; the script answers for them.
+                from_first = on_decision(
+                    choice.text,
+                    f"resume from operation {choice.first + 1}, the first not proven run",
+                    f"resume after operation {choice.last}, the last sent",
+                )
+                runner.resume_at(choice.first if from_first else choice.last)
+                _drain(events, tell)
+            if runner.needs_operator:
+                # An alarm, a board that restarted, a resume line to pick: a script is no
+                # operator.  The job ends (failed, its checkpoint kept) with what was said,
+                # once, rather than resuming into the same pause again and again.
+                runner.give_up()
+                _drain(events, tell)
+                report()
+                break
             if (
                 runner.state is JobState.PAUSED
                 and not paused_by_script[0]

@@ -238,6 +238,12 @@ def _gcode_hold(board: GcodeFirmware, args: Sequence[str]) -> None:
     board.feed_hold()
 
 
+def _gcode_reset(board: GcodeFirmware, args: Sequence[str]) -> None:
+    if args:
+        raise ControlError("reset takes nothing")
+    board.soft_reset()
+
+
 def _gcode_resume(board: GcodeFirmware, args: Sequence[str]) -> None:
     if args:
         raise ControlError("resume takes nothing")
@@ -312,6 +318,12 @@ GCODE_CONTROLS: dict[str, Control[GcodeFirmware]] = {
     ),
     "hold": Control("hold", "the board's feed-hold button (as '!')", _gcode_hold),
     "resume": Control("resume", "the board's cycle-start button (as '~')", _gcode_resume),
+    "reset": Control(
+        "reset",
+        "the board's reset button (as Ctrl-X): it stops at once, forgets every line, "
+        "says its banner",
+        _gcode_reset,
+    ),
 }
 
 #: The controls of each profile's device, for --help.

@@ -902,9 +902,17 @@
 <context>
     <name>GcodeDriver</name>
     <message>
-        <source>The machine reset itself during the job (its reset button, or its power): the job is paused. Check the machine; Resume looks where it stands and carries on from there.</source>
-        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume.</extracomment>
-        <translation>Stroj sa počas úlohy sám resetoval (tlačidlom reset alebo výpadkom napájania): úloha je pozastavená. Skontrolujte stroj; Pokračovať najprv zistí, kde stojí, a nadviaže odtiaľ.</translation>
+        <source>The machine restarted during the job (its reset button, its power, or its port reopened) and may have lost its position: the job is paused. Home it ($H) or check where the tool is (clear an alarm with $X), then choose the line to resume from; {0} operation(s) from {1} were sent but not proven run.</source>
+        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick.</extracomment>
+        <translation>Stroj sa počas úlohy reštartoval (tlačidlom reset, napájaním alebo opätovným otvorením portu) a mohol stratiť svoju polohu: úloha je pozastavená. Nabehnite s ním do východiskovej polohy ($H) alebo skontrolujte, kde je nástroj (alarm zrušte pomocou $X), a potom zvoľte riadok, od ktorého pokračovať; {0} operácií od {1} bolo odoslaných, ale ich vykonanie nie je preukázané.</translation>
+    </message>
+    <message>
+        <source>{0} operation(s) from {1} were sent but their running is not proven: choose the line to resume from (the candidates are highlighted).</source>
+        <translation>{0} operácií od {1} bolo odoslaných, ale ich vykonanie nie je preukázané: zvoľte riadok, od ktorého pokračovať (kandidáti sú zvýraznení).</translation>
+    </message>
+    <message>
+        <source>Some of them draw: resuming too early draws a stroke twice, too late leaves one out.</source>
+        <translation>Niektoré z nich kreslia: pokračovanie príliš skoro nakreslí ťah dvakrát, príliš neskoro jeden vynechá.</translation>
     </message>
     <message>
         <source>The machine is in alarm: the job stays paused. Check the machine, clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume.</source>
@@ -2037,7 +2045,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a job is under way</source>
-        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled).</extracomment>
+        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
         <translation>prebieha úloha</translation>
     </message>
     <message>
@@ -2118,7 +2126,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
+        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. While a run resumed from its checkpoint begins: how far the interrupted one sent. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
         <translation>Pred načítaním ďalšej úlohy zastavte tú bežiacu</translation>
     </message>
     <message>
@@ -2138,6 +2146,10 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>Answer the question about the interrupted operation first</source>
         <translation>Najprv odpovedzte na otázku k prerušenej operácii</translation>
+    </message>
+    <message>
+        <source>Choose the line to resume from first</source>
+        <translation>Najprv zvoľte riadok, od ktorého pokračovať</translation>
     </message>
     <message>
         <source>Job aborted after {0} of {1} operations</source>
@@ -3107,6 +3119,30 @@ Načítať ako:</translation>
     <message>
         <source>{0} increment</source>
         <translation>Prírastok {0}</translation>
+    </message>
+</context>
+<context>
+    <name>ResumeChoicePanel</name>
+    <message>
+        <source>Sent, but not proven run: pick the first line the drawing does not show yet</source>
+        <extracomment>The rows&apos; data role: the operation index resuming there starts with. Rows listed at most (a resume from a checkpoint offers a window of lines).</extracomment>
+        <translation>Odoslané, ale vykonanie nie je preukázané: vyberte prvý riadok, ktorý na kresbe ešte nie je</translation>
+    </message>
+    <message>
+        <source>Resume from the chosen line</source>
+        <translation>Pokračovať od zvoleného riadku</translation>
+    </message>
+    <message>
+        <source>The machine goes there with the pen up, then carries on</source>
+        <translation>Stroj tam prejde so zdvihnutým perom a potom pokračuje</translation>
+    </message>
+    <message>
+        <source>from op {0}: {1}  {2}</source>
+        <translation>od op. {0}: {1}  {2}</translation>
+    </message>
+    <message>
+        <source>none of them: the job is at its end</source>
+        <translation>žiadna z nich: úloha je na konci</translation>
     </message>
 </context>
 <context>

@@ -15,6 +15,7 @@ the defaults of a new board (``$10=1``: no ``Bf:``; ``$20=0``; ``$22=0``).
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import json
 import os
@@ -24,6 +25,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import time
 import tty
 from collections import deque
 from pathlib import Path
@@ -125,13 +127,173 @@ class WireLog:
                 self.pending.clear()
             self._write({"event": "reply", "text": text})
 
+    def restart(self) -> None:
+        """The board restarted: nothing is unanswered any more, no line half read."""
+        self.pending.clear()
+        self.host.clear()
+        self.device.clear()
+        self._write({"event": "restart"})
+
     def close(self) -> None:
         self.file.close()
 
 
-def serve(exe: Path, workdir: Path) -> int:
-    """Bridge a new pty to the simulator until SIGTERM; the exit status."""
+class Board:
+    """The simulator as an Arduino GRBL board on its USB port: it may be unplugged, and
+    with ``restart_on_open`` it restarts whenever the port is opened (DTR resets it).
+
+    The port is a pty the helper does not hold open itself, so it sees when the
+    station opens it (the master's hang-up ends); a short boot later (the
+    bootloader's, during which the host's bytes are lost) a fresh simulator
+    starts from the EEPROM in WORKDIR: its position is 0, its planner empty,
+    and its banner the first thing the station reads.  Unplugged (SIGUSR1), the
+    port vanishes from ``link``; plugged back (SIGUSR2), a new one appears there
+    and the board restarts as a USB board powers up.  While unplugged the board
+    runs on, and the helper asks it ``?`` now and then, so its reports in the
+    wire log say when it stands idle.
+    """
+
+    BOOT_S = 0.3
+    ASK_EVERY_S = 0.2
+
+    def __init__(self, exe: Path, workdir: Path, link: Path | None, restart_on_open: bool):
+        self.exe, self.workdir, self.link = exe, workdir, link
+        self.restart_on_open = restart_on_open
+        self.log = WireLog(workdir / "wire.log")
+        self.sim = self._start_sim()
+        self.master: int | None = None
+        self.slave: int | None = None
+        self.opened = False
+        self.boot_at: float | None = None
+        self.asked_at = 0.0
+        self.plug()
+
+    def _start_sim(self) -> subprocess.Popen[bytes]:
+        sim = subprocess.Popen(
+            command(self.exe),
+            cwd=self.workdir,
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            bufsize=0,
+        )
+        assert sim.stdout is not None
+        os.set_blocking(sim.stdout.fileno(), False)
+        return sim
+
+    def restart(self) -> None:
+        """A power-up: a new simulator from the EEPROM (settings kept, position 0)."""
+        self._stop_sim()
+        self.log.restart()
+        self.sim = self._start_sim()
+
+    def _stop_sim(self) -> None:
+        if self.sim.poll() is None:
+            self.sim.terminate()
+            try:
+                self.sim.wait(timeout=3)
+            except subprocess.TimeoutExpired:
+                self.sim.kill()
+                self.sim.wait()
+
+    def plug(self) -> None:
+        master, slave = os.openpty()
+        tty.setraw(slave)
+        os.set_blocking(master, False)
+        self.master = master
+        path = os.ttyname(slave)
+        if self.restart_on_open:
+            # Not held open here: the master hangs up until the station opens the port.
+            os.close(slave)
+        else:
+            self.slave = slave
+        self.opened = False
+        if self.link is not None:
+            staging = self.link.with_name(f".{self.link.name}.new")
+            staging.unlink(missing_ok=True)
+            staging.symlink_to(path)
+            staging.replace(self.link)
+        self.path = path
+
+    def unplug(self) -> None:
+        if self.link is not None:
+            self.link.unlink(missing_ok=True)
+        for fd in (self.master, self.slave):
+            if fd is not None:
+                with contextlib.suppress(OSError):
+                    os.close(fd)
+        self.master = self.slave = None
+
+    def step(self) -> None:
+        """One turn of the relay: the port's state, the host's bytes, the board's."""
+        now = time.monotonic()
+        master = self.master
+        sim_out = self.sim.stdout
+        assert sim_out is not None
+        if master is not None and self.restart_on_open:
+            events = dict(_poll(master))
+            hung_up = bool(events.get(master, 0) & select.POLLHUP)
+            if not hung_up and not self.opened:
+                self.opened = True
+                self.boot_at = now + self.BOOT_S  # the reset line pulled: the board reboots
+            elif hung_up and self.opened:
+                self.opened = False
+        if self.boot_at is not None and now >= self.boot_at:
+            self.boot_at = None
+            self.restart()
+            sim_out = self.sim.stdout
+            assert sim_out is not None
+        if master is None and now - self.asked_at >= self.ASK_EVERY_S:
+            self.asked_at = now
+            self._to_sim(b"?")  # unplugged: the helper watches the board stand idle
+        readable = [sim_out] + ([master] if master is not None else [])
+        try:
+            ready, _, _ = select.select(readable, [], [], 0.02)
+        except (InterruptedError, ValueError, OSError):
+            return
+        if master is not None and master in ready:
+            try:
+                data = os.read(master, 4096)
+            except (BlockingIOError, OSError):
+                data = b""
+                time.sleep(0.01)  # hung up: nobody has the port open
+            if data and self.boot_at is None:
+                self.log.from_host(data)
+                self._to_sim(data)
+        if sim_out in ready:
+            try:
+                data = os.read(sim_out.fileno(), 4096)
+            except (BlockingIOError, OSError):
+                data = b""
+            if data:
+                self.log.from_device(data)
+                if self.master is not None and (self.opened or not self.restart_on_open):
+                    with contextlib.suppress(OSError):
+                        os.write(self.master, data)
+
+    def _to_sim(self, data: bytes) -> None:
+        assert self.sim.stdin is not None
+        with contextlib.suppress(BrokenPipeError, OSError):
+            self.sim.stdin.write(data)
+
+    def close(self) -> None:
+        self._stop_sim()
+        self.log.close()
+        self.unplug()
+
+
+def _poll(fd: int) -> list[tuple[int, int]]:
+    poller = select.poll()
+    poller.register(fd, select.POLLIN | select.POLLHUP)
+    return poller.poll(0)
+
+
+def serve(exe: Path, workdir: Path, link: Path | None = None, restart_on_open: bool = False) -> int:
+    """Bridge a pty to the simulator until SIGTERM; the exit status.
+
+    SIGUSR1 unplugs the board's USB port, SIGUSR2 plugs it back (see :class:`Board`).
+    """
     stopping = False
+    wanted: list[str] = []
 
     def stop(signum: int, frame: FrameType | None) -> None:
         nonlocal stopping
@@ -139,54 +301,39 @@ def serve(exe: Path, workdir: Path) -> int:
 
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
-    master, slave = os.openpty()
-    tty.setraw(slave)
-    os.set_blocking(master, False)
-    sim = subprocess.Popen(
-        command(exe), cwd=workdir, stdin=subprocess.PIPE, stdout=subprocess.PIPE, bufsize=0
-    )
-    assert sim.stdin is not None and sim.stdout is not None
-    log = WireLog(workdir / "wire.log")
-    print(os.ttyname(slave), flush=True)
+    signal.signal(signal.SIGUSR1, lambda *_: wanted.append("unplug"))
+    signal.signal(signal.SIGUSR2, lambda *_: wanted.append("plug"))
+    board = Board(exe, workdir, link, restart_on_open)
+    print(board.path, flush=True)
     try:
-        while not stopping and sim.poll() is None:
-            try:
-                readable, _, _ = select.select([master, sim.stdout], [], [], 0.05)
-            except InterruptedError:
-                continue
-            if master in readable:
-                try:
-                    data = os.read(master, 4096)
-                except (BlockingIOError, OSError):
-                    data = b""
-                if data:
-                    log.from_host(data)
-                    sim.stdin.write(data)
-            if sim.stdout in readable:
-                data = os.read(sim.stdout.fileno(), 4096)
-                if data:
-                    log.from_device(data)
-                    os.write(master, data)
+        while not stopping and board.sim.poll() is None:
+            while wanted:
+                what = wanted.pop(0)
+                if what == "unplug" and board.master is not None:
+                    board.unplug()
+                elif what == "plug" and board.master is None:
+                    board.plug()
+            board.step()
     finally:
-        if sim.poll() is None:
-            sim.terminate()
-            try:
-                sim.wait(timeout=3)
-            except subprocess.TimeoutExpired:
-                sim.kill()
-                sim.wait()
-        log.close()
-        os.close(master)
-        os.close(slave)
+        board.close()
     return 0
 
 
-def start(exe: Path, workdir: Path) -> subprocess.Popen[bytes]:
-    """The bridge in its own process, its first output line the device path."""
+def start(
+    exe: Path, workdir: Path, link: Path | None = None, *, restart_on_open: bool = False
+) -> subprocess.Popen[bytes]:
+    """The bridge in its own process, its first output line the device path.
+
+    ``link``: the port also appears there (and there again once plugged back);
+    ``restart_on_open``: the board restarts whenever the port is opened.
+    """
     shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
     root = Path(__file__).resolve().parent.parent.parent
+    extra = [] if link is None else ["--link", str(link)]
+    if restart_on_open:
+        extra.append("--restart-on-open")
     return subprocess.Popen(
-        [sys.executable, "-m", "tests.helpers.grbl_sim", str(exe), str(workdir)],
+        [sys.executable, "-m", "tests.helpers.grbl_sim", str(exe), str(workdir), *extra],
         cwd=root,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
@@ -212,4 +359,6 @@ def _write_default_eeprom(exe: Path, target: Path) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(serve(Path(sys.argv[1]), Path(sys.argv[2])))
+    _args = sys.argv[1:]
+    _link = Path(_args[_args.index("--link") + 1]) if "--link" in _args else None
+    sys.exit(serve(Path(_args[0]), Path(_args[1]), _link, "--restart-on-open" in _args))

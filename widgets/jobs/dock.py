@@ -66,6 +66,7 @@ from app.station import Station
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
 from widgets.jobs.registration_bar import RegistrationBar
+from widgets.jobs.resume_choice import ResumeChoicePanel
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.retranslate import Maker, Texts
@@ -203,6 +204,13 @@ class JobsDock(QDockWidget):
         layout.addWidget(self.registration)
         layout.addWidget(self._build_resume_offer())
         layout.addWidget(self._build_prompt())
+        self.resume_choice = ResumeChoicePanel(
+            runner,
+            self.preview,
+            self._source_line,
+            lambda: self.station.model.motion_lock_reason() is None,
+        )
+        layout.addWidget(self.resume_choice)
         layout.addWidget(self.preview, 1)
         layout.addLayout(self._build_progress())
         self.operation_label = QLabel("")
@@ -917,9 +925,12 @@ class JobsDock(QDockWidget):
 
     def _state_changed(self, *_args: object) -> None:
         state = self.runner.state
+        if self.runner.resume_choice is None:
+            self.resume_choice.withdraw()
         if state is not JobState.WAITING and self.runner.question is None:
             self.prompt.hide()
-            self.preview.mark_question(None)
+            if self.runner.resume_choice is None:
+                self.preview.mark_question(None)
         if state in (JobState.READY, JobState.PAUSED) and self.runner.program is not None:
             # Stepping through: show what the next Step will send before it is sent.
             self._show_operation(self.runner.done)
@@ -971,16 +982,22 @@ class JobsDock(QDockWidget):
         self.resume_button.setEnabled(
             can_move
             and self.runner.question is None
+            and self.runner.resume_choice is None
             and state in (JobState.PAUSED, JobState.PAUSING)
         )
         self.step_button.setEnabled(
-            loaded and can_move and not offer and state in (JobState.READY, JobState.PAUSED)
+            loaded
+            and can_move
+            and not offer
+            and self.runner.resume_choice is None
+            and state in (JobState.READY, JobState.PAUSED)
         )
         self.abort_button.setEnabled(state in ACTIVE_STATES)
         self.resume_checkpoint_button.setEnabled(can_move)
         self.continue_button.setEnabled(state is JobState.WAITING)
         self.again_button.setEnabled(answering)
         self.counted_button.setEnabled(answering)
+        self.resume_choice.update_enabled()
         why = self.tr(" — motion locked: {0}").format(lock) if lock else ""
         self.run_button.setToolTip(self.tr("Run the job from the start") + why)
 

@@ -639,6 +639,9 @@ class JobPreview(QWidget):
         )
         self.question_marker.setZValue(11)
         self.plot.addItem(self.question_marker)
+        #: The segments of lines sent but not proven run, for the operator's resume pick.
+        self.candidate_curve = self._curve(pg.mkPen(QUESTION_COLOUR, width=3))
+        self.candidate_curve.setZValue(9)
         self.plot.scene().sigMouseClicked.connect(self._clicked)
 
     def _curve(self, pen: object) -> pg.PlotDataItem:
@@ -666,6 +669,26 @@ class JobPreview(QWidget):
             self.question_marker.setData(x=_EMPTY, y=_EMPTY)
         else:
             self.question_marker.setData(x=[where[0]], y=[where[1]])
+
+    def mark_candidates(self, first: int | None, last: int = 0) -> None:
+        """Highlight the path of operations ``first … last - 1`` (None clears): the lines
+        that may or may not have run, among which the operator picks where to resume."""
+        program = self.program
+        if first is None or program is None or not self.axis_names or last <= first:
+            self.candidate_curve.setData(_EMPTY, _EMPTY)
+            return
+        y_name = self.axis_names[1] if len(self.axis_names) > 1 else None
+        path = program.preview_path(self.axis_names[0], y_name)
+        begin = int(np.searchsorted(path.ops, first, side="left"))
+        end = int(np.searchsorted(path.ops, last, side="left"))
+        # From where the first candidate starts (the vertex before it) to the last one's end.
+        xs = path.coords[max(begin - 1, 0) : end, 0]
+        ys = path.coords[max(begin - 1, 0) : end, 1]
+        if self.polar is not None:
+            points = [self.polar.project(float(x), float(y)) for x, y in zip(xs, ys, strict=True)]
+            xs = np.array([p[0] for p in points])
+            ys = np.array([p[1] for p in points])
+        self.candidate_curve.setData(xs, ys, connect="finite")
 
     def _where(self, index: int) -> tuple[float, float] | None:
         """Where the machine stands for operation ``index``: the last target before it."""
@@ -726,6 +749,7 @@ class JobPreview(QWidget):
         self.program = program
         self.done = 0
         self.question_marker.setData(x=_EMPTY, y=_EMPTY)
+        self.candidate_curve.setData(_EMPTY, _EMPTY)
         if program is None or not self.axis_names:
             self.path_geometry = None
             for curve in (self.travel_curve, self.work_curve):

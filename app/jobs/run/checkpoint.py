@@ -46,9 +46,17 @@ class CheckpointStore:
         self._fingerprint_cache = (program, fingerprint)
 
     def write(
-        self, program: Program, completed: int, placed: tuple[Program, Placement] | None = None
+        self,
+        program: Program,
+        completed: int,
+        placed: tuple[Program, Placement] | None = None,
+        sent: int | None = None,
     ) -> None:
         """Record operations ``[0, completed]`` as done; raises OSError when it cannot.
+
+        ``sent``: operations ``[0, sent)`` may have reached the machine (a streaming
+        dialect sends ahead of what is proven run): after a restart of the station the
+        ones between are those only the operator can judge.
 
         ``placed`` is the job as its file says and how ``program`` was put on the
         board from it (a registered drill job): kept, so that the file read
@@ -59,6 +67,7 @@ class CheckpointStore:
             "name": program.name,
             "source": str(program.source) if program.source is not None else None,
             "completed": completed,
+            **({"sent": sent} if sent is not None and sent > completed + 1 else {}),
             "time": datetime.now(UTC).isoformat(timespec="seconds"),
         }
         if placed is not None:
@@ -102,6 +111,22 @@ class CheckpointStore:
         ):
             return None
         return completed + 1
+
+    def sent(self, program: Program) -> int | None:
+        """How far an interrupted run of ``program`` may have sent (see :meth:`write`), if
+        its checkpoint says; None otherwise, or for one that cannot be read."""
+        try:
+            path = self.path(program)
+            info = path.stat()
+            if not stat.S_ISREG(info.st_mode) or info.st_size > MAX_CHECKPOINT_BYTES:
+                return None
+            record: Any = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        sent = record.get("sent") if isinstance(record, dict) else None
+        if not isinstance(sent, int) or not 0 < sent <= len(program):
+            return None
+        return sent
 
     def _base_fingerprint(self, base: Program) -> str:
         cached = self._base_cache

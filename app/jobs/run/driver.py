@@ -76,6 +76,31 @@ class UnsupportedOperation(LimitViolation):
         return f"{self.operation.source}: {self.operation.describe()} — {self.reason}"
 
 
+@dataclass(frozen=True)
+class ResumeChoice:
+    """Where an interrupted job may go on, when only the operator can say.
+
+    Operations before ``first`` are proven run (answered ``ok`` by a board
+    that answers once a line ran, or shown run by its reports); from
+    ``first`` to ``last - 1`` they were sent and may or may not have run.
+    Resuming at ``first`` sends them all again (a stroke may be drawn twice),
+    at ``last`` counts them all as run (one may be missing); the operator,
+    looking at the paper, picks.  ``default`` is offered only where nothing
+    that could draw is among them.  ``position_lost``: the board restarted, so
+    its position must be homed or checked before anything moves.
+    """
+
+    first: int
+    last: int
+    default: int | None
+    text: str
+    position_lost: bool = False
+
+    @property
+    def candidates(self) -> range:
+        return range(self.first, self.last + 1)
+
+
 class RunnerPort(Protocol):
     """The runner as a driver sees it."""
 
@@ -110,8 +135,13 @@ class RunnerPort(Protocol):
         """A streaming driver's progress: the first ``done`` operations are answered, the
         first ``executed`` (default: ``done``) known to have run."""
 
-    def record(self, completed: int) -> None:
-        """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace)."""
+    def record(self, completed: int, sent: int | None = None) -> None:
+        """Checkpoint operations ``[0, completed]`` as run (a streaming driver's own pace),
+        and ``[0, sent)`` as perhaps sent."""
+
+    @property
+    def checkpoint_sent(self) -> int | None:
+        """For a run resumed from its checkpoint: how far the interrupted run may have sent."""
 
     def fail(self, index: int, reason: str) -> None: ...
 
@@ -132,6 +162,14 @@ class RunnerPort(Protocol):
         ``again`` and ``done`` name the two answers (send it again / count it
         as done); the runner passes the answer to :meth:`JobDriver.decided`.
         """
+
+    def choose_resume(self, choice: ResumeChoice) -> None:
+        """Proof of what ran is partial (or the board lost its position): pause, and let the
+        operator pick the operation to go on from (the runner passes it to
+        :meth:`JobDriver.resume_at`)."""
+
+    def hold_for_operator(self, text: str) -> None:
+        """Pause with ``text`` until the operator acts (an alarm): never resumed on its own."""
 
     def finish(self) -> None: ...
 
@@ -194,6 +232,9 @@ class JobDriver:
 
     def decided(self, index: int, *, again: bool) -> None:
         """The operator's answer to :meth:`RunnerPort.ask`: send ``index`` again, or count it."""
+
+    def resume_at(self, index: int) -> None:
+        """The operator's pick after :meth:`RunnerPort.choose_resume`: go on from ``index``."""
 
     def link_lost(self) -> None:
         """The link went: whatever was under way may or may not have run."""

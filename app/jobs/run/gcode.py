@@ -30,7 +30,8 @@ from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
 
-from app.jobs.run.driver import JobDriver, RunnerPort
+from app.jobs.program import Program
+from app.jobs.run.driver import JobDriver, ResumeChoice, RunnerPort
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     AtReport,
@@ -96,6 +97,12 @@ class GcodeDriver(JobDriver):
         self._preparing = 0
         #: A pause took back the set-up before it went: it goes again first on the resume.
         self._redo_setup = False
+        #: The board reset itself since the job began or last resumed: its position is lost.
+        self._position_lost = False
+        #: The operation the operator chose to resume from (ResumeChoice), not yet gone on.
+        self._chosen: int | None = None
+        #: A ResumeChoice waits for the operator's pick.
+        self._choice_open = False
 
     def _locked(self) -> threading.RLock | nullcontext[None]:
         """The feeder's lock: the reader thread pulls and counts the stream under it."""
@@ -155,6 +162,9 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         self.stream = GcodeStream(runner.program, runner.station.profile, index)
+        sent = runner.checkpoint_sent if verify else None
+        if sent is not None and sent > index:
+            self.stream.written = sent  # what the interrupted run may have got to the machine
         self._follow()
         session = self.session
         # The program's coordinates are the machine's less the work offset it had when the
@@ -167,6 +177,9 @@ class GcodeDriver(JobDriver):
         self._confirming = False
         self._preparing = 0
         self._redo_setup = False
+        self._position_lost = False
+        self._chosen = None
+        self._choice_open = False
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -398,12 +411,14 @@ class GcodeDriver(JobDriver):
 
         A reset the station sent (to leave a hold) carries on once the machine
         is seen.  A reset of the board's own — its reset button, which is how
-        many GRBL machines are stopped by hand, or a power dip — pauses the
-        job: whoever pressed it did not ask for the machine to move again, so
-        only the operator's Resume goes on (and the recheck then decides from
-        where, as after a lost link).
+        many GRBL machines are stopped by hand, a power dip, or an Arduino
+        board restarting as its port reopens — may have lost its position too,
+        whether the job was running or already paused for a lost link: the job
+        stays paused, said once, until the operator has homed the machine or
+        checked where the tool is and chosen where to go on (:meth:`resume_at`).
         """
-        if self.stream is None or self.runner.state not in CLOCK_RUNS:
+        runner = self.runner
+        if self.stream is None or runner.state not in ACTIVE:
             return
         with self._locked():
             self.stream.pending.clear()
@@ -412,18 +427,66 @@ class GcodeDriver(JobDriver):
         self._asked_since_recheck = False
         session = self.session
         if session is not None and session.reset_by_device:
+            self._chosen = None  # a pick made before the restart was for a machine it forgot
+            self._waiting = None  # a WAIT under way is offered again if the pick is before it
             self._write_checkpoint(force=True)
-            self.runner.stop_short(
-                QCoreApplication.translate(
-                    "GcodeDriver",
-                    "The machine reset itself during the job (its reset button, or its "
-                    "power): the job is paused. Check the machine; Resume looks where it "
-                    "stands and carries on from there.",
-                )
-            )
+            if not (self._position_lost and self._choice_open):  # said once
+                self._position_lost = True
+                stream = self.stream
+                with self._locked():
+                    first = stream.answered if stream.settings.ok_when_done else stream.executed
+                    upto = self._sent_upto(stream, first)
+                self._choose(stream, first, upto)
             return
-        self.runner.note("The machine reset during the job; checking where it stands…")
+        if runner.state in CLOCK_RUNS:
+            self.proceed()
+
+    def resume_at(self, index: int) -> None:
+        """The operator chose ``index``: the machine is looked at, then the job goes on there."""
+        if self.stream is None:
+            return
+        self._chosen = index
+        self._choice_open = False
+        self._recheck = True
+        self._asked_since_recheck = False
         self.proceed()
+
+    def _choose(self, stream: GcodeStream, first: int, upto: int) -> None:
+        """Only the operator can say where to go on: offer ``first … upto`` (see ResumeChoice)."""
+        program = self.runner.program
+        assert program is not None
+        self._asked_since_recheck = False  # the pick looks at the machine again
+        last = min(upto, len(program))
+        draws = stream.draws_between(first, last)
+        if self._position_lost:
+            text = QCoreApplication.translate(
+                "GcodeDriver",
+                "The machine restarted during the job (its reset button, its power, or its "
+                "port reopened) and may have lost its position: the job is paused. Home it "
+                "($H) or check where the tool is (clear an alarm with $X), then choose the "
+                "line to resume from; {0} operation(s) from {1} were sent but not proven run.",
+            ).format(last - first, self._where(program, first))
+        else:
+            text = QCoreApplication.translate(
+                "GcodeDriver",
+                "{0} operation(s) from {1} were sent but their running is not proven: "
+                "choose the line to resume from (the candidates are highlighted).",
+            ).format(last - first, self._where(program, first))
+        if draws and last > first:
+            text += " " + QCoreApplication.translate(
+                "GcodeDriver",
+                "Some of them draw: resuming too early draws a stroke twice, too late "
+                "leaves one out.",
+            )
+        default = first if not draws or last == first else None
+        self._choice_open = True
+        self.runner.choose_resume(
+            ResumeChoice(first, last, default, text, position_lost=self._position_lost)
+        )
+
+    @staticmethod
+    def _where(program: Program, index: int) -> str:
+        return str(program[index].source) if index < len(program) else "the end"
 
     def _resume_after_recheck(self, stream: GcodeStream, report: StatusReport) -> None:
         runner = self.runner
@@ -436,7 +499,7 @@ class GcodeDriver(JobDriver):
             # into it would only be refused (error:9), and unlocking is the operator's call.
             # The job stays paused, still to be rechecked on the next Resume.
             self._asked_since_recheck = False
-            runner.stop_short(
+            runner.hold_for_operator(
                 QCoreApplication.translate(
                     "GcodeDriver",
                     "The machine is in alarm: the job stays paused. Check the machine, "
@@ -445,29 +508,48 @@ class GcodeDriver(JobDriver):
                 )
             )
             return
-        if report.state not in ("Idle", "Hold"):
+        if report.state == "Hold":
+            # Leaving a hold takes a reset, which drops what the planner held (the position
+            # stays: the hold is complete); the next report decides.
+            self._asked_since_recheck = False
+            session.soft_reset()
+            return
+        if report.state != "Idle":
             return  # still finishing what it had: the next report decides
         here = self._here(report)
+        # What is proven run: every answered line on a board that answers once a line ran;
+        # on GRBL, which answers once a line is planned, only what its reports showed run —
+        # a reset whose banner was lost with the link takes the rest of the planner with it.
+        # Where the machine stands then proves how far it got, when only one place fits.
         with session.feeder.lock:
-            ran = stream.ran_through(here) if report.state == "Idle" else None
-        if ran is not None:
-            start = ran
-            unanswered = ran - stream.answered
-            note = "every answered line ran" + (
-                f", and {unanswered} more whose answer was lost" if unanswered else ""
-            )
-        else:
-            start = stream.executed
-            again = stream.answered - stream.executed
-            note = f"{again} operation(s) may not have run and are sent again"
+            first = stream.answered if stream.settings.ok_when_done else stream.executed
+            upto = self._sent_upto(stream, first)
+            if self._chosen is not None:
+                start = self._chosen
+                note = f"from {self._where(program, start)}, as the operator chose"
+            elif self._position_lost:
+                start = None
+            else:
+                start = stream.stands_after(here, first, upto)
+                if start is not None:
+                    unanswered = start - stream.answered
+                    note = "every answered line ran" + (
+                        f", and {unanswered} more whose answer was lost" if unanswered > 0 else ""
+                    )
+                elif not stream.draws_between(first, upto):
+                    start = first
+                    note = f"{upto - first} operation(s) that draw nothing are sent again"
+        if start is None:
+            self._choose(stream, first, upto)
+            return
         self._recheck = False
+        self._chosen = None
+        self._position_lost = False
         self._resume_at = start
         axes = [a.name for a in runner.station.profile.axes]
         way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
         with session.feeder.lock:
             stream.rewind(start)
-        if report.state == "Hold":
-            session.soft_reset()
         if start >= len(program):
             runner.note(f"The machine is back: {note}")
             runner.finish()
@@ -475,9 +557,8 @@ class GcodeDriver(JobDriver):
         planned = resume_state(program, start, axes)
         # Its moves are G90 lines, so work coordinates: the offset the board has now (a
         # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
-        # Leaving a hold takes a soft reset, which clears GRBL's G92 too (G54…G59 stay: the
-        # station sets none, so they are taken as 0).
-        now = () if report.state == "Hold" else report.wco or ()
+        # (G54…G59 stay: the station sets none, so they are taken as 0.)
+        now = report.wco or ()
         shift = {
             name: self._offset(self._origin, i) - self._offset(now, i)
             for i, name in enumerate(axes)
@@ -556,4 +637,4 @@ class GcodeDriver(JobDriver):
         if not force and now - self._checkpoint_at < CHECKPOINT_EVERY_S:
             return
         self._checkpoint_at = now
-        runner.record(stream.executed - 1)
+        runner.record(stream.executed - 1, max(stream.written, stream.answered))

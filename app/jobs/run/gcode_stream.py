@@ -484,23 +484,58 @@ class GcodeStream:
         """Operation ``index``'s line left for the device (it may run without an answer back)."""
         self.written = max(self.written, index + 1)
 
-    def ran_through(self, mpos: Sequence[float]) -> int | None:
-        """After a lost link, for an idle machine at ``mpos``: the operations known to have run.
+    def stands_after(self, mpos: Sequence[float], lo: int, hi: int) -> int | None:
+        """For an idle machine at ``mpos`` that ran operations in order, at most ``[0, hi)``
+        and at least ``[0, lo)``: the first operation it cannot have run, when its position
+        proves it; None when it does not.
 
         The device runs what it received in order, so an idle machine stands
-        where the last line it got leaves it.  The latest operation among those
-        written but unanswered (or the last answered one) that ends there is
-        taken — unless the machine also stands where the executed boundary
-        leaves it, because then "ran them all and came back" cannot be told
-        from "lost them" (a reset), and only the cautious answer is safe.
-        None means: carry on from the executed boundary.
+        where the last operation it ran leaves it.  Only a place known for
+        certain counts (before the file's first move the machine stood wherever
+        it was), and only one place: a path that passes the same point twice
+        among the candidates leaves it open whether the loop between ran (the
+        lines may have been lost on the wire), so it proves nothing.  Operations
+        that do not move (a pen change) share the place of the move before them:
+        the earliest is taken, so one is sent again rather than skipped (the way
+        back sets the pen anyway).
         """
-        for end in range(max(self.written, self.answered), self.answered - 1, -1):
-            if self.at_end_of(end, mpos):
-                if end != self.executed and self.at_end_of(self.executed, mpos):
-                    return None
-                return end
-        return None
+        path = self.program.path(self._axis_order)
+        count = min(len(mpos), path.coords.shape[1]) if len(path) else 0
+        here = np.array([float(mpos[i]) for i in range(count)])
+        places: set[int] = set()
+        first: int | None = None
+        for end in range(lo, hi + 1):
+            # Vertices before operation ``end``: its place is the last of them.
+            vertex = int(np.searchsorted(path.ops, end, side="left"))
+            if vertex == 0:
+                continue  # before any move: not a place known
+            expected = path.coords[vertex - 1][:count]
+            known = ~np.isnan(expected)
+            if not known.any() or float(np.max(np.abs(expected[known] - here[known]))) > (
+                AT_POSITION_MM
+            ):
+                continue
+            # Moves in a row that end at the same point (a move of nothing, one of another
+            # axis) are one place: standing there the machine has not gone away and back.
+            while vertex > 1 and np.array_equal(
+                path.coords[vertex - 2][:count], path.coords[vertex - 1][:count], equal_nan=True
+            ):
+                vertex -= 1
+            places.add(vertex)
+            first = end if first is None else first
+        return first if len(places) == 1 else None
+
+    def draws_between(self, lo: int, hi: int) -> bool:
+        """Whether any operation in ``[lo, hi)`` moves with the pen down (a stroke).
+
+        Pen changes and pen-up travel sent again draw nothing; a stroke may.
+        """
+        if hi <= lo:
+            return False
+        path = self.program.path(self._axis_order)
+        first = int(np.searchsorted(path.ops, lo, side="left"))
+        last = int(np.searchsorted(path.ops, hi, side="left"))
+        return bool(path.pen[first:last].any())
 
     def rewind(self, index: int) -> None:
         """Forget everything unanswered; the next line sent is operation ``index``."""
@@ -509,12 +544,3 @@ class GcodeStream:
         self.written = index
         self.next_index = self.answered = self.executed = index
         self._answered_at_last_report = index
-
-    def at_end_of(self, index: int, mpos: Sequence[float]) -> bool:
-        """Whether a machine at ``mpos`` stands where operation ``index - 1`` left it."""
-        axes = [a.name for a in self.profile.axes]
-        expected = resume_state(self.program, index, axes).position
-        for i, name in enumerate(axes[: len(mpos)]):
-            if name in expected and abs(expected[name] - mpos[i]) > AT_POSITION_MM:
-                return False
-        return True

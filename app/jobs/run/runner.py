@@ -32,14 +32,14 @@ from app.jobs.estimate import Estimate, estimate, parameters_from_model
 from app.jobs.program import LimitViolation, Program, check_limits
 from app.jobs.registration import Placement
 from app.jobs.run.checkpoint import CheckpointStore
-from app.jobs.run.driver import LINK_DOWN, JobDriver, UnsupportedOperation
+from app.jobs.run.driver import LINK_DOWN, JobDriver, ResumeChoice, UnsupportedOperation
 from app.jobs.run.drivers import driver_for
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
 from app.machines.session import MachineSession
 from app.machines.supervision import MotionFault
 from app.station import Station
 
-__all__ = ["JobRunner", "JobState", "UnsupportedOperation"]
+__all__ = ["JobRunner", "JobState", "ResumeChoice", "UnsupportedOperation"]
 
 ETA_INTERVAL_MS = 1000
 #: A streaming job answers a line every millisecond or so: the views hear of progress at
@@ -78,6 +78,8 @@ class JobRunner(QObject):
     waitingForOperator = Signal(str)
     #: Only the operator can tell whether an operation ran: question, "again" and "done" labels.
     decisionNeeded = Signal(str, str, str)
+    #: Only the operator can say where an interrupted job goes on: a ResumeChoice.
+    resumeChoiceNeeded = Signal(object)
     message = Signal(str)
     programChanged = Signal()
 
@@ -98,6 +100,12 @@ class JobRunner(QObject):
         self._single_step = False
         self._pause_requested = False
         self._question: int | None = None  # the operation the operator is asked about
+        self._choice: ResumeChoice | None = None  # where to go on, for the operator to pick
+        #: While a run resumed from its checkpoint begins: how far the interrupted one sent.
+        self._checkpoint_sent: int | None = None
+        #: Paused until the operator acts (an alarm, a board that restarted): nothing resumes
+        #: it on its own (the scripting API ends the job instead).
+        self._operator_hold = False
         self._failing = False  # a checkpoint write failed and the job is being failed
         self._elapsed_before = 0.0
         self._running_since: float | None = None
@@ -175,6 +183,18 @@ class JobRunner(QObject):
     def question(self) -> int | None:
         """The operation whose fate the operator is asked to decide (see ``decisionNeeded``)."""
         return self._question
+
+    @property
+    def resume_choice(self) -> ResumeChoice | None:
+        """Where the operator may resume the paused job from, when only they can say."""
+        return self._choice
+
+    @property
+    def needs_operator(self) -> bool:
+        """Paused until the operator acts: a question, a resume line to pick, an alarm."""
+        return self._state is JobState.PAUSED and (
+            self._question is not None or self._choice is not None or self._operator_hold
+        )
 
     @property
     def resume_available(self) -> int | None:
@@ -331,7 +351,43 @@ class JobRunner(QObject):
                     )
                 )
                 return
+            if self._choice is not None:
+                self.message.emit(
+                    QCoreApplication.translate("JobRunner", "Choose the line to resume from first")
+                )
+                return
+            self._operator_hold = False
             self._continue(single_step=False)
+
+    def resume_at(self, index: int) -> None:
+        """The operator's pick of where the paused job goes on (one of the choice's candidates)."""
+        choice = self._choice
+        if choice is None or self._state is not JobState.PAUSED or index not in choice.candidates:
+            return
+        if self._refuse_for_link():
+            return
+        self._choice = None
+        self._operator_hold = False
+        self._single_step = False
+        self._pause_requested = False
+        self._set_state(JobState.RUNNING)
+        self._driver.resume_at(index)
+
+    def give_up(self) -> None:
+        """End a job paused for the operator as failed, when nobody is there to act (a script).
+
+        The machine stands (paused), so nothing is stopped; the checkpoint stays and
+        what was said about the pause is the reason.
+        """
+        if not self.needs_operator:
+            return
+        self._driver.stopped()
+        self._driver.forget()
+        self._question = None
+        self._choice = None
+        self._operator_hold = False
+        self._offer_checkpoint()
+        self._set_state(JobState.FAILED)
 
     def decide(self, *, again: bool) -> None:
         """The operator's answer: send the operation in question again, or count it as done."""
@@ -355,7 +411,8 @@ class JobRunner(QObject):
                 )
                 return
             self._begin(0, single_step=True, verify=False)
-        elif self._state is JobState.PAUSED and self._question is None:
+        elif self._state is JobState.PAUSED and self._question is None and self._choice is None:
+            self._operator_hold = False
             self._continue(single_step=True)
 
     def abort(self) -> None:
@@ -368,6 +425,8 @@ class JobRunner(QObject):
         self._driver.stopped()
         self._driver.forget()
         self._question = None
+        self._choice = None
+        self._operator_hold = False
         # The resume offer first, so views reacting to the state change see it.
         self._offer_checkpoint()
         self._set_state(JobState.ABORTED)
@@ -396,7 +455,11 @@ class JobRunner(QObject):
             return
         index = self._resume_available
         self._resume_available = None
-        self._begin(index, single_step=False, verify=True)
+        self._checkpoint_sent = self._checkpoints.sent(self._program)
+        try:
+            self._begin(index, single_step=False, verify=True)
+        finally:
+            self._checkpoint_sent = None
 
     def checkpoint_placement(self, base: Program) -> Placement | None:
         """How an interrupted run of ``base`` (as read from its file) was put on the board."""
@@ -478,9 +541,13 @@ class JobRunner(QObject):
         if self._executed != told_executed:
             self.executedChanged.emit(self._executed, total)
 
-    def record(self, completed: int) -> None:
+    def record(self, completed: int, sent: int | None = None) -> None:
         if self._program is not None and self._state in ACTIVE:
-            self._write_checkpoint(self._program, completed)
+            self._write_checkpoint(self._program, completed, sent)
+
+    @property
+    def checkpoint_sent(self) -> int | None:
+        return self._checkpoint_sent
 
     def fail(self, index: int, reason: str) -> None:
         if self._state not in ACTIVE:
@@ -489,6 +556,8 @@ class JobRunner(QObject):
         if session is not None and self.station.model.link_state not in LINK_DOWN:
             session.stop_all()
         self._driver.stopped()
+        self._choice = None
+        self._operator_hold = False
         self._offer_checkpoint()
         self._set_state(JobState.FAILED)
         self.message.emit(
@@ -518,6 +587,20 @@ class JobRunner(QObject):
     def stop_short(self, text: str) -> None:
         self._set_state(JobState.PAUSED)
         self.message.emit(text)
+
+    def hold_for_operator(self, text: str) -> None:
+        self._operator_hold = True
+        self._pause_requested = False
+        self._set_state(JobState.PAUSED)
+        self.message.emit(text)
+
+    def choose_resume(self, choice: ResumeChoice) -> None:
+        self._choice = choice
+        self._operator_hold = False
+        self._pause_requested = False
+        self._set_state(JobState.PAUSED)
+        self.message.emit(choice.text)
+        self.resumeChoiceNeeded.emit(choice)
 
     def pause_reached(self) -> None:
         self._single_step = False
@@ -563,6 +646,8 @@ class JobRunner(QObject):
         self._running_since = None
         self._single_step = single_step
         self._pause_requested = False
+        self._choice = None
+        self._operator_hold = False
         driver.begin(index, verify=verify)
         self.progressChanged.emit(self._done, len(self._program))
         self._told = (self._done, self._executed)
@@ -701,6 +786,8 @@ class JobRunner(QObject):
         self._done = 0
         self._set_executed(0)
         self._question = None
+        self._choice = None
+        self._operator_hold = False
         self._driver.forget()
         self._resume_available = None
         self._single_step = False
@@ -736,7 +823,7 @@ class JobRunner(QObject):
 
     # --- checkpoint ----------------------------------------------------------
 
-    def _write_checkpoint(self, program: Program, completed: int) -> bool:
+    def _write_checkpoint(self, program: Program, completed: int, sent: int | None = None) -> bool:
         """Record progress; a job that cannot record it stops (FAILED) rather than run on.
 
         Without its checkpoint an interrupted job could only be run again from the
@@ -744,7 +831,7 @@ class JobRunner(QObject):
         operator can still see where it stands.
         """
         try:
-            self._checkpoints.write(program, completed, self._placed)
+            self._checkpoints.write(program, completed, self._placed, sent)
         except OSError as exc:
             if self._state in ACTIVE and not self._failing:
                 self._failing = True
