@@ -10,8 +10,11 @@ job's error to its file line).
 
 Real-time bytes bypass the stream: ``?`` every ``status_ms`` keeps positions
 and the machine state fresh (and proves the device alive: three unanswered
-show the link stale, amber, and 2 s without a reply lost, red), ``!`` holds,
-``~`` resumes, 0x18 resets.  A stop is a feed hold followed by a soft reset
+show the link stale, amber, and :data:`SILENCE_S` without a reply lost, red), ``!`` holds,
+``~`` resumes, 0x18 resets.  A board given up as silent keeps its port
+open (reopening an Arduino's port restarts it) and is asked on; its state is
+intact when its first status report after the silence follows no banner (it
+did not restart) and shows no alarm.  A stop is a feed hold followed by a soft reset
 once the machine stands, which throws away what the device had buffered
 without losing its position.
 """
@@ -42,7 +45,7 @@ from app.machines.gcode.feeder import (
 )
 from app.machines.gcode.line_targets import line_motion
 from app.machines.motion_gate import Refusal
-from app.machines.session import MachineSession
+from app.machines.session import PENDING, MachineSession
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
 from protocol.gcode.codec import (
@@ -66,8 +69,12 @@ from protocol.gcode.streaming import LineStreamer, StreamMode
 
 _log = logging.getLogger(__name__)
 
-#: No reply to status queries for this long: the device is gone (the station reconnects).
-SILENCE_S = 2.0
+#: No reply to status queries for this long: the link is lost (a job pauses) and the board is
+#: asked on until it answers.  A board that answers a status query within milliseconds and
+#: then goes silent for seconds has stopped listening, but a few seconds can be a host's or a
+#: USB bridge's hiccup that loses nothing: a 2.5 s freeze of the board's replies mid-job must
+#: not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`).
+SILENCE_S = 4.0
 #: Status queries unanswered before the link is shown stale (amber), and the least time.
 STALE_QUERIES = 3
 STALE_AFTER_MIN_S = 0.5
@@ -190,7 +197,11 @@ class GcodeSession(MachineSession):
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
+        #: After a silence: the first status report since, and whether a banner came first.
+        self._report_after_silence: StatusReport | None = None
+        self._restarted_in_silence = False
         self._autotick = autotick
+        self._watch_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
         self._timer.timeout.connect(self.tick)
@@ -659,11 +670,46 @@ class GcodeSession(MachineSession):
         if requested is not None and now - requested > RESET_AFTER_S:
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
+        # Time the station itself was not running is nobody's silence (a busy computer).
+        self._last_heard = min(now, self._last_heard + self._station_stall(now))
         silent = now - self._last_heard
         self._watch_silence(silent, self.stale_after_s, SILENCE_S)
         if self.device_answered and silent > SILENCE_S:
             # The link status says it ("lost — no reply for 2.2 s"): no second message.
             self._last_heard = now
+
+    # --- a silent board ----------------------------------------------------------------
+
+    def _silence_began(self) -> str:
+        """What was under way is forgotten as when the link goes: a job looks at the board
+        again before it goes on (the port stays open, so the board may still answer it)."""
+        self._report_after_silence = None
+        self._restarted_in_silence = False
+        self._reset_requested_at = None
+        self._jog = [0] * self.axis_count
+        self._jog_target = None
+        self._jog_cancelling = False
+        self._quiet_stop = False
+        with self.feeder.lock:
+            lost = self.feeder.clear()
+        return (
+            QCoreApplication.translate("GcodeSession", "; {0} unanswered line(s)").format(len(lost))
+            if lost
+            else ""
+        )
+
+    def _recovery_verdict(self) -> object:
+        """Intact: a status report came, no banner before it, and no alarm in it."""
+        report = self._report_after_silence
+        if self._restarted_in_silence:
+            return QCoreApplication.translate(
+                "GcodeSession", "it restarted meanwhile (its banner came): what it had is gone"
+            )
+        if report is None:
+            return PENDING
+        if report.state == "Alarm":
+            return QCoreApplication.translate("GcodeSession", "it is in alarm")
+        return None
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
@@ -749,7 +795,7 @@ class GcodeSession(MachineSession):
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
                 continue
             self._last_heard = self.clock.now()
-            self._device_answered()
+            self._device_answered(proof=False)  # after a silence, a status report decides
             self.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
@@ -778,6 +824,8 @@ class GcodeSession(MachineSession):
                 self._tell_written(self.feeder.release())
             elif isinstance(reply, Banner):
                 ours = isinstance(verdict, BannerSeen) and verdict.ours
+                if self.silent_since is not None and not ours:
+                    self._restarted_in_silence = True
                 self.replyText.emit(reply.text)
                 self.query_status()  # a board that just started: where is it, how big its planner
                 if ours:
@@ -979,6 +1027,9 @@ class GcodeSession(MachineSession):
         self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
+        if self.silent_since is not None:
+            self._report_after_silence = report
+            self._check_recovery()
 
 
 #: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).
