@@ -78,8 +78,9 @@ class MachineSession(QObject):
         self._silent_since: float | None = None
         self._answered_after_silence = False
         self._probed_at: float | None = None
-        #: Whether ticks come from a real-time timer, whose lateness is the station's own.
-        self._watch_stalls = False
+        #: Whether a late tick's lateness is the station's own, not counted as the device's
+        #: silence (set by dialects whose ticks come from a real-time timer).
+        self.discounts_stalls = False
         self._ticked_at: float | None = None
 
     # --- state the widgets read ------------------------------------------------
@@ -350,7 +351,7 @@ class MachineSession(QObject):
         meanwhile may not have been read yet, so that time is nobody's silence.
         """
         last, self._ticked_at = self._ticked_at, now
-        if not self._watch_stalls or last is None:
+        if not self.discounts_stalls or last is None:
             return 0.0
         return max(0.0, now - last - self.period_ms / 1000 - STALL_GRACE_S)
 

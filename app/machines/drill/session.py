@@ -120,7 +120,7 @@ class DrillSession(MachineSession):
         #: After a silence: until when the drill may still be running the command it had.
         self._quiet_after: float | None = None
         self._autotick = autotick
-        self._watch_stalls = autotick  # a real-time timer ticks: its lateness is ours
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(TICK_MS)
         self._timer.timeout.connect(self.tick)

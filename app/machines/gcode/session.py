@@ -197,11 +197,13 @@ class GcodeSession(MachineSession):
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
-        #: After a silence: the first status report since, and whether a banner came first.
+        #: After a silence: when the board was first heard again, the first status report
+        #: made after that had settled, and whether a banner came meanwhile.
+        self._heard_again_at: float | None = None
         self._report_after_silence: StatusReport | None = None
         self._restarted_in_silence = False
         self._autotick = autotick
-        self._watch_stalls = autotick  # a real-time timer ticks: its lateness is ours
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
         self._timer.timeout.connect(self.tick)
@@ -224,6 +226,12 @@ class GcodeSession(MachineSession):
     def stale_after_s(self) -> float:
         """Silence shown amber: a few status queries (one each ``status_ms``) unanswered."""
         return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
+
+    @property
+    def recovery_settle_s(self) -> float:
+        """After a silence, replies held back on the way come first: the board's state is
+        judged from a report made this long after it was heard again (a few queries)."""
+        return self.stale_after_s
 
     @property
     def machine_state(self) -> str:
@@ -683,6 +691,7 @@ class GcodeSession(MachineSession):
     def _silence_began(self) -> str:
         """What was under way is forgotten as when the link goes: a job looks at the board
         again before it goes on (the port stays open, so the board may still answer it)."""
+        self._heard_again_at = None
         self._report_after_silence = None
         self._restarted_in_silence = False
         self._reset_requested_at = None
@@ -699,11 +708,13 @@ class GcodeSession(MachineSession):
         )
 
     def _recovery_verdict(self) -> object:
-        """Intact: a status report came, no banner before it, and no alarm in it."""
+        """Intact: no banner came, and a status report made once the board's held-back
+        replies were through (a report from before a restart would prove nothing) shows no
+        alarm."""
         report = self._report_after_silence
         if self._restarted_in_silence:
             return QCoreApplication.translate(
-                "GcodeSession", "it restarted meanwhile (its banner came): what it had is gone"
+                "GcodeSession", "it restarted meanwhile (its banner came), so what it had is gone"
             )
         if report is None:
             return PENDING
@@ -795,6 +806,8 @@ class GcodeSession(MachineSession):
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
                 continue
             self._last_heard = self.clock.now()
+            if self.silent_since is not None and self._heard_again_at is None:
+                self._heard_again_at = self._last_heard
             self._device_answered(proof=False)  # after a silence, a status report decides
             self.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:
@@ -1028,7 +1041,9 @@ class GcodeSession(MachineSession):
         self.statusChanged.emit(report)
         self._feed_jog()
         if self.silent_since is not None:
-            self._report_after_silence = report
+            heard = self._heard_again_at
+            if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
+                self._report_after_silence = report
             self._check_recovery()
 
 

@@ -114,7 +114,7 @@ class StageSession(MachineSession):
         self._timer.setInterval(self._period_ms)
         self._timer.timeout.connect(self.tick)
         self._autotick = autotick
-        self._watch_stalls = autotick  # a real-time timer ticks: its lateness is ours
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.dataReceived.connect(self._on_data)

@@ -131,13 +131,13 @@ class Usb3Session(MachineSession):
         self._asked_at: float | None = None  # the last G; asked because the unit was quiet
         #: After a silence: per axis, the counts the unit may stand at (from where it was to
         #: where the moves sent take it), and whether it has been asked where it stands.
-        self._books: list[tuple[int, int]] = []
+        self._books: list[tuple[int, int] | None] = []
         self._recovery_asked = False
         #: Which settings reports came since the link opened (the first always counts).
         self._reported: set[str] = set()
         self._stop_command = stop_command
         self._autotick = autotick
-        self._watch_stalls = autotick  # a real-time timer ticks: its lateness is ours
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(TICK_MS)
         self._timer.timeout.connect(self.tick)
@@ -308,9 +308,13 @@ class Usb3Session(MachineSession):
 
     def _silence_began(self) -> str:
         """Where each axis may stand when the unit answers again: between where it was last
-        reported and where the moves sent were taking it (it runs them out meanwhile)."""
+        reported and where the moves sent were taking it (it runs them out meanwhile).
+        An axis not heard of since the link opened has no such place (None)."""
         self._books = []
         for axis in range(min(3, self.axis_count)):
+            if self._reported_at[axis] is None:
+                self._books.append(None)
+                continue
             heading = self._heading[axis]
             here = self._counts[axis]
             there = heading[0] if heading is not None else here
@@ -340,7 +344,10 @@ class Usb3Session(MachineSession):
         if not self._recovery_asked or any(self._asking[: len(self._books)]):
             return PENDING
         moved = []
-        for axis, (low, high) in enumerate(self._books):
+        for axis, books in enumerate(self._books):
+            if books is None:
+                continue  # nothing to contradict: a job asks where it stands before moving it
+            low, high = books
             count = self._counts[axis]
             if not low <= count <= high:
                 thread = self.threads[axis]
@@ -405,6 +412,8 @@ class Usb3Session(MachineSession):
 
     def _check_end_switches(self, now: float) -> None:
         """An axis silent short of where the station's moves were taking it is at a switch."""
+        if self.silent_since is not None:
+            return  # the whole unit was silent: it is asked where its axes stand first
         for axis, heading in enumerate(self._heading):
             reported = self._reported_at[axis]
             if heading is None or axis >= self.axis_count:
