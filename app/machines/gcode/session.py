@@ -588,11 +588,20 @@ class GcodeSession(MachineSession):
             self._send_jog_step()  # at once: the key must reach the wire now
 
     def _end_jog(self) -> None:
-        """The operator let go (or changed direction): the machine brakes now."""
+        """The operator let go (or changed direction, or the dead-man ended it): brake now.
+
+        Once a step of this jog went out the board is told, whatever the last
+        report said: a report made before the board took the step (late, on a
+        busy computer) still says Idle, and the steps planned would run out.
+        A jog cancel to a board that stands does nothing.
+        """
+        stepped = self._jog_target is not None
         self._jog_target = None
         self._jog_ends = []
         self._jog_told_end = False
-        if not self.link.is_open or not (self._jog_unanswered or self._machine_moving()):
+        if not self.link.is_open:
+            return
+        if not (stepped or self._jog_unanswered or self._machine_moving()):
             return
         if self.jogs_with_command:
             self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
@@ -623,8 +632,29 @@ class GcodeSession(MachineSession):
             now = self.clock.now()
             self._jog_ends = [end for end in self._jog_ends if end > now]
             planned = len(self._jog_ends)
-        if planned < JOG_BLOCKS_AHEAD:
+        if planned < JOG_BLOCKS_AHEAD and not self._jog_lead_full():
             self._send_jog_step()
+
+    def _jog_lead_full(self) -> bool:
+        """Whether the steps sent already lead the reported position by a step or more.
+
+        By the board's own reports, not the station's clock: on a busy computer
+        (or a board running below real time) the timed estimate lets steps pile
+        up in the planner, and a release whose cancel is lost would leave the
+        machine to run them all out.  So at most :data:`JOG_BLOCKS_AHEAD` steps
+        ever lead where the board says it is.
+        """
+        target = self._jog_target
+        if target is None:
+            return False
+        for axis, direction in enumerate(self._jog):
+            if not direction:
+                continue
+            step = self.model.profile.axes[axis].max_speed * JOG_SPEED_SHARE * JOG_STEP_S
+            lead = (target[axis] - self.model.axes[axis].position) * direction
+            if lead > (JOG_BLOCKS_AHEAD - 1) * step + JOG_RESOLUTION:
+                return True
+        return False
 
     def _send_jog_step(self) -> None:
         """One step of the held jog, ending inside the travel; none once the travel ends."""
