@@ -49,7 +49,7 @@ PENDING = _Pending()
 class MachineSession(QObject):
     frameSent = Signal(object, bytes)  # decoded message, raw bytes
     frameReceived = Signal(object, bytes)  # decoded message or a rejected one, raw bytes
-    linkLost = Signal()  # the device fell silent: the station reopens the link
+    linkLost = Signal()  # the device fell silent (port open): it is asked on until it answers
     ticked = Signal()  # one period passed (station-clock time for whoever waits on the device)
     #: A held jog ended without a release (dead-man or travel end): forget what is held.
     jogEnded = Signal(str)
