@@ -423,3 +423,33 @@ def test_a_grbl_job_after_g92_silenced_mid_way_ends_at_the_same_machine_position
     position = grbl.gcode_emulator.position()
     assert (position["X"], position["Y"]) == pytest.approx((12.0, 13.0), abs=1e-3)
     assert grbl.gcode_emulator.work_offset()["X"] == pytest.approx(10.0)
+
+
+def test_a_stop_asked_for_while_the_board_is_silent_is_carried_out_when_it_answers(
+    grbl: StationHarness, tmp_path: Path
+) -> None:
+    """The operator's stop went into a silent line (hold and reset both lost): once the
+    board is heard again it is held and reset, not left to run out the move it had."""
+    from app.jobs.loaders import JobOptions, load_job
+
+    profile = grbl.station.profile
+    assert profile.gcode is not None
+    source = tmp_path / "slow.gcode"
+    source.write_text("G21 G90\nG0 X10 Y10\nG1 X290 F300\nG0 X0 Y0\n", encoding="utf-8")
+    options = JobOptions(gcode=profile.gcode, machine_title=profile.title)
+    runner = JobRunner(grbl.station, tmp_path / "checkpoints")
+    assert runner.load(load_job(source, ["X", "Y"], options)) == []
+    runner.start()
+    board = grbl.gcode_emulator
+    grbl.run_until(lambda: board.position()["X"] > 12.0, timeout=20)  # on its 56 s move
+    grbl.loopback.set_manipulator(_silence(Direction.TO_DEVICE, Direction.TO_HOST))
+    runner.abort()  # its feed hold, and the reset after it, are lost on the way
+    session = grbl.gcode_session
+    grbl.run_until(lambda: grbl.station.model.link_state is LinkState.LOST, timeout=SILENCE_S + 1)
+    assert board.state in ("Run", "Cycle") or board.position()["X"] < 290.0  # still moving
+    grbl.loopback.set_manipulator(None)
+    grbl.run_until(lambda: not session.stopping and session.machine_state == "Idle", timeout=10)
+    stopped_at = board.position()["X"]
+    assert stopped_at < 100.0  # held once heard again, far short of X 290
+    grbl.run(3.0)
+    assert board.position()["X"] == stopped_at  # and it stays there

@@ -197,6 +197,9 @@ class GcodeSession(MachineSession):
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
+        #: A stop went out and no report since its reset has shown the board standing: on a
+        #: silent line its hold and reset may both have been lost.
+        self._stop_unconfirmed = False
         #: After a silence: when the board was first heard again, the first status report
         #: made after that had settled, and whether a banner came meanwhile.
         self._heard_again_at: float | None = None
@@ -445,6 +448,7 @@ class GcodeSession(MachineSession):
             self._dropped_by_stop = len(self.feeder.discard_queued())
             self.feed_hold()
         self._reset_requested_at = self.clock.now()
+        self._stop_unconfirmed = True  # until a report shows the board standing
         self.query_status()
 
     def motion_stopped(self) -> bool:
@@ -705,7 +709,7 @@ class GcodeSession(MachineSession):
             self._pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
         requested = self._reset_requested_at
-        if requested is not None and now - requested > RESET_AFTER_S:
+        if requested is not None and now - requested > RESET_AFTER_S and self.silent_since is None:
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
         # Time the station itself was not running is nobody's silence (a busy computer).
@@ -724,7 +728,7 @@ class GcodeSession(MachineSession):
         self._heard_again_at = None
         self._report_after_silence = None
         self._restarted_in_silence = False
-        self._reset_requested_at = None
+        # A stop under way is kept: it is carried out once the board is heard again.
         self._jog = [0] * self.axis_count
         self._jog_target = None
         self._jog_cancelling = False
@@ -736,6 +740,14 @@ class GcodeSession(MachineSession):
             if lost
             else ""
         )
+
+    def _back_after_silence(self) -> None:
+        """A stop asked for before or during the silence is carried out now: its hold may
+        have been lost on the way, so it goes again, and the reset follows once it holds."""
+        if (self.stopping or self._stop_unconfirmed) and self.link.is_open:
+            self.feed_hold()
+            self._reset_requested_at = self.clock.now()
+            self.query_status()
 
     def _recovery_verdict(self) -> object:
         """Intact: no banner came, and a status report made once the board's held-back
@@ -1070,6 +1082,13 @@ class GcodeSession(MachineSession):
         self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
+        if (
+            self._stop_unconfirmed
+            and self.silent_since is None
+            and not self.stopping
+            and report.state in ("Idle", "Alarm")
+        ):
+            self._stop_unconfirmed = False  # held and reset: it stands
         if self.silent_since is not None:
             heard = self._heard_again_at
             if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
