@@ -5,10 +5,14 @@ Widgets get a Station and talk to ``station.session`` for intents and to
 emulator is created here, behind the loopback transport, so the rest of the
 app is the same whether the device is real or emulated.
 
-The station also owns reconnection: when a link is lost (the transport
-reports an error, or the device falls silent for 2 s) it closes the
-transport and opens it again with back-off, on its own clock, so the
-operator never has to, and the session re-reads the device when it is back.
+The station also owns reconnection: when the transport reports an error
+(the port pulled, the BLE link dropped) it opens it again with back-off, on
+its own clock, so the operator never has to, and the session re-reads the
+device when it is back.  A device that merely falls silent while its port
+stays open is not reopened: reopening a USB board's port restarts many of
+them, and their position with it.  The session keeps asking it instead
+(:meth:`MachineSession._lost_to_silence`) and says, once it answers, whether
+its state is intact.
 
 Closing a link on the operator's word (Disconnect, closing the window) first
 stops every axis and waits — on the event loop, never blocking it — up to
@@ -231,7 +235,6 @@ class Station(QObject):
         self.session.setParent(self)
         self.link.disconnected.connect(self._on_disconnected)
         self.link.connected.connect(self._on_connected)
-        self.session.linkLost.connect(self._on_silence)
         self.sessionChanged.emit()
         self.model.set_link_state(LinkState.CONNECTING, transport.describe())
         if self.realtime:
@@ -406,19 +409,6 @@ class Station(QObject):
         if self._closing or reason is None:
             return
         self._schedule_reconnect(str(reason))
-
-    def _on_silence(self) -> None:
-        """The device stopped answering: reopen the transport rather than wait on it."""
-        if self.link is None:
-            return
-        detail = self.model.link_detail
-        self._closing = True
-        try:
-            self.link.close()
-        finally:
-            self._closing = False
-        self.model.set_link_state(LinkState.LOST, detail)
-        self._schedule_reconnect(detail)
 
     def _schedule_reconnect(self, reason: str) -> None:
         delay = self.reconnect_delays[min(self._attempt, len(self.reconnect_delays) - 1)]

@@ -17,6 +17,7 @@ import pytest
 from PySide6.QtCore import QStandardPaths
 
 from protocol.transport.base import open_transports
+from tests.helpers import busy_core
 from tests.helpers.harness import StationHarness
 
 # Checkpoints and other app data go to Qt's test locations, never the operator's.
@@ -25,6 +26,24 @@ QStandardPaths.setTestModeEnabled(True)
 ROOT = Path(__file__).resolve().parent.parent
 DATA = ROOT / "tests" / "data"
 THIRD_PARTY = ROOT / "tests" / "third_party"
+
+
+@pytest.fixture(scope="session", autouse=True)
+def loaded_machine() -> Iterator[int]:
+    """``STEPDECK_BUSY_CORE=1`` (or N): the whole session runs with that many cores kept busy
+    by another process (:mod:`tests.helpers.busy_core`), so a test that only passes on an
+    idle machine shows itself.  The fixture's value is the count (0: none)."""
+    cores = busy_core.cores_wanted()
+    if not cores:
+        yield 0
+        return
+    with busy_core.busy_cores(cores):
+        yield cores
+
+
+def pytest_report_header(config: pytest.Config) -> str | None:
+    cores = busy_core.cores_wanted()
+    return f"STEPDECK_BUSY_CORE: {cores} core(s) kept busy by another process" if cores else None
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:

@@ -7,7 +7,10 @@ station is SIGKILLed — no clean-up, no last checkpoint write — while the job
 runs; a new station process finds the checkpoint, resumes, and finishes.  The
 emulator's log is the judge: every target exactly once, in order.
 
-Every wait is bounded and every process is killed in the fixture's finaliser.
+Every wait is bounded and every process is killed in the fixture's finaliser.  The
+bounds are on silence, not on the whole run: a process that keeps printing (or an
+emulator whose log keeps growing) is making headway however busy the computer is;
+one silent for :data:`TIMEOUT_S` has hung (issue 31: tests pass with a core kept busy).
 """
 
 from __future__ import annotations
@@ -28,7 +31,12 @@ import pytest
 from tests.helpers.emulator_process import stop
 
 ROOT = Path(__file__).resolve().parent.parent
-TIMEOUT_S = 20.0
+#: The longest a process may stay silent (no line printed, no command logged): a station
+#: process's first line comes after PySide6 is imported, which takes tens of seconds on a
+#: loaded computer.  Only a hang comes near it.
+TIMEOUT_S = 60.0
+#: The station processes' own guard (run_job --timeout): only against a hang.
+STATION_GUARD_S = 10 * TIMEOUT_S
 OPERATIONS = 24
 
 
@@ -58,22 +66,21 @@ def processes() -> Iterator[Processes]:
     started.stop_all()
 
 
-def read_line(process: subprocess.Popen[bytes], deadline: float) -> str:
-    """The next line the process prints, waiting no later than ``deadline`` (monotonic)."""
+def read_line(process: subprocess.Popen[bytes], silence_s: float = TIMEOUT_S) -> str:
+    """The next line the process prints, waiting at most ``silence_s`` for it."""
     assert process.stdout is not None
     with selectors.DefaultSelector() as selector:
         selector.register(process.stdout, selectors.EVENT_READ)
-        left = deadline - time.monotonic()
-        assert left > 0 and selector.select(left), "the process went silent"
+        assert selector.select(silence_s), f"the process went silent for {silence_s:g} s"
     line = process.stdout.readline().decode().strip()
     assert line, f"the process ended (status {process.poll()})"
     return line
 
 
-def wait_for(process: subprocess.Popen[bytes], wanted: str, deadline: float) -> list[str]:
+def wait_for(process: subprocess.Popen[bytes], wanted: str) -> list[str]:
     seen: list[str] = []
     while not seen or not seen[-1].startswith(wanted):
-        seen.append(read_line(process, deadline))
+        seen.append(read_line(process))
     return seen
 
 
@@ -87,31 +94,34 @@ def test_a_killed_station_resumes_the_job_and_the_stage_did_each_move_once(
     job = tmp_path / "route.txt"
     job.write_text("".join(f"{x}, {y}\n" for x, y in targets), encoding="utf-8")
     link, log = tmp_path / "stage", tmp_path / "executed.log"
-    deadline = time.monotonic() + TIMEOUT_S
 
     emulator = processes.start(
         "-m", "protocol.emulator", "--profile", "xy-stage", "--link", str(link),
         "--time-scale", "10", "--log", str(log),
     )  # fmt: skip
-    read_line(emulator, deadline)  # the device path: it is serving
+    read_line(emulator)  # the device path: it is serving
     station_args = (
         "-m", "tests.helpers.run_job", "--link", str(link), "--job", str(job),
-        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(TIMEOUT_S),
+        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(STATION_GUARD_S),
     )  # fmt: skip
 
     first = processes.start(*station_args)
-    assert wait_for(first, "start", deadline)[-1] == "start"
-    wait_for(first, "done 9/", deadline)
+    assert wait_for(first, "start")[-1] == "start"
+    wait_for(first, "done 9/")
     # Kill while operation 9 is under way: the stage has taken its move and is driving it.
     poll = threading.Event()
-    while len(executed_moves(log)) < 2 * 10:
-        assert time.monotonic() < deadline, "operation 9 was never sent"
+    logged, heard_at = 0, time.monotonic()
+    while logged < 2 * 10:
+        now_logged = len(executed_moves(log))
+        if now_logged != logged:
+            logged, heard_at = now_logged, time.monotonic()
+        assert time.monotonic() - heard_at < TIMEOUT_S, "operation 9 was never sent"
         poll.wait(0.005)
     first.send_signal(signal.SIGKILL)
     first.wait(timeout=5)
 
     second = processes.start(*station_args)
-    lines = wait_for(second, "DONE", deadline)
+    lines = wait_for(second, "DONE")
     assert [line for line in lines if line.startswith("resume ")] == ["resume 9"], lines
     assert second.wait(timeout=5) == 0
 
@@ -162,28 +172,27 @@ def test_a_killed_station_resumes_a_usb3_job_and_the_unit_moved_each_step_once(
     job = tmp_path / "route.txt"
     job.write_text("".join(f"{x}, {y}\n" for x, y in targets), encoding="utf-8")
     link, log = tmp_path / "unit", tmp_path / "executed.log"
-    deadline = time.monotonic() + 3 * TIMEOUT_S
 
     emulator = processes.start(
         "-m", "protocol.emulator", "--profile", "usb3", "--link", str(link),
         "--time-scale", "20", "--log", str(log),
     )  # fmt: skip
-    read_line(emulator, deadline)
+    read_line(emulator)
     station_args = (
         "-m", "tests.helpers.run_job", "--link", str(link), "--job", str(job),
-        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(3 * TIMEOUT_S),
+        "--checkpoints", str(tmp_path / "checkpoints"), "--timeout", str(STATION_GUARD_S),
         "--profile", "usb3",
     )  # fmt: skip
 
     first = processes.start(*station_args)
-    assert wait_for(first, "start", deadline)[-1] == "start"
-    wait_for(first, "done 3/", deadline)
+    assert wait_for(first, "start")[-1] == "start"
+    wait_for(first, "done 3/")
     # Killed while operation 3 is under way (or about to be): the unit runs out what it has.
     first.send_signal(signal.SIGKILL)
     first.wait(timeout=5)
 
     second = processes.start(*station_args)
-    lines = wait_for(second, "DONE", deadline)
+    lines = wait_for(second, "DONE")
     assert [line for line in lines if line.startswith("resume ")] == ["resume 3"], lines
     assert second.wait(timeout=5) == 0
 

@@ -28,6 +28,11 @@ from protocol.gcode import (
 from protocol.gcode.codec import GRBL_BANNER, PLOTTER_BANNER
 from tests.test_emulator_pty import REPLY_TIMEOUT, running_emulator
 
+#: How long a reply may take before the emulator counts as not answering: a bound only
+#: against a hang (a reply ends the wait at once), long enough for an emulator process that
+#: a busy computer gets to run only now and then.
+ANSWER_BOUND_S = 30.0
+
 
 class Port:
     """A serial port and a reader of the board's replies, one at a time."""
@@ -38,7 +43,7 @@ class Port:
         self.pending: list[GcodeReply] = []
 
     def next(self) -> GcodeReply:
-        deadline = time.monotonic() + REPLY_TIMEOUT
+        deadline = time.monotonic() + ANSWER_BOUND_S
         while not self.pending:
             assert time.monotonic() < deadline, "no reply from the emulator"
             data = self.port.read_until(b"\n")
@@ -81,7 +86,7 @@ def test_corexy_plotter_process_draws_and_logs_it(tmp_path: Path) -> None:
             assert port.next() == Banner(PLOTTER_BANNER)
             port.send("G1 X10 Y10", "M4", "G1 X20", "M3")
             assert [port.next() for _ in range(4)] == [Ok()] * 4
-            deadline = time.monotonic() + REPLY_TIMEOUT
+            deadline = time.monotonic() + ANSWER_BOUND_S
             while (report := port.status()).state != "Idle":
                 assert time.monotonic() < deadline, report
             assert report.mpos == (20.0, 10.0, 0.0)

@@ -16,7 +16,7 @@ import pytest
 from pytestqt.qtbot import QtBot
 
 from app.machine import LinkState
-from app.machines.gcode.session import SentLine
+from app.machines.gcode.session import SILENCE_S, SentLine
 from app.profiles import load_profile
 from protocol.gcode.codec import FEED_HOLD, SOFT_RESET, STATUS_QUERY
 from protocol.transport.loopback import Direction
@@ -197,17 +197,28 @@ def test_garbage_from_the_device_is_counted_not_fatal(plotter: StationHarness) -
     assert plotter.station.model.link_state is LinkState.CONNECTED
 
 
-def test_a_silent_device_is_noticed_and_the_station_reconnects(plotter: StationHarness) -> None:
+def test_a_silent_device_is_given_up_and_asked_on_without_reopening_the_port(
+    plotter: StationHarness,
+) -> None:
+    """Reopening an Arduino's port restarts the board: a silent one is asked on instead."""
+
     def swallow(direction: Direction, data: bytes) -> bytes:
         return b"" if direction is Direction.TO_HOST else data
 
+    link = plotter.station.link
+    assert link is not None
+    closed: list[object] = []
+    link.disconnected.connect(closed.append)
     plotter.loopback.set_manipulator(swallow)
     states: list[LinkState] = []
     plotter.station.model.linkStateChanged.connect(states.append)
-    plotter.run(2.5)
+    plotter.run(SILENCE_S + 0.5)
     assert LinkState.LOST in states
+    assert plotter.gcode_session.silent_since is not None
     plotter.loopback.set_manipulator(None)
     plotter.run_until(lambda: plotter.station.model.link_state is LinkState.CONNECTED, timeout=10)
+    assert plotter.station.link is link and closed == []  # nothing closed, nothing reopened
+    assert plotter.gcode_session.silent_since is None
 
 
 def grbl_board(status_mask: int) -> StationHarness:

@@ -16,6 +16,7 @@ from app.jobs.program import Program, SourceRef, move
 from app.jobs.run.runner import JobRunner, JobState
 from app.jobs.run.usb3 import ANSWER_TIMEOUT_S
 from app.machine import LinkState
+from app.machines.usb3.session import LOST_AFTER_S
 from app.profiles import load_profile
 from protocol.emulator.usb3_firmware import Usb3Config, Usb3Firmware
 from protocol.transport.loopback import Direction, LoopbackTransport
@@ -188,13 +189,13 @@ def test_a_unit_that_does_not_say_where_it_stands_is_never_sent_a_move_blind(
 
     unit.loopback.set_manipulator(mute)
     runner.resume()
-    unit.run(ANSWER_TIMEOUT_S + 1.0)
+    unit.run(max(ANSWER_TIMEOUT_S, LOST_AFTER_S) + 1.0)
     assert runner.state is JobState.PAUSED
-    assert any("did not say where it stands" in m for m in messages)
+    # Not a word, not even to G;: the link's silence, which its liveness judges.
+    assert any("link lost" in m for m in messages)
     assert len(moves_executed(unit)) == sent  # the question moved nothing, no move followed
 
-    unit.loopback.set_manipulator(None)
-    runner.resume()  # asks again, and this time hears
+    unit.loopback.set_manipulator(None)  # asked again, and this time it hears
     unit.run_until(lambda: finished(runner), timeout=30)
     assert runner.state is JobState.DONE and unit_at(unit, AxisId.X) == 0.0
 

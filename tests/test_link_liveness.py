@@ -99,7 +99,7 @@ def test_a_silent_link_shows_amber_then_red_and_green_again_when_it_answers(
     assert status.startswith("Link lost")
     assert station.model.motion_lock_reason() == "link lost"
 
-    # The cable is back: the station reopens the link by itself and the device answers.
+    # The cable is back: the device, asked on every second with the port open, answers.
     unit.loopback.set_manipulator(None)
     unit.run_until(lambda: station.model.link_state is LinkState.CONNECTED, timeout=15)
     assert window.info_panel.link_text.text().startswith("connected")

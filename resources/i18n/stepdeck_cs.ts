@@ -424,7 +424,7 @@
     <name>DrillSession</name>
     <message>
         <source>The drill has no stop command: {0} queued command(s) dropped; {1} finishes its procedure</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late.</extracomment>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>Vrtačka nemá příkaz k zastavení: zahozeno příkazů ve frontě: {0}; {1} dokončí svůj postup</translation>
     </message>
     <message>
@@ -438,6 +438,10 @@
     <message>
         <source>Link lost: {0}</source>
         <translation>Spojení ztraceno: {0}</translation>
+    </message>
+    <message>
+        <source>; {0} command(s) dropped</source>
+        <translation>; zahozeno příkazů: {0}</translation>
     </message>
 </context>
 <context>
@@ -1152,7 +1156,7 @@ Přesto odeslat do stroje?</translation>
     <name>GcodeSession</name>
     <message>
         <source>Stopped: {0} line(s) not run</source>
-        <extracomment>No reply to status queries for this long: the device is gone (the station reconnects). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers). The motors were released for zeroing by hand and nothing was sent since. What the followed job had as the last status report was read (its snapshot).</extracomment>
+        <extracomment>No reply to status queries for this long: the link is lost (a job pauses) and the board is asked on until it answers. A board that answers a status query within milliseconds and then goes silent for seconds has stopped listening, but a few seconds can be a host&apos;s or a USB bridge&apos;s hiccup that loses nothing: a 2.5 s freeze of the board&apos;s replies mid-job must not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`). Status queries unanswered before the link is shown stale (amber), and the least time. Jogging: each held-arrow step is this much motion, and the next goes only while the device&apos;s planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line is *planned*, so counting answers alone would let a held key fill the planner). A stop resets the device this long after its hold at the latest, standing or not. Reports in a row, at least this far apart, that show every sent byte consumed and the machine idle with an empty planner while lines are unanswered: their answers were lost. Fraction of an axis&apos;s top speed a held arrow jogs at. A jog step shorter than this (the travel&apos;s end reached) is not sent. &quot;job&quot;, &quot;resume&quot; (the set-up before a resumed job), &quot;console&quot;, &quot;intent&quot; (panels) or &quot;jog&quot; Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Without ``Bf:`` in the reports: when each planned jog step should be done (clock). Whether the board is in G91 after the lines sent (a reset brings back G90). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. Where the steps sent so far take each axis (None: no jog under way). A jog cancel was sent and the board still reports Jog: a new jog waits. The stop under way ends a jog: no &quot;lines not run&quot; message for it. Since when (station clock) reports show the board done with everything sent, while lines are unanswered, and how many reports in a row have. The lines unanswered through every drained report so far (see _check_lost_answers). The motors were released for zeroing by hand and nothing was sent since. What the followed job had as the last status report was read (its snapshot). A stop went out and no report since its reset has shown the board standing: on a silent line its hold and reset may both have been lost. After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Zastaveno: neprovedeno řádků: {0}</translation>
     </message>
     <message>
@@ -1170,6 +1174,18 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>Machine alarm {0}: {1}</source>
         <translation>Alarm stroje {0}: {1}</translation>
+    </message>
+    <message>
+        <source>; {0} unanswered line(s)</source>
+        <translation>; nezodpovězených řádků: {0}</translation>
+    </message>
+    <message>
+        <source>it restarted meanwhile (its banner came), so what it had is gone</source>
+        <translation>mezitím se restartovalo (přišel jeho úvodní text), takže co mělo, je pryč</translation>
+    </message>
+    <message>
+        <source>it is in alarm</source>
+        <translation>je v alarmu</translation>
     </message>
 </context>
 <context>
@@ -2126,7 +2142,7 @@ Přesto odeslat do stroje?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. While a run resumed from its checkpoint begins: how far the interrupted one sent. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
+        <extracomment>A streaming job answers a line every millisecond or so: the views hear of progress at most this often (a real-time station), never once per line. Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. While a run resumed from its checkpoint begins: how far the interrupted one sent. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since. Progress told to the views (done, executed), and the timer that coalesces it.</extracomment>
         <translation>Před načtením další úlohy zastavte tu běžící</translation>
     </message>
     <message>
@@ -2186,6 +2202,14 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>a job is under way — abort it or let it finish</source>
         <translation>probíhá úloha — přerušte ji, nebo ji nechte doběhnout</translation>
+    </message>
+    <message>
+        <source>The machine answers again, but {0}: the job stays paused. Check the machine, then Resume</source>
+        <translation>Stroj opět odpovídá, ale {0}: úloha zůstává pozastavená. Zkontrolujte stroj a pak dejte Pokračovat</translation>
+    </message>
+    <message>
+        <source>The machine answers again, its state intact: the job goes on</source>
+        <translation>Stroj opět odpovídá a jeho stav je neporušený: úloha pokračuje</translation>
     </message>
 </context>
 <context>
@@ -3163,7 +3187,6 @@ se nevykresluje</translation>
     <name>Session</name>
     <message>
         <source>{0} has no {1}</source>
-        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A held jog ended without a release (dead-man or travel end): forget what is held.</extracomment>
         <translation>{0} nemá {1}</translation>
     </message>
     <message>
@@ -3173,6 +3196,23 @@ se nevykresluje</translation>
     <message>
         <source>Motion refused: {0}</source>
         <translation>Pohyb odmítnut: {0}</translation>
+    </message>
+    <message>
+        <source>The device is silent ({0}){1}; asking it every {2} s</source>
+        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A device silent with its port open, or not answering since the link opened, is asked its dialect&apos;s harmless question this often: the devices that speak only when asked (usb3, the drill) would otherwise never be heard again once the line works. A tick this much later than its period means the station itself was not running (a busy computer, a stalled event loop): that time is not counted as the device&apos;s silence. :meth:`MachineSession._recovery_verdict`&apos;s &quot;not yet&quot;. A held jog ended without a release (dead-man or travel end): forget what is held. The device answers again after a silence with its port open: None when its state is intact (nothing can have been lost), else what does not match (a reset, a position). Since when the device has been silent with its port open, once that was a lost link (None: it is not); and whether it has answered since. Whether a late tick&apos;s lateness is the station&apos;s own, not counted as the device&apos;s silence (set by dialects whose ticks come from a real-time timer).</extracomment>
+        <translation>Zařízení mlčí ({0}){1}; ptám se ho každých {2} s</translation>
+    </message>
+    <message>
+        <source>the device answers again; checking it…</source>
+        <translation>zařízení opět odpovídá; kontroluji ho…</translation>
+    </message>
+    <message>
+        <source>The device answers again ({0} s after it was given up), its state intact</source>
+        <translation>Zařízení opět odpovídá ({0} s poté, co bylo vzdáno), jeho stav je neporušený</translation>
+    </message>
+    <message>
+        <source>The device answers again ({0} s after it was given up), but {1}</source>
+        <translation>Zařízení opět odpovídá ({0} s poté, co bylo vzdáno), ale {1}</translation>
     </message>
 </context>
 <context>
@@ -3241,6 +3281,14 @@ se nevykresluje</translation>
     <message>
         <source>Encoder position</source>
         <translation>Poloha enkodéru</translation>
+    </message>
+</context>
+<context>
+    <name>StageSession</name>
+    <message>
+        <source>nothing it reports shows whether it was switched off meanwhile</source>
+        <extracomment>What the info panel shows; each is asked for at least once a second. Until the stage&apos;s own dynamics are read: its documented defaults (docs/protocols.md §1.4). Periods between a frame leaving and its effect being seen (frame out, echo back), on top of the braking distance when a jog is turned into a stop at the travel end. A jog stopped at the travel&apos;s end stops this far inside it: the stage&apos;s end switches sit at the travel&apos;s ends, and a jog is to stop before them, not on them. Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none). Every echoed position is judged against the moves sent (stopped when off them).</extracomment>
+        <translation>z ničeho, co hlásí, nepozná, zda bylo mezitím vypnuto</translation>
     </message>
 </context>
 <context>

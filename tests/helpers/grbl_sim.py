@@ -340,6 +340,23 @@ def start(
     )
 
 
+def cpu_seconds(pid: int) -> float:
+    """Processor time the process ``pid`` and its children (the simulator) have used so far.
+
+    The simulator runs without pause, so this is how far it has got: on a busy
+    computer it falls behind real time, and a test's waits are measured in it.
+    0.0 once the process is gone.
+    """
+    proc = Path("/proc")
+    try:
+        fields = (proc / str(pid) / "stat").read_text().rsplit(")", 1)[1].split()
+        children = (proc / str(pid) / "task" / str(pid) / "children").read_text().split()
+    except OSError:
+        return 0.0
+    ticks = int(fields[11]) + int(fields[12])
+    return ticks / os.sysconf("SC_CLK_TCK") + sum(cpu_seconds(int(child)) for child in children)
+
+
 def _write_default_eeprom(exe: Path, target: Path) -> None:
     """GRBL's defaults as a fresh board writes them on its first start.
 

@@ -106,6 +106,8 @@ class JobRunner(QObject):
         #: Paused until the operator acts (an alarm, a board that restarted): nothing resumes
         #: it on its own (the scripting API ends the job instead).
         self._operator_hold = False
+        #: Paused because the link went, and nothing else has happened to the job since.
+        self._paused_by_link = False
         self._failing = False  # a checkpoint write failed and the job is being failed
         self._elapsed_before = 0.0
         self._running_since: float | None = None
@@ -572,6 +574,7 @@ class JobRunner(QObject):
         in_flight = self._driver.in_flight
         self._pause_requested = False
         self._set_state(JobState.PAUSED)
+        self._paused_by_link = True
         state = self.station.model.link_state.value
         if in_flight is not None:
             text = QCoreApplication.translate(
@@ -727,10 +730,12 @@ class JobRunner(QObject):
         if isinstance(old, MachineSession):
             with contextlib.suppress(RuntimeError, TypeError):  # gone with its link already
                 old.motionFault.disconnect(self._on_motion_fault)
+                old.recovered.disconnect(self._on_recovered)
         self._session = session
         self._driver.bind(session)
         if session is not None:
             session.motionFault.connect(self._on_motion_fault)
+            session.recovered.connect(self._on_recovered)
 
     def _on_motion_fault(self, fault: MotionFault) -> None:
         """The session stopped a machine that went where nothing sent it: the job fails there.
@@ -744,6 +749,35 @@ class JobRunner(QObject):
         index = fault.op_index if fault.op_index is not None else self.current_index
         self.fail(index if index is not None else self._done, fault.text)
 
+    def _on_recovered(self, problem: object) -> None:
+        """The machine answers again after a silence, its port open all along.
+
+        Intact (no restart, every axis where the books allow), the job goes on
+        by itself: the resume re-examines what was under way as the operator's
+        Resume would, and asks where only the operator can tell.  Otherwise
+        it stays paused for the operator, who is told why.
+        """
+        if not self._paused_by_link or self._state is not JobState.PAUSED:
+            return
+        if self.needs_operator:
+            return  # the operator is asked something already (a question, a line, an alarm)
+        if problem is not None:
+            self._paused_by_link = False
+            self.message.emit(
+                QCoreApplication.translate(
+                    "JobRunner",
+                    "The machine answers again, but {0}: the job stays paused. "
+                    "Check the machine, then Resume",
+                ).format(problem)
+            )
+            return
+        self.message.emit(
+            QCoreApplication.translate(
+                "JobRunner", "The machine answers again, its state intact: the job goes on"
+            )
+        )
+        self.resume()
+
     def _on_link_state(self, state: object) -> None:
         if state in LINK_DOWN and self._state in CLOCK_RUNS:
             self.link_pause()
@@ -755,6 +789,7 @@ class JobRunner(QObject):
             return
         if self._progress_timer.isActive():
             self._tell_progress()  # the views see the progress the new state comes with
+        self._paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
         now = self.station.clock.now()

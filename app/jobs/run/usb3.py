@@ -31,6 +31,7 @@ from __future__ import annotations
 from app.jobs.program import Operation, OpKind
 from app.jobs.run.driver import RunnerPort
 from app.jobs.run.sequential import SequentialDriver
+from app.machine import LinkState
 from app.machines.session import MachineSession
 from app.machines.usb3.session import STILL_AFTER_S, Usb3Session
 from protocol.usb3.codec import Position, count_to_mm
@@ -180,6 +181,12 @@ class Usb3Driver(SequentialDriver):
         if self._since is None or not self._judging():
             return
         self._judge()
+        if self._since is not None and self.station.model.link_state is not LinkState.CONNECTED:
+            # Nothing at all heard is the link's silence, for its liveness to judge (a lost
+            # link pauses the job; the unit is asked again once it answers): the unit's own
+            # time to answer counts from when the link is green again.
+            self._since = self.station.clock.now()
+            return
         if self._since is None or self.station.clock.now() - self._since < ANSWER_TIMEOUT_S:
             return
         if self._heard_news():

@@ -11,9 +11,11 @@ a refused ``X`` would drill in the wrong place).
 The device answers ``R`` at once and ``D`` when the procedure ends, so a
 silent link shows as a missing reply: the session gives the ``R`` a second
 and the ``D`` twice the procedure's expected time plus a margin
-(:mod:`protocol.drill.timing`), then reports the link silent; the station
-reopens it and a running job pauses.  Before that, a reply merely late (an
-``R`` after half its time, a ``D`` a second past the expected time) shows
+(:mod:`protocol.drill.timing`), then reports the link lost (a running job
+pauses) and asks the drill ``I`` every second until it answers: no command
+has that letter, so the drill answers ``E`` and moves nothing, with the port
+kept open.  Before that, a reply merely late (an ``R`` after half its
+time, a ``D`` a second past the expected time) shows
 the link stale, amber, and turns it green again when it comes.  An idle
 drill is asked nothing, so its silence means nothing.
 
@@ -32,7 +34,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
-from app.machines.session import MachineSession
+from app.machines.session import PENDING, MachineSession
 from protocol.clock import Clock
 from protocol.drill.codec import (
     DRILL,
@@ -113,8 +115,12 @@ class DrillSession(MachineSession):
         #: Since when the reply due has been awaited, and from when on it is late.
         self._waiting_since: float | None = None
         self._late_at: float | None = None
-        self._probe_sent = False
+        #: Probes (``I``) written and not yet answered ``EI``.
+        self._probes_out = 0
+        #: After a silence: until when the drill may still be running the command it had.
+        self._quiet_after: float | None = None
         self._autotick = autotick
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(TICK_MS)
         self._timer.timeout.connect(self.tick)
@@ -296,24 +302,22 @@ class DrillSession(MachineSession):
 
     def tick(self) -> None:
         """A late reply shows the link stale; one not come in time means a silent link."""
+        now = self.clock.now()
+        stall = self._station_stall(now)
+        if stall and self._waiting_since is not None:
+            # The station was not running: the reply due may be waiting to be read.
+            self._late_at = (self._late_at or now) + stall
+            self._deadline = (self._deadline or now) + stall
         self._check_answer()
         since, late_at, deadline = self._waiting_since, self._late_at, self._deadline
         if since is None or late_at is None or deadline is None:
             return
-        now = self.clock.now()
         command = self._in_flight
         what = command_text(command) if command is not None else "the last command"
         waited = "its receipt" if not self._received else "the end of its procedure"
         if now >= deadline:
-            self._expect(None)
-            self.model.message.emit(
-                f"The drill did not answer {what} ({waited}): the link is silent"
-            )
-            # Lost, whatever the state was: the station reopens the link.
-            self.model.set_link_state(
-                LinkState.LOST, f"no reply for {now - since:.1f} s ({what}: {waited})"
-            )
-            self.linkLost.emit()
+            # Lost, whatever the state was (amber or still green).
+            self._lost_to_silence(f"no reply for {now - since:.1f} s ({what}: {waited})")
         elif now >= late_at:
             self._watch_silence(now - since, 0.0, deadline - since, f"{what}: {waited}")
 
@@ -344,6 +348,41 @@ class DrillSession(MachineSession):
 
     def shutdown(self) -> None:
         self._timer.stop()
+
+    # --- a silent drill ------------------------------------------------------------
+
+    def _silence_began(self) -> str:
+        """The command in flight and the queue go, as with the link: a job re-examines them.
+
+        The drill may still be running the command it had (its ``R`` was lost,
+        say): until that would be over, the drill is not called back, so the
+        next command is not queued behind it to be mistaken for it.
+        """
+        command = self._in_flight
+        dropped = len(self._queue) + (command is not None)
+        if command is not None and self._waiting_since is not None:
+            self._quiet_after = self._waiting_since + self.expected_s(command) + DONE_LATE_S
+        self._clear()
+        self._show_stopped()
+        return (
+            QCoreApplication.translate("DrillSession", "; {0} command(s) dropped").format(dropped)
+            if dropped
+            else ""
+        )
+
+    def _probe(self) -> None:
+        """A letter that is no command: the drill answers ``E`` and moves nothing."""
+        self._probes_out += 1
+        self.link.write(PROBE)
+        self.frameSent.emit(PROBE.decode("ascii").strip(), PROBE)
+
+    def _recovery_verdict(self) -> object:
+        """The drill cannot say where it is: it answered, and is done with what it had."""
+        quiet_after = self._quiet_after
+        if quiet_after is not None and self.clock.now() < quiet_after:
+            return PENDING
+        self._quiet_after = None
+        return None
 
     # --- model --------------------------------------------------------------------
 
@@ -403,9 +442,9 @@ class DrillSession(MachineSession):
             self._timer.start()
         # The drill speaks only when spoken to: a letter that is no command is answered
         # E, which proves a drill is there and moves nothing.
-        self._probe_sent = True
-        self.link.write(PROBE)
-        self.frameSent.emit(PROBE.decode("ascii").strip(), PROBE)
+        self._probes_out = 0
+        self._quiet_after = None
+        self._probe()
         for axis in range(self.axis_count):
             self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
 
@@ -435,8 +474,8 @@ class DrillSession(MachineSession):
                 continue
             self.frameReceived.emit(reply, encode_reply(reply))
             self._device_answered()
-            if self._probe_sent and reply.kind is ReplyKind.ERROR and reply.letter == PROBE_LETTER:
-                self._probe_sent = False  # the answer to the probe, not to a command
+            if self._probes_out and reply.kind is ReplyKind.ERROR and reply.letter == PROBE_LETTER:
+                self._probes_out -= 1  # the answer to a probe, not to a command
                 continue
             self._on_reply(reply)
 

@@ -10,8 +10,11 @@ job's error to its file line).
 
 Real-time bytes bypass the stream: ``?`` every ``status_ms`` keeps positions
 and the machine state fresh (and proves the device alive: three unanswered
-show the link stale, amber, and 2 s without a reply lost, red), ``!`` holds,
-``~`` resumes, 0x18 resets.  A stop is a feed hold followed by a soft reset
+show the link stale, amber, and :data:`SILENCE_S` without a reply lost, red), ``!`` holds,
+``~`` resumes, 0x18 resets.  A board given up as silent keeps its port
+open (reopening an Arduino's port restarts it) and is asked on; its state is
+intact when its first status report after the silence follows no banner (it
+did not restart) and shows no alarm.  A stop is a feed hold followed by a soft reset
 once the machine stands, which throws away what the device had buffered
 without losing its position.
 
@@ -51,7 +54,7 @@ from app.machines.gcode.feeder import (
 from app.machines.gcode.line_targets import line_motion
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.motion_gate import Refusal
-from app.machines.session import MachineSession
+from app.machines.session import PENDING, MachineSession
 from app.machines.supervision import MotionFault, fault_text
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
@@ -76,8 +79,12 @@ from protocol.gcode.streaming import LineStreamer, StreamMode
 
 _log = logging.getLogger(__name__)
 
-#: No reply to status queries for this long: the device is gone (the station reconnects).
-SILENCE_S = 2.0
+#: No reply to status queries for this long: the link is lost (a job pauses) and the board is
+#: asked on until it answers.  A board that answers a status query within milliseconds and
+#: then goes silent for seconds has stopped listening, but a few seconds can be a host's or a
+#: USB bridge's hiccup that loses nothing: a 2.5 s freeze of the board's replies mid-job must
+#: not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`).
+SILENCE_S = 4.0
 #: Status queries unanswered before the link is shown stale (amber), and the least time.
 STALE_QUERIES = 3
 STALE_AFTER_MIN_S = 0.5
@@ -213,7 +220,16 @@ class GcodeSession(MachineSession):
             tuple(axis.name for axis in model.profile.axes),
             grbl="$J" in settings.words,
         )
+        #: A stop went out and no report since its reset has shown the board standing: on a
+        #: silent line its hold and reset may both have been lost.
+        self._stop_unconfirmed = False
+        #: After a silence: when the board was first heard again, the first status report
+        #: made after that had settled, and whether a banner came meanwhile.
+        self._heard_again_at: float | None = None
+        self._report_after_silence: StatusReport | None = None
+        self._restarted_in_silence = False
         self._autotick = autotick
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(settings.status_ms)
         self._timer.timeout.connect(self.tick)
@@ -236,6 +252,12 @@ class GcodeSession(MachineSession):
     def stale_after_s(self) -> float:
         """Silence shown amber: a few status queries (one each ``status_ms``) unanswered."""
         return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
+
+    @property
+    def recovery_settle_s(self) -> float:
+        """After a silence, replies held back on the way come first: the board's state is
+        judged from a report made this long after it was heard again (a few queries)."""
+        return self.stale_after_s
 
     @property
     def machine_state(self) -> str:
@@ -455,6 +477,7 @@ class GcodeSession(MachineSession):
             self._dropped_by_stop = len(self.feeder.discard_queued())
             self.feed_hold()
         self._reset_requested_at = self.clock.now()
+        self._stop_unconfirmed = True  # until a report shows the board standing
         self.query_status()
 
     def motion_stopped(self) -> bool:
@@ -598,11 +621,20 @@ class GcodeSession(MachineSession):
             self._send_jog_step()  # at once: the key must reach the wire now
 
     def _end_jog(self) -> None:
-        """The operator let go (or changed direction): the machine brakes now."""
+        """The operator let go (or changed direction, or the dead-man ended it): brake now.
+
+        Once a step of this jog went out the board is told, whatever the last
+        report said: a report made before the board took the step (late, on a
+        busy computer) still says Idle, and the steps planned would run out.
+        A jog cancel to a board that stands does nothing.
+        """
+        stepped = self._jog_target is not None
         self._jog_target = None
         self._jog_ends = []
         self._jog_told_end = False
-        if not self.link.is_open or not (self._jog_unanswered or self._machine_moving()):
+        if not self.link.is_open:
+            return
+        if not (stepped or self._jog_unanswered or self._machine_moving()):
             return
         if self.jogs_with_command:
             self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
@@ -634,8 +666,29 @@ class GcodeSession(MachineSession):
             now = self.clock.now()
             self._jog_ends = [end for end in self._jog_ends if end > now]
             planned = len(self._jog_ends)
-        if planned < JOG_BLOCKS_AHEAD:
+        if planned < JOG_BLOCKS_AHEAD and not self._jog_lead_full():
             self._send_jog_step()
+
+    def _jog_lead_full(self) -> bool:
+        """Whether the steps sent already lead the reported position by a step or more.
+
+        By the board's own reports, not the station's clock: on a busy computer
+        (or a board running below real time) the timed estimate lets steps pile
+        up in the planner, and a release whose cancel is lost would leave the
+        machine to run them all out.  So at most :data:`JOG_BLOCKS_AHEAD` steps
+        ever lead where the board says it is.
+        """
+        target = self._jog_target
+        if target is None:
+            return False
+        for axis, direction in enumerate(self._jog):
+            if not direction:
+                continue
+            step = self.model.profile.axes[axis].max_speed * JOG_SPEED_SHARE * JOG_STEP_S
+            lead = (target[axis] - self.model.axes[axis].position) * direction
+            if lead > (JOG_BLOCKS_AHEAD - 1) * step + JOG_RESOLUTION:
+                return True
+        return False
 
     def _send_jog_step(self) -> None:
         """One step of the held jog, ending inside the travel; none once the travel ends."""
@@ -686,14 +739,60 @@ class GcodeSession(MachineSession):
             self._pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
         requested = self._reset_requested_at
-        if requested is not None and now - requested > RESET_AFTER_S:
+        if requested is not None and now - requested > RESET_AFTER_S and self.silent_since is None:
             self._reset_after_stop()  # no report of a finished hold came: reset anyway
         self.query_status()
+        # Time the station itself was not running is nobody's silence (a busy computer).
+        self._last_heard = min(now, self._last_heard + self._station_stall(now))
         silent = now - self._last_heard
         self._watch_silence(silent, self.stale_after_s, SILENCE_S)
         if self.device_answered and silent > SILENCE_S:
             # The link status says it ("lost — no reply for 2.2 s"): no second message.
             self._last_heard = now
+
+    # --- a silent board ----------------------------------------------------------------
+
+    def _silence_began(self) -> str:
+        """What was under way is forgotten as when the link goes: a job looks at the board
+        again before it goes on (the port stays open, so the board may still answer it)."""
+        self._heard_again_at = None
+        self._report_after_silence = None
+        self._restarted_in_silence = False
+        # A stop under way is kept: it is carried out once the board is heard again.
+        self._jog = [0] * self.axis_count
+        self._jog_target = None
+        self._jog_cancelling = False
+        self._quiet_stop = False
+        with self.feeder.lock:
+            lost = self.feeder.clear()
+        return (
+            QCoreApplication.translate("GcodeSession", "; {0} unanswered line(s)").format(len(lost))
+            if lost
+            else ""
+        )
+
+    def _back_after_silence(self) -> None:
+        """A stop asked for before or during the silence is carried out now: its hold may
+        have been lost on the way, so it goes again, and the reset follows once it holds."""
+        if (self.stopping or self._stop_unconfirmed) and self.link.is_open:
+            self.feed_hold()
+            self._reset_requested_at = self.clock.now()
+            self.query_status()
+
+    def _recovery_verdict(self) -> object:
+        """Intact: no banner came, and a status report made once the board's held-back
+        replies were through (a report from before a restart would prove nothing) shows no
+        alarm."""
+        report = self._report_after_silence
+        if self._restarted_in_silence:
+            return QCoreApplication.translate(
+                "GcodeSession", "it restarted meanwhile (its banner came), so what it had is gone"
+            )
+        if report is None:
+            return PENDING
+        if report.state == "Alarm":
+            return QCoreApplication.translate("GcodeSession", "it is in alarm")
+        return None
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
@@ -783,7 +882,9 @@ class GcodeSession(MachineSession):
                 self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
                 continue
             self._last_heard = self.clock.now()
-            self._device_answered()
+            if self.silent_since is not None and self._heard_again_at is None:
+                self._heard_again_at = self._last_heard
+            self._device_answered(proof=False)  # after a silence, a status report decides
             self.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
@@ -813,6 +914,8 @@ class GcodeSession(MachineSession):
                 self._tell_written(self.feeder.release())
             elif isinstance(reply, Banner):
                 ours = isinstance(verdict, BannerSeen) and verdict.ours
+                if self.silent_since is not None and not ours:
+                    self._restarted_in_silence = True
                 self.replyText.emit(reply.text)
                 self.query_status()  # a board that just started: where is it, how big its planner
                 if ours:
@@ -1029,6 +1132,18 @@ class GcodeSession(MachineSession):
         self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
         self._feed_jog()
+        if (
+            self._stop_unconfirmed
+            and self.silent_since is None
+            and not self.stopping
+            and report.state in ("Idle", "Alarm")
+        ):
+            self._stop_unconfirmed = False  # held and reset: it stands
+        if self.silent_since is not None:
+            heard = self._heard_again_at
+            if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
+                self._report_after_silence = report
+            self._check_recovery()
 
     def _supervise(self, report: StatusReport) -> None:
         """A report off the path of the lines written stops the machine, naming the line."""

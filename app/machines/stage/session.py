@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Sequence
 
-from PySide6.QtCore import QObject, QTimer
+from PySide6.QtCore import QCoreApplication, QObject, QTimer
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -117,6 +117,7 @@ class StageSession(MachineSession):
         self._timer.setInterval(self._period_ms)
         self._timer.timeout.connect(self.tick)
         self._autotick = autotick
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.dataReceived.connect(self._on_data)
@@ -369,12 +370,16 @@ class StageSession(MachineSession):
             self.model.message.emit(f"Link lost: {reason}")
 
     def _check_health(self) -> None:
+        now = self.clock.now()
+        stall = self._station_stall(now)
         if self._last_echo is None or self.model.link_state not in (
             LinkState.CONNECTED,
             LinkState.STALE,
         ):
             return
-        silent = self.clock.now() - self._last_echo
+        # Time the station itself was not running is nobody's silence (a busy computer).
+        self._last_echo = min(now, self._last_echo + stall)
+        silent = now - self._last_echo
         if silent > LOST_AFTER_S:
             self._jog = [0] * self.axis_count  # the device's watchdog has stopped it already
         # Every frame is echoed within 20 ms: three silent periods are amber, 2 s red.
@@ -399,13 +404,25 @@ class StageSession(MachineSession):
     def apply_echo(self, echo: EchoFrame) -> None:
         """Fold one echo into the model; any echo proves the link is alive."""
         self._last_echo = self.clock.now()
-        if self.model.link_state in (LinkState.STALE, LinkState.LOST):
-            self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
-        self._device_answered()
+        self._device_answered()  # green again, after a silence too: its frames kept asking
         fault = self.supervisor.judge(echo)
         self.echoes.apply(echo)
         if fault is not None:
             self._stop_for_fault(fault)
+
+    def _back_after_silence(self) -> None:
+        """A stage switched on again runs slow and may hold other parameters: as at connect."""
+        self._device_fast = None
+        self._sync_speed()
+        self.read_all_parameters()
+        self._send_now()
+
+    def _recovery_verdict(self) -> object:
+        """Its echoes are back, but nothing in them tells a stage switched off and on (it
+        restores its count at power-on) from one that ran on: a job waits for the operator."""
+        return QCoreApplication.translate(
+            "StageSession", "nothing it reports shows whether it was switched off meanwhile"
+        )
 
     def shutdown(self) -> None:
         self._timer.stop()

@@ -10,8 +10,11 @@ The unit speaks only while an axis moves or when asked, so a link that went
 quiet is asked: after :data:`POLL_AFTER_S` without a reply the session sends
 ``G;`` (report settings: it moves nothing), once per such interval.  An
 unanswered question shows the link stale (amber) at :data:`STALE_AFTER_S`
-and lost (red, reopened by the station) at :data:`LOST_AFTER_S`; an answer
-before that turns it green again.  A report that repeats what the session
+and lost (red: a job pauses) at :data:`LOST_AFTER_S`; an answer before that
+turns it green again.  A lost unit is still asked ``G;`` every second, the
+port kept open; once it answers, it is asked where its axes stand, and its
+state is intact when each stands between where it was last reported and
+where the moves sent were taking it.  A report that repeats what the session
 already holds changes nothing (no ``settingsChanged``), so the questions do
 not make a running job forget where the axes stand.
 
@@ -57,7 +60,7 @@ from PySide6.QtCore import QObject, QTimer, Signal
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.envelope import Envelope
-from app.machines.session import MachineSession
+from app.machines.session import PENDING, MachineSession
 from app.machines.supervision import MotionFault, fault_text
 from protocol.clock import Clock
 from protocol.usb3.codec import (
@@ -147,10 +150,15 @@ class Usb3Session(MachineSession):
             self._scale_envelope(axis)
         self._last_heard = clock.now()
         self._asked_at: float | None = None  # the last G; asked because the unit was quiet
+        #: After a silence: per axis, the counts the unit may stand at (from where it was to
+        #: where the moves sent take it), and whether it has been asked where it stands.
+        self._books: list[tuple[int, int] | None] = []
+        self._recovery_asked = False
         #: Which settings reports came since the link opened (the first always counts).
         self._reported: set[str] = set()
         self._stop_command = stop_command
         self._autotick = autotick
+        self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self._timer = QTimer(self)
         self._timer.setInterval(TICK_MS)
         self._timer.timeout.connect(self.tick)
@@ -307,9 +315,11 @@ class Usb3Session(MachineSession):
 
     def _keep_alive(self, now: float) -> None:
         """Ask a quiet unit ``G;``; a question left unanswered is a silent link."""
+        # Time the station itself was not running is nobody's silence.
+        self._last_heard = min(now, self._last_heard + self._station_stall(now))
         silent = now - self._last_heard
-        if not self.device_answered or not self.link.is_open:
-            return
+        if not self.device_answered or not self.link.is_open or self.silent_since is not None:
+            return  # given up as silent: the session's probe asks it
         asked = self._asked_at
         if silent >= POLL_AFTER_S and (asked is None or now - asked >= POLL_AFTER_S):
             self._asked_at = now
@@ -318,6 +328,61 @@ class Usb3Session(MachineSession):
 
     def shutdown(self) -> None:
         self._timer.stop()
+
+    # --- a silent unit --------------------------------------------------------------
+
+    def _silence_began(self) -> str:
+        """Where each axis may stand when the unit answers again: between where it was last
+        reported and where the moves sent were taking it (it runs them out meanwhile).
+        An axis not heard of since the link opened has no such place (None)."""
+        self._books = []
+        for axis in range(min(3, self.axis_count)):
+            if self._reported_at[axis] is None:
+                self._books.append(None)
+                continue
+            heading = self._heading[axis]
+            here = self._counts[axis]
+            there = heading[0] if heading is not None else here
+            self._books.append((min(here, there), max(here, there)))
+        self._recovery_asked = False
+        return ""
+
+    def _probe(self) -> None:
+        """``G;`` (it moves nothing); once it answered, the question about an axis whose
+        answer did not come is asked again."""
+        waiting = [axis for axis in range(len(self._books)) if self._asking[axis]]
+        if self._recovery_asked and waiting:
+            self.request_positions(waiting)
+        else:
+            self.request_settings()
+
+    def _after_silence(self) -> None:
+        """The unit answered after a silence: ask where its axes stand, to check the books."""
+        if not self._recovery_asked:
+            self._recovery_asked = True
+            self.request_positions(range(len(self._books)))
+        self._check_recovery()
+
+    def _recovery_verdict(self) -> object:
+        """Intact when every axis stands where the books allow (a unit switched off and on
+        counts from 0 again; a joystick moved it): known once every axis has answered."""
+        if not self._recovery_asked or any(self._asking[: len(self._books)]):
+            return PENDING
+        moved = []
+        for axis, books in enumerate(self._books):
+            if books is None:
+                continue  # nothing to contradict: a job asks where it stands before moving it
+            low, high = books
+            count = self._counts[axis]
+            if not low <= count <= high:
+                thread = self.threads[axis]
+                moved.append(
+                    f"{self.model.axes[axis].name} is at {count_to_mm(count, thread):.3f} mm, "
+                    f"not {count_to_mm(low, thread):.3f}"
+                    + (f"…{count_to_mm(high, thread):.3f}" if high != low else "")
+                    + " mm"
+                )
+        return ("its position does not match: " + ", ".join(moved)) if moved else None
 
     # --- the wire ---------------------------------------------------------------
 
@@ -419,6 +484,8 @@ class Usb3Session(MachineSession):
 
     def _check_end_switches(self, now: float) -> None:
         """An axis silent short of where the station's moves were taking it is at a switch."""
+        if self.silent_since is not None:
+            return  # the whole unit was silent: it is asked where its axes stand first
         for axis, heading in enumerate(self._heading):
             reported = self._reported_at[axis]
             if heading is None or axis >= self.axis_count:
@@ -498,7 +565,7 @@ class Usb3Session(MachineSession):
                 continue
             self._last_heard = self.clock.now()
             first = not self.device_answered
-            self._device_answered()
+            self._device_answered(proof=False)  # after a silence, the positions decide
             if first:
                 # The unit reports positions only when an axis stops: without asking, every
                 # axis would read "unknown" at 0 until it first moved.
@@ -521,6 +588,8 @@ class Usb3Session(MachineSession):
             # Any word from the unit settles an axis left silent short of its target: a
             # switch, said before a job's own question about that axis is answered.
             self._check_end_switches(self._last_heard)
+            if self.silent_since is not None:
+                self._after_silence()
 
     def _news(self, report: str, changed: bool) -> bool:
         """Whether a settings report is news: a change, or the first since the link opened."""
