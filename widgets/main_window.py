@@ -407,9 +407,24 @@ class MainWindow(QMainWindow):
         action = QAction(self, checkable=True)
         self.texts.set(action.setText, title)
         action.setShortcut(QKeySequence(shortcut))
-        action.triggered.connect(lambda checked: dock().setVisible(checked))
+        action.triggered.connect(lambda checked: self._show_dock(action, dock(), checked))
         self.view_menu.addAction(action)
         return action
+
+    def _show_dock(self, action: QAction, dock: QDockWidget, checked: bool) -> None:
+        """Shown in front, or hidden, as the original's Shift+V showed its extension.
+
+        A dock shown but behind another's tab (the developer pane behind the
+        plots) is brought forward rather than hidden: a key that seemed to do
+        nothing, or hid what could not be seen, is what the operator met.
+        """
+        behind = bool(self.tabifiedDockWidgets(dock)) and dock.visibleRegion().isEmpty()
+        if not checked and dock.isVisible() and behind:
+            checked = True
+            action.setChecked(True)
+        dock.setVisible(checked)
+        if checked:
+            dock.raise_()
 
     def _add_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
         """Place a dock built just now where the last session left it, hidden until asked."""
