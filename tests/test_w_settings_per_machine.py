@@ -237,7 +237,8 @@ def test_corrupt_settings_never_stop_a_start_and_give_defaults(
 
 
 def test_a_profile_name_from_any_file_stays_inside_its_group() -> None:
-    for name in ("../../etc", "a/b\\c", "", "ž" * 200, "x y=z"):
+    # stays inside: a settings key, never a path; it must not leave its group either
+    for name in ("../../etc", "a/b\\c", "", "ž" * 200, "x y=z"):  # stays inside: a key
         scope = machine_scope(name)
         assert scope and len(scope) <= 64
         assert all(c.isascii() and (c.isalnum() or c in "_-") for c in scope)
