@@ -348,3 +348,18 @@ def test_a_machine_that_cannot_jog_shows_no_pad_and_leaves_the_arrows_alone(
     qtbot.keyRelease(built, RIGHT)
     assert drill.written[mark:] == []
     assert "jog" not in built.statusBar().currentMessage().lower()
+
+
+def test_esc_during_a_held_jog_ends_it_and_sends_nothing_more(
+    qtbot: QtBot, drill: StationHarness, window: MainWindow
+) -> None:
+    qtbot.keyPress(window, RIGHT)
+    hold(drill, RIGHT, 0.5)
+    qtbot.keyClick(window, Qt.Key.Key_Escape)
+    at_stop = x_steps(drill)
+    stopped = len(drill.written)
+    hold(drill, RIGHT, 0.5)  # the key is still down: its repeats do not start it again
+    settle(drill)
+    assert drill.drill_session.jog_vector == (0, 0)
+    assert len(drill.written) == stopped
+    assert x_steps(drill) - at_stop <= drill.drill_session.jog_step_microsteps(X)
