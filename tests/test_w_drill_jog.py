@@ -363,3 +363,24 @@ def test_esc_during_a_held_jog_ends_it_and_sends_nothing_more(
     assert drill.drill_session.jog_vector == (0, 0)
     assert len(drill.written) == stopped
     assert x_steps(drill) - at_stop <= drill.drill_session.jog_step_microsteps(X)
+
+
+def test_shift_held_jogs_the_drill_in_short_steps_for_fine_positioning(
+    qtbot: QtBot, drill: StationHarness, window: MainWindow
+) -> None:
+    mark = len(drill.written)
+    qtbot.keyPress(window, Qt.Key.Key_Shift)
+    qtbot.keyPress(window, RIGHT, Qt.KeyboardModifier.ShiftModifier)
+    hold(drill, RIGHT, 0.5)
+    qtbot.keyRelease(window, RIGHT, Qt.KeyboardModifier.ShiftModifier)
+    qtbot.keyRelease(window, Qt.Key.Key_Shift)
+    settle(drill)
+    targets = [value for _, value in moves(drill, mark)]
+    steps = [b - a for a, b in zip([0, *targets], targets, strict=False)]
+    assert len(steps) >= 5 and set(steps) == {8}  # 0.01 s at 1.3 ms a microstep
+    # Shift let go: the next held jog is at the usual step again.
+    mark = len(drill.written)
+    qtbot.keyPress(window, RIGHT)
+    qtbot.keyRelease(window, RIGHT)
+    settle(drill)
+    assert moves(drill, mark) == [("X", targets[-1] + 77)]
