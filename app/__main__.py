@@ -142,15 +142,16 @@ def print_ports(out: TextIO) -> int:
 
 def connect_as_asked(station: Station, args: argparse.Namespace, settings: StationSettings) -> None:
     """Open the link the command line names; bare, the built-in emulator."""
+    machine = settings.machine(station.profile.name)
     if args.port:
-        settings.transport, settings.device = "serial", args.port
+        machine.transport, machine.device = "serial", args.port
         if args.baud:
-            settings.baud = args.baud
+            machine.baud = args.baud
         station.connect_serial(args.port, args.baud)
     elif args.ble is not None:
-        settings.transport = "ble"
+        machine.transport = "ble"
         if args.ble:
-            settings.device = args.ble
+            machine.device = args.ble
         station.connect_ble(args.ble or None)
     else:
         station.connect_emulator()

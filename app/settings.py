@@ -11,6 +11,14 @@ it; a copy is kept beside it, because Qt overwrites a malformed file on the
 next save.  The warnings are collected, not raised: the window shows them
 once at start (:meth:`StationSettings.take_warnings`).
 
+Settings that concern the machine (the last link, the arrow keys' step,
+skipping lines it cannot run) are kept per machine profile, under
+``machines/<profile>/``: "1 mm per tap" chosen on the drill must not come back
+as "1 deg per tap" on the winder, nor the drill's serial port on the
+emulated stage.  Those that concern the person (theme, language, the
+window) stay global.  A file from before keeps its global values as the
+first values of the machine it was last used with (:meth:`_migrate`).
+
 Tests pass their own QSettings file so they never touch the operator's.
 """
 
@@ -19,6 +27,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+import re
 import shutil
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
@@ -245,6 +254,32 @@ LANGUAGE = Spec(
     f"one of {', '.join(LANGUAGE_CHOICES)}",
     _choice(lambda: LANGUAGE_CHOICES),
 )
+#: The jobs dock's options that concern the machine: stored per profile.
+MACHINE_JOB_OPTIONS = frozenset({"skip_unsupported"})
+#: Every value kept per machine profile; each key here is also where a file from before
+#: kept it for every machine (read once, then moved: see ``StationSettings._migrate``).
+MACHINE_SPECS: tuple[Spec[object], ...] = (
+    TRANSPORT,
+    DEVICE,
+    BAUD,
+    JOG_STEP,
+    *(JOB_OPTIONS[name] for name in sorted(MACHINE_JOB_OPTIONS)),
+)
+#: Where the per-machine values live: ``machines/<profile>/<key>``.
+MACHINES_GROUP = "machines"
+
+
+def machine_scope(profile: str) -> str:
+    """The profile's name as a settings group: a name from any file cannot leave its group."""
+    safe = re.sub(r"[^A-Za-z0-9_-]", "_", profile)[:64]
+    return safe or "_"
+
+
+def machine_spec(spec: Spec[T], profile: str) -> Spec[T]:
+    """``spec`` as kept for one machine profile."""
+    return dataclasses.replace(spec, key=f"{MACHINES_GROUP}/{machine_scope(profile)}/{spec.key}")
+
+
 #: Every key, for the tests (and for anyone wondering what the file may hold).
 ALL_SPECS: tuple[Spec[object], ...] = (
     PROFILE,
@@ -318,6 +353,7 @@ class StationSettings:
         self._warned: set[str] = set()
         if isinstance(self.store, QSettings):
             self._check_file(self.store)
+        self._migrate()
 
     @property
     def file_name(self) -> str:
@@ -350,6 +386,34 @@ class StationSettings:
         except BadValue as exc:
             raise ValueError(f"{spec.key}: {value!r} is not {spec.expects}") from exc
         self.store.setValue(spec.key, value)
+
+    def _migrate(self) -> None:
+        """Global values of the machine's settings, from before, become one machine's.
+
+        They were set on the machine last used, so they are the first values of
+        that profile (kept if it has its own already); the others start from
+        the defaults.  A bad one is warned about and dropped, as any read.
+        """
+        try:
+            legacy = [spec for spec in MACHINE_SPECS if self.store.contains(spec.key)]
+        except Exception:  # a store that cannot even say what it holds: nothing to move
+            return
+        if not legacy:
+            return
+        owner = self.profile
+        for spec in legacy:
+            value = self.read(spec)
+            scoped = machine_spec(spec, owner)
+            try:
+                if value is not None and not self.store.contains(scoped.key):
+                    self.write(scoped, value)
+                self.store.remove(spec.key)
+            except Exception as exc:  # never a reason not to start
+                _log.warning("settings: %s not moved to %s (%s)", spec.key, scoped.key, exc)
+
+    def machine(self, profile: str) -> MachineSettings:
+        """The settings of one machine profile (its link, arrow keys, skipped lines)."""
+        return MachineSettings(self, profile)
 
     def take_warnings(self) -> list[str]:
         """The warnings not shown yet (each is shown once, at start)."""
@@ -401,51 +465,23 @@ class StationSettings:
     def period_ms(self, value: int) -> None:
         self.write(PERIOD_MS, int(value))
 
-    @property
-    def transport(self) -> str:
-        return self.read(TRANSPORT)
+    def _job_option(self, name: str, profile: str) -> Spec[object]:
+        spec = JOB_OPTIONS[name]
+        return machine_spec(spec, profile) if name in MACHINE_JOB_OPTIONS else spec
 
-    @transport.setter
-    def transport(self, value: str) -> None:
-        self.write(TRANSPORT, value)
+    def job_options(self, profile: str) -> dict[str, object]:
+        """The jobs dock's reading options that are stored (and valid), by option name.
 
-    @property
-    def device(self) -> str:
-        """Last serial port or BLE address used."""
-        return self.read(DEVICE)
-
-    @device.setter
-    def device(self, value: str) -> None:
-        self.write(DEVICE, value)
-
-    @property
-    def baud(self) -> int | None:
-        return self.read(BAUD)
-
-    @baud.setter
-    def baud(self, value: int) -> None:
-        self.write(BAUD, int(value))
-
-    @property
-    def jog_step(self) -> float:
-        """What a tap of an arrow key moves; 0: the key jogs while held."""
-        return self.read(JOG_STEP)
-
-    @jog_step.setter
-    def jog_step(self, value: float) -> None:
-        self.write(JOG_STEP, float(value))
-
-    def job_options(self) -> dict[str, object]:
-        """The jobs dock's reading options that are stored (and valid), by option name."""
+        Those that concern the machine (skipping lines it cannot run) are ``profile``'s.
+        """
+        specs = {name: self._job_option(name, profile) for name in JOB_OPTIONS}
         return {
-            name: self.read(spec)
-            for name, spec in JOB_OPTIONS.items()
-            if self.store.contains(spec.key)
+            name: self.read(spec) for name, spec in specs.items() if self.store.contains(spec.key)
         }
 
-    def set_job_options(self, values: Mapping[str, object]) -> None:
+    def set_job_options(self, values: Mapping[str, object], profile: str) -> None:
         for name, value in values.items():
-            self.write(JOB_OPTIONS[name], value)
+            self.write(self._job_option(name, profile), value)
 
     def drill_timing(self, base: DrillTiming) -> DrillTiming:
         """``base`` (the profile's) with the constants the operator set and stored."""
@@ -511,6 +547,55 @@ class StationSettings:
 
     def sync(self) -> None:
         self.store.sync()
+
+
+class MachineSettings:
+    """One machine profile's settings: read and written through its station's checks."""
+
+    def __init__(self, settings: StationSettings, profile: str) -> None:
+        self.settings = settings
+        self.profile = profile
+
+    def _read(self, spec: Spec[T]) -> T:
+        return self.settings.read(machine_spec(spec, self.profile))
+
+    def _write(self, spec: Spec[T], value: T) -> None:
+        self.settings.write(machine_spec(spec, self.profile), value)
+
+    @property
+    def transport(self) -> str:
+        """The link last used with this machine: emulator, serial or ble."""
+        return self._read(TRANSPORT)
+
+    @transport.setter
+    def transport(self, value: str) -> None:
+        self._write(TRANSPORT, value)
+
+    @property
+    def device(self) -> str:
+        """Last serial port or BLE address used with this machine."""
+        return self._read(DEVICE)
+
+    @device.setter
+    def device(self, value: str) -> None:
+        self._write(DEVICE, value)
+
+    @property
+    def baud(self) -> int | None:
+        return self._read(BAUD)
+
+    @baud.setter
+    def baud(self, value: int) -> None:
+        self._write(BAUD, int(value))
+
+    @property
+    def jog_step(self) -> float:
+        """What a tap of an arrow key moves on this machine; 0: the key jogs while held."""
+        return self._read(JOG_STEP)
+
+    @jog_step.setter
+    def jog_step(self, value: float) -> None:
+        self._write(JOG_STEP, float(value))
 
 
 def _shown(value: object) -> str:

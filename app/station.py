@@ -176,6 +176,21 @@ class Station(QObject):
         return None
 
     @property
+    def transport_kind(self) -> str | None:
+        """Which kind of link is open: "emulator", "serial" or "ble" (None: none, or another)."""
+        transport = self.link.transport if self.link else None
+        if transport is None:
+            return None
+        if isinstance(transport, LoopbackTransport):
+            return "emulator"
+        if isinstance(transport, SerialTransport):
+            return "serial"
+        ble = sys.modules.get("protocol.transport.ble")  # imported with the first BLE link
+        if ble is not None and isinstance(transport, ble.BleTransport):
+            return "ble"
+        return None
+
+    @property
     def reconnect_due(self) -> float | None:
         """Clock time of the next reconnection attempt, None when none is planned."""
         return self._reconnect_at

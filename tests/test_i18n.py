@@ -398,7 +398,8 @@ def test_settings_warnings_speak_the_language_installed_when_they_are_shown(
     odd = tmp_path / "odd.ini"
     odd.write_text("[link]\nbaud=-5\n")
     wrong = StationSettings(QSettings(str(odd), QSettings.Format.IniFormat))
-    assert wrong.baud is None  # read (and found wrong) while the station is still English
+    # Read (and found wrong, as it is moved to the last machine's) while still English.
+    assert wrong.machine(wrong.profile).baud is None
     i18n.install(language, tmp_path / "qm")
     (warning,) = corrupt.take_warnings()
     assert str(broken) in warning

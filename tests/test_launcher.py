@@ -79,13 +79,16 @@ def test_command_line_port_is_connected_and_remembered(
     calls: list[tuple[str, int | None]] = []
 
     class FakeStation:
+        profile = load_profile("xy-stage")
+
         def connect_serial(self, port: str, baud: int | None = None) -> None:
             calls.append((port, baud))
 
     args = build_parser().parse_args(["--port", "/dev/ttyUSB7", "--baud", "19200"])
     connect_as_asked(FakeStation(), args, settings)  # type: ignore[arg-type]
     assert calls == [("/dev/ttyUSB7", 19200)]
-    assert (settings.transport, settings.device, settings.baud) == ("serial", "/dev/ttyUSB7", 19200)
+    machine = settings.machine("xy-stage")
+    assert (machine.transport, machine.device, machine.baud) == ("serial", "/dev/ttyUSB7", 19200)
 
 
 def test_an_unexpected_error_stops_the_machine_and_says_so(

@@ -158,17 +158,19 @@ def test_the_values_that_once_broke_the_start_give_the_default_and_say_so(
 def test_good_values_come_back_as_written(tmp_path: Path) -> None:
     path = tmp_path / "stepdeck.ini"
     first = StationSettings(QSettings(str(path), QSettings.Format.IniFormat))
-    first.profile, first.transport, first.device = "pcb-drill", "serial", "/dev/ttyUSB0"
-    first.baud, first.period_ms = 9600, 250
-    first.set_job_options({"draw": True, "excellon_step_inch": 1e-3})
+    drill = first.machine("pcb-drill")
+    first.profile, drill.transport, drill.device = "pcb-drill", "serial", "/dev/ttyUSB0"
+    drill.baud, first.period_ms = 9600, 250
+    first.set_job_options({"draw": True, "excellon_step_inch": 1e-3}, "pcb-drill")
     first.sync()
     # A new process reads text from the file, not the values cached in this one.
     copy = tmp_path / "copy.ini"
     copy.write_bytes(path.read_bytes())
     again = StationSettings(QSettings(str(copy), QSettings.Format.IniFormat))
-    assert (again.profile, again.transport, again.device) == ("pcb-drill", "serial", "/dev/ttyUSB0")
-    assert (again.baud, again.period_ms) == (9600, 250)
-    assert again.job_options() == {"draw": True, "excellon_step_inch": 1e-3}
+    drill = again.machine("pcb-drill")
+    assert (again.profile, drill.transport, drill.device) == ("pcb-drill", "serial", "/dev/ttyUSB0")
+    assert (drill.baud, again.period_ms) == (9600, 250)
+    assert again.job_options("pcb-drill") == {"draw": True, "excellon_step_inch": 1e-3}
     assert again.take_warnings() == []
 
 
@@ -176,10 +178,11 @@ def test_a_value_out_of_range_is_never_written(tmp_path: Path) -> None:
     store = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     station_settings = StationSettings(store)
     with pytest.raises(ValueError, match="link/baud"):
-        station_settings.baud = 2**40
+        station_settings.machine("xy-stage").baud = 2**40
     with pytest.raises(ValueError, match="station/period_ms"):
         station_settings.period_ms = -5
-    assert not store.contains("link/baud") and not store.contains("station/period_ms")
+    assert not any(key.endswith("link/baud") for key in store.allKeys())
+    assert not store.contains("station/period_ms")
 
 
 @pytest.mark.parametrize(
@@ -192,7 +195,8 @@ def test_a_corrupt_file_gives_defaults_and_a_warning_naming_it(
     path = tmp_path / "stepdeck.ini"
     station_settings = StationSettings(_ini(path, content))
     assert station_settings.profile == PROFILE.default
-    assert station_settings.baud is None and station_settings.period_ms is None
+    assert station_settings.machine(PROFILE.default).baud is None
+    assert station_settings.period_ms is None
     (warning,) = station_settings.take_warnings()
     assert f"Settings file {path} is malformed: defaults are used" in warning
     kept = path.with_name(path.name + UNREADABLE_SUFFIX)
@@ -204,7 +208,7 @@ def test_a_settings_file_that_cannot_be_read_is_named(tmp_path: Path) -> None:
     path = tmp_path / "stepdeck.ini"
     path.mkdir()  # not readable as a file, even for root
     station_settings = StationSettings(QSettings(str(path), QSettings.Format.IniFormat))
-    assert station_settings.transport == "emulator"
+    assert station_settings.machine(PROFILE.default).transport == "emulator"
     (warning,) = station_settings.take_warnings()
     assert f"Settings file {path} is not readable" in warning
 
@@ -246,7 +250,7 @@ def test_the_station_starts_on_out_of_range_values_and_names_each(
     qtbot: QtBot, tmp_path: Path
 ) -> None:
     content = (
-        b"[link]\nbaud=1180591620717411303424\ntransport=serial\n"
+        b"[link]\nbaud=1180591620717411303424\ntransport=serial\ndevice=/dev/ttyUSB3\n"
         b"[station]\nperiod_ms=-5\nprofile=xy-stage\n"
         b"[main_window]\npage=99\n"
     )
@@ -263,7 +267,10 @@ def test_the_station_starts_on_out_of_range_values_and_names_each(
         assert station.period_ms == station.profile.period_ms  # not a 1 ms timer
         panel = window.connection_panel
         assert panel.baud_combo.currentData() == station.profile.link.baud
-        assert panel.transport == "serial"  # the good values are kept
+        assert panel.selected_port() == "/dev/ttyUSB3"  # the good values are kept
+        # ...but the page shows the link in use: the bare launch opened the emulator.
+        qtbot.waitUntil(lambda: station.model.link_state is LinkState.CONNECTED, timeout=5000)
+        assert panel.transport == "emulator"
         assert window.menu_panel.current == 0
     finally:
         launcher.shutdown()

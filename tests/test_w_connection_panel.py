@@ -114,7 +114,7 @@ def test_scan_results_list_name_address_and_signal_with_the_last_device_chosen(
     harness: StationHarness,
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    StationSettings(store).device = "C0:FF:EE:00:00:02"
+    StationSettings(store).machine(harness.station.profile.name).device = "C0:FF:EE:00:00:02"
     found = [
         BleDevice("XY-STAGE-1", "C0:FF:EE:00:00:01", -48),
         BleDevice("XY-STAGE-2", "C0:FF:EE:00:00:02", -71),

@@ -48,6 +48,8 @@ class JogInput(QObject):
         super().__init__(parent)
         self._station = station
         self._axes = len(station.model.axes)
+        #: Whether this machine jogs at all: if not, no key is a jog key.
+        self.jogs = station.dialect.jogs
         self._keys: set[int] = set()
         self._buttons: dict[Hashable, tuple[int, ...]] = {}
         self._shift = False
@@ -81,7 +83,7 @@ class JogInput(QObject):
 
     def is_jog_key(self, key: int) -> bool:
         """Whether ``key`` jogs an axis this machine has."""
-        return key in JOG_KEYS and JOG_KEYS[key][0] < self._axes
+        return self.jogs and key in JOG_KEYS and JOG_KEYS[key][0] < self._axes
 
     def is_held(self, key: int) -> bool:
         return key in self._keys or key in self._stepped

@@ -202,6 +202,8 @@ class MainWindow(QMainWindow):
         self._settings = (
             settings if isinstance(settings, StationSettings) else StationSettings(settings)
         )
+        #: This machine's own settings (arrow keys, link, skipped lines), apart from others'.
+        self._machine_settings = self._settings.machine(station.profile.name)
         #: The box listing settings the station could not use (None: there were none).
         self.settings_warning: QMessageBox | None = None
         self._filtering = False
@@ -223,7 +225,7 @@ class MainWindow(QMainWindow):
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
-        self.manual_panel.set_key_step(self._settings.jog_step)
+        self.manual_panel.set_key_step(self._machine_settings.jog_step)
         self.manual_panel.keyStepChanged.connect(self._remember_key_step)
         self._add_page(
             lambda: self.tr("&Manual"),
@@ -407,9 +409,24 @@ class MainWindow(QMainWindow):
         action = QAction(self, checkable=True)
         self.texts.set(action.setText, title)
         action.setShortcut(QKeySequence(shortcut))
-        action.triggered.connect(lambda checked: dock().setVisible(checked))
+        action.triggered.connect(lambda checked: self._show_dock(action, dock(), checked))
         self.view_menu.addAction(action)
         return action
+
+    def _show_dock(self, action: QAction, dock: QDockWidget, checked: bool) -> None:
+        """Shown in front, or hidden, as the original's Shift+V showed its extension.
+
+        A dock shown but behind another's tab (the developer pane behind the
+        plots) is brought forward rather than hidden: a key that seemed to do
+        nothing, or hid what could not be seen, is what the operator met.
+        """
+        behind = bool(self.tabifiedDockWidgets(dock)) and dock.visibleRegion().isEmpty()
+        if not checked and dock.isVisible() and behind:
+            checked = True
+            action.setChecked(True)
+        dock.setVisible(checked)
+        if checked:
+            dock.raise_()
 
     def _add_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
         """Place a dock built just now where the last session left it, hidden until asked."""
@@ -450,7 +467,7 @@ class MainWindow(QMainWindow):
             self._jobs_dock = dock
             dock.jobOpened.connect(self._remember_job)
             if self._remembers:
-                dock.restore_options(self._settings.job_options())
+                dock.restore_options(self._settings.job_options(self.station.profile.name))
             if self._colours is not None:
                 dock.preview.apply_colours(self._colours)
             self._add_dock(dock, Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_action)
@@ -1025,7 +1042,9 @@ class MainWindow(QMainWindow):
         self._settings.write(DOCKS_SHOWN, ",".join(shown_docks))
         self._settings.write(PAGE, self.menu_panel.current)
         if self._jobs_dock is not None:
-            self._settings.set_job_options(self._jobs_dock.option_values())
+            self._settings.set_job_options(
+                self._jobs_dock.option_values(), self.station.profile.name
+            )
         self._settings.sync()
 
     def _close_when_stopped(self) -> None:
@@ -1041,7 +1060,7 @@ class MainWindow(QMainWindow):
             self.settings_warning.show()  # not exec(): the window stays usable behind it
 
     def _remember_key_step(self, step: float) -> None:
-        self._settings.jog_step = step
+        self._machine_settings.jog_step = step
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Closing the operator window stops the machine and closes the link.

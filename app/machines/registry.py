@@ -32,6 +32,9 @@ EmulatorFactory = Callable[[Clock, MachineProfile], EmulatedDevice]
 class Dialect:
     session: SessionFactory
     emulator: EmulatorFactory
+    #: The session carries held and stepped jogs: without them the window shows no jog pad
+    #: and the arrow keys are not the machine's (a pad shown only to be refused misleads).
+    jogs: bool = True
 
 
 def _stage_session(

@@ -203,6 +203,7 @@
     </message>
     <message>
         <source>Switching machine closes this link and opens the new one</source>
+        <extracomment>The link is remembered per machine: the drill&apos;s port is not the stage&apos;s.</extracomment>
         <translation>Prepnutím stroja sa toto spojenie ukončí a otvorí sa nové</translation>
     </message>
     <message>
@@ -424,7 +425,6 @@
     <name>DrillSession</name>
     <message>
         <source>The drill has no stop command: {0} queued command(s) dropped; {1} finishes its procedure</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}; {1} dokončí svoj postup</translation>
     </message>
     <message>
@@ -442,6 +442,15 @@
     <message>
         <source>; {0} command(s) dropped</source>
         <translation>; zahodených príkazov: {0}</translation>
+    </message>
+    <message>
+        <source>{0} is at the end of its travel</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <translation>{0} je na konci rozsahu posuvu</translation>
+    </message>
+    <message>
+        <source>Jog ends: the end of the travel</source>
+        <translation>Posuv končí: koniec rozsahu posuvu</translation>
     </message>
 </context>
 <context>
@@ -2572,7 +2581,7 @@ Načítať ako:</translation>
     <name>JogInput</name>
     <message>
         <source>Jog refused: {0}</source>
-        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
         <translation>Ručný posuv odmietnutý: {0}</translation>
     </message>
 </context>
@@ -2688,7 +2697,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). This machine&apos;s own settings (arrow keys, link, skipped lines), apart from others&apos;. The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
@@ -2943,7 +2952,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Hold to jog {0} up  (key: {1})</source>
-        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds).</extracomment>
+        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds). The pad and the arrow-key choice, left out on a machine that cannot jog.</extracomment>
         <translation>Držaním posúvať {0} hore  (kláves: {1})</translation>
     </message>
     <message>
@@ -3219,7 +3228,7 @@ sa nevykresľuje</translation>
     <name>Settings</name>
     <message>
         <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
-        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. The jobs dock&apos;s options that concern the machine: stored per profile. Every value kept per machine profile; each key here is also where a file from before kept it for every machine (read once, then moved: see ``StationSettings._migrate``). Where the per-machine values live: ``machines/&lt;profile&gt;/&lt;key&gt;``. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
         <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
     </message>
     <message>

@@ -50,6 +50,8 @@ class ConnectionPanel(QWidget):
         super().__init__(parent)
         self._station = station
         self._settings = settings
+        #: The link is remembered per machine: the drill's port is not the stage's.
+        self._machine = settings.machine(station.profile.name)
         self._scan: BleScan | None = None
         self._scan_note: tuple[str, int] | None = None
         t = self.texts = Texts(self)
@@ -164,7 +166,7 @@ class ConnectionPanel(QWidget):
         self.port_combo.clear()
         for port in serial_ports():
             self.port_combo.addItem(f"{port.device} — {port.description}", port.device)
-        self._select_port(current or self._settings.device)
+        self._select_port(current or self._machine.device)
 
     def _select_port(self, device: str) -> None:
         index = self.port_combo.findData(device)
@@ -191,7 +193,7 @@ class ConnectionPanel(QWidget):
     def show_devices(self, devices: list[BleDevice]) -> None:
         self.scan_button.setEnabled(True)
         self.ble_list.clear()
-        last = self._settings.device
+        last = self._machine.device
         for device in devices:
             rssi = f"{device.rssi} dBm" if device.rssi is not None else "—"
             name = device.name or self.tr("(no name)")
@@ -229,13 +231,13 @@ class ConnectionPanel(QWidget):
         item = self.ble_list.currentItem()
         if item is not None:
             return str(item.data(Qt.ItemDataRole.UserRole))
-        return self._settings.device or None  # the last used stage, found again by the transport
+        return self._machine.device or None  # the last used stage, found again by the transport
 
     # --- connecting ----------------------------------------------------------
 
     def connect_selected(self) -> None:
         transport = self.transport
-        self._settings.transport = transport
+        self._machine.transport = transport
         if transport == "serial":
             port = self.selected_port()
             if not port:
@@ -244,13 +246,13 @@ class ConnectionPanel(QWidget):
                 )
                 return
             baud = int(self.baud_combo.currentData())
-            self._settings.device = port
-            self._settings.baud = baud
+            self._machine.device = port
+            self._machine.baud = baud
             self._station.connect_serial(port, baud)
         elif transport == "ble":
             address = self.selected_ble_address()
             if address:
-                self._settings.device = address
+                self._machine.device = address
             self._station.connect_ble(address)
         else:
             self._station.connect_emulator()
@@ -258,10 +260,10 @@ class ConnectionPanel(QWidget):
 
     def _restore(self) -> None:
         self.refresh_ports()
-        baud = self._settings.baud or self._station.profile.link.baud
+        baud = self._machine.baud or self._station.profile.link.baud
         index = self.baud_combo.findData(baud)
         self.baud_combo.setCurrentIndex(index if index >= 0 else self.baud_combo.count() - 4)
-        self.select_transport(self._settings.transport)
+        self.select_transport(self._machine.transport)
         self._show_transport()
 
     def _show_transport(self) -> None:
@@ -277,8 +279,23 @@ class ConnectionPanel(QWidget):
         self.state_label.setText(text)
         linked = model.link_state is not LinkState.DISCONNECTED
         self.disconnect_button.setEnabled(linked)
+        if model.link_state is not LinkState.CONNECTED:
+            return
+        remembered = False
+        kind = self._station.transport_kind
+        if kind is not None and kind != self.transport:
+            # The page shows the link in use (a bare launch or a machine switch opens the
+            # emulator), never the one remembered from before; and it is the last one now.
+            self.select_transport(kind)
+        if kind is not None and kind != self._machine.transport:
+            self._machine.transport = kind
+            remembered = True
         device = self._station.device_id
-        if model.link_state is LinkState.CONNECTED and device and device != self._settings.device:
+        if device and device != self._machine.device:
             # A scan-found stage becomes "the last used" one, tried first next time.
-            self._settings.device = device
+            self._machine.device = device
+            remembered = True
+        if device and kind == "serial":
+            self._select_port(device)
+        if remembered:
             self._settings.sync()

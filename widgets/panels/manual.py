@@ -93,7 +93,8 @@ class ManualPanel(QWidget):
         self.stop_button.setFixedSize(_BUTTON_SIZE)
         self.stop_button.setStyleSheet("font-weight: bold; color: #b02020;")
         self.stop_button.clicked.connect(jog.stop_all)
-        grid.addWidget(self.stop_button, 1, 1)
+        if jog.jogs:
+            grid.addWidget(self.stop_button, 1, 1)
 
         first = axes[0]
         self.key_step = QComboBox()
@@ -146,6 +147,8 @@ class ManualPanel(QWidget):
                 button.clicked.connect(lambda _=False, i=index: self._home(i))
                 homes.addWidget(button)
                 self.home_buttons.append(button)
+        if not jog.jogs:
+            homes.insertWidget(0, self.stop_button)  # no pad to sit in: Stop stays in sight
         homes.addStretch(1)
 
         cross = QHBoxLayout()
@@ -167,12 +170,19 @@ class ManualPanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.setContentsMargins(12, 12, 12, 12)
-        layout.addLayout(cross)
-        layout.addWidget(self.jog_note)
-        layout.addSpacing(12)
-        layout.addLayout(steps)
+        #: The pad and the arrow-key choice, left out on a machine that cannot jog.
+        self.jog_pad = QWidget()
+        self.jog_pad.setObjectName("jog_pad")
+        pad = QVBoxLayout(self.jog_pad)
+        pad.setContentsMargins(0, 0, 0, 0)
+        pad.addLayout(cross)
+        pad.addWidget(self.jog_note)
+        pad.addSpacing(12)
+        pad.addLayout(steps)
+        layout.addWidget(self.jog_pad)
         layout.addLayout(homes)
         layout.addStretch(1)
+        self.jog_pad.setVisible(jog.jogs)
 
     def _z_column(self, name: str) -> QVBoxLayout:
         """Up and down for the third axis, beside the cross (PageUp / PageDown)."""

@@ -23,12 +23,22 @@ Positions are absolute microsteps from the machine's zero; the session
 converts millimetres with the profile's constants (steps per revolution x
 microsteps ÷ lead) and does all the rounding, half away from zero, in
 decimal so that 12.5 mm x 19.8 is 247.5 exactly and becomes 248.
+
+The drill jogs by absolute moves too, in whole microsteps clamped inside
+the travel and judged by the motion gate like any other.  It has no stop
+command, so a held jog is never one long move cancelled on release (a
+release that never came would run it to the travel's end): it is a chain of
+short steps, each sent only when the previous one is done and the holding
+still shows signs of life (the dead-man).  A release, a lost focus or a
+silent key therefore lets at most one short step finish.
 """
 
 from __future__ import annotations
 
+import math
 from collections import deque
-from decimal import ROUND_HALF_UP, Decimal
+from collections.abc import Sequence
+from decimal import ROUND_CEILING, ROUND_FLOOR, ROUND_HALF_UP, Decimal
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
@@ -66,6 +76,13 @@ TICK_MS = 100
 #: Sent once a link opens, to hear the drill answer: no command has this letter.
 PROBE_LETTER = "I"
 PROBE = f"{PROBE_LETTER}\r".encode("ascii")
+
+#: Seconds of motion in one step of a held jog: what may still run after a release.
+JOG_STEP_S = 0.1
+#: With Shift (the other speed) a held jog's steps are this share as long: fine positioning.
+JOG_SLOW_SHARE = 0.1
+#: The largest position the wire carries (six digits, docs/protocols.md §3.2).
+MAX_POSITION = 999_999
 
 #: What each procedure is called in messages.
 PROCEDURES = {
@@ -126,6 +143,9 @@ class DrillSession(MachineSession):
         self._timer.timeout.connect(self.tick)
         self._refused_lines = 0
         self._homed_here = False
+        self._slow = False  # Shift held: the held jog's steps are short
+        self._jog_turn = 0  # a diagonal jog alternates its axes, this one next
+        self._jog_told_end = False
         self._per_mm = [
             Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
             for axis in model.profile.axes
@@ -201,6 +221,124 @@ class DrillSession(MachineSession):
             return False
         return self._enqueue(Command(name, self.to_microsteps(axis, position)))
 
+    # --- jogging: absolute steps in whole microsteps, inside the travel ---------------
+
+    def step_jog(self, axis: int, direction: int, step: float) -> bool:
+        """One tap of an arrow key in step mode: ``step`` (at least one microstep) that way.
+
+        Taps made while a move is under way queue and count from where the
+        moves before them end, so three taps go three steps.
+        """
+        if not 0 <= axis < self.axis_count or direction not in (-1, 1) or not step > 0:
+            return False
+        if self._refuse_jog():
+            return False
+        name = self.model.profile.axes[axis].name
+        if name not in POSITION_LETTERS:
+            return self._unsupported(f"moves of {name}")
+        microsteps = max(1, self.to_microsteps(axis, step))
+        target = self._jog_target(axis, direction, microsteps)
+        if target is None:
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "DrillSession", "{0} is at the end of its travel"
+                ).format(name)
+            )
+            return False
+        return self._enqueue(Command(name, target))
+
+    def set_jog(self, directions: Sequence[int]) -> None:
+        """Held arrows or pad buttons: short steps while the holding shows signs of life."""
+        wanted = [max(-1, min(1, int(d))) for d in directions[: self.axis_count]]
+        wanted += [0] * (self.axis_count - len(wanted))
+        if any(wanted) and self._refuse_jog():
+            wanted = [0] * self.axis_count
+        if wanted == self._jog:
+            return
+        self._jog = wanted
+        self._jog_started()
+        self._jog_told_end = False
+        self._feed_jog()
+
+    def set_shift(self, held: bool) -> None:
+        """Shift makes the held jog's steps short (the drill has one speed)."""
+        self._slow = held
+
+    def jog_step_microsteps(self, axis: int) -> int:
+        """How far one step of a held jog goes on ``axis``: a short time's motion."""
+        name = self.model.profile.axes[axis].name
+        period = self.model.profile.drill_timing.step_periods.get(name, 0.0)
+        seconds = JOG_STEP_S * (JOG_SLOW_SHARE if self._slow else 1.0)
+        return max(1, round(seconds / period)) if period > 0 else 1
+
+    def travel_microsteps(self, axis: int) -> tuple[int, int]:
+        """The whole microsteps inside the travel: a position the gate can never refuse."""
+        low, high = self.gate.limits(axis)
+        per_mm = self._per_mm[axis]
+        first = 0
+        if math.isfinite(low):
+            first = max(0, int((Decimal(str(low)) * per_mm).to_integral_value(ROUND_CEILING)))
+        last = MAX_POSITION
+        if math.isfinite(high):
+            last = int((Decimal(str(high)) * per_mm).to_integral_value(ROUND_FLOOR))
+        return first, min(last, MAX_POSITION)
+
+    def _planned_microsteps(self, axis: int) -> int:
+        """Where ``axis`` will stand once the commands out and queued are done."""
+        name = self.model.profile.axes[axis].name
+        pending = [c for c in (self._in_flight, *self._queue) if c is not None]
+        for command in reversed(pending):
+            if command.letter == name and command.value is not None:
+                return command.value
+            if command.letter == "N":
+                return 0
+            if command.letter == "P":
+                travel = self.model.profile.axes[axis].travel
+                return 0 if name == "X" else self.to_microsteps(axis, travel)
+        return self.to_microsteps(axis, self.model.axes[axis].position)
+
+    def _jog_target(self, axis: int, direction: int, microsteps: int) -> int | None:
+        """``microsteps`` from the planned position, clamped inside the travel; None: no room."""
+        here = self._planned_microsteps(axis)
+        first, last = self.travel_microsteps(axis)
+        target = min(last, max(first, here + direction * microsteps))
+        if (target - here) * direction <= 0:
+            return None  # at the end already (or outside it: never moved further out)
+        return target
+
+    def _feed_jog(self) -> bool:
+        """The next step of a held jog, when the drill is free; whether one was sent."""
+        self._check_deadman()  # no step goes for a holding that shows no sign of life
+        if not any(self._jog) or self.busy or not self.link.is_open:
+            return False
+        if self.model.jog_lock_reason is not None or self.model.motion_lock_reason() is not None:
+            self._end_held_jog("locked")
+            return False
+        held = [axis for axis, d in enumerate(self._jog) if d]
+        for k in range(len(held)):
+            axis = held[(self._jog_turn + k) % len(held)]
+            name = self.model.profile.axes[axis].name
+            if name not in POSITION_LETTERS:
+                continue
+            target = self._jog_target(axis, self._jog[axis], self.jog_step_microsteps(axis))
+            if target is None:
+                continue
+            self._jog_turn = (self._jog_turn + k + 1) % len(held)
+            return self._enqueue(Command(name, target))
+        if not self._jog_told_end:
+            self._jog_told_end = True
+            self.model.message.emit(
+                QCoreApplication.translate("DrillSession", "Jog ends: the end of the travel")
+            )
+        return False
+
+    def _end_held_jog(self, reason: str) -> None:
+        """The held jog is over without a release: whoever holds it forgets it."""
+        if any(self._jog):
+            self._jog = [0] * self.axis_count
+            self._jog_started()
+            self.jogEnded.emit(reason)
+
     def home(self, axis: int) -> bool:
         """``N`` homes X then Y, whichever axis was asked for."""
         return self._enqueue(HOME)
@@ -232,6 +370,8 @@ class DrillSession(MachineSession):
         return self._enqueue(result)
 
     def stop_all(self) -> None:
+        self._jog = [0] * self.axis_count
+        self._jog_started()
         dropped = len(self._queue)
         self._queue.clear()
         running = self._in_flight
@@ -301,7 +441,10 @@ class DrillSession(MachineSession):
     # --- time --------------------------------------------------------------------
 
     def tick(self) -> None:
-        """A late reply shows the link stale; one not come in time means a silent link."""
+        """A late reply shows the link stale; one not come in time means a silent link.
+
+        And a held jog with no sign of life for too long ends (the dead-man).
+        """
         now = self.clock.now()
         stall = self._station_stall(now)
         if stall and self._waiting_since is not None:
@@ -309,6 +452,7 @@ class DrillSession(MachineSession):
             self._late_at = (self._late_at or now) + stall
             self._deadline = (self._deadline or now) + stall
         self._check_answer()
+        self._feed_jog()
         since, late_at, deadline = self._waiting_since, self._late_at, self._deadline
         if since is None or late_at is None or deadline is None:
             return
@@ -451,6 +595,7 @@ class DrillSession(MachineSession):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         dropped = len(self._queue) + (self._in_flight is not None)
+        self._end_held_jog("link closed")
         self._clear()
         self._show_stopped()
         if reason is None:
@@ -503,11 +648,12 @@ class DrillSession(MachineSession):
             self.commandDone.emit(text)
             if self._queue:
                 self._send_next()
-            else:
+            elif not self._feed_jog():  # a held jog goes on with its next step
                 self.idle.emit()
         else:
             dropped = len(self._queue)
             self._clear()
+            self._end_held_jog("refused")
             self._show_stopped()
             self.model.message.emit(
                 f"The drill refused {text} ({PROCEDURES[command.letter]})"
