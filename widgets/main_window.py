@@ -56,7 +56,6 @@ from PySide6.QtWidgets import (
     QPlainTextEdit,
     QPushButton,
     QScrollArea,
-    QStackedWidget,
     QTextEdit,
     QVBoxLayout,
     QWidget,
@@ -75,6 +74,7 @@ from protocol.drill.timing import DrillTiming
 from widgets.jog_input import JogInput
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
+from widgets.page_stack import PageArea, PageStack
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
 from widgets.panels.drill import DrillPanel
@@ -219,8 +219,10 @@ class MainWindow(QMainWindow):
             "background: #fff3cd; color: #7a5200; border: 1px solid #e0c060;"
             " border-radius: 4px; padding: 4px 8px; font-weight: bold;"
         )
-        self.stack = QStackedWidget()
+        self.stack = PageStack()
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
+        # Scrolls up and down when the screen is short, so no page makes the window taller.
+        self.page_area = PageArea(self.stack)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
         self.manual_panel.set_key_step(self._settings.jog_step)
@@ -349,7 +351,7 @@ class MainWindow(QMainWindow):
         middle = QHBoxLayout()
         middle.setSpacing(10)
         middle.addWidget(self.menu_panel)
-        middle.addWidget(self.stack, 1)
+        middle.addWidget(self.page_area, 1)
         middle.addWidget(self.static_panel)
         central = QWidget()
         layout = QVBoxLayout(central)
@@ -359,6 +361,11 @@ class MainWindow(QMainWindow):
         layout.addWidget(self.lock_label)
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
+        # The jobs dock runs the window's full height, beside the plots rather than above
+        # them: its preview, with a prompt or the registration row over it, then has room
+        # on an 800 px screen, and the plots and the developer pane sit under the pages.
+        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
+        self.setCorner(Qt.Corner.TopRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
 
     def _build_dock_actions(self, checkpoint_dir: Path | None) -> None:
         """The View menu's entries for the docks; each dock is built when first wanted.
