@@ -65,6 +65,7 @@ from app.jobs.run.runner import JobRunner, JobState, LoadCheck
 from app.station import Station
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
+from widgets.jobs.preview_column import PreviewColumn
 from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
@@ -200,10 +201,16 @@ class JobsDock(QDockWidget):
             lambda k: self.preview.pick_reference(k if k >= 0 else None)
         )
         self.preview.holePicked.connect(self.registration.set_reference)
-        layout.addWidget(self.registration)
-        layout.addWidget(self._build_resume_offer())
-        layout.addWidget(self._build_prompt())
-        layout.addWidget(self.preview, 1)
+        resume_offer = self._build_resume_offer()
+        prompt = self._build_prompt()
+        # The bands take their room from the preview: a prompt never makes the window grow.
+        self.preview_column = PreviewColumn(
+            (self.registration, resume_offer, prompt),
+            # The registration row steps aside while a job runs, when prompts come.
+            ((self.registration, resume_offer), (prompt,)),
+            self.preview,
+        )
+        layout.addWidget(self.preview_column, 1)
         layout.addLayout(self._build_progress())
         self.operation_label = QLabel("")
         self.operation_label.setObjectName("job_operation")
@@ -957,6 +964,7 @@ class JobsDock(QDockWidget):
         self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
         # Registering replaces the loaded job: not while it runs.
         self.registration.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        self.registration.set_job_running(state in ACTIVE_STATES)
         self.export_button.setEnabled(loaded)
         # With an interrupted run on offer, Run from the start would repeat operations:
         # the operator chooses Resume or Discard first.
