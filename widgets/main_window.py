@@ -26,6 +26,7 @@ from PySide6.QtCore import (
     QT_TRANSLATE_NOOP,
     QCoreApplication,
     QEvent,
+    QMargins,
     QObject,
     QSettings,
     QStandardPaths,
@@ -87,6 +88,7 @@ from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker, Texts
+from widgets.screen_fit import fitted
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
 
@@ -969,6 +971,8 @@ class MainWindow(QMainWindow):
         geometry = self._settings.read(GEOMETRY)
         if geometry is None or not self.restoreGeometry(geometry):
             self.resize(980, 640)
+        else:
+            self.fit_on_screen()
         state = self._settings.read(WINDOW_STATE)
         if state is not None:
             # The docks the last session showed are built first, so the state places them;
@@ -985,6 +989,29 @@ class MainWindow(QMainWindow):
             self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
+
+    def fit_on_screen(self) -> None:
+        """Move (and if need be shrink) the window so it is wholly on its screen, frame and all.
+
+        Done when the saved geometry is restored and again once shown, when the window
+        manager's frame is known; a maximised or full-screen window is the system's.
+        """
+        if self.windowState() & (Qt.WindowState.WindowMaximized | Qt.WindowState.WindowFullScreen):
+            return
+        screen = self.screen()
+        if screen is None:
+            return
+        geometry = self.geometry()
+        frame = self.frameGeometry()
+        margins = QMargins(
+            geometry.left() - frame.left(),
+            geometry.top() - frame.top(),
+            frame.right() - geometry.right(),
+            frame.bottom() - geometry.bottom(),
+        )
+        target = fitted(geometry, margins, screen.availableGeometry())
+        if target != geometry:
+            self.setGeometry(target)
 
     def _restore_drill_timing(self) -> None:
         """The drill's timing constants the operator set last time (FIDELITY S2-06)."""
@@ -1044,6 +1071,9 @@ class MainWindow(QMainWindow):
     def showEvent(self, event: QShowEvent) -> None:
         self._install_filter()
         super().showEvent(event)
+        if self._remembers and not event.spontaneous():
+            # The frame the window manager draws is known only now.
+            QTimer.singleShot(0, self, self.fit_on_screen)
         if self.settings_warning is not None and not self.settings_warning.isVisible():
             self.settings_warning.show()  # not exec(): the window stays usable behind it
 
