@@ -85,11 +85,11 @@ VARIABLE_COLOUR = "#9467bd"
 PLOTS_MIN_HEIGHT = 180
 #: The width of the caption (title, unit and key) beside each plot, in pixels.
 CAPTION_WIDTH = 118
-#: Characters of the variable's name the closed list shows at least.
+# Characters of the variable's name the closed list shows at least.
 VARIABLE_CHARS = 8
-#: The height the dock asks for: each plot about 90 px, enough to read a curve's shape.
-#: Not more: under the pages on an 800 px screen, the page shown must keep its height
-#: (the window gives a dock what it asks for and the pages the rest).
+# The height the dock asks for: each plot about 90 px, enough to read a curve's shape.
+# Not more: under the pages on an 800 px screen, the page shown must keep its height
+# (the window gives a dock what it asks for and the pages the rest).
 DEFAULT_PLOTS_HEIGHT = 3 * 90
 
 

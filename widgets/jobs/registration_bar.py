@@ -72,7 +72,7 @@ class RegistrationBar(QWidget):
         self.placement = Placement()
         self._holes: list[Point] = []
         self.measured: list[Point | None] = [None] * MAX_REFERENCES
-        #: The job has two holes or more to register on; a job is under way.
+        # The job has two holes or more to register on; a job is under way.
         self._usable = False
         self._running = False
         t = self.texts = Texts(self)

@@ -69,7 +69,7 @@ COMMAND_BUTTONS = (
 )
 
 
-#: Command buttons to a row (the Timing… toggle takes the last cell).
+# Command buttons to a row (the Timing… toggle takes the last cell).
 COMMAND_COLUMNS = 3
 
 
