@@ -602,7 +602,9 @@ class JobsDock(QDockWidget):
         self.prompt.hide()
         return self.prompt
 
-    def _build_progress(self) -> QHBoxLayout:
+    def _build_progress(self) -> QVBoxLayout:
+        rows = QVBoxLayout()
+        rows.setSpacing(2)
         row = QHBoxLayout()
         row.setSpacing(8)
         self.progress = QProgressBar()
@@ -624,12 +626,21 @@ class JobsDock(QDockWidget):
             self.eta_label.setToolTip,
             lambda: self.tr("Time left, from the dry run of the job on the machine's model"),
         )
+        # The times on a line of their own: beside the bar and a long job's count ("1234 /
+        # 1809 ops · 1250 sent", in Slovak longer) they widened the dock while the job ran,
+        # and the window with it, past a 1280 px screen.
+        self.progress.setMinimumWidth(40)
         row.addWidget(self.progress, 1)
         row.addWidget(self.count_label)
-        row.addWidget(self.elapsed_label)
-        row.addWidget(self.eta_label)
+        times = QHBoxLayout()
+        times.setSpacing(12)
+        times.addWidget(self.elapsed_label)
+        times.addWidget(self.eta_label)
+        times.addStretch(1)
+        rows.addLayout(row)
+        rows.addLayout(times)
         self._set_times(None, None)
-        return row
+        return rows
 
     # --- operator actions ----------------------------------------------------
 
