@@ -653,6 +653,9 @@ class DeveloperPane(QDockWidget):
         splitter.setStretchFactor(0, 0)
         splitter.setStretchFactor(1, 1)
         splitter.setChildrenCollapsible(False)
+        # The controls at their least width to begin with, the log the rest: under the pages
+        # beside the jobs dock the log had only what its toolbar needs.
+        splitter.setSizes([controls.minimumWidth(), 10 * controls.minimumWidth()])
         content = QWidget()
         layout = QVBoxLayout(content)
         layout.setContentsMargins(6, 4, 6, 4)
