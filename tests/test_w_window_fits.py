@@ -4,7 +4,9 @@ A laptop screen of 1280x800 is what the workshop machines have.  The window's
 minimum size must fit it with the jobs dock, the telemetry plots and the
 developer pane all open, and at that size every run control — and the
 Continue of an operator prompt — must be on screen, not clipped and not
-under another dock.
+under another dock.  What depends on the font runs under each common family
+(tests/helpers/fonts.py); languages and the moments of a job are walked in
+test_w_window_fits_everywhere.py.
 """
 
 from __future__ import annotations
@@ -20,11 +22,20 @@ from pytestqt.qtbot import QtBot
 from app.jobs.run.runner import JobState
 from app.machines.stage.parameters import STAGE_PARAMETERS
 from app.profiles import available_profiles, load_profile
+from tests.helpers.fonts import FAMILIES, application_font
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 
 SCREEN = QSize(1280, 800)
 LEFT = Qt.MouseButton.LeftButton
+
+
+@pytest.fixture(params=FAMILIES)
+def family(request: pytest.FixtureRequest, qapp: object) -> Iterator[str]:
+    """Under each font family: their metrics differ by tens of pixels.  (The minimum size
+    at every moment, in every language, is walked in test_w_window_fits_everywhere.py.)"""
+    with application_font(request.param):
+        yield request.param
 
 
 @pytest.fixture(params=available_profiles())
@@ -68,7 +79,7 @@ def test_minimum_size_fits_1280_by_800_with_every_dock(
 
 
 def test_at_1280_by_800_every_run_control_is_on_screen_and_docks_do_not_overlap(
-    qtbot: QtBot, profile_harness: StationHarness, tmp_path: Path
+    qtbot: QtBot, family: str, profile_harness: StationHarness, tmp_path: Path
 ) -> None:
     window = _every_dock_open(qtbot, profile_harness, tmp_path)
     window.resize(SCREEN)
@@ -95,7 +106,7 @@ def test_at_1280_by_800_every_run_control_is_on_screen_and_docks_do_not_overlap(
 
 
 def test_opening_and_closing_docks_keeps_the_size_the_user_chose(
-    qtbot: QtBot, profile_harness: StationHarness, tmp_path: Path
+    qtbot: QtBot, family: str, profile_harness: StationHarness, tmp_path: Path
 ) -> None:
     window = _every_dock_open(qtbot, profile_harness, tmp_path)
     window.resize(SCREEN)
@@ -134,7 +145,7 @@ def test_continue_of_a_wait_is_on_screen_at_1280_by_800(
 
 
 def test_the_dynamics_page_reflows_instead_of_scrolling_sideways(
-    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+    qtbot: QtBot, family: str, harness: StationHarness, tmp_path: Path
 ) -> None:
     """At 1280x800 with every dock the page is a third of the window: the axes stack."""
     window = _every_dock_open(qtbot, harness, tmp_path)
@@ -190,7 +201,7 @@ def test_the_dynamics_page_reflows_instead_of_scrolling_sideways(
     ],
 )
 def test_the_jobs_dock_offers_only_this_machines_options_packed_two_a_row(
-    qtbot: QtBot, tmp_path: Path, profile: str, offered: list[str]
+    qtbot: QtBot, family: str, tmp_path: Path, profile: str, offered: list[str]
 ) -> None:
     """No "Draw holes with the pen" without a pen, no drill options without a tool for
     holes, and no gap left where a hidden option would have stood."""

@@ -26,6 +26,7 @@ from PySide6.QtCore import (
     QT_TRANSLATE_NOOP,
     QCoreApplication,
     QEvent,
+    QMargins,
     QObject,
     QSettings,
     QStandardPaths,
@@ -56,7 +57,6 @@ from PySide6.QtWidgets import (
     QPlainTextEdit,
     QPushButton,
     QScrollArea,
-    QStackedWidget,
     QTextEdit,
     QVBoxLayout,
     QWidget,
@@ -75,6 +75,7 @@ from protocol.drill.timing import DrillTiming
 from widgets.jog_input import JogInput
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
+from widgets.page_stack import PageArea, PageStack
 from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
 from widgets.panels.drill import DrillPanel
@@ -87,6 +88,7 @@ from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
 from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker, Texts
+from widgets.screen_fit import fitted
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
 
@@ -221,8 +223,10 @@ class MainWindow(QMainWindow):
             "background: #fff3cd; color: #7a5200; border: 1px solid #e0c060;"
             " border-radius: 4px; padding: 4px 8px; font-weight: bold;"
         )
-        self.stack = QStackedWidget()
+        self.stack = PageStack()
         self.stack.setFrameShape(QFrame.Shape.StyledPanel)
+        # Scrolls up and down when the screen is short, so no page makes the window taller.
+        self.page_area = PageArea(self.stack)
         self.menu_panel = MenuPanel(self.stack)
         self.manual_panel = ManualPanel(station, self.jog)
         self.manual_panel.set_key_step(self._machine_settings.jog_step)
@@ -351,7 +355,7 @@ class MainWindow(QMainWindow):
         middle = QHBoxLayout()
         middle.setSpacing(10)
         middle.addWidget(self.menu_panel)
-        middle.addWidget(self.stack, 1)
+        middle.addWidget(self.page_area, 1)
         middle.addWidget(self.static_panel)
         central = QWidget()
         layout = QVBoxLayout(central)
@@ -361,6 +365,11 @@ class MainWindow(QMainWindow):
         layout.addWidget(self.lock_label)
         layout.addLayout(middle, 1)
         self.setCentralWidget(central)
+        # The jobs dock runs the window's full height, beside the plots rather than above
+        # them: its preview, with a prompt or the registration row over it, then has room
+        # on an 800 px screen, and the plots and the developer pane sit under the pages.
+        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
+        self.setCorner(Qt.Corner.TopRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
 
     def _build_dock_actions(self, checkpoint_dir: Path | None) -> None:
         """The View menu's entries for the docks; each dock is built when first wanted.
@@ -979,6 +988,8 @@ class MainWindow(QMainWindow):
         geometry = self._settings.read(GEOMETRY)
         if geometry is None or not self.restoreGeometry(geometry):
             self.resize(980, 640)
+        else:
+            self.fit_on_screen()
         state = self._settings.read(WINDOW_STATE)
         if state is not None:
             # The docks the last session showed are built first, so the state places them;
@@ -995,6 +1006,29 @@ class MainWindow(QMainWindow):
             self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
+
+    def fit_on_screen(self) -> None:
+        """Move (and if need be shrink) the window so it is wholly on its screen, frame and all.
+
+        Done when the saved geometry is restored and again once shown, when the window
+        manager's frame is known; a maximised or full-screen window is the system's.
+        """
+        if self.windowState() & (Qt.WindowState.WindowMaximized | Qt.WindowState.WindowFullScreen):
+            return
+        screen = self.screen()
+        if screen is None:
+            return
+        geometry = self.geometry()
+        frame = self.frameGeometry()
+        margins = QMargins(
+            geometry.left() - frame.left(),
+            geometry.top() - frame.top(),
+            frame.right() - geometry.right(),
+            frame.bottom() - geometry.bottom(),
+        )
+        target = fitted(geometry, margins, screen.availableGeometry())
+        if target != geometry:
+            self.setGeometry(target)
 
     def _restore_drill_timing(self) -> None:
         """The drill's timing constants the operator set last time (FIDELITY S2-06)."""
@@ -1056,6 +1090,9 @@ class MainWindow(QMainWindow):
     def showEvent(self, event: QShowEvent) -> None:
         self._install_filter()
         super().showEvent(event)
+        if self._remembers and not event.spontaneous():
+            # The frame the window manager draws is known only now.
+            QTimer.singleShot(0, self, self.fit_on_screen)
         if self.settings_warning is not None and not self.settings_warning.isVisible():
             self.settings_warning.show()  # not exec(): the window stays usable behind it
 

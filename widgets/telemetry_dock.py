@@ -85,8 +85,12 @@ VARIABLE_COLOUR = "#9467bd"
 PLOTS_MIN_HEIGHT = 180
 #: The width of the caption (title, unit and key) beside each plot, in pixels.
 CAPTION_WIDTH = 118
-#: The height the dock asks for: each plot about 190 px, enough to read a curve's shape.
-DEFAULT_PLOTS_HEIGHT = 3 * 190
+# Characters of the variable's name the closed list shows at least.
+VARIABLE_CHARS = 8
+# The height the dock asks for: each plot about 90 px, enough to read a curve's shape.
+# Not more: under the pages on an 800 px screen, the page shown must keep its height
+# (the window gives a dock what it asks for and the pages the rest).
+DEFAULT_PLOTS_HEIGHT = 3 * 90
 
 
 def _window_label(seconds: float) -> str:
@@ -470,9 +474,25 @@ class TelemetryDock(QDockWidget):
         for variable in VARIABLES:
             self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
         self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
+        # Narrower than its longest entry when the dock is (under the pages, beside the jobs
+        # dock on a 1280 px screen); wider, up to that, where there is room.
+        self.variable_combo.setSizeAdjustPolicy(
+            QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon
+        )
+        self.variable_combo.setMinimumContentsLength(VARIABLE_CHARS)
+        self.variable_combo.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Fixed)
+        self.variable_combo.setMaximumWidth(
+            self.variable_combo.fontMetrics().horizontalAdvance(
+                max(
+                    (self.variable_combo.itemText(i) for i in range(self.variable_combo.count())),
+                    key=len,
+                )
+            )
+            + 48
+        )
         bar.addWidget(self.variable_combo)
 
-        bar.addSpacing(10)
+        bar.addSpacing(4)
         bar.addWidget(t.label(lambda: self.tr("Window")))
         self.window_combo = QComboBox()
         self.window_combo.setObjectName("telemetry_window")

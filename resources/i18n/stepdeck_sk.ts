@@ -3182,7 +3182,7 @@ Načítať ako:</translation>
     <name>RotationCross</name>
     <message>
         <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
-        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels. The height the dock asks for: each plot about 190 px, enough to read a curve&apos;s shape.</extracomment>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels.</extracomment>
         <translation>Natočenie plošiny voči poslednému vynulovaniu (kladne proti smeru hodinových ručičiek)</translation>
     </message>
     <message>

@@ -18,7 +18,7 @@ from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField
 from widgets.retranslate import Texts
-from widgets.style import MINUS
+from widgets.style import MINUS, compact
 
 _ERROR_STYLE = "color: #b00020;"
 
@@ -50,7 +50,7 @@ class GcodeReplyBox(QGroupBox):
             button = QPushButton(caption)
             t.set(button.setToolTip, lambda r=text: self.tr("Inject {0}").format(repr(r)))
             button.clicked.connect(lambda _=False, t=text: self.inject_text(t))
-            quick.addWidget(button)
+            quick.addWidget(compact(button))
             self.quick_buttons[caption] = button
         layout = QVBoxLayout(self)
         layout.addLayout(row)
@@ -134,7 +134,9 @@ class GcodeEmulatorBox(QGroupBox):
                     ),
                 )
                 button.clicked.connect(lambda _=False, n=axis.name, d=sign * step: self._turn(n, d))
-                hand.addWidget(button)
+                # As wide as their captions: six at the style's 80 px made the pane wider than
+                # the room under the pages beside the jobs dock on a 1280 px screen.
+                hand.addWidget(compact(button))
                 self.hand_buttons[(axis.name, sign)] = button
         self.winder_widgets: list[QWidget] = [self.white_button, self.white_note]
         self.winder_widgets += list(self.hand_buttons.values())

@@ -640,7 +640,9 @@ class DeveloperPane(QDockWidget):
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.Shape.NoFrame)
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        scroll.setMinimumWidth(column.sizeHint().width() + 12)
+        # Its least width, not its preferred: the pane must fit under the pages beside the
+        # jobs dock on a 1280 px screen; the splitter gives the column more where there is room.
+        scroll.setMinimumWidth(column.minimumSizeHint().width() + 12)
         scroll.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Expanding)
         return scroll
 
@@ -651,6 +653,9 @@ class DeveloperPane(QDockWidget):
         splitter.setStretchFactor(0, 0)
         splitter.setStretchFactor(1, 1)
         splitter.setChildrenCollapsible(False)
+        # The controls at their least width to begin with, the log the rest: under the pages
+        # beside the jobs dock the log had only what its toolbar needs.
+        splitter.setSizes([controls.minimumWidth(), 10 * controls.minimumWidth()])
         content = QWidget()
         layout = QVBoxLayout(content)
         layout.setContentsMargins(6, 4, 6, 4)

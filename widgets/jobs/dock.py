@@ -65,6 +65,7 @@ from app.jobs.run.runner import JobRunner, JobState, LoadCheck
 from app.station import Station
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
+from widgets.jobs.preview_column import PreviewColumn
 from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.resume_choice import ResumeChoicePanel
 from widgets.jobs.string_art_board import BoardAsker
@@ -201,17 +202,23 @@ class JobsDock(QDockWidget):
             lambda k: self.preview.pick_reference(k if k >= 0 else None)
         )
         self.preview.holePicked.connect(self.registration.set_reference)
-        layout.addWidget(self.registration)
-        layout.addWidget(self._build_resume_offer())
-        layout.addWidget(self._build_prompt())
+        resume_offer = self._build_resume_offer()
+        prompt = self._build_prompt()
         self.resume_choice = ResumeChoicePanel(
             runner,
             self.preview,
             self._source_line,
             lambda: self.station.model.motion_lock_reason() is None,
         )
-        layout.addWidget(self.resume_choice)
-        layout.addWidget(self.preview, 1)
+        # The bands take their room from the preview: a prompt never makes the window grow.
+        self.preview_column = PreviewColumn(
+            (self.registration, resume_offer, self.resume_choice, prompt),
+            # The registration row steps aside while a job runs, when prompts come; the
+            # choice of a resume line comes with a paused job, beside the registration row.
+            ((self.registration, resume_offer), (self.registration, self.resume_choice), (prompt,)),
+            self.preview,
+        )
+        layout.addWidget(self.preview_column, 1)
         layout.addLayout(self._build_progress())
         self.operation_label = QLabel("")
         self.operation_label.setObjectName("job_operation")
@@ -603,7 +610,9 @@ class JobsDock(QDockWidget):
         self.prompt.hide()
         return self.prompt
 
-    def _build_progress(self) -> QHBoxLayout:
+    def _build_progress(self) -> QVBoxLayout:
+        rows = QVBoxLayout()
+        rows.setSpacing(2)
         row = QHBoxLayout()
         row.setSpacing(8)
         self.progress = QProgressBar()
@@ -625,12 +634,21 @@ class JobsDock(QDockWidget):
             self.eta_label.setToolTip,
             lambda: self.tr("Time left, from the dry run of the job on the machine's model"),
         )
+        # The times on a line of their own: beside the bar and a long job's count ("1234 /
+        # 1809 ops · 1250 sent", in Slovak longer) they widened the dock while the job ran,
+        # and the window with it, past a 1280 px screen.
+        self.progress.setMinimumWidth(40)
         row.addWidget(self.progress, 1)
         row.addWidget(self.count_label)
-        row.addWidget(self.elapsed_label)
-        row.addWidget(self.eta_label)
+        times = QHBoxLayout()
+        times.setSpacing(12)
+        times.addWidget(self.elapsed_label)
+        times.addWidget(self.eta_label)
+        times.addStretch(1)
+        rows.addLayout(row)
+        rows.addLayout(times)
         self._set_times(None, None)
-        return row
+        return rows
 
     # --- operator actions ----------------------------------------------------
 
@@ -968,6 +986,7 @@ class JobsDock(QDockWidget):
         self.open_button.setEnabled(state not in ACTIVE_STATES and self._loading is None)
         # Registering replaces the loaded job: not while it runs.
         self.registration.setEnabled(state not in ACTIVE_STATES and self._loading is None)
+        self.registration.set_job_running(state in ACTIVE_STATES)
         self.export_button.setEnabled(loaded)
         # With an interrupted run on offer, Run from the start would repeat operations:
         # the operator chooses Resume or Discard first.

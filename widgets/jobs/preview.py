@@ -83,6 +83,10 @@ POSITION_COLOUR = "#d62728"
 QUESTION_COLOUR = "#ff7f0e"
 LIMIT_COLOUR = "#e08a00"
 DEFAULT_THROTTLE_MS = 33.0
+# The plot's least height (px), when the bands over the preview (a prompt, the
+# registration row, a resume offer) take their room from it; without them it has
+# widgets/jobs/preview_column.py's PREVIEW_ROOM more.
+PLOT_MIN_HEIGHT = 60
 #: A click this many pixels from a hole picks it as a reference.
 PICK_RADIUS_PX = 8
 #: Degrees per drawn step of a projected turn: an arc, not a chord, within a pixel or so.
@@ -573,7 +577,7 @@ class JobPreview(QWidget):
 
         self.plot_widget = pg.PlotWidget(background="w")
         self.plot_widget.setObjectName("job_preview_plot")
-        self.plot_widget.setMinimumSize(240, 150)
+        self.plot_widget.setMinimumSize(240, PLOT_MIN_HEIGHT)
         self.plot = self.plot_widget.getPlotItem()
         self.plot.setAspectLocked(True, ratio=1.0)
         self.plot.showGrid(x=True, y=True, alpha=0.2)

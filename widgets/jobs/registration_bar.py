@@ -39,6 +39,7 @@ from app.jobs.registration import (
 )
 from app.station import Station
 from widgets.retranslate import Maker, Texts
+from widgets.style import compact
 
 #: At most this many reference holes (three: least squares with a residual).
 MAX_REFERENCES = 3
@@ -71,6 +72,9 @@ class RegistrationBar(QWidget):
         self.placement = Placement()
         self._holes: list[Point] = []
         self.measured: list[Point | None] = [None] * MAX_REFERENCES
+        # The job has two holes or more to register on; a job is under way.
+        self._usable = False
+        self._running = False
         t = self.texts = Texts(self)
         # Two rows: in one row the three references ran the jobs dock past a 1280 px screen.
         rows = QVBoxLayout(self)
@@ -78,11 +82,12 @@ class RegistrationBar(QWidget):
         rows.setSpacing(2)
         row = QHBoxLayout()
         references = QHBoxLayout()
+        references.setSpacing(8)
         rows.addLayout(row)
         rows.addLayout(references)
         # Short: the row must fit beside the Drill page on a 1280 px screen; the
-        # tooltip says the rest.
-        references.addWidget(
+        # tooltip says the rest.  On the first row: the references' row is the wider.
+        row.addWidget(
             t.label(
                 lambda: self.tr("Holes"),
                 lambda: self.tr("Register on holes: two (or three) reference holes of the job"),
@@ -128,9 +133,13 @@ class RegistrationBar(QWidget):
             )
             here.setObjectName(f"job_reference_here_{k + 1}")
             here.clicked.connect(lambda _c=False, k=k: self.take(k))
+            # A reference's number and its two buttons close together, the references apart:
+            # at the style's spacing the row outgrew the dock beside the pages (Czech).
+            group = QHBoxLayout()
+            group.setSpacing(1)
             for widget in (spin, pick, here):
-                references.addWidget(widget)
-            references.addSpacing(8)
+                group.addWidget(widget)
+            references.addLayout(group)
             self.hole_spins.append(spin)
             self.pick_buttons.append(pick)
             self.here_buttons.append(here)
@@ -153,8 +162,9 @@ class RegistrationBar(QWidget):
         self.clear_button = t.button(lambda: self.tr("Clear"))
         self.clear_button.setObjectName("job_register_clear")
         self.clear_button.clicked.connect(self.clear)
-        row.addWidget(self.register_button)
-        row.addWidget(self.clear_button)
+        # As wide as their captions: the dock beside the pages has no width to spare.
+        row.addWidget(compact(self.register_button))
+        row.addWidget(compact(self.clear_button))
         self._count_changed()
         self.set_job(None)
 
@@ -236,8 +246,18 @@ class RegistrationBar(QWidget):
                 spin.setValue(value)
                 spin.blockSignals(False)
         self.measured = [None] * MAX_REFERENCES
-        self.setVisible(count >= 2)
+        self._usable = count >= 2
+        self._show()
         self._update()
+
+    def set_job_running(self, running: bool) -> None:
+        """While a job runs the row steps aside: registering replaces the loaded job, so it
+        could not be used then, and the preview and the operator's prompt get its room."""
+        self._running = running
+        self._show()
+
+    def _show(self) -> None:
+        self.setVisible(self._usable and not self._running)
 
     def set_reference(self, k: int, hole: int) -> None:
         """Reference ``k`` (0-based) is hole ``hole`` (0-based, drilling order): a preview pick."""

@@ -69,6 +69,10 @@ COMMAND_BUTTONS = (
 )
 
 
+# Command buttons to a row (the Timing… toggle takes the last cell).
+COMMAND_COLUMNS = 3
+
+
 def _tr(text: str) -> str:
     """A text marked with QT_TRANSLATE_NOOP above, in the current language."""
     return QCoreApplication.translate("DrillPanel", text)
@@ -90,13 +94,14 @@ class DrillPanel(QWidget):
         t = self.texts = Texts(self)
 
         commands = t.group(lambda: self.tr("Commands"))
-        row = QHBoxLayout(commands)
-        for letter, caption, tip in COMMAND_BUTTONS:
+        # Two rows of three: in one row (even with each button as wide as its caption) the
+        # commands made the page, beside the jobs dock, wider than a 1280 px screen.
+        row = QGridLayout(commands)
+        for index, (letter, caption, tip) in enumerate(COMMAND_BUTTONS):
             button = t.button(lambda c=caption: _tr(c), lambda tp=tip, c=letter: f"{_tr(tp)} ({c})")
             button.setObjectName(f"command_{letter}")
             button.clicked.connect(lambda _=False, c=letter: self.send_command(c))
-            # Each as wide as its caption: at the style's width the row outgrew a 1280 px screen.
-            row.addWidget(compact(button))
+            row.addWidget(compact(button), index // COMMAND_COLUMNS, index % COMMAND_COLUMNS)
             self.command_buttons[letter] = button
 
         # The timing constants (FIDELITY S2-06), folded away until asked for.
@@ -109,8 +114,9 @@ class DrillPanel(QWidget):
         self.timing_toggle.setObjectName("timing_toggle")
         self.timing_toggle.setCheckable(True)
         self.timing_toggle.toggled.connect(self.timing_box.setVisible)
-        row.addStretch(1)
-        row.addWidget(compact(self.timing_toggle))
+        last = len(COMMAND_BUTTONS)
+        row.addWidget(compact(self.timing_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
+        row.setColumnStretch(COMMAND_COLUMNS, 1)
 
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
         grid = QGridLayout(axes)
@@ -171,7 +177,7 @@ class DrillPanel(QWidget):
         self.entry = HistoryLineEdit()
         self.entry.setObjectName("terminal_entry")
         self.entry.setPlaceholderText("N, X1234, Y567, V, K, Z, P")
-        self.entry.setMinimumWidth(110)
+        self.entry.setMinimumWidth(80)  # the page must fit beside the jobs dock on 1280 px
         self.entry.returnPressed.connect(self.send_line)
         self.send_button = t.button(lambda: self.tr("Send"))
         self.send_button.clicked.connect(self.send_line)

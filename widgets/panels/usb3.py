@@ -9,9 +9,11 @@ distance that will really be moved next to the one typed.
 
 from __future__ import annotations
 
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QComboBox,
     QGridLayout,
+    QHBoxLayout,
     QLabel,
     QPushButton,
     QWidget,
@@ -49,7 +51,9 @@ class Usb3Panel(QWidget):
             lambda: bold(self.tr("Thread")),
         )
         for column, title in enumerate(titles, start=1):
-            grid.addWidget(t.label(title), 0, column)
+            header = t.label(title)
+            header.setWordWrap(True)  # two short lines rather than a column too wide
+            grid.addWidget(header, 0, column, Qt.AlignmentFlag.AlignBottom)
         for index, axis in enumerate(station.profile.axes):
             row = index + 1
             distance = distance_box(
@@ -107,8 +111,14 @@ class Usb3Panel(QWidget):
         )
         self.send_all_button.clicked.connect(self.send_all)
         self.gate.bind(self.send_all_button, *self.distances)
-        grid.addWidget(self.send_all_button, len(self.distances) + 1, 4)
-        grid.addWidget(self.zero_button, len(self.distances) + 1, 5)
+        # Side by side under the last columns, in a row of their own: in the grid's cells
+        # they widened the columns, and the page outgrew a 1280 px screen beside the dock.
+        both = QHBoxLayout()
+        both.setSpacing(10)
+        both.addStretch(1)
+        both.addWidget(self.send_all_button)
+        both.addWidget(self.zero_button)
+        grid.addLayout(both, len(self.distances) + 1, 2, 1, 4)
         grid.addWidget(self.note, len(self.distances) + 2, 0, 1, 6)
         grid.setColumnStretch(6, 1)
         grid.setRowStretch(len(self.distances) + 3, 1)
