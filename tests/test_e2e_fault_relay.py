@@ -28,8 +28,8 @@ first test reports, so ``-x`` stops the reporting, not the runs.
 from __future__ import annotations
 
 import os
+import threading
 import time
-from collections import Counter
 from collections.abc import Iterator
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -38,41 +38,67 @@ from typing import Any
 
 import pytest
 
+from tests.helpers import grbl_sim
 from tests.helpers.fault_relay import FAULT_KINDS, FaultKind
 from tests.helpers.relay_judge import Verdict
-from tests.helpers.relay_run import DIALECTS, RunResult, run_once
+from tests.helpers.relay_run import DIALECTS, GRBL_SIM, RunResult, run_once
+from tests.helpers.relay_table import Row, render
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "openpty"), reason="no pseudo-terminals here")
 
 RUNS = int(os.environ.get("STEPDECK_RELAY_RUNS", "20"))
 FIRST = int(os.environ.get("STEPDECK_RELAY_FIRST", "0"))
 JOBS = max(1, int(os.environ.get("STEPDECK_RELAY_JOBS", "4")))
+#: The slow mode (200 runs a dialect) also runs real GRBL, restarting on each reopen.
+GRBL_SIM_RUNS = int(os.environ.get("STEPDECK_RELAY_GRBL_SIM", "60" if RUNS >= 200 else "0"))
+ALL = {**DIALECTS, GRBL_SIM.key: GRBL_SIM}
+LOCK = threading.Lock()
 
 # ---------------------------------------------------------------------------------------------
-# KNOWN_FAILURES: the station's known faults under the relay (issue 30), by dialect and fault
-# kind.  A run of one of these is expected to fail (xfail, not strict: it may pass, and a
-# seed of a kind listed here may still end well).  Remove an entry once its fix is merged and
-# the slow mode (STEPDECK_RELAY_RUNS=200) shows no wrong and no hung run for it.
+# KNOWN_FAILURES: the station's known faults under the relay, by dialect and fault kind, as
+# the slow mode found them (issue 30, and what the relay found beyond it).  A run of one of
+# these is expected to fail (xfail, not strict: most seeds of a kind listed here still end
+# well).  Remove an entry once its fix is merged and the slow mode
+# (STEPDECK_RELAY_RUNS=200) shows no wrong and no hung run for it.
 # ---------------------------------------------------------------------------------------------
-_REDRAW = "issue 30: G-code resume after a link fault redraws from line 1 (resume from proof)"
-_SILENT = "issue 30: a silent line is taken for a lost link and never probed (silence probing)"
+_REDRAW = "issue 30: G-code resume after a link fault redraws strokes (resume from proof)"
+_SILENT = "issue 30: a silent line pauses the job and nothing probes the device (silence probing)"
 _NO_SUM = "issue 30: a mangled G-code line is valid and not caught (motion supervision)"
-_USB3_SUM = "issue 30: a corrupted usb3 count moves the unit far away (motion supervision)"
+_USB3 = "issue 30: a corrupted or repeated usb3 move runs unchecked (motion supervision)"
+_RESET = "issue 30: a board that restarts loses its position; the resume draws shifted"
+_STAGE = "found by the relay: a byte lost or flipped on the way to the stage: lost for good"
+_LOST = "found by the relay: a line lost or mangled on the way to GRBL: paused for good"
+_DUP = (
+    "found by the relay: a line the board refuses (a duplicate overflowing its buffer) is"
+    " skipped: the lines streamed behind it draw a stroke not in the job before the stop"
+)
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
+    ("grbl-plotter", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
+    ("grbl-plotter", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
     ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("grbl-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("grbl-plotter", FaultKind.REOPEN): _REDRAW,
-    ("grbl-plotter", FaultKind.DROP): _NO_SUM,
-    ("grbl-plotter", FaultKind.CORRUPT): _NO_SUM,
+    ("corexy-plotter", FaultKind.DROP): _NO_SUM,
+    ("corexy-plotter", FaultKind.DUPLICATE): _DUP,
+    ("corexy-plotter", FaultKind.CORRUPT): _NO_SUM,
     ("corexy-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("corexy-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("corexy-plotter", FaultKind.REOPEN): _REDRAW,
-    ("corexy-plotter", FaultKind.DROP): _NO_SUM,
-    ("corexy-plotter", FaultKind.CORRUPT): _NO_SUM,
-    ("pcb-drill", FaultKind.SILENCE): _SILENT,
+    ("string-art", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
+    ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
+    ("string-art", FaultKind.REOPEN): _REDRAW,
+    ("grbl-sim", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
+    ("grbl-sim", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
+    ("grbl-sim", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
+    ("grbl-sim", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
+    ("grbl-sim", FaultKind.REOPEN): f"{_REDRAW}; {_RESET}",
     ("pcb-drill", FaultKind.DROP): f"{_SILENT} (lost reply bytes end the same way)",
+    ("pcb-drill", FaultKind.SILENCE): _SILENT,
+    ("usb3", FaultKind.DUPLICATE): _USB3,
+    ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_SILENT}",
     ("usb3", FaultKind.SILENCE): _SILENT,
-    ("usb3", FaultKind.CORRUPT): _USB3_SUM,
+    ("xy-stage", FaultKind.DROP): _STAGE,
+    ("xy-stage", FaultKind.CORRUPT): _STAGE,
 }
 
 
@@ -97,7 +123,7 @@ def _replayed() -> list[Case] | None:
     cases = []
     for item in wanted.split(","):
         profile, _, seed = item.strip().rpartition(":")
-        if profile not in DIALECTS:
+        if profile not in ALL:
             raise pytest.UsageError(f"STEPDECK_RELAY_SEED: {item!r} is not DIALECT:SEED")
         cases.append(Case(profile, int(seed)))
     return cases
@@ -107,6 +133,8 @@ def _faulty_cases() -> list[Any]:
     cases = _replayed()
     if cases is None:
         cases = [Case(p, seed) for p in DIALECTS for seed in range(FIRST, FIRST + RUNS)]
+        if GRBL_SIM_RUNS and grbl_sim.compiler() is not None:
+            cases += [Case(GRBL_SIM.key, s) for s in range(FIRST, FIRST + GRBL_SIM_RUNS)]
     params: list[Any] = []  # pytest.param's sets
     for case in cases:
         assert case.kind is not None
@@ -127,7 +155,9 @@ class Runs:
 
     def get(self, case: Case) -> RunResult:
         if case not in self.results:
-            self._run_all([c for c in self.cases if c not in self.results] or [case])
+            # Under pytest-xdist each worker runs its own cases, one at a time.
+            pending = [c for c in self.cases if c not in self.results]
+            self._run_all([case] if os.environ.get("PYTEST_XDIST_WORKER") else pending or [case])
         result = self.results[case]
         if isinstance(result, BaseException):
             raise result
@@ -138,45 +168,41 @@ class Runs:
 
         def one(case: Case) -> None:
             try:
-                result = run_once(DIALECTS[case.profile], case.seed, self.directory / case.id)
+                result = run_once(ALL[case.profile], case.seed, self.directory / case.id)
             except Exception as exc:  # reported by the case's own test
                 self.results[case] = exc
                 return
             self.results[case] = result
             print(f"\n{result.line()}", flush=True)
+            if case.seed is not None and (out := os.environ.get("STEPDECK_RELAY_RESULTS")):
+                row = Row(
+                    result.profile,
+                    result.seed,
+                    result.kind,
+                    result.judgement.verdict.value,
+                    result.judgement.reason,
+                    round(result.wall_s, 1),
+                )
+                with LOCK, open(out, "a", encoding="utf-8") as results:
+                    results.write(row.json() + "\n")
 
         with ThreadPoolExecutor(JOBS) as pool:
             list(pool.map(one, cases))
         self.wall_s += time.monotonic() - begun
 
-    def table(self) -> str:
-        """Verdicts per dialect and fault kind, as Markdown (exact / clean stop / wrong / hung)."""
-        counts: dict[tuple[str, str], Counter[Verdict]] = {}
-        failing: dict[str, list[str]] = {}
-        for case, result in self.results.items():
-            if isinstance(result, BaseException) or case.seed is None:
-                continue
-            counts.setdefault((case.profile, result.kind), Counter())[result.judgement.verdict] += 1
-            if result.judgement.verdict in (Verdict.WRONG, Verdict.HUNG):
-                failing.setdefault(case.profile, []).append(
-                    f"{result.seed} ({result.kind}, {result.judgement.verdict.value})"
-                )
-        kinds = [k.value for k in FAULT_KINDS]
-        lines = [
-            "| dialect | " + " | ".join(kinds) + " | wrong or hung (seed) |",
-            "|---|" + "---|" * (len(kinds) + 1),
+    def rows(self) -> list[Row]:
+        return [
+            Row(
+                result.profile,
+                result.seed,
+                result.kind,
+                result.judgement.verdict.value,
+                result.judgement.reason,
+                round(result.wall_s, 1),
+            )
+            for case, result in self.results.items()
+            if case.seed is not None and not isinstance(result, BaseException)
         ]
-        for profile in DIALECTS:
-            cells = []
-            for kind in kinds:
-                c = counts.get((profile, kind), Counter())
-                cells.append(
-                    "/".join(str(c[v]) for v in (Verdict.EXACT, Verdict.STOPPED))
-                    + f"/{c[Verdict.WRONG]}/{c[Verdict.HUNG]}"
-                )
-            seeds = ", ".join(sorted(failing.get(profile, []), key=lambda s: int(s.split()[0])))
-            lines.append(f"| {profile} | " + " | ".join(cells) + f" | {seeds or '—'} |")
-        return "\n".join(lines) + "\n"
 
 
 def _selected(session: pytest.Session) -> list[Case]:
@@ -197,13 +223,13 @@ def runs(
 ) -> Iterator[Runs]:
     pool = Runs(tmp_path_factory.mktemp("relay"), _selected(request.session))
     yield pool
-    faulty = sum(1 for c in pool.results if c.seed is not None)
+    table = render(pool.rows(), list(ALL))
     print(
-        f"\nRELAY TABLE ({faulty} faulty runs, {pool.wall_s:.0f} s wall, {JOBS} at once; "
-        "exact/clean stop/wrong/hung)\n" + pool.table()
+        f"\nRELAY TABLE ({len(pool.rows())} faulty runs, {pool.wall_s:.0f} s wall, {JOBS} at "
+        "once; each cell exact/clean stop/wrong/hung)\n" + table
     )
     if target := os.environ.get("STEPDECK_RELAY_TABLE"):
-        Path(target).write_text(pool.table(), encoding="utf-8")
+        Path(target).write_text(table, encoding="utf-8")
 
 
 @pytest.mark.parametrize("case", [Case(p, None) for p in DIALECTS], ids=lambda c: c.id)

@@ -14,6 +14,7 @@ from typing import Any
 import pytest
 
 from tests.helpers.relay_judge import (
+    NailBoard,
     Span,
     Stroke,
     Track,
@@ -26,6 +27,7 @@ from tests.helpers.relay_judge import (
     merge_strokes,
     same_stroke,
     stage_targets,
+    string_art_ops,
     stroke_part_of,
     usb3_same,
     usb3_targets,
@@ -265,3 +267,50 @@ def test_a_usb3_move_stopped_and_finished_is_one_operation() -> None:
 def test_a_refusal_before_anything_moved_is_a_clean_stop(status: int) -> None:
     verdict = judge(strokes([]), status, "stepdeck run: refused: no answer from the device")
     assert verdict.verdict is Verdict.STOPPED
+
+
+def _winder(*places: tuple[float, float, float]) -> str:
+    return _gcode_log(
+        *(
+            {"t": 0, "event": "move", "kind": "G1", "pos": {"A": a, "X": x, "Z": z}, "pen": False}
+            for a, x, z in places
+        )
+    )
+
+
+FOUR = NailBoard([0.0, 90.0, 180.0, 270.0], [50.0] * 4, 20.0)
+
+
+def test_nails_are_drilled_and_wound_round_as_the_needle_went() -> None:
+    log = _winder(
+        (0, 50, 0),
+        (0, 50, 10),
+        (0, 50, 20),
+        (0, 50, 0),  # nail 0, in two steps down
+        (90, 50, 0),
+        (90, 50, 20),
+        (90, 50, 0),  # nail 1
+        (45, 50, 0),
+        (45, 40, 0),  # the winding starts: in beside a nail, winds nothing
+        (45, 60, 0),
+        (135, 60, 0),
+        (135, 40, 0),  # out, across nail 1, in: nail 1 wound
+        (135, 60, 0),
+        (135, 40, 0),  # out and in at one angle (a resume): nothing
+        (135, 60, 0),
+        (-45, 60, 0),
+        (-45, 40, 0),  # back across nails 1 and 0: no one nail
+    )
+    assert string_art_ops(log, FOUR) == [
+        ("nail", 0),
+        ("nail", 1),
+        ("wrap", 1),
+        ("at", "wrap A135.0→-45.0 across [0, 1]"),
+    ]
+
+
+def test_a_nail_drilled_twice_is_wrong() -> None:
+    log = _winder((0, 50, 0), (0, 50, 20), (0, 50, 0), (0, 50, 20), (0, 50, 0))
+    seen = string_art_ops(log, FOUR)
+    track = {"nails": Track([("nail", 0), ("nail", 1)], seen, seen)}
+    assert judge(track, 0, "done").verdict is Verdict.WRONG

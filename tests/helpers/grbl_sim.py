@@ -72,14 +72,23 @@ def build(shared_grbl: Path) -> Path:
         return exe
 
 
-def command(exe: Path) -> list[str]:
+#: With this set (a path), the simulator appends where the machine stands to that file:
+#: every ``STEPS_EVERY_S`` of machine time and at each block's end (``-r``: ``time x, y, z,
+#: spindle PWM`` in steps, a ``# block number N`` line as each block starts).
+STEPS_ENV = "STEPDECK_GRBL_SIM_STEPS"
+STEPS_EVERY_S = 0.005
+
+
+def command(exe: Path, steps: bool = False) -> list[str]:
     """The simulator pinned to one core, its stdin unbuffered (BUILD.md's known quirks)."""
     prefix = []
     if shutil.which("taskset"):
         prefix += ["taskset", "-c", "0"]
     if shutil.which("stdbuf"):
         prefix += ["stdbuf", "-i0", "-oL"]
-    return [*prefix, str(exe), "-n", "-t", os.environ.get("GRBL_SIM_TIME", "1"), "-b", os.devnull]
+    time_scale = os.environ.get("GRBL_SIM_TIME", "1")
+    report = ["-r", str(STEPS_EVERY_S)] if steps else []
+    return [*prefix, str(exe), "-n", "-t", time_scale, "-b", os.devnull, *report]
 
 
 class WireLog:
@@ -141,8 +150,17 @@ def serve(exe: Path, workdir: Path) -> int:
     master, slave = os.openpty()
     tty.setraw(slave)
     os.set_blocking(master, False)
+    steps = os.environ.get(STEPS_ENV)
+    # The step reports go to the simulator's standard error, which C leaves unbuffered:
+    # nothing is lost when the board is switched off (terminated) mid-move.
+    steps_file = open(steps, "ab") if steps else None
     sim = subprocess.Popen(
-        command(exe), cwd=workdir, stdin=subprocess.PIPE, stdout=subprocess.PIPE, bufsize=0
+        command(exe, steps=steps_file is not None),
+        cwd=workdir,
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=steps_file,
+        bufsize=0,
     )
     assert sim.stdin is not None and sim.stdout is not None
     log = WireLog(workdir / "wire.log")
@@ -175,20 +193,34 @@ def serve(exe: Path, workdir: Path) -> int:
                 sim.kill()
                 sim.wait()
         log.close()
+        if steps_file is not None:
+            steps_file.close()
         os.close(master)
         os.close(slave)
     return 0
 
 
-def start(exe: Path, workdir: Path) -> subprocess.Popen[bytes]:
-    """The bridge in its own process, its first output line the device path."""
-    shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
+def start(
+    exe: Path, workdir: Path, *, steps: Path | None = None, fresh: bool = True
+) -> subprocess.Popen[bytes]:
+    """The bridge in its own process, its first output line the device path.
+
+    ``fresh``: a new board's EEPROM (False: the one in ``workdir``, as a board
+    that restarts keeps its settings); ``steps``: where the machine stands,
+    appended to that file (see :data:`STEPS_ENV`).
+    """
+    if fresh:
+        shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
     root = Path(__file__).resolve().parent.parent.parent
+    env = dict(os.environ)
+    if steps is not None:
+        env[STEPS_ENV] = str(steps)
     return subprocess.Popen(
         [sys.executable, "-m", "tests.helpers.grbl_sim", str(exe), str(workdir)],
         cwd=root,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
+        env=env,
     )
 
 

@@ -181,8 +181,8 @@ Stroke = tuple[Point, Point]
 EPS_MM = 1e-3
 
 
-def _near(a: Point, b: Point) -> bool:
-    return abs(a[0] - b[0]) <= EPS_MM and abs(a[1] - b[1]) <= EPS_MM
+def _near(a: Point, b: Point, eps: float = EPS_MM) -> bool:
+    return abs(a[0] - b[0]) <= eps and abs(a[1] - b[1]) <= eps
 
 
 def _on_segment(p: Point, a: Point, b: Point) -> bool:
@@ -197,7 +197,7 @@ def _on_segment(p: Point, a: Point, b: Point) -> bool:
     return across <= EPS_MM and -EPS_MM <= along <= length + EPS_MM
 
 
-def in_box(p: Point, a: Point, b: Point) -> bool:
+def in_box(p: Point, a: Point, b: Point, eps: float = EPS_MM) -> bool:
     """Whether ``p`` lies in the rectangle ``a`` and ``b`` span (within EPS_MM).
 
     The CoreXY plotter's firmware steps both motors at one rate, so a move
@@ -223,6 +223,20 @@ def stroke_part_of(part: Stroke, whole: Stroke) -> bool:
 def corexy_stroke_part_of(part: Stroke, whole: Stroke) -> bool:
     """A CoreXY stroke begun as ``whole`` and stopped on the way (see :func:`in_box`)."""
     return _near(part[0], whole[0]) and in_box(part[1], whole[0], whole[1])
+
+
+#: grbl-sim reports a block's end at the next block's first report, a few steps on.
+GRBL_SIM_EPS_MM = 0.05
+
+
+def grbl_sim_same_stroke(a: Stroke, b: Stroke) -> bool:
+    return _near(a[0], b[0], GRBL_SIM_EPS_MM) and _near(a[1], b[1], GRBL_SIM_EPS_MM)
+
+
+def grbl_sim_part_of(part: Stroke, whole: Stroke) -> bool:
+    return _near(part[0], whole[0], GRBL_SIM_EPS_MM) and in_box(
+        part[1], whole[0], whole[1], GRBL_SIM_EPS_MM
+    )
 
 
 def merge_strokes(
@@ -400,3 +414,140 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
 
 def usb3_same(span: Span, target: int) -> bool:
     return target in span
+
+
+# --- the string-art winder: nails drilled, then nails wound --------------------------------------
+
+#: Angles within this (degrees) and radii within this (mm) are the same place.
+ANGLE_EPS_DEG = 0.01
+RADIUS_EPS_MM = 0.01
+Z_EPS_MM = 0.05
+
+
+def _turn(current: float, target: float) -> float:
+    return (target - current + 180.0) % 360.0 - 180.0
+
+
+@dataclass(frozen=True)
+class NailBoard:
+    """The nails as the job places them (polar: degrees and mm), and the drill's depth in Z."""
+
+    angles: Sequence[float]
+    radii: Sequence[float]
+    bottom_z: float
+
+    def at(self, a: float, x: float) -> list[int]:
+        return [
+            k
+            for k, (angle, radius) in enumerate(zip(self.angles, self.radii, strict=True))
+            if abs(_turn(a, angle)) <= ANGLE_EPS_DEG and abs(x - radius) <= RADIUS_EPS_MM
+        ]
+
+    def inside(self, start: float, end: float) -> list[int]:
+        """The nails strictly inside the turn from ``start`` to ``end`` (unwrapped degrees)."""
+        low, high = min(start, end), max(start, end)
+        middle = (low + high) / 2
+        return [
+            k for k, angle in enumerate(self.angles) if low < middle + _turn(middle, angle) < high
+        ]
+
+    def side(self, x: float) -> str:
+        if x < min(self.radii):
+            return "in"
+        if x > max(self.radii):
+            return "out"
+        return "ring"
+
+
+def string_art_ops(log: str, board: NailBoard) -> list[tuple[str, int | str]]:
+    """Every nail drilled (``("nail", k)``) and wound round (``("wrap", k)``), in order.
+
+    A plunge counts once Z reaches the hole's bottom at a nail.  A wrap is the
+    needle going out past the nails at one angle and back in at another: the
+    one nail it turned across is wound (out and in at one angle, as a resumed
+    job may do, winds nothing; the first way in, beside the first nail, too).
+    A plunge or a wrap that names no single nail is listed as ``("at", where)``
+    and is in no job.
+    """
+    ops: list[tuple[str, int | str]] = []
+    previous: dict[str, float] | None = None
+    side: str | None = None
+    out_at: float | None = None
+    started = False
+    for event in _events(log):
+        pos = event.get("pos")
+        if event.get("event") not in ("move", "reset", "hold", "alarm") or not isinstance(
+            pos, dict
+        ):
+            continue
+        a, x, z = float(pos["A"]), float(pos["X"]), float(pos["Z"])
+        if side is None:
+            side = board.side(x)
+        if previous is not None and abs(z - previous["Z"]) > Z_EPS_MM:
+            if abs(z - board.bottom_z) <= Z_EPS_MM and previous["Z"] < z:
+                nails = board.at(a, x)
+                ops.append(("nail", nails[0]) if len(nails) == 1 else ("at", f"plunge A{a} X{x}"))
+        elif previous is not None and abs(a - previous["A"]) <= ANGLE_EPS_DEG:
+            now = board.side(x)
+            if now != "ring" and now != side:
+                if now == "out":
+                    out_at = a
+                elif not started:
+                    started = True
+                elif out_at is not None and abs(out_at - a) > ANGLE_EPS_DEG:
+                    across = board.inside(out_at, a)
+                    ops.append(
+                        ("wrap", across[0])
+                        if len(across) == 1
+                        else ("at", f"wrap A{out_at}→{a} across {across}")
+                    )
+                side = now
+        previous = {"A": a, "X": x, "Z": z}
+    return ops
+
+
+# --- real GRBL (grbl-sim): where the machine stood, block by block -------------------------------
+
+#: Written to grbl-sim's step log when the board restarts: its position starts again from 0
+#: while the machine stays where it is.
+BOOT_MARK = "# boot"
+_STEP_LINE = re.compile(r"^\s*[\d.]+\s+(-?\d+),\s*(-?\d+),\s*(-?\d+),\s*(\d+)\s*$")
+
+
+def grbl_sim_strokes(steps: str, steps_per_mm: float) -> list[Stroke]:
+    """The pen-down strokes from grbl-sim's step reports (``-r``), merged as :func:`merge_strokes`.
+
+    Each block's reports are where the machine stood while running it, the
+    last one where it ended (or stopped); the spindle's PWM while it ran says
+    whether the pen was down (the report at a block's end may already show
+    the next block's).  After a restart the board counts from 0 again, so
+    positions are taken from where the machine stood then.
+    """
+    origin: Point = (0.0, 0.0)
+    where: Point = (0.0, 0.0)
+    block: list[tuple[Point, int]] = []
+    pieces: list[tuple[Stroke, bool]] = []
+
+    def close_block() -> None:
+        nonlocal where
+        if not block:
+            return
+        pen = block[0][1] > 0 if len(block) > 1 else block[-1][1] > 0
+        for point, _ in block:
+            if pen and not _near(where, point):
+                pieces.append(((where, point), True))
+            where = point
+        block.clear()
+
+    for line in steps.splitlines():
+        if line.startswith(BOOT_MARK):
+            close_block()
+            origin = where
+        elif line.startswith("# block number"):
+            close_block()
+        elif (match := _STEP_LINE.match(line)) is not None:
+            x, y = int(match.group(1)) / steps_per_mm, int(match.group(2)) / steps_per_mm
+            point = (round(origin[0] + x, 4), round(origin[1] + y, 4))
+            block.append((point, int(match.group(4))))
+    close_block()
+    return merge_strokes(pieces, lambda p, a, b: in_box(p, a, b, GRBL_SIM_EPS_MM))

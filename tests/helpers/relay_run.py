@@ -14,29 +14,39 @@ the emulator's log when the station ended, and once the device settled.
 from __future__ import annotations
 
 import os
+import select
 import subprocess
 import sys
 import time
+import tty
 from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import pairwise
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
+from app.jobs.formats.string_art.geometry import along_drill_axis_mm, nail_polar
+from tests.helpers import grbl_sim
 from tests.helpers.emulator_process import ROOT, device_path, start_emulator, stop
 from tests.helpers.fault_bridge import Direction
 from tests.helpers.fault_relay import Fault, FaultKind, FaultRelay, random_fault
 from tests.helpers.relay_judge import (
+    BOOT_MARK,
     Judgement,
+    NailBoard,
     Track,
     corexy_stroke_part_of,
     drill_holes,
     gcode_strokes,
+    grbl_sim_part_of,
+    grbl_sim_same_stroke,
+    grbl_sim_strokes,
     in_box,
     judge,
     last_words,
     same_stroke,
     stage_targets,
+    string_art_ops,
     stroke_part_of,
     usb3_same,
     usb3_targets,
@@ -69,6 +79,120 @@ class RelayDialect:
     #: Bytes a clean run carries each way (measured; it sizes where a fault falls).
     traffic: dict[Direction, int]
     ignored_to_device: frozenset[int] = frozenset()
+    #: The device at the cable's far end (the emulator, unless grbl-sim).
+    board: Callable[[RelayDialect, Path], Board] = lambda dialect, workdir: EmulatorBoard(
+        dialect, workdir
+    )
+    #: The name runs are known by (the profile, unless another board runs it).
+    name: str = ""
+
+    @property
+    def key(self) -> str:
+        return self.name or self.profile
+
+
+class Board(Protocol):
+    """A device process on a pty, its log, and what happens when its port reopens."""
+
+    def start(self) -> str:
+        """Started: its device path."""
+
+    def reopened(self) -> str | None:
+        """The station's port came back: a board that restarts then gives its new path."""
+
+    def log(self) -> str:
+        """What the machine did so far (the text the dialect's tracks read)."""
+
+    def stop(self) -> None: ...
+
+
+class EmulatorBoard:
+    """``stepdeck-emulator --pty --log``: the emulated firmware, untouched by a reopen."""
+
+    def __init__(self, dialect: RelayDialect, workdir: Path) -> None:
+        self.dialect = dialect
+        self.path = workdir / "emulator.log"
+        self.process: subprocess.Popen[bytes] | None = None
+
+    def start(self) -> str:
+        scale = str(self.dialect.time_scale)
+        self.process = start_emulator(
+            "--profile", self.dialect.profile, "--time-scale", scale, "--log", str(self.path)
+        )
+        return device_path(self.process)
+
+    def reopened(self) -> str | None:
+        return None
+
+    def log(self) -> str:
+        return _read(self.path)
+
+    def stop(self) -> None:
+        if self.process is not None:
+            stop(self.process)
+
+
+#: Real GRBL's speeds for the plotter's job (mm/min, mm/s²): a new board's are far slower.
+GRBL_SETUP = b"$110=6000\n$111=6000\n$120=1000\n$121=1000\n"
+#: A new board's steps a mm ($100, $101).
+GRBL_STEPS_PER_MM = 250.0
+
+
+class GrblSimBoard:
+    """Real GRBL 1.1h (grbl-sim) that restarts when its port reopens, as an Arduino does.
+
+    A restart ends the simulator and starts a new one on the same EEPROM
+    (the board keeps its settings, loses its position); the step log goes on,
+    marked where the board came back.
+    """
+
+    def __init__(self, dialect: RelayDialect, workdir: Path) -> None:
+        self.workdir = workdir / "board"
+        self.workdir.mkdir(parents=True, exist_ok=True)
+        self.steps = workdir / "steps.log"
+        self.process: subprocess.Popen[bytes] | None = None
+        self.restarts = 0
+
+    def start(self) -> str:
+        exe = grbl_sim.build(ROOT / "tests" / "third_party" / "grbl")
+        self.process = grbl_sim.start(exe, self.workdir, steps=self.steps)
+        path = device_path(self.process)
+        _set_up(path, GRBL_SETUP)
+        return path
+
+    def reopened(self) -> str | None:
+        assert self.process is not None
+        stop(self.process)
+        self.restarts += 1
+        with self.steps.open("a", encoding="utf-8") as steps:
+            steps.write(f"{BOOT_MARK} {self.restarts}\n")
+        exe = grbl_sim.build(ROOT / "tests" / "third_party" / "grbl")
+        self.process = grbl_sim.start(exe, self.workdir, steps=self.steps, fresh=False)
+        return device_path(self.process)
+
+    def log(self) -> str:
+        return _read(self.steps)
+
+    def stop(self) -> None:
+        if self.process is not None:
+            stop(self.process)
+
+
+def _set_up(path: str, lines: bytes) -> None:
+    """Write set-up lines to a board and wait for an answer to each (bounded)."""
+    fd = os.open(path, os.O_RDWR | os.O_NOCTTY)
+    try:
+        tty.setraw(fd)
+        os.write(fd, lines)
+        heard = b""
+        deadline = time.monotonic() + 15.0
+        while heard.count(b"ok") + heard.count(b"error") < lines.count(b"\n"):
+            if time.monotonic() > deadline:
+                raise AssertionError(f"the board did not take its set-up: {heard!r}")
+            if select.select([fd], [], [], 0.1)[0]:
+                heard += os.read(fd, 4096)
+    finally:
+        os.close(fd)
 
 
 # --- the pen plotters ----------------------------------------------------------------------
@@ -200,6 +324,62 @@ def usb3_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
     }
 
 
+# --- the string-art winder ----------------------------------------------------------------
+
+#: A small board (8 nails on a circle, every one wound), so a run is a few seconds.
+SA_NAILS, SA_RADIUS_CM = 8, 8.0
+SA_SEQUENCE = (0, 3, 6, 1, 4, 7, 2, 5, 0)
+
+
+def string_art_job(directory: Path) -> Path:
+    (directory / "param.txt").write_text(
+        f"tvar = 0\npocet_hrebiku = {SA_NAILS}\npolomer_matrice = {SA_RADIUS_CM}\n",
+        encoding="utf-8",
+    )
+    path = directory / "poradi.txt"
+    path.write_text(",".join(map(str, (len(SA_SEQUENCE), *SA_SEQUENCE))) + "\n", encoding="utf-8")
+    return path
+
+
+def string_art_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
+    """Every nail drilled once in index order, then wound round in the file's order."""
+    angles, radii = nail_polar(0, SA_NAILS, SA_RADIUS_CM)
+    board = NailBoard(
+        [float(a) for a in angles], [float(r) for r in radii], along_drill_axis_mm(20.0)
+    )
+    expected: list[tuple[str, int | str]] = [("nail", k) for k in range(SA_NAILS)]
+    expected += [("wrap", k) for k in SA_SEQUENCE[1:]]
+    return {"nails": Track(expected, string_art_ops(at_exit, board), string_art_ops(final, board))}
+
+
+def grbl_sim_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
+    """As :func:`gcode_tracks`, from grbl-sim's step reports (see grbl_sim_strokes)."""
+    return {
+        "strokes": Track(
+            plot_strokes(),
+            grbl_sim_strokes(at_exit, GRBL_STEPS_PER_MM),
+            grbl_sim_strokes(final, GRBL_STEPS_PER_MM),
+            same=grbl_sim_same_stroke,
+            part_of=grbl_sim_part_of,
+        )
+    }
+
+
+#: Real GRBL on grbl-sim, restarting when its port reopens: only in the slow mode.
+GRBL_SIM = RelayDialect(
+    "grbl-plotter",
+    1,
+    b"\n",
+    b"\n",
+    gcode_job("M5", "M3 S1000"),
+    grbl_sim_tracks,
+    {Direction.TO_DEVICE: 617, Direction.TO_HOST: 2022},
+    GCODE_REALTIME,
+    board=lambda dialect, workdir: GrblSimBoard(dialect, workdir),
+    name="grbl-sim",
+)
+
+
 DIALECTS: dict[str, RelayDialect] = {
     "grbl-plotter": RelayDialect(
         "grbl-plotter",
@@ -238,6 +418,16 @@ DIALECTS: dict[str, RelayDialect] = {
         route_job(USB3_ROUTE),
         usb3_tracks,
         {Direction.TO_DEVICE: 319, Direction.TO_HOST: 1615},
+    ),
+    "string-art": RelayDialect(
+        "string-art",
+        50,
+        b"\n",
+        b"\n",
+        string_art_job,
+        string_art_tracks,
+        {Direction.TO_DEVICE: 1328, Direction.TO_HOST: 1730},
+        GCODE_REALTIME,
     ),
     "xy-stage": RelayDialect(
         "xy-stage",
@@ -307,25 +497,23 @@ def station_command(job: Path, profile: str, port: Path, checkpoints: Path) -> l
 def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResult:
     """The dialect's job through a relay with the fault of ``seed`` (None: no fault)."""
     workdir.mkdir(parents=True, exist_ok=True)
-    fault = random_fault(seed, dialect.traffic, dialect.profile) if seed is not None else None
-    log = workdir / "emulator.log"
+    fault = random_fault(seed, dialect.traffic, dialect.key) if seed is not None else None
     job = dialect.write_job(workdir)
     started = time.monotonic()
-    emulator = start_emulator(
-        "--profile", dialect.profile, "--time-scale", str(dialect.time_scale), "--log", str(log)
-    )
+    board = dialect.board(dialect, workdir)
     relay: FaultRelay | None = None
     station: subprocess.Popen[bytes] | None = None
     status: int | None = None
     fired, traffic = False, {}
     try:
         relay = FaultRelay(
-            device_path(emulator),
+            board.start(),
             workdir / "port",
             fault,
             to_device_end=dialect.to_device_end,
             to_host_end=dialect.to_host_end,
             ignored_to_device=dialect.ignored_to_device,
+            on_reopen=board.reopened,
         )
         env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
         with (
@@ -341,8 +529,8 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
                 env=env,
             )
             status = _wait(station, relay, fault)
-        at_exit = _read(log)
-        (workdir / "emulator-at-exit.log").write_text(at_exit, encoding="utf-8")
+        at_exit = board.log()
+        (workdir / "log-at-exit.txt").write_text(at_exit, encoding="utf-8")
         fired, traffic = relay.fired_at is not None, relay.seen
         relay.close()
         relay = None
@@ -353,12 +541,12 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
             station.wait()
         if relay is not None:
             relay.close()
-        stop(emulator)
-    final = _read(log)
+        board.stop()
+    final = board.log()
     said = _read(workdir / "station.err") + _read(workdir / "station.out")
     judgement = judge(dialect.tracks(at_exit, final), status, said)
     return RunResult(
-        dialect.profile,
+        dialect.key,
         seed if seed is not None else -1,
         fault,
         fault is not None and fired,
@@ -368,10 +556,6 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
         traffic,
         last_words(said),
     )
-
-
-_fired = False
-_traffic: dict[Direction, int] = {}
 
 
 def _wait(station: subprocess.Popen[bytes], relay: FaultRelay, fault: Fault | None) -> int | None:
