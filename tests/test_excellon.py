@@ -138,9 +138,7 @@ def test_eagle_pair_takes_units_and_tools_from_the_dri(data_dir: Path) -> None:
     assert "driver.dri" in from_dri.format_from
 
 
-def test_dri_that_disagrees_with_its_drill_file_is_refused(
-    data_dir: Path, tmp_path: Path
-) -> None:
+def test_dri_that_disagrees_with_its_drill_file_is_refused(data_dir: Path, tmp_path: Path) -> None:
     folder = data_dir / "samples" / "pcb-driver"
     (tmp_path / "driver").write_text((folder / "driver").read_text())
     dri = (folder / "driver.dri").read_text().replace("T02   0.0320inch      6", "T02 0.0320inch 7")
