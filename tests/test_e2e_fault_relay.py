@@ -18,7 +18,13 @@ Environment:
 * ``STEPDECK_RELAY_FIRST`` — the first seed (default 0), to try other seeds;
 * ``STEPDECK_RELAY_SEED=grbl-plotter:17`` (comma-separated) — replay those runs only;
 * ``STEPDECK_RELAY_JOBS`` — runs at once (default 4; each is mostly waiting);
-* ``STEPDECK_RELAY_TABLE=PATH`` — write the verdicts per dialect and fault as Markdown.
+* ``STEPDECK_RELAY_TABLE=PATH`` — write the verdicts per dialect and fault as Markdown;
+* ``STEPDECK_RELAY_RESULTS=PATH`` — append one JSON line per run (``python -m
+  tests.helpers.relay_table PATH…`` makes the table of several sessions);
+* ``STEPDECK_RELAY_GRBL_SIM=N`` — N runs on real GRBL (grbl-sim), restarting on each
+  reopen (default 60 in the slow mode, none otherwise);
+* ``STEPDECK_RELAY_HANG_S`` — how long after its fault a station that has not ended is
+  hung (default 20 s).
 
 Every run prints a ``RELAY |`` line (seed, fault, verdict, seconds); the
 seed is also in the test id.  The runs of a module run in a pool before the
@@ -72,8 +78,13 @@ _DUP = (
     "found by the relay: a line the board refuses (a duplicate overflowing its buffer) is"
     " skipped: the lines streamed behind it draw a stroke not in the job before the stop"
 )
+_DRILL = (
+    "found by the relay: a flipped digit or a repeated line reaches the drill unchecked:"
+    " a hole in the wrong place, or drilled twice, and the job done"
+)
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("grbl-plotter", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
+    ("grbl-plotter", FaultKind.DUPLICATE): _DUP,
     ("grbl-plotter", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
     ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("grbl-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
@@ -93,6 +104,8 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("grbl-sim", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("grbl-sim", FaultKind.REOPEN): f"{_REDRAW}; {_RESET}",
     ("pcb-drill", FaultKind.DROP): f"{_SILENT} (lost reply bytes end the same way)",
+    ("pcb-drill", FaultKind.DUPLICATE): _DRILL,
+    ("pcb-drill", FaultKind.CORRUPT): _DRILL,
     ("pcb-drill", FaultKind.SILENCE): _SILENT,
     ("usb3", FaultKind.DUPLICATE): _USB3,
     ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_SILENT}",
