@@ -58,6 +58,8 @@ GCODE_REALTIME = frozenset(b"?!~\x18") | frozenset(range(0x80, 0x100))
 HANG_AFTER_S = float(os.environ.get("STEPDECK_RELAY_HANG_S", "20"))
 #: A job whose fault was never reached has this long more (a clean run takes a few seconds).
 NOT_REACHED_S = 20.0
+#: However it goes on moving, a run is given up this long after its start.
+GIVE_UP_S = 240.0
 #: Faults that last a while: the station has HANG_AFTER_S once they are over.
 TIMED = frozenset({FaultKind.DELAY, FaultKind.SILENCE, FaultKind.REOPEN})
 #: How long the device is left to finish what it was doing once the station ended.
@@ -103,6 +105,9 @@ class Board(Protocol):
     def log(self) -> str:
         """What the machine did so far (the text the dialect's tracks read)."""
 
+    def progress(self) -> int:
+        """A number that changes only as the machine moves (constant if it cannot tell)."""
+
     def stop(self) -> None: ...
 
 
@@ -126,6 +131,9 @@ class EmulatorBoard:
 
     def log(self) -> str:
         return _read(self.path)
+
+    def progress(self) -> int:
+        return 0  # the log also grows with every query: no sign of motion
 
     def stop(self) -> None:
         if self.process is not None:
@@ -172,6 +180,13 @@ class GrblSimBoard:
 
     def log(self) -> str:
         return _read(self.steps)
+
+    def progress(self) -> int:
+        """The step log grows only while blocks run (grbl-sim is slow on a busy machine)."""
+        try:
+            return self.steps.stat().st_size
+        except FileNotFoundError:
+            return 0
 
     def stop(self) -> None:
         if self.process is not None:
@@ -528,7 +543,7 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
                 stderr=err,
                 env=env,
             )
-            status = _wait(station, relay, fault)
+            status = _wait(station, relay, fault, board)
         at_exit = board.log()
         (workdir / "log-at-exit.txt").write_text(at_exit, encoding="utf-8")
         fired, traffic = relay.fired_at is not None, relay.seen
@@ -558,19 +573,26 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
     )
 
 
-def _wait(station: subprocess.Popen[bytes], relay: FaultRelay, fault: Fault | None) -> int | None:
+def _wait(
+    station: subprocess.Popen[bytes], relay: FaultRelay, fault: Fault | None, board: Board
+) -> int | None:
     """The station's exit status, or None when it is hung.
 
     Hung: still running HANG_AFTER_S after the fault's effect ended (a hold,
-    a silence or a pulled port lasts its time; the others are over at once),
-    or, when the fault was never reached, HANG_AFTER_S plus NOT_REACHED_S
-    after the start.
+    a silence or a pulled port lasts its time; the others are over at once)
+    and after the machine last moved (as far as the board can tell), or,
+    when the fault was never reached, HANG_AFTER_S plus NOT_REACHED_S after
+    the start; and never later than GIVE_UP_S after the start.
     """
     begun = time.monotonic()
+    moved_at, progress = begun, board.progress()
     while True:
         status = station.poll()
         if status is not None:
             return status
+        now = time.monotonic()
+        if (seen := board.progress()) != progress:
+            moved_at, progress = now, seen
         fired = relay.fired_at
         if fired is None or fault is None:
             quiet_since = begun + NOT_REACHED_S
@@ -578,6 +600,6 @@ def _wait(station: subprocess.Popen[bytes], relay: FaultRelay, fault: Fault | No
             quiet_since = fired + fault.amount
         else:
             quiet_since = fired
-        if time.monotonic() - quiet_since > HANG_AFTER_S:
+        if now - max(quiet_since, moved_at) > HANG_AFTER_S or now - begun > GIVE_UP_S:
             return None
         time.sleep(0.05)
