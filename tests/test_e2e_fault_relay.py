@@ -95,6 +95,8 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("corexy-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("corexy-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("corexy-plotter", FaultKind.REOPEN): _REDRAW,
+    ("string-art", FaultKind.DROP): _NO_SUM,
+    ("string-art", FaultKind.DUPLICATE): _DUP,
     ("string-art", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("string-art", FaultKind.REOPEN): _REDRAW,

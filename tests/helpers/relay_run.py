@@ -142,6 +142,8 @@ class EmulatorBoard:
 
 #: Real GRBL's speeds for the plotter's job (mm/min, mm/s²): a new board's are far slower.
 GRBL_SETUP = b"$110=6000\n$111=6000\n$120=1000\n$121=1000\n"
+#: grbl-sim shares one core with every other simulator on the machine: it may start slowly.
+GRBL_SIM_START_S = 60.0
 #: A new board's steps a mm ($100, $101).
 GRBL_STEPS_PER_MM = 250.0
 
@@ -164,7 +166,7 @@ class GrblSimBoard:
     def start(self) -> str:
         exe = grbl_sim.build(ROOT / "tests" / "third_party" / "grbl")
         self.process = grbl_sim.start(exe, self.workdir, steps=self.steps)
-        path = device_path(self.process)
+        path = device_path(self.process, GRBL_SIM_START_S)
         _set_up(path, GRBL_SETUP)
         return path
 
@@ -176,7 +178,7 @@ class GrblSimBoard:
             steps.write(f"{BOOT_MARK} {self.restarts}\n")
         exe = grbl_sim.build(ROOT / "tests" / "third_party" / "grbl")
         self.process = grbl_sim.start(exe, self.workdir, steps=self.steps, fresh=False)
-        return device_path(self.process)
+        return device_path(self.process, GRBL_SIM_START_S)
 
     def log(self) -> str:
         return _read(self.steps)
@@ -200,7 +202,7 @@ def _set_up(path: str, lines: bytes) -> None:
         tty.setraw(fd)
         os.write(fd, lines)
         heard = b""
-        deadline = time.monotonic() + 15.0
+        deadline = time.monotonic() + GRBL_SIM_START_S
         while heard.count(b"ok") + heard.count(b"error") < lines.count(b"\n"):
             if time.monotonic() > deadline:
                 raise AssertionError(f"the board did not take its set-up: {heard!r}")
