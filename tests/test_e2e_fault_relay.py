@@ -70,7 +70,7 @@ LOCK = threading.Lock()
 _REDRAW = "issue 30: G-code resume after a link fault redraws strokes (resume from proof)"
 _SILENT = "issue 30: a silent line pauses the job and nothing probes the device (silence probing)"
 _NO_SUM = "issue 30: a mangled G-code line is valid and not caught (motion supervision)"
-_USB3 = "issue 30: a corrupted or repeated usb3 move runs unchecked (motion supervision)"
+_USB3 = "issue 30: a corrupted, cut or repeated usb3 move runs unchecked (motion supervision)"
 _RESET = "issue 30: a board that restarts loses its position; the resume draws shifted"
 _STAGE = "found by the relay: a byte lost or flipped on the way to the stage: lost for good"
 _LOST = "found by the relay: a line lost or mangled on the way to GRBL: paused for good"
@@ -101,6 +101,7 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("string-art", FaultKind.REOPEN): _REDRAW,
     ("grbl-sim", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
+    ("grbl-sim", FaultKind.DUPLICATE): f"{_DUP}; {_REDRAW}",
     ("grbl-sim", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
     ("grbl-sim", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("grbl-sim", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
@@ -109,6 +110,7 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("pcb-drill", FaultKind.DUPLICATE): _DRILL,
     ("pcb-drill", FaultKind.CORRUPT): _DRILL,
     ("pcb-drill", FaultKind.SILENCE): _SILENT,
+    ("usb3", FaultKind.DROP): f"{_USB3}; {_SILENT} (lost bytes end the same way)",
     ("usb3", FaultKind.DUPLICATE): _USB3,
     ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_SILENT}",
     ("usb3", FaultKind.SILENCE): _SILENT,
