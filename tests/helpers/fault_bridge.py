@@ -168,6 +168,7 @@ class FaultBridge:
     def _run(self) -> None:
         while not self._stop.is_set():
             with self._lock:
+                self._tick()
                 fds = [self._device] + ([self._master] if self._master is not None else [])
             try:
                 readable, _, _ = select.select(fds, [], [], POLL_S)
@@ -185,6 +186,9 @@ class FaultBridge:
                         self._relay(Direction.TO_HOST, data)
                     elif fd == self._master:
                         self._relay(Direction.TO_DEVICE, data)
+
+    def _tick(self) -> None:
+        """Called on every turn of the relaying loop (lock held): a subclass's timed faults."""
 
     def _relay(self, direction: Direction, data: bytes) -> None:
         """Pass ``data`` on, cutting the link where an armed watch says (lock held)."""

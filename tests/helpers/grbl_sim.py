@@ -75,14 +75,23 @@ def build(source: Path) -> Path:
         return exe
 
 
-def command(exe: Path) -> list[str]:
+#: With this set (a path), the simulator appends where the machine stands to that file:
+#: every ``STEPS_EVERY_S`` of machine time and at each block's end (``-r``: ``time x, y, z,
+#: spindle PWM`` in steps, a ``# block number N`` line as each block starts).
+STEPS_ENV = "STEPDECK_GRBL_SIM_STEPS"
+STEPS_EVERY_S = 0.005
+
+
+def command(exe: Path, steps: bool = False) -> list[str]:
     """The simulator pinned to one core, its stdin unbuffered (BUILD.md's known quirks)."""
     prefix = []
     if shutil.which("taskset"):
         prefix += ["taskset", "-c", "0"]
     if shutil.which("stdbuf"):
         prefix += ["stdbuf", "-i0", "-oL"]
-    return [*prefix, str(exe), "-n", "-t", os.environ.get("GRBL_SIM_TIME", "1"), "-b", os.devnull]
+    time_scale = os.environ.get("GRBL_SIM_TIME", "1")
+    report = ["-r", str(STEPS_EVERY_S)] if steps else []
+    return [*prefix, str(exe), "-n", "-t", time_scale, "-b", os.devnull, *report]
 
 
 class WireLog:
@@ -160,6 +169,10 @@ class Board:
         self.exe, self.workdir, self.link = exe, workdir, link
         self.restart_on_open = restart_on_open
         self.log = WireLog(workdir / "wire.log")
+        steps = os.environ.get(STEPS_ENV)
+        # The step reports go to the simulator's standard error, which C leaves unbuffered:
+        # nothing is lost when the board is switched off (terminated) mid-move.
+        self.steps_file = open(steps, "ab") if steps else None
         self.sim = self._start_sim()
         self.master: int | None = None
         self.slave: int | None = None
@@ -170,10 +183,11 @@ class Board:
 
     def _start_sim(self) -> subprocess.Popen[bytes]:
         sim = subprocess.Popen(
-            command(self.exe),
+            command(self.exe, steps=self.steps_file is not None),
             cwd=self.workdir,
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
+            stderr=self.steps_file,
             bufsize=0,
         )
         assert sim.stdout is not None
@@ -278,6 +292,8 @@ class Board:
     def close(self) -> None:
         self._stop_sim()
         self.log.close()
+        if self.steps_file is not None:
+            self.steps_file.close()
         self.unplug()
 
 
@@ -320,21 +336,35 @@ def serve(exe: Path, workdir: Path, link: Path | None = None, restart_on_open: b
 
 
 def start(
-    exe: Path, workdir: Path, link: Path | None = None, *, restart_on_open: bool = False
+    exe: Path,
+    workdir: Path,
+    link: Path | None = None,
+    *,
+    restart_on_open: bool = False,
+    steps: Path | None = None,
+    fresh: bool = True,
 ) -> subprocess.Popen[bytes]:
     """The bridge in its own process, its first output line the device path.
 
     ``link``: the port also appears there (and there again once plugged back);
-    ``restart_on_open``: the board restarts whenever the port is opened.
+    ``restart_on_open``: the board restarts whenever the port is opened;
+    ``fresh``: a new board's EEPROM (False: the one in ``workdir``, as a board
+    that restarts keeps its settings); ``steps``: where the machine stands,
+    appended to that file (see :data:`STEPS_ENV`).
     """
-    shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
+    if fresh:
+        shutil.copyfile(cache_dir() / "EEPROM.DAT", workdir / "EEPROM.DAT")  # written by build()
     root = Path(__file__).resolve().parent.parent.parent
+    env = dict(os.environ)
+    if steps is not None:
+        env[STEPS_ENV] = str(steps)
     extra = [] if link is None else ["--link", str(link)]
     if restart_on_open:
         extra.append("--restart-on-open")
     return subprocess.Popen(
         [sys.executable, "-m", "tests.helpers.grbl_sim", str(exe), str(workdir), *extra],
         cwd=root,
+        env=env,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
     )
