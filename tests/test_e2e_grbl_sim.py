@@ -491,7 +491,13 @@ def test_a_board_that_restarts_when_its_port_reopens_draws_each_stroke_once(
     process = grbl_sim.start(grbl_sim_exe, workdir, port, restart_on_open=True)
     try:
         device_path(process)
-        board = Board("grbl-sim", str(port), workdir / "wire.log", lambda: stop(process))
+        board = Board(
+            "grbl-sim",
+            str(port),
+            workdir / "wire.log",
+            lambda: stop(process),
+            lambda: grbl_sim.cpu_seconds(process.pid),
+        )
         station.reconnect_delays = (0.2, 0.5, 1.0)
         session, answers = connect(qtbot, station, board)
         said: list[str] = []
@@ -505,15 +511,15 @@ def test_a_board_that_restarts_when_its_port_reopens_draws_each_stroke_once(
         runner = start(station, program, tmp_path)
         runner.message.connect(said.append)
         # Pulled while the board has a planner full of answered lines and more are to come.
-        qtbot.waitUntil(lambda: runner.executed >= 6, timeout=JOB_TIMEOUT_MS)
+        until(qtbot, board, lambda: runner.executed >= 6, JOB_TIMEOUT_MS)
         unplugged_at = len(_wire_events(board))
         os.kill(process.pid, signal.SIGUSR1)  # the USB cable pulled
-        qtbot.waitUntil(lambda: runner.state is JobState.PAUSED, timeout=30_000)
+        until(qtbot, board, lambda: runner.state is JobState.PAUSED, 30_000)
         # It runs on with what it had, and stands: its own reports say so.
-        qtbot.waitUntil(lambda: _stands_idle_unplugged(board, unplugged_at), timeout=120_000)
+        until(qtbot, board, lambda: _stands_idle_unplugged(board, unplugged_at), 120_000)
         ran_before = [line for line in _answered_per_boot(board)[-1] if line in job]
         os.kill(process.pid, signal.SIGUSR2)  # plugged back: the board restarts on the open
-        qtbot.waitUntil(lambda: runner.resume_choice is not None, timeout=60_000)
+        until(qtbot, board, lambda: runner.resume_choice is not None, 60_000)
         choice = runner.resume_choice
         assert choice is not None and choice.position_lost
         assert runner.state is JobState.PAUSED and runner.needs_operator
@@ -524,9 +530,9 @@ def test_a_board_that_restarts_when_its_port_reopens_draws_each_stroke_once(
         assert ran_before == job[:pick] and pick < len(job)
         assert pick in choice.candidates, (pick, choice)
         runner.resume_at(pick)
-        finish(qtbot, runner)
+        finish(qtbot, board, runner)
         assert runner.state is JobState.DONE, said[-3:]
-        end = standing(qtbot, session)
+        end = standing(qtbot, board, session)
         assert end == pytest.approx((0.0, 38.0), abs=STEP)
         # Every stroke of the file answered once over both boots, in order: each ran once
         # (the pen lines go again with the way back, which sets the pen).
