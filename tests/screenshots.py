@@ -213,6 +213,7 @@ def main(names: list[str]) -> None:
     assert isinstance(app, QApplication)
     i18n.install("en")  # as the station starts: English with its plural forms
     for name in names or list(SHOTS):
+        i18n.install("en")  # a shot in another language leaves it installed
         with tempfile.TemporaryDirectory() as temp:
             harness, window = SHOTS[name](Path(temp))
             try:
