@@ -72,7 +72,6 @@ _SILENT = "issue 30: a silent line pauses the job and nothing probes the device 
 _NO_SUM = "issue 30: a mangled G-code line is valid and not caught (motion supervision)"
 _USB3 = "issue 30: a corrupted, cut or repeated usb3 move runs unchecked (motion supervision)"
 _RESET = "issue 30: a board that restarts loses its position; the resume draws shifted"
-_STAGE = "found by the relay: a byte lost or flipped on the way to the stage: lost for good"
 _LOST = "found by the relay: a line lost or mangled on the way to GRBL: paused for good"
 _DUP = (
     "found by the relay: a line the board refuses (a duplicate overflowing its buffer) is"
@@ -114,8 +113,6 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("usb3", FaultKind.DUPLICATE): _USB3,
     ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_SILENT}",
     ("usb3", FaultKind.SILENCE): _SILENT,
-    ("xy-stage", FaultKind.DROP): _STAGE,
-    ("xy-stage", FaultKind.CORRUPT): _STAGE,
 }
 
 

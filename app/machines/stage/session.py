@@ -26,6 +26,7 @@ from app.machines.stage.supervision import StageSupervisor
 from protocol.clock import Clock
 from protocol.stage.codec import (
     PARAMETERS,
+    AxisStatus,
     CommandFrame,
     CommandId,
     CommandPacket,
@@ -62,6 +63,10 @@ JOG_LATENCY_PERIODS = 2
 #: A jog stopped at the travel's end stops this far inside it: the stage's end switches sit
 #: at the travel's ends, and a jog is to stop before them, not on them.
 JOG_END_MARGIN_MM = 0.1
+#: Echoes counted past a MOVE_ABS's frame before one is believed to answer a later frame.
+#: Echoes come back in order, one per valid frame, so a lost frame or echo only makes the
+#: count lag; the margin of one more covers a duplicated or stale echo.
+MOVE_PROOF_ECHOES = 2
 
 
 class SubscriberScheduler:
@@ -113,6 +118,12 @@ class StageSession(MachineSession):
         self._shift_held = False
         self._device_fast: bool | None = None
         self._last_echo: float | None = None
+        #: Frames sent and echoes received since the link opened (see _check_moves).
+        self._frames_sent = 0
+        self._echoes_received = 0
+        #: Per axis: the last MOVE_ABS sent and the frame count it went out with, until an
+        #: echo of a later frame shows whether the stage received it.
+        self._unproven: list[tuple[int, CommandPacket] | None] = [None] * self.axis_count
         self._timer = QTimer(self)
         self._timer.setInterval(self._period_ms)
         self._timer.timeout.connect(self.tick)
@@ -261,6 +272,12 @@ class StageSession(MachineSession):
         frame = CommandFrame(packets, self.subscribers.next(self.clock.now()))
         raw = encode_command(frame)
         self.supervisor.sent(packets)
+        self._frames_sent += 1
+        for axis, packet in enumerate(packets):
+            if packet.command == CommandId.MOVE_ABS:
+                self._unproven[axis] = (self._frames_sent, packet)
+            elif packet.command in _SUPERSEDING:
+                self._unproven[axis] = None
         self.link.write(raw)
         self.frameSent.emit(frame, raw)
 
@@ -344,6 +361,8 @@ class StageSession(MachineSession):
 
     def _on_connected(self) -> None:
         self.decoder.reset()
+        self._frames_sent = self._echoes_received = 0
+        self._unproven = [None] * self.axis_count
         self._last_echo = self.clock.now()
         self._device_fast = None
         self._jog = [0] * self.axis_count
@@ -361,6 +380,7 @@ class StageSession(MachineSession):
         self._jog = [0] * self.axis_count
         self._jog_limited = [0] * self.axis_count
         self.echoes.forget_writes()
+        self._unproven = [None] * self.axis_count
         for queue in (*self._urgent, *self._background):
             queue.clear()
         if reason is None:
@@ -393,7 +413,9 @@ class StageSession(MachineSession):
             elif isinstance(result, EchoFrame):
                 # The codec is canonical, so re-encoding gives back the bytes received.
                 self.frameReceived.emit(result, encode_echo(result))
+                self._echoes_received += 1
                 self.apply_echo(result)
+                self._check_moves(result)
             else:
                 # A command frame arriving here is an echo of our own bytes (a looped
                 # cable, a misbehaving bridge): noise on this side, counted as such.
@@ -409,6 +431,57 @@ class StageSession(MachineSession):
         self.echoes.apply(echo)
         if fault is not None:
             self._stop_for_fault(fault)
+
+    def _check_moves(self, echo: EchoFrame) -> None:
+        """Send again a MOVE_ABS the stage never received (its frame lost or mangled).
+
+        The stage drops a frame whose checksum fails and answers nothing, so a
+        lost move is seen only in what it reports afterwards: an echo that
+        answers a later frame (it tells the state after every frame before it)
+        showing the axis standing still, off the target, with no stop or end
+        switch to explain it.  Only then was the move never run, and only then
+        does it go out again: a move that may have run is never repeated.
+        """
+        for axis, unproven in enumerate(self._unproven):
+            if unproven is None or axis >= len(echo.packets):
+                continue
+            sent_as, packet = unproven
+            report = echo.packets[axis]
+            if self._echoes_received < sent_as + MOVE_PROOF_ECHOES:
+                continue  # this echo may answer the move's own frame or one before it
+            if report.type != EchoType.POSITION:
+                continue  # a parameter answer in the position's place: the next one tells
+            self._unproven[axis] = None
+            if report.status not in (AxisStatus.IDLE, AxisStatus.TARGET_REACHED):
+                continue  # it runs, or a stop, a switch or a block explains where it stands
+            if abs(report.data - packet.data) <= self._arrival_tolerance_um(axis):
+                continue  # it stands on the target: run, or nothing to run
+            if any(
+                p.command in _SUPERSEDING or p.command == CommandId.MOVE_ABS
+                for p in self._urgent[axis]
+            ):
+                continue  # newer motion for this axis is on its way
+            self._urgent[axis].appendleft(packet)
+            self._send_now()
+
+    def _arrival_tolerance_um(self, axis: int) -> float:
+        """Half a microstep plus the µm the wire rounds to: as the job judges arrival."""
+        profile = self.model.profile.axes[axis]
+
+        def known(parameter: EchoType, fallback: float) -> float:
+            value = self.model.parameter(axis, parameter).value
+            return float(value) if value else fallback
+
+        lead_um = known(EchoType.LEAD, profile.lead * 1000)
+        per_rev = known(EchoType.STEPS_PER_REV, profile.steps_per_rev) * known(
+            EchoType.MICROSTEPS, profile.microsteps
+        )
+        return lead_um / per_rev / 2 + 1.0
+
+    def _silence_began(self) -> str:
+        """Given up as silent: a job's resume re-examines its move, so none is judged here."""
+        self._unproven = [None] * self.axis_count
+        return ""
 
     def _back_after_silence(self) -> None:
         """A stage switched on again runs slow and may hold other parameters: as at connect."""
@@ -430,6 +503,18 @@ class StageSession(MachineSession):
 
 _MOTION_COMMANDS = frozenset(
     {CommandId.MOVE_ABS, CommandId.MOVE_REL, CommandId.HOME, CommandId.STOP, CommandId.ESTOP}
+)
+#: Commands after which an earlier MOVE_ABS of their axis no longer decides where it goes.
+_SUPERSEDING = frozenset(
+    {
+        CommandId.MOVE_REL,
+        CommandId.HOME,
+        CommandId.STOP,
+        CommandId.ESTOP,
+        CommandId.SET_POS,
+        CommandId.JOG,
+        CommandId.SLEEP,
+    }
 )
 
 
