@@ -41,7 +41,15 @@ from dataclasses import dataclass, field
 from typing import Generic, Protocol, TypeVar
 
 from protocol.clock import Clock
-from protocol.gcode.codec import AlarmReply, Banner, ErrorReply, Ok, Rejected, StatusReport
+from protocol.gcode.codec import (
+    FEED_HOLD,
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Ok,
+    Rejected,
+    StatusReport,
+)
 from protocol.gcode.streaming import LineStreamer
 
 T = TypeVar("T")
@@ -294,6 +302,13 @@ class LineFeeder(Generic[T]):
                 elif isinstance(reply, ErrorReply):
                     verdict = Answer(self.streamer.acknowledge())
                     self.unseen += 1
+                    if self.pulling:
+                        # A job line refused mid-stream: the board goes straight on to the
+                        # lines behind it, which may draw a stroke the job never had (a pen
+                        # change in the refused line).  Held here, on the thread that read
+                        # it, not a GUI-thread turn later; the job's stop follows.
+                        self.pulling = False
+                        self._write(FEED_HOLD)
                 else:
                     verdict = self.acknowledge()
             elif isinstance(reply, StatusReport):
