@@ -176,3 +176,24 @@ def test_a_console_line_refused_outside_a_job_holds_nothing() -> None:
     feeder.pump()
     feeder.receive(b"error:20\r\n")
     assert FEED_HOLD not in written
+
+
+def test_a_job_line_refused_while_the_job_is_not_pulled_still_holds_the_board() -> None:
+    """Relay corexy-plotter seed 7: the job's last lines all queued, nothing more to pull,
+    and the refusal was held 0.7 s later, after two strokes the job never had."""
+    streamer: LineStreamer[str] = LineStreamer(StreamMode.COUNTING, 128)
+    written: list[list[bytes]] = []
+    feeder = LineFeeder(
+        streamer,
+        make_decoder(),
+        ManualClock(),
+        lambda raw: written.append([raw]),
+        written.append,
+        holds_on_refusal=lambda tag: tag == "job",
+    )
+    streamer.queue(b"G1 X26.G1 X29 Y5\n", "job")
+    streamer.queue(b"G1 X32 Y7\n", "job")
+    feeder.pump()
+    assert not feeder.pulling
+    feeder.receive(b"error:21\r\n")
+    assert written[-1] == [FEED_HOLD]  # in one write where it was read
