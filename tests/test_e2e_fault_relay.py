@@ -77,23 +77,32 @@ _DUP = (
     "found by the relay: a line the board refuses (a duplicate overflowing its buffer) is"
     " skipped: the lines streamed behind it draw a stroke not in the job before the stop"
 )
+_DUP_HELD = (
+    "a line the board refuses (a duplicate overflowing its buffer) is held (!) where the"
+    " refusal is read, but the board has begun the line behind it by then: a few tenths of"
+    " a mm of a stroke not in the job when the refused line was a pen change"
+)
+_BETWEEN = (
+    "undetectable on this wire: a mangled line that is still valid G-code (no checksum) is"
+    " judged only by the status reports, 200 ms apart; a wrong move that ends on the path"
+    " sent, or strays less than the tolerance, between two reports is not seen, and one that"
+    " leaves the path is stopped at the next report, part of its stroke drawn"
+)
 _DRILL = (
     "found by the relay: a flipped digit or a repeated line reaches the drill unchecked:"
     " a hole in the wrong place, or drilled twice, and the job done"
 )
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
-    ("grbl-plotter", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
-    ("grbl-plotter", FaultKind.DUPLICATE): _DUP,
-    ("grbl-plotter", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
+    ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_LOST}",
+    ("grbl-plotter", FaultKind.DUPLICATE): _DUP_HELD,
+    ("grbl-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_LOST}",
     ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("grbl-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
-    ("grbl-plotter", FaultKind.REOPEN): _REDRAW,
-    ("corexy-plotter", FaultKind.DROP): _NO_SUM,
-    ("corexy-plotter", FaultKind.DUPLICATE): _DUP,
-    ("corexy-plotter", FaultKind.CORRUPT): _NO_SUM,
+    ("corexy-plotter", FaultKind.DROP): _BETWEEN,
+    ("corexy-plotter", FaultKind.DUPLICATE): _DUP_HELD,
+    ("corexy-plotter", FaultKind.CORRUPT): _BETWEEN,
     ("corexy-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("corexy-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
-    ("corexy-plotter", FaultKind.REOPEN): _REDRAW,
     ("string-art", FaultKind.DROP): _NO_SUM,
     ("string-art", FaultKind.DUPLICATE): _DUP,
     ("string-art", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",

@@ -133,3 +133,67 @@ def test_the_lines_an_answer_lets_go_are_written_where_it_was_read_in_one_write(
     assert [raw for raw, _ in received.written] == [b"G0 X2\n", b"G0 X3\n", b"G0 X4\n"]
     assert here == [[b"G0 X2\n", b"G0 X3\n", b"G0 X4\n"]]
     assert queued == [b"G0 X10 Y10 Z1\n"]
+
+
+class _Job:
+    """Three job lines, the second one the board will refuse."""
+
+    def __init__(self) -> None:
+        self.lines = [b"G1 X1\n", b"G1 X2 G0\n", b"G0 X30 Y30\n"]
+
+    def take(self, count: int) -> list[tuple[bytes, int]]:
+        taken = [(line, index) for index, line in enumerate(self.lines[:count])]
+        self.lines = self.lines[count:]
+        return taken
+
+    def count_answer(self, tag: int) -> bool:
+        return True
+
+    def reported(self) -> object:
+        return None
+
+
+def test_a_job_line_refused_mid_stream_holds_the_board_where_the_refusal_is_read() -> None:
+    """Relay corexy-plotter seed 19: a duplicated line overflowed the board's buffer, the
+    board refused the line it mangled and went straight on to the lines behind it; the hold
+    came a GUI-thread turn later, after a pen-down travel the job never had."""
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, 128)
+    written: list[bytes] = []
+    feeder = LineFeeder(streamer, make_decoder(), ManualClock(), written.append)
+    feeder.follow(_Job())
+    feeder.pull()
+    assert written == [b"G1 X1\n", b"G1 X2 G0\n", b"G0 X30 Y30\n"]
+    feeder.receive(b"ok\r\nerror:21\r\n")
+    assert written[-1] == FEED_HOLD  # at once, on the reader's side
+    assert not feeder.pulling  # and nothing more of the job is pulled
+
+
+def test_a_console_line_refused_outside_a_job_holds_nothing() -> None:
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, 128)
+    written: list[bytes] = []
+    feeder = LineFeeder(streamer, make_decoder(), ManualClock(), written.append)
+    streamer.queue(b"G7\n", 0)
+    feeder.pump()
+    feeder.receive(b"error:20\r\n")
+    assert FEED_HOLD not in written
+
+
+def test_a_job_line_refused_while_the_job_is_not_pulled_still_holds_the_board() -> None:
+    """Relay corexy-plotter seed 7: the job's last lines all queued, nothing more to pull,
+    and the refusal was held 0.7 s later, after two strokes the job never had."""
+    streamer: LineStreamer[str] = LineStreamer(StreamMode.COUNTING, 128)
+    written: list[list[bytes]] = []
+    feeder = LineFeeder(
+        streamer,
+        make_decoder(),
+        ManualClock(),
+        lambda raw: written.append([raw]),
+        written.append,
+        holds_on_refusal=lambda tag: tag == "job",
+    )
+    streamer.queue(b"G1 X26.G1 X29 Y5\n", "job")
+    streamer.queue(b"G1 X32 Y7\n", "job")
+    feeder.pump()
+    assert not feeder.pulling
+    feeder.receive(b"error:21\r\n")
+    assert written[-1] == [FEED_HOLD]  # in one write where it was read

@@ -151,6 +151,59 @@ def test_a_link_fault_mid_job_draws_every_stroke_once_and_resumes_by_itself(
         harness.close()
 
 
+@pytest.mark.parametrize("fault", [silent_line(5.4), pulled(4.6)], ids=["silent", "pulled"])
+def test_a_plot_back_home_cut_before_it_began_is_not_taken_for_done(
+    qtbot: QtBot, tmp_path: Path, fault: Fault
+) -> None:
+    """Relay grbl-plotter seed 11: the job's lines lost before one ran, the machine idle at
+    home, where the file ends too.  The station said "every answered line ran, and 30 more
+    whose answer was lost" and the job done: nothing was drawn.  Standing where the job
+    began proves nothing ran as well: the job runs from its first line, or asks."""
+    profile = load_profile("grbl-plotter")
+    settings = profile.gcode
+    assert settings is not None
+    strokes = [(60.0, 5.0 + 3 * k) for k in range(4)]
+    lines = ["G21 G90"]
+    for x, y in strokes:
+        lines += [settings.pen_up, f"G0 X10 Y{y:g}", settings.pen_down, f"G1 X{x:g} Y{y:g} F3000"]
+    lines += [settings.pen_up, "G0 X0 Y0"]
+    source = tmp_path / "plot.gcode"
+    source.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    program = load_job(source, ["X", "Y"], JobOptions(gcode=settings))
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        assert runner.load(program) == []
+        runner.start()
+        fault(harness)
+        start = harness.clock.now()
+        while runner.state not in (JobState.DONE, JobState.FAILED, JobState.ABORTED):
+            assert harness.clock.now() - start < 120, (runner.state, messages)
+            if runner.needs_operator:
+                break
+            harness.step()
+            if (
+                runner.state is JobState.PAUSED
+                and not runner.needs_operator
+                and harness.station.model.link_state is LinkState.CONNECTED
+            ):
+                runner.resume()
+        drawn = pen_down_moves(harness)
+        assert drawn == strokes[: len(drawn)], drawn  # none twice, none out of order
+        if runner.state is JobState.DONE:
+            assert drawn == strokes, messages  # "done" only with every stroke drawn
+        else:
+            choice = runner.resume_choice
+            assert choice is not None and choice.first == 0, (runner.state, messages)
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
 def _streamed(tmp_path: Path, lines: list[str], answered: int, written: int) -> GcodeStream:
     """A GRBL job: ``answered`` lines came back ok, ``written`` went out."""
     profile = load_profile("grbl-plotter")
@@ -206,6 +259,20 @@ def test_before_the_first_move_the_place_is_not_known_so_it_proves_nothing(
     resumed from line 1: 31 operations sent again."""
     stream = _streamed(tmp_path, SQUARE_LINES, answered=0, written=3)
     assert stream.stands_after((55.0, 5.0), 0, 2) is None
+
+
+def test_a_plot_that_ends_where_the_job_began_proves_nothing_there(tmp_path: Path) -> None:
+    """Relay grbl-plotter seed 11: the port pulled before any line ran, the machine still at
+    home, and the file's last move goes home too.  The station took "stands where the last
+    line leaves it" for proof, said the job done, and nothing was drawn."""
+    lines = [*SQUARE_LINES[:-1], "G0 X0 Y0"]
+    stream = _streamed(tmp_path, lines, answered=0, written=10)
+    # Home is both "nothing ran yet" and "all ran": only the operator can say.
+    assert stream.stands_after((0.0, 0.0), 0, 10, start=(0.0, 0.0)) is None
+    # A job that began elsewhere: home is only the end.
+    assert stream.stands_after((0.0, 0.0), 0, 10, start=(50.0, 50.0)) == 10
+    # Standing where it began, on a file that never comes back there: nothing ran yet.
+    assert stream.stands_after((0.0, 0.0), 0, 9, start=(0.0, 0.0)) == 0
 
 
 def test_only_pen_down_moves_count_as_drawing(tmp_path: Path) -> None:

@@ -81,6 +81,10 @@ class GcodeDriver(JobDriver):
         self.stream: GcodeStream | None = None
         #: The work offset when the job began: program coordinates are machine less it.
         self._origin: tuple[float, ...] = ()
+        #: Where the machine stood when the job began, in the program's coordinates (None
+        #: when the run began elsewhere than operation 0): standing there again after a fault
+        #: may mean nothing ran as well as that the file came back to it.
+        self._start_at: tuple[float, ...] | None = None
         self.session: GcodeSession | None = None
         self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
@@ -171,6 +175,12 @@ class GcodeDriver(JobDriver):
         # job began (GRBL's G92 offset; 0 elsewhere); the file's own G92 lines keep that so,
         # as the loader applies them as GRBL does.
         self._origin = tuple(session.work_offset or ()) if session is not None else ()
+        self._start_at = None
+        if index == 0 and not verify and session is not None:
+            self._start_at = tuple(
+                axis.position - self._offset(self._origin, i)
+                for i, axis in enumerate(session.model.axes)
+            )
         self._waiting = None
         self._recheck = verify
         self._asked_since_recheck = False
@@ -202,6 +212,11 @@ class GcodeDriver(JobDriver):
             self._recheck = True
             self._asked_since_recheck = False
             self._preparing = 0  # lost with the link: the recheck sets the machine up again
+            if self._confirming:
+                # The set-up's ``$G`` (or its answer) may be lost with the link: waiting for
+                # it would hold the job for good.  The set-up is checked again once back.
+                self._confirming = False
+                self._redo_setup = True
             self._write_checkpoint(force=True)
 
     def proceed(self) -> None:
@@ -423,6 +438,9 @@ class GcodeDriver(JobDriver):
         with self._locked():
             self.stream.pending.clear()
         self._preparing = 0  # the reset took what was left of it
+        if self._confirming:
+            self._confirming = False  # its answer went with the reset: checked again
+            self._redo_setup = True
         self._recheck = True
         self._asked_since_recheck = False
         session = self.session
@@ -530,7 +548,7 @@ class GcodeDriver(JobDriver):
             elif self._position_lost:
                 start = None
             else:
-                start = stream.stands_after(here, first, upto)
+                start = stream.stands_after(here, first, upto, self._start_at)
                 if start is not None:
                     unanswered = start - stream.answered
                     note = "every answered line ran" + (

@@ -484,7 +484,13 @@ class GcodeStream:
         """Operation ``index``'s line left for the device (it may run without an answer back)."""
         self.written = max(self.written, index + 1)
 
-    def stands_after(self, mpos: Sequence[float], lo: int, hi: int) -> int | None:
+    def stands_after(
+        self,
+        mpos: Sequence[float],
+        lo: int,
+        hi: int,
+        start: Sequence[float] | None = None,
+    ) -> int | None:
         """For an idle machine at ``mpos`` that ran operations in order, at most ``[0, hi)``
         and at least ``[0, lo)``: the first operation it cannot have run, when its position
         proves it; None when it does not.
@@ -497,7 +503,9 @@ class GcodeStream:
         lines may have been lost on the wire), so it proves nothing.  Operations
         that do not move (a pen change) share the place of the move before them:
         the earliest is taken, so one is sent again rather than skipped (the way
-        back sets the pen anyway).
+        back sets the pen anyway).  ``start`` is where the machine stood when the
+        job began, when known: standing there again fits "nothing moved yet" too,
+        so a file that ends where it began (a plot back home) proves nothing there.
         """
         path = self.program.path(self._axis_order)
         count = min(len(mpos), path.coords.shape[1]) if len(path) else 0
@@ -508,7 +516,11 @@ class GcodeStream:
             # Vertices before operation ``end``: its place is the last of them.
             vertex = int(np.searchsorted(path.ops, end, side="left"))
             if vertex == 0:
-                continue  # before any move: not a place known
+                # Before any move the machine stands where the job found it.
+                if start is not None and _near(start, here, count):
+                    places.add(0)
+                    first = end if first is None else first
+                continue
             expected = path.coords[vertex - 1][:count]
             known = ~np.isnan(expected)
             if not known.any() or float(np.max(np.abs(expected[known] - here[known]))) > (
@@ -544,3 +556,11 @@ class GcodeStream:
         self.written = index
         self.next_index = self.answered = self.executed = index
         self._answered_at_last_report = index
+
+
+def _near(start: Sequence[float], here: np.ndarray, count: int) -> bool:
+    """Whether ``here`` is the place ``start`` (the axes both know, within AT_POSITION_MM)."""
+    axes = min(count, len(start))
+    return axes > 0 and all(
+        abs(float(start[i]) - float(here[i])) <= AT_POSITION_MM for i in range(axes)
+    )

@@ -41,7 +41,15 @@ from dataclasses import dataclass, field
 from typing import Generic, Protocol, TypeVar
 
 from protocol.clock import Clock
-from protocol.gcode.codec import AlarmReply, Banner, ErrorReply, Ok, Rejected, StatusReport
+from protocol.gcode.codec import (
+    FEED_HOLD,
+    AlarmReply,
+    Banner,
+    ErrorReply,
+    Ok,
+    Rejected,
+    StatusReport,
+)
 from protocol.gcode.streaming import LineStreamer
 
 T = TypeVar("T")
@@ -166,6 +174,7 @@ class LineFeeder(Generic[T]):
         clock: Clock,
         write: Callable[[bytes], None],
         write_here: Callable[[list[bytes]], None] | None = None,
+        holds_on_refusal: Callable[[T], bool] | None = None,
     ) -> None:
         self.lock = threading.RLock()
         self.streamer = streamer
@@ -175,6 +184,9 @@ class LineFeeder(Generic[T]):
         #: How :meth:`receive` writes the lines an answer let go, on the thread that read:
         #: all at once (default: one ``write`` each).
         self._write_here = write_here
+        #: Whether a refusal of this line holds the board at once (a job's line), even
+        #: when the job is not being pulled right then.
+        self._holds_on_refusal = holds_on_refusal
         #: A soft reset was sent at this time and its banner has not come yet.
         self.reset_sent_at: float | None = None
         #: Errors and alarms read here that the GUI thread has not seen yet: nothing is
@@ -292,8 +304,21 @@ class LineFeeder(Generic[T]):
                 if self.awaiting_banner():
                     verdict = STALE  # an answer from before the reset: its line is gone
                 elif isinstance(reply, ErrorReply):
-                    verdict = Answer(self.streamer.acknowledge())
+                    entry = self.streamer.acknowledge()
+                    verdict = Answer(entry)
                     self.unseen += 1
+                    judge = self._holds_on_refusal
+                    ours = entry is not None and judge is not None and judge(entry[1])
+                    if self.pulling or ours:
+                        # A job line refused mid-stream: the board goes straight on to the
+                        # lines behind it, which may draw a stroke the job never had (a pen
+                        # change in the refused line).  Held here, on the thread that read
+                        # it, not a GUI-thread turn later; the job's stop follows.
+                        self.pulling = False
+                        if self._write_here is not None:
+                            self._write_here([FEED_HOLD])
+                        else:
+                            self._write(FEED_HOLD)
                 else:
                     verdict = self.acknowledge()
             elif isinstance(reply, StatusReport):

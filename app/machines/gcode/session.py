@@ -166,7 +166,12 @@ class GcodeSession(MachineSession):
         self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
         #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
         self.feeder: LineFeeder[SentLine] = LineFeeder(
-            self.streamer, self.decoder, clock, link.write, link.write_from_tap
+            self.streamer,
+            self.decoder,
+            clock,
+            link.write,
+            link.write_from_tap,
+            holds_on_refusal=lambda sent: sent.origin in ("job", "setup", "resume"),
         )
         self.status: StatusReport | None = None
         self.errors = 0
