@@ -454,14 +454,27 @@ class Usb3Session(MachineSession):
     def _expect(self, axis: int, fresh: bool, base: int, target: int) -> None:
         """A move to ``target`` went out: the axis's reports must follow it there."""
         envelope = self._envelopes[axis]
+        name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
+        mm = count_to_mm(target - base, self.threads[axis])
+        label = f"{name} {mm:+.3f} mm, {target - base:+d} counts"
         if fresh:
             if self._reported_at[axis] is None:
                 envelope.release()  # not heard on this link yet: where it starts is not known
                 return
+            braking = envelope.legs[-1] if envelope.in_flight else None
+            if braking is not None and braking.low is not None and braking.high is not None:
+                # Sent while the axis still brakes from S; somewhere in that box: the move
+                # counts from wherever it stops, so it ends in the box shifted by its count.
+                delta = target - base
+                envelope.add_box(
+                    (braking.low[0] + min(0, delta),),
+                    (braking.high[0] + max(0, delta),),
+                    (target,),
+                    label,
+                )
+                return
             envelope.anchor((base,))
-        name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
-        mm = count_to_mm(target - base, self.threads[axis])
-        envelope.add_line((target,), f"{name} {mm:+.3f} mm, {target - base:+d} counts")
+        envelope.add_line((target,), label)
 
     def _judge_report(self, axis: int, count: int) -> bool:
         """Whether a report is where the moves sent allow; if not the unit is stopped."""
