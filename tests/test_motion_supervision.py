@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.machine import LinkState
 from app.machines.envelope import Fault
 from app.machines.motion_gate import MotionGate
 from app.machines.stage.supervision import StageSupervisor
@@ -218,6 +219,35 @@ def test_a_usb3_move_whose_direction_was_lost_is_stopped_one_report_off_its_path
     fault, _ = _stopped_within_one_report(usb3, Y, start, 1, mark)  # off the start, upward
     assert "off the path" in fault.text or "past the target" in fault.text, fault.text
     assert "(Y -0.500 mm, -3200 counts)" in fault.text
+
+
+def test_a_usb3_move_lost_in_a_silent_line_is_forgotten_once_the_unit_answers_unmoved(
+    usb3: Watched,
+) -> None:
+    """The relay's seed 16: a move sent into a dead line never ran.  Counted anyway, it
+    shifted the next targets by its length, and a healthy move was stopped as a runaway."""
+    unit = usb3.harness
+    session, firmware, model = unit.usb3_session, unit.usb3_emulator, unit.station.model
+    session.set_step_size(Y, StepSize.FULL)
+    unit.run(0.3)
+    assert session.move_relative(Y, 0.5)
+    unit.run_until(lambda: model.axes[Y].position == 0.5, timeout=10.0)
+    unit.run(0.5)
+
+    unit.loopback.set_manipulator(lambda direction, data: b"")  # the line goes dead
+    assert session.move_relative(Y, -0.25)  # never arrives
+    unit.run_until(lambda: model.link_state is LinkState.LOST, timeout=10.0)
+    unit.loopback.set_manipulator(None)
+    unit.run_until(lambda: model.link_state is LinkState.CONNECTED, timeout=10.0)
+    assert firmware.positions[Y] == 3200  # it did not move
+
+    for delta, there in ((-0.25, 1600), (0.75, 6400)):  # the job sends the move again, on
+        assert session.move_relative(Y, delta)
+        unit.run_until(lambda there=there: firmware.positions[Y] == there, timeout=10.0)
+        unit.run(0.5)
+    assert usb3.faults == [], usb3.faults
+    assert model.axes[Y].position == 1.0
+    assert not any("end switch" in m for m in usb3.messages), usb3.messages
 
 
 # --- G-code -----------------------------------------------------------------------------
