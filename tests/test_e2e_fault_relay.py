@@ -70,7 +70,21 @@ LOCK = threading.Lock()
 _REDRAW = "issue 30: G-code resume after a link fault redraws strokes (resume from proof)"
 _SILENT = "issue 30: a silent line pauses the job and nothing probes the device (silence probing)"
 _NO_SUM = "issue 30: a mangled G-code line is valid and not caught (motion supervision)"
-_USB3 = "issue 30: a corrupted, cut or repeated usb3 move runs unchecked (motion supervision)"
+_USB3 = (
+    "issue 30: a corrupted, cut or repeated usb3 move reaches the unit; the station stops it"
+    " (S;) one report after it leaves its path, but the emulator's log holds the commands,"
+    " not where the axes stopped, so the judge reads the caught move as one not in the job"
+)
+_USB3_DONE = (
+    "found by the relay: a repeated usb3 move next to a false end-switch pause, or a count"
+    " changed so that the move ends short (the job then moves it on to the target), can end"
+    " 'done' with a move not in the job (slow-mode seeds 55, 79, 103, 115, 187; 152, 164)"
+)
+_USB3_REFUSED = (
+    "found by the relay: a usb3 move the unit refuses (?;) after lost or flipped bytes leaves"
+    " the job paused 'link lost' for good while the unit answers G; (slow-mode seeds 26, 56,"
+    " 74, 80, 158, 182; 144, 150, 192)"
+)
 _RESET = "issue 30: a board that restarts loses its position; the resume draws shifted"
 _LOST = "found by the relay: a line lost or mangled on the way to GRBL: paused for good"
 _DUP = (
@@ -118,10 +132,9 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("pcb-drill", FaultKind.DUPLICATE): _DRILL,
     ("pcb-drill", FaultKind.CORRUPT): _DRILL,
     ("pcb-drill", FaultKind.SILENCE): _SILENT,
-    ("usb3", FaultKind.DROP): f"{_USB3}; {_SILENT} (lost bytes end the same way)",
-    ("usb3", FaultKind.DUPLICATE): _USB3,
-    ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_SILENT}",
-    ("usb3", FaultKind.SILENCE): _SILENT,
+    ("usb3", FaultKind.DROP): f"{_USB3}; {_USB3_REFUSED}",
+    ("usb3", FaultKind.DUPLICATE): f"{_USB3}; {_USB3_DONE}",
+    ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_USB3_DONE}; {_USB3_REFUSED}",
 }
 
 

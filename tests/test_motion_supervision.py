@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.machine import LinkState
 from app.machines.envelope import Fault
 from app.machines.motion_gate import MotionGate
 from app.machines.stage.supervision import StageSupervisor
@@ -72,7 +73,7 @@ def test_the_tolerance_comes_from_the_profile_and_nonsense_is_refused(tmp_path: 
     for bad in ("0", "-1", '"wide"', "inf"):
         path = tmp_path / "bad.toml"
         path.write_text(
-            source.replace("tolerance_mm = 0.5", f"tolerance_mm = {bad}"), encoding="utf-8"
+            source.replace("tolerance_mm = 0.01", f"tolerance_mm = {bad}"), encoding="utf-8"
         )
         with pytest.raises(ProfileError, match="tolerance_mm"):
             load_profile(path)
@@ -132,15 +133,121 @@ def test_a_usb3_count_corrupted_on_the_wire_is_stopped_one_report_past_the_toler
     assert b"S;" in b"".join(unit.written[mark:])
     unit.run_until(lambda: not firmware.moving(AxisId.X), timeout=2.0)
     ran = count_to_mm(firmware.positions[X], Thread.M6)
-    # 0.5 mm sent, 0.5 mm of tolerance, a report's travel (0.15 mm) and the braking from
+    # 0.5 mm sent, 0.01 mm of tolerance, a report's travel (0.15 mm) and the braking from
     # full speed (75 pulses of 32 counts: 0.375 mm).
-    assert 1.0 < ran < 1.0 + 0.15 + 0.4
+    assert 0.51 < ran < 0.51 + 0.15 + 0.4
     (fault,) = usb3.faults
-    assert fault.text.startswith("Machine stopped: it reported X 1.")
+    assert fault.text.startswith("Machine stopped: it reported X 0.")
     assert "past the target (X +0.500 mm, +3200 counts); expected X 0.500" in fault.text
     assert fault.text in usb3.messages
     unit.run(2.0)
     assert len(usb3.faults) == 1  # one stop, one message
+
+
+def _stopped_within_one_report(
+    usb3: Watched, axis: int, target: int, sign: int, mark: int
+) -> tuple[MotionFault, float]:
+    """The unit was stopped (``S;``) one report after the axis left the end ``target`` of its path.
+
+    Returns the fault and how far past the target (mm) the axis came to rest.
+    """
+    unit = usb3.harness
+    firmware = unit.usb3_emulator
+    unit.run_until(lambda: bool(usb3.faults), timeout=10.0)
+    assert b"S;" in b"".join(unit.written[mark:])
+    unit.run_until(lambda: not firmware.moving(AxisId(axis)), timeout=2.0)
+    past = count_to_mm((firmware.positions[axis] - target) * sign, Thread.M6)
+    # Past the tolerance (0.01 mm), by at most a report's travel at full steps (0.15 mm)
+    # and the braking from full speed (0.375 mm); a move run twice would be 0.5 mm past.
+    assert 0.01 < past < 0.01 + 0.15 + 0.4, past
+    (fault,) = usb3.faults
+    assert fault.text in usb3.messages
+    unit.run(2.0)
+    assert len(usb3.faults) == 1  # one stop, one message
+    return fault, past
+
+
+def test_a_usb3_relative_move_arriving_twice_is_stopped_one_report_past_its_target(
+    usb3: Watched,
+) -> None:
+    """The relay's seed 13: a repeated ``Y…;`` adds its count to the target again."""
+    unit = usb3.harness
+    session = unit.usb3_session
+    session.set_step_size(Y, StepSize.FULL)
+    unit.run(0.3)
+    doubled = False
+
+    def stuttering_cable(direction: Direction, data: bytes) -> bytes:
+        nonlocal doubled
+        move = b"Y000000000003200;"
+        if direction is Direction.TO_DEVICE and move in data and not doubled:
+            doubled = True
+            return data.replace(move, move + move)
+        return data
+
+    unit.loopback.set_manipulator(stuttering_cable)
+    mark = len(unit.written)
+    start = unit.usb3_emulator.positions[Y]
+    assert session.move_relative(Y, 0.5)  # 3200 counts, arriving twice
+    fault, _ = _stopped_within_one_report(usb3, Y, start + 3200, 1, mark)
+    assert doubled
+    assert "past the target (Y +0.500 mm, +3200 counts); expected Y 0.500" in fault.text
+
+
+def test_a_usb3_move_whose_direction_was_lost_is_stopped_one_report_off_its_path(
+    usb3: Watched,
+) -> None:
+    """The relay's seed 180: the ``D`` before a move is lost, the move runs the other way."""
+    unit = usb3.harness
+    session, firmware = unit.usb3_session, unit.usb3_emulator
+    session.set_step_size(Y, StepSize.FULL)
+    unit.run(0.3)
+    assert session.move_relative(Y, 1.0)
+    unit.run_until(lambda: unit.station.model.axes[Y].position == 1.0, timeout=10.0)
+    unit.run(0.5)  # at rest there
+    assert usb3.faults == []
+    start = firmware.positions[Y]
+
+    def lossy_cable(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_DEVICE:
+            return data.replace(b"D+-+;", b"")  # Y goes on in the last direction: up
+        return data
+
+    unit.loopback.set_manipulator(lossy_cable)
+    mark = len(unit.written)
+    assert session.move_relative(Y, -0.5), usb3.messages  # down 3200 counts; up 3200 runs
+    fault, _ = _stopped_within_one_report(usb3, Y, start, 1, mark)  # off the start, upward
+    assert "off the path" in fault.text or "past the target" in fault.text, fault.text
+    assert "(Y -0.500 mm, -3200 counts)" in fault.text
+
+
+def test_a_usb3_move_lost_in_a_silent_line_is_forgotten_once_the_unit_answers_unmoved(
+    usb3: Watched,
+) -> None:
+    """The relay's seed 16: a move sent into a dead line never ran.  Counted anyway, it
+    shifted the next targets by its length, and a healthy move was stopped as a runaway."""
+    unit = usb3.harness
+    session, firmware, model = unit.usb3_session, unit.usb3_emulator, unit.station.model
+    session.set_step_size(Y, StepSize.FULL)
+    unit.run(0.3)
+    assert session.move_relative(Y, 0.5)
+    unit.run_until(lambda: model.axes[Y].position == 0.5, timeout=10.0)
+    unit.run(0.5)
+
+    unit.loopback.set_manipulator(lambda direction, data: b"")  # the line goes dead
+    assert session.move_relative(Y, -0.25)  # never arrives
+    unit.run_until(lambda: model.link_state is LinkState.LOST, timeout=10.0)
+    unit.loopback.set_manipulator(None)
+    unit.run_until(lambda: model.link_state is LinkState.CONNECTED, timeout=10.0)
+    assert firmware.positions[Y] == 3200  # it did not move
+
+    for delta, there in ((-0.25, 1600), (0.75, 6400)):  # the job sends the move again, on
+        assert session.move_relative(Y, delta)
+        unit.run_until(lambda there=there: firmware.positions[Y] == there, timeout=10.0)
+        unit.run(0.5)
+    assert usb3.faults == [], usb3.faults
+    assert model.axes[Y].position == 1.0
+    assert not any("end switch" in m for m in usb3.messages), usb3.messages
 
 
 # --- G-code -----------------------------------------------------------------------------

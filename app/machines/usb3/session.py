@@ -153,6 +153,8 @@ class Usb3Session(MachineSession):
         #: After a silence: per axis, the counts the unit may stand at (from where it was to
         #: where the moves sent take it), and whether it has been asked where it stands.
         self._books: list[tuple[int, int] | None] = []
+        #: Each axis's count when the silence began (what it answers if nothing sent meanwhile ran).
+        self._before: list[int] = []
         self._recovery_asked = False
         #: Which settings reports came since the link opened (the first always counts).
         self._reported: set[str] = set()
@@ -336,6 +338,7 @@ class Usb3Session(MachineSession):
         reported and where the moves sent were taking it (it runs them out meanwhile).
         An axis not heard of since the link opened has no such place (None)."""
         self._books = []
+        self._before = [self._counts[axis] for axis in range(min(3, self.axis_count))]
         for axis in range(min(3, self.axis_count)):
             if self._reported_at[axis] is None:
                 self._books.append(None)
@@ -382,7 +385,22 @@ class Usb3Session(MachineSession):
                     + (f"…{count_to_mm(high, thread):.3f}" if high != low else "")
                     + " mm"
                 )
-        return ("its position does not match: " + ", ".join(moved)) if moved else None
+        if moved:
+            return "its position does not match: " + ", ".join(moved)
+        self._forget_moves_lost_in_silence()
+        return None
+
+    def _forget_moves_lost_in_silence(self) -> None:
+        """An axis that answers where it was last heard before the silence never got the
+        moves sent meanwhile (it would have run them in the seconds of silence): the bytes
+        were lost.  Counting them would shift every later move's target (a job sends the
+        move again), so the axis is judged from where it stands."""
+        for axis, books in enumerate(self._books):
+            if books is None or axis >= len(self._before) or self._heading[axis] is None:
+                continue
+            if self._counts[axis] == self._before[axis]:
+                self._heading[axis] = None
+                self._envelopes[axis].anchor((self._counts[axis],))
 
     # --- the wire ---------------------------------------------------------------
 
@@ -454,14 +472,27 @@ class Usb3Session(MachineSession):
     def _expect(self, axis: int, fresh: bool, base: int, target: int) -> None:
         """A move to ``target`` went out: the axis's reports must follow it there."""
         envelope = self._envelopes[axis]
+        name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
+        mm = count_to_mm(target - base, self.threads[axis])
+        label = f"{name} {mm:+.3f} mm, {target - base:+d} counts"
         if fresh:
             if self._reported_at[axis] is None:
                 envelope.release()  # not heard on this link yet: where it starts is not known
                 return
+            braking = envelope.legs[-1] if envelope.in_flight else None
+            if braking is not None and braking.low is not None and braking.high is not None:
+                # Sent while the axis still brakes from S; somewhere in that box: the move
+                # counts from wherever it stops, so it ends in the box shifted by its count.
+                delta = target - base
+                envelope.add_box(
+                    (braking.low[0] + min(0, delta),),
+                    (braking.high[0] + max(0, delta),),
+                    (target,),
+                    label,
+                )
+                return
             envelope.anchor((base,))
-        name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
-        mm = count_to_mm(target - base, self.threads[axis])
-        envelope.add_line((target,), f"{name} {mm:+.3f} mm, {target - base:+d} counts")
+        envelope.add_line((target,), label)
 
     def _judge_report(self, axis: int, count: int) -> bool:
         """Whether a report is where the moves sent allow; if not the unit is stopped."""
