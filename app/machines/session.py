@@ -397,6 +397,14 @@ class MachineSession(QObject):
 
         return False
 
+    def _jog_wanted(self, directions: Sequence[int]) -> list[int]:
+        """The held directions, one per axis (-1, 0 or 1); none at all where a jog is refused."""
+        wanted = [max(-1, min(1, int(d))) for d in directions[: self.axis_count]]
+        wanted += [0] * (self.axis_count - len(wanted))
+        if any(wanted) and self._refuse_jog():
+            return [0] * self.axis_count
+        return wanted
+
     def _refuse_jog(self) -> bool:
         """A jog is the operator's alone: refused while a job owns the machine, too."""
         reason = self.model.jog_lock_reason

@@ -383,13 +383,18 @@ class JobRunner(QObject):
         """
         if not self.needs_operator:
             return
+        self._end_keeping_checkpoint(JobState.FAILED)
+
+    def _end_keeping_checkpoint(self, state: JobState) -> None:
+        """The job ends with nothing more asked of the operator; its checkpoint stays."""
         self._driver.stopped()
         self._driver.forget()
         self._question = None
         self._choice = None
         self._operator_hold = False
+        # The resume offer first, so views reacting to the state change see it.
         self._offer_checkpoint()
-        self._set_state(JobState.FAILED)
+        self._set_state(state)
 
     def decide(self, *, again: bool) -> None:
         """The operator's answer: send the operation in question again, or count it as done."""
@@ -424,14 +429,7 @@ class JobRunner(QObject):
         session = self.station.session
         if session is not None:
             session.stop_all()
-        self._driver.stopped()
-        self._driver.forget()
-        self._question = None
-        self._choice = None
-        self._operator_hold = False
-        # The resume offer first, so views reacting to the state change see it.
-        self._offer_checkpoint()
-        self._set_state(JobState.ABORTED)
+        self._end_keeping_checkpoint(JobState.ABORTED)
         # The count the checkpoint (and the resume offer) holds: what the machine ran.
         self.message.emit(
             QCoreApplication.translate(

@@ -249,10 +249,7 @@ class DrillSession(MachineSession):
 
     def set_jog(self, directions: Sequence[int]) -> None:
         """Held arrows or pad buttons: short steps while the holding shows signs of life."""
-        wanted = [max(-1, min(1, int(d))) for d in directions[: self.axis_count]]
-        wanted += [0] * (self.axis_count - len(wanted))
-        if any(wanted) and self._refuse_jog():
-            wanted = [0] * self.axis_count
+        wanted = self._jog_wanted(directions)
         if wanted == self._jog:
             return
         self._jog = wanted

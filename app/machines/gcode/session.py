@@ -612,10 +612,7 @@ class GcodeSession(MachineSession):
         (the stop's feed hold and reset), so it stops within its deceleration.
         Neither leaves the machine in ``G91``.
         """
-        wanted = [max(-1, min(1, int(d))) for d in directions[: self.axis_count]]
-        wanted += [0] * (self.axis_count - len(wanted))
-        if any(wanted) and self._refuse_jog():
-            wanted = [0] * self.axis_count
+        wanted = self._jog_wanted(directions)
         if wanted == self._jog:
             return
         previous, self._jog = self._jog, wanted
@@ -764,17 +761,22 @@ class GcodeSession(MachineSession):
         self._report_after_silence = None
         self._restarted_in_silence = False
         # A stop under way is kept: it is carried out once the board is heard again.
-        self._jog = [0] * self.axis_count
-        self._jog_target = None
-        self._jog_cancelling = False
-        self._quiet_stop = False
-        with self.feeder.lock:
-            lost = self.feeder.clear()
+        lost = self._forget_jog_and_lines()
         return (
             QCoreApplication.translate("GcodeSession", "; {0} unanswered line(s)").format(len(lost))
             if lost
             else ""
         )
+
+    def _forget_jog_and_lines(self) -> list[SentLine]:
+        """A jog under way ends and the unanswered lines are handed back (as not run): the
+        board may have lost them, so nothing counts them until it is looked at again."""
+        self._jog = [0] * self.axis_count
+        self._jog_target = None
+        self._jog_cancelling = False
+        self._quiet_stop = False
+        with self.feeder.lock:
+            return self.feeder.clear()
 
     def _back_after_silence(self) -> None:
         """A stop asked for before or during the silence is carried out now: its hold may
@@ -844,12 +846,8 @@ class GcodeSession(MachineSession):
         self._timer.stop()
         self._reset_requested_at = None
         self._reset_sent_at = None
-        self._jog = [0] * self.axis_count
-        self._jog_target = None
-        self._jog_cancelling = False
-        self._quiet_stop = False
+        lost = self._forget_jog_and_lines()
         with self.feeder.lock:
-            lost = self.feeder.clear()
             # No reader runs until the station opens the link again (after this): a reply
             # cut by the loss is not glued to the next link's first bytes.
             self.decoder.reset()

@@ -155,10 +155,7 @@ class StageSession(MachineSession):
 
     def set_jog(self, directions: Sequence[int]) -> None:
         """The jog directions of all axes as the operator holds them right now."""
-        wanted = [max(-1, min(1, int(d))) for d in directions]
-        wanted += [0] * (self.axis_count - len(wanted))
-        if any(wanted) and self._refuse_jog():
-            wanted = [0] * self.axis_count
+        wanted = self._jog_wanted(directions)
         if wanted == self._jog:
             return
         for axis, (old, new) in enumerate(zip(self._jog, wanted, strict=True)):

@@ -226,10 +226,7 @@ class Usb3Session(MachineSession):
         return True
 
     def set_jog(self, directions: Sequence[int]) -> None:
-        wanted = [max(-1, min(1, int(d))) for d in directions][: self.axis_count]
-        wanted += [0] * (self.axis_count - len(wanted))
-        if any(wanted) and self._refuse_jog():
-            wanted = [0] * self.axis_count
+        wanted = self._jog_wanted(directions)
         if wanted == self._jog:
             return
         previous, self._jog = self._jog, wanted
