@@ -726,9 +726,12 @@ class JobRunner(QObject):
             return
         old = self._session
         if isinstance(old, MachineSession):
-            with contextlib.suppress(RuntimeError, TypeError):  # gone with its link already
-                old.motionFault.disconnect(self._on_motion_fault)
-                old.recovered.disconnect(self._on_recovered)
+            for signal, slot in (
+                (old.motionFault, self._on_motion_fault),
+                (old.recovered, self._on_recovered),
+            ):
+                with contextlib.suppress(RuntimeError, TypeError):  # gone with its link already
+                    signal.disconnect(slot)
         self._session = session
         self._driver.bind(session)
         if session is not None:
