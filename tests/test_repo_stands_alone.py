@@ -245,6 +245,8 @@ def test_stepdeck_itself_never_reads_test_material(
 # -- the scanners catch what they should, and only that ------------------------------------
 
 
+# Planted lines, not references: each is the kind of line the walk above must refuse, so this
+# test fails if the scanner stops seeing them (the walk skips this file's own examples).
 @pytest.mark.parametrize(
     "line",
     [

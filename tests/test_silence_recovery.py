@@ -315,9 +315,10 @@ def test_a_grbl_board_whose_replies_freeze_2_5_s_mid_job_does_not_pause_it(
     assert _strokes(grbl) == SQUARE[1:]  # every stroke once, in order
 
 
-def test_a_grbl_board_silent_past_the_loss_goes_on_by_itself_nothing_drawn_twice(
+def _square_paused_by_silence(
     grbl: StationHarness, tmp_path: Path
-) -> None:
+) -> tuple[JobRunner, list[str], HeldReplies]:
+    """The pen square under way, then the board's replies held until the job pauses."""
     runner = JobRunner(grbl.station, tmp_path / "checkpoints")
     messages: list[str] = []
     runner.message.connect(messages.append)
@@ -327,6 +328,13 @@ def test_a_grbl_board_silent_past_the_loss_goes_on_by_itself_nothing_drawn_twice
     relay = HeldReplies()
     grbl.loopback.set_manipulator(relay)
     grbl.run_until(lambda: runner.state is JobState.PAUSED, timeout=SILENCE_S + 1)
+    return runner, messages, relay
+
+
+def test_a_grbl_board_silent_past_the_loss_goes_on_by_itself_nothing_drawn_twice(
+    grbl: StationHarness, tmp_path: Path
+) -> None:
+    runner, messages, relay = _square_paused_by_silence(grbl, tmp_path)
     grbl.run(2.0)
     relay.holding = False  # no Resume
 
@@ -339,15 +347,7 @@ def test_a_grbl_board_silent_past_the_loss_goes_on_by_itself_nothing_drawn_twice
 def test_a_grbl_board_that_restarted_while_silent_waits_for_the_operator(
     grbl: StationHarness, tmp_path: Path
 ) -> None:
-    runner = JobRunner(grbl.station, tmp_path / "checkpoints")
-    messages: list[str] = []
-    runner.message.connect(messages.append)
-    assert runner.load(_square()) == []
-    runner.start()
-    grbl.run_until(lambda: len(_strokes(grbl)) >= 1, timeout=20)
-    relay = HeldReplies()
-    grbl.loopback.set_manipulator(relay)
-    grbl.run_until(lambda: runner.state is JobState.PAUSED, timeout=SILENCE_S + 1)
+    runner, messages, relay = _square_paused_by_silence(grbl, tmp_path)
     grbl.gcode_emulator.soft_reset()  # its reset button, while nobody heard it
     grbl.run(1.0)
     relay.holding = False

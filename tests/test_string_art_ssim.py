@@ -106,6 +106,8 @@ def test_measure_counts_only_the_board() -> None:
 
 
 def test_same_as_scikit_image_where_it_is_installed() -> None:
+    # scikit-image is only in the bench extra (not a runtime or test dependency any more):
+    # the analytic cases above always run; this cross-check runs where it is installed.
     metrics = pytest.importorskip("skimage.metrics")
     rng = np.random.default_rng(5)
     a = rng.uniform(0, 1, (64, 48))
