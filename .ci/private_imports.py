@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-PACKAGES = ("app", "widgets", "protocol", "tests")
+PACKAGES = ("app", "widgets", "protocol", "tests", "tools")
 
 
 def private_imports(path: Path) -> list[str]:
