@@ -1,4 +1,4 @@
-"""Make the README's screenshots: ``python -m tools.screenshots [name ...]``.
+"""Make the manual's screenshots: ``python -m tools.screenshots [name ...]``.
 
 Each shot is the operator window at 1280x800 over the built-in emulator on a
 manual clock (so a shot is the same every time), driven the way an operator

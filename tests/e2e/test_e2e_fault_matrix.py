@@ -19,10 +19,10 @@ runner reaches it the fault is set up, then the operator confirms:
 The cut is either *pulled* (the station's port vanishes, and reappears at the
 same path) or *silent* (the port stays, nothing passes either way; only the
 station's liveness can tell).  The station must notice (link lost, job
-paused), and once the cable is back the operator resumes as the README says:
-nothing but Resume, and for the drill's lost-receipt case the answer to the
-question the station asks, given from what the board shows (the emulator's
-own log: was the hole drilled?).  A second test answers that question both
+paused), and once the cable is back the operator resumes as the manual
+(docs/manual/jobs.md) says: nothing but Resume, and for the drill's lost-receipt
+case the answer to the question the station asks, given from what the board
+shows (the emulator's own log: was the hole drilled?).  A second test answers that question both
 ways, right and wrong, and the log follows the answer.
 
 The emulator's log is the judge: every operation ran exactly once (holes,

@@ -51,7 +51,7 @@ from tests.helpers.relay_run import DIALECTS, GRBL_SIM, RunResult, run_once
 from tests.helpers.relay_table import Row, render
 
 # The relay and the emulator sit on pseudo-terminals, which only POSIX systems have
-# (Windows: see README, "Windows and macOS"); every Linux CI run has them.
+# (Windows: see docs/manual/windows-macos.md); every Linux CI run has them.
 pytestmark = pytest.mark.skipif(not hasattr(os, "openpty"), reason="no pseudo-terminals here")
 
 RUNS = int(os.environ.get("STEPDECK_RELAY_RUNS", "20"))

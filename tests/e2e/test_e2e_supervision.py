@@ -29,7 +29,7 @@ from tests.helpers.emulator_process import device_path, start_emulator, stop
 from tests.helpers.tamper_relay import TO_DEVICE, TO_HOST, TamperRelay
 
 # The relay and the emulator sit on pseudo-terminals, which only POSIX systems have
-# (Windows: see README, "Windows and macOS"); every Linux CI run has them.
+# (Windows: see docs/manual/windows-macos.md); every Linux CI run has them.
 pytestmark = pytest.mark.skipif(not hasattr(os, "openpty"), reason="no pseudo-terminals here")
 
 STEP_TIMEOUT_MS = 20_000

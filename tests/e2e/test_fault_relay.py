@@ -19,7 +19,7 @@ from tests.helpers.fault_bridge import Direction
 from tests.helpers.fault_relay import FAULT_KINDS, Fault, FaultKind, FaultRelay, random_fault
 
 # The relay and the emulator sit on pseudo-terminals, which only POSIX systems have
-# (Windows: see README, "Windows and macOS"); every Linux CI run has them.
+# (Windows: see docs/manual/windows-macos.md); every Linux CI run has them.
 pytestmark = pytest.mark.skipif(not hasattr(os, "openpty"), reason="no pseudo-terminals here")
 
 MESSAGE = b"G1 X10 Y20\nG1 X30 Y40\nG1 X50 Y60\n"

@@ -3,7 +3,7 @@
 The relay test writes one JSON line per run when ``STEPDECK_RELAY_RESULTS``
 names a file; ``python -m tests.helpers.relay_table FILE…`` prints the table
 of every run in those files (later runs of a seed replace earlier ones), as
-the README shows it.
+docs/manual/link-faults.md shows it.
 """
 
 from __future__ import annotations

@@ -229,7 +229,7 @@ def test_no_jog_while_a_procedure_runs_is_queued_behind_it(
     assert x_steps(drill) == 0
 
 
-# --- registration by jogging, as the README's recipe says ----------------------------------
+# --- registration by jogging, as the manual's recipe says ----------------------------------
 
 EXCELLON = (
     "M48\nMETRIC\nT01C0.8\nT02C1.0\n%\nT01\nX10.0Y10.0\nX60.0Y10.0\nX30.0Y40.0\n"

@@ -2,7 +2,7 @@
 
 CAD tools write holes in whatever order their data structures hold them,
 and on a slow stepper table the travel between holes is most of a job's
-time.  Two searches, chosen by measurement (README, "Benchmarks"), share
+time.  Two searches, chosen by measurement (docs/manual/benchmarks.md), share
 the work, and neither compiles anything on the operator's machine:
 
 - up to ``path_solver.LARGEST`` holes a board (every real board we have,
