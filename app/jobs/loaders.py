@@ -60,6 +60,9 @@ class JobOptions:
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
     #: Drill files: prompt the bits smallest first instead of in the file's tool order.
     smallest_first: bool = False
+    #: Drill files: every hole with the one bit in the spindle, no bit-change prompt (the
+    #: original drill's way; a profile's ``[drill] one_bit``, FIDELITY S2-40).
+    one_bit: bool = False
     #: G-code: pen lines of another flavour are sent as the machine's own pen commands.
     translate_pen: bool = True
     #: G-code: lines the machine cannot execute become comments instead of refusing the job.
@@ -239,7 +242,9 @@ def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
     job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
     axes = (axis_names[0], axis_names[1])
     mode: DrillMode = ("cross" if options.draw_crosses else "draw") if options.draw else "drill"
-    return build_drill_program(job, mode=mode, axes=axes, smallest_first=options.smallest_first)
+    return build_drill_program(
+        job, mode=mode, axes=axes, smallest_first=options.smallest_first, one_bit=options.one_bit
+    )
 
 
 EXCELLON = register_loader(

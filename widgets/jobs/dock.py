@@ -434,6 +434,7 @@ class JobsDock(QDockWidget):
             skip_unsupported=self.skip_check.isChecked(),
             gcode=profile.gcode,
             machine_title=profile.title,
+            one_bit=profile.drill_one_bit,
             string_art=self._board,
             format=self._format,
         )
