@@ -29,7 +29,6 @@ from PySide6.QtWidgets import (
 
 from app.machines.drill.session import DrillSession
 from app.station import Station
-from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
 from widgets.panels.drill_timing import DrillTimingBox
@@ -261,12 +260,7 @@ class DrillPanel(QWidget):
     def long_move_s(self, text: str) -> float:
         """How long the X or Y move ``text`` is expected to run (0 for anything else)."""
         session = self.session
-        if session is None:
-            return 0.0
-        _used, command = decode_command(text.strip().encode("ascii", "replace") + b"\r")
-        if not isinstance(command, Command) or command.letter not in POSITION_LETTERS:
-            return 0.0
-        return session.expected_s(command)
+        return 0.0 if session is None else session.line_expected_s(text)
 
     def _send_or_ask(self, text: str) -> bool:
         seconds = self.long_move_s(text)
@@ -334,8 +328,7 @@ class DrillPanel(QWidget):
             # while a lambda would keep calling into deleted list widgets.
             session.commandReceived.connect(self._show_received_command)
             session.commandDone.connect(self._show_done_command)
-            session.frameSent.connect(self._show_sent)
-            session.frameReceived.connect(self._show_received)
+            session.terminalLine.connect(self.output.appendPlainText)
             session.commandFailed.connect(self._show_failed)
 
     def _show_received_command(self, text: str) -> None:
@@ -343,12 +336,6 @@ class DrillPanel(QWidget):
 
     def _show_done_command(self, text: str) -> None:
         _append(self.done_list, text)
-
-    def _show_sent(self, _command: object, raw: bytes) -> None:
-        self.output.appendPlainText("> " + raw.decode("ascii", "replace").rstrip("\r\n"))
-
-    def _show_received(self, _reply: object, raw: bytes) -> None:
-        self.output.appendPlainText("< " + raw.decode("ascii", "replace").rstrip("\r\n"))
 
     def _show_failed(self, text: str) -> None:
         self.output.appendPlainText(

@@ -101,6 +101,21 @@ def command_text(command: Command) -> str:
     return encode_command(command).decode("ascii").rstrip("\r")
 
 
+def wire_text(raw: bytes) -> str:
+    """Bytes on the wire as one terminal line: never raises, whatever the drill sent."""
+    return raw.decode("ascii", "replace").rstrip("\r\n")
+
+
+def parse_line(text: str) -> Command | None:
+    """A typed terminal line as the one command it spells, or None when it is none."""
+    try:
+        raw = text.strip().encode("ascii") + b"\r"
+    except UnicodeEncodeError:
+        return None
+    used, command = decode_command(raw)
+    return command if isinstance(command, Command) and used == len(raw) else None
+
+
 class DrillSession(MachineSession):
     """frameSent carries :class:`Command`, frameReceived :class:`Reply` or :class:`Rejected`."""
 
@@ -112,6 +127,9 @@ class DrillSession(MachineSession):
     commandFailed = Signal(str)
     #: The last queued command is done and nothing is waiting.
     idle = Signal()
+    #: A line for the terminal: ``> X248`` as sent, ``< RX`` as heard (the text decoded here,
+    #: so the page only shows it).
+    terminalLine = Signal(str)
 
     def __init__(
         self,
@@ -153,6 +171,8 @@ class DrillSession(MachineSession):
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.dataReceived.connect(self._on_data)
+        self.frameSent.connect(lambda _c, raw: self.terminalLine.emit("> " + wire_text(raw)))
+        self.frameReceived.connect(lambda _r, raw: self.terminalLine.emit("< " + wire_text(raw)))
 
     # --- state the widgets read ------------------------------------------------
 
@@ -461,6 +481,13 @@ class DrillSession(MachineSession):
             self._lost_to_silence(f"no reply for {now - since:.1f} s ({what}: {waited})")
         elif now >= late_at:
             self._watch_silence(now - since, 0.0, deadline - since, f"{what}: {waited}")
+
+    def line_expected_s(self, text: str) -> float:
+        """How long the X or Y move a terminal line spells should run (0 for anything else)."""
+        command = parse_line(text)
+        if command is None or command.letter not in POSITION_LETTERS:
+            return 0.0
+        return self.expected_s(command)
 
     def expected_s(self, command: Command) -> float:
         """How long ``command``'s procedure should take, by the profile's timing constants."""
