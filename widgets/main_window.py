@@ -479,6 +479,9 @@ class MainWindow(QMainWindow):
                 dock.restore_options(self._settings.job_options(self.station.profile.name))
             if self._colours is not None:
                 dock.preview.apply_colours(self._colours)
+            drill_panel = getattr(self, "drill_panel", None)
+            if isinstance(drill_panel, DrillPanel):  # the step-through walks what is drawn
+                drill_panel.step_box.follow(dock.preview)
             self._add_dock(dock, Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_action)
         return self._jobs_dock
 

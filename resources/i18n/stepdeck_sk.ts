@@ -361,6 +361,14 @@
         <translation>Ukázať časovacie konštanty vŕtačky a zmeniť ich</translation>
     </message>
     <message>
+        <source>Step through…</source>
+        <translation>Krokovanie…</translation>
+    </message>
+    <message>
+        <source>Walk the loaded job line by line and send its procedures by hand</source>
+        <translation>Prejsť načítanú úlohu riadok po riadku a posielať jej procedúry ručne</translation>
+    </message>
+    <message>
         <source>Move to (microsteps from zero)</source>
         <translation>Presunúť na (mikrokroky od nuly)</translation>
     </message>
@@ -445,12 +453,76 @@
     </message>
     <message>
         <source>{0} is at the end of its travel</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>{0} je na konci rozsahu posuvu</translation>
     </message>
     <message>
         <source>Jog ends: the end of the travel</source>
         <translation>Posuv končí: koniec rozsahu posuvu</translation>
+    </message>
+</context>
+<context>
+    <name>DrillStepBox</name>
+    <message>
+        <source>Step through the job (teaching)</source>
+        <extracomment>The stop&apos;s position (x, y) in the job&apos;s millimetres, or None: the preview rings it.</extracomment>
+        <translation>Krokovanie úlohy (výučba)</translation>
+    </message>
+    <message>
+        <source>Previous line</source>
+        <translation>Predchádzajúci riadok</translation>
+    </message>
+    <message>
+        <source>Back one line of the job&apos;s file</source>
+        <translation>O riadok späť v súbore úlohy</translation>
+    </message>
+    <message>
+        <source>Next line</source>
+        <translation>Ďalší riadok</translation>
+    </message>
+    <message>
+        <source>Read the next line of the job&apos;s file (Načti řádek)</source>
+        <translation>Načítať ďalší riadok súboru úlohy (Načti řádek)</translation>
+    </message>
+    <message>
+        <source>{0} not sent: not connected</source>
+        <translation>{0} neodoslané: nepripojené</translation>
+    </message>
+    <message>
+        <source>{0} not sent: {1}</source>
+        <translation>{0} neodoslané: {1}</translation>
+    </message>
+    <message>
+        <source>{0} sent</source>
+        <translation>{0} odoslané</translation>
+    </message>
+    <message>
+        <source>No job loaded: open an Excellon file in the Jobs dock</source>
+        <translation>Žiadna úloha: otvorte súbor Excellon v paneli Úlohy</translation>
+    </message>
+    <message>
+        <source>{0} lines: Next line reads the first</source>
+        <translation>{0} riadkov: Ďalší riadok načíta prvý</translation>
+    </message>
+    <message>
+        <source>line {0} of {1}, position {2} of {3}</source>
+        <translation>riadok {0} z {1}, poloha {2} z {3}</translation>
+    </message>
+    <message>
+        <source>line {0} of {1}</source>
+        <translation>riadok {0} z {1}</translation>
+    </message>
+    <message>
+        <source>no coordinates on this line</source>
+        <translation>na tomto riadku nie sú súradnice</translation>
+    </message>
+    <message>
+        <source>{0} {1} mm = {2} µsteps</source>
+        <translation>{0} {1} mm = {2} µkrokov</translation>
+    </message>
+    <message>
+        <source>Send {0} to the drill</source>
+        <translation>Poslať {0} vŕtačke</translation>
     </message>
 </context>
 <context>
@@ -1880,7 +1952,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>which format? {0}: {1} (choose one: {2})</source>
-        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
+        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. Drill files: every hole with the one bit in the spindle, no bit-change prompt (the original drill&apos;s way; a profile&apos;s ``[drill] one_bit``, FIDELITY S2-40). G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
         <translation>ktorý formát? {0}: {1} (vyberte jeden: {2})</translation>
     </message>
     <message>
@@ -2041,7 +2113,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
     </message>
     <message>
@@ -2070,7 +2142,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a job is under way</source>
-        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
+        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The hole the drill page&apos;s step-through stands at (FIDELITY S2-41). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
         <translation>prebieha úloha</translation>
     </message>
     <message>

@@ -31,6 +31,7 @@ from app.machines.drill.session import DrillSession
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
+from widgets.panels.drill_step import DrillStepBox
 from widgets.panels.drill_timing import DrillTimingBox
 from widgets.retranslate import Texts, bold
 from widgets.style import compact, monospace_font
@@ -115,6 +116,18 @@ class DrillPanel(QWidget):
         self.timing_toggle.toggled.connect(self.timing_box.setVisible)
         last = len(COMMAND_BUTTONS)
         row.addWidget(compact(self.timing_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
+        # VRTACKA's step-through (FIDELITY S2-41), folded away until asked for.
+        self.step_box = DrillStepBox(station)
+        self.step_box.hide()
+        self.step_toggle = t.button(
+            lambda: self.tr("Step through…"),
+            lambda: self.tr("Walk the loaded job line by line and send its procedures by hand"),
+        )
+        self.step_toggle.setObjectName("step_toggle")
+        self.step_toggle.setCheckable(True)
+        self.step_toggle.toggled.connect(self.step_box.setVisible)
+        last += 1
+        row.addWidget(compact(self.step_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
         row.setColumnStretch(COMMAND_COLUMNS, 1)
 
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
@@ -215,6 +228,7 @@ class DrillPanel(QWidget):
         layout.addWidget(commands)
         layout.addWidget(axes)
         layout.addWidget(self.timing_box)
+        layout.addWidget(self.step_box)
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 
@@ -315,6 +329,7 @@ class DrillPanel(QWidget):
             button.setEnabled(enabled)
         self.gate.set_enabled(enabled)
         self.long_move_send.setEnabled(enabled)
+        self.step_box.set_motion_enabled(enabled)
 
     # --- the session's news ----------------------------------------------------------
 
