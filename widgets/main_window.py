@@ -245,6 +245,8 @@ class MainWindow(QMainWindow):
             self.drill_panel = DrillPanel(station)
             self._restore_drill_timing()
             self.drill_panel.timing_box.applied.connect(self._remember_drill_timing)
+            remembered = self._machine_settings if self._remembers else None
+            self.drill_panel.conversion_box.remember_in(remembered)  # S2-42, per profile
             self._add_page(
                 lambda: self.tr("D&rill"),
                 self.drill_panel,

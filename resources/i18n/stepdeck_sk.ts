@@ -291,6 +291,53 @@
     </message>
 </context>
 <context>
+    <name>DrillConversionBox</name>
+    <message>
+        <source>Conversion constants (teaching)</source>
+        <translation>Prevodové konštanty (výučba)</translation>
+    </message>
+    <message>
+        <source>Excellon step, 1/… inch</source>
+        <translation>Krok Excellon, 1/… palca</translation>
+    </message>
+    <message>
+        <source>Excellon step</source>
+        <translation>Krok Excellon</translation>
+    </message>
+    <message>
+        <source>Excellon step 1/… inch</source>
+        <translation>Krok Excellon 1/… palca</translation>
+    </message>
+    <message>
+        <source>{0} microsteps a mm</source>
+        <translation>{0} mikrokrokov na mm</translation>
+    </message>
+    <message>
+        <source>Teaching only: with other values than the profile&apos;s the drill goes where these send it, not where the file means (the travel is still checked).</source>
+        <translation>Len na výučbu: s inými hodnotami než v profile ide vŕtačka tam, kam ju pošlú tieto, nie kam myslí súbor (rozsah pojazdu sa stále kontroluje).</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Read the loaded job again with these constants</source>
+        <translation>Načítať úlohu znova s týmito konštantami</translation>
+    </message>
+    <message>
+        <source>Profile values</source>
+        <translation>Hodnoty profilu</translation>
+    </message>
+    <message>
+        <source>Back to the machine profile&apos;s constants</source>
+        <translation>Späť na konštanty profilu stroja</translation>
+    </message>
+    <message>
+        <source>Not changed: {0}</source>
+        <translation>Nezmenené: {0}</translation>
+    </message>
+</context>
+<context>
     <name>DrillDriver</name>
     <message>
         <source>The hole at {0} may or may not have been drilled: the link went before the drill confirmed the command. Look at the board (the hole is marked in the preview), then drill it again or count it as drilled.</source>
@@ -367,6 +414,14 @@
     <message>
         <source>Walk the loaded job line by line and send its procedures by hand</source>
         <translation>Prejsť načítanú úlohu riadok po riadku a posielať jej procedúry ručne</translation>
+    </message>
+    <message>
+        <source>Constants…</source>
+        <translation>Konštanty…</translation>
+    </message>
+    <message>
+        <source>Show the Excellon step and microsteps a mm, to change them</source>
+        <translation>Ukázať krok Excellon a mikrokroky na mm, na zmenu</translation>
     </message>
     <message>
         <source>Move to (microsteps from zero)</source>
@@ -1952,7 +2007,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>which format? {0}: {1} (choose one: {2})</source>
-        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. Drill files: every hole with the one bit in the spindle, no bit-change prompt (the original drill&apos;s way; a profile&apos;s ``[drill] one_bit``, FIDELITY S2-40). G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
+        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. Drill files: every hole with the one bit in the spindle, no bit-change prompt (the original drill&apos;s way; a profile&apos;s ``[drill] one_bit``, FIDELITY S2-40). Drill files: what the teacher&apos;s Excellon step makes of their coordinates (its ratio to 1/10000 inch), and per axis name the ratio of the teacher&apos;s microsteps a mm to the profile&apos;s, every job&apos;s (FIDELITY S2-42). 1: the profile&apos;s constants. G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
         <translation>ktorý formát? {0}: {1} (vyberte jeden: {2})</translation>
     </message>
     <message>
@@ -1977,8 +2032,16 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>nejde o súbor úlohy, ktorý stanica pozná (neznámy typ)</translation>
     </message>
     <message>
+        <source>teaching: microsteps a mm changed, the job lands x {0} of its size</source>
+        <translation>výučba: mikrokroky na mm zmenené, úloha dopadne v {0} násobku svojej veľkosti</translation>
+    </message>
+    <message>
         <source>a drill job needs a machine with X and Y axes</source>
         <translation>vŕtacia úloha potrebuje stroj s osami X a Y</translation>
+    </message>
+    <message>
+        <source>teaching: read with an Excellon step of {0:g} inch (coordinates x {1:g})</source>
+        <translation>výučba: čítané s krokom Excellon {0:g} palca (súradnice × {1:g})</translation>
     </message>
     <message>
         <source>a folder</source>
@@ -3300,7 +3363,7 @@ sa nevykresľuje</translation>
     <name>Settings</name>
     <message>
         <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
-        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. The jobs dock&apos;s options that concern the machine: stored per profile. Every value kept per machine profile; each key here is also where a file from before kept it for every machine (read once, then moved: see ``StationSettings._migrate``). Where the per-machine values live: ``machines/&lt;profile&gt;/&lt;key&gt;``. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. The drill&apos;s conversion constants as the teacher set them (FIDELITY S2-42), kept per machine profile (``machines/&lt;profile&gt;/drill_conversion/…``); absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. The jobs dock&apos;s options that concern the machine: stored per profile. Every value kept per machine profile; each key here is also where a file from before kept it for every machine (read once, then moved: see ``StationSettings._migrate``). Where the per-machine values live: ``machines/&lt;profile&gt;/&lt;key&gt;``. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
         <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
     </message>
     <message>
@@ -3423,7 +3486,7 @@ sa nevykresľuje</translation>
     <name>Station</name>
     <message>
         <source>Stopping every axis before closing the link…</source>
-        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). The drill&apos;s timing constants changed (:meth:`set_drill_timing`): estimates are stale. Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). The drill&apos;s timing constants changed (:meth:`set_drill_timing`): estimates are stale. The drill&apos;s conversion constants changed (:meth:`set_drill_conversion`): a loaded job is read again with them. How a job&apos;s millimetres become the drill&apos;s microsteps (FIDELITY S2-42): the profile&apos;s until the teacher changes them. Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
         <translation>Pred ukončením spojenia zastavujem všetky osi…</translation>
     </message>
     <message>
@@ -3437,6 +3500,10 @@ sa nevykresľuje</translation>
     <message>
         <source>The device did not confirm the stop within {0} s; link closed anyway — check that the machine stands</source>
         <translation>Zariadenie nepotvrdilo zastavenie do {0} s; spojenie napriek tomu ukončené — skontrolujte, že stroj stojí</translation>
+    </message>
+    <message>
+        <source>Conversion constants not changed: {0}</source>
+        <translation>Prevodové konštanty nezmenené: {0}</translation>
     </message>
     <message>
         <source>reconnecting to {0}…</source>

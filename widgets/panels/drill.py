@@ -31,6 +31,7 @@ from app.machines.drill.session import DrillSession
 from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
+from widgets.panels.drill_conversion import DrillConversionBox
 from widgets.panels.drill_step import DrillStepBox
 from widgets.panels.drill_timing import DrillTimingBox
 from widgets.retranslate import Texts, bold
@@ -128,6 +129,20 @@ class DrillPanel(QWidget):
         self.step_toggle.toggled.connect(self.step_box.setVisible)
         last += 1
         row.addWidget(compact(self.step_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
+        # The conversion constants (FIDELITY S2-42), folded away until asked for.
+        self.conversion_box = DrillConversionBox(station)
+        self.conversion_box.hide()
+        self.conversion_toggle = t.button(
+            lambda: self.tr("Constants…"),
+            lambda: self.tr("Show the Excellon step and microsteps a mm, to change them"),
+        )
+        self.conversion_toggle.setObjectName("conversion_toggle")
+        self.conversion_toggle.setCheckable(True)
+        self.conversion_toggle.toggled.connect(self.conversion_box.setVisible)
+        last += 1
+        row.addWidget(
+            compact(self.conversion_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS
+        )
         row.setColumnStretch(COMMAND_COLUMNS, 1)
 
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
@@ -228,6 +243,7 @@ class DrillPanel(QWidget):
         layout.addWidget(commands)
         layout.addWidget(axes)
         layout.addWidget(self.timing_box)
+        layout.addWidget(self.conversion_box)
         layout.addWidget(self.step_box)
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)

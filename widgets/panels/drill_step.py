@@ -119,6 +119,11 @@ class DrillStepBox(QGroupBox):
         """Walk ``program``'s file from its start (None: nothing to walk)."""
         if program is self._program:
             return
+        # The same file read again (other constants, another placement): the walk stays on
+        # its line, which then shows what the new reading makes of it.
+        before = self._program.source if self._program is not None else None
+        same_file = program is not None and before is not None and program.source == before
+        index = self.walk.index if same_file else -1
         self._program = program
         self._problem = ""
         stops: list[WalkStop] = []
@@ -137,6 +142,8 @@ class DrillStepBox(QGroupBox):
             except (JobFileError, OSError) as exc:
                 self._problem = str(exc)
         self.walk = JobWalk(stops)
+        if index < len(self.walk.stops):
+            self.walk.index = index
         self._show()
 
     def follow(self, preview: JobPreview) -> None:
@@ -237,11 +244,15 @@ class DrillStepBox(QGroupBox):
         if stop.position is None:
             return self.tr("no coordinates on this line")
         parts = []
+        conversion = self._station.drill_conversion
         for axis, mm in enumerate(stop.position):
             name = self._station.profile.axes[axis].name
+            # The job's millimetre, before the teacher's microsteps a mm stretched it onto
+            # the machine (S2-42): what the file means, and what the drill is sent for it.
+            job_mm = mm / conversion.axis_scale(axis)
             parts.append(
                 self.tr("{0} {1} mm = {2} µsteps").format(
-                    name, localized(f"{mm:.3f}"), self.microsteps(axis, mm)
+                    name, localized(f"{job_mm:.3f}"), self.microsteps(axis, mm)
                 )
             )
         return "   ".join(parts)
