@@ -182,3 +182,17 @@ def test_s2_41_a_drawn_hole_is_one_stop_its_pen_letters_after_the_move(data_dir:
     )
     assert all(set(s.procedures) <= {"K", "Z"} for s in stops)
     assert len(stops) == len(read_drill_file(path).holes)
+
+
+def test_s2_41_a_long_line_is_shown_clipped_and_whole_in_its_tooltip(
+    qtbot: QtBot, drill: StationHarness, window: MainWindow, tmp_path: Path
+) -> None:
+    comment = "; " + "a very long remark " * 20
+    path = tmp_path / "long.drl"
+    path.write_text(f"M48\n{comment}\nMETRIC\nT01C0.8\n%\nT01\nX10.0Y10.0\nM30\n", encoding="utf-8")
+    box = opened(qtbot, window, path)
+    click(qtbot, box.next_button)
+    click(qtbot, box.next_button)
+    assert box.walk.current is not None and box.walk.current.line == 2
+    assert len(box.line_text.text()) <= 64 and box.line_text.text().endswith("…")
+    assert box.line_text.toolTip() == f"2: {comment}"

@@ -32,6 +32,10 @@ if TYPE_CHECKING:
     from widgets.jobs.preview import JobPreview
 
 
+#: The most characters of a file line shown (the whole line is in its tooltip).
+LINE_SHOWN = 64
+
+
 @dataclass(frozen=True)
 class Procedure:
     """One letter button: a procedure, with its position in microsteps for X and Y.
@@ -87,6 +91,7 @@ class DrillStepBox(QGroupBox):
         self.next_button.setObjectName("step_next")
         self.next_button.clicked.connect(self.next_line)
         self.where = QLabel()
+        self.where.setWordWrap(True)  # a refusal of the file names it and its line
         self.where.setObjectName("step_where")
         self.line_text = QLabel()
         self.line_text.setObjectName("step_line")
@@ -233,7 +238,10 @@ class DrillStepBox(QGroupBox):
             )
         else:
             self.where.setText(self.tr("line {0} of {1}").format(stop.line, self._line_count))
-        self.line_text.setText(f"{stop.line}: {stop.text}" if stop is not None else "")
+        shown = f"{stop.line}: {stop.text}" if stop is not None else ""
+        # A long line (a comment, a hostile file) must not widen the page past the screen.
+        self.line_text.setText(shown if len(shown) <= LINE_SHOWN else shown[: LINE_SHOWN - 1] + "…")
+        self.line_text.setToolTip(shown)
         self.coordinates.setText(self._coordinates(stop))
         self._show_procedures(stop)
         self.holeMarked.emit(stop.position if stop is not None else None)
