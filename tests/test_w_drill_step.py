@@ -57,6 +57,7 @@ def opened(qtbot: QtBot, window: MainWindow, path: Path) -> DrillStepBox:
     click(qtbot, page)
     box = window.drill_panel.step_box
     if not box.isVisible():
+        assert box.walk.stops == ()  # folded away: nothing laid out at load
         click(qtbot, window.drill_panel.step_toggle)
     assert box.isVisible()
     return box

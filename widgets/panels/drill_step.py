@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Signal
+from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import QGridLayout, QGroupBox, QHBoxLayout, QLabel, QPushButton, QWidget
 
 from app.jobs.step_through import JobWalk, WalkStop
@@ -75,6 +76,8 @@ class DrillStepBox(QGroupBox):
         self._problem = ""
         self._line_count = 0
         self._motion_enabled = True
+        self._laid_out = True
+        self._keep_index = -1
         self.procedures: list[Procedure] = []
         self.procedure_buttons: list[QPushButton] = []
         t = self.texts = Texts(self)
@@ -121,15 +124,36 @@ class DrillStepBox(QGroupBox):
     # --- the job -----------------------------------------------------------------
 
     def set_program(self, program: Program | None) -> None:
-        """Walk ``program``'s file from its start (None: nothing to walk)."""
+        """Walk ``program``'s file from its start (None: nothing to walk).
+
+        The walk is laid out when the box is shown (at once if it is): a board of
+        50 000 holes takes a third of a second, which nobody who never opens the
+        step-through should wait for at every load.
+        """
         if program is self._program:
             return
         # The same file read again (other constants, another placement): the walk stays on
         # its line, which then shows what the new reading makes of it.
         before = self._program.source if self._program is not None else None
         same_file = program is not None and before is not None and program.source == before
-        index = self.walk.index if same_file else -1
+        self._keep_index = self.walk.index if same_file else -1
         self._program = program
+        self._laid_out = False
+        self.walk = JobWalk(())
+        if self.isVisible():
+            self._lay_out()
+        else:
+            self._show()
+
+    def showEvent(self, event: QShowEvent) -> None:
+        if not self._laid_out:
+            self._lay_out()
+        super().showEvent(event)
+
+    def _lay_out(self) -> None:
+        """Read the program's file and make its stops."""
+        program = self._program
+        self._laid_out = True
         self._problem = ""
         stops: list[WalkStop] = []
         self._line_count = 0
@@ -147,8 +171,8 @@ class DrillStepBox(QGroupBox):
             except (JobFileError, OSError) as exc:
                 self._problem = str(exc)
         self.walk = JobWalk(stops)
-        if index < len(self.walk.stops):
-            self.walk.index = index
+        if self._keep_index < len(self.walk.stops):
+            self.walk.index = self._keep_index
         self._show()
 
     def follow(self, preview: JobPreview) -> None:
