@@ -520,7 +520,7 @@
     <name>DrillStepBox</name>
     <message>
         <source>Step through the job (teaching)</source>
-        <extracomment>The stop&apos;s position (x, y) in the job&apos;s millimetres, or None: the preview rings it.</extracomment>
+        <extracomment>The most characters of a file line shown (the whole line is in its tooltip). The stop&apos;s position (x, y) in the job&apos;s millimetres, or None: the preview rings it.</extracomment>
         <translation>Krokování úlohy (výuka)</translation>
     </message>
     <message>
