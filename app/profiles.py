@@ -152,6 +152,10 @@ class MachineProfile:
     #: The drill's timing constants ([timing] in the profile, FIDELITY S2-06): the
     #: emulator runs them, the estimate and the session's timeouts count with them.
     drill_timing: DrillTiming = field(default_factory=DrillTiming)
+    #: ``[drill] one_bit``: every hole of a drill file with the one bit in the spindle and no
+    #: bit-change prompt, as the original drill worked (FIDELITY S2-40); False: a prompt per
+    #: diameter, the station's deliberate deviation.
+    drill_one_bit: bool = False
     #: How far a reported position may be from the path of the moves in flight before the
     #: station stops the machine (mm, or degrees on a rotary axis).
     supervision_tolerance_mm: float = DEFAULT_SUPERVISION_TOLERANCE_MM
@@ -255,6 +259,12 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
             drill_timing = DrillTiming.from_table(_section(data, "timing", path))
         except ValueError as exc:
             raise ProfileError(f"{path}: [timing] {exc}") from exc
+    drill = _section(data, "drill", path)
+    if set(drill) - {"one_bit"}:
+        raise ProfileError(f"{path}: [drill] knows only one_bit, not {sorted(set(drill))}")
+    one_bit = drill.get("one_bit", False)
+    if not isinstance(one_bit, bool):
+        raise ProfileError(f"{path}: [drill] one_bit must be true or false")
     supervision = _section(data, "supervision", path)
     unknown = set(supervision) - {"tolerance_mm"}
     if unknown:
@@ -282,6 +292,7 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
         park=park,
         driver=driver,
         drill_timing=drill_timing,
+        drill_one_bit=one_bit,
         supervision_tolerance_mm=float(tolerance),
     )
 

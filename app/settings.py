@@ -36,6 +36,11 @@ from typing import Any, Generic, TypeVar
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QByteArray, QCoreApplication, QSettings
 
+from app.machines.drill.conversion import (
+    EXCELLON_STEP_BOUNDS,
+    MICROSTEPS_PER_MM_BOUNDS,
+    DrillConversion,
+)
 from app.profiles import DEFAULT_PROFILE, TRANSPORTS, available_profiles
 from protocol.drill.timing import INTEGER_CONSTANTS, TIMING_BOUNDS, DrillTiming
 
@@ -234,6 +239,27 @@ DRILL_TIMING: Mapping[str, Spec[float]] = {
     )
     for name, (lo, hi) in TIMING_BOUNDS.items()
 }
+#: The drill's conversion constants as the teacher set them (FIDELITY S2-42), kept per
+#: machine profile (``machines/<profile>/drill_conversion/…``); absent: the profile's.
+EXCELLON_STEP = Spec(
+    "drill_conversion/excellon_step_inch",
+    math.nan,
+    f"a number within {EXCELLON_STEP_BOUNDS[0]:g}…{EXCELLON_STEP_BOUNDS[1]:g} (inch)",
+    _bounded(*EXCELLON_STEP_BOUNDS, False),
+)
+
+
+def microsteps_per_mm_spec(axis: str) -> Spec[float]:
+    """The teacher's microsteps a millimetre of ``axis`` (kept per machine profile)."""
+    low, high = MICROSTEPS_PER_MM_BOUNDS
+    return Spec(
+        f"drill_conversion/microsteps_per_mm_{machine_scope(axis)}",
+        math.nan,
+        f"a number within {low:g}…{high:g}",
+        _bounded(low, high, False),
+    )
+
+
 #: What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous.
 JOG_STEPS = (0.0, 0.1, 1.0, 10.0)
 JOG_STEP = Spec("jog/key_step", 0.0, "one of 0 (continuous), 0.1, 1, 10", _number_choice(JOG_STEPS))
@@ -596,6 +622,38 @@ class MachineSettings:
     @jog_step.setter
     def jog_step(self, value: float) -> None:
         self._write(JOG_STEP, float(value))
+
+    def drill_conversion(self, base: DrillConversion, axes: tuple[str, ...]) -> DrillConversion:
+        """``base`` (the profile's) with the constants the teacher set and this machine kept."""
+        step = self._read(EXCELLON_STEP)
+        per_mm = tuple(
+            self._read(microsteps_per_mm_spec(name)) for name in axes[: len(base.microsteps_per_mm)]
+        )
+        try:
+            return dataclasses.replace(
+                base,
+                excellon_step_inch=base.excellon_step_inch if math.isnan(step) else step,
+                microsteps_per_mm=tuple(
+                    kept if value is None or math.isnan(value) else value
+                    for value, kept in zip(per_mm, base.microsteps_per_mm, strict=False)
+                )
+                + base.microsteps_per_mm[len(per_mm) :],
+            )
+        except ValueError:  # each is in bounds, so only a future cross-check could refuse
+            return base
+
+    def set_drill_conversion(
+        self, conversion: DrillConversion | None, axes: tuple[str, ...]
+    ) -> None:
+        """Keep ``conversion``'s constants for this machine; None: forget them (the profile's)."""
+        specs = [EXCELLON_STEP, *(microsteps_per_mm_spec(name) for name in axes)]
+        if conversion is None:
+            for spec in specs:
+                self.settings.store.remove(machine_spec(spec, self.profile).key)
+            return
+        self._write(EXCELLON_STEP, conversion.excellon_step_inch)
+        for name, value in zip(axes, conversion.microsteps_per_mm, strict=False):
+            self._write(microsteps_per_mm_spec(name), value)
 
 
 def _shown(value: object) -> str:

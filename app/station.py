@@ -33,6 +33,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 from app.discovery import ble_uuids_for
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.drill.conversion import DrillConversion
 from app.machines.drill.session import DrillSession
 from app.machines.gcode.session import GcodeSession
 from app.machines.registry import dialect_for
@@ -79,6 +80,9 @@ class Station(QObject):
     linkClosed = Signal()
     #: The drill's timing constants changed (:meth:`set_drill_timing`): estimates are stale.
     drillTimingChanged = Signal()
+    #: The drill's conversion constants changed (:meth:`set_drill_conversion`): a loaded job
+    #: is read again with them.
+    drillConversionChanged = Signal()
 
     def __init__(
         self,
@@ -98,6 +102,9 @@ class Station(QObject):
         self.session: MachineSession | None = None
         self.emulator: EmulatedDevice | None = None
         self.period_ms = profile.period_ms
+        #: How a job's millimetres become the drill's microsteps (FIDELITY S2-42): the
+        #: profile's until the teacher changes them.
+        self.drill_conversion = DrillConversion.of_profile(profile.axes)
         self.reconnect_delays: tuple[float, ...] = RECONNECT_DELAYS
         self._attempt = 0
         self._reconnect_at: float | None = None
@@ -374,6 +381,26 @@ class Station(QObject):
         if drill is not None:
             drill.set_timing(timing)
         self.drillTimingChanged.emit()
+
+    def set_drill_conversion(self, conversion: DrillConversion) -> bool:
+        """The conversion constants from now on, unless a job is under way (then False).
+
+        A job under way was checked against the travel and timed with the
+        constants it was loaded with: changed under it, its remaining holes
+        would go where nothing checked them.
+        """
+        busy = self.model.jog_lock_reason
+        if busy is not None:
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "Station", "Conversion constants not changed: {0}"
+                ).format(busy)
+            )
+            return False
+        if conversion != self.drill_conversion:
+            self.drill_conversion = conversion
+            self.drillConversionChanged.emit()
+        return True
 
     def set_period_ms(self, period_ms: int) -> None:
         self.period_ms = period_ms

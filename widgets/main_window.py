@@ -245,6 +245,8 @@ class MainWindow(QMainWindow):
             self.drill_panel = DrillPanel(station)
             self._restore_drill_timing()
             self.drill_panel.timing_box.applied.connect(self._remember_drill_timing)
+            remembered = self._machine_settings if self._remembers else None
+            self.drill_panel.conversion_box.remember_in(remembered)  # S2-42, per profile
             self._add_page(
                 lambda: self.tr("D&rill"),
                 self.drill_panel,
@@ -479,6 +481,9 @@ class MainWindow(QMainWindow):
                 dock.restore_options(self._settings.job_options(self.station.profile.name))
             if self._colours is not None:
                 dock.preview.apply_colours(self._colours)
+            drill_panel = getattr(self, "drill_panel", None)
+            if isinstance(drill_panel, DrillPanel):  # the step-through walks what is drawn
+                drill_panel.step_box.follow(dock.preview)
             self._add_dock(dock, Qt.DockWidgetArea.RightDockWidgetArea, self.jobs_action)
         return self._jobs_dock
 

@@ -177,6 +177,7 @@ def main(argv: Sequence[str], out: TextIO | None = None, err: TextIO | None = No
         skip_unsupported=args.skip_unsupported,
         gcode=profile.gcode,
         machine_title=profile.title,
+        one_bit=profile.drill_one_bit,
         string_art=board,
         format=args.format,
     )

@@ -46,6 +46,7 @@ from app.jobs.formats.string_art.reader import (
 )
 from app.jobs.program import JobFileError, Program
 from app.jobs.reading import read_job_head
+from app.jobs.scaling import scaled
 from app.profiles import GcodeSettings
 
 __all__ = ["sniff_point_list"]
@@ -60,6 +61,14 @@ class JobOptions:
     excellon_step_inch: float = 1e-4  # drill files with bare integer coordinates
     #: Drill files: prompt the bits smallest first instead of in the file's tool order.
     smallest_first: bool = False
+    #: Drill files: every hole with the one bit in the spindle, no bit-change prompt (the
+    #: original drill's way; a profile's ``[drill] one_bit``, FIDELITY S2-40).
+    one_bit: bool = False
+    #: Drill files: what the teacher's Excellon step makes of their coordinates (its ratio to
+    #: 1/10000 inch), and per axis name the ratio of the teacher's microsteps a mm to the
+    #: profile's, every job's (FIDELITY S2-42).  1: the profile's constants.
+    excellon_scale: float = 1.0
+    axis_scale: tuple[tuple[str, float], ...] = ()
     #: G-code: pen lines of another flavour are sent as the machine's own pen commands.
     translate_pen: bool = True
     #: G-code: lines the machine cannot execute become comments instead of refusing the job.
@@ -195,7 +204,14 @@ def loader_for(path: Path) -> JobLoader:
 def load_job(path: Path, axis_names: Sequence[str], options: JobOptions | None = None) -> Program:
     """Read any known job file for a machine with ``axis_names``; JobFileError says why not."""
     options = options or JobOptions()
-    return type_for(path, options.format).load(path, axis_names, options)
+    program = type_for(path, options.format).load(path, axis_names, options)
+    factors = dict(options.axis_scale)
+    if all(factor == 1.0 for factor in factors.values()):
+        return program
+    note = QCoreApplication.translate(
+        "JobFile", "teaching: microsteps a mm changed, the job lands x {0} of its size"
+    ).format(", ".join(f"{name} {factor:.4g}" for name, factor in factors.items()))
+    return scaled(program, factors, note)
 
 
 def file_dialog_filter() -> str:
@@ -239,7 +255,14 @@ def load_drill_job(path: Path, axis_names: Sequence[str], options: JobOptions) -
     job = read_drill_file(path, excellon_step_inch=options.excellon_step_inch)
     axes = (axis_names[0], axis_names[1])
     mode: DrillMode = ("cross" if options.draw_crosses else "draw") if options.draw else "drill"
-    return build_drill_program(job, mode=mode, axes=axes, smallest_first=options.smallest_first)
+    program = build_drill_program(
+        job, mode=mode, axes=axes, smallest_first=options.smallest_first, one_bit=options.one_bit
+    )
+    scale = options.excellon_scale
+    note = QCoreApplication.translate(
+        "JobFile", "teaching: read with an Excellon step of {0:g} inch (coordinates x {1:g})"
+    ).format(scale * 1e-4, scale)
+    return scaled(program, {axes[0]: scale, axes[1]: scale}, note)
 
 
 EXCELLON = register_loader(

@@ -106,7 +106,12 @@ def run_job(
     names = [axis.name for axis in profile.axes]
     try:
         program = load_job(
-            path, names, options or JobOptions(gcode=profile.gcode, machine_title=profile.title)
+            path,
+            names,
+            options
+            or JobOptions(
+                gcode=profile.gcode, machine_title=profile.title, one_bit=profile.drill_one_bit
+            ),
         )
     except (JobFileError, OSError) as exc:
         raise JobRefused(str(exc)) from None

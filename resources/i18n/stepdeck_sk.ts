@@ -291,6 +291,53 @@
     </message>
 </context>
 <context>
+    <name>DrillConversionBox</name>
+    <message>
+        <source>Conversion constants (teaching)</source>
+        <translation>Prevodové konštanty (výučba)</translation>
+    </message>
+    <message>
+        <source>Excellon step, 1/… inch</source>
+        <translation>Krok Excellon, 1/… palca</translation>
+    </message>
+    <message>
+        <source>Excellon step</source>
+        <translation>Krok Excellon</translation>
+    </message>
+    <message>
+        <source>Excellon step 1/… inch</source>
+        <translation>Krok Excellon 1/… palca</translation>
+    </message>
+    <message>
+        <source>{0} microsteps a mm</source>
+        <translation>{0} mikrokrokov na mm</translation>
+    </message>
+    <message>
+        <source>Teaching only: with other values than the profile&apos;s the drill goes where these send it, not where the file means (the travel is still checked).</source>
+        <translation>Len na výučbu: s inými hodnotami než v profile ide vŕtačka tam, kam ju pošlú tieto, nie kam myslí súbor (rozsah pojazdu sa stále kontroluje).</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Read the loaded job again with these constants</source>
+        <translation>Načítať úlohu znova s týmito konštantami</translation>
+    </message>
+    <message>
+        <source>Profile values</source>
+        <translation>Hodnoty profilu</translation>
+    </message>
+    <message>
+        <source>Back to the machine profile&apos;s constants</source>
+        <translation>Späť na konštanty profilu stroja</translation>
+    </message>
+    <message>
+        <source>Not changed: {0}</source>
+        <translation>Nezmenené: {0}</translation>
+    </message>
+</context>
+<context>
     <name>DrillDriver</name>
     <message>
         <source>The hole at {0} may or may not have been drilled: the link went before the drill confirmed the command. Look at the board (the hole is marked in the preview), then drill it again or count it as drilled.</source>
@@ -359,6 +406,22 @@
     <message>
         <source>Show the drill&apos;s timing constants, to change them</source>
         <translation>Ukázať časovacie konštanty vŕtačky a zmeniť ich</translation>
+    </message>
+    <message>
+        <source>Step through…</source>
+        <translation>Krokovanie…</translation>
+    </message>
+    <message>
+        <source>Walk the loaded job line by line and send its procedures by hand</source>
+        <translation>Prejsť načítanú úlohu riadok po riadku a posielať jej procedúry ručne</translation>
+    </message>
+    <message>
+        <source>Constants…</source>
+        <translation>Konštanty…</translation>
+    </message>
+    <message>
+        <source>Show the Excellon step and microsteps a mm, to change them</source>
+        <translation>Ukázať krok Excellon a mikrokroky na mm, na zmenu</translation>
     </message>
     <message>
         <source>Move to (microsteps from zero)</source>
@@ -445,12 +508,76 @@
     </message>
     <message>
         <source>{0} is at the end of its travel</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>{0} je na konci rozsahu posuvu</translation>
     </message>
     <message>
         <source>Jog ends: the end of the travel</source>
         <translation>Posuv končí: koniec rozsahu posuvu</translation>
+    </message>
+</context>
+<context>
+    <name>DrillStepBox</name>
+    <message>
+        <source>Step through the job (teaching)</source>
+        <extracomment>The most characters of a file line shown (the whole line is in its tooltip). The stop&apos;s position (x, y) in the job&apos;s millimetres, or None: the preview rings it.</extracomment>
+        <translation>Krokovanie úlohy (výučba)</translation>
+    </message>
+    <message>
+        <source>Previous line</source>
+        <translation>Predchádzajúci riadok</translation>
+    </message>
+    <message>
+        <source>Back one line of the job&apos;s file</source>
+        <translation>O riadok späť v súbore úlohy</translation>
+    </message>
+    <message>
+        <source>Next line</source>
+        <translation>Ďalší riadok</translation>
+    </message>
+    <message>
+        <source>Read the next line of the job&apos;s file (Načti řádek)</source>
+        <translation>Načítať ďalší riadok súboru úlohy (Načti řádek)</translation>
+    </message>
+    <message>
+        <source>{0} not sent: not connected</source>
+        <translation>{0} neodoslané: nepripojené</translation>
+    </message>
+    <message>
+        <source>{0} not sent: {1}</source>
+        <translation>{0} neodoslané: {1}</translation>
+    </message>
+    <message>
+        <source>{0} sent</source>
+        <translation>{0} odoslané</translation>
+    </message>
+    <message>
+        <source>No job loaded: open an Excellon file in the Jobs dock</source>
+        <translation>Žiadna úloha: otvorte súbor Excellon v paneli Úlohy</translation>
+    </message>
+    <message>
+        <source>{0} lines: Next line reads the first</source>
+        <translation>{0} riadkov: Ďalší riadok načíta prvý</translation>
+    </message>
+    <message>
+        <source>line {0} of {1}, position {2} of {3}</source>
+        <translation>riadok {0} z {1}, poloha {2} z {3}</translation>
+    </message>
+    <message>
+        <source>line {0} of {1}</source>
+        <translation>riadok {0} z {1}</translation>
+    </message>
+    <message>
+        <source>no coordinates on this line</source>
+        <translation>na tomto riadku nie sú súradnice</translation>
+    </message>
+    <message>
+        <source>{0} {1} mm = {2} µsteps</source>
+        <translation>{0} {1} mm = {2} µkrokov</translation>
+    </message>
+    <message>
+        <source>Send {0} to the drill</source>
+        <translation>Poslať {0} vŕtačke</translation>
     </message>
 </context>
 <context>
@@ -1880,7 +2007,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>which format? {0}: {1} (choose one: {2})</source>
-        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
+        <extracomment>Drill files: prompt the bits smallest first instead of in the file&apos;s tool order. Drill files: every hole with the one bit in the spindle, no bit-change prompt (the original drill&apos;s way; a profile&apos;s ``[drill] one_bit``, FIDELITY S2-40). Drill files: what the teacher&apos;s Excellon step makes of their coordinates (its ratio to 1/10000 inch), and per axis name the ratio of the teacher&apos;s microsteps a mm to the profile&apos;s, every job&apos;s (FIDELITY S2-42). 1: the profile&apos;s constants. G-code: pen lines of another flavour are sent as the machine&apos;s own pen commands. G-code: lines the machine cannot execute become comments instead of refusing the job. G-code: the machine&apos;s repertoire and pen conventions (None: a GRBL board). G-code: the machine&apos;s name in refusals (&quot;the CoreXY pen plotter cannot execute M18&quot;). String-art nail lists without a param.txt: the board the operator gave (NeedsNailCount). The job type&apos;s key when the operator chose it (an ambiguous file); None: detected. Reads ``path`` for a machine with these axis names; raises JobFileError with file:line. Whether the first few kilobytes of a file look like this loader&apos;s job type. The short name ``--format`` takes and a chosen format is stored as.</extracomment>
         <translation>ktorý formát? {0}: {1} (vyberte jeden: {2})</translation>
     </message>
     <message>
@@ -1905,8 +2032,16 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>nejde o súbor úlohy, ktorý stanica pozná (neznámy typ)</translation>
     </message>
     <message>
+        <source>teaching: microsteps a mm changed, the job lands x {0} of its size</source>
+        <translation>výučba: mikrokroky na mm zmenené, úloha dopadne v {0} násobku svojej veľkosti</translation>
+    </message>
+    <message>
         <source>a drill job needs a machine with X and Y axes</source>
         <translation>vŕtacia úloha potrebuje stroj s osami X a Y</translation>
+    </message>
+    <message>
+        <source>teaching: read with an Excellon step of {0:g} inch (coordinates x {1:g})</source>
+        <translation>výučba: čítané s krokom Excellon {0:g} palca (súradnice × {1:g})</translation>
     </message>
     <message>
         <source>a folder</source>
@@ -2041,7 +2176,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
     </message>
     <message>
@@ -2070,7 +2205,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a job is under way</source>
-        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
+        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The hole the drill page&apos;s step-through stands at (FIDELITY S2-41). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
         <translation>prebieha úloha</translation>
     </message>
     <message>
@@ -3228,7 +3363,7 @@ sa nevykresľuje</translation>
     <name>Settings</name>
     <message>
         <source>Setting {0} in {1} was {2}; it should be {3}, so the default is used</source>
-        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. The jobs dock&apos;s options that concern the machine: stored per profile. Every value kept per machine profile; each key here is also where a file from before kept it for every machine (read once, then moved: see ``StationSettings._migrate``). Where the per-machine values live: ``machines/&lt;profile&gt;/&lt;key&gt;``. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
+        <extracomment>Baud rates a serial port can be asked for (pyserial&apos;s own bounds on Linux). The stage&apos;s command frame period, as ``--period`` and the profiles allow it. Window geometry and dock layout blobs are a few hundred bytes; more is not ours. Suffix of the copy kept of a settings file Qt could not read. What the value must be, in words for the warning (&quot;an integer within 20…1000&quot;). The stored value as a ``T``; raises :class:`BadValue` for anything else. The page shown; the window has fewer, and checks the index again against its own count. Excellon steps the jobs dock offers, in inches. The jobs dock&apos;s reading options, by option name. The drill&apos;s timing constants as the operator set them in the station (FIDELITY S2-06), by constant name; absent: the profile&apos;s. The drill&apos;s conversion constants as the teacher set them (FIDELITY S2-42), kept per machine profile (``machines/&lt;profile&gt;/drill_conversion/…``); absent: the profile&apos;s. What one tap of an arrow key moves (mm, or degrees on a rotary axis); 0: held, continuous. How many job files File → Recent jobs lists. The job files opened last, newest first (&quot;&quot; where there is none). The window&apos;s colours: as the desktop says, or always light or dark. The language: the system locale&apos;s (English where it is none of these) or a fixed one. The jobs dock&apos;s options that concern the machine: stored per profile. Every value kept per machine profile; each key here is also where a file from before kept it for every machine (read once, then moved: see ``StationSettings._migrate``). Where the per-machine values live: ``machines/&lt;profile&gt;/&lt;key&gt;``. Every key, for the tests (and for anyone wondering what the file may hold). The warnings, translated when they are taken (see StationSettings.take_warnings).</extracomment>
         <translation>Nastavenie {0} v súbore {1} malo hodnotu {2}; má byť {3}, preto sa použije predvolená hodnota</translation>
     </message>
     <message>
@@ -3351,7 +3486,7 @@ sa nevykresľuje</translation>
     <name>Station</name>
     <message>
         <source>Stopping every axis before closing the link…</source>
-        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). The drill&apos;s timing constants changed (:meth:`set_drill_timing`): estimates are stale. Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
+        <extracomment>The longest Disconnect or closing the window waits for the device to confirm the stop: the stage brakes from its default 10 mm/s at 20 mm/s² in 0.5 s, and says so in its next echo; a G-code board&apos;s hold takes about as long. How often the wait looks at the device&apos;s reports (in real time). A link was closed on the operator&apos;s word (after the stop, when one was awaited). The drill&apos;s timing constants changed (:meth:`set_drill_timing`): estimates are stale. The drill&apos;s conversion constants changed (:meth:`set_drill_conversion`): a loaded job is read again with them. How a job&apos;s millimetres become the drill&apos;s microsteps (FIDELITY S2-42): the profile&apos;s until the teacher changes them. Station-clock time by which the device must have confirmed the stop, while waiting.</extracomment>
         <translation>Pred ukončením spojenia zastavujem všetky osi…</translation>
     </message>
     <message>
@@ -3365,6 +3500,10 @@ sa nevykresľuje</translation>
     <message>
         <source>The device did not confirm the stop within {0} s; link closed anyway — check that the machine stands</source>
         <translation>Zariadenie nepotvrdilo zastavenie do {0} s; spojenie napriek tomu ukončené — skontrolujte, že stroj stojí</translation>
+    </message>
+    <message>
+        <source>Conversion constants not changed: {0}</source>
+        <translation>Prevodové konštanty nezmenené: {0}</translation>
     </message>
     <message>
         <source>reconnecting to {0}…</source>

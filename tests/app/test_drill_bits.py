@@ -109,3 +109,42 @@ def test_the_sample_board_smallest_first_drills_the_same_holes(data_dir: Path) -
     assert drilled_lines(small) == drilled_lines(plain)
     sizes = [float(m.split(", ")[1].split()[0]) for m in waits(small)]
     assert sizes == sorted(sizes) and len(sizes) >= 2
+
+
+def test_s2_40_one_bit_for_all_holes_drills_every_hole_without_a_prompt() -> None:
+    """FIDELITY S2-40: the original drilled with one bit, "nepocita s vymenou vrtaku"."""
+    job = job_of([("T01", 1.0, 3), ("T02", 0.8, 4), ("T03", 0.8, 2), ("T04", 0.0, 2)])
+    program = build_drill_program(job, one_bit=True)
+    assert waits(program) == []
+    # Every hole once, duplicates and the tool without a diameter too: one bit drills all.
+    assert drilled_lines(program) == Counter(h.source.line for h in job.holes)
+    assert set(drilled_lines(program).values()) == {1}
+    assert not any("like T02" in n or "no diameter" in n for n in program.notes)
+    # Drawn, no pen prompt either.
+    assert waits(build_drill_program(job, mode="draw", one_bit=True)) == []
+
+
+def test_s2_40_a_profiles_drill_one_bit_reaches_the_loaded_job(
+    tmp_path: Path, data_dir: Path
+) -> None:
+    from app.jobs.loaders import JobOptions, load_job
+    from app.profiles import MACHINES_DIR, ProfileError, load_profile
+
+    shipped = (MACHINES_DIR / "pcb-drill.toml").read_text(encoding="utf-8")
+    one_bit = tmp_path / "one-bit-drill.toml"
+    one_bit.write_text(shipped + "\n[drill]\none_bit = true\n", encoding="utf-8")
+    assert not load_profile("pcb-drill").drill_one_bit  # the station's prompts by default
+    profile = load_profile(one_bit)
+    assert profile.drill_one_bit
+    board = data_dir / "samples" / "pcb-driver" / "driver"
+    program = load_job(board, ["X", "Y"], JobOptions(one_bit=profile.drill_one_bit))
+    assert waits(program) == []
+    assert len(waits(load_job(board, ["X", "Y"], JobOptions()))) > 1
+    bad = tmp_path / "bad.toml"
+    bad.write_text(shipped + "\n[drill]\none_bit = 1\n", encoding="utf-8")
+    try:
+        load_profile(bad)
+    except ProfileError as exc:
+        assert "one_bit must be true or false" in str(exc)
+    else:
+        raise AssertionError("a one_bit that is no truth value was taken")

@@ -265,3 +265,31 @@ def test_a_long_procedure_is_waited_for_and_a_missing_receipt_is_a_silent_link(
     assert silences == []
     drill.run(0.3)
     assert silences == [None]
+
+
+def test_the_session_gives_the_terminal_its_lines_decoded_garbage_included(
+    drill: StationHarness,
+) -> None:
+    """Issue 35: the drill's text is read in the session; the page only shows the lines."""
+    session = drill.drill_session
+    lines: list[str] = []
+    session.terminalLine.connect(lines.append)
+
+    def add_garbage(direction: Direction, data: bytes) -> bytes:
+        return data + b"\xff\xfeQ\r\n" if direction is Direction.TO_HOST else data
+
+    assert session.send_line("X100")
+    drill.loopback.set_manipulator(add_garbage)
+    wait_idle(drill)
+    drill.loopback.set_manipulator(None)
+    assert lines[0] == "> X100"
+    assert "< RX" in lines and "< DX" in lines
+    assert "< \ufffd\ufffdQ" in lines  # undecodable bytes shown, never raised on
+
+
+def test_a_typed_lines_expected_time_is_read_by_the_session(drill: StationHarness) -> None:
+    session = drill.drill_session
+    period = drill.station.profile.drill_timing.step_periods["X"]
+    assert session.line_expected_s(" X1000 ") == pytest.approx(1000 * period)
+    for not_a_move in ("N", "V", "hello", "X", "é", "X1000\rV"):
+        assert session.line_expected_s(not_a_move) == 0.0

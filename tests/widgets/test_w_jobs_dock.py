@@ -534,3 +534,22 @@ def test_the_bottom_side_loads_the_job_mirrored_about_its_extent_and_back(
         qtbot.waitUntil(lambda: dock.registration.isEnabled())
     finally:
         drill.close()
+
+
+def test_a_drill_file_on_the_winder_is_refused_at_load_naming_file_and_reason(
+    qtbot: QtBot, tmp_path: Path, data_dir: Path
+) -> None:
+    """The winder drills with its own Z moves: a drill file once loaded and failed at run time."""
+    winder = StationHarness(load_profile("string-art"))
+    try:
+        runner = JobRunner(winder.station, tmp_path / "checkpoints")
+        dock = JobsDock(winder.station, runner)
+        qtbot.addWidget(dock)
+        drill_file = data_dir / "realdata/excellon/tracespace_kicad_mchck.drl"
+        assert dock.open_path(drill_file) is False
+        assert runner.program is None
+        said = messages(dock)
+        assert "tracespace_kicad_mchck.drl:" in said
+        assert "G-code has no drill cycle" in said
+    finally:
+        winder.close()

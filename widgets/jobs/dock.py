@@ -331,6 +331,8 @@ class JobsDock(QDockWidget):
         self.draw_check.toggled.connect(self._options_changed)
         # The drill's timing constants changed (S2-06): the open file is estimated anew.
         self.station.drillTimingChanged.connect(self._options_changed)
+        # The drill's conversion constants changed (S2-42): the open file is read anew.
+        self.station.drillConversionChanged.connect(self._options_changed)
         self.crosses_check.toggled.connect(self._options_changed)
         self.smallest_check.toggled.connect(self._options_changed)
         self.step_combo.activated.connect(self._options_changed)
@@ -434,6 +436,12 @@ class JobsDock(QDockWidget):
             skip_unsupported=self.skip_check.isChecked(),
             gcode=profile.gcode,
             machine_title=profile.title,
+            one_bit=profile.drill_one_bit,
+            excellon_scale=self.station.drill_conversion.excellon_scale,
+            axis_scale=tuple(
+                (axis.name, self.station.drill_conversion.axis_scale(index))
+                for index, axis in enumerate(profile.axes)
+            ),
             string_art=self._board,
             format=self._format,
         )

@@ -471,6 +471,8 @@ class JobPreview(QWidget):
     #: A hole clicked while picking a reference: the reference (0-based) and the hole's
     #: index among the job's holes in drilling order (the registration row's numbering).
     holePicked = Signal(int, int)
+    #: The program now drawn (None: cleared), refused ones too: the drill page walks it.
+    programShown = Signal(object)
 
     def __init__(
         self,
@@ -643,6 +645,12 @@ class JobPreview(QWidget):
         )
         self.question_marker.setZValue(11)
         self.plot.addItem(self.question_marker)
+        #: The hole the drill page's step-through stands at (FIDELITY S2-41).
+        self.step_marker = pg.ScatterPlotItem(
+            size=18, symbol="s", pen=pg.mkPen(QUESTION_COLOUR, width=2), brush=None
+        )
+        self.step_marker.setZValue(11)
+        self.plot.addItem(self.step_marker)
         #: The segments of lines sent but not proven run, for the operator's resume pick.
         self.candidate_curve = self._curve(pg.mkPen(QUESTION_COLOUR, width=3))
         self.candidate_curve.setZValue(9)
@@ -673,6 +681,16 @@ class JobPreview(QWidget):
             self.question_marker.setData(x=_EMPTY, y=_EMPTY)
         else:
             self.question_marker.setData(x=[where[0]], y=[where[1]])
+
+    def mark_step(self, position: object) -> None:
+        """Square the step-through's stop at ``position`` ((x, y) in mm; None clears)."""
+        if isinstance(position, tuple) and len(position) == 2:
+            x, y = float(position[0]), float(position[1])
+            if self.polar is not None:
+                x, y = self.polar.project(x, y)
+            self.step_marker.setData(x=[x], y=[y])
+        else:
+            self.step_marker.setData(x=_EMPTY, y=_EMPTY)
 
     def mark_candidates(self, first: int | None, last: int = 0) -> None:
         """Highlight the path of operations ``first … last - 1`` (None clears): the lines
@@ -779,6 +797,7 @@ class JobPreview(QWidget):
         self._draw_done()
         self.fit()
         self.build_seconds = time.perf_counter() - start
+        self.programShown.emit(program)
 
     def set_done(self, done: int) -> None:
         """Operations ``0 … done - 1`` are done (throttled redraw)."""

@@ -29,9 +29,10 @@ from PySide6.QtWidgets import (
 
 from app.machines.drill.session import DrillSession
 from app.station import Station
-from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
+from widgets.panels.drill_conversion import DrillConversionBox
+from widgets.panels.drill_step import DrillStepBox
 from widgets.panels.drill_timing import DrillTimingBox
 from widgets.retranslate import Texts, bold
 from widgets.style import compact, monospace_font
@@ -116,6 +117,32 @@ class DrillPanel(QWidget):
         self.timing_toggle.toggled.connect(self.timing_box.setVisible)
         last = len(COMMAND_BUTTONS)
         row.addWidget(compact(self.timing_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
+        # VRTACKA's step-through (FIDELITY S2-41), folded away until asked for.
+        self.step_box = DrillStepBox(station)
+        self.step_box.hide()
+        self.step_toggle = t.button(
+            lambda: self.tr("Step through…"),
+            lambda: self.tr("Walk the loaded job line by line and send its procedures by hand"),
+        )
+        self.step_toggle.setObjectName("step_toggle")
+        self.step_toggle.setCheckable(True)
+        self.step_toggle.toggled.connect(self.step_box.setVisible)
+        last += 1
+        row.addWidget(compact(self.step_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS)
+        # The conversion constants (FIDELITY S2-42), folded away until asked for.
+        self.conversion_box = DrillConversionBox(station)
+        self.conversion_box.hide()
+        self.conversion_toggle = t.button(
+            lambda: self.tr("Constants…"),
+            lambda: self.tr("Show the Excellon step and microsteps a mm, to change them"),
+        )
+        self.conversion_toggle.setObjectName("conversion_toggle")
+        self.conversion_toggle.setCheckable(True)
+        self.conversion_toggle.toggled.connect(self.conversion_box.setVisible)
+        last += 1
+        row.addWidget(
+            compact(self.conversion_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS
+        )
         row.setColumnStretch(COMMAND_COLUMNS, 1)
 
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
@@ -216,6 +243,8 @@ class DrillPanel(QWidget):
         layout.addWidget(commands)
         layout.addWidget(axes)
         layout.addWidget(self.timing_box)
+        layout.addWidget(self.conversion_box)
+        layout.addWidget(self.step_box)
         layout.addWidget(self.long_move)
         layout.addLayout(lower, 1)
 
@@ -261,12 +290,7 @@ class DrillPanel(QWidget):
     def long_move_s(self, text: str) -> float:
         """How long the X or Y move ``text`` is expected to run (0 for anything else)."""
         session = self.session
-        if session is None:
-            return 0.0
-        _used, command = decode_command(text.strip().encode("ascii", "replace") + b"\r")
-        if not isinstance(command, Command) or command.letter not in POSITION_LETTERS:
-            return 0.0
-        return session.expected_s(command)
+        return 0.0 if session is None else session.line_expected_s(text)
 
     def _send_or_ask(self, text: str) -> bool:
         seconds = self.long_move_s(text)
@@ -321,6 +345,7 @@ class DrillPanel(QWidget):
             button.setEnabled(enabled)
         self.gate.set_enabled(enabled)
         self.long_move_send.setEnabled(enabled)
+        self.step_box.set_motion_enabled(enabled)
 
     # --- the session's news ----------------------------------------------------------
 
@@ -334,8 +359,7 @@ class DrillPanel(QWidget):
             # while a lambda would keep calling into deleted list widgets.
             session.commandReceived.connect(self._show_received_command)
             session.commandDone.connect(self._show_done_command)
-            session.frameSent.connect(self._show_sent)
-            session.frameReceived.connect(self._show_received)
+            session.terminalLine.connect(self.output.appendPlainText)
             session.commandFailed.connect(self._show_failed)
 
     def _show_received_command(self, text: str) -> None:
@@ -343,12 +367,6 @@ class DrillPanel(QWidget):
 
     def _show_done_command(self, text: str) -> None:
         _append(self.done_list, text)
-
-    def _show_sent(self, _command: object, raw: bytes) -> None:
-        self.output.appendPlainText("> " + raw.decode("ascii", "replace").rstrip("\r\n"))
-
-    def _show_received(self, _reply: object, raw: bytes) -> None:
-        self.output.appendPlainText("< " + raw.decode("ascii", "replace").rstrip("\r\n"))
 
     def _show_failed(self, text: str) -> None:
         self.output.appendPlainText(

@@ -38,6 +38,12 @@ def capability_refusals(
     problems: dict[OpKind, str] = {}
     if not capabilities.drill:
         problems[OpKind.DRILL] = f"{profile.title} cannot drill"
+    elif takes_gcode:
+        # The winder drills with its own program's Z moves: G-code has no drill cycle, so a
+        # drill file would load and fail at its first hole.  Refused here, line by line.
+        problems[OpKind.DRILL] = (
+            f"{profile.title} drills only with explicit moves: G-code has no drill cycle"
+        )
     if not capabilities.pen:
         problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
     if not takes_gcode:

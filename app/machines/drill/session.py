@@ -38,12 +38,13 @@ from __future__ import annotations
 import math
 from collections import deque
 from collections.abc import Sequence
-from decimal import ROUND_CEILING, ROUND_FLOOR, ROUND_HALF_UP, Decimal
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
+from app.machines.drill.conversion import mm_to_microsteps, profile_microsteps_per_mm
 from app.machines.session import PENDING, MachineSession
 from protocol.clock import Clock
 from protocol.drill.codec import (
@@ -101,6 +102,21 @@ def command_text(command: Command) -> str:
     return encode_command(command).decode("ascii").rstrip("\r")
 
 
+def wire_text(raw: bytes) -> str:
+    """Bytes on the wire as one terminal line: never raises, whatever the drill sent."""
+    return raw.decode("ascii", "replace").rstrip("\r\n")
+
+
+def parse_line(text: str) -> Command | None:
+    """A typed terminal line as the one command it spells, or None when it is none."""
+    try:
+        raw = text.strip().encode("ascii") + b"\r"
+    except UnicodeEncodeError:
+        return None
+    used, command = decode_command(raw)
+    return command if isinstance(command, Command) and used == len(raw) else None
+
+
 class DrillSession(MachineSession):
     """frameSent carries :class:`Command`, frameReceived :class:`Reply` or :class:`Rejected`."""
 
@@ -112,6 +128,9 @@ class DrillSession(MachineSession):
     commandFailed = Signal(str)
     #: The last queued command is done and nothing is waiting.
     idle = Signal()
+    #: A line for the terminal: ``> X248`` as sent, ``< RX`` as heard (the text decoded here,
+    #: so the page only shows it).
+    terminalLine = Signal(str)
 
     def __init__(
         self,
@@ -146,13 +165,12 @@ class DrillSession(MachineSession):
         self._slow = False  # Shift held: the held jog's steps are short
         self._jog_turn = 0  # a diagonal jog alternates its axes, this one next
         self._jog_told_end = False
-        self._per_mm = [
-            Decimal(axis.steps_per_rev) * Decimal(axis.microsteps) / Decimal(str(axis.lead))
-            for axis in model.profile.axes
-        ]
+        self._per_mm = [profile_microsteps_per_mm(axis) for axis in model.profile.axes]
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.dataReceived.connect(self._on_data)
+        self.frameSent.connect(lambda _c, raw: self.terminalLine.emit("> " + wire_text(raw)))
+        self.frameReceived.connect(lambda _r, raw: self.terminalLine.emit("< " + wire_text(raw)))
 
     # --- state the widgets read ------------------------------------------------
 
@@ -201,10 +219,7 @@ class DrillSession(MachineSession):
 
     def to_microsteps(self, axis: int, mm: float) -> int:
         """Nearest microstep to ``mm``, half away from zero, computed in decimal."""
-        exact = Decimal(str(mm)) * self._per_mm[axis]
-        return int(exact.copy_abs().quantize(Decimal(1), rounding=ROUND_HALF_UP)) * (
-            -1 if exact < 0 else 1
-        )
+        return mm_to_microsteps(mm, self._per_mm[axis])
 
     def to_mm(self, axis: int, microsteps: int) -> float:
         return microsteps / float(self._per_mm[axis])
@@ -393,16 +408,40 @@ class DrillSession(MachineSession):
         self.model.message.emit(f"Not sent: {line!r} is not a drill command ({reason})")
         return False
 
-    def _enqueue(self, command: Command) -> bool:
-        """Every command reaches the queue here: a position outside the travel never does."""
-        if self._refuse_motion():
-            return False
+    def why_refused(self, command: Command) -> str | None:
+        """What the motion gate says against ``command`` now, or None: it may go.
+
+        The one judgement every command passes before the queue (:meth:`_enqueue`),
+        also asked by the step-through to show a refusal beside its button.
+        """
+        reason = self.model.motion_lock_reason()
+        if reason is not None:
+            return QCoreApplication.translate("Session", "Motion refused: {0}").format(reason)
         if command.letter in POSITION_LETTERS and command.value is not None:
             axis = self._axes_named(command.letter)
             if axis:
-                target = self.to_mm(axis[0], command.value)
-                if self.gate.refuse(self.gate.refuse_target(axis[0], target)):
-                    return False
+                return self.position_refusal(axis[0], command.value)
+        return None
+
+    def position_refusal(self, axis: int, microsteps: int) -> str | None:
+        """What the motion gate says against ``axis`` going to ``microsteps``, or None.
+
+        Any whole number is judged, one the wire cannot even carry (a negative
+        position) too: by the travel it leaves.
+        """
+        refusal = self.gate.refuse_target(axis, self.to_mm(axis, microsteps))
+        if refusal is not None:
+            return f"Motion refused: {refusal}"
+        if not 0 <= microsteps <= MAX_POSITION:
+            return f"Motion refused: {microsteps} is no drill position (0…{MAX_POSITION})"
+        return None
+
+    def _enqueue(self, command: Command) -> bool:
+        """Every command reaches the queue here: a position outside the travel never does."""
+        reason = self.why_refused(command)
+        if reason is not None:
+            self.model.message.emit(reason)
+            return False
         self._queue.append(command)
         self._send_next()
         return True
@@ -461,6 +500,13 @@ class DrillSession(MachineSession):
             self._lost_to_silence(f"no reply for {now - since:.1f} s ({what}: {waited})")
         elif now >= late_at:
             self._watch_silence(now - since, 0.0, deadline - since, f"{what}: {waited}")
+
+    def line_expected_s(self, text: str) -> float:
+        """How long the X or Y move a terminal line spells should run (0 for anything else)."""
+        command = parse_line(text)
+        if command is None or command.letter not in POSITION_LETTERS:
+            return 0.0
+        return self.expected_s(command)
 
     def expected_s(self, command: Command) -> float:
         """How long ``command``'s procedure should take, by the profile's timing constants."""

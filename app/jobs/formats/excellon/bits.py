@@ -46,12 +46,25 @@ def plan_bits(
     counts: dict[str, int],
     *,
     smallest_first: bool = False,
+    one_bit: bool = False,
 ) -> BitPlan:
     """Group ``tools`` (name, diameter mm, where defined) that drill holes into bit changes.
 
     Tools without holes are neither prompted nor flagged: CAD tools list
     every tool of the library, and that is no mistake of the file.
+
+    ``one_bit`` is the original drill's way ("nepocita s vymenou vrtaku",
+    FIDELITY S2-40): every hole, whatever its tool says, is drilled with the
+    one bit in the spindle, so every tool with holes is one group and nothing
+    is flagged (a duplicate or a missing diameter changes nothing then).
     """
+    if one_bit:
+        used = [(name, diameter) for name, diameter, _where in tools if counts.get(name, 0)]
+        if not used:
+            return BitPlan((), (), ())
+        first, diameter = used[0]
+        group = BitGroup(first, diameter, tuple(name for name, _d in used))
+        return BitPlan((group,), (), ())
     groups: list[BitGroup] = []
     left_out: list[str] = []
     flags: list[str] = []

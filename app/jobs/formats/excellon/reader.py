@@ -713,7 +713,11 @@ def _holes_of(job: DrillJob, tool: str) -> list[Hole]:
 
 
 def plan_drilling(
-    job: DrillJob, *, start: tuple[float, float] = (0.0, 0.0), smallest_first: bool = False
+    job: DrillJob,
+    *,
+    start: tuple[float, float] = (0.0, 0.0),
+    smallest_first: bool = False,
+    one_bit: bool = False,
 ) -> DrillPlan:
     """Holes grouped by bit (file order of tools, or smallest first), each group's order optimised.
 
@@ -728,6 +732,7 @@ def plan_drilling(
         [(t.name, t.diameter_mm, str(t.source)) for t in job.tools],
         {name: len(holes) for name, holes in holes_by_tool.items()},
         smallest_first=smallest_first,
+        one_bit=one_bit,
     )
     # Imported here, not with the module: the window does not need the optimiser (and
     # fast-tsp) until a drill file is read (issue #23, launch).
@@ -805,6 +810,7 @@ def build_drill_program(
     start: tuple[float, float] = (0.0, 0.0),
     axes: tuple[str, str] = ("X", "Y"),
     smallest_first: bool = False,
+    one_bit: bool = False,
 ) -> Program:
     """The job as operations: per bit a WAIT to insert it, then MOVE + DRILL per hole.
 
@@ -817,8 +823,12 @@ def build_drill_program(
     (the station's own, chosen explicitly): a pen cross as wide as each hole,
     to try the job on paper before a board is risked.  Every operation keeps
     its hole's file line.
+
+    ``one_bit`` (a profile's ``[drill] one_bit``, FIDELITY S2-40): the
+    original's behaviour, every hole with the bit in the spindle, one tour
+    over all of them and no prompt to change the bit (nor the pen).
     """
-    plan = plan_drilling(job, start=start, smallest_first=smallest_first)
+    plan = plan_drilling(job, start=start, smallest_first=smallest_first, one_bit=one_bit)
     ax, ay = axes
     ops: list[Operation] = []
 
@@ -827,7 +837,8 @@ def build_drill_program(
 
     for tool_plan in plan.tools:
         tool = tool_plan.tool
-        ops.append(Operation(OpKind.WAIT, tool.source, message=bit_prompt(tool_plan, mode)))
+        if not one_bit:
+            ops.append(Operation(OpKind.WAIT, tool.source, message=bit_prompt(tool_plan, mode)))
         for hole in tool_plan.holes:
             where = hole.source
             if mode == "drill":
