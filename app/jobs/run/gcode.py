@@ -42,6 +42,7 @@ from app.jobs.run.gcode_stream import (
     resume_state,
     retrace,
 )
+from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
@@ -107,6 +108,8 @@ class GcodeDriver(JobDriver):
         self._chosen: int | None = None
         #: A ResumeChoice waits for the operator's pick.
         self._choice_open = False
+        #: Judges whether the board stands before anything of a resume goes (see standing.py).
+        self._standing = StandingProof()
 
     def _locked(self) -> threading.RLock | nullcontext[None]:
         """The feeder's lock: the reader thread pulls and counts the stream under it."""
@@ -242,6 +245,7 @@ class GcodeDriver(JobDriver):
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True
+                self._standing.forget()  # a new look: only reports from now on count
                 session.query_status()
             return False  # _on_status carries on
         if runner.state is not JobState.RUNNING:
@@ -532,7 +536,12 @@ class GcodeDriver(JobDriver):
             self._asked_since_recheck = False
             session.soft_reset()
             return
-        if report.state != "Idle":
+        # Idle alone is no proof: between two lines the board says Idle with the next one
+        # still in its buffer, and a way back sent then would run after it.
+        verdict = self._standing.judge(report, session.planner_size, stream.settings.rx_buffer)
+        if verdict is Standing.ASK_AGAIN:
+            session.query_status()
+        if verdict is not Standing.STANDS:
             return  # still finishing what it had: the next report decides
         here = self._here(report)
         # What is proven run: every answered line on a board that answers once a line ran;
