@@ -580,13 +580,11 @@ class Usb3Session(MachineSession):
     def _ask_after_refusal(self) -> None:
         """``?;``: an axis sent a move and not heard since may be the one that did not take it;
         asked where it stands, its answer (and then its silence) tells."""
-        waiting = [
-            axis
-            for axis, heading in enumerate(self._heading)
-            if heading is not None
-            and axis < self.axis_count
-            and (self._reported_at[axis] is None or self._reported_at[axis] < heading[2])
-        ]
+        waiting = []
+        for axis, heading in enumerate(self._heading[: self.axis_count]):
+            reported = self._reported_at[axis]
+            if heading is not None and (reported is None or reported < heading[2]):
+                waiting.append(axis)
         if waiting:
             self.request_positions(waiting)
 
