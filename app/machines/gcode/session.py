@@ -53,6 +53,7 @@ from app.machines.gcode.feeder import (
 )
 from app.machines.gcode.line_targets import line_motion
 from app.machines.gcode.planned_path import PlannedPath
+from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.motion_gate import Refusal
 from app.machines.session import PENDING, MachineSession
 from app.machines.supervision import MotionFault, fault_text
@@ -208,6 +209,8 @@ class GcodeSession(MachineSession):
         #: The lines unanswered through every drained report so far (see _check_lost_answers).
         self._lost_candidates: list[SentLine] = []
         self._stall_told = False
+        #: A line cut on the wire, its start stuck in the board's buffer (stuck_line.py).
+        self._stuck = StuckLineWatch(clock, settings.rx_buffer)
         #: The motors were released for zeroing by hand and nothing was sent since.
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
@@ -1022,6 +1025,20 @@ class GcodeSession(MachineSession):
         """
         if unanswered is None:
             unanswered = self.streamer.unanswered_tags()
+        pausing = any(_pauses(sent.text) for sent in unanswered)
+        stuck = self._stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
+        if stuck is not None:
+            self._drained_since, self._drained_reports = None, 0
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "The board holds {0} byte(s) of a line whose end never came (lost on the "
+                    "way) and waits for it: it stands idle, so it is reset, keeping its "
+                    "position, and what it ran is looked at again",
+                ).format(stuck)
+            )
+            self.soft_reset()
+            return
         if self._drained_since is not None:
             unanswered = [sent for sent in unanswered if sent in self._lost_candidates]
         if not unanswered or report.state != "Idle":

@@ -1,0 +1,69 @@
+"""A line cut on the wire leaves its start in the board's buffer: the job must not stall.
+
+Relay corexy-plotter seed 10: the cable fell silent for 3 s in the middle of
+a line.  The board got the line's first bytes, never its end, and waited for
+it, idle; the station waited for the answers of that line and the lines
+behind it.  The job hung for good.  Judged from the emulator's own log.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from pytestqt.qtbot import QtBot
+
+from app.jobs.run.runner import JobRunner, JobState
+from app.profiles import load_profile
+from protocol.transport.loopback import Direction
+from tests.helpers.harness import StationHarness
+from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
+
+
+@pytest.mark.parametrize("seconds", [3.0, 6.0], ids=["3s", "6s-given-up"])
+@pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter"])
+def test_a_silence_that_cuts_a_line_in_half_neither_hangs_nor_redraws(
+    qtbot: QtBot, tmp_path: Path, name: str, seconds: float
+) -> None:
+    """3 s: the station still waits for the answers (the board, fast, ran what it had); 6 s:
+    it gave the board up as silent, forgot its lines, and looks at it once it answers."""
+    profile = load_profile(name)
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    strokes_sent = [0]
+    cut_at: list[float] = []
+
+    def cut_mid_line(direction: Direction, data: bytes) -> bytes:
+        if cut_at:
+            return b"" if harness.clock.now() - cut_at[0] < seconds else data
+        if direction is Direction.TO_DEVICE:
+            strokes_sent[0] += data.count(b"G1 ")
+            if strokes_sent[0] >= 10 and b"G1 " in data:
+                cut_at.append(harness.clock.now())
+                return data[: data.rfind(b"G1 ") + 6]  # "G1 X1": the rest is lost
+        return data
+
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        harness.station.model.message.connect(messages.append)
+        harness.loopback.set_manipulator(cut_mid_line)
+        assert runner.load(zigzag(profile, tmp_path)) == []
+        runner.start()
+        run_as_the_api_does(harness, runner)
+        assert cut_at
+        drawn = pen_down_moves(harness)
+        assert drawn == EXPECTED[: len(drawn)], messages  # none twice, none out of order
+        if seconds < 4:
+            # The board still had lines as the cable came back: the next line's bytes end
+            # the fragment and the board refuses the glued line; the job stops there.
+            assert runner.state in (JobState.DONE, JobState.FAILED), messages
+        else:
+            assert runner.state is JobState.DONE, messages
+        if runner.state is JobState.DONE:
+            assert drawn == EXPECTED, messages
+    finally:
+        runner.deleteLater()
+        harness.close()
