@@ -40,6 +40,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.envelope import Envelope
+from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.feeder import (
     STALE,
     WROTE,
@@ -211,6 +212,8 @@ class GcodeSession(MachineSession):
         self._stall_told = False
         #: A line cut on the wire, its start stuck in the board's buffer (stuck_line.py).
         self._stuck = StuckLineWatch(clock, settings.rx_buffer)
+        #: The board's buffer against the bytes counted unanswered (byte_count.py).
+        self._byte_count = ByteCount(settings.rx_buffer)
         #: The motors were released for zeroing by hand and nothing was sent since.
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
@@ -778,6 +781,7 @@ class GcodeSession(MachineSession):
         self._jog_target = None
         self._jog_cancelling = False
         self._quiet_stop = False
+        self._byte_count.forget()
         with self.feeder.lock:
             return self.feeder.clear()
 
@@ -820,6 +824,7 @@ class GcodeSession(MachineSession):
         self.envelope.release()  # judged again from where it stands once idle
         self._planned.reset_modes()
         lost = self.feeder.clear()
+        self._byte_count.forget()
         self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
@@ -832,6 +837,7 @@ class GcodeSession(MachineSession):
         with self.feeder.lock:
             self.feeder.clear()
             self.feeder.reset_halt()
+        self._byte_count.forget()
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
@@ -906,6 +912,8 @@ class GcodeSession(MachineSession):
                 self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
                 if isinstance(verdict, ReportSeen):
+                    if self._count_broken(reply, verdict.unanswered, verdict.unanswered_bytes):
+                        continue
                     self._apply_status(reply, verdict.unanswered, verdict.job)
                 else:
                     self._apply_status(reply)
@@ -1164,6 +1172,24 @@ class GcodeSession(MachineSession):
             if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
                 self._report_after_silence = report
             self._check_recovery()
+
+    def _count_broken(
+        self, report: StatusReport, unanswered: list[SentLine], unanswered_bytes: int | None
+    ) -> bool:
+        """The board holds more than was sent and not answered: stop before it runs it."""
+        extra = self._byte_count.excess(report, unanswered_bytes)
+        if extra is None or self.stopping:
+            return False
+        self._byte_count.forget()  # one stop, one message
+        job = next((s.op_index for s in unanswered if s.origin == "job"), None)
+        text = QCoreApplication.translate(
+            "GcodeSession",
+            "The board holds {0} byte(s) more than were sent and not answered (a line or an "
+            "answer arrived twice on the way): the lines it holds may be garbled, so it is "
+            "stopped before it runs them",
+        ).format(extra)
+        self._stop_for_fault(MotionFault(text, job))
+        return True
 
     def _supervise(self, report: StatusReport) -> None:
         """A report off the path of the lines written stops the machine, naming the line."""
