@@ -13,8 +13,10 @@ from pathlib import Path
 import pytest
 from pytestqt.qtbot import QtBot
 
+from app.jobs.loaders import JobOptions, load_job
+from app.jobs.program import Program
 from app.jobs.run.runner import JobRunner, JobState
-from app.profiles import load_profile
+from app.profiles import MachineProfile, load_profile
 from protocol.transport.loopback import Direction
 from tests.helpers.harness import StationHarness
 from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
@@ -64,6 +66,68 @@ def test_a_silence_that_cuts_a_line_in_half_neither_hangs_nor_redraws(
             assert runner.state is JobState.DONE, messages
         if runner.state is JobState.DONE:
             assert drawn == EXPECTED, messages
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
+def _short_strokes(
+    profile: MachineProfile, tmp_path: Path
+) -> tuple[Program, list[tuple[float, float]]]:
+    """The relay's job: 20 pen-down strokes of 3 mm in a row (60 ms each), and their ends."""
+    settings = profile.gcode
+    assert settings is not None
+    ends = [(5.0 + 3 * (k + 1), 7.0 if k % 2 == 0 else 5.0) for k in range(20)]
+    lines = ["G21 G90", settings.pen_up, "G0 X5 Y5", settings.pen_down]
+    lines += [f"G1 X{x:g} Y{y:g} F3000" for x, y in ends]
+    lines += [settings.pen_up, "G0 X0 Y0"]
+    source = tmp_path / "short.gcode"
+    source.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return load_job(source, ["X", "Y"], JobOptions(gcode=settings)), ends
+
+
+@pytest.mark.parametrize("name", ["corexy-plotter", "grbl-plotter"])
+def test_a_whole_line_lost_on_the_way_is_not_taken_for_a_lost_answer(
+    qtbot: QtBot, tmp_path: Path, name: str
+) -> None:
+    """Relay corexy-plotter seed 28: a 3 s silence took a line on its way, whole, and the
+    answers of the lines before it on theirs.  The board ran what it had and stood idle; the
+    station took every missing answer for one lost on the way back, counted the lost line as
+    run too, and went on after it: a stroke from the wrong place, the job "done".  The board
+    standing short of where the lines sent end shows they did not all run."""
+    profile = load_profile(name)
+    program, ends = _short_strokes(profile, tmp_path)
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    strokes_sent = [0]
+    silent_from: list[float] = []
+
+    def lose_the_tenth_stroke(direction: Direction, data: bytes) -> bytes:
+        """From the write holding the tenth stroke on, 3 s of silence both ways."""
+        if silent_from:
+            return b"" if harness.clock.now() - silent_from[0] < 3.0 else data
+        if direction is Direction.TO_DEVICE:
+            strokes_sent[0] += data.count(b"G1 ")
+            if strokes_sent[0] >= 10:
+                silent_from.append(harness.clock.now())
+                return b""
+        return data
+
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        harness.station.model.message.connect(messages.append)
+        harness.loopback.set_manipulator(lose_the_tenth_stroke)
+        assert runner.load(program) == []
+        runner.start()
+        run_as_the_api_does(harness, runner)
+        assert silent_from
+        drawn = pen_down_moves(harness)
+        assert drawn == ends[: len(drawn)], messages  # none twice, none skipped, in order
+        assert runner.state is JobState.DONE, messages
+        assert drawn == ends, messages
     finally:
         runner.deleteLater()
         harness.close()

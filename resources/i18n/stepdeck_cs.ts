@@ -1193,6 +1193,10 @@ Přesto odeslat do stroje?</translation>
         <translation>Deska drží {0} bajt(ů) řádku, jehož konec nikdy nepřišel (ztratil se cestou), a čeká na něj: stojí v klidu, proto je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
     </message>
     <message>
+        <source>{0} line(s) sent never reached the board: it has taken every byte it got and stands idle short of where they end; it is reset, keeping its position, and what it ran is looked at again</source>
+        <translation>{0} odeslaných řádků nikdy nedorazilo do desky: převzala každý bajt, který dostala, a stojí v klidu před místem, kde končí; je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
+    </message>
+    <message>
         <source>The board holds {0} byte(s) more than were sent and not answered (a line or an answer arrived twice on the way): the lines it holds may be garbled, so it is stopped before it runs them</source>
         <translation>Deska drží o {0} bajt(ů) více, než bylo odesláno a nezodpovězeno (řádek nebo odpověď dorazily cestou dvakrát): řádky, které drží, mohou být poškozené, proto je zastavena dříve, než je provede</translation>
     </message>
@@ -2593,7 +2597,7 @@ Načíst jako:</translation>
     <name>JogInput</name>
     <message>
         <source>Jog refused: {0}</source>
-        <extracomment>The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
         <translation>Ruční posuv odmítnut: {0}</translation>
     </message>
 </context>

@@ -1193,6 +1193,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Doska drží {0} bajt(ov) riadku, ktorého koniec nikdy neprišiel (stratil sa cestou), a čaká naň: stojí v pokoji, preto je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>
     <message>
+        <source>{0} line(s) sent never reached the board: it has taken every byte it got and stands idle short of where they end; it is reset, keeping its position, and what it ran is looked at again</source>
+        <translation>{0} odoslaných riadkov nikdy nedorazilo do dosky: prevzala každý bajt, ktorý dostala, a stojí v pokoji pred miestom, kde končia; je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
+    </message>
+    <message>
         <source>The board holds {0} byte(s) more than were sent and not answered (a line or an answer arrived twice on the way): the lines it holds may be garbled, so it is stopped before it runs them</source>
         <translation>Doska drží o {0} bajt(ov) viac, než bolo odoslané a nezodpovedané (riadok alebo odpoveď dorazili cestou dvakrát): riadky, ktoré drží, môžu byť poškodené, preto je zastavená skôr, než ich vykoná</translation>
     </message>
@@ -2593,7 +2597,7 @@ Načítať ako:</translation>
     <name>JogInput</name>
     <message>
         <source>Jog refused: {0}</source>
-        <extracomment>The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
         <translation>Ručný posuv odmietnutý: {0}</translation>
     </message>
 </context>

@@ -1072,6 +1072,20 @@ class GcodeSession(MachineSession):
             and (waited >= LOST_ANSWER_AFTER_S)
         ):
             self._drained_since, self._drained_reports = None, 0
+            if self._short_of_lines_sent(report):
+                # Not their answers but the lines themselves were lost: the board stands
+                # short of where they end.  Reset (it stands: its position stays) and let
+                # the job look at it and go on from what is proven.
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "GcodeSession",
+                        "{0} line(s) sent never reached the board: it has taken every byte "
+                        "it got and stands idle short of where they end; it is reset, "
+                        "keeping its position, and what it ran is looked at again",
+                    ).format(len(unanswered))
+                )
+                self.soft_reset()
+                return
             self.model.message.emit(
                 f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
                 "taken and run every line sent, so they count as answered"
@@ -1172,6 +1186,14 @@ class GcodeSession(MachineSession):
             if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
                 self._report_after_silence = report
             self._check_recovery()
+
+    def _short_of_lines_sent(self, report: StatusReport) -> bool:
+        """Whether an idle board stands off where the lines written end (as far as known)."""
+        end = self.envelope.end
+        if end is None or len(report.mpos) < self.axis_count:
+            return False
+        here = report.mpos[: self.axis_count]
+        return any(abs(a - b) > self.envelope.tolerance for a, b in zip(here, end, strict=False))
 
     def _count_broken(
         self, report: StatusReport, unanswered: list[SentLine], unanswered_bytes: int | None
