@@ -98,11 +98,6 @@ _FRAGMENT = (
     "found by the relay: a line cut in half whose start GRBL moved into its line buffer is"
     " invisible in Bf:, and the next line sent is glued to it (grbl-plotter seed 22)"
 )
-_STALE_IDLE = (
-    "found by the relay: replies held 3.5 s, then read in a burst: the job said done with"
-    " strokes still to draw, an Idle report made before the last lines were sent taken as"
-    " the board standing after them (grbl-plotter seed 21, not every run)"
-)
 _BETWEEN = (
     "undetectable on this wire: a mangled line that is still valid G-code (no checksum) is"
     " judged only by the status reports, 200 ms apart; a wrong move that ends on the path"
@@ -117,7 +112,7 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_LOST}",
     ("grbl-plotter", FaultKind.DUPLICATE): _DUP_HELD,
     ("grbl-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_LOST}",
-    ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}; {_STALE_IDLE}",
+    ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
     ("grbl-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}; {_FRAGMENT}",
     ("corexy-plotter", FaultKind.DROP): _BETWEEN,
     ("corexy-plotter", FaultKind.DUPLICATE): _DUP_HELD,

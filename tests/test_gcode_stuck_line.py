@@ -72,12 +72,16 @@ def test_a_silence_that_cuts_a_line_in_half_neither_hangs_nor_redraws(
 
 
 def _short_strokes(
-    profile: MachineProfile, tmp_path: Path
+    profile: MachineProfile, tmp_path: Path, count: int = 20
 ) -> tuple[Program, list[tuple[float, float]]]:
-    """The relay's job: 20 pen-down strokes of 3 mm in a row (60 ms each), and their ends."""
+    """The relay's job: pen-down strokes of 3 mm in a row (60 ms each), 60 to a row, and
+    their ends."""
     settings = profile.gcode
     assert settings is not None
-    ends = [(5.0 + 3 * (k + 1), 7.0 if k % 2 == 0 else 5.0) for k in range(20)]
+    ends = [
+        (5.0 + 3 * (k % 60 + 1), (7.0 if k % 2 == 0 else 5.0) + 20 * (k // 60))
+        for k in range(count)
+    ]
     lines = ["G21 G90", settings.pen_up, "G0 X5 Y5", settings.pen_down]
     lines += [f"G1 X{x:g} Y{y:g} F3000" for x, y in ends]
     lines += [settings.pen_up, "G0 X0 Y0"]
@@ -128,6 +132,64 @@ def test_a_whole_line_lost_on_the_way_is_not_taken_for_a_lost_answer(
         assert drawn == ends[: len(drawn)], messages  # none twice, none skipped, in order
         assert runner.state is JobState.DONE, messages
         assert drawn == ends, messages
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
+def test_replies_held_then_read_in_a_burst_never_end_the_job_early(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """Relay grbl-plotter seed 21: the board's replies held 3.5 s, then read at once.  Their
+    answers let the last lines go, and the board planned and answered them before the window
+    had handled the burst; a status report in the burst, made while those lines still waited
+    to go, then passed for the board standing after them: "done", six strokes undrawn."""
+    profile = load_profile("grbl-plotter")
+    program, ends = _short_strokes(profile, tmp_path, 60)
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    held: list[bytes] = []
+
+    def hold(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_HOST:
+            held.append(data)
+            return b""
+        return data
+
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        drawn_when_done: list[tuple[float, float]] = []
+        runner.stateChanged.connect(
+            lambda state: (
+                drawn_when_done.extend(pen_down_moves(harness)) if state is JobState.DONE else None
+            )
+        )
+        assert runner.load(program) == []
+        runner.start()
+        # Held when the last few lines still wait to go: their answers end the job.
+        harness.run_until(lambda: runner.done >= len(program) - 10, timeout=20)
+        harness.loopback.set_manipulator(hold)
+        harness.run(3.5)  # the board runs what it has and stands, its replies held
+        assert runner.done < len(program)
+        # The reader thread reads the burst (answers counted, the last lines sent at once),
+        # then the board's answers to those lines, all before the window handles the first.
+        session = harness.gcode_session
+        burst = session.feeder.receive(b"".join(held))
+        held.clear()
+        harness.clock.advance(0.05)
+        harness.loopback.pump()  # the board plans and answers them (held by the cable here)
+        harness.loopback.set_manipulator(None)
+        after = session.feeder.receive(b"".join(held))
+        assert after.replies, "the board did not answer the last lines"
+        session.link.received.emit(burst)
+        session.link.received.emit(after)
+        run_as_the_api_does(harness, runner)
+        assert runner.state is JobState.DONE, messages
+        # Done only once the board has drawn it all (the station closes the link after).
+        assert drawn_when_done == ends, messages
     finally:
         runner.deleteLater()
         harness.close()

@@ -914,7 +914,9 @@ class GcodeSession(MachineSession):
                 if isinstance(verdict, ReportSeen):
                     if self._count_broken(reply, verdict.unanswered, verdict.unanswered_bytes):
                         continue
-                    self._apply_status(reply, verdict.unanswered, verdict.job)
+                    self._apply_status(
+                        reply, verdict.unanswered, verdict.job, idle_then=verdict.idle
+                    )
                 else:
                     self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
@@ -1114,9 +1116,12 @@ class GcodeSession(MachineSession):
         report: StatusReport,
         unanswered: list[SentLine] | None = None,
         job: object = None,
+        *,
+        idle_then: bool | None = None,
     ) -> None:
-        """``unanswered`` and ``job``: the lines unanswered and the job's snapshot as the
-        report was read (on the reader thread; None: read now)."""
+        """``unanswered``, ``job`` and ``idle_then``: the lines unanswered, the job's snapshot
+        and whether nothing waited to go, as the report was read (on the reader thread;
+        None: read now)."""
         self._status_asked_at = None
         self.job_at_report = job
         # A work position without any offset heard yet is no machine position.
@@ -1159,7 +1164,11 @@ class GcodeSession(MachineSession):
             or not self._planner_size
             or report.planner_free >= self._planner_size
         )
-        if report.state == "Idle" and self.streamer.idle and planner_empty:
+        # Idle as it was read too: a report read before the last lines went (a burst of held
+        # replies, handled here after the reader thread sent them and counted their answers)
+        # says nothing of them.
+        idle = self.streamer.idle and idle_then is not False
+        if report.state == "Idle" and idle and planner_empty:
             self._seen_idle = True
             # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
             offset_known = self.work_offset is not None or not self.jogs_with_command
