@@ -157,6 +157,23 @@ class ExecutedCommand:
     command: Command | Rejected
 
 
+@dataclass(frozen=True, slots=True)
+class AxisStopped:
+    """An axis that was in motion came to rest: at its target, braked by ``S;``, at a switch.
+
+    Logged with the commands (:attr:`Usb3Firmware.event_log`, ``--log``) so a judge
+    reading the log knows where a stopped move left the axis, which the commands
+    alone cannot say.  ``count`` is the step counter, from the last ``C;`` zero.
+    """
+
+    time: float
+    axis: AxisId
+    count: int
+
+    def __str__(self) -> str:
+        return f"Stopped(axis={self.axis!r}, count={self.count})"
+
+
 def joystick_deflection(adc: int) -> tuple[int, int]:
     """``(direction, speed index)`` for a joystick reading; ``(0, 0)`` in the dead zone.
 
@@ -220,6 +237,7 @@ class Usb3Firmware(ControlCycles):
         self._report_every = round(self.config.report_interval / self.config.control_cycle)
         self._motors = tuple(self._make_motor(axis) for axis in AxisId)
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
+        self._events: deque[ExecutedCommand | AxisStopped] = deque(maxlen=COMMAND_LOG_LENGTH)
 
     def _make_motor(self, axis: AxisId) -> _Motor:
         low, high = self.config.end_switches[axis]
@@ -297,6 +315,12 @@ class Usb3Firmware(ControlCycles):
         with self._lock:
             return tuple(self._command_log)
 
+    @property
+    def event_log(self) -> tuple[ExecutedCommand | AxisStopped, ...]:
+        """The latest commands and the stops of axes in motion, in order (``--log``)."""
+        with self._lock:
+            return tuple(self._events)
+
     def moving(self, axis: AxisId) -> bool:
         with self._lock:
             return self._motors[axis].axis.moving
@@ -369,16 +393,18 @@ class Usb3Firmware(ControlCycles):
         for motor in self._motors:
             motor.axis.advance(self.config.control_cycle)
         self._cycles += 1
-        self._report(timer=self._cycles % self._report_every == 0)
+        # A stop happens during the cycle's motion: logged at the cycle's end, with its report.
+        self._report(self._cycle_time(self._cycles), timer=self._cycles % self._report_every == 0)
         self._flush()
 
-    def _report(self, *, timer: bool) -> None:
+    def _report(self, now: float, *, timer: bool) -> None:
         for axis, motor in zip(AxisId, self._motors, strict=True):
             moving = motor.axis.moving
             stopped = motor.in_motion and not moving
             if stopped:
                 motor.in_motion = motor.jogging = False
                 motor.target = None
+                self._events.append(AxisStopped(now, axis, self._count(motor)))
             if motor.report_due or stopped or (moving and timer):
                 self._outbox.append(encode(Position(axis, self._count(motor))))
             motor.report_due = False
@@ -398,7 +424,9 @@ class Usb3Firmware(ControlCycles):
     # -- commands --------------------------------------------------------------------
 
     def _handle(self, command: Command | Rejected, now: float) -> None:
-        self._command_log.append(ExecutedCommand(now, command))
+        executed = ExecutedCommand(now, command)
+        self._command_log.append(executed)
+        self._events.append(executed)
         match command:
             case Rejected():
                 self._outbox.append(encode(NotUnderstood()))

@@ -248,3 +248,43 @@ def test_s4_18_an_end_switch_mid_move_pauses_the_job_naming_the_axis_and_end(
         assert runner.state is JobState.PAUSED and len(moves_executed(unit)) == sent
     finally:
         unit.close()
+
+
+def test_a_move_the_unit_could_not_read_pauses_saying_so_and_the_resume_moves_it_once(
+    unit: StationHarness, runner: JobRunner
+) -> None:
+    """Relay usb3 seeds 26, 56…: a flipped bit made the X move unreadable; the unit answered
+    ``?;`` and ran only Y.  The job stayed "running" (or paused "link lost") for good while
+    the unit answered every question."""
+    garbled: list[bytes] = []
+
+    def garble_first_x_move(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_DEVICE and not garbled and data.startswith(b"X"):
+            if data != b"X000000000000000;":  # the question "where are you?" passes
+                garbled.append(data)
+                return b"X0p" + data[3:]  # a digit flipped into a letter
+        return data
+
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    unit.loopback.set_manipulator(garble_first_x_move)
+    assert runner.load(route((2.25, 0.75), (0.75, 1.5))) == []
+    runner.start()
+    unit.run_until(lambda: runner.state is JobState.PAUSED or finished(runner), timeout=20)
+    assert garbled
+    assert runner.state is JobState.PAUSED, messages
+    assert unit.station.model.link_state is LinkState.CONNECTED
+    assert "could not read the move of X" in messages[-1], messages
+    assert not runner.needs_operator  # the API resumes it by itself
+    runner.resume()
+    unit.run_until(lambda: finished(runner), timeout=30)
+    assert runner.state is JobState.DONE, messages
+    per_mm = 6400 / THREAD.pitch_mm
+    # Y once, X once (the garbled one never ran), then the second point: nothing twice.
+    assert moves_executed(unit) == [
+        (AxisId.Y, round(0.75 * per_mm)),
+        (AxisId.X, round(2.25 * per_mm)),
+        (AxisId.X, round(1.5 * per_mm)),
+        (AxisId.Y, round(0.75 * per_mm)),
+    ]
+    assert (unit_at(unit, AxisId.X), unit_at(unit, AxisId.Y)) == (0.75, 1.5)

@@ -14,6 +14,7 @@ from typing import Any
 import pytest
 
 from tests.helpers.relay_judge import (
+    Cut,
     NailBoard,
     Span,
     Stroke,
@@ -29,6 +30,7 @@ from tests.helpers.relay_judge import (
     stage_targets,
     string_art_ops,
     stroke_part_of,
+    usb3_part_of,
     usb3_same,
     usb3_targets,
 )
@@ -314,3 +316,35 @@ def test_a_nail_drilled_twice_is_wrong() -> None:
     seen = string_art_ops(log, FOUR)
     track = {"nails": Track([("nail", 0), ("nail", 1)], seen, seen)}
     assert judge(track, 0, "done").verdict is Verdict.WRONG
+
+
+def test_a_usb3_move_caught_and_stopped_is_judged_where_the_emulator_says_it_stopped() -> None:
+    """A corrupted count sent X toward 1 000 019 200; the station stopped it (S;) one report
+    later.  The commands alone say only "somewhere past 0": the stop line says where."""
+    log = _usb3(
+        "SetDirection(signs=(1, 1, 1))",
+        "Move(axis=<AxisId.X: 0>, count=1600)",
+        "Stopped(axis=<AxisId.X: 0>, count=1600)",
+        "Move(axis=<AxisId.X: 0>, count=1000019200)",
+        "StopAll()",
+        "Stopped(axis=<AxisId.X: 0>, count=2300)",
+    )
+    seen = usb3_targets(log)["X"]
+    assert seen == [Span(1600, 1600), Cut(2300, 2300, 1600, 1000020800)]
+    # Short of the job's next target (3200): that move cut short, and the stop was clean.
+    track = {"X": Track([1600, 3200], seen, seen, same=usb3_same, part_of=usb3_part_of)}
+    assert judge(track, 3, "stepdeck run: stopped: X left its path").verdict is Verdict.STOPPED
+    # Past it: a move the job never had, however soon it was stopped.
+    past = usb3_targets(log.replace("count=2300", "count=3300"))["X"]
+    track = {"X": Track([1600, 3200], past, past, same=usb3_same, part_of=usb3_part_of)}
+    assert judge(track, 3, "stepdeck run: stopped: X left its path").verdict is Verdict.WRONG
+
+
+def test_a_usb3_move_stopped_at_a_switch_and_finished_on_resume_is_one_operation() -> None:
+    log = _usb3(
+        "Move(axis=<AxisId.X: 0>, count=3200)",
+        "Stopped(axis=<AxisId.X: 0>, count=2000)",  # a false end switch: the job pauses
+        "Move(axis=<AxisId.X: 0>, count=1200)",  # the resume: on to the same target
+        "Stopped(axis=<AxisId.X: 0>, count=3200)",
+    )
+    assert usb3_targets(log)["X"] == [Span(3200, 3200)]

@@ -350,15 +350,18 @@ def stage_targets(log: str, axes: int = 2) -> dict[int, list[int]]:
 
 _USB3_DIRECTION = re.compile(r"SetDirection\(signs=\((-?1), (-?1), (-?1)\)\)")
 _USB3_MOVE = re.compile(r"Move\(axis=<AxisId\.(\w): \d>, count=(\d+)\)")
+#: The emulator logs where an axis in motion came to rest (its ``--log``, AxisStopped).
+_USB3_STOPPED = re.compile(r"Stopped\(axis=<AxisId\.(\w): \d>, count=(-?\d+)\)")
 
 
 @dataclass(frozen=True)
 class Span:
     """Where a usb3 axis went, in counts: known exactly, or within ``lo…hi`` after a stop.
 
-    ``S;`` stops a move somewhere the log does not say, so the next relative
+    ``S;`` stops a move somewhere the commands do not say, so the next relative
     move goes somewhere in a range; it counts as finishing the stopped move
-    when that move's target is in the range.
+    when that move's target is in the range.  (The emulator also logs where
+    each axis stopped: then the place is exact, see :class:`Cut`.)
     """
 
     lo: int
@@ -371,20 +374,50 @@ class Span:
         return str(self.lo) if self.lo == self.hi else f"{self.lo}…{self.hi}"
 
 
+@dataclass(frozen=True)
+class Cut(Span):
+    """A move that stopped short of where it was sent (``S;``, a switch): where it stopped,
+    and where it began.  It is the job's move cut short when it stopped on the way from
+    its start to that move's target (:func:`usb3_part_of`)."""
+
+    start: int = 0
+    aimed: int = 0
+
+    def __str__(self) -> str:
+        return f"{self.lo} (stopped on the way from {self.start} to {self.aimed})"
+
+
 def usb3_targets(log: str) -> dict[str, list[Span]]:
     """Per axis, the places (counts from the power-on zero) the unit's moves went to.
 
     A move that picks up a stopped one (its range holds the stopped one's
-    target) is the same operation: it is not listed again.
+    target) is the same operation: it is not listed again.  Where the log says
+    where an axis stopped short of a move's end, that move is listed as a
+    :class:`Cut` at that place.
     """
     signs = {"X": 1, "Y": 1, "Z": 1}
     at = {axis: Span(0, 0) for axis in "XYZ"}  # where each axis is (or will be, moving)
     began = dict(at)  # where its last move began
     stopped: dict[str, int | None] = dict.fromkeys("XYZ")  # the target of a stopped move
+    moved_from = dict(at)  # where the last move listed began (a stop leaves it)
     targets: dict[str, list[Span]] = {axis: [] for axis in "XYZ"}
     for line in log.splitlines():
         if (direction := _USB3_DIRECTION.search(line)) is not None:
             signs = dict(zip("XYZ", (int(s) for s in direction.groups()), strict=True))
+        elif (rest := _USB3_STOPPED.search(line)) is not None:
+            axis, count = rest.group(1), int(rest.group(2))
+            seq, here = targets[axis], at[axis]
+            if (here.lo, here.hi) == (count, count) or not seq:
+                continue  # at the end of its moves (or a joystick run: not the station's)
+            aimed = stopped[axis] if stopped[axis] is not None else seq[-1].hi
+            start = moved_from[axis].lo
+            if count == aimed:
+                seq[-1] = Span(count, count)  # it had got there before the stop
+                stopped[axis] = None
+            else:
+                seq[-1] = Cut(count, count, start, aimed)
+                stopped[axis] = aimed
+            at[axis] = began[axis] = Span(count, count)
         elif "StopAll()" in line:
             for axis in at:
                 # Somewhere between where the last move began and its end.
@@ -396,6 +429,7 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
         elif "ZeroAll()" in line:
             at = {axis: Span(0, 0) for axis in "XYZ"}
             began = dict(at)
+            moved_from = dict(at)
             stopped = dict.fromkeys("XYZ")
         elif (move := _USB3_MOVE.search(line)) is not None and int(move.group(2)):
             axis = move.group(1)
@@ -406,14 +440,26 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
             stopped[axis] = None
             if picked_up is not None and picked_up in reach:
                 at[axis] = Span(picked_up, picked_up)  # the stopped move, finished
+                seq = targets[axis]
+                if seq and isinstance(seq[-1], Cut):
+                    seq[-1] = Span(picked_up, picked_up)
                 continue
             targets[axis].append(reach)
+            moved_from[axis] = at[axis]
             at[axis] = reach
     return {axis: seq for axis, seq in targets.items() if seq}
 
 
 def usb3_same(span: Span, target: int) -> bool:
-    return target in span
+    return not isinstance(span, Cut) and target in span
+
+
+def usb3_part_of(span: Span, target: int) -> bool:
+    """A move stopped on its way to ``target``: from its start toward it, short of it."""
+    if not isinstance(span, Cut):
+        return False
+    low, high = sorted((span.start, target))
+    return low <= span.lo <= high and span.lo != target
 
 
 # --- the string-art winder: nails drilled, then nails wound --------------------------------------

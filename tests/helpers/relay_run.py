@@ -48,6 +48,7 @@ from tests.helpers.relay_judge import (
     stage_targets,
     string_art_ops,
     stroke_part_of,
+    usb3_part_of,
     usb3_same,
     usb3_targets,
 )
@@ -335,7 +336,11 @@ def usb3_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
     early, late = usb3_targets(at_exit), usb3_targets(final)
     return {
         f"axis {name}": Track(
-            expected[axis][1:], early.get(name, []), late.get(name, []), same=usb3_same
+            expected[axis][1:],
+            early.get(name, []),
+            late.get(name, []),
+            same=usb3_same,
+            part_of=usb3_part_of,
         )
         for axis, name in enumerate("XY")
     }

@@ -18,6 +18,7 @@ import pytest
 from protocol.clock import ManualClock
 from protocol.emulator.usb3_firmware import (
     SPEED_TABLE,
+    AxisStopped,
     Usb3Config,
     Usb3Eeprom,
     Usb3Firmware,
@@ -457,3 +458,23 @@ def test_s4_18_a_switch_closed_under_a_moving_axis_stops_it_and_it_says_where() 
     stopped = fw.positions[0]
     assert not fw.moving(X) and 0 < stopped < 8000
     assert ReplyDecoder().feed(bytes(out))[-1] == Position(X, stopped)
+
+
+def test_the_log_says_where_each_axis_in_motion_came_to_rest(bench: Bench) -> None:
+    """A judge reading ``--log`` knows where a move stopped by ``S;`` left the axis: the
+    commands alone say only that it stopped somewhere on the way."""
+    full_steps(bench)
+    bench.send(SetDirection((1, 1, 1)), Move(X, 3200))
+    bench.until_stopped(X)
+    bench.send(Move(X, 64_000))
+    bench.run(0.5)
+    bench.send(StopAll())
+    replies = bench.until_stopped(X)
+    stops = [e for e in bench.fw.event_log if isinstance(e, AxisStopped)]
+    reported = positions(replies)[-1][1]
+    assert [(s.axis, s.count) for s in stops] == [(X, 3200), (X, reported)]
+    assert 3200 < reported < 3200 + 64_000
+    assert str(stops[-1]) == f"Stopped(axis=<AxisId.X: 0>, count={reported})"
+    # The commands are all in the log too, in order, the stops between them.
+    kinds = [type(getattr(e, "command", e)).__name__ for e in bench.fw.event_log]
+    assert kinds[-5:] == ["Move", "AxisStopped", "Move", "StopAll", "AxisStopped"]

@@ -42,6 +42,7 @@ from app.jobs.run.gcode_stream import (
     resume_state,
     retrace,
 )
+from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
@@ -56,6 +57,11 @@ SHOW_EVERY_S = 0.1
 #: The modal words a program is checked in (absolute, millimetres, XY plane), sent before
 #: its first line where the machine has them: a jog or a console line may have changed them.
 SETUP_WORDS = ("G90", "G21", "G17")
+
+
+def session_holds_unasked(session: GcodeSession | None) -> bool:
+    """Whether the session's board holds with no stop of the station's under way."""
+    return session is not None and not session.stopping
 
 
 def setup_lines(words: tuple[str, ...]) -> list[str]:
@@ -107,6 +113,12 @@ class GcodeDriver(JobDriver):
         self._chosen: int | None = None
         #: A ResumeChoice waits for the operator's pick.
         self._choice_open = False
+        #: Judges whether the board stands before anything of a resume goes (see standing.py).
+        self._standing = StandingProof()
+        #: The board went into a feed hold the station did not ask for (its hold button, or
+        #: a ``!`` that reached it on the wire): the job is paused, and its resume is a
+        #: cycle start — the board still has every line it was sent.
+        self._held_by_machine = False
 
     def _locked(self) -> threading.RLock | nullcontext[None]:
         """The feeder's lock: the reader thread pulls and counts the stream under it."""
@@ -190,6 +202,7 @@ class GcodeDriver(JobDriver):
         self._position_lost = False
         self._chosen = None
         self._choice_open = False
+        self._held_by_machine = False
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -208,6 +221,7 @@ class GcodeDriver(JobDriver):
 
     def link_lost(self) -> None:
         """The lines the device had may or may not run: decide when it is back."""
+        self._held_by_machine = False  # the recheck looks at the hold (and resets out of it)
         if self.stream is not None:
             self._recheck = True
             self._asked_since_recheck = False
@@ -231,6 +245,9 @@ class GcodeDriver(JobDriver):
             runner.link_pause()
             return False
         running = runner.state is JobState.RUNNING
+        if self._held_by_machine and running:
+            self._held_by_machine = False
+            session.cycle_start()  # out of the hold: the board goes on with what it has
         if self._redo_setup and running and not self._recheck:
             self._redo_setup = False
             self._set_up(session)
@@ -242,6 +259,7 @@ class GcodeDriver(JobDriver):
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True
+                self._standing.forget()  # a new look: only reports from now on count
                 session.query_status()
             return False  # _on_status carries on
         if runner.state is not JobState.RUNNING:
@@ -400,12 +418,41 @@ class GcodeDriver(JobDriver):
         if self._recheck:
             self._resume_after_recheck(stream, report)
             return
+        if report.state == "Hold" and session_holds_unasked(self.session):
+            self._machine_held()
+            return
         self._status_to(stream, report)
         self._write_checkpoint(force=False)
         with self._locked():
             in_flight = stream.in_flight
         if not in_flight:
             self.proceed()
+
+    def _machine_held(self) -> None:
+        """The board holds, and no stop of the station's asked it to: pause for the operator.
+
+        Its hold button, or a byte that turned into ``!`` on the wire (GRBL takes
+        it wherever it comes, even mid-line).  Streaming on would only fill its
+        buffer; waiting would wait for good.  The board keeps its planner and
+        position in a hold, so Resume is a cycle start and the job goes on from
+        where it is, nothing repeated.
+        """
+        self._held_by_machine = True
+        self.hold_back()  # what is not on the wire yet waits for the resume
+        if self.session is not None:
+            self.session.hold_job()
+        program = self.runner.program
+        stream = self.stream
+        with self._locked():
+            where = stream.executed if stream is not None else 0
+        self.runner.stop_short(
+            QCoreApplication.translate(
+                "GcodeDriver",
+                "The machine holds (a feed hold: its hold button, the Hold button here, or "
+                "a '!' that reached it on the wire): the job is paused at {0}. Resume lets "
+                "it go on (cycle start).",
+            ).format(self._where(program, where) if program is not None else "?")
+        )
 
     def _status_to(self, stream: GcodeStream, report: StatusReport) -> None:
         """The report to the stream, with the stream as it was when the report was read."""
@@ -532,7 +579,12 @@ class GcodeDriver(JobDriver):
             self._asked_since_recheck = False
             session.soft_reset()
             return
-        if report.state != "Idle":
+        # Idle alone is no proof: between two lines the board says Idle with the next one
+        # still in its buffer, and a way back sent then would run after it.
+        verdict = self._standing.judge(report, session.planner_size, stream.settings.rx_buffer)
+        if verdict is Standing.ASK_AGAIN:
+            session.query_status()
+        if verdict is not Standing.STANDS:
             return  # still finishing what it had: the next report decides
         here = self._here(report)
         # What is proven run: every answered line on a board that answers once a line ran;

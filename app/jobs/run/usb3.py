@@ -64,6 +64,7 @@ class Usb3Driver(SequentialDriver):
                 self._session.ticked.disconnect(self._on_tick)
                 self._session.settingsChanged.disconnect(self._forget_positions)
                 self._session.endSwitchHit.disconnect(self._on_end_switch)
+                self._session.moveRefused.disconnect(self._on_move_refused)
                 self._session.model.linkStateChanged.disconnect(self._forget_positions)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
@@ -80,6 +81,8 @@ class Usb3Driver(SequentialDriver):
             self._session.settingsChanged.connect(self._forget_positions)
             # Judged before the session's tick reaches _on_tick: the switch, not the silence.
             self._session.endSwitchHit.connect(self._on_end_switch)
+            # A move the unit could not read (?;): it never ran, and the link is fine.
+            self._session.moveRefused.connect(self._on_move_refused)
             # While nobody listens the unit may move (it runs its move out; its joystick).
             self._session.model.linkStateChanged.connect(self._forget_positions)
 
@@ -175,6 +178,28 @@ class Usb3Driver(SequentialDriver):
         self.runner.stop_short(
             f"{name} stopped at its {which} end switch at {mm:.3f} mm during "
             f"{self._source(index)}: the job is paused; check the machine before resuming"
+        )
+
+    def _on_move_refused(self, axis: int, mm: float) -> None:
+        """An axis of the operation under way never took its move (the unit answered ``?;``).
+
+        The job pauses saying so, not as a lost link; the resume asks where the
+        axes stand and moves them on toward the same absolute target, so the
+        axes that did move are not moved twice.
+        """
+        index = self.in_flight
+        if index is None or not self._judging() or axis not in self._expected:
+            return
+        if self.verifying:
+            return  # asking where it stands: the question's own answer decides
+        self._forget_move()
+        self._verify = True
+        name = self.station.profile.axes[axis].name
+        self.runner.stop_short(
+            f"The unit could not read the move of {name} at {self._source(index)} (it "
+            f"answered ?;, a byte lost or changed on the wire) and {name} stayed at "
+            f"{mm:.3f} mm: the job is paused; resume asks where the axes stand and moves "
+            "them on to the target"
         )
 
     def _on_tick(self) -> None:

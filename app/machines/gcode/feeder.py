@@ -113,6 +113,11 @@ class ReportSeen(Generic[T]):
 
     unanswered: list[T]
     job: object = None
+    #: The bytes of those lines (what the board's receive buffer can hold at most).
+    unanswered_bytes: int | None = None
+    #: Nothing waited to go and nothing for its answer as it was read: only then can the
+    #: report show the board standing after every line (those sent later went after it).
+    idle: bool | None = None
 
 
 @dataclass(frozen=True)
@@ -326,7 +331,10 @@ class LineFeeder(Generic[T]):
                 # went after it, so it says nothing about them (lost answers).
                 job = self.job
                 verdict = ReportSeen(
-                    self.streamer.unanswered_tags(), None if job is None else job.reported()
+                    self.streamer.unanswered_tags(),
+                    None if job is None else job.reported(),
+                    self.streamer.in_flight_bytes,
+                    self.streamer.idle,
                 )
             elif isinstance(reply, AlarmReply):
                 self.unseen += 1

@@ -40,6 +40,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.envelope import Envelope
+from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.feeder import (
     STALE,
     WROTE,
@@ -53,6 +54,7 @@ from app.machines.gcode.feeder import (
 )
 from app.machines.gcode.line_targets import line_motion
 from app.machines.gcode.planned_path import PlannedPath
+from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.motion_gate import Refusal
 from app.machines.session import PENDING, MachineSession
 from app.machines.supervision import MotionFault, fault_text
@@ -208,6 +210,10 @@ class GcodeSession(MachineSession):
         #: The lines unanswered through every drained report so far (see _check_lost_answers).
         self._lost_candidates: list[SentLine] = []
         self._stall_told = False
+        #: A line cut on the wire, its start stuck in the board's buffer (stuck_line.py).
+        self._stuck = StuckLineWatch(clock, settings.rx_buffer)
+        #: The board's buffer against the bytes counted unanswered (byte_count.py).
+        self._byte_count = ByteCount(settings.rx_buffer)
         #: The motors were released for zeroing by hand and nothing was sent since.
         self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
@@ -775,6 +781,7 @@ class GcodeSession(MachineSession):
         self._jog_target = None
         self._jog_cancelling = False
         self._quiet_stop = False
+        self._byte_count.forget()
         with self.feeder.lock:
             return self.feeder.clear()
 
@@ -817,6 +824,7 @@ class GcodeSession(MachineSession):
         self.envelope.release()  # judged again from where it stands once idle
         self._planned.reset_modes()
         lost = self.feeder.clear()
+        self._byte_count.forget()
         self._seen_idle = False
         self._jog_unanswered = 0
         self.reset.emit()
@@ -829,6 +837,7 @@ class GcodeSession(MachineSession):
         with self.feeder.lock:
             self.feeder.clear()
             self.feeder.reset_halt()
+        self._byte_count.forget()
         self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
@@ -903,7 +912,11 @@ class GcodeSession(MachineSession):
                 self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
             elif isinstance(reply, StatusReport):
                 if isinstance(verdict, ReportSeen):
-                    self._apply_status(reply, verdict.unanswered, verdict.job)
+                    if self._count_broken(reply, verdict.unanswered, verdict.unanswered_bytes):
+                        continue
+                    self._apply_status(
+                        reply, verdict.unanswered, verdict.job, idle_then=verdict.idle
+                    )
                 else:
                     self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
@@ -1022,6 +1035,20 @@ class GcodeSession(MachineSession):
         """
         if unanswered is None:
             unanswered = self.streamer.unanswered_tags()
+        pausing = any(_pauses(sent.text) for sent in unanswered)
+        stuck = self._stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
+        if stuck is not None:
+            self._drained_since, self._drained_reports = None, 0
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "The board holds {0} byte(s) of a line whose end never came (lost on the "
+                    "way) and waits for it: it stands idle, so it is reset, keeping its "
+                    "position, and what it ran is looked at again",
+                ).format(stuck)
+            )
+            self.soft_reset()
+            return
         if self._drained_since is not None:
             unanswered = [sent for sent in unanswered if sent in self._lost_candidates]
         if not unanswered or report.state != "Idle":
@@ -1047,6 +1074,20 @@ class GcodeSession(MachineSession):
             and (waited >= LOST_ANSWER_AFTER_S)
         ):
             self._drained_since, self._drained_reports = None, 0
+            if self._short_of_lines_sent(report):
+                # Not their answers but the lines themselves were lost: the board stands
+                # short of where they end.  Reset (it stands: its position stays) and let
+                # the job look at it and go on from what is proven.
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "GcodeSession",
+                        "{0} line(s) sent never reached the board: it has taken every byte "
+                        "it got and stands idle short of where they end; it is reset, "
+                        "keeping its position, and what it ran is looked at again",
+                    ).format(len(unanswered))
+                )
+                self.soft_reset()
+                return
             self.model.message.emit(
                 f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
                 "taken and run every line sent, so they count as answered"
@@ -1075,9 +1116,12 @@ class GcodeSession(MachineSession):
         report: StatusReport,
         unanswered: list[SentLine] | None = None,
         job: object = None,
+        *,
+        idle_then: bool | None = None,
     ) -> None:
-        """``unanswered`` and ``job``: the lines unanswered and the job's snapshot as the
-        report was read (on the reader thread; None: read now)."""
+        """``unanswered``, ``job`` and ``idle_then``: the lines unanswered, the job's snapshot
+        and whether nothing waited to go, as the report was read (on the reader thread;
+        None: read now)."""
         self._status_asked_at = None
         self.job_at_report = job
         # A work position without any offset heard yet is no machine position.
@@ -1120,7 +1164,11 @@ class GcodeSession(MachineSession):
             or not self._planner_size
             or report.planner_free >= self._planner_size
         )
-        if report.state == "Idle" and self.streamer.idle and planner_empty:
+        # Idle as it was read too: a report read before the last lines went (a burst of held
+        # replies, handled here after the reader thread sent them and counted their answers)
+        # says nothing of them.
+        idle = self.streamer.idle and idle_then is not False
+        if report.state == "Idle" and idle and planner_empty:
             self._seen_idle = True
             # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
             offset_known = self.work_offset is not None or not self.jogs_with_command
@@ -1147,6 +1195,32 @@ class GcodeSession(MachineSession):
             if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
                 self._report_after_silence = report
             self._check_recovery()
+
+    def _short_of_lines_sent(self, report: StatusReport) -> bool:
+        """Whether an idle board stands off where the lines written end (as far as known)."""
+        end = self.envelope.end
+        if end is None or len(report.mpos) < self.axis_count:
+            return False
+        here = report.mpos[: self.axis_count]
+        return any(abs(a - b) > self.envelope.tolerance for a, b in zip(here, end, strict=False))
+
+    def _count_broken(
+        self, report: StatusReport, unanswered: list[SentLine], unanswered_bytes: int | None
+    ) -> bool:
+        """The board holds more than was sent and not answered: stop before it runs it."""
+        extra = self._byte_count.excess(report, unanswered_bytes)
+        if extra is None or self.stopping:
+            return False
+        self._byte_count.forget()  # one stop, one message
+        job = next((s.op_index for s in unanswered if s.origin == "job"), None)
+        text = QCoreApplication.translate(
+            "GcodeSession",
+            "The board holds {0} byte(s) more than were sent and not answered (a line or an "
+            "answer arrived twice on the way): the lines it holds may be garbled, so it is "
+            "stopped before it runs them",
+        ).format(extra)
+        self._stop_for_fault(MotionFault(text, job))
+        return True
 
     def _supervise(self, report: StatusReport) -> None:
         """A report off the path of the lines written stops the machine, naming the line."""

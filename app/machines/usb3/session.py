@@ -110,6 +110,9 @@ class Usb3Session(MachineSession):
     settingsChanged = Signal()
     #: An axis stopped at an end switch: axis index, "low" or "high", position in mm.
     endSwitchHit = Signal(int, str, float)
+    #: The unit answered ``?;`` and an axis never left where its move began: the move was
+    #: the command it could not read.  Axis index, position in mm.
+    moveRefused = Signal(int, float)
 
     def __init__(
         self,
@@ -138,6 +141,10 @@ class Usb3Session(MachineSession):
         #: Per axis: the count the moves sent are heading for, their direction and when the
         #: last was sent (None: no move of the station's under way).
         self._heading: list[tuple[int, int, float] | None] = [None] * 3
+        #: Per axis: the count it stood at when a move was sent to it at rest (None: none).
+        self._move_from: list[int | None] = [None] * 3
+        #: Station-clock time of the unit's last ``?;`` (None: none on this link).
+        self._refused_at: float | None = None
         #: The direction register as the station last set it (``D``).
         self._signs: list[int] = [1, 1, 1]
         #: Station-clock time of each axis's last position report.
@@ -444,6 +451,7 @@ class Usb3Session(MachineSession):
             if heading is None and axis < self.axis_count and self._zeroing[axis]:
                 base = 0  # counted from the zero C; set, whose report is still to come
             sign = self._signs[axis]
+            self._move_from[axis] = base if heading is None else None
             self._heading[axis] = (base + sign * message.count, sign, self.clock.now())
             self._expect(axis, heading is None, base, base + sign * message.count)
         elif isinstance(message, StopAll | ZeroAll):
@@ -522,6 +530,8 @@ class Usb3Session(MachineSession):
             if reported is None or reported < sent_at or now - reported < STILL_AFTER_S:
                 continue  # not heard since the move went out, or not silent long enough
             count = self._counts[axis]
+            if self._refused(axis, sent_at, count):
+                continue
             if (target - count) * sign < StepSize.FULL.counts_per_pulse:
                 # There, past it (the unit's joystick took over), or less than a full step
                 # short: a unit whose step size changed on its menu rounds a move down.
@@ -545,6 +555,39 @@ class Usb3Session(MachineSession):
             )
             self.endSwitchHit.emit(axis, which, position)
 
+    def _refused(self, axis: int, sent_at: float, count: int) -> bool:
+        """An axis silent where its move began, after a ``?;`` since the move went out: the
+        unit could not read the move (a byte lost or flipped on the wire), so it never ran.
+
+        Not an end switch, and not a move still to come: the axis counts from where it
+        stands again, and whoever sent the move hears of it (:attr:`moveRefused`).
+        """
+        refused_at = self._refused_at
+        if refused_at is None or refused_at < sent_at or self._move_from[axis] != count:
+            return False
+        self._heading[axis] = None
+        self._move_from[axis] = None
+        self._envelopes[axis].anchor((count,))
+        position = count_to_mm(count, self.threads[axis])
+        name = self.model.axes[axis].name
+        self.model.message.emit(
+            f"The unit could not read the move of {name} (it answered ?;) and did not "
+            f"move it: {name} stands at {position:.3f} mm"
+        )
+        self.moveRefused.emit(axis, position)
+        return True
+
+    def _ask_after_refusal(self) -> None:
+        """``?;``: an axis sent a move and not heard since may be the one that did not take it;
+        asked where it stands, its answer (and then its silence) tells."""
+        waiting = []
+        for axis, heading in enumerate(self._heading[: self.axis_count]):
+            reported = self._reported_at[axis]
+            if heading is not None and (reported is None or reported < heading[2]):
+                waiting.append(axis)
+        if waiting:
+            self.request_positions(waiting)
+
     @staticmethod
     def _triple(values: Sequence[_T], default: _T) -> Triple[_T]:
         """Three values for the wire, whatever the profile's axis count."""
@@ -559,6 +602,8 @@ class Usb3Session(MachineSession):
         self._zeroing = [False] * self.axis_count
         self._asking = [False] * self.axis_count
         self._heading = [None] * 3
+        self._move_from = [None] * 3
+        self._refused_at = None
         self._reported_at = [None] * 3
         for envelope in self._envelopes:
             envelope.release()
@@ -613,6 +658,8 @@ class Usb3Session(MachineSession):
                     self.settingsChanged.emit()
             elif isinstance(reply, NotUnderstood):
                 self.model.message.emit("The unit did not understand a command (?;)")
+                self._refused_at = self._last_heard
+                self._ask_after_refusal()
             # Any word from the unit settles an axis left silent short of its target: a
             # switch, said before a job's own question about that axis is answered.
             self._check_end_switches(self._last_heard)
