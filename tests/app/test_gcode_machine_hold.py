@@ -17,8 +17,8 @@ from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.transport.loopback import Direction
+from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, zigzag
 from tests.helpers.harness import StationHarness
-from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, zigzag
 
 
 def test_a_space_flipped_into_a_feed_hold_pauses_the_job_and_resume_goes_on(

@@ -18,8 +18,8 @@ from app.jobs.program import Program
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile, load_profile
 from protocol.transport.loopback import Direction
+from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 from tests.helpers.harness import StationHarness
-from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 
 
 @pytest.mark.parametrize("seconds", [3.0, 6.0], ids=["3s", "6s-given-up"])

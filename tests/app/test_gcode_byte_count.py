@@ -25,8 +25,8 @@ from pytestqt.qtbot import QtBot
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from protocol.transport.loopback import Direction
+from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 from tests.helpers.harness import StationHarness
-from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 
 
 def _strokes_drawn_are_the_jobs(harness: StationHarness) -> None:

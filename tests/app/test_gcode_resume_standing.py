@@ -26,8 +26,8 @@ from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.gcode.codec import StatusReport
 from protocol.transport.loopback import Direction
+from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 from tests.helpers.harness import StationHarness
-from tests.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 
 #: One control cycle of the emulated boards (GcodeConfig.control_cycle).
 CYCLE_S = 0.005
