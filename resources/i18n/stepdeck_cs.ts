@@ -1602,7 +1602,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>status query</source>
-        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. A word whose number is written with an exponent (``X1e308``): G-code reads it as two words. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5). Their names are translated where they are shown.</extracomment>
+        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A word whose number is written with an exponent (``X1e308``): G-code reads it as two words. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5), the only codes a bare value (a number with no letter) follows. A bare value as a file may write it: unsigned, a digit first. Their names are translated where they are shown.</extracomment>
         <translation>dotaz na stav</translation>
     </message>
     <message>
