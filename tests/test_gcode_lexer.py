@@ -160,6 +160,9 @@ def test_the_gate_places_a_move_where_grbl_goes() -> None:
     motion = line_motion("G91 (to G90 X5", False, here, ("X",))
     assert motion.relative_after and motion.targets == {}
     assert line_motion("G91 G0 X5 (G90", False, here, ("X",)).targets == {"X": 105.0}
+    # GRBL drops spaces before it looks for "$": this is a jog, and it is placed.
+    jog = line_motion(" $ j=g91 x 5 f100", False, here, ("X",))
+    assert jog.targets == {"X": 105.0} and not jog.relative_after
 
 
 # -- the hostile corpus through all three readers --------------------------------------------

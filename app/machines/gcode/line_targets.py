@@ -9,8 +9,8 @@ coordinates (G92, G10) or home (G28, ``$H``) move nothing this check can
 place, and are let through.
 
 The line is read by the one G-code lexer (:func:`protocol.gcode.words.scan_words`)
-as GRBL reads it: an unclosed ``(`` comments out the rest, spaces inside a
-number do not split it (``X1 000`` is X1000), and what is not a word is
+as GRBL reads it: an unclosed ``(`` comments out the rest, spaces do not
+count (``X1 000`` is X1000, ``$ J=`` a jog), and what is not a word is
 skipped rather than refused, so the gate never places a move short of where
 the board would go; whether the board takes the line is the board's to answer.
 """
@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from protocol.gcode.words import scan_words
+from protocol.gcode.words import grbl_text, scan_words
 
 _INCH = 25.4
 #: Words after which axis letters are not a destination.
@@ -42,7 +42,7 @@ def line_motion(
     line: str, relative: bool, position: Mapping[str, float], axes: tuple[str, ...]
 ) -> LineMotion:
     """The targets of ``line`` for a machine at ``position`` in the given distance mode."""
-    text = line.strip().upper()
+    text = grbl_text(line)  # GRBL's reading: "$ J=" is a jog too
     jog = text.startswith("$J=")
     if jog:
         text = text[3:]

@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 
 from app.machines.envelope import Envelope, arc_box
-from protocol.gcode.words import scan_words, strip_comments
+from protocol.gcode.words import grbl_text, scan_words
 
 _INCH = 25.4
 #: G codes whose motion or coordinates the station cannot follow: the envelope lets go.
@@ -67,7 +67,7 @@ class PlannedPath:
 
     def line(self, text: str, label: str, tag: object = None) -> None:
         """One line written to the board: its motion joins the envelope."""
-        code = strip_comments(text).strip().upper()
+        code = grbl_text(text)  # GRBL's reading: "$ J=" is a jog, "$ H" homing
         jog = code.startswith("$J=")
         if jog:
             code = code[3:]
