@@ -105,6 +105,38 @@ def test_the_emulators_grbl_line_is_the_lexers_grbl_text_within_grbls_buffer() -
     assert grbl_line(b"G1 X1" + b" " * 200 + b"(long comment)\n") == "G1X1"
 
 
+def _grbl_protocol_c(raw: bytes) -> str | None:
+    """GRBL 1.1's protocol.c loop, byte by byte: what its parser gets (None: overflow)."""
+    kept: list[str] = []
+    in_parens = in_semicolon = False
+    for byte in raw:
+        char = chr(byte)
+        if char in "\r\n":
+            break
+        if in_parens or in_semicolon:
+            in_parens = in_parens and char != ")"
+            continue
+        if byte <= 0x20 or char == "/":
+            continue
+        if char == "(":
+            in_parens = True
+        elif char == ";":
+            in_semicolon = True
+        elif len(kept) >= 80 - 1:
+            return None
+        else:
+            kept.append(char.upper() if "a" <= char <= "z" else char)
+    return "".join(kept)
+
+
+@given(
+    st.binary(max_size=100).map(lambda b: b.replace(b"\n", b""))
+    | st.text("GXy1 .-()/;\t\ra").map(str.encode)
+)
+def test_the_lexers_grbl_reading_is_grbls_protocol_loop(raw: bytes) -> None:
+    assert grbl_line(raw + b"\n") == _grbl_protocol_c(raw + b"\n")
+
+
 def test_line_code_takes_off_comment_line_number_and_checksum() -> None:
     assert line_code("N120 G1 X1 (move) *57 ") == "G1 X1"
     assert take_line_number("n 007 G0") == ("007", "G0")
