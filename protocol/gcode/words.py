@@ -3,8 +3,8 @@
 Three readers build on it, so they agree on what a word is: the emulator,
 which executes the words as a board would; the job parser, which checks a
 file's lines before any is sent; and the console's motion gate, which places
-a typed line before it goes.  GRBL 1.1 (``tests/third_party/grbl``,
-``protocol.c`` and ``gcode.c``) is the judge where they could differ:
+a typed line before it goes.  GRBL 1.1 (its ``protocol.c`` and ``gcode.c``)
+is the judge where they could differ:
 
 * a word is a letter and a number, case and spaces between them aside
   (``x 10`` is ``X10``); a number is a sign, digits and one decimal point,
