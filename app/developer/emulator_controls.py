@@ -16,8 +16,8 @@ from PySide6.QtCore import QObject, Signal
 from app.machine import LinkState
 from app.station import Station
 from protocol.emulator.device import EmulatedDevice
-from protocol.emulator.mechanism import SwitchName as SwitchName  # the pane names its buttons by it
 from protocol.emulator.stage_firmware import StageFirmware
+from protocol.mechanism import SwitchName as SwitchName  # the pane names its buttons by it
 from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId
 

@@ -5,7 +5,7 @@ alone, so the station's drill session and the Excellon jobs can be run and
 tested with no machine attached, and so a test can check which holes were
 really drilled where (:attr:`DrillFirmware.drill_log`).
 
-The axes are the mechanism :class:`~protocol.emulator.mechanism.Axis` run in
+The axes are the mechanism :class:`~protocol.mechanism.Axis` run in
 *microstep* units instead of micrometres.  The reference machine steps every
 axis at one constant period per microstep (no ramps), so each Axis gets its
 speed as its start speed: it jumps to full speed and stops dead, and a move of
@@ -89,7 +89,7 @@ from protocol.drill.codec import (
 )
 from protocol.drill.timing import DRILL_OVERTRAVEL, DrillTiming
 from protocol.emulator.cycles import ControlCycles
-from protocol.emulator.mechanism import Axis, AxisLimits
+from protocol.mechanism import Axis, AxisLimits
 
 #: Tolerance for comparing times built from float sums.
 _EPS = 1e-9

@@ -107,7 +107,7 @@ from protocol.emulator.gcode_planner import (
 )
 from protocol.emulator.servo_pwm import pulse_width_s
 from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
-from protocol.gcode.words import Word, WordError, split_words, strip_comments
+from protocol.gcode.words import Word, WordError, grbl_text, split_words, strip_comments
 
 __all__ = [
     "LOG_LENGTH",
@@ -162,26 +162,9 @@ def grbl_line(raw: bytes) -> str | None:
     Whitespace and control characters, ``/`` and comments (``(...)`` and ``;``
     to the end) are dropped as they arrive and never count towards the line.
     """
-    kept: list[str] = []
-    in_parens = in_semicolon = False
-    for byte in raw:
-        char = chr(byte)
-        if char in "\r\n":
-            break
-        if in_parens or in_semicolon:
-            in_parens = in_parens and char != ")"
-            continue
-        if byte <= 0x20 or char == "/":
-            continue
-        if char == "(":
-            in_parens = True
-        elif char == ";":
-            in_semicolon = True
-        elif len(kept) >= GRBL_LINE - 1:
-            return None
-        else:
-            kept.append(char.upper())
-    return "".join(kept)
+    text = raw.decode("latin-1").replace("\r", "\n").split("\n", 1)[0]
+    kept = grbl_text(text)
+    return kept if len(kept) <= GRBL_LINE - 1 else None
 
 
 def _axis_values(values: tuple[float, ...]) -> str:

@@ -65,6 +65,7 @@ NO_AXIS_WORDS = 26
 INVALID_LINE_NUMBER = 27
 VALUE_WORD_MISSING = 28
 UNUSED_WORDS = 36
+MAX_VALUE_EXCEEDED = 38
 NO_AXIS_WORDS_IN_PLANE = 32
 INVALID_TARGET = 33
 ARC_RADIUS_ERROR = 34
@@ -212,8 +213,16 @@ class Interpreter:
                     return WORD_REPEATED
                 line.values[letter] = value
             elif letter == "T" and self.config.grbl:
-                if not value.is_integer() or not 0 <= value <= _MAX_TOOL:
-                    return NEGATIVE_VALUE if value < 0 else UNSUPPORTED
+                # GRBL 1.1's order (gcode.c): the bound, the repeat, the sign.  (GRBL truncates
+                # a fraction, T1.5 is tool 1; the emulator refuses it as unsupported.)
+                if value > _MAX_TOOL:
+                    return MAX_VALUE_EXCEEDED
+                if letter in line.values:
+                    return WORD_REPEATED
+                if value < 0:
+                    return NEGATIVE_VALUE
+                if not value.is_integer():
+                    return UNSUPPORTED
                 line.values[letter] = value  # GRBL takes a tool number and does nothing with it
             else:
                 return UNSUPPORTED  # T, H, L, another machine's axis...

@@ -23,7 +23,7 @@ from types import MappingProxyType
 from protocol.clock import Clock
 from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.fram import Fram
-from protocol.emulator.mechanism import Axis, AxisLimits, AxisState, SwitchName
+from protocol.mechanism import Axis, AxisLimits, AxisState, SwitchName
 from protocol.stage.codec import (
     DATA_MAX,
     DATA_MIN,

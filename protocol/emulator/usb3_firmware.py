@@ -5,7 +5,7 @@ so the station's usb3 session can be developed and tested with no unit
 attached, and so a test can play the unit's own menu and joystick, which the
 station only ever sees as unprompted replies.
 
-The motors are the mechanism :class:`~protocol.emulator.mechanism.Axis`, run in
+The motors are the mechanism :class:`~protocol.mechanism.Axis`, run in
 *count* units (1/32 step) instead of micrometres: the unit's speed table is in
 driver pulses per second, and a pulse moves ``32 / 2^m`` counts at step size
 1/2^m, so every speed and the acceleration are the pulse figures times that.
@@ -61,7 +61,7 @@ from itertools import pairwise
 
 from protocol.clock import Clock
 from protocol.emulator.cycles import ControlCycles
-from protocol.emulator.mechanism import Axis, AxisLimits, SwitchName
+from protocol.mechanism import Axis, AxisLimits, SwitchName
 from protocol.usb3.codec import (
     AxisId,
     Command,

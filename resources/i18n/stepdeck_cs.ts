@@ -1745,7 +1745,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>status query</source>
-        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A number as G-code writes it: ``1``, ``-1.``, ``+.5``, ``12.345``. A word whose number is written with an exponent (``X1e308``): G-code reads it as two words. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5). Their names are translated where they are shown.</extracomment>
+        <extracomment>The longest line a board takes, without its line end (docs/protocols.md §4: 80 bytes). A word whose number is written with an exponent (``X1e308``): G-code reads it as two words. ``M98 800`` / ``M99 90``: the CoreXY plotter&apos;s step interval and servo level (docs/protocols.md §4.5), the only codes a bare value (a number with no letter) follows. A bare value as a file may write it: unsigned, a digit first. Their names are translated where they are shown.</extracomment>
         <translation>dotaz na stav</translation>
     </message>
     <message>
@@ -2732,7 +2732,7 @@ Načíst jako:</translation>
     <name>JogInput</name>
     <message>
         <source>Jog refused: {0}</source>
-        <extracomment>Key → (axis index, direction). PageUp/PageDown only act on a machine with a Z axis. How often a held on-screen button is checked for still being held (the dead-man&apos;s sign). The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
+        <extracomment>The jog vector (one -1/0/+1 per axis) after every change. The jog the held arrow keys alone ask for (one -1/0/+1 per axis), after every change: the on-screen button for that direction shows itself pressed. Stop (Esc, a Stop button) was asked, before the session is told: a job under way must end with it, or it would set the machine going again on its own. Whether this machine jogs at all: if not, no key is a jog key. Why input is refused while disabled (said when a key or button is pressed anyway). What a tap of an arrow key moves; 0: the key jogs while held (see ``set_key_step``).</extracomment>
         <translation>Ruční posuv odmítnut: {0}</translation>
     </message>
 </context>

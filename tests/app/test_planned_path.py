@@ -80,6 +80,17 @@ def test_a_jog_leaves_the_boards_modes_alone() -> None:
     assert envelope.end == (2.0, 5.0)
 
 
+def test_lines_are_read_as_grbl_reads_them() -> None:
+    """Spaces do not count (a spaced jog is a jog, a spaced number one number), and an
+    unclosed comment hides the rest of its line (tests/test_gcode_lexer.py)."""
+    planned = path(at=(5.0, 5.0))
+    planned.line(" $ J = G91 X 1 F3000", "spaced jog")
+    planned.line("G1 X1 0 F100 (Y90", "spaced number")
+    envelope = planned.envelope
+    assert envelope.check((6.0, 5.0)) is None
+    assert envelope.end == (10.0, 5.0)
+
+
 def test_drivers_off_dwell_and_settings_are_no_motion() -> None:
     planned = path(at=(5.0, 5.0))
     for line in ("M18 X0", "G4 P0.5", "$$", "M3 S1000", "F3000", "$X"):

@@ -18,16 +18,9 @@ import serial
 from protocol.clock import ManualClock
 from protocol.drill.codec import HOME as DRILL_HOME
 from protocol.drill.codec import encode_command as encode_drill_command
-from protocol.emulator.__main__ import (
-    ControlChannel,
-    LinkError,
-    ScaledClock,
-    main,
-    make_link,
-    open_pty,
-    pump,
-    remove_link,
-)
+from protocol.emulator.cli import ScaledClock, main
+from protocol.emulator.controls import ControlChannel
+from protocol.emulator.pty import LinkError, make_link, open_pty, pump, remove_link
 from protocol.emulator.stage_firmware import StageFirmware
 from protocol.emulator.usb3_firmware import ADC_CENTRE, Usb3Firmware
 from protocol.stage.codec import (

@@ -13,7 +13,8 @@ import pytest
 import serial
 
 from protocol.clock import ManualClock
-from protocol.emulator.__main__ import PROFILES, ControlChannel
+from protocol.emulator.cli import PROFILES
+from protocol.emulator.controls import ControlChannel
 from protocol.emulator.gcode_firmware import GcodeFirmware
 from protocol.gcode import (
     AlarmReply,

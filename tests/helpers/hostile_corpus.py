@@ -603,6 +603,31 @@ def _cases() -> list[Case]:
             Refused("x.gcode:2", "malformed"),
         )
     )
+    # Digits are ASCII, as GRBL reads them: an Arabic-Indic one is no number (it crashed the
+    # plain-move fast path before the one lexer).
+    add(
+        Case(
+            "gcode-non-ascii-digit",
+            "d.gcode",
+            "G0 X1 Y1 F100\nG1 X\u0661 Y1\n",
+            g,
+            Refused("d.gcode:2", "malformed"),
+        )
+    )
+    # An unclosed comment runs to the end of the line, as on GRBL: Y500 is no destination.
+    add(
+        Case("gcode-unclosed-comment", "c.gcode", "G0 X1 Y1 F100\nG1 X5 (note Y500\n", g, Loaded(2))
+    )
+    # Spaces inside a number: GRBL reads X10, the parser refuses the line rather than guess.
+    add(
+        Case(
+            "gcode-space-inside-number",
+            "s.gcode",
+            "G0 X1 Y1 F100\nG1 X1 0\n",
+            g,
+            Refused("s.gcode:2", "malformed"),
+        )
+    )
 
     add(
         Case(

@@ -55,7 +55,7 @@ def test_a_paced_line_woken_once_a_cycle_delivers_at_the_wire_rate_not_faster(
 ) -> None:
     """The serving loop wakes per control cycle, not per byte: bytes waiting on the line
     count their whole time (no 16-byte cap between wakes), and never more than the rate."""
-    from protocol.emulator import __main__ as emulator
+    from protocol.emulator import pty as emulator
 
     now = [100.0]
     monkeypatch.setattr(emulator.time, "monotonic", lambda: now[0])
@@ -76,7 +76,7 @@ def test_a_paced_line_woken_once_a_cycle_delivers_at_the_wire_rate_not_faster(
 
 
 def test_an_idle_paced_line_is_still_no_burst_reservoir(monkeypatch: pytest.MonkeyPatch) -> None:
-    from protocol.emulator import __main__ as emulator
+    from protocol.emulator import pty as emulator
 
     now = [100.0]
     monkeypatch.setattr(emulator.time, "monotonic", lambda: now[0])

@@ -575,6 +575,9 @@ def test_grbl_status_mask_leaves_out_the_buffers_as_a_fresh_board_does() -> None
         ("M98 100", 20),  # the plotter's code, not GRBL's
         ("A10", 20),  # no A on a plotter
         ("T1.5", 20),
+        ("T256 M6", 38),  # GRBL's bound on a tool number
+        ("T1 T2", 25),
+        ("T-1", 4),
         ("G1 X1.2.3 F100", 1),
         ("10", 1),
         ("G1 X F100", 2),

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from protocol.emulator.mechanism import Axis, AxisLimits, AxisState
+from protocol.mechanism import Axis, AxisLimits, AxisState
 
 TRAVEL = 50_000.0
 MICROSTEP = 0.3125  # 1000 µm lead / (200 steps * 16)

@@ -17,7 +17,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("app", "widgets", "protocol", "stepdeck")
 #: StepDeck's modules that may need a POSIX system to be imported, and why.  Empty: the
-#: emulator's pty serving (protocol/emulator/__main__.py) imports ``tty`` only when it
+#: emulator's pty serving (protocol/emulator/pty.py) imports ``tty`` only when it
 #: starts serving, and says in one line why it cannot where there is none.
 POSIX_ONLY_MODULES: dict[str, str] = {}
 TIMEOUT_S = 300

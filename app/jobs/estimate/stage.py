@@ -1,7 +1,7 @@
 """How long a program takes on the XY stage, found by replaying it on the emulator's mechanism.
 
 Rather than a second, simpler motion model that would drift from the device,
-the program is replayed on the same :class:`~protocol.emulator.mechanism.Axis`
+the program is replayed on the same :class:`~protocol.mechanism.Axis`
 the firmware emulator runs: trapezoids, start-speed jumps and triangular
 short moves come out exactly as the device does them, at the speed its step
 timer's whole PSC/ARR really give.  Each move is one
@@ -24,7 +24,7 @@ from collections.abc import Mapping
 from app.jobs.estimate.model import Estimate, Parameters
 from app.jobs.program import OpKind, Program
 from app.profiles import MachineProfile
-from protocol.emulator.mechanism import Axis, AxisLimits
+from protocol.mechanism import Axis, AxisLimits
 from protocol.stage.codec import EchoType
 from protocol.stage.driver import quantised_speed
 

@@ -44,6 +44,7 @@ from app.jobs.program import Operation, OpKind, Program, ProgramPath
 from app.jobs.render.gcode import feed_for, render_operation
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import GcodeSettings, MachineProfile
+from protocol.gcode.words import scan_words
 
 #: Lines handed to the session beyond those it can send at once, when the GUI thread feeds it
 #: (:meth:`GcodeStream.feed`: single steps; a running job is pulled by the session's feeder
@@ -105,8 +106,6 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     return ResumeState(position, pen_down=bool(last_down > last_up))
 
 
-_COMMENT = re.compile(r"\([^)]*\)|;.*")
-_WORD = re.compile(r"([A-Za-z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 #: What a G92 line has (a literal search: a word pattern would be 20 times slower); lines
 #: where it is a coordinate's digits are told apart by their words.
 _G92_TEXT = re.compile(r"92(?![0-9])")
@@ -154,7 +153,7 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
         return offset
     path = None if hasattr(data, "positions") else program.path(axes)
     for k in candidates:
-        words = [(w.upper(), float(v)) for w, v in _WORD.findall(_COMMENT.sub("", texts[k]))]
+        words = scan_words(texts[k])
         codes = {v for w, v in words if w == "G"}
         if 92.1 in codes:
             offset = dict.fromkeys(axes, 0.0)

@@ -7,16 +7,21 @@ distance mode in force (tracked from every line the station sent), G90/G91
 and G20/G21 on the line itself, ``$J=`` jogs and G53.  Lines that set
 coordinates (G92, G10) or home (G28, ``$H``) move nothing this check can
 place, and are let through.
+
+The line is read by the one G-code lexer (:func:`protocol.gcode.words.scan_words`)
+as GRBL reads it: an unclosed ``(`` comments out the rest, spaces do not
+count (``X1 000`` is X1000, ``$ J=`` a jog), and what is not a word is
+skipped rather than refused, so the gate never places a move short of where
+the board would go; whether the board takes the line is the board's to answer.
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-_COMMENT = re.compile(r"\([^)]*\)|;.*")
-_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+from protocol.gcode.words import grbl_text, scan_words
+
 _INCH = 25.4
 #: Words after which axis letters are not a destination.
 _NOT_A_MOVE = frozenset({"G4", "G10", "G28", "G30", "G92"})
@@ -37,13 +42,13 @@ def line_motion(
     line: str, relative: bool, position: Mapping[str, float], axes: tuple[str, ...]
 ) -> LineMotion:
     """The targets of ``line`` for a machine at ``position`` in the given distance mode."""
-    text = line.strip().upper()
+    text = grbl_text(line)  # GRBL's reading: "$ J=" is a jog too
     jog = text.startswith("$J=")
     if jog:
         text = text[3:]
     elif text.startswith("$"):
         return LineMotion({}, relative)
-    words = [(letter, float(number)) for letter, number in _WORD.findall(_COMMENT.sub("", text))]
+    words = scan_words(text)
     codes = {f"{letter}{number:g}" for letter, number in words if letter in "GM"}
     mode = relative
     if "G90" in codes:

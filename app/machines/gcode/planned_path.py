@@ -16,18 +16,19 @@ settings (``G54``…, ``G10``), ``G92.1`` and planes other than G17 *release*
 the envelope, and nothing is judged until the machine next stands idle with
 every line answered, where the session anchors it again.
 
+Lines are read by the one G-code lexer as GRBL reads them
+(:func:`protocol.gcode.words.scan_words`), as the console's gate reads them.
+
 Pure logic, no Qt: the session feeds it the lines it wrote.
 """
 
 from __future__ import annotations
 
 import math
-import re
 
 from app.machines.envelope import Envelope, arc_box
+from protocol.gcode.words import grbl_text, scan_words
 
-_COMMENT = re.compile(r"\([^)]*\)|;.*")
-_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 _INCH = 25.4
 #: G codes whose motion or coordinates the station cannot follow: the envelope lets go.
 _UNFOLLOWED = frozenset(
@@ -66,7 +67,7 @@ class PlannedPath:
 
     def line(self, text: str, label: str, tag: object = None) -> None:
         """One line written to the board: its motion joins the envelope."""
-        code = _COMMENT.sub("", text.strip().upper())
+        code = grbl_text(text)  # GRBL's reading: "$ J=" is a jog, "$ H" homing
         jog = code.startswith("$J=")
         if jog:
             code = code[3:]
@@ -74,7 +75,7 @@ class PlannedPath:
             if code.startswith(("$H", "$RST", "$C")):
                 self.envelope.release()  # homing, settings reset, check mode: not followed
             return
-        words = [(letter, float(number)) for letter, number in _WORD.findall(code)]
+        words = scan_words(code)
         g_codes = {round(value, 1) for letter, value in words if letter == "G"}
         m_codes = {round(value, 1) for letter, value in words if letter == "M"}
         relative, inch = self.relative, self.inch

@@ -55,10 +55,11 @@ from app.jobs.formats.gcode.program import (
     GcodeProblem,
     GcodeProgram,
 )
-from app.jobs.formats.gcode.words import MAX_LINE_CHARS, split_comment
+from app.jobs.formats.gcode.words import MAX_LINE_CHARS
 from app.jobs.program import JobFileError
 from app.jobs.reading import read_job_text
 from app.profiles import GcodeSettings
+from protocol.gcode.words import split_comment
 
 __all__ = [
     "ARC_TOLERANCE_MM",

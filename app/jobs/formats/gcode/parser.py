@@ -51,9 +51,7 @@ from app.jobs.formats.gcode.program import (
 )
 from app.jobs.formats.gcode.state import Pending, State
 from app.jobs.formats.gcode.words import (
-    CHECKSUM,
     EXPONENT,
-    LINE_NUMBER,
     MAX_LINE_CHARS,
     MESSAGE_RE,
     PARAMETERS,
@@ -62,14 +60,13 @@ from app.jobs.formats.gcode.words import (
     TOKEN_CACHE_SIZE,
     WAIT_RE,
     Tokenizer,
-    Word,
     normal,
     render,
-    split_comment,
 )
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 from app.profiles import GcodeSettings
+from protocol.gcode.words import Word, split_comment, strip_checksum, take_line_number
 
 INCH_MM = 25.4
 
@@ -276,9 +273,8 @@ class Parser:
             return
         if code.startswith("%"):
             return
-        match = LINE_NUMBER.match(code)
-        if match:
-            digits = match.group().strip()[1:].strip()
+        digits, rest = take_line_number(code)
+        if digits is not None:
             significant = digits.lstrip("0") or "0"
             if len(significant) > 8 or int(significant) > MAX_LINE_NUMBER:
                 shown = (
@@ -294,8 +290,8 @@ class Parser:
                         "JobFile", "invalid line number: N{0} above N{1} (error:27)"
                     ).format(shown, MAX_LINE_NUMBER),
                 )
-            code = code[match.end() :]
-        code = CHECKSUM.sub("", code).strip()
+            code = rest
+        code = strip_checksum(code).strip()
         if not code:
             return
         replay = self.memo.get(code)

@@ -23,8 +23,9 @@ from collections import Counter
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from app.jobs.formats.gcode.words import PARAMETERS, WORD, Tokenizer, Word, line_code, normal
+from app.jobs.formats.gcode.words import PARAMETERS, Tokenizer, normal
 from app.profiles import GcodeSettings
+from protocol.gcode.words import WORD, Word, line_code
 
 #: Pen states (as stored per operation: pen down or not).
 UP, DOWN = 0, 1

@@ -18,8 +18,9 @@ import numpy.typing as npt
 from PySide6.QtCore import QCoreApplication
 
 from app.jobs.formats.gcode.state import State
-from app.jobs.formats.gcode.words import MAX_LINE_CHARS, NUMBER, plain_code
+from app.jobs.formats.gcode.words import MAX_LINE_CHARS, plain_code
 from app.jobs.program import JobFileError
+from protocol.gcode.words import NUMBER
 
 #: One record per line: group 1 is the G0/G1 digit of a plain move (a comment may follow),
 #: empty for any other line.

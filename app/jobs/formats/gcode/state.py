@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from app.jobs.formats.gcode.program import NO_MOTION, RAPID
-from app.jobs.formats.gcode.words import Word
+from protocol.gcode.words import Word
 
 
 @dataclass
