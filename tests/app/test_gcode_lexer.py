@@ -39,7 +39,7 @@ from protocol.gcode.words import (
     take_line_number,
     words_or_none,
 )
-from tests.hostile_corpus import CASES, Case, Loaded, Refused
+from tests.helpers.hostile_corpus import CASES, Case, Loaded, Refused
 
 REPO = Path(__file__).resolve().parents[2]
 LEXER = "protocol.gcode.words"

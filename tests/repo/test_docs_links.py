@@ -148,13 +148,13 @@ def test_a_link_to_a_missing_page_or_heading_is_found() -> None:
     page = ROOT / "docs" / "manual" / "planted.md"
     text = (
         "[there](window.md) [gone](gone.md) [heading](#planted) [nowhere](#nowhere)\n"
-        "![shot](../../resources/screenshots/nothing.png) [web](https://example.org/x)\n"
+        "![shot](../nothing.png) [web](https://example.org/x)\n"
         "`[in code](gone-too.md)`\n\n# Planted\n"
     )
     found = broken(page, text, {page: text})
     assert [hit.split(": ", 1)[1] for hit in found] == [
         "gone.md (no such file)",
         "#nowhere (no such heading)",
-        "../../resources/screenshots/nothing.png (no such file)",
+        "../nothing.png (no such file)",
     ]
     assert PurePosixPath(found[0].split(":")[0]) == PurePosixPath("docs/manual/planted.md")
