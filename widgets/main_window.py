@@ -56,7 +56,6 @@ from PySide6.QtWidgets import (
     QMessageBox,
     QPlainTextEdit,
     QPushButton,
-    QScrollArea,
     QTextEdit,
     QVBoxLayout,
     QWidget,
@@ -71,26 +70,20 @@ from app.settings import DOCKS_SHOWN, GEOMETRY, PAGE, WINDOW_STATE, StationSetti
 from app.station import Station
 from app.telemetry import TelemetryRecorder
 from app.version import station_version
-from protocol.drill.timing import DrillTiming
+from widgets.dialects import window_dialect
 from widgets.jog_input import JogInput
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
 from widgets.page_stack import PageArea, PageStack
-from widgets.panels.absolute import AbsolutePanel
 from widgets.panels.connection import ConnectionPanel
-from widgets.panels.drill import DrillPanel
-from widgets.panels.dynamics import DynamicsPanel
-from widgets.panels.gcode import GcodePanel
 from widgets.panels.info import InfoPanel
-from widgets.panels.manual import ManualPanel
 from widgets.panels.menu import MenuPanel
-from widgets.panels.relative import RelativePanel
 from widgets.panels.static import StaticPanel
-from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker, Texts
 from widgets.screen_fit import fitted
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
+from widgets.window.pages import DrillTimingMemory, Pages, build_pages
 
 if TYPE_CHECKING:
     from PySide6.QtWidgets import QDockWidget
@@ -228,77 +221,20 @@ class MainWindow(QMainWindow):
         # Scrolls up and down when the screen is short, so no page makes the window taller.
         self.page_area = PageArea(self.stack)
         self.menu_panel = MenuPanel(self.stack)
-        self.manual_panel = ManualPanel(station, self.jog)
+        self.dialect = window_dialect(station.profile)
+        # Held here: a signal keeps only a weak hold on a plain object's method.
+        self._drill_timing = DrillTimingMemory(station, self._settings, self._remembers)
+        self.pages = build_pages(
+            station,
+            self.jog,
+            self.dialect,
+            self._add_page,
+            self._drill_timing,
+        )
+        self.manual_panel = self.pages.manual
         self.manual_panel.set_key_step(self._machine_settings.jog_step)
         self.manual_panel.keyStepChanged.connect(self._remember_key_step)
-        self._add_page(
-            lambda: self.tr("&Manual"),
-            self.manual_panel,
-            lambda: self.tr("Hold-to-jog buttons, Home (Alt+M)"),
-        )
-        #: Every page with motion controls, for the motion lock.
-        self.motion_panels: list[
-            ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel
-        ] = [self.manual_panel]
-        if station.profile.dialect == "drill":
-            # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
-            self.drill_panel = DrillPanel(station)
-            self._restore_drill_timing()
-            self.drill_panel.timing_box.applied.connect(self._remember_drill_timing)
-            self._add_page(
-                lambda: self.tr("D&rill"),
-                self.drill_panel,
-                lambda: self.tr("Command buttons, X/Y, terminal (Alt+R)"),
-            )
-            self.motion_panels.append(self.drill_panel)
-        elif station.profile.dialect == "usb3":
-            self.usb3_panel = Usb3Panel(station)
-            self._add_page(
-                lambda: self.tr("A&xes"),
-                self.usb3_panel,
-                lambda: self.tr("Move by mm, step size, thread (Alt+X)"),
-            )
-            self.motion_panels.append(self.usb3_panel)
-        else:
-            self.absolute_panel = AbsolutePanel(station)
-            self.relative_panel = RelativePanel(station)
-            self._add_page(
-                lambda: self.tr("&Absolute"),
-                self.absolute_panel,
-                lambda: self.tr("Move to a target (Alt+A)"),
-            )
-            self._add_page(
-                lambda: self.tr("&Relative"),
-                self.relative_panel,
-                lambda: self.tr("Move by an increment (Alt+R)"),
-            )
-            self.motion_panels += [self.absolute_panel, self.relative_panel]
-        if station.profile.dialect == "gcode":
-            self.gcode_panel = GcodePanel(station)
-            self._add_page(
-                lambda: self.tr("&G-code"),
-                self.gcode_panel,
-                lambda: self.tr("Console, pen, hold/resume/reset (Alt+G)"),
-            )
-            self.motion_panels.append(self.gcode_panel)
-        if station.profile.capabilities.parameters:
-            self.dynamics_panel = DynamicsPanel(station)
-            # The page reflows to its width (axes stacked when narrow) and scrolls only
-            # up and down: never sideways, where the second axis's column was cut off.
-            dynamics_page = QScrollArea()
-            dynamics_page.setObjectName("dynamics_page")
-            dynamics_page.setWidget(self.dynamics_panel)
-            dynamics_page.setWidgetResizable(True)
-            dynamics_page.setFrameShape(QFrame.Shape.NoFrame)
-            dynamics_page.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-            bar = dynamics_page.verticalScrollBar().sizeHint().width()
-            dynamics_page.setMinimumWidth(self.dynamics_panel.minimumSizeHint().width() + bar)
-            self.dynamics_page = dynamics_page
-            self._add_page(
-                lambda: self.tr("&Dynamics"),
-                dynamics_page,
-                lambda: self.tr("Device parameters (Alt+D)"),
-            )
+        self._name_pages(self.pages)
         self.connection_panel = ConnectionPanel(station, self._settings)
         self.connection_panel.profileRequested.connect(self.profileRequested)
         self._add_page(
@@ -328,6 +264,20 @@ class MainWindow(QMainWindow):
         self.texts.also(self._retranslate)
 
     # --- building ------------------------------------------------------------
+
+    def _name_pages(self, pages: Pages) -> None:
+        """The pages as the window's attributes, as scripts and tests have always found them."""
+        for name, panel in (
+            ("drill_panel", pages.drill),
+            ("usb3_panel", pages.usb3),
+            ("absolute_panel", pages.absolute),
+            ("relative_panel", pages.relative),
+            ("gcode_panel", pages.gcode),
+            ("dynamics_panel", pages.dynamics),
+            ("dynamics_page", pages.dynamics_page),
+        ):
+            if panel is not None:
+                setattr(self, name, panel)
 
     def _add_page(self, title: Maker, page: QWidget, tooltip: Maker) -> None:
         button = self.menu_panel.add_page(title(), page, tooltip())
@@ -457,10 +407,9 @@ class MainWindow(QMainWindow):
                 )
                 checkpoint_dir = Path(data) / "checkpoints"
             self._job_runner = JobRunner(self.station, checkpoint_dir, parent=self)
-            gcode_panel = getattr(self, "gcode_panel", None)
-            if isinstance(gcode_panel, GcodePanel):
+            if self.pages.gcode is not None:
                 # The winder's board radius, zeroing by hand, follows the job loaded.
-                gcode_panel.follow_jobs(self._job_runner)
+                self.pages.gcode.follow_jobs(self._job_runner)
         return self._job_runner
 
     def _abort_job(self) -> None:
@@ -656,7 +605,7 @@ class MainWindow(QMainWindow):
         machine_menu.addAction(self.disconnect_action)
         machine_menu.addSeparator()
         self.home_actions: list[tuple[QAction, QPushButton]] = []
-        for button in self._home_buttons():
+        for button in self.pages.home_buttons(self.dialect.home_page):
             action = QAction(button.text().replace("  ", " "), self)
             action.setToolTip(button.toolTip())
             action.triggered.connect(button.click)
@@ -691,14 +640,6 @@ class MainWindow(QMainWindow):
         help_menu.addAction(self.about_action)
         self._help = None
         self._about = None
-
-    def _home_buttons(self) -> list[QPushButton]:
-        """The page buttons that home this machine, as the machine means "home"."""
-        if self.station.profile.dialect == "gcode":
-            return [self.gcode_panel.home_button]  # $H homes every axis at once
-        if self.station.profile.dialect == "drill":
-            return [self.drill_panel.command_buttons["N"]]
-        return list(self.manual_panel.home_buttons)
 
     def _ask_open_job(self) -> None:
         self.jobs_dock.show()
@@ -905,7 +846,7 @@ class MainWindow(QMainWindow):
         # jog buttons go off with the reason beside them, and a jog key says it.
         jog_lock = self.model.jog_lock_reason if enabled else None
         self.jog.set_enabled(enabled and jog_lock is None, reason or jog_lock)
-        for panel in self.motion_panels:
+        for panel in self.pages.motion_panels:
             panel.set_motion_enabled(enabled)
         self.manual_panel.set_jog_lock(jog_lock)
         self._update_machine_menu()
@@ -1029,20 +970,6 @@ class MainWindow(QMainWindow):
         target = fitted(geometry, margins, screen.availableGeometry())
         if target != geometry:
             self.setGeometry(target)
-
-    def _restore_drill_timing(self) -> None:
-        """The drill's timing constants the operator set last time (FIDELITY S2-06)."""
-        base = self.station.profile.drill_timing
-        timing = self._settings.drill_timing(base) if self._remembers else base
-        if timing != base:
-            self.station.set_drill_timing(timing)
-            self.drill_panel.timing_box.show_timing(timing)
-
-    def _remember_drill_timing(self, timing: DrillTiming | None) -> None:
-        if not self._remembers:
-            return
-        self._settings.set_drill_timing(timing)
-        self._settings.sync()
 
     def _warn_about_settings(self) -> None:
         """Settings that could not be used: in the status bar and a box, once per start."""

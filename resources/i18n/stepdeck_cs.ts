@@ -2702,6 +2702,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>&amp;Manual</source>
+        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
         <translation>&amp;Manuální</translation>
     </message>
     <message>
@@ -2710,7 +2711,6 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>D&amp;rill</source>
-        <extracomment>Every page with motion controls, for the motion lock.</extracomment>
         <translation>V&amp;rtačka</translation>
     </message>
     <message>
@@ -2915,7 +2915,7 @@ Načíst jako:</translation>
     <name>ManualPanel</name>
     <message>
         <source>Hold to jog {0}  (keys: {1}; Shift = other speed)</source>
-        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). Dialects whose home command homes every axis at once ($H / G28; the drill&apos;s N). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
+        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
         <translation>Držením posouvat {0}  (klávesy: {1}; Shift = druhá rychlost)</translation>
     </message>
     <message>

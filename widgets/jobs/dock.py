@@ -62,6 +62,7 @@ from app.jobs.program import JobFileError, OpKind, Program
 from app.jobs.reading import read_job_text
 from app.jobs.registration import Placement, RegistrationError
 from app.jobs.run.runner import JobRunner, JobState, LoadCheck
+from app.machines.drill.session import DrillSession
 from app.station import Station
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview, ProgramGeometry
@@ -356,7 +357,7 @@ class JobsDock(QDockWidget):
                 "instead of refusing the job"
             ),
         )
-        gcode = self.station.profile.dialect == "gcode"
+        gcode = self.station.dialect.takes_gcode_text
         pen = self.station.profile.capabilities.pen
         drill = self.station.profile.capabilities.drill
         # Drill files are drilled or drawn: where the machine has neither tool they are
@@ -1073,7 +1074,7 @@ class JobsDock(QDockWidget):
         raw = self._source_line(op.source.line)
         if raw:
             text += "\n    " + self.tr("file: {0}").format(raw)
-        session = self.station.drill_session
+        session = self.station.session_as(DrillSession)
         if session is not None and op.target:
             names = [axis.name for axis in self.station.profile.axes]
             steps = [
