@@ -25,11 +25,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/gcode/session.py::GcodeSession": "jogger, lost-answer watch, console gate",
     "app/jobs/run/runner.py::JobRunner": "progress/ETA and checkpoint scheduling out",
     "protocol/emulator/stage_firmware.py::StageFirmware": "locked getters as one snapshot",
-    # Split next on this branch (h-registry).
-    "widgets/main_window.py::MainWindow": "pages, menus, docking, status bar, key routing",
-    "widgets/jobs/dock.py::JobsDock": "options, run controls, file list, string-art launch",
-    "widgets/jobs/dock.py::JobsDock.__init__": "with the JobsDock split",
-    "widgets/jobs/dock.py::JobsDock._build_options": "with the JobsDock split",
     # Over the limits and not yet taken on by any branch.
     "app/jobs/run/gcode.py::GcodeDriver": "not yet taken on",
     "app/machines/drill/session.py::DrillSession": "not yet taken on",

@@ -2236,12 +2236,11 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Jobs</source>
-        <extracomment>Files larger than this are not kept in memory for showing source lines. A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
         <translation>Úlohy</translation>
     </message>
     <message>
         <source>The operation being executed and the line it came from</source>
-        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Práve vykonávaná operácia a riadok, z ktorého pochádza</translation>
     </message>
     <message>
@@ -2250,6 +2249,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Draw holes with the pen</source>
+        <extracomment>An option changed (or the drill&apos;s timing, which the estimate reads): read the file again.</extracomment>
         <translation>Otvory kresliť perom</translation>
     </message>
     <message>
@@ -2318,6 +2318,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>From photo…</source>
+        <extracomment>The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Z fotografie…</translation>
     </message>
     <message>
@@ -2538,6 +2539,7 @@ Načítať ako:</translation>
     </message>
     <message numerus="yes">
         <source>{0} / %n ops</source>
+        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here).</extracomment>
         <translation>
             <numerusform>{0} / %n op.</numerusform>
             <numerusform>{0} / %n op.</numerusform>
@@ -2648,7 +2650,7 @@ Načítať ako:</translation>
     <name>MainWindow</name>
     <message>
         <source>Jog X while held</source>
-        <extracomment>How long a status-bar message stays (ms): long enough to read twice. Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
+        <extracomment>Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
         <translation>Posuv v osi X, kým je kláves stlačený</translation>
     </message>
     <message>
@@ -2697,7 +2699,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). This machine&apos;s own settings (arrow keys, link, skipped lines), apart from others&apos;. The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. Where a language switch compiles its translation (None: the station&apos;s cache). This machine&apos;s own settings (arrow keys, link, skipped lines), apart from others&apos;. The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
@@ -2791,7 +2793,7 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Frames from the device that failed to decode</source>
-        <extracomment>The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
+        <extracomment>How long a status-bar message stays (ms): long enough to read twice. The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
         <translation>Rámce zo zariadenia, ktoré sa nepodarilo dekódovať</translation>
     </message>
     <message>
