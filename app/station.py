@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import sys
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, TypeVar, cast
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
@@ -34,34 +34,24 @@ from app.discovery import ble_uuids_for
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.drill.conversion import DrillConversion
-from app.machines.drill.session import DrillSession
-from app.machines.gcode.session import GcodeSession
-from app.machines.registry import dialect_for
+from app.machines.registry import DIALECTS, dialect_for
 from app.machines.session import MachineSession
 from app.machines.stage.echoes import StageEchoes
 from app.machines.stage.session import StageSession
-from app.machines.usb3.session import Usb3Session
 from app.profiles import MachineProfile
 from protocol.clock import Clock, MonotonicClock
 from protocol.drill.timing import DrillTiming
+from protocol.emulator.device import EmulatedDevice
 from protocol.stage.codec import EchoFrame
 from protocol.transport.base import Transport
 from protocol.transport.loopback import LoopbackTransport
 from protocol.transport.serial_link import SerialTransport
 
 if TYPE_CHECKING:
-    from protocol.emulator.device import EmulatedDevice
-    from protocol.emulator.drill_firmware import DrillFirmware
-    from protocol.emulator.gcode_firmware import GcodeFirmware
-    from protocol.emulator.stage_firmware import StageFirmware
-    from protocol.emulator.usb3_firmware import Usb3Firmware
     from protocol.transport.ble import BleLoop, BleTransport
 
-# The emulators' modules, imported with the first emulator made (see _emulator_as).
-_STAGE_FIRMWARE = "protocol.emulator.stage_firmware"
-_USB3_FIRMWARE = "protocol.emulator.usb3_firmware"
-_DRILL_FIRMWARE = "protocol.emulator.drill_firmware"
-_GCODE_FIRMWARE = "protocol.emulator.gcode_firmware"
+SessionT = TypeVar("SessionT", bound=MachineSession)
+EmulatorT = TypeVar("EmulatorT", bound=EmulatedDevice)
 
 RECONNECT_DELAYS = (0.5, 1.0, 2.0, 4.0)
 POLL_MS = 100
@@ -125,49 +115,41 @@ class Station(QObject):
         transport = self.link.transport if self.link else None
         return transport if isinstance(transport, LoopbackTransport) else None
 
-    @property
-    def stage_session(self) -> StageSession | None:
-        """The session when it speaks the stage dialect (dynamics, subscribers, sleep)."""
-        return self.session if isinstance(self.session, StageSession) else None
+    def session_as(self, kind: type[SessionT]) -> SessionT | None:
+        """The session when it is a ``kind`` (the stage's dynamics, the drill's terminal…).
 
-    @property
-    def usb3_session(self) -> Usb3Session | None:
-        return self.session if isinstance(self.session, Usb3Session) else None
-
-    @property
-    def drill_session(self) -> DrillSession | None:
-        return self.session if isinstance(self.session, DrillSession) else None
-
-    @property
-    def gcode_session(self) -> GcodeSession | None:
-        return self.session if isinstance(self.session, GcodeSession) else None
-
-    def _emulator_as(self, module: str, name: str) -> Any:
-        """The emulator if it is ``module.name``.
-
-        Emulators are imported when one is made (:mod:`app.machines.registry`);
-        a class whose module nobody imported has no instance, so the answer
-        needs no import.
+        A panel that belongs to one dialect asks for that dialect's session by its
+        class, so the station names no dialect and a new one adds nothing here.
         """
-        loaded = sys.modules.get(module)
-        kind = getattr(loaded, name, None)
-        return self.emulator if kind is not None and isinstance(self.emulator, kind) else None
+        return self.session if isinstance(self.session, kind) else None
 
-    @property
-    def stage_emulator(self) -> StageFirmware | None:
-        return cast("StageFirmware | None", self._emulator_as(_STAGE_FIRMWARE, "StageFirmware"))
+    def emulator_as(self, kind: type[EmulatorT]) -> EmulatorT | None:
+        """The built-in emulator when it is a ``kind`` (the developer pane's controls).
 
-    @property
-    def usb3_emulator(self) -> Usb3Firmware | None:
-        return cast("Usb3Firmware | None", self._emulator_as(_USB3_FIRMWARE, "Usb3Firmware"))
+        The caller names the class, so it has imported its module: the station
+        itself imports no emulator until one is made (:mod:`app.machines.registry`).
+        """
+        return self.emulator if isinstance(self.emulator, kind) else None
 
-    @property
-    def drill_emulator(self) -> DrillFirmware | None:
-        return cast("DrillFirmware | None", self._emulator_as(_DRILL_FIRMWARE, "DrillFirmware"))
+    if not TYPE_CHECKING:
 
-    @property
-    def gcode_emulator(self) -> GcodeFirmware | None:
-        return cast("GcodeFirmware | None", self._emulator_as(_GCODE_FIRMWARE, "GcodeFirmware"))
+        def __getattr__(self, name: str) -> object:
+            """``<dialect>_session`` / ``<dialect>_emulator``: the tests' and scripts' short
+            names, looked up in the registry (the session or emulator when this station
+            speaks that dialect, else None).
+
+            Hidden from the type checker: typed code says :meth:`session_as` or
+            :meth:`emulator_as`, so a misspelt attribute stays an error there.
+            """
+            prefix, _, part = name.rpartition("_")
+            entry = DIALECTS.get(prefix)
+            if entry is not None and part == "session":
+                return self.session_as(entry.session_type)
+            if entry is not None and part == "emulator":
+                # The station's emulator is always its own dialect's (connect_emulator).
+                own = issubclass(self.dialect.session_type, entry.session_type)
+                return self.emulator if own else None
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     @property
     def device_id(self) -> str | None:
@@ -209,8 +191,9 @@ class Station(QObject):
         life); without a link it still reaches the model, so the panels can be
         exercised with nothing connected.
         """
-        if self.stage_session is not None:
-            self.stage_session.apply_echo(echo)
+        stage = self.session_as(StageSession)
+        if stage is not None:
+            stage.apply_echo(echo)
         else:
             self._detached_echoes.apply(echo)
         self.echoInjected.emit(echo)
@@ -377,7 +360,10 @@ class Station(QObject):
         """
         self.profile = dataclasses.replace(self.profile, drill_timing=timing)
         self.model.profile = self.profile
-        drill = self.drill_emulator
+        # Imported here: only a station whose timing is changed needs the drill's emulator.
+        from protocol.emulator.drill_firmware import DrillFirmware
+
+        drill = self.emulator_as(DrillFirmware)
         if drill is not None:
             drill.set_timing(timing)
         self.drillTimingChanged.emit()

@@ -66,7 +66,7 @@ import numpy.typing as npt
 from PySide6.QtCore import QObject, Qt, QTimer, Signal
 
 from app.machine import LinkState
-from app.machines.stage.session import SUBSCRIBER_TELEMETRY
+from app.machines.stage.session import SUBSCRIBER_TELEMETRY, StageSession
 from app.station import Station
 from app.velocity_estimate import VelocityEstimator
 from protocol.stage.codec import EchoFrame, Subscriber
@@ -751,7 +751,7 @@ class TelemetryRecorder(QObject):
 
     def _apply_to_session(self) -> None:
         # Only the stage dialect multiplexes subscriber variables; others have none to ask.
-        session = self.station.stage_session
+        session = self.station.session_as(StageSession)
         if session is not None:
             variable = self._variable
             session.set_plotted_subscriber(variable.subscriber if variable else None)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 
 from app.profiles import MachineProfile
+from widgets.dialects import DropCaption, window_dialect
 
 
 def stop_caption(profile: MachineProfile) -> tuple[str, str]:
@@ -22,7 +23,7 @@ def stop_caption(profile: MachineProfile) -> tuple[str, str]:
                 "StopCaption", "Stop every axis now (Esc, from anywhere in the window)"
             ),
         )
-    if profile.dialect == "drill":
+    if window_dialect(profile).drop_caption is DropCaption.PROCEDURE:
         return (
             QCoreApplication.translate("StopCaption", "DROP QUEUE\nthis procedure\nfinishes (Esc)"),
             QCoreApplication.translate(
@@ -47,7 +48,7 @@ def stop_key_text(profile: MachineProfile) -> str:
         return QCoreApplication.translate(
             "StopCaption", "Stop everything, from anywhere in the window"
         )
-    if profile.dialect == "drill":
+    if window_dialect(profile).drop_caption is DropCaption.PROCEDURE:
         return QCoreApplication.translate(
             "StopCaption",
             "Drop the queued commands, from anywhere (no stop command: this procedure finishes)",

@@ -17,6 +17,7 @@ from app.machine import LinkState
 from app.station import Station
 from protocol.emulator.device import EmulatedDevice
 from protocol.emulator.stage_firmware import StageFirmware
+from protocol.emulator.usb3_firmware import Usb3Firmware
 from protocol.mechanism import SwitchName as SwitchName  # the pane names its buttons by it
 from protocol.transport.loopback import Direction, LoopbackTransport
 from protocol.usb3.codec import AxisId
@@ -199,7 +200,7 @@ class EmulatorControls(QObject):
 
     def set_joystick(self, axis: int, adc: int) -> None:
         """The usb3 unit's joystick: ADC 0…1023 per axis, 500…524 is the dead zone."""
-        emulator = self._station.usb3_emulator
+        emulator = self._station.emulator_as(Usb3Firmware)
         if emulator is not None and self.available:
             emulator.set_joystick(AxisId(axis), max(0, min(1023, int(adc))))
 
@@ -207,7 +208,7 @@ class EmulatorControls(QObject):
 
     def press_end_switch(self, axis: int, which: SwitchName) -> None:
         """Close an end switch where the axis is (a crash or a stuck lever); stage or usb3."""
-        usb3 = self._station.usb3_emulator
+        usb3 = self._station.emulator_as(Usb3Firmware)
         if usb3 is not None and self.available:
             usb3.press_end_switch(AxisId(axis), which)
         elif (emulator := self._emulator()) is not None:
@@ -249,7 +250,7 @@ class EmulatorControls(QObject):
 
     def _emulator(self) -> StageFirmware | None:
         """The emulator to act on, or None: setters are ignored without one."""
-        return self._station.stage_emulator if self.available else None
+        return self._station.emulator_as(StageFirmware) if self.available else None
 
     def _identity(self) -> tuple[bool, EmulatedDevice | None]:
         available = self.available

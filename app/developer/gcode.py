@@ -10,6 +10,8 @@ reject), and the frame log shows it.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from PySide6.QtCore import QObject
 
 from app.machine import LinkState
@@ -26,6 +28,9 @@ from protocol.gcode.codec import (
     StatusReport,
     decode,
 )
+
+if TYPE_CHECKING:
+    from protocol.emulator.gcode_firmware import GcodeFirmware
 
 #: Replies a developer reaches for most, for the pane's quick buttons.
 QUICK_REPLIES = (
@@ -93,7 +98,7 @@ def inject_raw(station: Station, data: bytes) -> None:
 
 
 def _session(station: Station) -> GcodeSession:
-    session = station.gcode_session
+    session = station.session_as(GcodeSession)
     if session is None or station.model.link_state is not LinkState.CONNECTED:
         raise ValueError("connect a G-code machine first")
     return session
@@ -108,28 +113,36 @@ class GcodeEmulatorButtons(QObject):
 
     @property
     def available(self) -> bool:
-        return self._station.gcode_emulator is not None and self._station.loopback is not None
+        return self._emulator() is not None and self._station.loopback is not None
+
+    def _emulator(self) -> GcodeFirmware | None:
+        """The emulated G-code board, when this station's dialect has one and it is made."""
+        if not issubclass(self._station.dialect.session_type, GcodeSession):
+            return None  # another dialect's emulator; the G-code board's module stays unloaded
+        from protocol.emulator.gcode_firmware import GcodeFirmware
+
+        return self._station.emulator_as(GcodeFirmware)
 
     def hold(self) -> None:
-        if (emulator := self._station.gcode_emulator) is not None:
+        if (emulator := self._emulator()) is not None:
             emulator.feed_hold()
 
     def resume(self) -> None:
-        if (emulator := self._station.gcode_emulator) is not None:
+        if (emulator := self._emulator()) is not None:
             emulator.cycle_start()
 
     def alarm(self, code: int = 1) -> None:
-        if (emulator := self._station.gcode_emulator) is not None:
+        if (emulator := self._emulator()) is not None:
             emulator.trigger_alarm(code)
 
     def white_button(self) -> str:
         """The winder's white button (S0-24): "drivers off", "zero set" or "ignored"."""
-        if (emulator := self._station.gcode_emulator) is not None:
+        if (emulator := self._emulator()) is not None:
             return emulator.white_button()
         return "ignored"
 
     def turn_by_hand(self, axis: str, delta: float) -> bool:
         """Turn an axis whose driver is off by hand; False when it holds (or no emulator)."""
-        if (emulator := self._station.gcode_emulator) is not None:
+        if (emulator := self._emulator()) is not None:
             return emulator.turn_by_hand(axis, delta)
         return False

@@ -1,7 +1,15 @@
-"""Which session and which emulated device serve each dialect.
+"""Each dialect registered once: its session, its emulated device and what it can do.
 
 The station looks the profile's dialect up here, so a machine family is
 added by registering its session and emulator, not by editing the station.
+The halves that sit above the sessions are keyed by the same names: the job
+driver (:mod:`app.jobs.run.drivers`), the estimate (:mod:`app.jobs.estimate`)
+and the window's pages, home buttons and developer boxes
+(:mod:`widgets.dialects`, with its stop caption); the layering (sessions below the station, the jobs
+and the developer pane) keeps them out of this module, and
+``tests/test_dialect_registry.py`` holds the tables together.  No code outside
+these tables asks a profile which dialect it speaks: it asks the entry what the
+dialect can do (``docs/architecture.md``, "Adding a machine").
 
 The emulators are imported when one is made, not with this module: the
 G-code one alone brings its planner and numpy, and the window's first paint
@@ -30,11 +38,23 @@ EmulatorFactory = Callable[[Clock, MachineProfile], EmulatedDevice]
 
 @dataclass(frozen=True)
 class Dialect:
+    """One dialect's machine half, and the facts about it that the layers above act on."""
+
+    #: The profile's ``dialect`` that names it.
+    name: str
     session: SessionFactory
+    #: The class :attr:`session` makes (the station's typed look-ups go by it).
+    session_type: type[MachineSession]
     emulator: EmulatorFactory
     #: The session carries held and stepped jogs: without them the window shows no jog pad
     #: and the arrow keys are not the machine's (a pad shown only to be refused misleads).
     jogs: bool = True
+    #: One home command homes every axis ($H / G28; the drill's N): one Home button, not one
+    #: per axis that would all do the same thing.
+    homes_all_axes: bool = False
+    #: The machine is sent G-code text as written (G-code files): a job's pen lines can be
+    #: translated into its own pen commands.
+    takes_gcode_text: bool = False
 
 
 def _stage_session(
@@ -129,12 +149,28 @@ def _gcode_emulator(clock: Clock, profile: MachineProfile) -> EmulatedDevice:
     return gcode_firmware.GcodeFirmware(clock, config())
 
 
-DIALECTS: dict[str, Dialect] = {
-    "stage": Dialect(_stage_session, _stage_emulator),
-    "usb3": Dialect(_usb3_session, _usb3_emulator),
-    "drill": Dialect(_drill_session, _drill_emulator),
-    "gcode": Dialect(_gcode_session, _gcode_emulator),
-}
+_ENTRIES = (
+    Dialect("stage", _stage_session, StageSession, _stage_emulator),
+    Dialect("usb3", _usb3_session, Usb3Session, _usb3_emulator),
+    Dialect(
+        "drill",
+        _drill_session,
+        DrillSession,
+        _drill_emulator,
+        homes_all_axes=True,
+    ),
+    Dialect(
+        "gcode",
+        _gcode_session,
+        GcodeSession,
+        _gcode_emulator,
+        homes_all_axes=True,
+        takes_gcode_text=True,
+    ),
+)
+
+#: Dialect name (a profile's ``dialect``) → its entry.
+DIALECTS: dict[str, Dialect] = {entry.name: entry for entry in _ENTRIES}
 
 
 def dialect_for(profile: MachineProfile) -> Dialect:

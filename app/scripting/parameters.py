@@ -23,6 +23,7 @@ from typing import Any
 
 from app.machine import MachineModel, ParameterState
 from app.machines.stage.parameters import BY_TYPE, STAGE_PARAMETERS, StageParameter
+from app.machines.stage.session import StageSession
 from app.profiles import MachineProfile
 from app.scripting.errors import ParameterRefused, StepdeckError, Unsupported, WrongMachine
 from app.scripting.waits import MachinePort, Operation, Wait
@@ -60,7 +61,7 @@ def values_of(model: MachineModel) -> dict[str, dict[str, float]]:
 
 
 def _stage(machine: MachinePort) -> Any:
-    session = machine.station.stage_session
+    session = machine.station.session_as(StageSession)
     if session is None:
         raise Unsupported(f"{machine.profile.title} has no stored parameters the station reads")
     return session

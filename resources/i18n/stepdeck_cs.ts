@@ -2387,12 +2387,11 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Jobs</source>
-        <extracomment>Files larger than this are not kept in memory for showing source lines. A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
         <translation>Úlohy</translation>
     </message>
     <message>
         <source>The operation being executed and the line it came from</source>
-        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here). The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Právě prováděná operace a řádek, ze kterého pochází</translation>
     </message>
     <message>
@@ -2401,6 +2400,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Draw holes with the pen</source>
+        <extracomment>An option changed (or the drill&apos;s timing, which the estimate reads): read the file again.</extracomment>
         <translation>Otvory kreslit perem</translation>
     </message>
     <message>
@@ -2469,6 +2469,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>From photo…</source>
+        <extracomment>The &quot;From photo…&quot; dialog while it is open.</extracomment>
         <translation>Z fotografie…</translation>
     </message>
     <message>
@@ -2689,6 +2690,7 @@ Načíst jako:</translation>
     </message>
     <message numerus="yes">
         <source>{0} / %n ops</source>
+        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here).</extracomment>
         <translation>
             <numerusform>{0} / %n op.</numerusform>
             <numerusform>{0} / %n op.</numerusform>
@@ -2799,7 +2801,7 @@ Načíst jako:</translation>
     <name>MainWindow</name>
     <message>
         <source>Jog X while held</source>
-        <extracomment>How long a status-bar message stays (ms): long enough to read twice. Widgets in which arrow keys move a text cursor or step a value, so they must not jog. Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
+        <extracomment>Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).</extracomment>
         <translation>Posuv v ose X, dokud je klávesa stisknutá</translation>
     </message>
     <message>
@@ -2848,11 +2850,12 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>StepDeck — {0}</source>
-        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. The key list and the About box, made when first shown (again after a language switch). Where a language switch compiles its translation (None: the station&apos;s cache). This machine&apos;s own settings (arrow keys, link, skipped lines), apart from others&apos;. The box listing settings the station could not use (None: there were none).</extracomment>
+        <extracomment>The operator chose another machine profile; the launcher rebuilds station and window. Where a language switch compiles its translation (None: the station&apos;s cache). This machine&apos;s own settings (arrow keys, link, skipped lines), apart from others&apos;. The box listing settings the station could not use (None: there were none).</extracomment>
         <translation>StepDeck — {0}</translation>
     </message>
     <message>
         <source>&amp;Manual</source>
+        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
         <translation>&amp;Manuální</translation>
     </message>
     <message>
@@ -2861,7 +2864,6 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>D&amp;rill</source>
-        <extracomment>Every page with motion controls, for the motion lock.</extracomment>
         <translation>V&amp;rtačka</translation>
     </message>
     <message>
@@ -2942,7 +2944,7 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Frames from the device that failed to decode</source>
-        <extracomment>The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
+        <extracomment>How long a status-bar message stays (ms): long enough to read twice. The link state when the message shown was said (a link failure&apos;s message goes when the link is back).</extracomment>
         <translation>Rámce ze zařízení, které nešlo dekódovat</translation>
     </message>
     <message>
@@ -3066,7 +3068,7 @@ Načíst jako:</translation>
     <name>ManualPanel</name>
     <message>
         <source>Hold to jog {0}  (keys: {1}; Shift = other speed)</source>
-        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). Dialects whose home command homes every axis at once ($H / G28; the drill&apos;s N). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
+        <extracomment>(row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the profile&apos;s first two axes (X and Y on a plotter, A and X on the string-art winder). The arrow keys&apos; step was chosen (0: continuous): the window stores it.</extracomment>
         <translation>Držením posouvat {0}  (klávesy: {1}; Shift = druhá rychlost)</translation>
     </message>
     <message>

@@ -132,6 +132,7 @@
     </message>
     <message numerus="yes">
         <source>{0} / %n ops</source>
+        <extracomment>The file ``_source_lines`` came from and the program they were read for. The board the operator gave for a bare nail list (kept while the file is re-read). The job type the operator chose for an ambiguous file (kept while it is re-read). An option changed while a file was being read: read it again when that ends. The source lines the loading thread read with the program (None: read them here).</extracomment>
         <translation>
             <numerusform>{0} / %n op</numerusform>
             <numerusform>{0} / %n ops</numerusform>

@@ -19,8 +19,9 @@ from app.jobs.registration import Registration
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs.dock import JobsDock, clock_text
+from widgets.jobs.dock import JobsDock
 from widgets.jobs.registration_bar import reference_holes
+from widgets.jobs.run_controls import clock_text
 
 LEFT = Qt.MouseButton.LeftButton
 

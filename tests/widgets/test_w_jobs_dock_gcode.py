@@ -123,10 +123,10 @@ def test_exports_write_the_sd_files_and_the_gcode(
     assert dock.open_path(sample)
     assert dock.export_button.isEnabled()
     out = tmp_path / "sd"
-    assert dock.export_sd(out)
+    assert dock.exports.export_sd(out)
     assert read_string_art(out / "poradi.txt") == read_string_art(sample)
     gcode = tmp_path / "hexagon.gcode"
-    assert dock.export_gcode(gcode)
+    assert dock.exports.export_gcode(gcode)
     lines = gcode.read_text().splitlines()
     assert sum(1 for line in lines if line.startswith("M0")) == 1
     assert all(len(line) < 80 for line in lines)

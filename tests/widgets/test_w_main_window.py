@@ -638,8 +638,7 @@ def test_docks_are_built_when_first_shown_with_what_came_before(
     qtbot: QtBot, harness: StationHarness
 ) -> None:
     window = _open_window(qtbot, harness)
-    assert window._telemetry_dock is None and window._developer_pane is None
-    assert window._jobs_dock is None and window._job_runner is None
+    assert window.docks.built() == [] and not window.docks.runner_built
     harness.connect()
     harness.session.move_absolute(0, 1.0)
     harness.run(2.0)
@@ -658,7 +657,7 @@ def test_docks_are_built_when_first_shown_with_what_came_before(
     assert not pane.isVisible() and not window.developer_action.isChecked()
     # Stop with no job runner built yet is only a stop.
     window.jog.stopRequested.emit()
-    assert window._job_runner is None
+    assert not window.docks.runner_built
 
 
 def test_docks_shown_at_close_are_back_at_the_next_start(
@@ -674,9 +673,9 @@ def test_docks_shown_at_close_are_back_at_the_next_start(
 
     again = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     second = _open_window(qtbot, harness, settings=again)
-    assert second._telemetry_dock is not None and second._telemetry_dock.isVisible()
+    built = second.docks.built()  # the plots only: the jobs dock and the pane wait
+    assert [dock.objectName() for dock in built] == ["telemetry_dock"] and built[0].isVisible()
     assert second.telemetry_action.isChecked()
-    assert second._jobs_dock is None and second._developer_pane is None
     assert not second.jobs_action.isChecked()
     second.jobs_action.trigger()  # placed where the first window had it
     assert second.jobs_dock.isVisible()

@@ -45,8 +45,8 @@ def dock(qtbot: QtBot, winder: StationHarness, tmp_path: Path) -> Iterator[JobsD
     qtbot.addWidget(dock)
     dock.show()
     yield dock
-    if dock.generator_dialog is not None:
-        dock.generator_dialog.close()
+    if dock.string_art.dialog is not None:
+        dock.string_art.dialog.close()
     runner.deleteLater()
 
 
@@ -78,7 +78,7 @@ def type_value(qtbot: QtBot, spin: QAbstractSpinBox, text: str) -> None:
 
 def opened(qtbot: QtBot, dock: JobsDock) -> StringArtGeneratorDialog:
     qtbot.mouseClick(dock.photo_button, LEFT)
-    dialog = dock.generator_dialog
+    dialog = dock.string_art.dialog
     assert dialog is not None and dialog.isVisible()
     qtbot.mouseClick(dialog.image_button, LEFT)
     qtbot.waitUntil(lambda: dialog.generate_button.isEnabled(), timeout=WAIT_MS)
@@ -135,7 +135,7 @@ def test_generate_on_a_small_photo_then_load_it_as_a_job(
     assert program.source is not None and program.source.parent.parent == generated_root()
     assert (program.source.parent / "string-art.png").is_file()
     assert not dialog.isVisible()
-    qtbot.waitUntil(lambda: dock.generator_dialog is None)
+    qtbot.waitUntil(lambda: dock.string_art.dialog is None)
     assert f"poradi.txt: {len(program)} operations loaded" in dock.messages.toPlainText()
 
 
@@ -198,7 +198,7 @@ def test_an_unreadable_photo_is_named_and_nothing_can_be_generated(
     bad.write_text("this is no JPEG")
     monkeypatch.setattr(dialog_module, "ask_image", lambda _parent: bad)
     qtbot.mouseClick(dock.photo_button, LEFT)
-    dialog = dock.generator_dialog
+    dialog = dock.string_art.dialog
     assert dialog is not None
     qtbot.mouseClick(dialog.image_button, LEFT)
     qtbot.waitUntil(lambda: dialog.status.text().startswith("Not opened"), timeout=WAIT_MS)

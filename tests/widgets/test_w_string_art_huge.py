@@ -25,7 +25,8 @@ from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs import dock as dock_module
+from widgets.jobs import loading as loading_module
+from widgets.jobs import source_lines as source_lines_module
 from widgets.jobs.dock import JobsDock
 from widgets.jobs.preview import THREAD_ALPHA
 from widgets.jobs.string_art_thread import (
@@ -164,8 +165,8 @@ def test_the_source_lines_split_in_pieces_are_the_files_lines(text: str, chunk: 
     ``splitlines`` of the whole (kept as the text and where each line starts).
     """
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(dock_module, "SPLIT_CHUNK_CHARS", chunk)
-        lines = dock_module.split_lines(text)
+        patch.setattr(source_lines_module, "SPLIT_CHUNK_CHARS", chunk)
+        lines = source_lines_module.split_lines(text)
         assert list(lines) == text.splitlines()
         assert len(lines) == len(text.splitlines())
 
@@ -233,7 +234,7 @@ def test_no_automatic_garbage_collection_while_the_dock_loads_a_file(
     """A full collection on the loading thread held the interpreter lock (the GUI thread
     waited a tenth of a second and more); it is off while the file loads, on again after."""
     seen: list[bool] = []
-    real = dock_module.load_job
+    real = loading_module.load_job
 
     def load_job(*args: object, **kwargs: object) -> object:
         seen.append(gc.isenabled())
@@ -249,7 +250,7 @@ def test_no_automatic_garbage_collection_while_the_dock_loads_a_file(
     qtbot.addWidget(dock)
     try:
         with pytest.MonkeyPatch.context() as patch:
-            patch.setattr(dock_module, "load_job", load_job)
+            patch.setattr(loading_module, "load_job", load_job)
             assert gc.isenabled()
             assert dock.open_path(poradi, background=True)
             qtbot.waitUntil(lambda: dock._loading is None, timeout=60_000)

@@ -59,6 +59,7 @@ from app.developer.stage import (
 from app.machines.stage.echoes import STATUS_TEXT
 from app.station import Station
 from widgets.developer.gcode_box import GcodeEmulatorBox, GcodeReplyBox
+from widgets.dialects import DeveloperBox, window_dialect
 from widgets.number_field import FieldGate, NumberField
 from widgets.retranslate import Texts
 from widgets.style import MINUS, monospace_font
@@ -601,20 +602,23 @@ class DeveloperPane(QDockWidget):
         self.simulation_note.setStyleSheet(_ERROR_STYLE)
         self.simulation_note.hide()
         axis_names = [axis.name for axis in station.model.axes]
-        stage = station.profile.dialect == "stage"
         # The echo composer and the stage's environment only mean something on a stage;
-        # the usb3 unit's developer controls are its joystick.
+        # the usb3 unit's developer controls are its joystick (widgets.dialects says which).
         self.composer = EchoComposer(station)
         self.emulator_box = EmulatorBox(self.emulator_controls, axis_names)
         self.joystick_box = JoystickBox(self.emulator_controls, axis_names)
-        self.composer.setVisible(stage)
-        self.emulator_box.setVisible(stage)
-        self.joystick_box.setVisible(station.profile.dialect == "usb3")
-        gcode = station.profile.dialect == "gcode"
         self.reply_box = GcodeReplyBox(station)
         self.board_box = GcodeEmulatorBox(station)
-        self.reply_box.setVisible(gcode)
-        self.board_box.setVisible(gcode)
+        shown = window_dialect(station.profile).developer_boxes
+        boxes: dict[DeveloperBox, QWidget] = {
+            DeveloperBox.ECHO_COMPOSER: self.composer,
+            DeveloperBox.STAGE_EMULATOR: self.emulator_box,
+            DeveloperBox.JOYSTICK: self.joystick_box,
+            DeveloperBox.GCODE_REPLIES: self.reply_box,
+            DeveloperBox.GCODE_BOARD: self.board_box,
+        }
+        for box, widget in boxes.items():
+            widget.setVisible(box in shown)
         self.log_view = FrameLogView(self.frame_log)
 
         self.setWidget(self._build(self._controls_column()))

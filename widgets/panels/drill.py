@@ -256,7 +256,7 @@ class DrillPanel(QWidget):
 
     @property
     def session(self) -> DrillSession | None:
-        return self._station.drill_session
+        return self._station.session_as(DrillSession)
 
     # --- what the buttons do -----------------------------------------------------
 

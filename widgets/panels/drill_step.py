@@ -21,7 +21,7 @@ from PySide6.QtWidgets import QGridLayout, QGroupBox, QHBoxLayout, QLabel, QPush
 
 from app.jobs.step_through import JobWalk, WalkStop
 from app.machines.drill.conversion import mm_to_microsteps, profile_microsteps_per_mm
-from app.machines.drill.session import MAX_POSITION
+from app.machines.drill.session import MAX_POSITION, DrillSession
 from app.station import Station
 from protocol.drill.codec import Command
 from widgets.number_field import localized
@@ -215,7 +215,7 @@ class DrillStepBox(QGroupBox):
             return False
         procedure = self.procedures[index]
         text = procedure.text
-        session = self._station.drill_session
+        session = self._station.session_as(DrillSession)
         if session is None:
             self.note.setText(self.tr("{0} not sent: not connected").format(text))
             return False

@@ -45,6 +45,7 @@ from app.machines.stage.parameters import (
     check_for_axis,
     wire_limits,
 )
+from app.machines.stage.session import StageSession
 from app.scripting.errors import StepdeckError
 from app.scripting.parameters import (
     BY_NAME,
@@ -349,7 +350,7 @@ class DynamicsPanel(QWidget):
 
     def read(self) -> None:
         """Ask the device for every parameter; the answers replace the fields."""
-        session = self._station.stage_session
+        session = self._station.session_as(StageSession)
         if session is None:
             return
         self._edited.clear()
@@ -358,7 +359,7 @@ class DynamicsPanel(QWidget):
 
     def apply(self) -> int:
         """Write every edited, locally valid value; returns how many were sent."""
-        session = self._station.stage_session
+        session = self._station.session_as(StageSession)
         if session is None:
             return 0
         sent = 0
@@ -502,7 +503,7 @@ class DynamicsPanel(QWidget):
         return differences
 
     def _write_differences(self, differences: list[Difference]) -> None:
-        session = self._station.stage_session
+        session = self._station.session_as(StageSession)
         if session is None:
             self.summary.setText(self.tr("Not written: not connected"))
             return
@@ -526,7 +527,7 @@ class DynamicsPanel(QWidget):
 
     def undo(self) -> int:
         """Write back what the last Apply or load replaced; returns how many were sent."""
-        session = self._station.stage_session
+        session = self._station.session_as(StageSession)
         if session is None or not self._undo:
             return 0
         undo, self._undo = self._undo, []

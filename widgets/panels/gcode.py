@@ -190,7 +190,7 @@ class GcodePanel(QWidget):
 
     @property
     def session(self) -> GcodeSession | None:
-        return self._station.gcode_session
+        return self._station.session_as(GcodeSession)
 
     @property
     def history(self) -> tuple[str, ...]:

@@ -51,10 +51,6 @@ def _describe(dx: int, dy: int, names: tuple[str, str]) -> str:
     return " ".join(parts)
 
 
-#: Dialects whose home command homes every axis at once ($H / G28; the drill's N).
-HOMES_ALL_AXES = ("gcode", "drill")
-
-
 class ManualPanel(QWidget):
     """Hold-to-jog buttons and Home; all motion goes through ``jog`` or the session."""
 
@@ -126,7 +122,7 @@ class ManualPanel(QWidget):
 
         homes = QHBoxLayout()
         homes.setSpacing(6)
-        if station.profile.capabilities.home and station.profile.dialect in HOMES_ALL_AXES:
+        if station.profile.capabilities.home and station.dialect.homes_all_axes:
             # One command homes every axis here: per-axis buttons that all did the same
             # thing promised what the machine cannot do.
             button = t.button(

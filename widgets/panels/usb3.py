@@ -128,7 +128,7 @@ class Usb3Panel(QWidget):
 
     @property
     def session(self) -> Usb3Session | None:
-        return self._station.usb3_session
+        return self._station.session_as(Usb3Session)
 
     def send(self, axis: int) -> bool:
         """Move ``axis`` by its distance; False when refused (bad distance, locked)."""
