@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 
 import pytest
 from hypothesis import given, settings
@@ -431,6 +432,28 @@ def test_the_log_records_each_line_with_the_bytes_then_unacknowledged() -> None:
         ("ok", "G0 X3"),
     ]
     assert bench.fw.unacknowledged == 0
+
+
+@pytest.mark.parametrize("config", [grbl_plotter_config, corexy_plotter_config])
+def test_a_line_arriving_in_several_reads_is_logged_whole(
+    config: Callable[[], GcodeConfig],
+) -> None:
+    """--log records the line the board's buffer received, not its last read's piece.
+
+    Issue 34: a line split across reads was logged as its tail (``"56.78"``); the parser
+    had taken its head out of the receive buffer between the reads.
+    """
+    bench = Bench(config())
+    bench.fw.receive(b"G1 X12.34 Y")
+    bench.run(3 * CYCLE)  # the parser reads the head meanwhile
+    bench.fw.receive(b"56")
+    bench.run(CYCLE)
+    bench.fw.receive(b".78 F600\nG0 X1")
+    bench.run(CYCLE)
+    bench.fw.receive(b"\n")
+    assert [e["text"] for e in bench.events("line")] == ["G1 X12.34 Y56.78 F600", "G0 X1"]
+    bench.run_until_idle()
+    assert [e["line"] for e in bench.events("reply")] == ["G1 X12.34 Y56.78 F600", "G0 X1"]
 
 
 def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:
