@@ -337,6 +337,31 @@ def test_the_plotters_step_interval_sets_its_speed() -> None:
     assert move["t"] == pytest.approx(START + t0 + CYCLE + 4081 / 10_000)
 
 
+def _move_seconds(bench: Bench, line: str) -> float:
+    """From the cycle the line was sent in to its move's end, on the emulated clock."""
+    bench.send(line)
+    t0 = START + bench.elapsed
+    bench.run_until_idle()
+    return float(bench.events("move")[-1]["t"]) - t0
+
+
+def test_s1_01_the_corexy_plotter_ignores_f_and_runs_g0_as_g1_at_the_m98_interval() -> None:
+    """FIDELITY S1-01: "Příkaz G0 a G1 je interpretován stejně"; only M98 sets the speed.
+
+    ``G1 X10 F100`` used to take 6 s (F as GRBL reads it) and ``G0 X10`` 0.1 s.
+    """
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("M98 50") == [Ok()]
+    fed = _move_seconds(bench, "G1 X10 F100")
+    rapid = _move_seconds(bench, "G0 X0")
+    plain = _move_seconds(bench, "G1 X10")
+    # 10 mm: 4081 whole steps on both motors, 50 µs apart, from the cycle it arrived in.
+    assert fed == pytest.approx(4081 * 50e-6)
+    assert rapid == pytest.approx(fed) and plain == pytest.approx(fed)
+    assert bench.do("M98 200") == [Ok()]
+    assert _move_seconds(bench, "G0 X0 F10000") == pytest.approx(4081 * 200e-6)
+
+
 def test_a_dwell_holds_the_next_move_in_order() -> None:
     bench = Bench()
     bench.send("G4 P0.5", "G0 X10", "G4 S0.25", "G0 X0")  # GRBL: P in seconds

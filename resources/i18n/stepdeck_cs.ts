@@ -1580,6 +1580,10 @@ Přesto odeslat do stroje?</translation>
         <translation>G4 P jsou na stroji {0} (GRBL) sekundy: prodlevy ({1}) čekají celkem {2}; soubor psaný pro milisekundy (Marlin, Inkscape Unicorn) tu čeká tisíckrát déle</translation>
     </message>
     <message>
+        <source>this plotter ignores F ({0} line(s) carry it): G0 and G1 run alike, the speed is set by M98 &lt;µs&gt; (the step interval, {1:g} µs at power-on)</source>
+        <translation>tento plotr F nepoužívá (nese ho {0} řádků): G0 a G1 jedou stejně, rychlost nastavuje M98 &lt;µs&gt; (interval mezi kroky, po zapnutí {1:g} µs)</translation>
+    </message>
+    <message>
         <source>no pen commands: G0 moves are shown as travel, G1/G2/G3 as work</source>
         <translation>žádné příkazy pera: pohyby G0 se zobrazují jako přejezd, G1/G2/G3 jako práce</translation>
     </message>

@@ -1580,6 +1580,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>G4 P sú na stroji {0} (GRBL) sekundy: prestávky ({1}) čakajú spolu {2}; súbor písaný pre milisekundy (Marlin, Inkscape Unicorn) tu čaká tisíckrát dlhšie</translation>
     </message>
     <message>
+        <source>this plotter ignores F ({0} line(s) carry it): G0 and G1 run alike, the speed is set by M98 &lt;µs&gt; (the step interval, {1:g} µs at power-on)</source>
+        <translation>tento plotter F nepoužíva (nesie ho {0} riadkov): G0 a G1 idú rovnako, rýchlosť nastavuje M98 &lt;µs&gt; (interval medzi krokmi, po zapnutí {1:g} µs)</translation>
+    </message>
+    <message>
         <source>no pen commands: G0 moves are shown as travel, G1/G2/G3 as work</source>
         <translation>žiadne príkazy pera: pohyby G0 sa zobrazujú ako prejazd, G1/G2/G3 ako práca</translation>
     </message>

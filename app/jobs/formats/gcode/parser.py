@@ -122,6 +122,10 @@ class Parser:
         #: firmware); GRBL refuses it (error:26).
         self.bare_g92 = settings.bare_g92
         self.dwell_p_seconds = settings.dwell_p_seconds
+        # The firmware ignores F (the CoreXY plotter, FIDELITY S1-01): its power-on step
+        # interval, and how many lines carry an F all the same (worth a note).
+        self.step_interval_us = settings.step_interval_us
+        self.f_lines = 0
         #: A G4 with P was read (its unit is worth a note where it is seconds).
         self.dwell_p_seen = False
         #: Inner arc vertices the file's arcs may still have (arcs.MAX_ARC_VERTICES in all).
@@ -204,6 +208,7 @@ class Parser:
     def _place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
         """A run of plain moves, refused where GRBL would refuse one (feed rules)."""
         self._add_refusals(self.plain.check_feeds(k0, k1, st.feed, self.feed_required))
+        self.f_lines += int(np.count_nonzero(~np.isnan(self.plain.f[k0:k1])))
         self.plain.place(k0, k1, st, texts, self.start_relative)
 
     def _refuse(self, number: int, reason: str, code: str = "") -> None:
@@ -454,6 +459,7 @@ class Parser:
             op = Pending(GCODE, text, sent)
             if "F" in params:
                 st.feed = value("F") * st.scale
+                self.f_lines += 1
             if "F" in params and params["F"] in rest:
                 op.feed = value("F") * st.scale
             axes = [i for i in rest if self._is_axis(words[i].letter)]
@@ -809,6 +815,14 @@ class Parser:
                     "written for milliseconds (Marlin, Inkscape Unicorn) waits a thousand times "
                     "too long here",
                 ).format(self.title, len(data.dwell_s), _duration(total))
+            )
+        if self.f_lines and self.step_interval_us is not None:
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile",
+                    "this plotter ignores F ({0} line(s) carry it): G0 and G1 run alike, the "
+                    "speed is set by M98 <µs> (the step interval, {1:g} µs at power-on)",
+                ).format(self.f_lines, self.step_interval_us)
             )
         if not data.pen_info and (data.kinds == MOVE).any():
             notes.append(
