@@ -86,7 +86,7 @@ class DriverSettings:
 #: What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras).
 GRBL_WORDS = (
     "G0", "G1", "G2", "G3", "G4", "G17", "G20", "G21", "G28", "G90", "G91", "G92",
-    "M0", "M1", "M2", "M3", "M4", "M5", "M30", "$H", "$X", "$$", "$I", "$G", "$J",
+    "M0", "M1", "M2", "M3", "M4", "M5", "M8", "M9", "M30", "$H", "$X", "$$", "$I", "$G", "$J",
 )  # fmt: skip
 
 

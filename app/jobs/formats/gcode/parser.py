@@ -193,6 +193,15 @@ class Parser:
             self.state = saved
             self._add_refusals([exc])
 
+    def _cannot(self, word: str) -> str:
+        """A word outside the machine's repertoire, with the error its firmware answers: GRBL's
+        ``error:3`` for a ``$`` command it does not know, ``error:20`` for a G or M code
+        (the emulated firmwares answer the same codes)."""
+        reason = QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+            self.who, word
+        )
+        return f"{reason} (error:{3 if word.startswith('$') else 20})"
+
     def _add_refusals(self, found: Sequence[JobFileError]) -> None:
         self.refusals += found
         if len(self.refusals) >= MAX_REFUSALS:
@@ -329,15 +338,7 @@ class Parser:
             self._commit(number, code, [Pending(WAIT, "", message=message)], ())
         elif display := MESSAGE_RE.match(code):
             word = f"M{display.group(1)}"
-            reasons = (
-                ()
-                if word in self.words
-                else (
-                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                        self.who, word
-                    ),
-                )
-            )
+            reasons = () if word in self.words else (self._cannot(word),)
             self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
         else:
             self._words(number, code, self.tokens.words(code, number))
@@ -346,15 +347,7 @@ class Parser:
         """A GRBL ``$`` command: sent as written where the machine knows it."""
         match = SYSTEM.match(code)
         word = "$" + (match.group(1) or "").upper() if match else "$"
-        reasons = (
-            ()
-            if word in self.words
-            else (
-                QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                    self.who, word
-                ),
-            )
-        )
+        reasons = () if word in self.words else (self._cannot(word),)
         self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
 
     def _realtime(self, number: int, code: str) -> None:
@@ -690,11 +683,7 @@ class Parser:
                 name = normal(word.letter, word.value)
                 explicit_motion |= name in MOTION_WORDS
                 if name not in self.words:
-                    found.append(
-                        QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                            self.who, name
-                        )
-                    )
+                    found.append(self._cannot(name))
             elif word.letter in AXIS_LETTERS and word.letter not in self.machine_axes:
                 exponent = EXPONENT.search(op.text) if word.letter == "E" else None
                 if exponent is not None:
@@ -721,11 +710,7 @@ class Parser:
         if op.kind == MOVE and op.motion in MOTION_NAMES and not explicit_motion:
             name = MOTION_NAMES[op.motion]
             if name not in self.words:
-                found.append(
-                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                        self.who, name
-                    )
-                )
+                found.append(self._cannot(name))
         return tuple(found)
 
     def _check_text(self, text: str) -> tuple[str, ...]:
