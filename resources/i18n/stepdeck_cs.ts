@@ -1488,7 +1488,6 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>word repeated: {0} twice (error:25): {1}</source>
-        <extracomment>A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); GRBL refuses it (error:26). A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
         <translation>opakované slovo: {0} dvakrát (error:25): {1}</translation>
     </message>
     <message>
@@ -1513,6 +1512,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>{0} cannot execute {1}</source>
+        <extracomment>A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); GRBL refuses it (error:26). A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
         <translation>{0} neumí provést {1}</translation>
     </message>
     <message>
