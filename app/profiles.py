@@ -86,7 +86,7 @@ class DriverSettings:
 #: What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras).
 GRBL_WORDS = (
     "G0", "G1", "G2", "G3", "G4", "G17", "G20", "G21", "G28", "G90", "G91", "G92",
-    "M0", "M1", "M2", "M3", "M4", "M5", "M30", "$H", "$X", "$$", "$I", "$G", "$J",
+    "M0", "M1", "M2", "M3", "M4", "M5", "M8", "M9", "M30", "$H", "$X", "$$", "$I", "$G", "$J",
 )  # fmt: skip
 
 
@@ -126,6 +126,15 @@ class GcodeSettings:
     #: planned (GRBL): every answered line ran, and an unanswered one is at most the one
     #: under way — what a resume after a fault can take as proven.
     ok_when_done: bool = False
+    #: A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval
+    #: that only ``M98 <µs>`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on
+    #: interval in µs.  None: F sets the speed (GRBL, the winder).
+    step_interval_us: float | None = None
+
+    @property
+    def feed_ignored(self) -> bool:
+        """F words mean nothing to this firmware: the step interval alone sets the speed."""
+        return self.step_interval_us is not None
 
     @property
     def dwell_p_seconds(self) -> float:
@@ -239,6 +248,11 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
             raise ProfileError(f"{path}: [gcode] junction_deviation must be a length >= 0 (mm)")
         if not (isinstance(gcode.planner_blocks, int) and gcode.planner_blocks >= 2):
             raise ProfileError(f"{path}: [gcode] planner_blocks must be a whole number >= 2")
+        interval = gcode.step_interval_us
+        if interval is not None and not (
+            isinstance(interval, int | float) and math.isfinite(interval) and interval > 0
+        ):
+            raise ProfileError(f"{path}: [gcode] step_interval_us must be a time > 0 (µs)")
         if gcode.streaming not in ("counting", "ping-pong"):
             raise ProfileError(f"{path}: [gcode] streaming must be 'counting' or 'ping-pong'")
         if gcode.kinematics not in ("cartesian", "corexy", "cylindrical"):

@@ -22,9 +22,14 @@ Decisions the contract leaves open, made here:
 - A malformed line is answered ``E<its first letter, or ?>`` at once and
   changes nothing; it does not disturb a procedure in progress.  Empty lines
   (and an LF after the CR) are ignored.
-- ``X``/``Y`` move one axis at a time.  A target beyond the travel is clamped
-  to it (the reference firmware has no soft limits, and its carriage would
-  stop at the switch there anyway).
+- ``X``/``Y`` move one axis at a time.  Each axis has one sensor, at the home
+  end, read only by ``N`` ("Kazdy pohyb je ukoncen v jednom smeru cidlem",
+  FIDELITY S2-29).  The reference firmware has no soft limits: a target past
+  the far end of the travel runs the carriage into the frame, where it
+  stalls while the firmware steps on; the move takes every step's period,
+  the counter ends at the target, the steps the carriage did not make are
+  lost (logged as :class:`StalledAtFrame`), and the next ``N`` finds the
+  zero again.
 - ``N`` homes X, then Y: run to the end switch at 0, back off until it opens
   (one microstep, the switches' hysteresis), then step the zero offset and
   call that 0.  So the zero lies ``offset + 1`` microsteps off the switch
@@ -72,6 +77,7 @@ a cycle boundary says ``D`` at the end of the cycle in which ``d`` elapses.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections import deque
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -243,7 +249,31 @@ class HomedAtPowerOn:
     time: float
 
 
-DrillEvent = ExecutedCommand | CommandDone | DrilledHole | PenEvent | DrawnSegment | HomedAtPowerOn
+@dataclass(frozen=True, slots=True)
+class StalledAtFrame:
+    """A move ran the carriage into the frame (FIDELITY S2-29): it stood there while the
+    firmware stepped on, so its counter reads ``lost`` microsteps past where the carriage is.
+
+    ``axis`` is ``"X"`` or ``"Y"``, ``end`` ``"far"`` (the frame opposite the sensor) or
+    ``"home"`` (the frame behind the sensor, reached when lost steps made the counter lie).
+    """
+
+    time: float
+    axis: str
+    end: str
+    lost: int
+    counter: int
+
+
+DrillEvent = (
+    ExecutedCommand
+    | CommandDone
+    | DrilledHole
+    | PenEvent
+    | DrawnSegment
+    | HomedAtPowerOn
+    | StalledAtFrame
+)
 """Everything :attr:`DrillFirmware.event_log` records, in the order it happened."""
 
 
@@ -264,6 +294,11 @@ def event_log_line(event: DrillEvent) -> str:
             return f"{time:.6f} drawn X{x0} Y{y0} to X{x1} Y{y1}"
         case HomedAtPowerOn(time):
             return f"{time:.6f} homed at power-on"
+        case StalledAtFrame(time, axis, end, lost, counter):
+            return (
+                f"{time:.6f} stalled {axis} at the {end} frame: {lost} steps lost, "
+                f"counter {axis}{counter}"
+            )
     raise TypeError(f"not a drill event: {event!r}")
 
 
@@ -293,8 +328,13 @@ class DrillFirmware(ControlCycles):
         self._step_left = 0.0
         #: Time already run into the present cycle (procedure steps end mid-cycle).
         self._into_cycle = 0.0
-        x = self._make_axis(cfg.travel[0] + cfg.zero_offsets[0] + 1, cfg.power_on[0])
-        y = self._make_axis(cfg.travel[1] + cfg.zero_offsets[1] + 1, cfg.power_on[1])
+        #: Microsteps from the home sensor's edge to the far frame, X and Y.
+        self._switch_spans = (
+            cfg.travel[0] + cfg.zero_offsets[0] + 1,
+            cfg.travel[1] + cfg.zero_offsets[1] + 1,
+        )
+        x = self._make_axis(self._switch_spans[0], cfg.power_on[0])
+        y = self._make_axis(self._switch_spans[1], cfg.power_on[1])
         z = self._make_axis(2 * cfg.drill_depth, 0)
         self._axes = (x, y, z)
         self._speeds = tuple(1.0 / p for p in cfg.step_periods)
@@ -538,13 +578,33 @@ class DrillFirmware(ControlCycles):
         return left + _SLOP if left > 0 else 0.0
 
     def _move(self, index: int, target: int) -> _Procedure:
+        """Step the counter to ``target``; the carriage follows until a frame stops it.
+
+        The original has one sensor per axis, at the home end, read only while homing
+        ("Kazdy pohyb je ukoncen v jednom smeru cidlem"): a move past the far end of the
+        travel runs the carriage into the frame, where it stalls while the firmware steps
+        on, so the move takes every step's period and the counter ends ``lost`` microsteps
+        past the carriage (FIDELITY S2-29).  Lost steps make later targets lie as well.
+        """
         self._motors_on = True
         axis = self._axes[index]
         axis.start_speed = self._speeds[index]
         x0, y0, _ = self.positions
-        axis.move_to(float(min(target, self.config.travel[index])), self._speeds[index])
+        # Where the frames are in the counter's frame: the far one at the physical end of
+        # the travel, the home one behind the sensor at physical 0.
+        offset = axis.position_um - axis.physical_um
+        far = math.floor(self._switch_spans[index] + offset + 1e-9)
+        home = math.ceil(offset - 1e-9)
+        reach = min(max(target, home), far)
+        axis.move_to(float(reach), self._speeds[index])
         yield self._until_idle(index)
-        x1, y1, _ = self.positions
+        x1, y1, _ = self.positions  # where the pen got to: the frame stops it too
+        lost = abs(target - reach)
+        if lost:
+            yield lost / self._speeds[index]  # the firmware steps on, the carriage stands
+            axis.set_position(float(axis.microsteps + target - reach))
+            end = "far" if target > reach else "home"
+            self._log(StalledAtFrame(self._now(), "XY"[index], end, lost, axis.microsteps))
         if self._pen_down and (x1, y1) != (x0, y0):
             self._log(DrawnSegment(self._now(), x0, y0, x1, y1))
 

@@ -150,6 +150,9 @@ _GRBL_DEFAULTS: dict[int, float] = {
 _GRBL_DECIMAL = frozenset({11, 12, 24, 25, 27})
 
 _LINE_END = 0x0A
+#: Bytes of an arriving line the ``line`` event keeps: a host that never ends its line
+#: cannot grow the log's memory without bound (the parser has refused such a line anyway).
+_ARRIVING_KEPT = 1024
 _HELP = "[HLP:$$ $# $G $I $H $X ~ ! ? ctrl-x]"
 #: GRBL 1.1's REPORT_WCO_REFRESH_BUSY_COUNT and _IDLE_COUNT: reports between two ``WCO:``.
 WCO_REFRESH_BUSY = 30
@@ -231,6 +234,9 @@ class GcodeFirmware(ControlCycles):
         self._raw_text = ""
         #: A GRBL board's line so far, past what the receive buffer holds (it reads on).
         self._partial = bytearray()
+        #: The line arriving, every byte the receive buffer took since the last line end: the
+        #: ``line`` event logs it whole, however many reads it came in.
+        self._arriving = bytearray()
         self._send_banner()
 
     # -- EmulatedDevice --------------------------------------------------------------------
@@ -257,6 +263,8 @@ class GcodeFirmware(ControlCycles):
                     self._overflows += 1
                 else:
                     self._rx.append(byte)
+                    if len(self._arriving) < _ARRIVING_KEPT:
+                        self._arriving.append(byte)
                     self._unacked += 1
                     self._max_unacked = max(self._max_unacked, self._unacked)
                     if byte == _LINE_END or (byte == 0x0D and self.config.grbl):
@@ -307,6 +315,7 @@ class GcodeFirmware(ControlCycles):
             self._jog_cancelling = False
             self._rx.clear()
             self._partial.clear()
+            self._arriving.clear()
             self._check_mode = False
             self._overlong = 0
             self._unacked = 0
@@ -893,9 +902,13 @@ class GcodeFirmware(ControlCycles):
         return {axis: round(p, 6) + 0.0 for axis, p in zip(self.config.axes, where, strict=True)}
 
     def _log_arrival(self) -> None:
-        ends = b"\r\n" if self.config.grbl else bytes([_LINE_END])
-        start = max(self._rx.rfind(end, 0, len(self._rx) - 1) for end in ends) + 1
-        text = self._rx[start:-1].decode("ascii", errors="replace").strip()
+        """Log the line that has just ended, whole: all the bytes kept since the last line end.
+
+        Looking back in the receive buffer would find only the last read's piece once the
+        parser has taken the line's head out of it (GRBL reads on into its line buffer).
+        """
+        text = bytes(self._arriving[:-1]).decode("ascii", errors="replace").strip()
+        self._arriving.clear()
         self._log("line", text=text, unacknowledged=self._unacked)
 
     def _log(self, event: str, t: float | None = None, **fields: Any) -> None:

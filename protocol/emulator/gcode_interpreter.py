@@ -454,6 +454,8 @@ class Interpreter:
         )
         length = math.dist(start, end)
         rate = self.step_rate
+        if cfg.feed_ignored:
+            feed = None  # the CoreXY plotter: G0 = G1, one step interval (M98) for both
         if feed is not None and steps > 0 and length > 0:
             rate = min(rate, feed / 60.0 * steps / length)
         if cfg.junction_deviation is None or length <= 0:

@@ -19,9 +19,10 @@ Decisions the contract leaves open, made here:
   its ``$11``): along the path, with each axis' own rate and acceleration.
   The CoreXY plotter's power-on step interval is 25 µs (40 000 steps/s,
   about 98 mm/s per motor); ``M98`` changes it.
-- The CoreXY plotter and the winder move at their top rate when a job never
-  set ``F``; a GRBL plotter refuses ``G1`` without a feed rate (``error:22``)
-  as GRBL does.
+- The CoreXY plotter ignores ``F`` and runs ``G0`` as ``G1`` (its firmware,
+  FIDELITY S1-01): every move steps at the ``M98`` interval.  The winder
+  moves at its top rate when a job never set ``F``; a GRBL plotter refuses
+  ``G1`` without a feed rate (``error:22``) as GRBL does.
 """
 
 from __future__ import annotations
@@ -93,6 +94,10 @@ class GcodeConfig:
     ok_when_done: bool = False
     #: mm → steps by truncation (the CoreXY firmware's integer division), not rounding.
     truncate_steps: bool = False
+    #: F words are read and ignored, and G0 is G1: every move steps at the ``M98`` interval
+    #: (the CoreXY plotter's firmware: "Příkaz G0 a G1 je interpretován stejně", speed set
+    #: only by M98, "nastav interval mezi kroky").
+    feed_ignored: bool = False
     #: ``M18 [axes]`` switches drivers off (the winder while it waits, its drill while winding).
     drivers_off: bool = False
     #: The winder's white buttons (FIDELITY S0-24): the first press switches every driver's
@@ -200,7 +205,8 @@ class GcodeConfig:
 def corexy_plotter_config() -> GcodeConfig:
     """The RP2040 CoreXY pen plotter as its own firmware, not GRBL.
 
-    ``OK`` once a line's motion is done; M3 lifts and M4 lowers the pen, M99 lifts
+    ``OK`` once a line's motion is done; G0 is G1 and F is ignored (the M98 step
+    interval alone sets the speed); M3 lifts and M4 lowers the pen, M99 lifts
     it to a PWM level, M98 sets the step interval; one step interval from a move's
     first step to its last (no acceleration: the thesis names ramps as future work);
     mm → steps truncated; a bare ``G92`` sets the origin.  Travel 300 by 210 mm: the
@@ -223,6 +229,7 @@ def corexy_plotter_config() -> GcodeConfig:
         bare_g92=True,
         ok_when_done=True,
         truncate_steps=True,
+        feed_ignored=True,
     )
 
 

@@ -26,6 +26,7 @@ from protocol.emulator.drill_firmware import (
     ExecutedCommand,
     HomedAtPowerOn,
     PenEvent,
+    StalledAtFrame,
     event_log_line,
 )
 from protocol.emulator.gcode_firmware import event_log_line as gcode_log_line
@@ -82,7 +83,13 @@ class CommandLogFile:
 def _log_line(entry: object) -> str:
     if isinstance(
         entry,
-        ExecutedCommand | CommandDone | DrilledHole | PenEvent | DrawnSegment | HomedAtPowerOn,
+        ExecutedCommand
+        | CommandDone
+        | DrilledHole
+        | PenEvent
+        | DrawnSegment
+        | HomedAtPowerOn
+        | StalledAtFrame,
     ):
         return event_log_line(entry) + "\n"
     if isinstance(entry, dict):  # the G-code firmwares' events

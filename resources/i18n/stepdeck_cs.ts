@@ -1631,7 +1631,6 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>word repeated: {0} twice (error:25): {1}</source>
-        <extracomment>A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); GRBL refuses it (error:26). A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
         <translation>opakované slovo: {0} dvakrát (error:25): {1}</translation>
     </message>
     <message>
@@ -1656,6 +1655,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>{0} cannot execute {1}</source>
+        <extracomment>A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); GRBL refuses it (error:26). A G4 with P was read (its unit is worth a note where it is seconds). Inner arc vertices the file&apos;s arcs may still have (arcs.MAX_ARC_VERTICES in all). Lines whose operations depend on nothing but their text (pen commands, dwells): the pen state they set, their operations and the machine&apos;s objections. Lines refused at load (GRBL&apos;s errors, malformed text), in file order. Columns whose positions count from wherever the machine stands when the job starts (a G91 move or a G92 before the file set them): taken here as from 0.</extracomment>
         <translation>{0} neumí provést {1}</translation>
     </message>
     <message>
@@ -1721,6 +1721,10 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>G4 P is seconds on the {0} (GRBL): {1} dwell(s) wait {2} in all; a file written for milliseconds (Marlin, Inkscape Unicorn) waits a thousand times too long here</source>
         <translation>G4 P jsou na stroji {0} (GRBL) sekundy: prodlevy ({1}) čekají celkem {2}; soubor psaný pro milisekundy (Marlin, Inkscape Unicorn) tu čeká tisíckrát déle</translation>
+    </message>
+    <message>
+        <source>this plotter ignores F ({0} line(s) carry it): G0 and G1 run alike, the speed is set by M98 &lt;µs&gt; (the step interval, {1:g} µs at power-on)</source>
+        <translation>tento plotr F nepoužívá (nese ho {0} řádků): G0 a G1 jedou stejně, rychlost nastavuje M98 &lt;µs&gt; (interval mezi kroky, po zapnutí {1:g} µs)</translation>
     </message>
     <message>
         <source>no pen commands: G0 moves are shown as travel, G1/G2/G3 as work</source>

@@ -145,7 +145,13 @@ def test_a_held_arrow_reaches_the_wire_at_once_and_stops_on_release(
     plotter.run_until(lambda: session.settled and not session.stopping, timeout=5)
     assert len(lines_written(plotter)) == sent_at_release  # nothing more after the release
     x = plotter.station.model.axes[0].position
-    speed = plotter.station.profile.axes[0].max_speed * 0.5
+    # The plotter ignores the jog's F (FIDELITY S1-01): it steps at its own interval, 25 µs.
+    profile = plotter.station.profile
+    assert profile.gcode is not None and profile.gcode.step_interval_us is not None
+    axis = profile.axes[0]
+    speed = (
+        1e6 / profile.gcode.step_interval_us / (axis.steps_per_rev * axis.microsteps / axis.lead)
+    )
     # Travelled about a second's worth; the release held the plotter and dropped what it
     # had queued, so it ran on only while braking.
     assert speed * 0.6 < x < speed * 1.2

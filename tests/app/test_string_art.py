@@ -366,8 +366,8 @@ def test_drill_phase_as_the_firmware_then_drivers_off_wait_and_start_back_at_ang
     10.386 mm past the surface), waits 250 ms, comes back; then the base turns
     back to nail 0 and the tool goes to its radius, every driver is switched off
     while the operator works, and the winding starts: needle out 2 cm beyond the
-    first nail, turn between it and the next one, needle in, turn back to angle 0,
-    the drill's driver off.
+    board (``polomer_matrice_cm + 2.0``), turn towards the midpoint of it and the next
+    nail, needle in, turn back to angle 0, the drill's driver off.
     """
     job = read_string_art(sample(data_dir, "hexagon") / "poradi.txt")
     program = build_program(job)
@@ -396,9 +396,13 @@ def test_drill_phase_as_the_firmware_then_drivers_off_wait_and_start_back_at_ang
     assert program[waits[0] - 1].line == "M18"  # every driver off while waiting
     assert program[waits[0]].message == "Insert the nails, tie the thread to nail 0"
     after = program.operations[waits[0] + 1 : waits[0] + 6]
-    assert after[0].target["X"] == pytest.approx(radii[0] + 20.0)
-    # 0° and 2.543° (nail 1 on the hexagon's first edge): halfway is 1.2715° (a whole turn on).
-    assert after[1].target["A"] == pytest.approx(360.0 + (angles[0] + angles[1]) / 2)
+    # Out beyond the board's edge: the firmware's ``polomer_matrice_cm + 2.0`` (S0-19).
+    assert after[0].target["X"] == pytest.approx(job.params.radius_cm * 10.0 + 20.0)
+    # Towards the midpoint of nails 0 and 1 (nail 1 on the hexagon's first edge, S0-26).
+    xy = job.nail_positions()
+    middle = (xy[0] + xy[1]) / 2
+    toward = math.degrees(math.atan2(middle[1], middle[0]))
+    assert after[1].target["A"] == pytest.approx(360.0 + toward)
     assert after[2].target["X"] == pytest.approx(radii.min() - 20.0)
     assert after[3].target["A"] == pytest.approx(360.0)  # back to angle 0
     assert after[4].line == "M18 Z0"  # the drill's driver off while winding
@@ -452,7 +456,8 @@ def test_program_arrays_agree_with_the_operations(data_dir: Path) -> None:
 def test_winding_settings_and_a_board_too_small_for_the_needle() -> None:
     job = job_of(0, 10, 10.0, [0, 5])
     program = build_program(job, settings=WindingSettings(needle_in_mm=10, needle_out_mm=3))
-    assert program.needle_in_radius_mm == 75.0 and program.needle_out_radius_mm == 88.0
+    # In: 85 - 10; out: the start, 3 mm beyond the 100 mm board (FIDELITY S0-19).
+    assert program.needle_in_radius_mm == 75.0 and program.needle_out_radius_mm == 103.0
     assert WindingSettings() == WindingSettings(needle_in_mm=20.0, needle_out_mm=20.0)
     with pytest.raises(JobFileError, match="no room for the needle"):
         build_program(job_of(3, 10, 2.0, [0, 5]))  # corners at 5 mm, mid-edges at 2.5 mm

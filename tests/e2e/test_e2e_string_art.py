@@ -331,7 +331,7 @@ class Connection:
     def of(cls, program: StringArtProgram, entry: int) -> Connection:
         moving = program.indices_of(OpKind.MOVE)
         ops = moving[program.entry_of_op[moving] == entry]
-        turn, _out, wrap, _in = (program.axis_positions[i] for i in ops)
+        turn, out, wrap, _in = (program.axis_positions[i] for i in ops)
         before = program.axis_positions[ops[0] - 1][0]
         angles, _radii = program.job.nail_polar()
         nail = program.job.sequence[entry]
@@ -342,7 +342,7 @@ class Connection:
             float(wrap[0]),
             target,
             program.needle_in_radius_mm,
-            program.needle_out_radius_mm,
+            float(out[1]),  # this nail's out radius (the winding's start goes farther)
         )
 
 

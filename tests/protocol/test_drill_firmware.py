@@ -44,6 +44,7 @@ from protocol.emulator.drill_firmware import (
     ExecutedCommand,
     HomedAtPowerOn,
     PenEvent,
+    StalledAtFrame,
     event_log_line,
 )
 
@@ -179,25 +180,49 @@ def test_s2_18_the_zero_lies_nulax_3_and_nulay_86_microsteps_off_the_switches() 
     assert replies[-1] == (round(t0 + end_of_cycle(took), 6), done("N"))
 
 
-def test_after_homing_the_far_ends_of_the_travel_are_the_other_switches() -> None:
-    """FIDELITY S2-27: X 4200 and Y 3000 microsteps, 212 by 152 mm, hold an A5 board."""
+def test_after_homing_the_far_ends_of_the_travel_are_the_frame() -> None:
+    """FIDELITY S2-27: X 4200 and Y 3000 microsteps, 212 by 152 mm, hold an A5 board;
+    S2-29: the far ends are the frame, not switches (one sensor per axis, at home)."""
     bench = Bench()
     bench.home()
     bench.send(move_x(4200), move_y(3000))
     bench.run_until_done()
     assert bench.fw.positions == (4200, 3000, 0)
     assert 4200 / 19.8 >= 210.0 and 3000 / 19.7 >= 148.0
-    x_axis, y_axis, _ = bench.fw.axes
-    assert x_axis.end_switch_high and y_axis.end_switch_high
+    assert not [e for e in bench.fw.event_log if isinstance(e, StalledAtFrame)]
 
 
-def test_a_target_beyond_the_travel_is_clamped_to_it() -> None:
+def test_s2_29_past_the_far_end_the_carriage_stalls_at_the_frame_and_loses_steps() -> None:
+    """ "Kazdy pohyb je ukoncen v jednom smeru cidlem": one sensor per axis, at the home end.
+
+    ``X5000`` used to be clamped at 4200 and answered as if a switch stood there.  The
+    firmware has no soft limits: it makes all 5000 steps' periods, the carriage stands
+    at the frame for the last 800, and the counter says 5000.
+    """
     bench = Bench()
     bench.home()
+    t0 = bench.elapsed
     bench.send(move_x(5000))
     replies = bench.run_until_done()
-    assert bench.fw.positions == (4200, 0, 0)
-    assert replies[-1][1] == done("X")
+    assert replies[-1] == (round(t0 + end_of_cycle(5000 * 0.0013), 6), done("X"))
+    assert bench.fw.positions == (5000, 0, 0)  # the counter: every step counted
+    x_axis = bench.fw.axes[0]
+    assert x_axis.physical_um == 4200 + 3 + 1  # the carriage: at the frame
+    (stall,) = [e for e in bench.fw.event_log if isinstance(e, StalledAtFrame)]
+    assert (stall.axis, stall.end, stall.lost, stall.counter) == ("X", "far", 800, 5000)
+    assert "stalled X at the far frame: 800 steps lost" in event_log_line(stall)
+    # The steps lost make the counter lie: "X0" runs the carriage back 5000 steps, so it
+    # meets the home end's stop after 4204 (796 = 800 lost - the 3 + 1 from the sensor's
+    # edge to the zero), and N finds the zero again.
+    bench.send(move_x(0))
+    bench.run_until_done()
+    assert x_axis.physical_um == 0.0
+    stalls = [e for e in bench.fw.event_log if isinstance(e, StalledAtFrame)]
+    assert (stalls[-1].end, stalls[-1].lost) == ("home", 796)
+    bench.home()
+    bench.send(move_x(1000))
+    bench.run_until_done()
+    assert x_axis.physical_um == 1000 + 3 + 1
 
 
 def test_drilling_logs_one_hole_at_the_present_position_and_takes_the_stroke_time() -> None:

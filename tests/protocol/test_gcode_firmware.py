@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Callable
 
 import pytest
 from hypothesis import given, settings
@@ -336,6 +337,31 @@ def test_the_plotters_step_interval_sets_its_speed() -> None:
     assert move["t"] == pytest.approx(START + t0 + CYCLE + 4081 / 10_000)
 
 
+def _move_seconds(bench: Bench, line: str) -> float:
+    """From the cycle the line was sent in to its move's end, on the emulated clock."""
+    bench.send(line)
+    t0 = START + bench.elapsed
+    bench.run_until_idle()
+    return float(bench.events("move")[-1]["t"]) - t0
+
+
+def test_s1_01_the_corexy_plotter_ignores_f_and_runs_g0_as_g1_at_the_m98_interval() -> None:
+    """FIDELITY S1-01: "Příkaz G0 a G1 je interpretován stejně"; only M98 sets the speed.
+
+    ``G1 X10 F100`` used to take 6 s (F as GRBL reads it) and ``G0 X10`` 0.1 s.
+    """
+    bench = Bench(corexy_plotter_config())
+    assert bench.do("M98 50") == [Ok()]
+    fed = _move_seconds(bench, "G1 X10 F100")
+    rapid = _move_seconds(bench, "G0 X0")
+    plain = _move_seconds(bench, "G1 X10")
+    # 10 mm: 4081 whole steps on both motors, 50 µs apart, from the cycle it arrived in.
+    assert fed == pytest.approx(4081 * 50e-6)
+    assert rapid == pytest.approx(fed) and plain == pytest.approx(fed)
+    assert bench.do("M98 200") == [Ok()]
+    assert _move_seconds(bench, "G0 X0 F10000") == pytest.approx(4081 * 200e-6)
+
+
 def test_a_dwell_holds_the_next_move_in_order() -> None:
     bench = Bench()
     bench.send("G4 P0.5", "G0 X10", "G4 S0.25", "G0 X0")  # GRBL: P in seconds
@@ -431,6 +457,28 @@ def test_the_log_records_each_line_with_the_bytes_then_unacknowledged() -> None:
         ("ok", "G0 X3"),
     ]
     assert bench.fw.unacknowledged == 0
+
+
+@pytest.mark.parametrize("config", [grbl_plotter_config, corexy_plotter_config])
+def test_a_line_arriving_in_several_reads_is_logged_whole(
+    config: Callable[[], GcodeConfig],
+) -> None:
+    """--log records the line the board's buffer received, not its last read's piece.
+
+    Issue 34: a line split across reads was logged as its tail (``"56.78"``); the parser
+    had taken its head out of the receive buffer between the reads.
+    """
+    bench = Bench(config())
+    bench.fw.receive(b"G1 X12.34 Y")
+    bench.run(3 * CYCLE)  # the parser reads the head meanwhile
+    bench.fw.receive(b"56")
+    bench.run(CYCLE)
+    bench.fw.receive(b".78 F600\nG0 X1")
+    bench.run(CYCLE)
+    bench.fw.receive(b"\n")
+    assert [e["text"] for e in bench.events("line")] == ["G1 X12.34 Y56.78 F600", "G0 X1"]
+    bench.run_until_idle()
+    assert [e["line"] for e in bench.events("reply")] == ["G1 X12.34 Y56.78 F600", "G0 X1"]
 
 
 def test_a_line_longer_than_80_bytes_is_answered_error_11() -> None:

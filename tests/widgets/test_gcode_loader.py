@@ -129,8 +129,8 @@ def test_bunny_unsupported_lines_on_the_corexy_plotter(data_dir: Path) -> None:
         (4304, "M300 S255"),  # servo off: neither of the pen's two levels
         (4308, "M18"),
     ]
-    assert program.unsupported[0].reason == "the CoreXY pen plotter cannot execute M18"
-    assert program.unsupported[2].reason == "the CoreXY pen plotter cannot execute M300"
+    assert program.unsupported[0].reason == "the CoreXY pen plotter cannot execute M18 (error:20)"
+    assert program.unsupported[2].reason == "the CoreXY pen plotter cannot execute M300 (error:20)"
     # G21 is not sent (the plotter works in mm), noted; G92's Z (no pen here) is dropped.
     at_line = {op.source.line: op for op in program}
     assert at_line[3].kind is OpKind.COMMENT and "G21" in at_line[3].message
@@ -188,19 +188,20 @@ def test_escriba_arcs_refused_on_corexy_sent_on_grbl(data_dir: Path) -> None:
     reasons = {(p.line, p.reason) for p in corexy.unsupported}
     for number in arcs:
         word = "G2" if file_lines(path)[number - 1].startswith("G02") else "G3"
-        assert (number, f"the CoreXY pen plotter cannot execute {word}") in reasons
+        assert (number, f"the CoreXY pen plotter cannot execute {word} (error:20)") in reasons
     others = {p.line: p.reason for p in corexy.unsupported if p.line not in arcs}
     assert others == {
-        1: "the CoreXY pen plotter cannot execute $I",
-        2: "the CoreXY pen plotter cannot execute $G",
-        3: "the CoreXY pen plotter cannot execute $$",
-        6: "the CoreXY pen plotter cannot execute M8",
-        3914: "the CoreXY pen plotter cannot execute M9",
+        1: "the CoreXY pen plotter cannot execute $I (error:3)",
+        2: "the CoreXY pen plotter cannot execute $G (error:3)",
+        3: "the CoreXY pen plotter cannot execute $$ (error:3)",
+        6: "the CoreXY pen plotter cannot execute M8 (error:20)",
+        3914: "the CoreXY pen plotter cannot execute M9 (error:20)",
     }
 
     grbl_plotter = load_for(path, "grbl-plotter")
-    # GRBL answers $I, $G and $$ itself; the coolant M8/M9 this pen plotter has not.
-    assert unsupported_lines(grbl_plotter) == [6, 3914]
+    # GRBL answers $I, $G and $$ itself, and takes the coolant M8/M9 (G7-04: `ok` in its
+    # check mode too, test_preflight_vs_grbl_check.py).
+    assert unsupported_lines(grbl_plotter) == []
     first_arc = next(op for op in grbl_plotter if op.source.line == 15)
     # Sent as written; the Z height is the pen on this machine, so it went out as M3 S1000/M5.
     assert first_arc.line == "G02 X274.184715 Y30.541697 I-0.862823 J0.766100 F800"
@@ -462,7 +463,9 @@ def test_pen_lines_sent_as_written_when_not_translated(data_dir: Path) -> None:
     program = load_for(real(data_dir, BUNNY), "corexy-plotter", translate_pen=False)
     downs = of_kind(program, OpKind.PEN_DOWN)
     assert program[downs[0]].line == "M300 S30"
-    refused = {p.line for p in program.unsupported if p.reason.endswith("cannot execute M300")}
+    refused = {
+        p.line for p in program.unsupported if p.reason.endswith("cannot execute M300 (error:20)")
+    }
     assert len(refused) == 184 + 185 + 1  # every servo line, and the S255
     assert not any("pen lines sent as" in note for note in program.notes)
 
@@ -505,8 +508,8 @@ def test_words_are_compared_normalised(tmp_path: Path) -> None:
     path = write(tmp_path, "G00 X1 Y1\nG01 X2 Y2 F100\nM05\nG20\nG21\nM18\n")
     program = load_for(path, "corexy-plotter")
     assert [(p.line, p.reason) for p in program.unsupported] == [
-        (4, "the CoreXY pen plotter cannot execute G20"),
-        (6, "the CoreXY pen plotter cannot execute M18"),
+        (4, "the CoreXY pen plotter cannot execute G20 (error:20)"),
+        (6, "the CoreXY pen plotter cannot execute M18 (error:20)"),
     ]
     assert program[2].line == "M05" and program[2].kind is OpKind.GCODE
     assert program[4].kind is OpKind.COMMENT  # G21: not sent
@@ -517,9 +520,12 @@ def test_skipping_unsupported_lines(data_dir: Path) -> None:
     assert program.unsupported == ()
     skipped = [op for op in program if op.source.line in (11, 13, 4304, 4308)]
     assert all(op.kind is OpKind.COMMENT and op.line == "" for op in skipped)
-    assert skipped[0].message == "not sent: M18 (the CoreXY pen plotter cannot execute M18)"
+    assert (
+        skipped[0].message == "not sent: M18 (the CoreXY pen plotter cannot execute M18 (error:20))"
+    )
     assert any(
-        "skipped 2 line(s): the CoreXY pen plotter cannot execute M18 (lines 11, 4308)" in note
+        "skipped 2 line(s): the CoreXY pen plotter cannot execute M18 (error:20) (lines 11, 4308)"
+        in note
         for note in program.notes
     )
 
@@ -570,7 +576,7 @@ def test_system_commands_and_program_end(tmp_path: Path) -> None:
     assert program.unsupported == ()
     corexy = load_for(path, "corexy-plotter")
     assert [(p.line, p.reason) for p in corexy.unsupported] == [
-        (3, "the CoreXY pen plotter cannot execute $X")
+        (3, "the CoreXY pen plotter cannot execute $X (error:3)")
     ]
 
 

@@ -222,14 +222,14 @@ def test_a_board_too_big_for_memory_cannot_be_generated_and_says_why(
 def test_a_board_the_winder_cannot_reach_is_named_but_can_still_be_exported(
     qtbot: QtBot, dock: JobsDock, photo: Path
 ) -> None:
-    """X travel 250 mm, needle 2 cm outside the nails (the firmware's, FIDELITY S0-20), nails
-    15 mm inside the edge: 24.5 cm."""
+    """X travel 250 mm; the winding starts 2 cm beyond the board's edge (the firmware's
+    ``polomer_matrice_cm + 2.0``, FIDELITY S0-19): 23 cm."""
     dialog = opened(qtbot, dock)
     assert "reaches" not in dialog.scale_label.text()
-    type_value(qtbot, dialog.radius, "24.5")
+    type_value(qtbot, dialog.radius, "23")
     assert "reaches" not in dialog.scale_label.text()
-    type_value(qtbot, dialog.radius, "25")
-    assert "needle reaches 250 mm from the centre: boards up to 24.5 cm" in (
+    type_value(qtbot, dialog.radius, "23.5")
+    assert "needle reaches 250 mm from the centre: boards up to 23.0 cm" in (
         dialog.scale_label.text()
     )
     assert dialog.generate_button.isEnabled()

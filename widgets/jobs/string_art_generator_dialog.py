@@ -446,9 +446,11 @@ class StringArtGeneratorDialog(QDialog):
         (the SD-card files are still good for a larger machine; the dock refuses the job)."""
         reach = self._reach_mm
         needle_out = WindingSettings().needle_out_mm
-        if reach is None or nail_radius_mm + needle_out <= reach:
+        # The winding starts out 2 cm beyond the board's edge (the firmware's
+        # ``polomer_matrice_cm + 2.0``, FIDELITY S0-19): the farthest the needle goes.
+        if reach is None or nail_radius_mm + NAIL_INSET_MM + needle_out <= reach:
             return ""
-        largest_cm = (reach - needle_out + NAIL_INSET_MM) / 10
+        largest_cm = (reach - needle_out) / 10
         return "\n" + self.tr(
             "This winder's needle reaches {0} mm from the centre: boards up to "
             "{1} cm radius fit it (export the files for a larger one)."

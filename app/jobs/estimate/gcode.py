@@ -23,6 +23,10 @@ in a fraction of a second:
   when the move is too short to reach its speed, and an arc is one move
   over the length of its flattened path, at the limit of its most
   demanding segment;
+* on a firmware that ignores F (the profile's ``step_interval_us``, the
+  CoreXY plotter: FIDELITY S1-01) every move, G0 or G1, is its lead motor's
+  whole steps at the step interval of the last ``M98`` before it, as that
+  firmware steps without ramps;
 * ``G4`` dwells add their time; pen commands and other lines cost nothing
   here (the file's own dwells after pen moves are what the servo needs).
 
@@ -32,7 +36,8 @@ timed from its own columns (the same trapezoids, without building the path).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import re
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
@@ -83,6 +88,14 @@ def estimate_gcode(
     fed = (motion != RAPID) & (motion != HOME) & (motion != NO_MOTION) & (feed > 0)
 
     settings = profile.gcode
+    if settings is not None and settings.step_interval_us is not None:
+        texts = program.data.texts if isinstance(program, GcodeProgram) else []
+        seconds = _stepped(
+            path, coords, previous, profile, _step_intervals(texts, n, settings.step_interval_us)
+        )
+        np.add.at(seconds, dwell_ops, dwell_s)
+        cumulative = np.cumsum(seconds)
+        return Estimate(float(cumulative[-1]), cumulative)
     if settings is not None and settings.junction_deviation is not None:
         stops = np.zeros(n, dtype=bool)
         stops[dwell_ops] = True
@@ -176,6 +189,46 @@ def _planned(
     exits = np.concatenate((entries[1:], [0.0]))
     block_s = profile_seconds(lengths, np.sqrt(entries), np.sqrt(exits), nominal, accel)
     seconds += np.bincount(ops, weights=block_s, minlength=n)
+    return seconds
+
+
+#: ``M98 <µs>`` or ``M98 P<µs>``: the CoreXY plotter's step interval.
+_M98 = re.compile(r"^\s*M0*98\s*P?\s*([0-9]*\.?[0-9]+)", re.IGNORECASE)
+
+
+def _step_intervals(texts: Sequence[str], n: int, power_on_us: float) -> np.ndarray:
+    """Each operation's step interval in seconds: the last ``M98`` before it, else power-on."""
+    intervals = np.full(n, power_on_us * 1e-6)
+    for index, text in enumerate(texts):
+        if text and (match := _M98.match(text)) is not None and float(match.group(1)) > 0:
+            intervals[index:] = float(match.group(1)) * 1e-6
+    return intervals
+
+
+def _stepped(
+    path: ProgramPath,
+    coords: np.ndarray,
+    previous: np.ndarray,
+    profile: MachineProfile,
+    intervals: np.ndarray,
+) -> np.ndarray:
+    """A firmware without ramps that ignores F (FIDELITY S1-01, S1-04): every move, G0 or
+    G1, steps its lead motor at the operation's interval from its first step to its last.
+
+    Positions become whole steps by truncation (S1-03), then the CoreXY motors mix them
+    (a = x - y, b = x + y), as the firmware counts them.
+    """
+    per_mm = np.array([axis.steps_per_rev * axis.microsteps / axis.lead for axis in profile.axes])
+    steps = np.trunc(coords * per_mm)
+    before = np.trunc(previous * per_mm)
+    settings = profile.gcode
+    if settings is not None and settings.kinematics == "corexy" and steps.shape[1] >= 2:
+        for counts in (steps, before):
+            x, y = counts[:, 0].copy(), counts[:, 1].copy()
+            counts[:, 0], counts[:, 1] = x - y, x + y
+    lead = np.abs(steps - before).max(axis=1, initial=0.0)
+    seconds = np.zeros(len(intervals))
+    np.add.at(seconds, path.ops, lead * intervals[path.ops])
     return seconds
 
 

@@ -119,6 +119,10 @@ class Parser:
         #: firmware); GRBL refuses it (error:26).
         self.bare_g92 = settings.bare_g92
         self.dwell_p_seconds = settings.dwell_p_seconds
+        # The firmware ignores F (the CoreXY plotter, FIDELITY S1-01): its power-on step
+        # interval, and how many lines carry an F all the same (worth a note).
+        self.step_interval_us = settings.step_interval_us
+        self.f_lines = 0
         #: A G4 with P was read (its unit is worth a note where it is seconds).
         self.dwell_p_seen = False
         #: Inner arc vertices the file's arcs may still have (arcs.MAX_ARC_VERTICES in all).
@@ -186,6 +190,15 @@ class Parser:
             self.state = saved
             self._add_refusals([exc])
 
+    def _cannot(self, word: str) -> str:
+        """A word outside the machine's repertoire, with the error its firmware answers: GRBL's
+        ``error:3`` for a ``$`` command it does not know, ``error:20`` for a G or M code
+        (the emulated firmwares answer the same codes)."""
+        reason = QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
+            self.who, word
+        )
+        return f"{reason} (error:{3 if word.startswith('$') else 20})"
+
     def _add_refusals(self, found: Sequence[JobFileError]) -> None:
         self.refusals += found
         if len(self.refusals) >= MAX_REFUSALS:
@@ -201,6 +214,7 @@ class Parser:
     def _place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
         """A run of plain moves, refused where GRBL would refuse one (feed rules)."""
         self._add_refusals(self.plain.check_feeds(k0, k1, st.feed, self.feed_required))
+        self.f_lines += int(np.count_nonzero(~np.isnan(self.plain.f[k0:k1])))
         self.plain.place(k0, k1, st, texts, self.start_relative)
 
     def _refuse(self, number: int, reason: str, code: str = "") -> None:
@@ -320,15 +334,7 @@ class Parser:
             self._commit(number, code, [Pending(WAIT, "", message=message)], ())
         elif display := MESSAGE_RE.match(code):
             word = f"M{display.group(1)}"
-            reasons = (
-                ()
-                if word in self.words
-                else (
-                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                        self.who, word
-                    ),
-                )
-            )
+            reasons = () if word in self.words else (self._cannot(word),)
             self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
         else:
             self._words(number, code, self.tokens.words(code, number))
@@ -337,15 +343,7 @@ class Parser:
         """A GRBL ``$`` command: sent as written where the machine knows it."""
         match = SYSTEM.match(code)
         word = "$" + (match.group(1) or "").upper() if match else "$"
-        reasons = (
-            ()
-            if word in self.words
-            else (
-                QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                    self.who, word
-                ),
-            )
-        )
+        reasons = () if word in self.words else (self._cannot(word),)
         self._commit(number, code, [Pending(GCODE, code, checked=True)], reasons)
 
     def _realtime(self, number: int, code: str) -> None:
@@ -450,6 +448,7 @@ class Parser:
             op = Pending(GCODE, text, sent)
             if "F" in params:
                 st.feed = value("F") * st.scale
+                self.f_lines += 1
             if "F" in params and params["F"] in rest:
                 op.feed = value("F") * st.scale
             axes = [i for i in rest if self._is_axis(words[i].letter)]
@@ -680,11 +679,7 @@ class Parser:
                 name = normal(word.letter, word.value)
                 explicit_motion |= name in MOTION_WORDS
                 if name not in self.words:
-                    found.append(
-                        QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                            self.who, name
-                        )
-                    )
+                    found.append(self._cannot(name))
             elif word.letter in AXIS_LETTERS and word.letter not in self.machine_axes:
                 exponent = EXPONENT.search(op.text) if word.letter == "E" else None
                 if exponent is not None:
@@ -711,11 +706,7 @@ class Parser:
         if op.kind == MOVE and op.motion in MOTION_NAMES and not explicit_motion:
             name = MOTION_NAMES[op.motion]
             if name not in self.words:
-                found.append(
-                    QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
-                        self.who, name
-                    )
-                )
+                found.append(self._cannot(name))
         return tuple(found)
 
     def _check_text(self, text: str) -> tuple[str, ...]:
@@ -805,6 +796,14 @@ class Parser:
                     "written for milliseconds (Marlin, Inkscape Unicorn) waits a thousand times "
                     "too long here",
                 ).format(self.title, len(data.dwell_s), _duration(total))
+            )
+        if self.f_lines and self.step_interval_us is not None:
+            notes.append(
+                QCoreApplication.translate(
+                    "JobFile",
+                    "this plotter ignores F ({0} line(s) carry it): G0 and G1 run alike, the "
+                    "speed is set by M98 <µs> (the step interval, {1:g} µs at power-on)",
+                ).format(self.f_lines, self.step_interval_us)
             )
         if not data.pen_info and (data.kinds == MOVE).any():
             notes.append(

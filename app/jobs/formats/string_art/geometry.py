@@ -83,16 +83,31 @@ def nail_polar(tvar: int, nails: int, radius_cm: float) -> tuple[np.ndarray, np.
     return angles, np.hypot(xy[:, 0], xy[:, 1])
 
 
-def half_gaps(angles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per nail, half the angle to the previous nail and half the angle to the next one.
+def half_gaps(
+    angles: np.ndarray, positions: np.ndarray | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """Per nail, the angle back to the gap before it and on to the gap after it.
 
-    The needle passes between two nails at the angle halfway between them;
-    with at least three nails round the centre, the two halves of a nail add
-    up to less than 180°, so crossing a nail is always the short way round.
+    The needle passes between two nails in the direction of their midpoint, as
+    the firmware computes it (FIDELITY S0-26): ``argument_rad_nula_2pi(xy_na_bod(
+    (f.x+f_minus_1.x)/2.0, …))`` — the angle of the point halfway between the two
+    nails (``positions``, board mm).  On a circle that is the angle halfway between
+    them; on a polygon's edge it is not (0.55° off on a 30-nail triangle).  Without
+    ``positions`` (or for two nails facing each other across the centre, where the
+    midpoint has no direction) the angle halfway is used.  The midpoint lies inside
+    the sector between the two nails, so the two parts of a nail add up to less than
+    180° with at least three nails round the centre: crossing a nail is always the
+    short way round.
     """
     following = np.roll(angles, -1)
-    after = ((following - angles) % 360.0) / 2.0
-    before = np.roll(after, 1)
+    span = (following - angles) % 360.0
+    after = span / 2.0
+    if positions is not None and len(positions) == len(angles):
+        middle = (positions + np.roll(positions, -1, axis=0)) / 2.0
+        toward = np.degrees(np.arctan2(middle[:, 1], middle[:, 0]))
+        has_direction = np.hypot(middle[:, 0], middle[:, 1]) > 1e-9
+        after = np.where(has_direction, (toward - angles) % 360.0, after)
+    before = np.roll(span - after, 1)
     return before, after
 
 

@@ -29,13 +29,16 @@ where the base is, so none is longer than 180°.
    the whole board) and, per nail wrapped, an outer one (``needle_out_mm``,
    2 cm, outside that nail: the firmware's ``modul(f) + 2.0``); it crosses
    the nail ring only halfway between two neighbouring nails, and while
-   outside it turns only across the nail it wraps.  To start it goes out
-   beyond the first nail, turns to the gap between the first nail and the
-   next one, moves in and turns back to the first nail's angle (nail 0:
-   angle 0); the drill's driver is then switched off for the winding
-   (``M18 Z0``, against overheating).  Then for each next nail ``k`` it turns
-   (inside) the shorter way round to the gap beside ``k`` on the side it
-   approaches from, moves out, turns across ``k`` to the gap on the other
+   outside it turns only across the nail it wraps; the gap between two
+   nails is the direction of their midpoint (the firmware's, FIDELITY
+   S0-26).  To start it goes out 2 cm beyond the board's edge (the
+   firmware's ``polomer_matrice_cm + 2.0``, FIDELITY S0-19), turns to the
+   gap between the first nail and the next one, moves in and turns back
+   to the first nail's angle (nail 0: angle 0); the drill's driver is then
+   switched off for the winding (``M18 Z0``, against overheating).  Then
+   for each next nail ``k`` it turns (inside) the shorter way round to the
+   gap beside ``k`` on the side it approaches from, moves out, turns across
+   ``k`` to the gap on the other
    side — the thread wraps the nail — and moves in.
 
    Which entries are wound differs from the firmware on purpose (FIDELITY
@@ -400,7 +403,7 @@ def build_program(
         if missing:
             raise ValueError(f"{profile.name} lacks the winder's axes {', '.join(missing)}")
     angles, radii = job.nail_polar()
-    before, after = half_gaps(angles)
+    before, after = half_gaps(angles, job.nail_positions())
     r_in = float(radii.min()) - settings.needle_in_mm
     if r_in < 0:
         where = job.param_source("polomer_matrice")
@@ -491,7 +494,8 @@ def build_program(
         0,
     )
     step_in = QCoreApplication.translate("JobFile", "start at nail {0}").format(first)
-    first_out = float(radii[first]) + settings.needle_out_mm
+    # The firmware starts out beyond the board, not the nail: ``polomer_matrice_cm + 2.0``.
+    first_out = job.params.radius_cm * 10.0 + settings.needle_out_mm
     b.move(
         at_first,
         "X",
