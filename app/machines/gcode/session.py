@@ -222,12 +222,6 @@ class GcodeSession(MachineSession):
         return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
 
     @property
-    def recovery_settle_s(self) -> float:
-        """After a silence, replies held back on the way come first: the board's state is
-        judged from a report made this long after it was heard again (a few queries)."""
-        return self.stale_after_s
-
-    @property
     def machine_state(self) -> str:
         """The device's last reported state (Idle, Run, Hold, Home, Alarm), or "" before any."""
         return self.status.state if self.status is not None else ""
@@ -435,12 +429,6 @@ class GcodeSession(MachineSession):
                 )
             )
 
-    # --- zeroing by hand (the winder's white buttons, FIDELITY S0-24) -------------------
-
-    @property
-    def zeroes_by_hand(self) -> bool:
-        return zeroes_by_hand(self.settings)
-
     def move_absolute(self, axis: int, position: float) -> bool:
         """To the machine position ``position``: sent as the work position GRBL takes it for."""
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
@@ -466,11 +454,6 @@ class GcodeSession(MachineSession):
 
     def pen(self, down: bool) -> bool:
         return self.send_line(self.settings.pen_down if down else self.settings.pen_up, "intent")
-
-    @property
-    def jogs_with_command(self) -> bool:
-        """GRBL 1.1's ``$J=`` jogs: the modal state is left alone and 0x85 cancels them."""
-        return self.jogger.with_command
 
     def set_jog(self, directions: Sequence[int]) -> None:
         """Held arrows become short moves kept a little ahead of the machine, inside the travel
@@ -834,7 +817,7 @@ class GcodeSession(MachineSession):
                 self._seen_idle = True
         if at_rest:
             # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
-            offset_known = self.work_offset is not None or not self.jogs_with_command
+            offset_known = self.work_offset is not None or not self.jogger.with_command
             if (
                 placed
                 and offset_known
@@ -855,7 +838,9 @@ class GcodeSession(MachineSession):
             self._stop_unconfirmed = False  # held and reset: it stands
         if self.silent_since is not None:
             heard = self._heard_again_at
-            if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
+            # Replies held back on the way come first: the board's state is judged from a
+            # report made a few queries after it was heard again.
+            if heard is not None and self.clock.now() - heard >= self.stale_after_s:
                 self._report_after_silence = report
             self._check_recovery()
 
