@@ -621,15 +621,17 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         now = runner.station.clock.now()
+        with self._locked():  # both boundaries as of one moment (the reader moves them)
+            answered, executed = stream.answered, stream.executed
         # The operation the machine is at: the first not known executed (the lines answered
         # after it wait in the device's planner).
-        current = stream.executed if stream.executed < len(runner.program) else None
+        current = executed if executed < len(runner.program) else None
         if current is not None and current != self._shown and self._shows.due(now):
             # The dock shows the operation under way; a thousand lines a second need not
             # all be shown, so at most ten a second are.
             self._shown = current
             runner.announce(current)
-        runner.advance(stream.answered, stream.executed)
+        runner.advance(answered, executed)
         self._write_checkpoint(force=False)
 
     def _write_checkpoint(self, *, force: bool) -> None:
@@ -639,7 +641,9 @@ class GcodeDriver(JobDriver):
             return
         if not self._checkpoints.due(runner.station.clock.now(), force=force):
             return
-        runner.record(stream.executed - 1, max(stream.written, stream.answered))
+        with self._locked():
+            completed, sent = stream.executed - 1, max(stream.written, stream.answered)
+        runner.record(completed, sent)
 
 
 def _where(program: Program, index: int) -> str:

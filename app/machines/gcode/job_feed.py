@@ -27,8 +27,9 @@ Why nothing written from the reader thread can race (the argument
   queue order and the distance mode is the last queued line's), a status
   report marking the board idle (checked against the streamer in the same
   hold), a reset or a link change, and the driver's reads and changes of the
-  source (:meth:`JobFeed.locked`).  Nothing reads two of them outside it and
-  acts on the pair.
+  source (:meth:`JobFeed.locked`).  What reads two of them together reads
+  them in one hold too (``GcodeSession.settled``: the streamer idle, and the
+  board seen idle since).
 
 Plain Python, no Qt.
 """

@@ -228,8 +228,12 @@ class GcodeSession(MachineSession):
 
     @property
     def settled(self) -> bool:
-        """Everything sent is answered and a status report since then shows the machine idle."""
-        return self.streamer.idle and self._seen_idle
+        """Everything sent is answered and a status report since then shows the machine idle.
+
+        Both read in one hold: a job's line queued on the reader thread changes both.
+        """
+        with self.feeder.lock:
+            return self.streamer.idle and self._seen_idle
 
     # --- lines --------------------------------------------------------------------
 
