@@ -706,8 +706,9 @@ class GcodeSession(MachineSession):
                 self.tell_written(self.feeder.release())
             return
         _, sent = entry
-        with self.feeder.lock:
-            self._seen_idle = False
+        if self._seen_idle:  # only this thread sets it True: already False, no hold per answer
+            with self.feeder.lock:
+                self._seen_idle = False
         if sent.origin == "jog":
             self.jogger.answered(error is None)
         if error is None:
