@@ -29,13 +29,9 @@ class ConsoleGate:
         #: Whether the board is in G91 after the lines queued (a reset brings back G90).
         self.relative = False
 
-    def note(self, line: str, *, job: bool = False) -> None:
-        """``line`` was queued: the distance mode it leaves (under the feeder's lock).
-
-        A job's line without a 9 names neither G90 nor G91: job lines skip the parse on that.
-        """
-        if not job or "9" in line:
-            self.relative = line_motion(line, self.relative, {}, ()).relative_after
+    def note(self, line: str) -> None:
+        """``line`` was queued: the distance mode it leaves (under the feeder's lock)."""
+        self.relative = line_motion(line, self.relative, {}, ()).relative_after
 
     def reset(self) -> None:
         """GRBL's power-on and reset mode is G90 (under the feeder's lock)."""

@@ -104,15 +104,18 @@ class JobFeed:
     # --- the feeder's side (reader thread, under the lock) ---------------------------
 
     def take(self, count: int) -> list[tuple[bytes, SentLine]]:
-        """At most ``count`` next lines, encoded and tagged: the feeder queues them."""
+        """At most ``count`` next lines, encoded and tagged: the feeder queues them.
+
+        Called with the lock held (the feeder's pump, or :meth:`step`).
+        """
         out: list[tuple[bytes, SentLine]] = []
-        with self._feeder.lock:
-            for index, text in self.source.next_lines(count):
-                made = self._encode(text, index)
-                if isinstance(made, str):
-                    self.source.refuse(index, f"{text!r} cannot be sent: {made}")
-                    break
-                out.append(made)
+        encode, source = self._encode, self.source
+        for index, text in source.next_lines(count):
+            made = encode(text, index)
+            if isinstance(made, str):
+                source.refuse(index, f"{text!r} cannot be sent: {made}")
+                break
+            out.append(made)
         return out
 
     def count_answer(self, tag: SentLine) -> bool:

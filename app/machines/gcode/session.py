@@ -302,8 +302,10 @@ class GcodeSession(MachineSession):
         and the distance mode the board will be in is the line's (the console judges in it).
         """
         self._seen_idle = False
-        self.zeroing.line_queued()
-        self.console.note(line, job=origin == "job")
+        self.zeroing.released = False
+        # A job's line without a 9 names neither G90 nor G91: job lines skip the parse on that.
+        if origin != "job" or "9" in line:
+            self.console.note(line)
 
     def start_job(self, source: JobSource) -> JobFeed:
         """A running job's lines go through the feed made here (:mod:`~app.machines.gcode.
