@@ -166,14 +166,15 @@ class EmulatorControls(QObject):
         emulator = self._emulator()
         if emulator is None:
             return None
+        now = emulator.snapshot()  # one lock: the figures of one control cycle
         return EmulatorState(
-            charger=emulator.charger_connected,
-            usb=emulator.usb_connected,
-            battery_percent=emulator.battery_charge,
-            temperature_c=emulator.board_temperature_c,
-            rotation_dps=emulator.rotation_rate_dps,
-            verification_fault=emulator.verification_fault,
-            driver_faults=tuple(emulator.driver_fault(i) for i in range(len(emulator.axes))),
+            charger=now.charger_connected,
+            usb=now.usb_connected,
+            battery_percent=now.battery_charge,
+            temperature_c=now.board_temperature_c,
+            rotation_dps=now.rotation_rate_dps,
+            verification_fault=now.verification_fault,
+            driver_faults=now.driver_faults,
         )
 
     # --- environment --------------------------------------------------------------------

@@ -50,7 +50,9 @@ class AsyncMachine:
         timeout: float | None = None,
         **axes: float,
     ) -> dict[str, float]:
-        return await self._drive(self.machine._move(dict(target or {}, **axes), False, timeout))  # noqa: SLF001
+        return await self._drive(
+            self.machine.operations.move(dict(target or {}, **axes), False, timeout)
+        )
 
     async def move_by(
         self,
@@ -59,32 +61,34 @@ class AsyncMachine:
         timeout: float | None = None,
         **axes: float,
     ) -> dict[str, float]:
-        return await self._drive(self.machine._move(dict(delta or {}, **axes), True, timeout))  # noqa: SLF001
+        return await self._drive(
+            self.machine.operations.move(dict(delta or {}, **axes), True, timeout)
+        )
 
     async def jog(self, direction: str | Mapping[str, int], seconds: float) -> dict[str, float]:
-        return await self._drive(self.machine._jog(direction, seconds))  # noqa: SLF001
+        return await self._drive(self.machine.operations.jog(direction, seconds))
 
     async def home(
         self, axis: str | None = None, *, timeout: float | None = None
     ) -> dict[str, float]:
-        return await self._drive(self.machine._home(axis, timeout))  # noqa: SLF001
+        return await self._drive(self.machine.operations.home(axis, timeout))
 
     async def stop(self) -> bool:
-        return await self._drive(self.machine._stop())  # noqa: SLF001
+        return await self._drive(self.machine.operations.stop())
 
     async def sleep(self, asleep: bool = True, *, timeout: float = 5.0) -> None:
-        await self._drive(self.machine._sleep(asleep, timeout))  # noqa: SLF001
+        await self._drive(self.machine.operations.sleep(asleep, timeout))
 
     async def wake(self, *, timeout: float = 5.0) -> None:
-        await self._drive(self.machine._sleep(False, timeout))  # noqa: SLF001
+        await self._drive(self.machine.operations.sleep(False, timeout))
 
     async def read_parameters(self, *, timeout: float = 10.0) -> dict[str, dict[str, float]]:
-        return await self._drive(self.machine._read_parameters(timeout))  # noqa: SLF001
+        return await self._drive(self.machine.operations.read_parameters(timeout))
 
     async def write_parameters(
         self, values: Mapping[str, Mapping[str, float]], *, timeout: float = 10.0
     ) -> dict[str, dict[str, float]]:
-        return await self._drive(self.machine._write_parameters(values, timeout))  # noqa: SLF001
+        return await self._drive(self.machine.operations.write_parameters(values, timeout))
 
     async def run(self, job_path: str | Path, **options: Any) -> Any:
         return await self._drive(run_job(self.machine, Path(job_path), **options))
@@ -94,8 +98,9 @@ class AsyncMachine:
 
     async def _drive(self, operation: Operation[T]) -> T:
         machine = self.machine
+        operations = machine.operations
         clock = machine.station.clock
-        pump = machine._pump  # noqa: SLF001 - the same station, pumped without blocking
+        pump = operations.pump  # the same station, pumped without blocking
         simulated = isinstance(pump, SimulatedPump)
         try:
             wait = next(operation)
@@ -104,7 +109,7 @@ class AsyncMachine:
                 while not wait.until():
                     if clock.now() > deadline:
                         operation.close()
-                        raise machine._timed_out(wait)  # noqa: SLF001
+                        raise operations.timed_out(wait)
                     pump.step(block=False)
                     await asyncio.sleep(0 if simulated else POLL_S)
                 wait = operation.send(None)
@@ -113,7 +118,7 @@ class AsyncMachine:
             return value
         except (asyncio.CancelledError, KeyboardInterrupt):
             operation.close()
-            machine._stop_after_interrupt()  # noqa: SLF001
+            operations.stop_after_interrupt()
             raise
 
 

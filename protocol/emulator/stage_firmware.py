@@ -16,13 +16,20 @@ cycle, and each accepted frame is answered by one echo at its end.  On a
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
 from protocol.clock import Clock
 from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.fram import Fram
+from protocol.emulator.stage_commands import (
+    UNKNOWN,
+    AxisControl,
+    Handler,
+    Reply,
+    StageCommands,
+)
 from protocol.mechanism import Axis, AxisLimits, AxisState, SwitchName
 from protocol.stage.codec import (
     DATA_MAX,
@@ -40,7 +47,7 @@ from protocol.stage.codec import (
     encode_echo,
     written_parameter,
 )
-from protocol.stage.driver import STEP_CLOCK_HZ, quantised_speed
+from protocol.stage.driver import STEP_CLOCK_HZ
 from protocol.stage.led import LedRing, led_ring
 
 #: Table 1.4 defaults of the XY stage.
@@ -202,43 +209,34 @@ def _fit(value: float) -> int:
 Led = LedRing
 
 
-@dataclass
-class _AxisControl:
-    """Firmware-side state of one axis besides the mechanism itself."""
-
-    fast: bool = False
-    #: Direction of a jog in progress (0: not jogging), for the dead-man watchdog.
-    jog_direction: int = 0
-    last_jog: float = 0.0
-    driver_fault: bool = False
-    #: Set by HOME until the next motion command: a finished homing run reads as
-    #: idle at the new zero, not as a target reached.
-    homed: bool = False
-
-
-@dataclass(frozen=True, slots=True)
-class _Reply:
-    """What one echo packet will say; None fields are filled in at the end of the cycle."""
-
-    type: int = EchoType.POSITION
-    status: int | None = None
-    data: int | None = None
-    #: False when the command was refused (unknown, out of range, motion while disabled).
-    accepted: bool = True
-
-
-_DEFAULT_REPLY = _Reply()
-_REFUSED = _Reply(accepted=False)
-_UNKNOWN = _Reply(status=AxisStatus.UNKNOWN_COMMAND, accepted=False)
-
-
 @dataclass(frozen=True, slots=True)
 class _PendingEcho:
     subscriber: int
-    replies: tuple[_Reply, ...]
+    replies: tuple[Reply, ...]
 
 
-_Handler = Callable[[int, int, float], _Reply]
+@dataclass(frozen=True)
+class StageSnapshot:
+    """The firmware's state at one instant, read under its lock in one go (any thread):
+    a view that reads several of these sees them as of the same cycle."""
+
+    powered: bool
+    sleeping: bool
+    led: Led
+    #: False while blocked, asleep or off (a faulted driver disables only its own axis).
+    motors_enabled: bool
+    session_open: bool
+    rejected_frames: int
+    #: Per axis: the fast speed selected, and a driver fault.
+    fast: tuple[bool, ...]
+    driver_faults: tuple[bool, ...]
+    charger_connected: bool
+    usb_connected: bool
+    battery_charge: float
+    board_temperature_c: float
+    rotation_rate_dps: float
+    yaw_deg: float
+    verification_fault: bool
 
 
 class StageFirmware(ControlCycles):
@@ -263,22 +261,30 @@ class StageFirmware(ControlCycles):
         self._imu = Imu()
         self._board_temperature_c = self.config.board_temperature_c
         self.fram = Fram(self.config.axes)
-        self._controls = [_AxisControl() for _ in range(self.config.axes)]
+        self._controls = [AxisControl() for _ in range(self.config.axes)]
         self._store_defaults()
         self._axes = tuple(self._make_axis(i) for i in range(self.config.axes))
         self._power_on()
         self._command_log: deque[ExecutedCommand] = deque(maxlen=COMMAND_LOG_LENGTH)
-        self._handlers: dict[int, _Handler] = {
-            CommandId.NOP: self._nop,
-            CommandId.STOP: self._stop,
-            CommandId.JOG: self._jog,
-            CommandId.MOVE_ABS: self._move_abs,
-            CommandId.MOVE_REL: self._move_rel,
-            CommandId.HOME: self._home,
-            CommandId.SET_POS: self._set_pos,
-            CommandId.SPEED: self._speed,
-            CommandId.ESTOP: self._estop,
-            CommandId.SLEEP: self._sleep,
+        commands = StageCommands(
+            self._axes,
+            self._controls,
+            self.fram,
+            self.config.step_clock_hz,
+            self._may_move,
+            self._set_sleeping,
+        )
+        self._handlers: dict[int, Handler] = {
+            CommandId.NOP: commands.nop,
+            CommandId.STOP: commands.stop,
+            CommandId.JOG: commands.jog,
+            CommandId.MOVE_ABS: commands.move_abs,
+            CommandId.MOVE_REL: commands.move_rel,
+            CommandId.HOME: commands.home,
+            CommandId.SET_POS: commands.set_pos,
+            CommandId.SPEED: commands.speed,
+            CommandId.ESTOP: commands.estop,
+            CommandId.SLEEP: commands.sleep,
             CommandId.READ: self._read,
         }
 
@@ -302,24 +308,31 @@ class StageFirmware(ControlCycles):
         with self._lock:
             return self._axes
 
-    @property
-    def sleeping(self) -> bool:
-        with self._lock:
-            return self._sleeping
+    def snapshot(self) -> StageSnapshot:
+        """Everything a view or a test reads of the firmware, as of one instant.
 
-    @property
-    def powered(self) -> bool:
+        The LED is what the ring shows (FIDELITY S3-33, table 7-4): see
+        :func:`led_ring`, the same precedence the station draws from the device flags.
+        """
         with self._lock:
-            return self._powered
-
-    @property
-    def led(self) -> Led:
-        """What the LED ring shows (FIDELITY S3-33, table 7-4): see :func:`led_ring`,
-        the same precedence the station draws from the device flags."""
-        with self._lock:
-            if not self._powered:
-                return Led.OFF
-            return led_ring(self._device_flags())
+            powered = self._powered
+            return StageSnapshot(
+                powered=powered,
+                sleeping=self._sleeping,
+                led=led_ring(self._device_flags()) if powered else Led.OFF,
+                motors_enabled=self._block_status() is None and not self._sleeping and powered,
+                session_open=self._session_open(),
+                rejected_frames=self._rejected_frames(),
+                fast=tuple(control.fast for control in self._controls),
+                driver_faults=tuple(control.driver_fault for control in self._controls),
+                charger_connected=self._battery.charger_connected,
+                usb_connected=self._usb_connected,
+                battery_charge=self._battery.charge,
+                board_temperature_c=self._board_temperature_c,
+                rotation_rate_dps=self._imu.rate_dps,
+                yaw_deg=self._imu.yaw_deg,
+                verification_fault=self.fram.verification_fault,
+            )
 
     def press_button(self, held_s: float = 0.1) -> None:
         """The user button (FIDELITY S3-36): on, off, or a reset when held long.
@@ -381,22 +394,6 @@ class StageFirmware(ControlCycles):
                 axis.set_position(axis.physical_um)
 
     @property
-    def rejected_frames(self) -> int:
-        with self._lock:
-            return self._rejected_frames()
-
-    @property
-    def motors_enabled(self) -> bool:
-        """False while blocked, asleep or off (a faulted driver disables only its own axis)."""
-        with self._lock:
-            return self._block_status() is None and not self._sleeping and self._powered
-
-    @property
-    def session_open(self) -> bool:
-        with self._lock:
-            return self._session_open()
-
-    @property
     def command_log(self) -> tuple[ExecutedCommand, ...]:
         """The latest commands handled, oldest first (a snapshot, safe from any thread)."""
         with self._lock:
@@ -406,10 +403,6 @@ class StageFirmware(ControlCycles):
         """A parameter as a READ would answer it (encoder included)."""
         with self._lock:
             return self._parameter(axis, parameter)
-
-    def speed_is_fast(self, axis: int) -> bool:
-        with self._lock:
-            return self._controls[axis].fast
 
     # -- environment and fault controls -----------------------------------------
 
@@ -487,10 +480,6 @@ class StageFirmware(ControlCycles):
         with self._lock:
             self.fram.verification_fault = fault
 
-    def driver_fault(self, axis: int) -> bool:
-        with self._lock:
-            return self._controls[axis].driver_fault
-
     def set_driver_fault(self, axis: int, fault: bool) -> None:
         """Over-temperature or stall on one driver: that axis stops dead and shows C."""
         with self._lock:
@@ -533,13 +522,13 @@ class StageFirmware(ControlCycles):
         )
         return _PendingEcho(frame.subscriber, replies)
 
-    def _handle_packet(self, index: int, packet: CommandPacket, now: float) -> _Reply:
+    def _handle_packet(self, index: int, packet: CommandPacket, now: float) -> Reply:
         parameter = written_parameter(packet.command)
         if parameter is not None:
             reply = self._write(index, parameter, packet.data)
         else:
             handler = self._handlers.get(packet.command)
-            reply = _UNKNOWN if handler is None else handler(index, packet.data, now)
+            reply = UNKNOWN if handler is None else handler(index, packet.data, now)
         if packet.command != CommandId.NOP:
             self._command_log.append(
                 ExecutedCommand(now, index, packet.command, packet.data, reply.accepted)
@@ -566,7 +555,7 @@ class StageFirmware(ControlCycles):
         frame = encode_echo(EchoFrame(packets, subscriber, sdata))
         self._send_to_host(frame)
 
-    def _echo_packet(self, index: int, reply: _Reply) -> EchoPacket:
+    def _echo_packet(self, index: int, reply: Reply) -> EchoPacket:
         status = reply.status if reply.status is not None else self._axis_status(index)
         data = reply.data if reply.data is not None else self._axes[index].position_quantised_um
         return EchoPacket(reply.type, status, _fit(data))
@@ -724,95 +713,19 @@ class StageFirmware(ControlCycles):
         ):
             axis.limits = self._limits(index)
 
-    def _write(self, index: int, parameter: EchoType, value: int) -> _Reply:
+    def _write(self, index: int, parameter: EchoType, value: int) -> Reply:
         if parameter_in_range(parameter, value) and self.fram.write(index, parameter, value):
             self._apply_parameter(index, parameter)
-            return _Reply(type=parameter, data=value)
+            return Reply(type=parameter, data=value)
         kept = self.fram.read(index, parameter)
-        return _Reply(parameter, AxisStatus.PARAMETER_REJECTED, kept, accepted=False)
+        return Reply(parameter, AxisStatus.PARAMETER_REJECTED, kept, accepted=False)
 
-    def _read(self, index: int, data: int, now: float) -> _Reply:
+    def _read(self, index: int, data: int, now: float) -> Reply:
         if not EchoType.FAST_SPEED <= data <= EchoType.ENCODER:
-            return _UNKNOWN
-        return _Reply(type=data, data=self._parameter(index, data))
+            return UNKNOWN
+        return Reply(type=data, data=self._parameter(index, data))
 
-    # -- command handlers ------------------------------------------------------------------
-
-    def _speed_of(self, index: int) -> float:
-        """The selected speed as the step timer runs it (FIDELITY S3-28)."""
-        fast = self._controls[index].fast
-        asked = self.fram.read(index, EchoType.FAST_SPEED if fast else EchoType.SLOW_SPEED)
-        microstep = self._axes[index].limits.microstep_um
-        return quantised_speed(asked, microstep, self.config.step_clock_hz)
-
-    def _take_over(self, index: int) -> Axis:
-        """The axis, with whatever the previous command left pending forgotten."""
-        control = self._controls[index]
-        control.jog_direction = 0
-        control.homed = False
-        return self._axes[index]
-
-    def _nop(self, index: int, data: int, now: float) -> _Reply:
-        return _DEFAULT_REPLY
-
-    def _stop(self, index: int, data: int, now: float) -> _Reply:
-        self._take_over(index).stop()
-        return _DEFAULT_REPLY
-
-    def _estop(self, index: int, data: int, now: float) -> _Reply:
-        self._take_over(index).estop()
-        return _DEFAULT_REPLY
-
-    def _jog(self, index: int, data: int, now: float) -> _Reply:
-        if data not in (-1, 0, 1):
-            return _UNKNOWN
-        if not self._may_move(index):
-            return _REFUSED
-        control = self._controls[index]
-        if data == 0:
-            # Key released: that ends a jog, but a move in progress carries on.
-            if control.jog_direction:
-                self._take_over(index).stop()
-            return _DEFAULT_REPLY
-        self._take_over(index).jog(data, self._speed_of(index))
-        control.jog_direction = data
-        control.last_jog = now
-        return _DEFAULT_REPLY
-
-    def _move_abs(self, index: int, data: int, now: float) -> _Reply:
-        if not self._may_move(index):
-            return _REFUSED
-        self._take_over(index).move_to(data, self._speed_of(index))
-        return _DEFAULT_REPLY
-
-    def _move_rel(self, index: int, data: int, now: float) -> _Reply:
-        if not self._may_move(index):
-            return _REFUSED
-        self._take_over(index).move_by(data, self._speed_of(index))
-        return _DEFAULT_REPLY
-
-    def _home(self, index: int, data: int, now: float) -> _Reply:
-        if not self._may_move(index):
-            return _REFUSED
-        slow = self.fram.read(index, EchoType.SLOW_SPEED)
-        microstep = self._axes[index].limits.microstep_um
-        self._take_over(index).home(quantised_speed(slow, microstep, self.config.step_clock_hz))
-        self._controls[index].homed = True
-        return _DEFAULT_REPLY
-
-    def _set_pos(self, index: int, data: int, now: float) -> _Reply:
-        self._axes[index].set_position(data)
-        return _DEFAULT_REPLY
-
-    def _speed(self, index: int, data: int, now: float) -> _Reply:
-        if data not in (0, 1):
-            return _UNKNOWN
-        self._controls[index].fast = data == 1
-        return _DEFAULT_REPLY
-
-    def _sleep(self, index: int, data: int, now: float) -> _Reply:
-        if data not in (0, 1):
-            return _UNKNOWN
-        self._sleeping = data == 1
+    def _set_sleeping(self, sleeping: bool) -> None:
+        """SLEEP: the motors off (or on again); an axis still moving stops dead."""
+        self._sleeping = sleeping
         self._enforce_interlocks()
-        return _DEFAULT_REPLY

@@ -421,7 +421,7 @@ def test_a_driver_fault_and_a_verification_fault(
 ) -> None:
     controls.set_driver_fault(1, True)
     controls.set_verification_fault(True)
-    assert connected.emulator.driver_fault(1) and connected.emulator.verification_fault
+    assert connected.emulator.snapshot().driver_faults[1] and connected.emulator.verification_fault
     connected.run(0.3)
     assert connected.station.model.axes[1].status_text == "driver fault"
     state = controls.state()

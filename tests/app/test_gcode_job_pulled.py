@@ -31,6 +31,7 @@ from app.jobs.run.gcode_stream import GcodeStream
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.machines.gcode.feeder import Received
+from app.machines.gcode.job_feed import JobFeed
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.profiles import load_profile
 from app.station import Station
@@ -235,14 +236,14 @@ def test_a_line_that_cannot_go_fails_the_job_there_with_its_reason(
     board: tuple[Station, BoardPort], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     station, port = board
-    session = session_of(station)
+    assert session_of(station) is not None
     messages: list[str] = []
-    made = session.job_line
+    made = JobFeed._encode
 
-    def refusing(text: str, index: int) -> tuple[bytes, SentLine] | str:
-        return "a line the board cannot take" if index == 30 else made(text, index)
+    def refusing(feed: JobFeed, text: str, index: int) -> tuple[bytes, SentLine] | str:
+        return "a line the board cannot take" if index == 30 else made(feed, text, index)
 
-    monkeypatch.setattr(session, "job_line", refusing)
+    monkeypatch.setattr(JobFeed, "_encode", refusing)
     runner = JobRunner(station, tmp_path / "checkpoints")
     runner.message.connect(messages.append)
     assert runner.load(job()) == []
@@ -258,16 +259,14 @@ def test_a_line_that_cannot_go_fails_the_job_there_with_its_reason(
 def test_a_report_read_before_answers_proves_nothing_about_them() -> None:
     """The window handles a report after answers read later: those may still be planned."""
     stream = GcodeStream(job(10), load_profile("grbl-plotter"), 0)
-    count = iter(range(1, 100))
-    stream.make = lambda text, index: (
-        text.encode() + b"\n",
-        SentLine(next(count), text, "job", index),
-    )
-    lines = stream.take(10)
-    for _raw, sent in lines[:5]:
+    lines = [
+        SentLine(serial, text, "job", index)
+        for serial, (index, text) in enumerate(stream.next_lines(10), 1)
+    ]
+    for sent in lines[:5]:
         assert stream.count_answer(sent)
     seen = stream.reported()  # five lines still unanswered as the report is read
-    for _raw, sent in lines[5:]:
+    for sent in lines[5:]:
         assert stream.count_answer(sent)
     stream.status("Idle", None, 0, None, seen)
     assert stream.answered == 10
@@ -278,8 +277,7 @@ def test_a_report_read_before_answers_proves_nothing_about_them() -> None:
 
 def test_only_the_jobs_own_answers_are_counted_by_the_job() -> None:
     stream = GcodeStream(job(3), load_profile("grbl-plotter"), 0)
-    stream.make = lambda text, index: (text.encode() + b"\n", SentLine(index, text, "job", index))
-    stream.take(3)
+    stream.next_lines(3)
     assert not stream.count_answer(SentLine(7, "G90", "console", None))
     assert not stream.count_answer(SentLine(2, "G1 X0.5 Y1", "job", 2))  # not the oldest
     assert stream.count_answer(SentLine(0, "G1 X0 Y1", "job", 0))
@@ -291,9 +289,8 @@ def test_a_wait_stops_the_pull_until_the_operator_confirms() -> None:
     ops.append(Operation(OpKind.WAIT, SourceRef("w", 4), message="change the pen"))
     ops.append(move(SourceRef("w", 5), X=9.0))
     stream = GcodeStream(Program("w", tuple(ops)), load_profile("grbl-plotter"), 0)
-    stream.make = lambda text, index: (text.encode() + b"\n", SentLine(index, text, "job", index))
-    assert [sent.op_index for _raw, sent in stream.take(10)] == [0, 1, 2]
-    assert stream.take(10) == []
+    assert [index for index, _text in stream.next_lines(10)] == [0, 1, 2]
+    assert stream.next_lines(10) == []
     assert stream.waiting_at == 3
 
 

@@ -94,7 +94,7 @@ def test_a_move_mangled_on_the_way_to_the_stage_runs_once_and_the_job_ends(
     )
     assert hit and hit[0].startswith(b">03")  # the fault did hit a move's frame
     assert connected.session.rejected == 0  # nothing mangled came back to the station
-    assert connected.emulator.rejected_frames >= 1  # the stage refused the mangled frame
+    assert connected.emulator.snapshot().rejected_frames >= 1  # the stage refused the mangled frame
     assert runner.state is JobState.DONE
     assert _per_axis(_executed(connected)) == _per_axis(expected_moves(prog))
 

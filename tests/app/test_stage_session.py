@@ -93,7 +93,7 @@ def test_held_jog_repeats_every_period_and_release_is_repeated_then_nop(
 
 def test_shift_switches_speed_before_the_jog_in_the_same_burst(harness: StationHarness) -> None:
     harness.run(3.0)
-    assert harness.emulator.speed_is_fast(0)
+    assert harness.emulator.snapshot().fast[0]
     start = len(harness.written)
     harness.session.set_shift(True)
     harness.session.set_jog([1, 0])
@@ -101,7 +101,7 @@ def test_shift_switches_speed_before_the_jog_in_the_same_burst(harness: StationH
     commands = [p.command for f in frames for p in f.packets[:1]]
     assert commands.index(CommandId.SPEED) < commands.index(CommandId.JOG)
     harness.run(0.05)
-    assert not harness.emulator.speed_is_fast(0)
+    assert not harness.emulator.snapshot().fast[0]
     harness.hold(2.0)
     slow = harness.emulator.parameter(0, EchoType.SLOW_SPEED)
     assert harness.station.model.axes[0].velocity == pytest.approx(slow / 1000, rel=0.05)

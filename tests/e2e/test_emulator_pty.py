@@ -435,10 +435,10 @@ def test_s3_36_the_stages_button_and_kill_switch_are_controls() -> None:
     stage = StageFirmware(ManualClock())
     errors = io.StringIO()
     controls = ControlChannel(stage, -1, errors)
-    assert controls.execute("button") and not stage.powered
-    assert controls.execute("button") and stage.powered
-    assert controls.execute("button long") and stage.powered  # a reset: on again at once
-    assert controls.execute("kill") and not stage.powered
+    assert controls.execute("button") and not stage.snapshot().powered
+    assert controls.execute("button") and stage.snapshot().powered
+    assert controls.execute("button long") and stage.snapshot().powered  # a reset: on again at once
+    assert controls.execute("kill") and not stage.snapshot().powered
     assert not controls.execute("button twice") and not controls.execute("kill now")
     assert len(_lines(errors)) == 2
 

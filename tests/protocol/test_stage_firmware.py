@@ -173,12 +173,12 @@ def test_malformed_frames_are_dropped_counted_and_never_answered(bench: Bench) -
     for line in bad:
         bench.fw.receive(line)
     assert bench.step() == []
-    assert bench.fw.rejected_frames == 5
+    assert bench.fw.snapshot().rejected_frames == 5
     assert bench.subscribe(Subscriber.REJECTED_FRAMES) == 5
     # the reader resynchronised: a good frame after the noise is answered
     bench.fw.receive(b"noise\n" + good)
     assert len(bench.step()) == 1
-    assert bench.fw.rejected_frames == 6
+    assert bench.fw.snapshot().rejected_frames == 6
 
 
 @settings(max_examples=40, deadline=None)
@@ -228,7 +228,7 @@ def test_unknown_or_malformed_commands_answer_status_f_in_their_packet(
     echo = bench.exchange(NOP, packet)
     assert echo.packets[0] == EchoPacket(EchoType.POSITION, AxisStatus.IDLE, 0)
     assert echo.packets[1].status == AxisStatus.UNKNOWN_COMMAND
-    assert not bench.fw.sleeping
+    assert not bench.fw.snapshot().sleeping
     assert not bench.fw.axes[1].moving
 
 
@@ -559,7 +559,7 @@ def test_a_block_stops_motion_refuses_it_and_clears_by_itself(
     bench.idle(0.2)
     cause(bench.fw, True)
     assert not bench.fw.axes[0].moving  # stopped at once, no deceleration
-    assert not bench.fw.motors_enabled
+    assert not bench.fw.snapshot().motors_enabled
     held = bench.fw.axes[0].position_um
     for packet in MOTION:
         echo = bench.exchange(packet, packet)
@@ -569,7 +569,7 @@ def test_a_block_stops_motion_refuses_it_and_clears_by_itself(
     assert not any(axis.moving for axis in bench.fw.axes)
     assert [c.accepted for c in bench.fw.command_log][-8:] == [False] * 8
     cause(bench.fw, False)
-    assert bench.fw.motors_enabled
+    assert bench.fw.snapshot().motors_enabled
     echo = bench.exchange(cmd(CommandId.MOVE_ABS, 0), cmd(CommandId.MOVE_ABS, 3000))
     assert [p.status for p in echo.packets] == [AxisStatus.ACCELERATING] * 2
 
@@ -597,17 +597,17 @@ def test_the_battery_running_flat_blocks_the_stage_while_it_moves() -> None:
 def test_the_led_ring_shows_the_originals_states(bench: Bench) -> None:
     """FIDELITY S3-33, table 7-4: charger red on, low battery red fast blink, standby green,
     pairing blue slow blink, talking blue on."""
-    assert bench.fw.led is Led.PAIRING  # no host yet: advertising
+    assert bench.fw.snapshot().led is Led.PAIRING  # no host yet: advertising
     bench.exchange()
-    assert bench.fw.led is Led.TALKING
+    assert bench.fw.snapshot().led is Led.TALKING
     bench.exchange(cmd(CommandId.SLEEP, 1), cmd(CommandId.SLEEP, 1))
-    assert bench.fw.led is Led.STANDBY
+    assert bench.fw.snapshot().led is Led.STANDBY
     bench.fw.battery_charge = 10.0  # below the 15 % low mark
-    assert bench.fw.led is Led.LOW_BATTERY
+    assert bench.fw.snapshot().led is Led.LOW_BATTERY
     bench.fw.charger_connected = True
-    assert bench.fw.led is Led.CHARGING
+    assert bench.fw.snapshot().led is Led.CHARGING
     bench.fw.press_button()
-    assert bench.fw.led is Led.OFF
+    assert bench.fw.snapshot().led is Led.OFF
 
 
 def test_the_button_switches_off_stopping_everything_and_on_afresh(bench: Bench) -> None:
@@ -618,14 +618,14 @@ def test_the_button_switches_off_stopping_everything_and_on_afresh(bench: Bench)
     bench.idle(0.2)
     assert bench.fw.axes[0].moving
     bench.fw.press_button()
-    assert not bench.fw.powered and not bench.fw.motors_enabled
+    assert not bench.fw.snapshot().powered and not bench.fw.snapshot().motors_enabled
     assert not any(axis.moving for axis in bench.fw.axes)
     bench.send(cmd(CommandId.JOG, 1))
     assert bench.step(20) == []  # off: nothing heard, nothing answered
     assert not bench.fw.axes[0].moving
     stopped_at = bench.fw.axes[0].physical_um
     bench.fw.press_button()
-    assert bench.fw.powered and bench.fw.motors_enabled
+    assert bench.fw.snapshot().powered and bench.fw.snapshot().motors_enabled
     # The counters start afresh from the absolute encoder (S3-30): where the axis stands.
     assert bench.fw.axes[0].position_um == pytest.approx(stopped_at)
     assert bench.fw.parameter(0, EchoType.ACCELERATION) == 12_345  # FRAM kept it
@@ -636,14 +636,14 @@ def test_sleep_refuses_motion_until_woken(bench: Bench) -> None:
     bench.exchange(cmd(CommandId.JOG, 1))
     echo = bench.exchange(cmd(CommandId.SLEEP, 1), cmd(CommandId.NOP))
     assert [p.status for p in echo.packets] == [AxisStatus.SLEEPING] * 2
-    assert bench.fw.sleeping and not bench.fw.axes[0].moving
+    assert bench.fw.snapshot().sleeping and not bench.fw.axes[0].moving
     assert bench.subscribe(Subscriber.DEVICE_FLAGS) & DeviceFlag.SLEEPING
     for packet in MOTION:
         assert bench.exchange(packet, packet).packets[1].status == AxisStatus.SLEEPING
     bench.idle(0.2)
     assert not any(axis.moving for axis in bench.fw.axes)
     echo = bench.exchange(cmd(CommandId.NOP), cmd(CommandId.SLEEP, 0))
-    assert not bench.fw.sleeping
+    assert not bench.fw.snapshot().sleeping
     assert echo.packets[0].status != AxisStatus.SLEEPING
     echo = bench.exchange(cmd(CommandId.MOVE_ABS, 3000))
     assert x_status(echo) == AxisStatus.ACCELERATING
@@ -729,12 +729,12 @@ def test_device_flags(bench: Bench) -> None:
 
 
 def test_data_session_closes_after_2_s_without_frames(bench: Bench) -> None:
-    assert not bench.fw.session_open
+    assert not bench.fw.snapshot().session_open
     bench.exchange()
     bench.idle(1.99)
-    assert bench.fw.session_open
+    assert bench.fw.snapshot().session_open
     bench.idle(0.02)
-    assert not bench.fw.session_open
+    assert not bench.fw.snapshot().session_open
 
 
 def test_encoder_and_version_subscribers(bench: Bench) -> None:
@@ -830,14 +830,14 @@ def test_s3_36_the_kill_switch_cuts_the_power_without_the_shutdown_sequence() ->
     bench.exchange(cmd(CommandId.JOG, 1))
     bench.idle(0.2)
     bench.fw.kill_switch()
-    assert not bench.fw.powered and not bench.fw.motors_enabled
+    assert not bench.fw.snapshot().powered and not bench.fw.snapshot().motors_enabled
     assert not any(axis.moving for axis in bench.fw.axes)
-    assert bench.fw.led is Led.OFF
+    assert bench.fw.snapshot().led is Led.OFF
     assert bench.fw.fram.dump(0x28, 8) == bytes(8)  # nothing saved
     bench.send(cmd(CommandId.JOG, 1))
     assert bench.step(20) == []  # silent
     bench.fw.kill_switch()  # already off: nothing more to cut
-    assert not bench.fw.powered
+    assert not bench.fw.snapshot().powered
 
 
 def test_s3_36_a_long_press_resets_the_board_at_once() -> None:
@@ -847,17 +847,17 @@ def test_s3_36_a_long_press_resets_the_board_at_once() -> None:
     bench = Bench(StageConfig(save_steps_at_shutdown=True))
     bench.exchange(cmd(CommandId.SLEEP, 1), cmd(CommandId.SLEEP, 1))
     bench.fw.press_button(held_s=bench.fw.config.reset_press_s)
-    assert bench.fw.powered and not bench.fw.sleeping
+    assert bench.fw.snapshot().powered and not bench.fw.snapshot().sleeping
     bench.exchange(cmd(CommandId.SPEED, 1), cmd(CommandId.SET_POS, 5_000))
     bench.exchange(cmd(CommandId.JOG, 1))
     bench.idle(0.2)
     assert bench.fw.axes[0].moving
     bench.send(cmd(CommandId.JOG, 1))  # arrived, not yet handled: the reset drops it
     bench.fw.press_button(held_s=bench.fw.config.reset_press_s)
-    assert bench.fw.powered and bench.fw.motors_enabled
+    assert bench.fw.snapshot().powered and bench.fw.snapshot().motors_enabled
     assert not bench.fw.axes[0].moving
-    assert not bench.fw.speed_is_fast(0)
-    assert bench.fw.led is Led.PAIRING  # no session until the host speaks again
+    assert not bench.fw.snapshot().fast[0]
+    assert bench.fw.snapshot().led is Led.PAIRING  # no session until the host speaks again
     assert bench.fw.fram.dump(0x28, 8) == bytes(8)  # nothing saved
     assert bench.step(5) == []
     stood = bench.fw.axes[0].physical_um
@@ -866,4 +866,4 @@ def test_s3_36_a_long_press_resets_the_board_at_once() -> None:
     assert echo.packets[1].data == 0  # Y's SET_POS 5000 is forgotten: the encoder says 0
     # A shorter press is the ordinary switch-off.
     bench.fw.press_button(held_s=bench.fw.config.reset_press_s - 0.1)
-    assert not bench.fw.powered
+    assert not bench.fw.snapshot().powered

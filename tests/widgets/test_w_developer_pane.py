@@ -335,7 +335,10 @@ def test_a_driver_fault_checkbox_faults_that_axis(
     qtbot: QtBot, connected: StationHarness, pane: DeveloperPane
 ) -> None:
     _tick(qtbot, pane.emulator_box.driver_faults[1])
-    assert connected.emulator.driver_fault(1) and not connected.emulator.driver_fault(0)
+    assert (
+        connected.emulator.snapshot().driver_faults[1]
+        and not connected.emulator.snapshot().driver_faults[0]
+    )
     connected.run(0.3)
     assert connected.station.model.axes[1].status_text == "driver fault"
 

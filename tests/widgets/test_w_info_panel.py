@@ -124,16 +124,16 @@ def test_s3_33_the_led_ring_is_drawn_from_the_device_flags(
     assert info.led_text.toolTip() == "Talking to this station"
     harness.emulator.battery_charge = 10.0
     harness.run(1.5)
-    assert info.led_state() is LedRing.LOW_BATTERY is harness.emulator.led
+    assert info.led_state() is LedRing.LOW_BATTERY is harness.emulator.snapshot().led
     assert info.led_text.text() == "LED ring: red, blinking fast"
     harness.emulator.charger_connected = True
     harness.run(1.5)
-    assert info.led_state() is LedRing.CHARGING is harness.emulator.led
+    assert info.led_state() is LedRing.CHARGING is harness.emulator.snapshot().led
     harness.emulator.charger_connected = False
     harness.emulator.battery_charge = 80.0
     harness.session.set_sleep(True)
     harness.run(1.5)
-    assert info.led_state() is LedRing.STANDBY is harness.emulator.led
+    assert info.led_state() is LedRing.STANDBY is harness.emulator.snapshot().led
     assert LED_COLOURS[LedRing.STANDBY] in info.led_lamp.styleSheet()
     # Silent stage: the station no longer knows how the ring is lit.
     harness.emulator.kill_switch()

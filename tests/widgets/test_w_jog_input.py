@@ -69,20 +69,20 @@ def test_release_all_lets_go_of_everything(harness: StationHarness, jog: JogInpu
     assert harness.session.jog_vector == (0, 0)
     assert not jog.is_held(RIGHT)
     harness.run(0.3)
-    assert harness.emulator.speed_is_fast(0)  # Shift forgotten too
+    assert harness.emulator.snapshot().fast[0]  # Shift forgotten too
     jog.key_release(RIGHT)  # the late key-up changes nothing
     jog.button_release("y+")
     assert harness.session.jog_vector == (0, 0)
 
 
 def test_shift_selects_the_other_speed(harness: StationHarness, jog: JogInput) -> None:
-    assert harness.emulator.speed_is_fast(0)
+    assert harness.emulator.snapshot().fast[0]
     jog.set_shift(True)
     harness.run(0.1)
-    assert not harness.emulator.speed_is_fast(0)
+    assert not harness.emulator.snapshot().fast[0]
     jog.set_shift(False)
     harness.run(0.1)
-    assert harness.emulator.speed_is_fast(0)
+    assert harness.emulator.snapshot().fast[0]
 
 
 def test_disabled_input_holds_nothing(harness: StationHarness, jog: JogInput) -> None:

@@ -288,14 +288,14 @@ def test_sleep_locks_motion_until_wake(
     assert sleep.text() == "Sleep"
     qtbot.mouseClick(sleep, Qt.MouseButton.LeftButton)
     harness.run_until(lambda: window.lock_label.isVisible(), timeout=1)
-    assert harness.emulator.sleeping
+    assert harness.emulator.snapshot().sleeping
     assert "sleeping" in window.lock_label.text()
     assert not any(w.isEnabled() for w in _motion_controls(window))
     assert sleep.text() == "Wake" and sleep.isEnabled()
 
     qtbot.mouseClick(sleep, Qt.MouseButton.LeftButton)
     harness.run_until(lambda: window.lock_label.isHidden(), timeout=1)
-    assert not harness.emulator.sleeping
+    assert not harness.emulator.snapshot().sleeping
     assert sleep.text() == "Sleep"
     assert all(w.isEnabled() for w in _motion_controls(window))
 
@@ -404,12 +404,12 @@ def test_shift_held_jogs_at_the_other_speed(
     qtbot.keyPress(window, Qt.Key.Key_Shift)
     qtbot.keyPress(window, Qt.Key.Key_Right, Qt.KeyboardModifier.ShiftModifier)
     harness.run(0.2)
-    assert not harness.emulator.speed_is_fast(0)
+    assert not harness.emulator.snapshot().fast[0]
     assert window.static_panel.shift_note.text() == "Shift held: slow"
     qtbot.keyRelease(window, Qt.Key.Key_Right, Qt.KeyboardModifier.ShiftModifier)
     qtbot.keyRelease(window, Qt.Key.Key_Shift)
     harness.run(0.2)
-    assert harness.emulator.speed_is_fast(0)
+    assert harness.emulator.snapshot().fast[0]
 
 
 @pytest.mark.parametrize("focus", ["window", "spin box", "dynamics field"])

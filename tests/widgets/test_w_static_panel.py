@@ -33,14 +33,14 @@ def panel(qtbot: QtBot, harness: StationHarness, jog: JogInput) -> StaticPanel:
 def test_slow_and_fast_reach_the_device(
     qtbot: QtBot, harness: StationHarness, panel: StaticPanel
 ) -> None:
-    assert panel.fast_button.isChecked() and harness.emulator.speed_is_fast(0)
+    assert panel.fast_button.isChecked() and harness.emulator.snapshot().fast[0]
     qtbot.mouseClick(panel.slow_button, LEFT)
     harness.run(0.1)
-    assert not harness.emulator.speed_is_fast(0) and not harness.emulator.speed_is_fast(1)
+    assert not harness.emulator.snapshot().fast[0] and not harness.emulator.snapshot().fast[1]
     assert not harness.session.fast_selected
     qtbot.mouseClick(panel.fast_button, LEFT)
     harness.run(0.1)
-    assert harness.emulator.speed_is_fast(0)
+    assert harness.emulator.snapshot().fast[0]
 
 
 def test_shift_is_announced(panel: StaticPanel, jog: JogInput) -> None:
@@ -58,7 +58,7 @@ def test_the_speed_choice_survives_a_reconnect(
     harness.connect()
     harness.run(0.3)
     assert not harness.session.fast_selected
-    assert not harness.emulator.speed_is_fast(0)
+    assert not harness.emulator.snapshot().fast[0]
 
 
 def test_stop_stops_every_axis(qtbot: QtBot, harness: StationHarness, panel: StaticPanel) -> None:
@@ -76,7 +76,7 @@ def test_sleep_button_follows_the_device(
     qtbot.mouseClick(panel.sleep_button, LEFT)
     assert panel.sleep_button.text() == "Wake"  # shown at once
     harness.run(0.3)
-    assert harness.emulator.sleeping and harness.station.model.sleeping
+    assert harness.emulator.snapshot().sleeping and harness.station.model.sleeping
     # A charger outranks "sleeping" in the statuses; the device flags still say asleep,
     # so the model and the button keep offering Wake.
     harness.emulator.charger_connected = True
@@ -87,5 +87,5 @@ def test_sleep_button_follows_the_device(
     harness.emulator.charger_connected = False
     qtbot.mouseClick(panel.sleep_button, LEFT)
     harness.run(0.3)
-    assert not harness.emulator.sleeping
+    assert not harness.emulator.snapshot().sleeping
     assert panel.sleep_button.text() == "Sleep"

@@ -267,7 +267,7 @@ class GcodePanel(QWidget):
 
     def release_motors(self) -> bool:
         """First step of zeroing by hand: the session judges it (gate) and sends ``M18``."""
-        released = self.session is not None and self.session.release_motors()
+        released = self.session is not None and self.session.zeroing.release_motors()
         self._sync_hand_zeroing()
         return released
 
@@ -276,13 +276,13 @@ class GcodePanel(QWidget):
         radius = self.board_radius.value()
         if radius is None or self.session is None:
             return False
-        zeroed = self.session.zero_here(radius)
+        zeroed = self.session.zeroing.zero_here(radius)
         self._sync_hand_zeroing()
         return zeroed
 
     def _sync_hand_zeroing(self, *_args: object) -> None:
         session = self.session
-        released = session is not None and session.released_by_hand
+        released = session is not None and session.zeroing.released
         self.zero_here_button.setEnabled(self._motion_enabled and released)
 
     def set_motion_enabled(self, enabled: bool) -> None:

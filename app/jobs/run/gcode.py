@@ -10,9 +10,10 @@ program's own path back to where the machine stands.
 While the job runs its lines are pulled, and its answers counted, by the
 session's feeder on the transport's reader thread (see
 :mod:`app.machines.gcode.feeder`): the wire stays full whatever the window
-is doing.  This driver, on the GUI thread, lets the job be pulled only while
-it runs, hears of its answers once per batch (``jobAdvanced``), and reads and
-changes the stream under the feeder's lock.
+is doing.  The job goes through one :class:`~app.machines.gcode.job_feed.JobFeed`
+this driver starts (:meth:`GcodeSession.start_job`), lets be pulled only while
+the job runs, holds, and releases; it hears of its answers once per batch
+(``jobAdvanced``), and reads and changes the stream under the feed's lock.
 
 Positions are compared in the program's coordinates: the machine position
 less the work offset (GRBL's G92) the board had when the job began — the
@@ -23,9 +24,8 @@ coordinates that reach it with the offset the board has then.
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Sequence
-from contextlib import nullcontext
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
@@ -42,8 +42,10 @@ from app.jobs.run.gcode_stream import (
     resume_state,
     retrace,
 )
+from app.jobs.run.pacing import Every
 from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
+from app.machines.gcode.job_feed import JobFeed
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
@@ -92,12 +94,15 @@ class GcodeDriver(JobDriver):
         #: may mean nothing ran as well as that the file came back to it.
         self._start_at: tuple[float, ...] | None = None
         self.session: GcodeSession | None = None
+        #: The running job's way to the wire (None without a stream or a session).
+        self.feed: JobFeed | None = None
         self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
         self._asked_since_recheck = False
-        self._checkpoint_at = -1.0
+        #: Checkpoints while lines stream, and "operation under way" announcements, are paced.
+        self._checkpoints = Every(CHECKPOINT_EVERY_S)
         self._shown: int | None = None
-        self._shown_at = -1.0
+        self._shows = Every(SHOW_EVERY_S)
         #: ``$G`` was sent after the set-up: nothing of the job goes before its answer.
         self._confirming = False
         #: The operation the last resume went back to (a refused way back fails there).
@@ -120,10 +125,15 @@ class GcodeDriver(JobDriver):
         #: cycle start — the board still has every line it was sent.
         self._held_by_machine = False
 
-    def _locked(self) -> threading.RLock | nullcontext[None]:
-        """The feeder's lock: the reader thread pulls and counts the stream under it."""
-        session = self.session
-        return session.feeder.lock if session is not None else nullcontext()
+    def _locked(self) -> AbstractContextManager[object]:
+        """The feed's lock: the reader thread pulls and counts the stream under it."""
+        feed = self.feed
+        return feed.locked() if feed is not None else nullcontext()
+
+    def _hold(self) -> None:
+        """Pull nothing more of the job (what is queued stays)."""
+        if self.feed is not None:
+            self.feed.hold()
 
     @property
     def in_flight(self) -> int | None:
@@ -141,7 +151,7 @@ class GcodeDriver(JobDriver):
         old = self.session
         if old is not None:
             try:
-                old.follow_job(None)
+                self._follow(stream_too=False)
                 old.lineSent.disconnect(self._on_sent)
                 old.jobAdvanced.disconnect(self._on_advanced)
                 old.lineAcknowledged.disconnect(self._on_line_ok)
@@ -162,14 +172,15 @@ class GcodeDriver(JobDriver):
             self.session.replyText.connect(self._on_reply_text)
             self._follow()
 
-    def _follow(self) -> None:
-        """The session counts this job's answers (and may be let pull its lines)."""
+    def _follow(self, *, stream_too: bool = True) -> None:
+        """The session counts this job's answers (and may be let pull its lines); the feed of
+        the one before is released (``stream_too`` False: no new one is started)."""
+        feed, self.feed = self.feed, None
+        if feed is not None:
+            feed.release()
         session, stream = self.session, self.stream
-        if session is None or stream is None:
-            return
-        with session.feeder.lock:
-            stream.make = session.job_line
-            session.follow_job(stream)
+        if stream_too and session is not None and stream is not None:
+            self.feed = session.start_job(stream)
 
     # --- what the runner asks ----------------------------------------------------
 
@@ -190,7 +201,7 @@ class GcodeDriver(JobDriver):
         self._start_at = None
         if index == 0 and not verify and session is not None:
             self._start_at = tuple(
-                axis.position - self._offset(self._origin, i)
+                axis.position - _offset(self._origin, i)
                 for i, axis in enumerate(session.model.axes)
             )
         self._waiting = None
@@ -240,8 +251,8 @@ class GcodeDriver(JobDriver):
     def _proceed(self) -> bool:
         """:meth:`proceed`; True when it has told the runner the progress (it fed lines)."""
         runner = self.runner
-        stream, session = self.stream, self.session
-        if stream is None or session is None:
+        stream, session, feed = self.stream, self.session, self.feed
+        if stream is None or session is None or feed is None:
             runner.link_pause()
             return False
         running = runner.state is JobState.RUNNING
@@ -253,7 +264,7 @@ class GcodeDriver(JobDriver):
             self._set_up(session)
         preparing = self._confirming or self._preparing > 0
         if preparing or self._recheck or not running or runner.single_step:
-            session.hold_job()  # the job is pulled only while it runs on its own
+            self._hold()  # the job is pulled only while it runs on its own
         if preparing:
             return False  # the answer to the set-up or the way back carries on
         if self._recheck:
@@ -264,16 +275,14 @@ class GcodeDriver(JobDriver):
             return False  # _on_status carries on
         if runner.state is not JobState.RUNNING:
             return False
-        with session.feeder.lock:
+        with feed.locked():
             if runner.single_step and stream.in_flight:
                 return False
         if runner.single_step:
-            # One operation that sends something, then the runner pauses.
-            with session.feeder.lock:
-                stream.feed(session, 1)
+            feed.step()  # one operation that sends something, then the runner pauses
         else:
-            session.pull_job()  # from here on the reader thread sends the job as room frees
-        with session.feeder.lock:
+            feed.pull()  # from here on the reader thread sends the job as room frees
+        with feed.locked():
             wait = stream.waiting_at
             in_flight, sent_all, refused = stream.in_flight, stream.sent_all, stream.refused
         self._report(stream)
@@ -285,7 +294,7 @@ class GcodeDriver(JobDriver):
         if wait is not None or sent_all:
             if not session.settled:
                 return True  # the session's next status report can show it settled
-            session.hold_job()
+            self._hold()
             if wait is not None:
                 self._report(stream)
                 self._waiting = wait
@@ -303,7 +312,7 @@ class GcodeDriver(JobDriver):
         stream, session = self.stream, self.session
         if stream is None or session is None:
             return
-        with session.feeder.lock:  # the reader thread pulls no more from here on
+        with self._locked():  # the reader thread pulls no more from here on
             taken = session.discard_queued()
             indices = [s.op_index for s in taken if s.origin == "job" and s.op_index is not None]
             if indices:
@@ -332,14 +341,12 @@ class GcodeDriver(JobDriver):
     def stopped(self) -> None:
         """Abort or failure: the device was reset, so only executed operations count."""
         self._preparing = 0
-        if self.session is not None:
-            self.session.hold_job()  # nothing more is pulled (the stop took the queue back)
+        self._hold()  # nothing more is pulled (the stop took the queue back)
         self._write_checkpoint(force=True)
 
     def forget(self) -> None:
         self._waiting = None
-        if self.session is not None:
-            self.session.hold_job()
+        self._hold()
 
     # --- replies ------------------------------------------------------------------
 
@@ -388,8 +395,7 @@ class GcodeDriver(JobDriver):
             # The job runs only on a machine set up as the program expects it (back at its
             # place, pen and modes restored): refused, the rest would run elsewhere.
             self._confirming = False
-            if self.session is not None:
-                self.session.hold_job()
+            self._hold()
             refused = f"{sent.text!r}: error:{code} ({meaning})"
             if sent.origin == "setup":
                 runner.fail(0, f"the machine refused the set-up {refused}")
@@ -400,8 +406,7 @@ class GcodeDriver(JobDriver):
             return
         if runner.state not in ACTIVE:
             return
-        if self.session is not None:
-            self.session.hold_job()  # not one more line of the job after a refusal
+        self._hold()  # not one more line of the job after a refusal
         runner.fail(
             sent.op_index, f"the machine answered error:{code} ({meaning}) to {sent.text!r}"
         )
@@ -439,8 +444,7 @@ class GcodeDriver(JobDriver):
         """
         self._held_by_machine = True
         self.hold_back()  # what is not on the wire yet waits for the resume
-        if self.session is not None:
-            self.session.hold_job()
+        self._hold()
         program = self.runner.program
         stream = self.stream
         with self._locked():
@@ -451,7 +455,7 @@ class GcodeDriver(JobDriver):
                 "The machine holds (a feed hold: its hold button, the Hold button here, or "
                 "a '!' that reached it on the wire): the job is paused at {0}. Resume lets "
                 "it go on (cycle start).",
-            ).format(self._where(program, where) if program is not None else "?")
+            ).format(_where(program, where) if program is not None else "?")
         )
 
     def _status_to(self, stream: GcodeStream, report: StatusReport) -> None:
@@ -500,7 +504,7 @@ class GcodeDriver(JobDriver):
                 stream = self.stream
                 with self._locked():
                     first = stream.answered if stream.settings.ok_when_done else stream.executed
-                    upto = self._sent_upto(stream, first)
+                    upto = _sent_upto(stream, first)
                 self._choose(stream, first, upto)
             return
         if runner.state in CLOCK_RUNS:
@@ -530,13 +534,13 @@ class GcodeDriver(JobDriver):
                 "port reopened) and may have lost its position: the job is paused. Home it "
                 "($H) or check where the tool is (clear an alarm with $X), then choose the "
                 "line to resume from; {0} operation(s) from {1} were sent but not proven run.",
-            ).format(last - first, self._where(program, first))
+            ).format(last - first, _where(program, first))
         else:
             text = QCoreApplication.translate(
                 "GcodeDriver",
                 "{0} operation(s) from {1} were sent but their running is not proven: "
                 "choose the line to resume from (the candidates are highlighted).",
-            ).format(last - first, self._where(program, first))
+            ).format(last - first, _where(program, first))
         if draws and last > first:
             text += " " + QCoreApplication.translate(
                 "GcodeDriver",
@@ -548,10 +552,6 @@ class GcodeDriver(JobDriver):
         self.runner.choose_resume(
             ResumeChoice(first, last, default, text, position_lost=self._position_lost)
         )
-
-    @staticmethod
-    def _where(program: Program, index: int) -> str:
-        return str(program[index].source) if index < len(program) else "the end"
 
     def _resume_after_recheck(self, stream: GcodeStream, report: StatusReport) -> None:
         runner = self.runner
@@ -591,12 +591,12 @@ class GcodeDriver(JobDriver):
         # on GRBL, which answers once a line is planned, only what its reports showed run —
         # a reset whose banner was lost with the link takes the rest of the planner with it.
         # Where the machine stands then proves how far it got, when only one place fits.
-        with session.feeder.lock:
+        with self._locked():
             first = stream.answered if stream.settings.ok_when_done else stream.executed
-            upto = self._sent_upto(stream, first)
+            upto = _sent_upto(stream, first)
             if self._chosen is not None:
                 start = self._chosen
-                note = f"from {self._where(program, start)}, as the operator chose"
+                note = f"from {_where(program, start)}, as the operator chose"
             elif self._position_lost:
                 start = None
             else:
@@ -617,8 +617,8 @@ class GcodeDriver(JobDriver):
         self._position_lost = False
         self._resume_at = start
         axes = [a.name for a in runner.station.profile.axes]
-        way_back = retrace(program, axes, start, self._sent_upto(stream, start), here)
-        with session.feeder.lock:
+        way_back = retrace(program, axes, start, _sent_upto(stream, start), here)
+        with self._locked():
             stream.rewind(start)
         if start >= len(program):
             runner.note(f"The machine is back: {note}")
@@ -629,10 +629,7 @@ class GcodeDriver(JobDriver):
         # reset clears GRBL's G92) replaces the one the program's coordinates were made with.
         # (G54…G59 stay: the station sets none, so they are taken as 0.)
         now = report.wco or ()
-        shift = {
-            name: self._offset(self._origin, i) - self._offset(now, i)
-            for i, name in enumerate(axes)
-        }
+        shift = {name: _offset(self._origin, i) - _offset(now, i) for i, name in enumerate(axes)}
         state = replace(planned, position={a: v + shift[a] for a, v in planned.position.items()})
         way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
         for line in preamble(state, stream.settings, way_back, self._restore(planned, start, now)):
@@ -660,26 +657,14 @@ class GcodeDriver(JobDriver):
         axes = list(planned.position)
         names = [a.name for a in self.runner.station.profile.axes]
         own = file_offset(program, start, names)
-        wanted = {a: self._offset(self._origin, names.index(a)) + own[a] for a in axes}
-        if all(abs(self._offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
+        wanted = {a: _offset(self._origin, names.index(a)) + own[a] for a in axes}
+        if all(abs(_offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
             return []
         return ["G92 " + " ".join(f"{a}{planned.position[a] - own[a]:.3f}" for a in axes)]
 
     def _here(self, report: StatusReport) -> tuple[float, ...]:
         """Where the machine stands in the program's coordinates (machine less the origin)."""
-        return tuple(m - self._offset(self._origin, i) for i, m in enumerate(report.mpos))
-
-    @staticmethod
-    def _offset(offsets: Sequence[float], axis: int) -> float:
-        return offsets[axis] if axis < len(offsets) else 0.0
-
-    @staticmethod
-    def _sent_upto(stream: GcodeStream, start: int) -> int:
-        """Operations the device may have received: known in this run, else a window."""
-        known = max(stream.written, stream.answered)
-        if known > start:
-            return known
-        return min(len(stream.program), start + RETRACE_WINDOW)
+        return tuple(m - _offset(self._origin, i) for i, m in enumerate(report.mpos))
 
     # --- progress and checkpoint -------------------------------------------------------
 
@@ -687,15 +672,17 @@ class GcodeDriver(JobDriver):
         runner = self.runner
         assert runner.program is not None
         now = runner.station.clock.now()
+        with self._locked():  # both boundaries as of one moment (the reader moves them)
+            answered, executed = stream.answered, stream.executed
         # The operation the machine is at: the first not known executed (the lines answered
         # after it wait in the device's planner).
-        current = stream.executed if stream.executed < len(runner.program) else None
-        if current is not None and current != self._shown and now - self._shown_at >= SHOW_EVERY_S:
+        current = executed if executed < len(runner.program) else None
+        if current is not None and current != self._shown and self._shows.due(now):
             # The dock shows the operation under way; a thousand lines a second need not
             # all be shown, so at most ten a second are.
-            self._shown, self._shown_at = current, now
+            self._shown = current
             runner.announce(current)
-        runner.advance(stream.answered, stream.executed)
+        runner.advance(answered, executed)
         self._write_checkpoint(force=False)
 
     def _write_checkpoint(self, *, force: bool) -> None:
@@ -703,8 +690,24 @@ class GcodeDriver(JobDriver):
         stream = self.stream
         if stream is None or runner.program is None:
             return
-        now = runner.station.clock.now()
-        if not force and now - self._checkpoint_at < CHECKPOINT_EVERY_S:
+        if not self._checkpoints.due(runner.station.clock.now(), force=force):
             return
-        self._checkpoint_at = now
-        runner.record(stream.executed - 1, max(stream.written, stream.answered))
+        with self._locked():
+            completed, sent = stream.executed - 1, max(stream.written, stream.answered)
+        runner.record(completed, sent)
+
+
+def _where(program: Program, index: int) -> str:
+    return str(program[index].source) if index < len(program) else "the end"
+
+
+def _offset(offsets: Sequence[float], axis: int) -> float:
+    return offsets[axis] if axis < len(offsets) else 0.0
+
+
+def _sent_upto(stream: GcodeStream, start: int) -> int:
+    """Operations the device may have received: known in this run, else a window."""
+    known = max(stream.written, stream.answered)
+    if known > start:
+        return known
+    return min(len(stream.program), start + RETRACE_WINDOW)

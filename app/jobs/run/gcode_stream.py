@@ -35,29 +35,16 @@ from __future__ import annotations
 import math
 import re
 from collections import deque
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from app.jobs.program import Operation, OpKind, Program, ProgramPath
 from app.jobs.render.gcode import feed_for, render_operation
-from app.machines.gcode.session import GcodeSession, SentLine
+from app.machines.gcode.session import SentLine
 from app.profiles import GcodeSettings, MachineProfile
 from protocol.gcode.words import scan_words
-
-#: Lines handed to the session beyond those it can send at once, when the GUI thread feeds it
-#: (:meth:`GcodeStream.feed`: single steps; a running job is pulled by the session's feeder
-#: on the reader thread instead, :meth:`GcodeStream.take`).  None of them is on the wire
-#: yet, so a pause or an abort takes them all back at once.
-LINES_AHEAD = 200
-#: The queue is topped up only once it has fallen below this: a refill every few dozen
-#: answers instead of a little work on every one.
-REFILL_BELOW = LINES_AHEAD - 40
-
-#: What a session makes of an operation's line to queue it: the encoded line and its tag, or
-#: why it cannot go (see :meth:`GcodeSession.job_line`).
-LineMaker = Callable[[str, int], "tuple[bytes, SentLine] | str"]
 
 
 @dataclass(frozen=True)
@@ -263,9 +250,11 @@ class GcodeStream:
 
     Plain Python on purpose: the runner owns the Qt signals and the job state;
     this object only keeps the bookkeeping between the session's lines and the
-    program's operations.  While a job runs, the session's feeder pulls its
-    lines (:meth:`take`) and counts its answers (:meth:`count_answer`) on the
-    transport's reader thread, so every use holds the feeder's lock.
+    program's operations.  It is the running job's line source
+    (:class:`~app.machines.gcode.job_feed.JobSource`): the job's feed takes its
+    lines (:meth:`next_lines`) and counts their answers (:meth:`count_answer`),
+    on the transport's reader thread while the job is pulled, so every use
+    holds the feed's lock (:meth:`~app.machines.gcode.job_feed.JobFeed.locked`).
     """
 
     def __init__(self, program: Program, profile: MachineProfile, start: int) -> None:
@@ -284,8 +273,6 @@ class GcodeStream:
         #: Answered lines' operations not known executed, in order (the planner's share).
         self._planned: deque[int] = deque()
         self._answered_at_last_report = start
-        #: How the session makes a line ready to queue (set when a session follows the job).
-        self.make: LineMaker | None = None
         #: The operation whose line could not go, and why (the job fails there).
         self.refused: tuple[int, str] | None = None
 
@@ -306,67 +293,38 @@ class GcodeStream:
             op, self.settings, feed_for(op.target, self.profile), axis_order=self._axis_order
         )
 
-    def feed(self, session: GcodeSession, most: int | None = None) -> int | None:
-        """Hand lines to the session until enough are ahead; returns a WAIT's index met first.
+    def next_lines(self, count: int) -> list[tuple[int, str]]:
+        """The next lines to send, at most ``count``, each with its operation's index: taken
+        (pending their answer).  The pulled job and a single step both take them here.
 
-        ``most`` caps the lines handed over (single step: one).  Operations that
-        send nothing (comments) are done when everything before them is: they are
-        completed here when nothing is pending.
+        Stops before a WAIT (:attr:`waiting_at`), at the end, and after a line that
+        could not go (:attr:`refused`: nothing is taken from there on).  Operations
+        that send nothing are done when everything before them is.
         """
-        program = self.program
-        if most is None and session.queued >= REFILL_BELOW:
-            return None  # enough waits in the session's queue
-        sent = 0
-        while self.next_index < len(program) and session.queued < LINES_AHEAD:
-            if most is not None and sent >= most:
-                return None
-            index = self.next_index
-            op = program[index]
-            if op.kind is OpKind.WAIT:
-                return index
-            text = self.line_for(index, op)  # a G-code file builds each operation when asked
-            self.next_index += 1
-            if text is None:
-                if not self.pending:
-                    self.answered = self.executed = index + 1
-                continue
-            if not session.send_line(text, "job", index):
-                self.next_index = index
-                return None
-            self.pending.append(index)
-            sent += 1
-        return None
-
-    def take(self, count: int) -> list[tuple[bytes, SentLine]]:
-        """The next lines to queue, at most ``count``: the session's feeder pulls them.
-
-        Stops before a WAIT (:attr:`waiting_at`), at the end, and at a line that
-        cannot go (:attr:`refused`, nothing taken from there on).  Operations that
-        send nothing are done when everything before them is.
-        """
-        out: list[tuple[bytes, SentLine]] = []
-        program, make = self.program, self.make
-        if make is None or self.refused is not None:
+        out: list[tuple[int, str]] = []
+        if self.refused is not None:
             return out
+        program, pending = self.program, self.pending
         while len(out) < count and self.next_index < len(program):
             index = self.next_index
             op = program[index]
             if op.kind is OpKind.WAIT:
                 break
-            text = self.line_for(index, op)
+            text = self.line_for(index, op)  # a G-code file builds each operation when asked
+            self.next_index += 1
             if text is None:
-                self.next_index += 1
-                if not self.pending:
+                if not pending:
                     self.answered = self.executed = index + 1
                 continue
-            made = make(text, index)
-            if isinstance(made, str):
-                self.refused = (index, f"{text!r} cannot be sent: {made}")
-                break
-            self.next_index += 1
-            self.pending.append(index)
-            out.append(made)
+            pending.append(index)
+            out.append((index, text))
         return out
+
+    def refuse(self, index: int, why: str) -> None:
+        """Operation ``index``'s line, taken, cannot be sent: the job fails there once every
+        line before it is answered (it and the lines taken after it go back)."""
+        self.take_back(index)
+        self.refused = (index, why)
 
     @property
     def waiting_at(self) -> int | None:

@@ -26,14 +26,15 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, Signal
 
-from app.jobs.estimate import Estimate, estimate, parameters_from_model
+from app.jobs.estimate import Estimate
 from app.jobs.program import LimitViolation, Program, check_limits
 from app.jobs.registration import Placement
-from app.jobs.run.checkpoint import CheckpointStore
+from app.jobs.run.checkpoint_keeper import CheckpointKeeper
 from app.jobs.run.driver import LINK_DOWN, JobDriver, ResumeChoice, UnsupportedOperation
 from app.jobs.run.drivers import driver_for
+from app.jobs.run.progress import JobProgress, estimate_inputs
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
 from app.machines.session import MachineSession
 from app.machines.supervision import MotionFault
@@ -41,10 +42,6 @@ from app.station import Station
 
 __all__ = ["JobRunner", "JobState", "ResumeChoice", "UnsupportedOperation"]
 
-ETA_INTERVAL_MS = 1000
-#: A streaming job answers a line every millisecond or so: the views hear of progress at
-#: most this often (a real-time station), never once per line.
-PROGRESS_INTERVAL_MS = 33
 #: Refused operations listed in the message (the dock's list holds them all).
 REFUSALS_SHOWN = 20
 #: How far from 0 (mm or degrees) a job that counts from its start may start.
@@ -89,38 +86,29 @@ class JobRunner(QObject):
         super().__init__(parent)
         self._station = station
         self.checkpoint_dir = Path(checkpoint_dir)
-        self._checkpoints = CheckpointStore(self.checkpoint_dir)
+        self._checkpoints = CheckpointKeeper(self.checkpoint_dir, self.message.emit)
         self._state = JobState.IDLE
         self._program: Program | None = None
-        self._placed: tuple[Program, Placement] | None = None
-        self._estimate: Estimate | None = None
-        self._done = 0  # operations [0, done) are complete
-        self._executed = 0  # operations [0, executed) are reported run by the machine
-        self._resume_available: int | None = None
+        self._progress = JobProgress(
+            station,
+            self._total,
+            self.progressChanged,
+            self.executedChanged,
+            self.etaChanged,
+            self.operationDone,
+            self,
+        )
         self._single_step = False
         self._pause_requested = False
         self._question: int | None = None  # the operation the operator is asked about
         self._choice: ResumeChoice | None = None  # where to go on, for the operator to pick
-        #: While a run resumed from its checkpoint begins: how far the interrupted one sent.
-        self._checkpoint_sent: int | None = None
         #: Paused until the operator acts (an alarm, a board that restarted): nothing resumes
         #: it on its own (the scripting API ends the job instead).
         self._operator_hold = False
         #: Paused because the link went, and nothing else has happened to the job since.
         self._paused_by_link = False
         self._failing = False  # a checkpoint write failed and the job is being failed
-        self._elapsed_before = 0.0
-        self._running_since: float | None = None
         self._session: object = None
-        self._eta_timer = QTimer(self)
-        self._eta_timer.setInterval(ETA_INTERVAL_MS)
-        self._eta_timer.timeout.connect(self.emit_eta)
-        #: Progress told to the views (done, executed), and the timer that coalesces it.
-        self._told: tuple[int, int] = (0, 0)
-        self._progress_timer = QTimer(self)
-        self._progress_timer.setSingleShot(True)
-        self._progress_timer.setInterval(PROGRESS_INTERVAL_MS)
-        self._progress_timer.timeout.connect(self._tell_progress)
         # A station keeps its profile, so its dialect and driver, for life.
         self._driver: JobDriver = driver_for(station.profile.dialect)(self)
         station.sessionChanged.connect(self._bind_session)
@@ -144,7 +132,7 @@ class JobRunner(QObject):
     @property
     def done(self) -> int:
         """Count of completed operations (always the first ``done`` of the program)."""
-        return self._done
+        return self._progress.done
 
     @property
     def executed(self) -> int:
@@ -153,14 +141,7 @@ class JobRunner(QObject):
         On a G-code machine ``done`` counts the lines the device answered, many of
         which may still wait in its planner; ``executed`` only those known to have run.
         """
-        return self._executed
-
-    def _set_executed(self, executed: int) -> None:
-        executed = min(executed, self._done)
-        if executed != self._executed:
-            self._executed = executed
-            self._told = (self._told[0], executed)
-            self.executedChanged.emit(executed, self._total())
+        return self._progress.executed
 
     @property
     def single_step(self) -> bool:
@@ -169,7 +150,7 @@ class JobRunner(QObject):
 
     @property
     def estimate(self) -> Estimate | None:
-        return self._estimate
+        return self._progress.estimate
 
     @property
     def current_index(self) -> int | None:
@@ -179,7 +160,8 @@ class JobRunner(QObject):
         in_flight = self._driver.in_flight
         if in_flight is not None:
             return in_flight
-        return self._done if self._done < len(self._program) else None
+        done = self._progress.done
+        return done if done < len(self._program) else None
 
     @property
     def question(self) -> int | None:
@@ -201,21 +183,17 @@ class JobRunner(QObject):
     @property
     def resume_available(self) -> int | None:
         """Index to resume from when a checkpoint of this program waits for the operator."""
-        return self._resume_available
+        return self._checkpoints.resume_available
 
     @property
     def elapsed_s(self) -> float:
         """Station-clock time spent running, without paused and waiting stretches."""
-        if self._running_since is None:
-            return self._elapsed_before
-        return self._elapsed_before + self.station.clock.now() - self._running_since
+        return self._progress.elapsed_s
 
     @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        if self._estimate is None:
-            return 0.0
-        return self._estimate.remaining_after(self._done)
+        return self._progress.remaining_s
 
     # --- loading -------------------------------------------------------------
 
@@ -235,7 +213,7 @@ class JobRunner(QObject):
             for name, (low, high) in profile.travel_limits().items()
         }
         refusals = self._driver.refusals
-        timing = self._estimate_inputs()
+        timing = estimate_inputs(self.station)
 
         def check(program: Program) -> LoadCheck:
             refused: list[LimitViolation] = check_limits(program, limits)
@@ -275,7 +253,7 @@ class JobRunner(QObject):
         self._reset()
         if refused:
             self._program = None
-            self._estimate = None
+            self._progress.estimate = None
             lines = "\n".join(f"  {v}" for v in refused[:REFUSALS_SHOWN])
             if len(refused) > REFUSALS_SHOWN:
                 lines += f"\n  … and {len(refused) - REFUSALS_SHOWN} more"
@@ -289,24 +267,21 @@ class JobRunner(QObject):
             self.programChanged.emit()
             return refused
         self._program = program
-        self._placed = placed if placed is not None and placed[1] else None
-        self._checkpoints.remember(program, checked.fingerprint)
-        self._estimate = checked.estimate
-        self._resume_available = self._read_checkpoint(program)
+        self._checkpoints.loaded(program, checked.fingerprint, placed)
+        self._progress.estimate = checked.estimate
+        resume = self._checkpoints.resume_available
         self.programChanged.emit()
         self._set_state(JobState.READY)
-        self.progressChanged.emit(self._done, len(program))
-        self._told = (self._done, self._executed)
-        self.executedChanged.emit(self._executed, len(program))
+        self._progress.tell_all()
         self.emit_eta()
-        if self._resume_available is not None:
-            op = program[self._resume_available]
+        if resume is not None:
+            op = program[resume]
             self.message.emit(
                 QCoreApplication.translate(
                     "JobRunner",
                     "Job {0} was interrupted: {1} of {2} operations done; "
                     "resume from {3} or discard the checkpoint",
-                ).format(repr(program.name), self._resume_available, len(program), op.source)
+                ).format(repr(program.name), resume, len(program), op.source)
             )
         return []
 
@@ -316,7 +291,7 @@ class JobRunner(QObject):
         """Run from the first operation (READY, or again after a job ended)."""
         if self._program is None or self._state not in (JobState.READY, *FINISHED):
             return
-        if self._resume_available is not None:
+        if self._checkpoints.resume_available is not None:
             self.message.emit(
                 QCoreApplication.translate(
                     "JobRunner", "Resume from the checkpoint or discard it first"
@@ -393,7 +368,7 @@ class JobRunner(QObject):
         self._choice = None
         self._operator_hold = False
         # The resume offer first, so views reacting to the state change see it.
-        self._offer_checkpoint()
+        self._checkpoints.offer(self._program)
         self._set_state(state)
 
     def decide(self, *, again: bool) -> None:
@@ -410,7 +385,7 @@ class JobRunner(QObject):
     def step(self) -> None:
         """Run exactly one operation, then pause."""
         if self._state is JobState.READY:
-            if self._resume_available is not None:
+            if self._checkpoints.resume_available is not None:
                 self.message.emit(
                     QCoreApplication.translate(
                         "JobRunner", "Resume from the checkpoint or discard it first"
@@ -434,7 +409,7 @@ class JobRunner(QObject):
         self.message.emit(
             QCoreApplication.translate(
                 "JobRunner", "Job aborted after {0} of {1} operations"
-            ).format(self._executed, self._total())
+            ).format(self._progress.executed, self._total())
         )
 
     def confirm(self) -> None:
@@ -449,17 +424,16 @@ class JobRunner(QObject):
 
     def resume_from_checkpoint(self) -> None:
         """Carry on an interrupted job where its checkpoint says, re-examining that operation."""
-        if self._program is None or self._resume_available is None:
+        if self._program is None or self._checkpoints.resume_available is None:
             return
         if self._state not in (JobState.READY, *FINISHED):
             return
-        index = self._resume_available
-        self._resume_available = None
-        self._checkpoint_sent = self._checkpoints.sent(self._program)
+        index = self._checkpoints.take_resume(self._program)
+        assert index is not None
         try:
             self._begin(index, single_step=False, verify=True)
         finally:
-            self._checkpoint_sent = None
+            self._checkpoints.sent = None
 
     def checkpoint_placement(self, base: Program) -> Placement | None:
         """How an interrupted run of ``base`` (as read from its file) was put on the board."""
@@ -469,12 +443,8 @@ class JobRunner(QObject):
         """Forget the interrupted run: the next start begins at the first operation."""
         if self._program is None:
             return
-        try:
-            self._checkpoints.discard(self._program)
-        except OSError as exc:
-            self.message.emit(f"The checkpoint could not be removed: {exc}")
+        if not self._checkpoints.discard(self._program, "The checkpoint could not be removed: {0}"):
             return
-        self._resume_available = None
         if self._state in FINISHED:
             self._set_state(JobState.READY)
         self.message.emit(
@@ -485,7 +455,7 @@ class JobRunner(QObject):
 
     def emit_eta(self) -> None:
         """Tell the dock elapsed and remaining time (a timer calls this every second)."""
-        self.etaChanged.emit(self.elapsed_s, self.remaining_s)
+        self._progress.emit_eta()
 
     # --- what a driver tells the runner (RunnerPort) ---------------------------------
 
@@ -498,14 +468,10 @@ class JobRunner(QObject):
     def mark_done(self, index: int) -> bool:
         """Operations up to ``index`` are done; whether the next one starts now."""
         assert self._program is not None
-        self._done = index + 1
-        self._set_executed(self._done)  # reported done by the machine: it ran
+        self._progress.reached(index)  # reported done by the machine: it ran
         if not self._write_checkpoint(self._program, index):  # before anything else is sent
             return False
-        self.operationDone.emit(index)
-        self.progressChanged.emit(self._done, len(self._program))
-        self._told = (self._done, self._executed)
-        self.emit_eta()
+        self._progress.tell_reached(index)
         return self._carry_on()
 
     def complete(self, index: int) -> None:
@@ -513,33 +479,10 @@ class JobRunner(QObject):
             self._driver.proceed()
 
     def advance(self, done: int, executed: int | None = None) -> None:
-        """A streaming driver's progress, kept at once and told to the views coalesced.
-
-        On a real-time station the signals go at most every
-        :data:`PROGRESS_INTERVAL_MS` (and with every state change), so a thousand
-        answered lines a second cost the GUI thirty redraws, not a thousand.
-        """
-        if self._program is None:
-            return
-        self._done = done
-        self._executed = min(done if executed is None else executed, done)
-        if not self.station.realtime:
-            self._tell_progress()
-        elif not self._progress_timer.isActive():
-            self._progress_timer.start()
-
-    def _tell_progress(self) -> None:
-        """Emit what changed since the views were last told (see :meth:`advance`)."""
-        self._progress_timer.stop()
-        told_done, told_executed = self._told
-        self._told = (self._done, self._executed)
-        total = self._total()
-        if self._done != told_done:
-            if self._done:
-                self.operationDone.emit(self._done - 1)
-            self.progressChanged.emit(self._done, total)
-        if self._executed != told_executed:
-            self.executedChanged.emit(self._executed, total)
+        """A streaming driver's progress, kept at once and told to the views coalesced
+        (:class:`~app.jobs.run.progress.JobProgress`)."""
+        if self._program is not None:
+            self._progress.advance(done, executed)
 
     def record(self, completed: int, sent: int | None = None) -> None:
         if self._program is not None and self._state in ACTIVE:
@@ -547,7 +490,7 @@ class JobRunner(QObject):
 
     @property
     def checkpoint_sent(self) -> int | None:
-        return self._checkpoint_sent
+        return self._checkpoints.sent
 
     def fail(self, index: int, reason: str) -> None:
         if self._state not in ACTIVE:
@@ -558,7 +501,7 @@ class JobRunner(QObject):
         self._driver.stopped()
         self._choice = None
         self._operator_hold = False
-        self._offer_checkpoint()
+        self._checkpoints.offer(self._program)
         self._set_state(JobState.FAILED)
         self.message.emit(
             QCoreApplication.translate("JobRunner", "Job failed at {0}: {1}").format(
@@ -621,11 +564,12 @@ class JobRunner(QObject):
 
     def finish(self) -> None:
         assert self._program is not None
-        try:
-            self._checkpoints.discard(self._program)
-        except OSError as exc:
-            self.message.emit(f"The finished job's checkpoint could not be removed: {exc}")
-        self._set_executed(len(self._program))  # drivers finish only once the machine is idle
+        self._checkpoints.discard(
+            self._program, "The finished job's checkpoint could not be removed: {0}"
+        )
+        self._progress.set_executed(
+            len(self._program)
+        )  # drivers finish only once the machine is idle
         self._set_state(JobState.DONE)
         self.emit_eta()
         self.message.emit(
@@ -641,17 +585,13 @@ class JobRunner(QObject):
         driver = self._driver
         if self._refuse_for_link():
             return
-        self._done = index
-        self._set_executed(index)
-        self._elapsed_before = 0.0
-        self._running_since = None
+        self._progress.restart(index)
         self._single_step = single_step
         self._pause_requested = False
         self._choice = None
         self._operator_hold = False
         driver.begin(index, verify=verify)
-        self.progressChanged.emit(self._done, len(self._program))
-        self._told = (self._done, self._executed)
+        self._progress.tell_done()
         self._set_state(JobState.RUNNING)
         driver.proceed()
 
@@ -698,7 +638,7 @@ class JobRunner(QObject):
     def _carry_on(self) -> bool:
         """After an operation: whether the next one starts now (else the job ended or paused)."""
         assert self._program is not None
-        if self._done >= len(self._program):
+        if self._progress.done >= len(self._program):
             if self._driver.wind_up():
                 self.finish()
             return False
@@ -748,7 +688,7 @@ class JobRunner(QObject):
         if self._state not in ACTIVE:
             return
         index = fault.op_index if fault.op_index is not None else self.current_index
-        self.fail(index if index is not None else self._done, fault.text)
+        self.fail(index if index is not None else self._progress.done, fault.text)
 
     def _on_recovered(self, problem: object) -> None:
         """The machine answers again after a silence, its port open all along.
@@ -788,17 +728,11 @@ class JobRunner(QObject):
     def _set_state(self, state: JobState) -> None:
         if state is self._state:
             return
-        if self._progress_timer.isActive():
-            self._tell_progress()  # the views see the progress the new state comes with
+        self._progress.flush()  # the views see the progress the new state comes with
         self._paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
-        now = self.station.clock.now()
-        if was_running and not runs and self._running_since is not None:
-            self._elapsed_before += now - self._running_since
-            self._running_since = None
-        elif runs and not was_running:
-            self._running_since = now
+        self._progress.clock(was_running, runs)
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.
@@ -809,53 +743,19 @@ class JobRunner(QObject):
             if state in ACTIVE
             else None
         )
-
-        if runs and self.station.realtime:
-            self._eta_timer.start()
-        elif not runs:
-            self._eta_timer.stop()
         self.stateChanged.emit(state)
         if not runs:
             self.emit_eta()
 
     def _reset(self) -> None:
-        self._done = 0
-        self._set_executed(0)
+        self._progress.restart(0)
         self._question = None
         self._choice = None
         self._operator_hold = False
         self._driver.forget()
-        self._resume_available = None
+        self._checkpoints.resume_available = None
         self._single_step = False
         self._pause_requested = False
-        self._elapsed_before = 0.0
-        self._running_since = None
-
-    def _estimate_inputs(self) -> Callable[[Program], Estimate]:
-        """The dry-run estimate with the machine's settings and position as they are now."""
-        model = self.station.model
-        session = self.station.session
-        profile = self.station.profile
-        start = {axis.name: axis.work_position for axis in model.axes}
-        parameters = parameters_from_model(model)
-        period_s = (session.period_ms if session is not None else self.station.period_ms) / 1000
-        fast = session.fast_selected if session is not None else True
-        speeds = session.top_speeds_mm_s() if session is not None else None
-        home_first = session.homes_before_job if session is not None else False
-
-        def timed(program: Program) -> Estimate:
-            return estimate(
-                program,
-                profile,
-                parameters,
-                period_s,
-                fast=fast,
-                start=start,
-                speeds_mm_s=speeds,
-                home_first=home_first,
-            )
-
-        return timed
 
     # --- checkpoint ----------------------------------------------------------
 
@@ -867,7 +767,7 @@ class JobRunner(QObject):
         operator can still see where it stands.
         """
         try:
-            self._checkpoints.write(program, completed, self._placed, sent)
+            self._checkpoints.write(program, completed, sent)
         except OSError as exc:
             if self._state in ACTIVE and not self._failing:
                 self._failing = True
@@ -880,16 +780,3 @@ class JobRunner(QObject):
                     self._failing = False
             return False
         return True
-
-    def _read_checkpoint(self, program: Program) -> int | None:
-        try:
-            return self._checkpoints.read(program)
-        except (OSError, ValueError) as exc:
-            name = self._checkpoints.path(program).name
-            self.message.emit(f"Ignoring an unreadable checkpoint {name}: {exc}")
-            return None
-
-    def _offer_checkpoint(self) -> None:
-        """After an abort or failure: resuming is the operator's choice, from what is on disk."""
-        if self._program is not None:
-            self._resume_available = self._read_checkpoint(self._program)

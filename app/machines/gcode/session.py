@@ -29,10 +29,7 @@ motion stays within the tolerance of the path sent cannot be told apart.
 from __future__ import annotations
 
 import logging
-import math
-import re
 from collections.abc import Sequence
-from dataclasses import dataclass
 from itertools import count
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
@@ -41,18 +38,28 @@ from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.envelope import Envelope
 from app.machines.gcode.byte_count import ByteCount
+from app.machines.gcode.console_gate import SETTING_DISABLED as SETTING_DISABLED
+from app.machines.gcode.console_gate import ConsoleGate, refusal_hint
 from app.machines.gcode.feeder import (
     STALE,
     WROTE,
     Answer,
     BannerSeen,
-    JobLines,
     LineFeeder,
     Received,
     ReportSeen,
     merged,
 )
-from app.machines.gcode.line_targets import line_motion
+from app.machines.gcode.hand_zeroing import HandZeroing
+from app.machines.gcode.hand_zeroing import zeroes_by_hand as zeroes_by_hand
+from app.machines.gcode.job_feed import JobFeed, JobSource
+from app.machines.gcode.jogger import JOG_BLOCKS_AHEAD as JOG_BLOCKS_AHEAD
+from app.machines.gcode.jogger import JOG_RESOLUTION as JOG_RESOLUTION
+from app.machines.gcode.jogger import JOG_SPEED_SHARE as JOG_SPEED_SHARE
+from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
+from app.machines.gcode.jogger import GcodeJogger, reports_moving
+from app.machines.gcode.lines import SentLine as SentLine
+from app.machines.gcode.lost_answers import AnswersLost, LostAnswerWatch, StreamWaits, pauses
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.motion_gate import Refusal
@@ -63,7 +70,6 @@ from protocol.clock import Clock
 from protocol.gcode.codec import (
     CYCLE_START,
     FEED_HOLD,
-    JOG_CANCEL,
     SOFT_RESET,
     STATUS_QUERY,
     AlarmReply,
@@ -90,24 +96,8 @@ SILENCE_S = 4.0
 #: Status queries unanswered before the link is shown stale (amber), and the least time.
 STALE_QUERIES = 3
 STALE_AFTER_MIN_S = 0.5
-#: Jogging: each held-arrow step is this much motion, and the next goes only while the
-#: device's planner holds fewer than JOG_BLOCKS_AHEAD blocks (it answers ``ok`` when a line
-#: is *planned*, so counting answers alone would let a held key fill the planner).
-JOG_STEP_S = 0.1
-JOG_BLOCKS_AHEAD = 2
 #: A stop resets the device this long after its hold at the latest, standing or not.
 RESET_AFTER_S = 2.0
-#: Reports in a row, at least this far apart, that show every sent byte consumed and the
-#: machine idle with an empty planner while lines are unanswered: their answers were lost.
-LOST_ANSWER_REPORTS = 2
-LOST_ANSWER_AFTER_S = 0.5
-_COMMENT = re.compile(r"\([^)]*\)|;.*")
-_WORD = re.compile(r"([GM])\s*([-+]?\d+(?:\.\d*)?)")
-#: Fraction of an axis's top speed a held arrow jogs at.
-JOG_SPEED_SHARE = 0.5
-#: A jog step shorter than this (the travel's end reached) is not sent.
-JOG_RESOLUTION = 1e-3
-_MOVING_STATES = frozenset({"Run", "Jog", "Home"})
 
 
 def reply_bytes(reply: object) -> bytes:
@@ -124,17 +114,6 @@ def reply_bytes(reply: object) -> bytes:
     if isinstance(reply, Banner | Feedback):
         return reply.text.encode("ascii", "replace")
     return repr(reply).encode("ascii", "replace")
-
-
-@dataclass(frozen=True)
-class SentLine:
-    """A line on its way: what was sent, by whom, and for a job the operation it carries."""
-
-    serial: int
-    text: str
-    #: "job", "resume" (the set-up before a resumed job), "console", "intent" (panels) or "jog"
-    origin: str
-    op_index: int | None = None
 
 
 class GcodeSession(MachineSession):
@@ -182,40 +161,24 @@ class GcodeSession(MachineSession):
         self._seen_idle = True
         self._status_asked_at: float | None = None  # an unanswered "?", for request_status
         self._last_heard = clock.now()
-        self._jog_unanswered = 0
-        #: Without ``Bf:`` in the reports: when each planned jog step should be done (clock).
-        self._jog_ends: list[float] = []
-        self._jog_status_fresh = False
-        #: Whether the board is in G91 after the lines sent (a reset brings back G90).
-        self._relative = False
+        self.jogger = GcodeJogger(self, with_command="$J" in settings.words)
+        self.console = ConsoleGate(model, self.gate)
+        self.zeroing = HandZeroing(self)
+        self._lost_answers = LostAnswerWatch(settings.rx_buffer)
         #: Whether the last :attr:`reset` was the board's own (a banner nobody here asked
         #: for: its reset button, a power dip), not a soft reset the station sent.
         self.reset_by_device = False
         #: The board's work coordinate offset last reported (GRBL's WCO:), None before any.
         self.work_offset: tuple[float, ...] | None = None
-        #: Where the steps sent so far take each axis (None: no jog under way).
-        self._jog_target: list[float] | None = None
-        self._jog_told_end = False
-        #: A jog cancel was sent and the board still reports Jog: a new jog waits.
-        self._jog_cancelling = False
         #: The stop under way ends a jog: no "lines not run" message for it.
         self._quiet_stop = False
         self._reset_requested_at: float | None = None
         self._dropped_by_stop = 0
         self._planner_size = 0
-        #: Since when (station clock) reports show the board done with everything sent, while
-        #: lines are unanswered, and how many reports in a row have.
-        self._drained_since: float | None = None
-        self._drained_reports = 0
-        #: The lines unanswered through every drained report so far (see _check_lost_answers).
-        self._lost_candidates: list[SentLine] = []
-        self._stall_told = False
         #: A line cut on the wire, its start stuck in the board's buffer (stuck_line.py).
         self._stuck = StuckLineWatch(clock, settings.rx_buffer)
         #: The board's buffer against the bytes counted unanswered (byte_count.py).
         self._byte_count = ByteCount(settings.rx_buffer)
-        #: The motors were released for zeroing by hand and nothing was sent since.
-        self._released_by_hand = False
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
         # The path of the lines written, which every status report must follow.
@@ -265,44 +228,24 @@ class GcodeSession(MachineSession):
         return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
 
     @property
-    def recovery_settle_s(self) -> float:
-        """After a silence, replies held back on the way come first: the board's state is
-        judged from a report made this long after it was heard again (a few queries)."""
-        return self.stale_after_s
-
-    @property
     def machine_state(self) -> str:
         """The device's last reported state (Idle, Run, Hold, Home, Alarm), or "" before any."""
         return self.status.state if self.status is not None else ""
 
     @property
     def settled(self) -> bool:
-        """Everything sent is answered and a status report since then shows the machine idle."""
-        return self.streamer.idle and self._seen_idle
+        """Everything sent is answered and a status report since then shows the machine idle.
+
+        Both read in one hold: a job's line queued on the reader thread changes both.
+        """
+        with self.feeder.lock:
+            return self.streamer.idle and self._seen_idle
 
     # --- lines --------------------------------------------------------------------
 
     def beyond_travel(self, text: str) -> Refusal | None:
-        """Why a console line would move the machine past its travel (None: it would not).
-
-        A line the board could never take is no motion: :meth:`send_line` refuses it.
-        """
-        try:
-            encode_line(text.strip())
-        except ValueError:
-            return None
-        axes = tuple(a.name for a in self.model.profile.axes)
-        # The line's words are work coordinates (GRBL adds its offset); the travel is the
-        # machine's.
-        position = {a.name: a.work_position for a in self.model.axes}
-        motion = line_motion(text, self._relative, position, axes)
-        for name, target in motion.targets.items():
-            index = axes.index(name)
-            offset = 0.0 if motion.machine else self.model.axes[index].offset
-            refusal = self.gate.refuse_target(index, target + offset)
-            if refusal is not None:
-                return Refusal(f"{text.strip()!r} would move {refusal}")
-        return None
+        """Why a console line would move the machine past its travel (:class:`ConsoleGate`)."""
+        return self.console.beyond_travel(text)
 
     def send_line(
         self,
@@ -323,7 +266,8 @@ class GcodeSession(MachineSession):
             return False
         # Any line after the release may move an axis (switching its driver on): a zero
         # declared after it would no longer be where the operator put the axes.
-        self._released_by_hand = False
+        with self.feeder.lock:
+            self.zeroing.line_queued()
         if origin == "console" and not confirmed:
             refusal = self.beyond_travel(line)
             if refusal is not None:
@@ -337,53 +281,44 @@ class GcodeSession(MachineSession):
         if not self.link.is_open:
             self.model.message.emit(f"Not sent: {line!r} (not connected)")
             return False
-        sent = SentLine(next(self._serials), line, origin, op_index)
-        try:
-            with self.feeder.lock:
+        # One hold from the serial to the notes: a job's line pulled on the reader thread
+        # meanwhile goes wholly before or after this one (see app.machines.gcode.job_feed).
+        with self.feeder.lock:
+            sent = SentLine(self.next_serial(), line, origin, op_index)
+            try:
                 self.streamer.queue(raw, sent)
-        except ValueError as exc:
-            self.model.message.emit(f"Not sent: {line!r} ({exc})")
+            except ValueError as exc:
+                problem: ValueError | None = exc
+            else:
+                problem = None
+                self.note_queued(line, origin)
+        if problem is not None:
+            self.model.message.emit(f"Not sent: {line!r} ({problem})")
             return False
-        # The distance mode the board will be in: console lines are judged in it.  (A line
-        # without a 9 names neither G90 nor G91: job lines skip the parse on that.)
-        if origin != "job" or "9" in line:
-            self._relative = line_motion(line, self._relative, {}, ()).relative_after
-        self._seen_idle = False
-        self._pump()
+        self.pump()
         return True
 
-    def job_line(self, text: str, index: int) -> tuple[bytes, SentLine] | str:
-        """Operation ``index``'s line ``text`` made ready to queue (called while the job is
-        pulled, on the reader thread, under the feeder's lock); a str: why it cannot go."""
-        line = text.strip()
-        try:
-            raw = encode_line(line)
-        except ValueError as exc:
-            return str(exc)
-        if len(raw) > self.streamer.capacity:
-            return f"{len(raw)} bytes never fit the board's {self.streamer.rx_buffer}-byte buffer"
-        self._released_by_hand = False
-        self._seen_idle = False
-        if "9" in line:  # see send_line: G90/G91 are judged for the console's lines
-            self._relative = line_motion(line, self._relative, {}, ()).relative_after
-        return raw, SentLine(next(self._serials), line, "job", index)
+    def next_serial(self) -> int:
+        """The next line's serial (under the feeder's lock: both threads number lines)."""
+        return next(self._serials)
 
-    def follow_job(self, job: JobLines[SentLine] | None) -> None:
-        """Count ``job``'s answers where they are read (None: no job any more); not pulled yet."""
-        self.feeder.follow(job)
-
-    def hold_job(self) -> None:
-        """Pull nothing more of the job (what is queued stays: see :meth:`discard_queued`)."""
-        self.feeder.hold()
-
-    def pull_job(self) -> None:
-        """Let the followed job's lines go as the board frees room, from the reader thread.
-
-        Anything that takes back the queue (a pause, a stop, a reset, a lost link)
-        stops that again; only this lets the job go on.
+    def note_queued(self, line: str, origin: str) -> None:
+        """What a line queued implies (under the feeder's lock: a job's lines are queued on
+        the reader thread): the board is busy again, a release for zeroing by hand is over,
+        and the distance mode the board will be in is the line's (the console judges in it).
         """
-        if self.link.is_open:
-            self._tell_written(self.feeder.pull())
+        self._seen_idle = False
+        self.zeroing.released = False
+        # A job's line without a 9 names neither G90 nor G91: job lines skip the parse on that.
+        if origin != "job" or "9" in line:
+            self.console.note(line)
+
+    def start_job(self, source: JobSource) -> JobFeed:
+        """A running job's lines go through the feed made here (:mod:`~app.machines.gcode.
+        job_feed`); its answers are counted where they are read, it is not pulled yet."""
+        feed = JobFeed(self, source)
+        self.feeder.follow(feed)
+        return feed
 
     @property
     def queued(self) -> int:
@@ -395,20 +330,13 @@ class GcodeSession(MachineSession):
         """Lines sent and not yet answered."""
         return self.streamer.in_flight
 
-    @property
-    def _reset_sent_at(self) -> float | None:
-        """When a soft reset was sent whose banner has not come yet (the feeder's)."""
-        return self.feeder.reset_sent_at
-
-    @_reset_sent_at.setter
-    def _reset_sent_at(self, value: float | None) -> None:
-        self.feeder.reset_sent_at = value
-
-    def _pump(self) -> None:
+    def pump(self) -> None:
+        """Write every queued line that fits now (bytes sent while the board restarts are
+        lost by the board itself: the feeder waits for its banner)."""
         # Bytes sent while the board restarts are lost by the board itself: the feeder waits.
-        self._tell_written(self.feeder.pump())
+        self.tell_written(self.feeder.pump())
 
-    def _tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
+    def tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
         for raw, sent in written:
             try:
                 self._planned.line(sent.text, sent.text, sent.op_index)
@@ -419,13 +347,14 @@ class GcodeSession(MachineSession):
             self.frameSent.emit(sent.text, raw)
             self.lineSent.emit(sent)
 
-    def _realtime(self, byte: bytes, name: str) -> None:
+    def send_realtime(self, byte: bytes, name: str) -> None:
+        """A real-time byte (it bypasses the stream), shown in the frame log as ``name``."""
         if self.link.is_open:
             self.link.write(byte)
             self.frameSent.emit(name, byte)
 
     def query_status(self) -> None:
-        self._realtime(STATUS_QUERY, "?")
+        self.send_realtime(STATUS_QUERY, "?")
         self._status_asked_at = self.clock.now()
 
     def request_status(self) -> None:
@@ -440,13 +369,10 @@ class GcodeSession(MachineSession):
         return self._planner_size
 
     def feed_hold(self) -> None:
-        self._realtime(FEED_HOLD, "! (feed hold)")
+        self.send_realtime(FEED_HOLD, "! (feed hold)")
 
     def cycle_start(self) -> None:
-        self._realtime(CYCLE_START, "~ (resume)")
-
-    def _awaiting_banner(self) -> bool:
-        return self.feeder.awaiting_banner()
+        self.send_realtime(CYCLE_START, "~ (resume)")
 
     def soft_reset(self) -> list[SentLine]:
         """Reset the device: its buffers are emptied, so nothing unanswered will be answered.
@@ -455,9 +381,9 @@ class GcodeSession(MachineSession):
         until its banner, answers belong to no line and new lines wait.
         """
         with self.feeder.lock:  # no line goes between the reset and its note
-            self._realtime(SOFT_RESET, "Ctrl-X (soft reset)")
+            self.send_realtime(SOFT_RESET, "Ctrl-X (soft reset)")
             if self.link.is_open:
-                self._reset_sent_at = self.clock.now()
+                self.feeder.reset_sent_at = self.clock.now()
             return self._forget_stream(by_device=False)
 
     def discard_queued(self) -> list[SentLine]:
@@ -469,16 +395,19 @@ class GcodeSession(MachineSession):
 
     # --- intents ------------------------------------------------------------------
 
-    def stop_all(self, *, keep_jog: bool = False) -> None:
+    def stop_all(self, *, keep_jog: bool = False, quiet: bool = False) -> None:
         """Hold at once; reset once the machine stands, so buffered lines are dropped.
 
         A reset while the axes still move makes GRBL raise ALARM:3 and forget its
         position, so the reset waits for a status report saying the hold is
         complete (``Hold:0``) or the machine idle — or for :data:`RESET_AFTER_S`.
+        ``quiet``: the stop ends a jog, no "lines not run" message for it.
         """
+        if quiet:
+            self._quiet_stop = True
         if not keep_jog:
             self._jog = [0] * self.axis_count
-            self._jog_target = None
+            self.jogger.forget()
             # A job owns the machine (its jog lock): the job says what ran, in its operations;
             # a count of lines here beside it read as a second, different figure.
             self._quiet_stop = self.model.jog_lock_reason is not None
@@ -512,72 +441,6 @@ class GcodeSession(MachineSession):
                 )
             )
 
-    # --- zeroing by hand (the winder's white buttons, FIDELITY S0-24) -------------------
-
-    @property
-    def zeroes_by_hand(self) -> bool:
-        return zeroes_by_hand(self.settings)
-
-    @property
-    def released_by_hand(self) -> bool:
-        """The motors were released (:meth:`release_motors`) and nothing was sent since."""
-        return self._released_by_hand
-
-    def _busy(self) -> str | None:
-        """Why the machine is not at rest by the session's own account (None: it is)."""
-        if self.stopping:
-            return "a stop is under way"
-        if any(self._jog):
-            return "a jog is held"
-        if not self.streamer.idle or self._machine_moving() or self.machine_state == "Hold":
-            return "the machine is still running what it was sent"
-        return None
-
-    def release_motors(self) -> bool:
-        """Zeroing by hand, first step: every driver off (``M18``), the axes free to turn.
-
-        The winder's first white-button press: its holding current off, so the
-        operator turns the base and moves the needle by hand.  No motion is
-        sent; refused (with the reason) while a job is under way or the machine
-        moves or has anything left to run.
-        """
-        refusal = self.gate.refuse_release(self._busy())
-        if refusal is not None:
-            self.model.message.emit(f"Not released: {refusal}")
-            return False
-        if not self.send_line("M18", "intent"):
-            return False
-        self._released_by_hand = True
-        self.model.message.emit(
-            "Motors released: turn the axes by hand to the zero, then Zero here"
-        )
-        return True
-
-    def zero_here(self, board_radius: float) -> bool:
-        """Zeroing by hand, second step: the axes stand at the zero (``G92``), nothing moves.
-
-        The winder's second white-button press: the base's angle is 0, the
-        needle's X is the board radius (the original's linear zero is
-        ``polomer_matrice``; X here is measured from the centre), Z is 0.
-        Only after :meth:`release_motors` with nothing sent since, and under
-        the same conditions; a radius outside X's travel is refused.
-        """
-        if not self._released_by_hand:
-            self.model.message.emit("Not zeroed: release the motors first")
-            return False
-        refusal = self.gate.refuse_release(self._busy())
-        names = [a.name for a in self.model.profile.axes]
-        if refusal is None and "X" in names:
-            refusal = self.gate.refuse_target(names.index("X"), board_radius)
-        if refusal is not None:
-            self.model.message.emit(f"Not zeroed: {refusal}")
-            return False
-        words = " ".join(f"{name}{board_radius if name == 'X' else 0.0:.3f}" for name in names)
-        if not self.send_line(f"G92 {words}", "intent"):
-            return False
-        self.model.message.emit(f"Zeroed by hand: X is the board radius, {board_radius:g} mm")
-        return True
-
     def move_absolute(self, axis: int, position: float) -> bool:
         """To the machine position ``position``: sent as the work position GRBL takes it for."""
         if self._refuse_motion() or not 0 <= axis < self.axis_count:
@@ -604,136 +467,15 @@ class GcodeSession(MachineSession):
     def pen(self, down: bool) -> bool:
         return self.send_line(self.settings.pen_down if down else self.settings.pen_up, "intent")
 
-    @property
-    def jogs_with_command(self) -> bool:
-        """GRBL 1.1's ``$J=`` jogs: the modal state is left alone and 0x85 cancels them."""
-        return "$J" in self.settings.words
-
     def set_jog(self, directions: Sequence[int]) -> None:
-        """Held arrows become short moves kept a little ahead of the machine, inside the travel.
-
-        A board with ``$J=`` gets jog lines, which leave its modal state as it
-        was, and the jog-cancel byte on release; any other gets absolute
-        ``G90 G1`` steps, and a release holds it and drops what it has queued
-        (the stop's feed hold and reset), so it stops within its deceleration.
-        Neither leaves the machine in ``G91``.
-        """
+        """Held arrows become short moves kept a little ahead of the machine, inside the travel
+        (:class:`GcodeJogger`)."""
         wanted = self._jog_wanted(directions)
         if wanted == self._jog:
             return
         previous, self._jog = self._jog, wanted
         self._jog_started()
-        if any(previous):
-            self._end_jog()
-        if any(wanted) and not self._jog_cancelling:
-            self._send_jog_step()  # at once: the key must reach the wire now
-
-    def _end_jog(self) -> None:
-        """The operator let go (or changed direction, or the dead-man ended it): brake now.
-
-        Once a step of this jog went out the board is told, whatever the last
-        report said: a report made before the board took the step (late, on a
-        busy computer) still says Idle, and the steps planned would run out.
-        A jog cancel to a board that stands does nothing.
-        """
-        stepped = self._jog_target is not None
-        self._jog_target = None
-        self._jog_ends = []
-        self._jog_told_end = False
-        if not self.link.is_open:
-            return
-        if not (stepped or self._jog_unanswered or self._machine_moving()):
-            return
-        if self.jogs_with_command:
-            self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
-            self._jog_cancelling = True
-            self.envelope.release()  # stopped short of the steps sent: idle, it is anchored
-            self.query_status()
-        else:
-            self._quiet_stop = True
-            self.stop_all(keep_jog=True)
-
-    def _machine_moving(self) -> bool:
-        return self.status is not None and self.status.state in _MOVING_STATES
-
-    def _feed_jog(self) -> None:
-        """Another step when the last is answered and the planner is nearly through."""
-        if not any(self._jog) or self._jog_unanswered or not self._jog_status_fresh:
-            return
-        if self._jog_cancelling or self.stopping:
-            return
-        report = self.status
-        if report is None:
-            return
-        if report.planner_free is not None and self._planner_size:
-            planned = self._planner_size - report.planner_free
-        elif report.state == "Idle":
-            planned, self._jog_ends = 0, []
-        else:
-            # No Bf: (GRBL's default $10=1): the steps are timed, each JOG_STEP_S long.
-            now = self.clock.now()
-            self._jog_ends = [end for end in self._jog_ends if end > now]
-            planned = len(self._jog_ends)
-        if planned < JOG_BLOCKS_AHEAD and not self._jog_lead_full():
-            self._send_jog_step()
-
-    def _jog_lead_full(self) -> bool:
-        """Whether the steps sent already lead the reported position by a step or more.
-
-        By the board's own reports, not the station's clock: on a busy computer
-        (or a board running below real time) the timed estimate lets steps pile
-        up in the planner, and a release whose cancel is lost would leave the
-        machine to run them all out.  So at most :data:`JOG_BLOCKS_AHEAD` steps
-        ever lead where the board says it is.
-        """
-        target = self._jog_target
-        if target is None:
-            return False
-        for axis, direction in enumerate(self._jog):
-            if not direction:
-                continue
-            step = self.model.profile.axes[axis].max_speed * JOG_SPEED_SHARE * JOG_STEP_S
-            lead = (target[axis] - self.model.axes[axis].position) * direction
-            if lead > (JOG_BLOCKS_AHEAD - 1) * step + JOG_RESOLUTION:
-                return True
-        return False
-
-    def _send_jog_step(self) -> None:
-        """One step of the held jog, ending inside the travel; none once the travel ends."""
-        if self._jog_target is None:
-            self._jog_target = [axis.position for axis in self.model.axes]
-        moves: list[tuple[str, float, float]] = []
-        speed = math.inf
-        for axis, direction in enumerate(self._jog):
-            if not direction:
-                continue
-            profile = self.model.profile.axes[axis]
-            axis_speed = profile.max_speed * JOG_SPEED_SHARE
-            here = self._jog_target[axis]
-            end = self.gate.clamp(axis, here + direction * axis_speed * JOG_STEP_S)
-            if abs(end - here) < JOG_RESOLUTION:
-                continue
-            self._jog_target[axis] = end
-            speed = min(speed, axis_speed)
-            moves.append((profile.name, end - here, end))
-        if not moves:
-            if not self._jog_told_end:
-                self._jog_told_end = True
-                self.model.message.emit(
-                    QCoreApplication.translate("GcodeSession", "Jog ends: the end of the travel")
-                )
-            return
-        feed = f"F{speed * 60:.0f}"
-        if self.jogs_with_command:
-            words = " ".join(f"{name}{delta:.3f}" for name, delta, _ in moves)
-            line = f"$J=G91 G21 {words} {feed}"
-        else:
-            offsets = {a.name: a.offset for a in self.model.axes}
-            words = " ".join(f"{name}{end - offsets[name]:.3f}" for name, _, end in moves)
-            line = f"G90 G1 {words} {feed}"
-        if self.send_line(line, "jog"):
-            self._jog_unanswered += 1
-            self._jog_status_fresh = False
+        self.jogger.changed(tuple(previous), tuple(wanted))
 
     # --- time -----------------------------------------------------------------------
 
@@ -743,8 +485,8 @@ class GcodeSession(MachineSession):
             return
         self._check_answer()
         self._check_deadman()
-        if self._reset_sent_at is not None and not self._awaiting_banner():
-            self._pump()  # no banner after the reset: send what waited anyway
+        if self.feeder.reset_sent_at is not None and not self.feeder.awaiting_banner():
+            self.pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
         requested = self._reset_requested_at
         if requested is not None and now - requested > RESET_AFTER_S and self.silent_since is None:
@@ -778,8 +520,7 @@ class GcodeSession(MachineSession):
         """A jog under way ends and the unanswered lines are handed back (as not run): the
         board may have lost them, so nothing counts them until it is looked at again."""
         self._jog = [0] * self.axis_count
-        self._jog_target = None
-        self._jog_cancelling = False
+        self.jogger.forget_cancel()
         self._quiet_stop = False
         self._byte_count.forget()
         with self.feeder.lock:
@@ -818,15 +559,16 @@ class GcodeSession(MachineSession):
 
     def _forget_stream(self, *, by_device: bool) -> list[SentLine]:
         self.reset_by_device = by_device
-        self._relative = False  # GRBL's power-on and reset mode is G90
         # GRBL forgets its G92 offset on a reset; its next report carries the offset it has.
         self.work_offset = None
         self.envelope.release()  # judged again from where it stands once idle
         self._planned.reset_modes()
-        lost = self.feeder.clear()
+        with self.feeder.lock:
+            self.console.reset()  # GRBL's power-on and reset mode is G90
+            lost = self.feeder.clear()
+            self._seen_idle = False
         self._byte_count.forget()
-        self._seen_idle = False
-        self._jog_unanswered = 0
+        self.jogger.lines_gone()
         self.reset.emit()
         return lost
 
@@ -837,12 +579,12 @@ class GcodeSession(MachineSession):
         with self.feeder.lock:
             self.feeder.clear()
             self.feeder.reset_halt()
+            self._seen_idle = False
+            self.feeder.reset_sent_at = None
+            self.zeroing.released = False
         self._byte_count.forget()
-        self._seen_idle = False
         self._status_asked_at = None
         self._reset_requested_at = None
-        self._reset_sent_at = None
-        self._released_by_hand = False
         self.envelope.release()
         self._planned.reset_modes()
         self._last_heard = self.clock.now()
@@ -854,7 +596,8 @@ class GcodeSession(MachineSession):
     def _on_disconnected(self, reason: object) -> None:
         self._timer.stop()
         self._reset_requested_at = None
-        self._reset_sent_at = None
+        with self.feeder.lock:
+            self.feeder.reset_sent_at = None
         lost = self._forget_jog_and_lines()
         with self.feeder.lock:
             # No reader runs until the station opens the link again (after this): a reply
@@ -887,7 +630,7 @@ class GcodeSession(MachineSession):
         advanced = False
         for reply, verdict in received.replies:
             if reply is WROTE:
-                self._tell_written(verdict)  # type: ignore[arg-type]
+                self.tell_written(verdict)  # type: ignore[arg-type]
                 continue
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
@@ -927,7 +670,7 @@ class GcodeSession(MachineSession):
                         reply.code, reply.meaning
                     )
                 )
-                self._tell_written(self.feeder.release())
+                self.tell_written(self.feeder.release())
             elif isinstance(reply, Banner):
                 ours = isinstance(verdict, BannerSeen) and verdict.ours
                 if self.silent_since is not None and not ours:
@@ -935,7 +678,7 @@ class GcodeSession(MachineSession):
                 self.replyText.emit(reply.text)
                 self.query_status()  # a board that just started: where is it, how big its planner
                 if ours:
-                    self._pump()  # our reset's banner: what waited for it goes now
+                    self.pump()  # our reset's banner: what waited for it goes now
                     continue
                 lost = self._forget_stream(by_device=True)
                 if isinstance(verdict, BannerSeen):
@@ -946,7 +689,7 @@ class GcodeSession(MachineSession):
                     )
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
-        self._tell_written(received.written)
+        self.tell_written(received.written)
         if advanced:
             self.jobAdvanced.emit()
 
@@ -958,7 +701,7 @@ class GcodeSession(MachineSession):
         _log.error("G-code replies could not be read", exc_info=failure)
         self.model.message.emit(f"The device's replies could not be read ({failure}): stopping")
         self.stop_all()
-        self._tell_written(self.feeder.release())
+        self.tell_written(self.feeder.release())
 
     def _answered(
         self,
@@ -971,47 +714,36 @@ class GcodeSession(MachineSession):
 
         ``counted``: a job's line the job has counted already (told by :attr:`jobAdvanced`).
         """
-        self._stall_told = False
+        self._lost_answers.answer_heard()
         if entry is None:
             self.model.message.emit("A reply arrived for no line (ignored)")
             if error is not None:
-                self._tell_written(self.feeder.release())
+                self.tell_written(self.feeder.release())
             return
         _, sent = entry
-        self._seen_idle = False
+        if self._seen_idle:  # only this thread sets it True: already False, no hold per answer
+            with self.feeder.lock:
+                self._seen_idle = False
         if sent.origin == "jog":
-            self._jog_unanswered = max(0, self._jog_unanswered - 1)
-            if error is None:
-                now = self.clock.now()
-                self._jog_ends.append(max([now, *self._jog_ends]) + JOG_STEP_S)
-                if not any(self._jog) and self.jogs_with_command and self.link.is_open:
-                    # A step still on its way when the key was let go: GRBL read it after
-                    # the cancel and runs it as a new jog; cancel that one too.
-                    self._realtime(JOG_CANCEL, "0x85 (jog cancel)")
-                    self._jog_cancelling = True
-                    self.query_status()
-            if any(self._jog):
-                self.query_status()  # its Bf says whether the next step may go
+            self.jogger.answered(error is None)
         if error is None:
             if sent.origin in ("console", "intent"):
                 self.replyText.emit(f"ok  ← {sent.text}")
             if not counted:
                 self.lineAcknowledged.emit(sent)
-                self._pump()
+                self.pump()
         else:
             self.errors += 1
             self.envelope.release()  # the refused line runs not: the path is not known
             self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
-            if sent.origin == "jog":
-                self._jog_unanswered = 0
             if sent.origin != "job":
                 self.model.message.emit(
                     f"{sent.text!r} refused: error {error.code}, {error.meaning}"
-                    + _hint(sent.text, error.code)
+                    + refusal_hint(sent.text, error.code)
                 )
             self.lineFailed.emit(sent, error.code, error.meaning)
             # Seen and handled (a failed job has taken back its queue): sending may go on.
-            self._tell_written(self.feeder.release())
+            self.tell_written(self.feeder.release())
 
     def _check_lost_answers(
         self,
@@ -1019,26 +751,16 @@ class GcodeSession(MachineSession):
         planner_empty: bool,
         unanswered: list[SentLine] | None = None,
     ) -> None:
-        """An ``ok`` lost on the wire would stall the stream forever: notice it, and say so.
+        """An ``ok`` lost on the wire would stall the stream for ever (:class:`LostAnswerWatch`).
 
-        GRBL answers every line once it has parsed it, so when its reports show
-        the receive buffer empty (``Bf:…,<all free>``), the planner empty and the
-        machine idle, reports in a row and some time apart, every line sent was
-        taken and answered: the missing answers were lost, and the lines count
-        as answered.  A line that pauses the board (a dwell, a program stop) is
-        still waited for; a board that reports no ``Bf:`` cannot show this, and
-        the operator is told the stream waits.
-
-        ``unanswered``: the lines unanswered when the report was read (the feeder's
-        snapshot on the reader thread; lines written since went after the report).
-        Only lines unanswered through every report of the run count as lost.
+        ``unanswered``: the lines unanswered when the report was read (None: now).
         """
         if unanswered is None:
             unanswered = self.streamer.unanswered_tags()
-        pausing = any(_pauses(sent.text) for sent in unanswered)
+        pausing = any(pauses(sent.text) for sent in unanswered)
         stuck = self._stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
         if stuck is not None:
-            self._drained_since, self._drained_reports = None, 0
+            self._lost_answers.forget()
             self.model.message.emit(
                 QCoreApplication.translate(
                     "GcodeSession",
@@ -1049,67 +771,46 @@ class GcodeSession(MachineSession):
             )
             self.soft_reset()
             return
-        if self._drained_since is not None:
-            unanswered = [sent for sent in unanswered if sent in self._lost_candidates]
-        if not unanswered or report.state != "Idle":
-            self._drained_since, self._drained_reports = None, 0
-            return
-        self._lost_candidates = unanswered
-        now = self.clock.now()
-        drained = (
-            report.rx_free is not None
-            and report.rx_free >= self.settings.rx_buffer - 1
-            and report.planner_free is not None
-            and self._planner_size > 0
-            and planner_empty
-            and not any(_pauses(sent.text) for sent in unanswered)
+        verdict = self._lost_answers.judge(
+            report, unanswered, self._planner_size, planner_empty, self.clock.now(), SILENCE_S
         )
-        if self._drained_since is None:
-            self._drained_since, self._drained_reports = now, 0
-        self._drained_reports += 1
-        waited = now - self._drained_since
-        if (
-            drained
-            and self._drained_reports >= LOST_ANSWER_REPORTS
-            and (waited >= LOST_ANSWER_AFTER_S)
-        ):
-            self._drained_since, self._drained_reports = None, 0
-            if self._short_of_lines_sent(report):
-                # Not their answers but the lines themselves were lost: the board stands
-                # short of where they end.  Reset (it stands: its position stays) and let
-                # the job look at it and go on from what is proven.
-                self.model.message.emit(
-                    QCoreApplication.translate(
-                        "GcodeSession",
-                        "{0} line(s) sent never reached the board: it has taken every byte "
-                        "it got and stands idle short of where they end; it is reset, "
-                        "keeping its position, and what it ran is looked at again",
-                    ).format(len(unanswered))
-                )
-                self.soft_reset()
-                return
+        if isinstance(verdict, StreamWaits):
             self.model.message.emit(
-                f"{len(unanswered)} answer(s) from the board were lost on the way; it has "
-                "taken and run every line sent, so they count as answered"
-            )
-            advanced = False
-            for sent in unanswered:
-                with self.feeder.lock:
-                    tags = self.streamer.unanswered_tags()
-                    if not tags or tags[0] != sent:
-                        break  # answered meanwhile after all
-                    answer = self.feeder.acknowledge()
-                self._answered(None, answer.entry, counted=answer.counted)
-                advanced = advanced or answer.counted
-            if advanced:
-                self.jobAdvanced.emit()
-                self._pump()
-        elif not drained and waited >= SILENCE_S and not self._stall_told:
-            self._stall_told = True
-            self.model.message.emit(
-                f"{len(unanswered)} line(s) unanswered while the board stands idle; "
+                f"{verdict.count} line(s) unanswered while the board stands idle; "
                 "waiting for its answer (without Bf: in its reports it cannot show it has them)"
             )
+        if not isinstance(verdict, AnswersLost):
+            return
+        if self._short_of_lines_sent(report):
+            # Not their answers but the lines themselves were lost: the board stands
+            # short of where they end.  Reset (it stands: its position stays) and let
+            # the job look at it and go on from what is proven.
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "{0} line(s) sent never reached the board: it has taken every byte "
+                    "it got and stands idle short of where they end; it is reset, "
+                    "keeping its position, and what it ran is looked at again",
+                ).format(len(verdict.lines))
+            )
+            self.soft_reset()
+            return
+        self.model.message.emit(
+            f"{len(verdict.lines)} answer(s) from the board were lost on the way; it has "
+            "taken and run every line sent, so they count as answered"
+        )
+        advanced = False
+        for sent in verdict.lines:
+            with self.feeder.lock:
+                tags = self.streamer.unanswered_tags()
+                if not tags or tags[0] != sent:
+                    break  # answered meanwhile after all
+                answer = self.feeder.acknowledge()
+            self._answered(None, answer.entry, counted=answer.counted)
+            advanced = advanced or answer.counted
+        if advanced:
+            self.jobAdvanced.emit()
+            self.pump()
 
     def _apply_status(
         self,
@@ -1143,11 +844,8 @@ class GcodeSession(MachineSession):
         if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
             # Free blocks of an idle machine with nothing on its way: the planner's size.
             self._planner_size = report.planner_free
-        self._jog_status_fresh = True
-        if self._jog_cancelling and report.state != "Jog":
-            self._jog_cancelling = False  # the cancelled jog stands: a held key may jog anew
-            self._jog_unanswered = 0
-        moving = report.state in _MOVING_STATES
+        self.jogger.reported(report)
+        moving = reports_moving(report)
         for axis in range(min(self.axis_count, len(report.mpos))):
             self.model.update_axis(
                 axis,
@@ -1167,11 +865,14 @@ class GcodeSession(MachineSession):
         # Idle as it was read too: a report read before the last lines went (a burst of held
         # replies, handled here after the reader thread sent them and counted their answers)
         # says nothing of them.
-        idle = self.streamer.idle and idle_then is not False
-        if report.state == "Idle" and idle and planner_empty:
-            self._seen_idle = True
+        with self.feeder.lock:  # nothing queued between the look and the note
+            idle = self.streamer.idle and idle_then is not False
+            at_rest = report.state == "Idle" and idle and planner_empty
+            if at_rest:
+                self._seen_idle = True
+        if at_rest:
             # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
-            offset_known = self.work_offset is not None or not self.jogs_with_command
+            offset_known = self.work_offset is not None or not self.jogger.with_command
             if (
                 placed
                 and offset_known
@@ -1182,7 +883,7 @@ class GcodeSession(MachineSession):
                 self._planned.anchor(report.mpos, report.wco or ())
         self._check_lost_answers(report, planner_empty, unanswered)
         self.statusChanged.emit(report)
-        self._feed_jog()
+        self.jogger.feed()
         if (
             self._stop_unconfirmed
             and self.silent_since is None
@@ -1192,7 +893,9 @@ class GcodeSession(MachineSession):
             self._stop_unconfirmed = False  # held and reset: it stands
         if self.silent_since is not None:
             heard = self._heard_again_at
-            if heard is not None and self.clock.now() - heard >= self.recovery_settle_s:
+            # Replies held back on the way come first: the board's state is judged from a
+            # report made a few queries after it was heard again.
+            if heard is not None and self.clock.now() - heard >= self.stale_after_s:
                 self._report_after_silence = report
             self._check_recovery()
 
@@ -1233,36 +936,3 @@ class GcodeSession(MachineSession):
         names = [axis.name for axis in self.model.profile.axes]
         tag = deviation.tag if isinstance(deviation.tag, int) else None
         self._stop_for_fault(MotionFault(fault_text(deviation, names), tag))
-
-
-#: GRBL's "setting disabled": for ``$H`` it means homing is off (``$22=0``, a new board's).
-SETTING_DISABLED = 5
-
-
-def zeroes_by_hand(settings: GcodeSettings) -> bool:
-    """Whether the machine is zeroed by hand (the winder, S0-24): it turns about a centre
-    (X measured from it) and can release its motors and take a position declared
-    (``M18``, ``G92``)."""
-    words = settings.words
-    return settings.kinematics == "cylindrical" and "M18" in words and "G92" in words
-
-
-def _hint(line: str, code: int) -> str:
-    """What the operator can do about a refusal the error's meaning alone does not explain."""
-    if code == SETTING_DISABLED and line.replace(" ", "").upper().startswith("$H"):
-        return (
-            ". Homing is switched off on the board ($22=0, GRBL's default): with end "
-            "switches fitted, send $22=1 from the console; without them, move the machine "
-            "to its origin by hand and set it there"
-        )
-    return ""
-
-
-def _pauses(line: str) -> bool:
-    """Whether ``line`` may keep the board idle and answer only later (a dwell, a stop)."""
-    code = _COMMENT.sub("", line).upper()
-    for letter, number in _WORD.findall(code):
-        value = float(number)
-        if (letter == "G" and value == 4) or (letter == "M" and value in (0, 1, 2, 30)):
-            return True
-    return False

@@ -1,0 +1,191 @@
+"""A job's progress and clock: the counts the views see, coalesced, and the ETA.
+
+A streaming job answers a line every millisecond or so; the views hear of
+its progress at most every :data:`PROGRESS_INTERVAL_MS` on a real-time
+station (and with every state change), so a thousand answered lines a second
+cost the GUI thirty redraws, not a thousand.  The clock counts only the time
+the job runs (paused and waiting stretches are not the job's), and the ETA
+is the dry-run estimate's time still to go after the operations done.
+
+The runner owns the signals and the states; this keeps the figures and says
+when to tell them (:class:`JobProgress`).  A streaming driver paces its
+checkpoints and announcements with :class:`~app.jobs.run.pacing.Every`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import QObject, QTimer, SignalInstance
+
+from app.jobs.estimate import Estimate, estimate, parameters_from_model
+from app.jobs.program import Program
+from app.station import Station
+
+ETA_INTERVAL_MS = 1000
+#: A streaming job answers a line every millisecond or so: the views hear of progress at
+#: most this often (a real-time station), never once per line.
+PROGRESS_INTERVAL_MS = 33
+
+
+class JobProgress(QObject):
+    """Operations done and executed, the job's running time, and the views told of both."""
+
+    def __init__(
+        self,
+        station: Station,
+        total: Callable[[], int],
+        progress_changed: SignalInstance,
+        executed_changed: SignalInstance,
+        eta_changed: SignalInstance,
+        operation_done: SignalInstance,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._station = station
+        self._total = total
+        self._progress_changed = progress_changed
+        self._executed_changed = executed_changed
+        self._eta_changed = eta_changed
+        self._operation_done = operation_done
+        self.done = 0  # operations [0, done) are complete
+        self.executed = 0  # operations [0, executed) are reported run by the machine
+        self.estimate: Estimate | None = None
+        self._elapsed_before = 0.0
+        self._running_since: float | None = None
+        self._eta_timer = QTimer(self)
+        self._eta_timer.setInterval(ETA_INTERVAL_MS)
+        self._eta_timer.timeout.connect(self.emit_eta)
+        #: Progress told to the views (done, executed), and the timer that coalesces it.
+        self._told: tuple[int, int] = (0, 0)
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.setInterval(PROGRESS_INTERVAL_MS)
+        self._timer.timeout.connect(self.tell)
+
+    # --- counts ----------------------------------------------------------------------
+
+    def set_executed(self, executed: int) -> None:
+        executed = min(executed, self.done)
+        if executed != self.executed:
+            self.executed = executed
+            self._told = (self._told[0], executed)
+            self._executed_changed.emit(executed, self._total())
+
+    def restart(self, index: int) -> None:
+        """A run begins at operation ``index``: counts there, no time spent yet."""
+        self.done = index
+        self.set_executed(index)
+        self._elapsed_before = 0.0
+        self._running_since = None
+
+    def tell_all(self) -> None:
+        """Both counts to the views now (a job loaded)."""
+        self._progress_changed.emit(self.done, self._total())
+        self._told = (self.done, self.executed)
+        self._executed_changed.emit(self.executed, self._total())
+
+    def tell_done(self) -> None:
+        """The done count to the views now (a run began)."""
+        self._progress_changed.emit(self.done, self._total())
+        self._told = (self.done, self.executed)
+
+    def reached(self, index: int) -> None:
+        """Operation ``index`` is done, reported so by the machine: it ran."""
+        self.done = index + 1
+        self.set_executed(self.done)
+
+    def tell_reached(self, index: int) -> None:
+        """:meth:`reached`'s operation to the views, and the time (its checkpoint is written)."""
+        self._operation_done.emit(index)
+        self._progress_changed.emit(self.done, self._total())
+        self._told = (self.done, self.executed)
+        self.emit_eta()
+
+    def advance(self, done: int, executed: int | None = None) -> None:
+        """A streaming driver's progress, kept at once and told to the views coalesced."""
+        self.done = done
+        self.executed = min(done if executed is None else executed, done)
+        if not self._station.realtime:
+            self.tell()
+        elif not self._timer.isActive():
+            self._timer.start()
+
+    def tell(self) -> None:
+        """Emit what changed since the views were last told (see :meth:`advance`)."""
+        self._timer.stop()
+        told_done, told_executed = self._told
+        self._told = (self.done, self.executed)
+        total = self._total()
+        if self.done != told_done:
+            if self.done:
+                self._operation_done.emit(self.done - 1)
+            self._progress_changed.emit(self.done, total)
+        if self.executed != told_executed:
+            self._executed_changed.emit(self.executed, total)
+
+    def flush(self) -> None:
+        """Progress held back for the timer is told now (a state change comes with it)."""
+        if self._timer.isActive():
+            self.tell()
+
+    # --- time ------------------------------------------------------------------------
+
+    def clock(self, was_running: bool, runs: bool) -> None:
+        """The job's state changes between running and not: its clock follows."""
+        now = self._station.clock.now()
+        if was_running and not runs and self._running_since is not None:
+            self._elapsed_before += now - self._running_since
+            self._running_since = None
+        elif runs and not was_running:
+            self._running_since = now
+        if runs and self._station.realtime:
+            self._eta_timer.start()
+        elif not runs:
+            self._eta_timer.stop()
+
+    @property
+    def elapsed_s(self) -> float:
+        """Station-clock time spent running, without paused and waiting stretches."""
+        if self._running_since is None:
+            return self._elapsed_before
+        return self._elapsed_before + self._station.clock.now() - self._running_since
+
+    @property
+    def remaining_s(self) -> float:
+        """The model's time still to go; the estimate's figure, not rescaled by the real one."""
+        if self.estimate is None:
+            return 0.0
+        return self.estimate.remaining_after(self.done)
+
+    def emit_eta(self) -> None:
+        """Tell the views elapsed and remaining time (a timer calls this every second)."""
+        self._eta_changed.emit(self.elapsed_s, self.remaining_s)
+
+
+def estimate_inputs(station: Station) -> Callable[[Program], Estimate]:
+    """The dry-run estimate with the machine's settings and position as they are now
+    (read here, on the GUI thread; the function returned may run on any)."""
+    model = station.model
+    session = station.session
+    profile = station.profile
+    start = {axis.name: axis.work_position for axis in model.axes}
+    parameters = parameters_from_model(model)
+    period_s = (session.period_ms if session is not None else station.period_ms) / 1000
+    fast = session.fast_selected if session is not None else True
+    speeds = session.top_speeds_mm_s() if session is not None else None
+    home_first = session.homes_before_job if session is not None else False
+
+    def timed(program: Program) -> Estimate:
+        return estimate(
+            program,
+            profile,
+            parameters,
+            period_s,
+            fast=fast,
+            start=start,
+            speeds_mm_s=speeds,
+            home_first=home_first,
+        )
+
+    return timed

@@ -1,0 +1,123 @@
+"""Answers lost on the wire: an ``ok`` that never came would stall the stream for ever.
+
+GRBL answers every line once it has parsed it, so when its reports show the
+receive buffer empty (``Bf:…,<all free>``), the planner empty and the machine
+idle, reports in a row and some time apart, every line sent was taken and
+answered: the missing answers were lost, and the lines count as answered.  A
+line that pauses the board (a dwell, a program stop) is still waited for; a
+board that reports no ``Bf:`` cannot show this, and the operator is told the
+stream waits.
+
+Plain Python: the watch only judges; the session acts on its verdict (it
+acknowledges the lines, or says the stream waits).  It runs on the GUI thread,
+from the status reports the session applies.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from app.machines.gcode.lines import SentLine
+from protocol.gcode.codec import StatusReport
+
+#: Reports in a row, at least this far apart, that show every sent byte consumed and the
+#: machine idle with an empty planner while lines are unanswered: their answers were lost.
+LOST_ANSWER_REPORTS = 2
+LOST_ANSWER_AFTER_S = 0.5
+_COMMENT = re.compile(r"\([^)]*\)|;.*")
+_WORD = re.compile(r"([GM])\s*([-+]?\d+(?:\.\d*)?)")
+
+
+@dataclass(frozen=True)
+class AnswersLost:
+    """The board has taken and run these lines: their answers were lost (oldest first)."""
+
+    lines: list[SentLine]
+
+
+@dataclass(frozen=True)
+class StreamWaits:
+    """Lines stay unanswered while the board stands idle, and nothing shows it has them."""
+
+    count: int
+
+
+class LostAnswerWatch:
+    """Follows drained reports while lines stay unanswered; says when their answers are lost."""
+
+    def __init__(self, rx_buffer: int) -> None:
+        self._rx_buffer = rx_buffer
+        #: Since when (station clock) reports show the board done with everything sent, while
+        #: lines are unanswered, and how many reports in a row have.
+        self._drained_since: float | None = None
+        self._drained_reports = 0
+        #: The lines unanswered through every drained report so far.
+        self._candidates: list[SentLine] = []
+        self._stall_told = False
+
+    def forget(self) -> None:
+        """The run of drained reports ends (the board is reset and looked at again)."""
+        self._drained_since, self._drained_reports = None, 0
+
+    def answer_heard(self) -> None:
+        """A reply came: a stall is told again if the stream stalls again."""
+        self._stall_told = False
+
+    def judge(
+        self,
+        report: StatusReport,
+        unanswered: list[SentLine],
+        planner_size: int,
+        planner_empty: bool,
+        now: float,
+        stall_after_s: float,
+    ) -> AnswersLost | StreamWaits | None:
+        """The verdict of one status report.
+
+        ``stall_after_s``: unanswered this long with nothing to show the board has the
+        lines, the operator is told (once until an answer comes).
+
+        ``unanswered``: the lines unanswered when the report was read (the feeder's
+        snapshot on the reader thread; lines written since went after the report).
+        Only lines unanswered through every report of the run count as lost.
+        """
+        if self._drained_since is not None:
+            unanswered = [sent for sent in unanswered if sent in self._candidates]
+        if not unanswered or report.state != "Idle":
+            self._drained_since, self._drained_reports = None, 0
+            return None
+        self._candidates = unanswered
+        drained = (
+            report.rx_free is not None
+            and report.rx_free >= self._rx_buffer - 1
+            and report.planner_free is not None
+            and planner_size > 0
+            and planner_empty
+            and not any(pauses(sent.text) for sent in unanswered)
+        )
+        if self._drained_since is None:
+            self._drained_since, self._drained_reports = now, 0
+        self._drained_reports += 1
+        waited = now - self._drained_since
+        if (
+            drained
+            and self._drained_reports >= LOST_ANSWER_REPORTS
+            and (waited >= LOST_ANSWER_AFTER_S)
+        ):
+            self._drained_since, self._drained_reports = None, 0
+            return AnswersLost(unanswered)
+        if not drained and waited >= stall_after_s and not self._stall_told:
+            self._stall_told = True
+            return StreamWaits(len(unanswered))
+        return None
+
+
+def pauses(line: str) -> bool:
+    """Whether ``line`` may keep the board idle and answer only later (a dwell, a stop)."""
+    code = _COMMENT.sub("", line).upper()
+    for letter, number in _WORD.findall(code):
+        value = float(number)
+        if (letter == "G" and value == 4) or (letter == "M" and value in (0, 1, 2, 30)):
+            return True
+    return False
