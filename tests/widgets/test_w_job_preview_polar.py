@@ -114,9 +114,10 @@ def test_the_limits_are_the_disc_the_tool_reaches(preview: JobPreview) -> None:
 def test_fit_shows_the_board_not_the_reach(qtbot: QtBot, preview: JobPreview) -> None:
     preview.set_program(build_program(BOARD))
     x0, x1, y0, y1 = view_range(preview)
-    # The board's edge (100 mm) with a margin, nowhere near the 250 mm reach.
+    # The board's edge (100 mm) and the winding's start 2 cm outside it (S0-26), with a
+    # margin: nowhere near the 250 mm reach.
     for low, high in ((x0, x1), (y0, y1)):
-        assert -120 < low <= -100 and 100 <= high < 120
+        assert -135 < low <= -100 and 100 <= high < 135
     preview.plot.getViewBox().setRange(xRange=(0, 20), yRange=(0, 20))
     qtbot.mouseClick(preview.fit_button, LEFT)
     assert view_range(preview) == pytest.approx((x0, x1, y0, y1))
