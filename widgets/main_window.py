@@ -72,6 +72,7 @@ from app.station import Station
 from app.telemetry import TelemetryRecorder
 from app.version import station_version
 from protocol.drill.timing import DrillTiming
+from widgets.after_first_paint import AfterFirstPaint
 from widgets.jog_input import JogInput
 from widgets.link_text import link_detail_text, link_state_text
 from widgets.number_field import NumberField
@@ -982,6 +983,7 @@ class MainWindow(QMainWindow):
     # --- window lifecycle ----------------------------------------------------
 
     def _restore_settings(self) -> None:
+        self.docks_restored = AfterFirstPaint(self, self._restore_docks)
         if not self._remembers:
             self.resize(980, 640)
             return
@@ -990,22 +992,31 @@ class MainWindow(QMainWindow):
             self.resize(980, 640)
         else:
             self.fit_on_screen()
-        state = self._settings.read(WINDOW_STATE)
-        if state is not None:
-            # The docks the last session showed are built first, so the state places them;
-            # a state saved before docks were built on demand does not say: all are built.
-            shown_docks = self._settings.read(DOCKS_SHOWN)
-            docks: dict[str, Callable[[], object]] = {
-                "jobs_dock": lambda: self.jobs_dock,
-                "telemetry_dock": lambda: self.telemetry_dock,
-                "developer_pane": lambda: self.developer_pane,
-            }
-            for name, build in docks.items():
-                if shown_docks is None or name in shown_docks.split(","):
-                    build()
-            self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
+
+    def _restore_docks(self) -> None:
+        """The docks the last session showed, built after the first paint and placed as left."""
+        state = self._settings.read(WINDOW_STATE)
+        if state is None:
+            return
+        # The docks the last session showed are built first, so the state places them;
+        # a state saved before docks were built on demand does not say: all are built.
+        active = self.isActiveWindow()
+        shown_docks = self._settings.read(DOCKS_SHOWN)
+        docks: dict[str, Callable[[], object]] = {
+            "jobs_dock": lambda: self.jobs_dock,
+            "telemetry_dock": lambda: self.telemetry_dock,
+            "developer_pane": lambda: self.developer_pane,
+        }
+        for name, build in docks.items():
+            if shown_docks is None or name in shown_docks.split(","):
+                build()
+        self.restoreState(state)
+        if self.isVisible():
+            self.fit_on_screen()  # the docks came after the window was placed
+        if active and not self.isActiveWindow():
+            self.activateWindow()  # building a dock took the keyboard from the operator
 
     def fit_on_screen(self) -> None:
         """Move (and if need be shrink) the window so it is wholly on its screen, frame and all.
@@ -1070,6 +1081,7 @@ class MainWindow(QMainWindow):
         """Store geometry, window state and the page shown (also done on close)."""
         if not self._remembers:
             return
+        self.docks_restored.now()  # closed before its first paint: the layout it was given
         self._settings.write(GEOMETRY, self.saveGeometry())
         self._settings.write(WINDOW_STATE, self.saveState())
         shown_docks = [dock.objectName() for dock in self._built_docks() if not dock.isHidden()]

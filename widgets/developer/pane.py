@@ -607,14 +607,21 @@ class DeveloperPane(QDockWidget):
         self.composer = EchoComposer(station)
         self.emulator_box = EmulatorBox(self.emulator_controls, axis_names)
         self.joystick_box = JoystickBox(self.emulator_controls, axis_names)
-        self.composer.setVisible(stage)
-        self.emulator_box.setVisible(stage)
-        self.joystick_box.setVisible(station.profile.dialect == "usb3")
         gcode = station.profile.dialect == "gcode"
         self.reply_box = GcodeReplyBox(station)
         self.board_box = GcodeEmulatorBox(station)
-        self.reply_box.setVisible(gcode)
-        self.board_box.setVisible(gcode)
+        offered = [
+            (self.composer, stage),
+            (self.emulator_box, stage),
+            (self.joystick_box, station.profile.dialect == "usb3"),
+            (self.reply_box, gcode),
+            (self.board_box, gcode),
+        ]
+        for box, shown in offered:
+            if not shown:
+                # Only hidden: shown before the pane holds it, a box flashed up as a window
+                # of its own and took the keyboard from the main window.
+                box.hide()
         self.log_view = FrameLogView(self.frame_log)
 
         self.setWidget(self._build(self._controls_column()))

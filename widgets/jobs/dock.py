@@ -383,7 +383,10 @@ class JobsDock(QDockWidget):
         for index, widget in enumerate(placed):
             grid.addWidget(widget, index // 2, index % 2)  # hidden ones last: they take no room
         for widget, visible in offered:
-            widget.setVisible(visible)
+            if not visible:
+                # Only hidden: shown while not yet in the dock, each flashed up as a window of
+                # its own and took the keyboard from the main window (no more arrow jogs).
+                widget.hide()
         grid.setColumnStretch(2, 1)  # spare width beside, so a click on a check's caption hits it
         return grid
 
@@ -483,7 +486,8 @@ class JobsDock(QDockWidget):
         )
         # Only the winder winds thread (its axes: base A, needle X, drill Z).
         axes = {axis.name for axis in self.station.profile.axes}
-        self.photo_button.setVisible({"A", "X", "Z"} <= axes)
+        if not {"A", "X", "Z"} <= axes:
+            self.photo_button.hide()  # never shown before it is placed: a window of its own
         self.file_label = QLabel(self.tr("no job loaded"))
         self.file_label.setObjectName("job_file")
         self.file_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
