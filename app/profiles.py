@@ -16,6 +16,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
+from app.jobs.texts import translate
 from app.resources import MACHINES_DIR as MACHINES_DIR  # where callers find the shipped ones
 from protocol.drill.timing import DrillTiming
 from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_HZ
@@ -133,6 +134,23 @@ class GcodeSettings:
         return 0.001 if self.dwell_p == "ms" else 1.0
 
 
+def shipped_titles() -> tuple[str, ...]:
+    """The shipped machines' titles (resources/machines/*.toml), in the language installed.
+
+    Each goes through ``translate`` here so that lupdate lists it: the window says a
+    machine's title in the operator's language.  A profile of one's own keeps its title
+    as written.
+    """
+    return (
+        translate("MachineProfile", "XY positioning stage"),
+        translate("MachineProfile", "Three-axis USB unit"),
+        translate("MachineProfile", "PCB drill/plotter"),
+        translate("MachineProfile", "String-art winder"),
+        translate("MachineProfile", "CoreXY pen plotter"),
+        translate("MachineProfile", "GRBL pen plotter"),
+    )
+
+
 @dataclass(frozen=True)
 class MachineProfile:
     name: str
@@ -155,6 +173,11 @@ class MachineProfile:
     #: How far a reported position may be from the path of the moves in flight before the
     #: station stops the machine (mm, or degrees on a rotary axis).
     supervision_tolerance_mm: float = DEFAULT_SUPERVISION_TOLERANCE_MM
+
+    @property
+    def shown_title(self) -> str:
+        """The title in the operator's language (the file's, English, stays :attr:`title`)."""
+        return translate("MachineProfile", self.title)
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""

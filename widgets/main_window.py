@@ -115,7 +115,10 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
         "PageUp / PageDown",
         QT_TRANSLATE_NOOP("MainWindow", "Jog Z while held, on machines with a Z axis"),
     ),
-    ("Shift (held)", QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed")),
+    (
+        str(QT_TRANSLATE_NOOP("MainWindow", "Shift (held)")),
+        QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed"),
+    ),
     ("Esc", QT_TRANSLATE_NOOP("MainWindow", "Stop everything, from anywhere in the window")),
     (
         "Alt+M / A / R / D / L / X / G",
@@ -213,7 +216,8 @@ class MainWindow(QMainWindow):
         self._close_after_stop = False
         self.texts = Texts(self)
         self.texts.set(
-            self.setWindowTitle, lambda: self.tr("StepDeck — {0}").format(station.profile.title)
+            self.setWindowTitle,
+            lambda: self.tr("StepDeck — {0}").format(station.profile.shown_title),
         )
 
         self.jog = JogInput(station, self)
@@ -758,7 +762,7 @@ class MainWindow(QMainWindow):
                 "A control station for small stepper machines: XY stages, a PCB drill, "
                 "G-code plotters, the usb3 unit and the string-art winder."
             )
-            machine = self.tr("Machine: {0}").format(html.escape(self.station.profile.title))
+            machine = self.tr("Machine: {0}").format(html.escape(self.station.profile.shown_title))
             self._about = QMessageBox(
                 QMessageBox.Icon.Information,
                 self.tr("About StepDeck"),
@@ -777,7 +781,7 @@ class MainWindow(QMainWindow):
         if self._help is None:
             esc = stop_key_text(self.station.profile)
             rows = "".join(
-                f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
+                f"<tr><td style='padding-right:16px'><b>{self.tr(keys)}</b></td>"
                 f"<td>{esc if keys == 'Esc' else self.tr(str(what))}</td></tr>"
                 for keys, what in SHORTCUTS
             )

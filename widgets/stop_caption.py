@@ -29,7 +29,7 @@ def stop_caption(profile: MachineProfile) -> tuple[str, str]:
                 "StopCaption",
                 "The {0} has no stop command: this button and Esc drop the commands "
                 "queued after the running one; the procedure it is running finishes",
-            ).format(profile.title),
+            ).format(profile.shown_title),
         )
     return (
         QCoreApplication.translate("StopCaption", "DROP QUEUE\nthis move\nfinishes (Esc)"),
@@ -37,7 +37,7 @@ def stop_caption(profile: MachineProfile) -> tuple[str, str]:
             "StopCaption",
             "The {0} has no stop command: this button and Esc drop the commands "
             "queued after the running one; the move it is running finishes",
-        ).format(profile.title),
+        ).format(profile.shown_title),
     )
 
 

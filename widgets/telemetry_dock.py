@@ -72,6 +72,7 @@ from app.telemetry import (
     WINDOW_CHOICES_S,
     FloatArray,
     TelemetryRecorder,
+    Variable,
 )
 from widgets.number_field import localized
 from widgets.retranslate import Texts
@@ -95,6 +96,15 @@ DEFAULT_PLOTS_HEIGHT = 3 * 90
 
 def _window_label(seconds: float) -> str:
     return f"{seconds:g} s" if seconds < 60 else f"{seconds / 60:g} min"
+
+
+def _variable_name(variable: Variable) -> str:
+    """A subscriber variable's name in the operator's language, as the developer pane says it."""
+    return QCoreApplication.translate("StageWords", variable.name)
+
+
+def _variable_caption(variable: Variable) -> str:
+    return f"{_variable_name(variable)} ({variable.unit})"
 
 
 def _common_unit(units: list[str]) -> str:
@@ -471,8 +481,9 @@ class TelemetryDock(QDockWidget):
         )
         self.variable_combo.addItem("", None)
         t.item(self.variable_combo, 0, lambda: self.tr("none"))
-        for variable in VARIABLES:
-            self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
+        for index, variable in enumerate(VARIABLES, start=1):
+            self.variable_combo.addItem("", variable.subscriber)
+            t.item(self.variable_combo, index, lambda v=variable: _variable_caption(v))
         self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
         # Narrower than its longest entry when the dock is (under the pages, beside the jobs
         # dock on a 1280 px screen); wider, up to that, where there is room.
@@ -768,8 +779,8 @@ class TelemetryDock(QDockWidget):
         if variable is None:
             self._titles[2] = (self.tr("variable (none)"), [])
         else:
-            name = f"{variable.name} ({variable.unit})"
-            self._titles[2] = (name, [(variable.name, VARIABLE_COLOUR)])
+            name = _variable_caption(variable)
+            self._titles[2] = (name, [(_variable_name(variable), VARIABLE_COLOUR)])
         self._show_title(2)
         rotation = variable is not None and variable.key == ROTATION_KEY
         self.zero_button.setEnabled(rotation)

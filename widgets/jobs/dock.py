@@ -436,7 +436,7 @@ class JobsDock(QDockWidget):
             translate_pen=self.translate_pen_check.isChecked(),
             skip_unsupported=self.skip_check.isChecked(),
             gcode=profile.gcode,
-            machine_title=profile.title,
+            machine_title=profile.shown_title,
             string_art=self._board,
             format=self._format,
         )
