@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from pytestqt.qtbot import QtBot
 
 from app.jobs.run.runner import JobState
@@ -41,5 +42,44 @@ def test_a_finished_drill_job_has_no_time_left(qtbot: QtBot, tmp_path: Path) -> 
         harness.run(2.0)
         assert dock.runner.remaining_s == 0.0
         assert dock.eta_label.text() == "left 00:00"
+    finally:
+        harness.close()
+
+
+@pytest.mark.parametrize(
+    ("profile", "dial"),
+    [("xy-stage", True), ("usb3", False), ("pcb-drill", False), ("corexy-plotter", False)],
+)
+def test_the_rotation_dial_is_shown_only_where_rotation_is_reported(
+    qtbot: QtBot, profile: str, dial: bool
+) -> None:
+    """The stage's IMU reports its rotation; the other machines have nothing to turn it."""
+    harness = StationHarness(load_profile(profile))
+    try:
+        window = MainWindow(harness.station)
+        qtbot.addWidget(window)
+        window.show()
+        window.telemetry_action.trigger()
+        dock = window.telemetry_dock
+        assert dock.isVisible()
+        assert dock.rotation_panel.isVisible() is dial
+        assert dock.cross.isVisible() is dial
+    finally:
+        harness.close()
+
+
+def test_the_drills_link_check_is_not_shown_as_a_failure(qtbot: QtBot) -> None:
+    """The probe's "< EI" read as a refusal; it is the drill saying it is there."""
+    harness = StationHarness(load_profile("pcb-drill"))
+    try:
+        window = MainWindow(harness.station)
+        qtbot.addWidget(window)
+        harness.connect()
+        harness.run(0.5)
+        lines = window.drill_panel.output.toPlainText().splitlines()
+        answers = [line for line in lines if line.startswith("< EI")]
+        assert answers, lines
+        assert all("link check answered" in line for line in answers)
+        assert any(line.startswith("> I ") and "link check" in line for line in lines), lines
     finally:
         harness.close()

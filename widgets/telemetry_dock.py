@@ -439,7 +439,14 @@ class TelemetryDock(QDockWidget):
         body_layout.setContentsMargins(0, 0, 0, 0)
         body_layout.setSpacing(6)
         body_layout.addWidget(self._build_plots(), 1)
-        body_layout.addLayout(self._build_rotation_column())
+        # The dial only where a machine can report its rotation (an IMU's subscriber
+        # variable): elsewhere it sat there saying "rotation not plotted" for nothing.
+        self.rotation_panel = QWidget()
+        self.rotation_panel.setObjectName("rotation_panel")
+        self.rotation_panel.setLayout(self._build_rotation_column())
+        if not recorder.has_variables:
+            self.rotation_panel.hide()  # only hidden: shown unplaced, it flashed up as a window
+        body_layout.addWidget(self.rotation_panel)
         layout.addWidget(self.body, 1)
         self.setWidget(content)
 
@@ -673,6 +680,7 @@ class TelemetryDock(QDockWidget):
 
     def _build_rotation_column(self) -> QVBoxLayout:
         column = QVBoxLayout()
+        column.setContentsMargins(0, 0, 0, 0)
         column.setSpacing(4)
         title = self.texts.label(lambda: self.tr("Rotation"))
         title.setAlignment(Qt.AlignmentFlag.AlignHCenter)

@@ -417,6 +417,14 @@
         <translation>&lt;b&gt;{0}&lt;/b&gt; poběží asi {1} s a vrtačka nemá příkaz k zastavení: jakmile se rozjede, STOP a Esc jen zahodí, co je ve frontě za ním. Odeslat?</translation>
     </message>
     <message>
+        <source>   (link check: is the drill there?)</source>
+        <translation>   (kontrola spojení: je vrtačka připojena?)</translation>
+    </message>
+    <message>
+        <source>  (link check answered: the drill is there)</source>
+        <translation>  (kontrola spojení zodpovězena: vrtačka je připojena)</translation>
+    </message>
+    <message>
         <source>! {0} refused by the drill; queue cleared</source>
         <translation>! {0} vrtačka odmítla; fronta vyprázdněna</translation>
     </message>

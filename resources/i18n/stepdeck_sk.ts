@@ -417,6 +417,14 @@
         <translation>&lt;b&gt;{0}&lt;/b&gt; pobeží asi {1} s a vŕtačka nemá príkaz na zastavenie: keď sa rozbehne, STOP a Esc len zahodia, čo je vo fronte za ním. Odoslať?</translation>
     </message>
     <message>
+        <source>   (link check: is the drill there?)</source>
+        <translation>   (kontrola spojenia: je vŕtačka pripojená?)</translation>
+    </message>
+    <message>
+        <source>  (link check answered: the drill is there)</source>
+        <translation>  (kontrola spojenia zodpovedaná: vŕtačka je pripojená)</translation>
+    </message>
+    <message>
         <source>! {0} refused by the drill; queue cleared</source>
         <translation>! {0} vŕtačka odmietla; front vyprázdnený</translation>
     </message>

@@ -27,9 +27,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.machines.drill.session import DrillSession
+from app.machines.drill.session import PROBE_LETTER, DrillSession
 from app.station import Station
-from protocol.drill.codec import POSITION_LETTERS, Command, decode_command
+from protocol.drill.codec import POSITION_LETTERS, Command, Reply, ReplyKind, decode_command
 from widgets.history_entry import HistoryLineEdit
 from widgets.number_field import FieldGate, NumberField, localized
 from widgets.panels.drill_timing import DrillTimingBox
@@ -345,11 +345,22 @@ class DrillPanel(QWidget):
     def _show_done_command(self, text: str) -> None:
         _append(self.done_list, text)
 
-    def _show_sent(self, _command: object, raw: bytes) -> None:
-        self.output.appendPlainText("> " + raw.decode("ascii", "replace").rstrip("\r\n"))
+    def _show_sent(self, command: object, raw: bytes) -> None:
+        line = "> " + raw.decode("ascii", "replace").rstrip("\r\n")
+        if command == PROBE_LETTER or getattr(command, "letter", None) == PROBE_LETTER:
+            line += self.tr("   (link check: is the drill there?)")
+        self.output.appendPlainText(line)
 
-    def _show_received(self, _reply: object, raw: bytes) -> None:
-        self.output.appendPlainText("< " + raw.decode("ascii", "replace").rstrip("\r\n"))
+    def _show_received(self, reply: object, raw: bytes) -> None:
+        line = "< " + raw.decode("ascii", "replace").rstrip("\r\n")
+        if (
+            isinstance(reply, Reply)
+            and reply.kind is ReplyKind.ERROR
+            and reply.letter == PROBE_LETTER
+        ):
+            # The drill answers the unknown letter I with EI: its "I am here", not a failure.
+            line += self.tr("  (link check answered: the drill is there)")
+        self.output.appendPlainText(line)
 
     def _show_failed(self, text: str) -> None:
         self.output.appendPlainText(
