@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from pytestqt.qtbot import QtBot
 
@@ -81,5 +82,29 @@ def test_the_drills_link_check_is_not_shown_as_a_failure(qtbot: QtBot) -> None:
         assert answers, lines
         assert all("link check answered" in line for line in answers)
         assert any(line.startswith("> I ") and "link check" in line for line in lines), lines
+    finally:
+        harness.close()
+
+
+def test_a_flat_curve_is_not_zoomed_into_float_noise(qtbot: QtBot) -> None:
+    """A still axis's velocity, a few 1e-16 apart, had ticks reading "5e-16"."""
+    harness = StationHarness(load_profile("xy-stage"))
+    try:
+        window = MainWindow(harness.station)
+        qtbot.addWidget(window)
+        window.show()
+        window.telemetry_action.trigger()
+        dock = window.telemetry_dock
+        plot = dock.velocity_plot
+        curve = next(c for name, c in dock._curves.items() if name.endswith("velocity"))
+        t = np.linspace(-10.0, 0.0, 50)
+        curve.set_points(t, 2.0 + np.where(np.arange(50) % 2, 5e-16, 0.0))
+        plot.getViewBox().autoRange()
+        low, high = plot.viewRange()[1]
+        assert high - low >= 0.01 and low <= 2.0 <= high
+        axis = plot.getAxis("left")
+        ticks = axis.tickValues(low, high, plot.height())
+        labels = [s for spacing, values in ticks for s in axis.tickStrings(values, 1.0, spacing)]
+        assert labels and not any("e" in label for label in labels), labels
     finally:
         harness.close()

@@ -98,6 +98,10 @@ def _window_label(seconds: float) -> str:
     return f"{seconds:g} s" if seconds < 60 else f"{seconds / 60:g} min"
 
 
+#: The least height a plot's vertical range shows (in its unit: mm, mm/s, V…).
+MIN_Y_RANGE = 0.01
+
+
 def _variable_name(variable: Variable) -> str:
     """A subscriber variable's name in the operator's language, as the developer pane says it."""
     return QCoreApplication.translate("StageWords", variable.name)
@@ -657,6 +661,9 @@ class TelemetryDock(QDockWidget):
         plot.setMenuEnabled(False)
         plot.setMouseEnabled(x=False, y=True)
         plot.enableAutoRange(x=False)
+        # A flat curve (a still axis, float noise around 0) is shown as flat, not zoomed
+        # into until its ticks read "5e-16".
+        plot.getViewBox().setLimits(minYRange=MIN_Y_RANGE)
         plot.getViewBox().sigRangeChangedManually.connect(self._range_dragged)
         for side in ("left", "bottom"):
             axis = plot.getAxis(side)
