@@ -108,3 +108,31 @@ def test_a_flat_curve_is_not_zoomed_into_float_noise(qtbot: QtBot) -> None:
         assert labels and not any("e" in label for label in labels), labels
     finally:
         harness.close()
+
+
+def test_check_boxes_stand_out_in_the_dark_theme(qtbot: QtBot) -> None:
+    """The dark palette filled a check box as dark as the window around it."""
+    from PySide6.QtGui import QPalette
+    from PySide6.QtWidgets import QApplication, QCheckBox, QWidget
+
+    from widgets.theme import ThemeController
+
+    original = QApplication.palette()
+    theme = ThemeController("dark")
+    try:
+        page = QWidget()
+        box = QCheckBox("skip", page)
+        qtbot.addWidget(page)
+        page.show()
+        QApplication.processEvents()
+        fill = box.palette().color(QPalette.ColorRole.Base).lightness()
+        window = page.palette().color(QPalette.ColorRole.Window).lightness()
+        assert window < 128 and fill - window >= 25
+        theme.set_choice("light")
+        QApplication.processEvents()
+        assert box.palette().color(QPalette.ColorRole.Base).lightness() > 200
+    finally:
+        theme.release()
+        QApplication.setPalette(original)
+        for name in ("QCheckBox", "QRadioButton"):
+            QApplication.setPalette(original, name)
