@@ -176,7 +176,7 @@ class ThemeController(QObject):
         QApplication.setPalette(palette)
         boxes = indicator_palette(palette) if dark else palette
         for name in INDICATOR_CLASSES:
-            QApplication.setPalette(boxes, name)
+            QApplication.setPalette(boxes, name)  # type: ignore[arg-type]  # str at run time
         if repolish:
             _repolish_style_sheets()
         colours = DARK if dark else LIGHT
