@@ -27,6 +27,7 @@ from PySide6.QtCore import (
     QTranslator,
 )
 
+from app import profiles
 from app.jobs import texts
 from app.resources import I18N_DIR
 
@@ -119,6 +120,7 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
     assert app is not None
     remove()
     texts.use(QCoreApplication.translate)  # job texts made without Qt follow it too
+    profiles.use(QCoreApplication.translate)  # and the machines' titles
     language = chosen_language(choice)
     path = compiled(language, cache_dir)
     if path is None:

@@ -10,13 +10,12 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
-from app.jobs.texts import translate
 from app.resources import MACHINES_DIR as MACHINES_DIR  # where callers find the shipped ones
 from protocol.drill.timing import DrillTiming
 from protocol.stage.driver import DEFAULT_RSENSE_OHM, DEFAULT_VFS_V, STEP_CLOCK_HZ
@@ -132,6 +131,24 @@ class GcodeSettings:
     def dwell_p_seconds(self) -> float:
         """Seconds one unit of ``G4 P`` is on this machine."""
         return 0.001 if self.dwell_p == "ms" else 1.0
+
+
+def _source(_context: str, text: str) -> str:
+    return text
+
+
+_translator: Callable[[str, str], str] = _source
+
+
+def translate(context: str, text: str) -> str:
+    """``text`` in the language installed: profiles are read where there is no Qt (the CLI)."""
+    return _translator(context, text)
+
+
+def use(translator: Callable[[str, str], str]) -> None:
+    """Say titles through ``translator`` from now on (:func:`app.i18n.install` hands it over)."""
+    global _translator
+    _translator = translator
 
 
 def shipped_titles() -> tuple[str, ...]:

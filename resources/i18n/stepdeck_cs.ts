@@ -3366,7 +3366,7 @@ Načíst jako:</translation>
     <name>RotationCross</name>
     <message>
         <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
-        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels.</extracomment>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels. The least height a plot&apos;s vertical range shows (in its unit: mm, mm/s, V…).</extracomment>
         <translation>Natočení plošiny vůči poslednímu vynulování (kladně proti směru hodinových ručiček)</translation>
     </message>
     <message>
