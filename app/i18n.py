@@ -18,6 +18,7 @@ from pathlib import Path
 
 import PySide6
 from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
     QCoreApplication,
     QEvent,
     QLibraryInfo,
@@ -26,6 +27,7 @@ from PySide6.QtCore import (
     QTranslator,
 )
 
+from app import profiles
 from app.jobs import texts
 from app.resources import I18N_DIR
 
@@ -103,6 +105,7 @@ def remove() -> None:
     while _installed and app is not None:
         app.removeTranslator(_installed.pop())
     QLocale.setDefault(QLocale(QLocale.Language.English, QLocale.Country.UnitedStates))
+    texts.use(QCoreApplication.translate)  # and numbers with a decimal point again
 
 
 def install(choice: str, cache_dir: Path | None = None) -> str:
@@ -117,6 +120,7 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
     assert app is not None
     remove()
     texts.use(QCoreApplication.translate)  # job texts made without Qt follow it too
+    profiles.use(QCoreApplication.translate)  # and the machines' titles
     language = chosen_language(choice)
     path = compiled(language, cache_dir)
     if path is None:
@@ -127,11 +131,29 @@ def install(choice: str, cache_dir: Path | None = None) -> str:
         _tell_widgets(app)
         return "en"
     QLocale.setDefault(QLocale(language))
+    texts.use(QCoreApplication.translate, QLocale().decimalPoint())
     _install_qt_own(app, language)
     app.installTranslator(translator)
     _installed.append(translator)
     translator.setObjectName(language)
     return language
+
+
+#: Qt's standard buttons, which Slovak's ``qtbase`` leaves in English (it has them only under
+#: an older context): the station's own translation says them in both languages.
+STANDARD_BUTTONS = (
+    QT_TRANSLATE_NOOP("QPlatformTheme", "OK"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Cancel"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Close"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Save"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Open"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Apply"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Discard"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Reset"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "Help"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "&Yes"),
+    QT_TRANSLATE_NOOP("QPlatformTheme", "&No"),
+)
 
 
 def _install_qt_own(app: QCoreApplication, language: str) -> None:

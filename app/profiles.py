@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -142,6 +142,41 @@ class GcodeSettings:
         return 0.001 if self.dwell_p == "ms" else 1.0
 
 
+def _source(_context: str, text: str) -> str:
+    return text
+
+
+_translator: Callable[[str, str], str] = _source
+
+
+def translate(context: str, text: str) -> str:
+    """``text`` in the language installed: profiles are read where there is no Qt (the CLI)."""
+    return _translator(context, text)
+
+
+def use(translator: Callable[[str, str], str]) -> None:
+    """Say titles through ``translator`` from now on (:func:`app.i18n.install` hands it over)."""
+    global _translator
+    _translator = translator
+
+
+def shipped_titles() -> tuple[str, ...]:
+    """The shipped machines' titles (resources/machines/*.toml), in the language installed.
+
+    Each goes through ``translate`` here so that lupdate lists it: the window says a
+    machine's title in the operator's language.  A profile of one's own keeps its title
+    as written.
+    """
+    return (
+        translate("MachineProfile", "XY positioning stage"),
+        translate("MachineProfile", "Three-axis USB unit"),
+        translate("MachineProfile", "PCB drill/plotter"),
+        translate("MachineProfile", "String-art winder"),
+        translate("MachineProfile", "CoreXY pen plotter"),
+        translate("MachineProfile", "GRBL pen plotter"),
+    )
+
+
 @dataclass(frozen=True)
 class MachineProfile:
     name: str
@@ -168,6 +203,11 @@ class MachineProfile:
     #: How far a reported position may be from the path of the moves in flight before the
     #: station stops the machine (mm, or degrees on a rotary axis).
     supervision_tolerance_mm: float = DEFAULT_SUPERVISION_TOLERANCE_MM
+
+    @property
+    def shown_title(self) -> str:
+        """The title in the operator's language (the file's, English, stays :attr:`title`)."""
+        return translate("MachineProfile", self.title)
 
     def travel_limits(self) -> dict[str, tuple[float, float]]:
         """Per axis name, where a job may send it: 0…travel; a rotary axis turns freely."""

@@ -32,6 +32,7 @@ from app.i18n import LANGUAGES
 from app.jobs.names import shown
 from app.settings import DOCKS_SHOWN, GEOMETRY, PAGE, WINDOW_STATE, StationSettings
 from app.station import Station
+from widgets.after_first_paint import AfterFirstPaint
 from widgets.dialects import window_dialect
 from widgets.jog_input import JogInput
 from widgets.page_stack import PageArea, PageStack
@@ -90,7 +91,8 @@ class MainWindow(QMainWindow):
         self._close_after_stop = False
         self.texts = Texts(self)
         self.texts.set(
-            self.setWindowTitle, lambda: self.tr("StepDeck — {0}").format(station.profile.title)
+            self.setWindowTitle,
+            lambda: self.tr("StepDeck — {0}").format(station.profile.shown_title),
         )
         self.jog = JogInput(station, self)
         self._build_pages()
@@ -330,6 +332,7 @@ class MainWindow(QMainWindow):
     # --- window lifecycle ----------------------------------------------------
 
     def _restore_settings(self) -> None:
+        self.docks_restored = AfterFirstPaint(self, self._restore_docks)
         if not self._remembers:
             self.resize(980, 640)
             return
@@ -338,13 +341,22 @@ class MainWindow(QMainWindow):
             self.resize(980, 640)
         else:
             self.fit_on_screen()
-        state = self._settings.read(WINDOW_STATE)
-        if state is not None:
-            # The docks the last session showed are built first, so the state places them.
-            self.docks.build_shown(self._settings.read(DOCKS_SHOWN))
-            self.restoreState(state)
         self.menu_panel.set_page(self._settings.read(PAGE))
         self._warn_about_settings()
+
+    def _restore_docks(self) -> None:
+        """The docks the last session showed, built after the first paint and placed as left."""
+        state = self._settings.read(WINDOW_STATE)
+        if state is None:
+            return
+        active = self.isActiveWindow()
+        # The docks the last session showed are built first, so the state places them.
+        self.docks.build_shown(self._settings.read(DOCKS_SHOWN))
+        self.restoreState(state)
+        if self.isVisible():
+            self.fit_on_screen()  # the docks came after the window was placed
+        if active and not self.isActiveWindow():
+            self.activateWindow()  # building a dock took the keyboard from the operator
 
     def fit_on_screen(self) -> None:
         """Move (and if need be shrink) the window so it is wholly on its screen, frame and all.
@@ -395,6 +407,7 @@ class MainWindow(QMainWindow):
         """Store geometry, window state and the page shown (also done on close)."""
         if not self._remembers:
             return
+        self.docks_restored.now()  # closed before its first paint: the layout it was given
         self._settings.write(GEOMETRY, self.saveGeometry())
         self._settings.write(WINDOW_STATE, self.saveState())
         self.docks.save(self._settings)

@@ -29,6 +29,7 @@ from PySide6.QtGui import QColor, QKeyEvent, QPainter, QPaintEvent, QValidator
 from PySide6.QtWidgets import QLabel, QLineEdit, QPushButton, QWidget
 
 from widgets.style import MINUS, monospace_font
+from widgets.units import shown_unit
 
 #: A number being typed: optional sign, digits, one decimal point or comma, digits.
 _PARTIAL = re.compile(r"[+\-\u2212]?\d*(?:[.,]\d*)?")
@@ -141,7 +142,7 @@ class NumberField(QLineEdit):
         self.update()
 
     def _suffix(self) -> str:
-        return " ".join(part for part in (self._unit, self._note) if part)
+        return " ".join(part for part in (shown_unit(self._unit), self._note) if part)
 
     def set_description(self, text: str) -> None:
         """What the field is for, the first line of its tooltip (the range follows)."""
@@ -184,7 +185,7 @@ class NumberField(QLineEdit):
         return self._problem
 
     def range_text(self) -> str:
-        unit = f" {self._unit}" if self._unit else ""
+        unit = f" {shown_unit(self._unit)}" if self._unit else ""
         low, high = _short(self._low, self._decimals), _short(self._high, self._decimals)
         return f"{low}…{high}{unit}"
 

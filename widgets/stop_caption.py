@@ -30,7 +30,7 @@ def stop_caption(profile: MachineProfile) -> tuple[str, str]:
                 "StopCaption",
                 "The {0} has no stop command: this button and Esc drop the commands "
                 "queued after the running one; the procedure it is running finishes",
-            ).format(profile.title),
+            ).format(profile.shown_title),
         )
     return (
         QCoreApplication.translate("StopCaption", "DROP QUEUE\nthis move\nfinishes (Esc)"),
@@ -38,7 +38,7 @@ def stop_caption(profile: MachineProfile) -> tuple[str, str]:
             "StopCaption",
             "The {0} has no stop command: this button and Esc drop the commands "
             "queued after the running one; the move it is running finishes",
-        ).format(profile.title),
+        ).format(profile.shown_title),
     )
 
 

@@ -72,6 +72,7 @@ from app.telemetry import (
     WINDOW_CHOICES_S,
     FloatArray,
     TelemetryRecorder,
+    Variable,
 )
 from widgets.number_field import localized
 from widgets.retranslate import Texts
@@ -95,6 +96,19 @@ DEFAULT_PLOTS_HEIGHT = 3 * 90
 
 def _window_label(seconds: float) -> str:
     return f"{seconds:g} s" if seconds < 60 else f"{seconds / 60:g} min"
+
+
+#: The least height a plot's vertical range shows (in its unit: mm, mm/s, V…).
+MIN_Y_RANGE = 0.01
+
+
+def _variable_name(variable: Variable) -> str:
+    """A subscriber variable's name in the operator's language, as the developer pane says it."""
+    return QCoreApplication.translate("StageWords", variable.name)
+
+
+def _variable_caption(variable: Variable) -> str:
+    return f"{_variable_name(variable)} ({variable.unit})"
 
 
 def _common_unit(units: list[str]) -> str:
@@ -429,7 +443,14 @@ class TelemetryDock(QDockWidget):
         body_layout.setContentsMargins(0, 0, 0, 0)
         body_layout.setSpacing(6)
         body_layout.addWidget(self._build_plots(), 1)
-        body_layout.addLayout(self._build_rotation_column())
+        # The dial only where a machine can report its rotation (an IMU's subscriber
+        # variable): elsewhere it sat there saying "rotation not plotted" for nothing.
+        self.rotation_panel = QWidget()
+        self.rotation_panel.setObjectName("rotation_panel")
+        self.rotation_panel.setLayout(self._build_rotation_column())
+        if not recorder.has_variables:
+            self.rotation_panel.hide()  # only hidden: shown unplaced, it flashed up as a window
+        body_layout.addWidget(self.rotation_panel)
         layout.addWidget(self.body, 1)
         self.setWidget(content)
 
@@ -471,8 +492,9 @@ class TelemetryDock(QDockWidget):
         )
         self.variable_combo.addItem("", None)
         t.item(self.variable_combo, 0, lambda: self.tr("none"))
-        for variable in VARIABLES:
-            self.variable_combo.addItem(f"{variable.name} ({variable.unit})", variable.subscriber)
+        for index, variable in enumerate(VARIABLES, start=1):
+            self.variable_combo.addItem("", variable.subscriber)
+            t.item(self.variable_combo, index, lambda v=variable: _variable_caption(v))
         self.variable_combo.currentIndexChanged.connect(self._variable_chosen)
         # Narrower than its longest entry when the dock is (under the pages, beside the jobs
         # dock on a 1280 px screen); wider, up to that, where there is room.
@@ -639,6 +661,9 @@ class TelemetryDock(QDockWidget):
         plot.setMenuEnabled(False)
         plot.setMouseEnabled(x=False, y=True)
         plot.enableAutoRange(x=False)
+        # A flat curve (a still axis, float noise around 0) is shown as flat, not zoomed
+        # into until its ticks read "5e-16".
+        plot.getViewBox().setLimits(minYRange=MIN_Y_RANGE)
         plot.getViewBox().sigRangeChangedManually.connect(self._range_dragged)
         for side in ("left", "bottom"):
             axis = plot.getAxis(side)
@@ -662,6 +687,7 @@ class TelemetryDock(QDockWidget):
 
     def _build_rotation_column(self) -> QVBoxLayout:
         column = QVBoxLayout()
+        column.setContentsMargins(0, 0, 0, 0)
         column.setSpacing(4)
         title = self.texts.label(lambda: self.tr("Rotation"))
         title.setAlignment(Qt.AlignmentFlag.AlignHCenter)
@@ -768,8 +794,8 @@ class TelemetryDock(QDockWidget):
         if variable is None:
             self._titles[2] = (self.tr("variable (none)"), [])
         else:
-            name = f"{variable.name} ({variable.unit})"
-            self._titles[2] = (name, [(variable.name, VARIABLE_COLOUR)])
+            name = _variable_caption(variable)
+            self._titles[2] = (name, [(_variable_name(variable), VARIABLE_COLOUR)])
         self._show_title(2)
         rotation = variable is not None and variable.key == ROTATION_KEY
         self.zero_button.setEnabled(rotation)

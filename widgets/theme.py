@@ -101,6 +101,19 @@ def dark_palette() -> QPalette:
     return palette
 
 
+#: Widgets whose box or circle the dark palette drew as dark on dark: barely visible.
+INDICATOR_CLASSES = ("QCheckBox", "QRadioButton")
+
+
+def indicator_palette(palette: QPalette) -> QPalette:
+    """``palette`` with a box fill that stands out from a dark window (Fusion fills with Base)."""
+    lighter = QPalette(palette)
+    lighter.setColor(QPalette.ColorRole.Base, QColor("#4a4c54"))
+    lighter.setColor(QPalette.ColorRole.Window, QColor("#5a5c66"))  # Fusion's box outline
+    lighter.setColor(QPalette.ColorGroup.Disabled, QPalette.ColorRole.Base, QColor("#393a40"))
+    return lighter
+
+
 def _is_dark(palette: QPalette) -> bool:
     return palette.color(QPalette.ColorRole.Window).lightness() < 128
 
@@ -161,6 +174,9 @@ class ThemeController(QObject):
             palette = dark_palette() if dark else QApplication.style().standardPalette()
         repolish = _is_dark(QApplication.palette()) != dark
         QApplication.setPalette(palette)
+        boxes = indicator_palette(palette) if dark else palette
+        for name in INDICATOR_CLASSES:
+            QApplication.setPalette(boxes, name)  # type: ignore[arg-type]  # str at run time
         if repolish:
             _repolish_style_sheets()
         colours = DARK if dark else LIGHT

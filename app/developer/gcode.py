@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QObject
 
 from app.machine import LinkState
 from app.machines.gcode.session import GcodeSession
@@ -38,7 +38,7 @@ QUICK_REPLIES = (
     ("error:20", "error:20"),
     ("ALARM:1", "ALARM:1"),
     ("Hold", "<Hold:0|MPos:0.000,0.000,0.000|FS:0,0>"),
-    ("banner", "Grbl 1.1h ['$' for help]"),
+    (str(QT_TRANSLATE_NOOP("GcodeReplyBox", "banner")), "Grbl 1.1h ['$' for help]"),
 )
 
 

@@ -13,6 +13,8 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
 from app.developer.raw_text import escape_raw
 from app.machines.stage.echoes import STATUS_TEXT
 from app.machines.stage.parameters import BY_TYPE
@@ -40,27 +42,51 @@ def _lower_first(text: str) -> str:
 
 #: What an echo packet's TYPE says its DATA holds, in words (docs/protocols.md §1.3).
 TYPE_TEXT: dict[int, str] = {
-    EchoType.POSITION: "position",
-    EchoType.VELOCITY: "velocity",
-    **{t: _lower_first(p.label) for t, p in BY_TYPE.items()},
+    EchoType.POSITION: str(QT_TRANSLATE_NOOP("StageWords", "position")),
+    EchoType.VELOCITY: str(QT_TRANSLATE_NOOP("StageWords", "velocity")),
+    **{t: p.label for t, p in BY_TYPE.items()},
 }
 
 #: Subscriber variables in words (docs/protocols.md §1.5).
 SUBSCRIBER_TEXT: dict[int, str] = {
-    Subscriber.NONE: "none",
-    Subscriber.BATTERY_VOLTAGE: "battery voltage",
-    Subscriber.BATTERY_CHARGE: "battery charge",
-    Subscriber.CHARGING_CURRENT: "charging current",
-    Subscriber.BOARD_TEMPERATURE: "board temperature",
-    Subscriber.ROTATION: "rotation",
-    Subscriber.YAW_RATE: "yaw rate",
-    Subscriber.DEVICE_FLAGS: "device flags",
-    Subscriber.X_ENCODER: "X encoder",
-    Subscriber.Y_ENCODER: "Y encoder",
-    Subscriber.FIRMWARE_VERSION: "firmware version",
-    Subscriber.REJECTED_FRAMES: "rejected frames",
-    Subscriber.UNKNOWN: "unknown subscriber",
+    Subscriber.NONE: str(QT_TRANSLATE_NOOP("StageWords", "none")),
+    Subscriber.BATTERY_VOLTAGE: str(QT_TRANSLATE_NOOP("StageWords", "battery voltage")),
+    Subscriber.BATTERY_CHARGE: str(QT_TRANSLATE_NOOP("StageWords", "battery charge")),
+    Subscriber.CHARGING_CURRENT: str(QT_TRANSLATE_NOOP("StageWords", "charging current")),
+    Subscriber.BOARD_TEMPERATURE: str(QT_TRANSLATE_NOOP("StageWords", "board temperature")),
+    Subscriber.ROTATION: str(QT_TRANSLATE_NOOP("StageWords", "rotation")),
+    Subscriber.YAW_RATE: str(QT_TRANSLATE_NOOP("StageWords", "yaw rate")),
+    Subscriber.DEVICE_FLAGS: str(QT_TRANSLATE_NOOP("StageWords", "device flags")),
+    Subscriber.X_ENCODER: str(QT_TRANSLATE_NOOP("StageWords", "X encoder")),
+    Subscriber.Y_ENCODER: str(QT_TRANSLATE_NOOP("StageWords", "Y encoder")),
+    Subscriber.FIRMWARE_VERSION: str(QT_TRANSLATE_NOOP("StageWords", "firmware version")),
+    Subscriber.REJECTED_FRAMES: str(QT_TRANSLATE_NOOP("StageWords", "rejected frames")),
+    Subscriber.UNKNOWN: str(QT_TRANSLATE_NOOP("StageWords", "unknown subscriber")),
 }
+
+
+def type_text(code: int) -> str:
+    """What an echo TYPE holds, in the operator's language ("position", "poloha")."""
+    if code in BY_TYPE:
+        return _lower_first(QCoreApplication.translate("StageParameter", BY_TYPE[code].label))
+    if code in TYPE_TEXT:
+        return QCoreApplication.translate("StageWords", TYPE_TEXT[code])
+    return f"TYPE {code:X}"
+
+
+def status_text(code: int) -> str:
+    """An echo STATUS in the operator's language, as the info panel says it."""
+    if code in STATUS_TEXT:
+        return QCoreApplication.translate("AxisStatus", STATUS_TEXT[code])
+    return f"status {code:X}"
+
+
+def subscriber_text(code: int) -> str:
+    """A subscriber variable's name in the operator's language."""
+    if code in SUBSCRIBER_TEXT:
+        return QCoreApplication.translate("StageWords", SUBSCRIBER_TEXT[code])
+    return f"{code:02X}"
+
 
 _STATUS_CODES = frozenset(int(s) for s in AxisStatus)
 _MAX_TYPE = max(EchoType)
@@ -226,7 +252,7 @@ def describe_command(frame: CommandFrame, axis_names: Sequence[str], units: Sequ
         f"{_name(axis_names, i)} {_command_words(p.command, p.data, _unit(units, i))}"
         for i, p in enumerate(frame.packets)
     ]
-    parts.append(f"SS {SUBSCRIBER_TEXT.get(frame.subscriber, f'{frame.subscriber:02X}')}")
+    parts.append(f"SS {subscriber_text(frame.subscriber)}")
     return " | ".join(parts)
 
 
@@ -255,14 +281,14 @@ def _command_words(command: int, data: int, unit: str) -> str:
         case CommandId.SLEEP:
             return f"SLEEP {'on' if data == 1 else 'off' if data == 0 else data}"
         case CommandId.READ:
-            return f"READ {TYPE_TEXT.get(data, f'TYPE {data}')}"
+            return f"READ {type_text(data)}"
         case CommandId.NOP | CommandId.STOP | CommandId.HOME | CommandId.ESTOP:
             return cid.name
     # WRITE_*: the parameter it writes, with the value as the dynamics panel shows it.
     parameter = BY_TYPE.get(command - 0x0E)
     if parameter is None:
         return f"{cid.name} {data}"
-    return f"WRITE {_lower_first(parameter.label)} {_parameter_value(command - 0x0E, data)}"
+    return f"WRITE {type_text(command - 0x0E)} {_parameter_value(command - 0x0E, data)}"
 
 
 def _parameter_value(type_: int, data: int) -> str:
@@ -281,21 +307,21 @@ def describe_echo(echo: EchoFrame, axis_names: Sequence[str], units: Sequence[st
 
 
 def _packet_words(packet: EchoPacket, unit: str) -> str:
-    status = STATUS_TEXT.get(packet.status, f"status {packet.status:X}")
+    status = status_text(packet.status)
     if packet.type == EchoType.POSITION:
         return f"pos {_mm(packet.data, unit)} {status}"
     if packet.type == EchoType.VELOCITY:
         return f"vel {_mm(packet.data, unit + '/s')} {status}"
     if packet.type in BY_TYPE:
-        return f"{TYPE_TEXT[packet.type]} {_parameter_value(packet.type, packet.data)} {status}"
+        return f"{type_text(packet.type)} {_parameter_value(packet.type, packet.data)} {status}"
     return f"TYPE {packet.type:X} {packet.data} {status}"
 
 
 def _subscriber_words(subscriber: int, sdata: int) -> str:
-    name = SUBSCRIBER_TEXT.get(subscriber)
+    name = subscriber_text(subscriber)
     match subscriber:
         case Subscriber.NONE:
-            return "SS none"
+            return f"SS {name}"
         case Subscriber.BATTERY_VOLTAGE:
             return f"{name} {sdata} mV"
         case Subscriber.BATTERY_CHARGE:
@@ -328,4 +354,5 @@ def _flag_words(value: int) -> str:
         for flag in DeviceFlag
         if flag.name is not None and value & flag
     ]
-    return f"{value:#04x} ({', '.join(names) or 'none'})"
+    none = QCoreApplication.translate("StageWords", "none")
+    return f"{value:#04x} ({', '.join(names) or none})"

@@ -377,8 +377,14 @@ class MachineSession(QObject):
         self._told_no_answer = True
         profile = self.model.profile
         other = sounds_like(bytes(self._unrecognised), besides=profile.dialect)
-        heard = f"; its replies sound like {other}" if other else ""
-        detail = f"no answer: is this a {profile.title}? Check the profile, baud and port{heard}"
+        heard = (
+            QCoreApplication.translate("Session", "; its replies sound like {0}").format(other)
+            if other
+            else ""
+        )
+        detail = QCoreApplication.translate(
+            "Session", "no answer: is this a {0}? Check the profile, baud and port{1}"
+        ).format(profile.shown_title, heard)
         self.model.set_link_state(LinkState.CONNECTING, detail)
         self.model.message.emit(f"{self.link.describe()}: {detail}")
 
@@ -391,7 +397,7 @@ class MachineSession(QObject):
     def _unsupported(self, what: str) -> bool:
         self.model.message.emit(
             QCoreApplication.translate("Session", "{0} has no {1}").format(
-                self.model.profile.title, what
+                self.model.profile.shown_title, what
             )
         )
 

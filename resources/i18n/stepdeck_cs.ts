@@ -480,6 +480,15 @@
         <translation>&lt;b&gt;{0}&lt;/b&gt; poběží asi {1} s a vrtačka nemá příkaz k zastavení: jakmile se rozjede, STOP a Esc jen zahodí, co je ve frontě za ním. Odeslat?</translation>
     </message>
     <message>
+        <source>   (link check: is the drill there?)</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <translation>   (kontrola spojení: je vrtačka připojena?)</translation>
+    </message>
+    <message>
+        <source>  (link check answered: the drill is there)</source>
+        <translation>  (kontrola spojení zodpovězena: vrtačka je připojena)</translation>
+    </message>
+    <message>
         <source>! {0} refused by the drill; queue cleared</source>
         <translation>! {0} vrtačka odmítla; fronta vyprázdněna</translation>
     </message>
@@ -508,7 +517,6 @@
     </message>
     <message>
         <source>{0} is at the end of its travel</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>{0} je na konci rozsahu pojezdu</translation>
     </message>
     <message>
@@ -844,6 +852,18 @@
         <translation>Vložit echo</translation>
     </message>
     <message>
+        <source>type</source>
+        <translation>typ</translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation>stav</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>hodnota</translation>
+    </message>
+    <message>
         <source>µm, µm/s or value</source>
         <translation>µm, µm/s nebo hodnota</translation>
     </message>
@@ -862,6 +882,10 @@
     <message>
         <source>Fold this echo into the model as if the device had sent it</source>
         <translation>Promítnout toto echo do modelu, jako by ho poslalo zařízení</translation>
+    </message>
+    <message>
+        <source>A whole number, {0}</source>
+        <translation>Celé číslo, {0}</translation>
     </message>
     <message>
         <source>Injected {0}</source>
@@ -1290,6 +1314,11 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>Not injected: {0}</source>
         <translation>Nevloženo: {0}</translation>
+    </message>
+    <message>
+        <source>banner</source>
+        <extracomment>Replies a developer reaches for most, for the pane&apos;s quick buttons.</extracomment>
+        <translation>úvodní hlášení</translation>
     </message>
 </context>
 <context>
@@ -1734,6 +1763,10 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source> and {0} more</source>
         <translation> a dalších {0}</translation>
+    </message>
+    <message>
+        <source>skipped 1 line: {0} (line {1})</source>
+        <translation>přeskočen 1 řádek: {0} (řádek {1})</translation>
     </message>
     <message>
         <source>skipped {0} line(s): {1} (lines {2}{3})</source>
@@ -2376,6 +2409,81 @@ Přesto odeslat do stroje?</translation>
         <source>The machine answers again, its state intact: the job goes on</source>
         <translation>Stroj opět odpovídá a jeho stav je neporušený: úloha pokračuje</translation>
     </message>
+    <message>
+        <source>{0} is not supported on {1}</source>
+        <translation>{0}: stroj {1} to nepodporuje</translation>
+    </message>
+    <message>
+        <source>{0} cannot drill</source>
+        <translation>{0} neumí vrtat</translation>
+    </message>
+    <message>
+        <source>{0} drills only with explicit moves: G-code has no drill cycle</source>
+        <translation>{0} vrtá jen výslovnými pohyby: G-code nemá vrtací cyklus</translation>
+    </message>
+    <message>
+        <source>{0} has no pen</source>
+        <translation>{0} nemá pero</translation>
+    </message>
+    <message>
+        <source>{0} does not take G-code</source>
+        <translation>{0} nepřijímá G-kód</translation>
+    </message>
+    <message>
+        <source>the drill is busy with another command</source>
+        <translation>vrtačka je zaneprázdněna jiným příkazem</translation>
+    </message>
+    <message>
+        <source>the drill refused it</source>
+        <translation>vrtačka jej odmítla</translation>
+    </message>
+    <message>
+        <source>the drill refused to home</source>
+        <translation>vrtačka odmítla referenční jízdu</translation>
+    </message>
+    <message>
+        <source>The drill cannot report whether it has homed, and the station has not seen it home since this link opened: homing first (N)</source>
+        <translation>Vrtačka neumí ohlásit, zda prošla referenční jízdou, a stanice ji od otevření spojení referenční jízdu dělat neviděla: nejprve referenční jízda (N)</translation>
+    </message>
+    <message>
+        <source>Parking at {0}</source>
+        <translation>Parkování na {0}</translation>
+    </message>
+    <message>
+        <source>Drill cycle at {0} was received by the machine, which finishes it on its own: counted as done</source>
+        <translation>Vrtací cyklus na {0} stroj přijal a dokončí jej sám: počítá se jako hotový</translation>
+    </message>
+    <message>
+        <source>the drill refused {0}</source>
+        <translation>vrtačka odmítla {0}</translation>
+    </message>
+    <message>
+        <source>Not parked: the drill refused {0}</source>
+        <translation>Nezaparkováno: vrtačka odmítla {0}</translation>
+    </message>
+    <message>
+        <source>the move was refused</source>
+        <extracomment>Position echoes per moved axis, counted from a resume, before the machine&apos;s state is believed: more than a killed station can leave unread in a serial buffer.
+----------
+Station-clock seconds the unit has to show it started a move, or to say where it stands. Per axis of the operation: mm and station-clock time of its last report since the move (or the question) went out. Station-clock time the unit was asked where it stands because it fell silent short of the end: its answer, not the silence, says whether it stopped short. The last position each axis reported. A report is judged as it is decoded, before the session folds it into the model, so the model lags by the report under judgement.</extracomment>
+        <translation>pohyb byl odmítnut</translation>
+    </message>
+    <message>
+        <source>Checking whether {0} ({1}) was completed…</source>
+        <translation>Ověřuje se, zda byla operace {0} ({1}) dokončena…</translation>
+    </message>
+    <message>
+        <source>Operation at {0} was already complete</source>
+        <translation>Operace na {0} už byla dokončena</translation>
+    </message>
+    <message>
+        <source>{0} hit an end switch at {1} mm</source>
+        <translation>{0} narazila na koncový spínač na {1} mm</translation>
+    </message>
+    <message>
+        <source>Asking the unit where it stands ({0}, {1})…</source>
+        <translation>Dotaz na polohu jednotky ({0}, {1})…</translation>
+    </message>
 </context>
 <context>
     <name>JobsDock</name>
@@ -2803,6 +2911,34 @@ Načíst jako:</translation>
     </message>
 </context>
 <context>
+    <name>MachineProfile</name>
+    <message>
+        <source>XY positioning stage</source>
+        <extracomment>How far a reported position may stray from the path of the moves sent ([supervision] tolerance_mm): a few steps, a rounded report and a report read while the move went on. What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras). &quot;counting&quot; (at most rx_buffer - 1 bytes unacknowledged) or &quot;ping-pong&quot; G1/G2/G3 need a feed rate set first (GRBL&apos;s error:22); False: the firmware has a default. The unit of ``G4 P``: &quot;s&quot; on GRBL (P150 is two and a half minutes), &quot;ms&quot; on firmwares that read it as Marlin does. The loader, the estimate and the emulator follow it. GRBL&apos;s ``$11`` (mm): the board joins moves at their junction speed, planning ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without a look-ahead planner): every move starts and ends at rest. A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); False: GRBL&apos;s, which refuses it (error:26) and needs the axes named. The board answers a line only once its motion is done (the CoreXY plotter), not once planned (GRBL): every answered line ran, and an unanswered one is at most the one under way — what a resume after a fault can take as proven. A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval that only ``M98 &lt;µs&gt;`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on interval in µs. None: F sets the speed (GRBL, the winder).</extracomment>
+        <translation>Polohovací stůl XY</translation>
+    </message>
+    <message>
+        <source>Three-axis USB unit</source>
+        <translation>Tříosá jednotka USB</translation>
+    </message>
+    <message>
+        <source>PCB drill/plotter</source>
+        <translation>Vrtačka/plotr plošných spojů</translation>
+    </message>
+    <message>
+        <source>String-art winder</source>
+        <translation>Navíječka string-artu</translation>
+    </message>
+    <message>
+        <source>CoreXY pen plotter</source>
+        <translation>Perový plotr CoreXY</translation>
+    </message>
+    <message>
+        <source>GRBL pen plotter</source>
+        <translation>Perový plotr GRBL</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Jog X while held</source>
@@ -2816,6 +2952,10 @@ Načíst jako:</translation>
     <message>
         <source>Jog Z while held, on machines with a Z axis</source>
         <translation>Posuv v ose Z, dokud je klávesa stisknutá (stroje s osou Z)</translation>
+    </message>
+    <message>
+        <source>Shift (held)</source>
+        <translation>Shift (držený)</translation>
     </message>
     <message>
         <source>Jog and move at the other speed</source>
@@ -3198,6 +3338,54 @@ Načíst jako:</translation>
     </message>
 </context>
 <context>
+    <name>QPlatformTheme</name>
+    <message>
+        <source>OK</source>
+        <extracomment>The languages offered, by code, each named in itself (a user who cannot read the current language still finds their own). Compiling one file takes a few tens of milliseconds; more means something is wrong. Qt&apos;s standard buttons, which Slovak&apos;s ``qtbase`` leaves in English (it has them only under an older context): the station&apos;s own translation says them in both languages.</extracomment>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Uložit</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otevřít</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použít</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Zahodit</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Obnovit</translation>
+    </message>
+    <message>
+        <source>Help</source>
+        <translation>Nápověda</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Ano</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Ne</translation>
+    </message>
+</context>
+<context>
     <name>RegistrationBar</name>
     <message>
         <source>The bottom side of a double-sided board: the job mirrored about its own extent</source>
@@ -3340,7 +3528,7 @@ Načíst jako:</translation>
     <name>RotationCross</name>
     <message>
         <source>Platform rotation relative to the last Zero (counter-clockwise positive)</source>
-        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels.</extracomment>
+        <extracomment>Curve colours per axis (X, Y, Z, then whatever else a profile has). The least height of the three plots together, in pixels (a 1280 x 800 window must fit). The width of the caption (title, unit and key) beside each plot, in pixels. The least height a plot&apos;s vertical range shows (in its unit: mm, mm/s, V…).</extracomment>
         <translation>Natočení plošiny vůči poslednímu vynulování (kladně proti směru hodinových ručiček)</translation>
     </message>
     <message>
@@ -3380,6 +3568,19 @@ se nevykresluje</translation>
     <message>
         <source>The device answers again ({0} s after it was given up), but {1}</source>
         <translation>Zařízení opět odpovídá ({0} s poté, co bylo vzdáno), ale {1}</translation>
+    </message>
+    <message>
+        <source>; its replies sound like {0}</source>
+        <translation>; jeho odpovědi připomínají {0}</translation>
+    </message>
+    <message>
+        <source>no answer: is this a {0}? Check the profile, baud and port{1}</source>
+        <translation>bez odpovědi: je to opravdu {0}? Zkontrolujte profil, rychlost a port{1}</translation>
+    </message>
+    <message>
+        <source>Axis {0}: device refused a command</source>
+        <extracomment>Telemetry keys and the factor from wire units to displayed units.</extracomment>
+        <translation>Osa {0}: zařízení odmítlo příkaz</translation>
     </message>
 </context>
 <context>
@@ -3456,6 +3657,73 @@ se nevykresluje</translation>
         <source>nothing it reports shows whether it was switched off meanwhile</source>
         <extracomment>What the info panel shows; each is asked for at least once a second. Until the stage&apos;s own dynamics are read: its documented defaults (docs/protocols.md §1.4). Periods between a frame leaving and its effect being seen (frame out, echo back), on top of the braking distance when a jog is turned into a stop at the travel end. A jog stopped at the travel&apos;s end stops this far inside it: the stage&apos;s end switches sit at the travel&apos;s ends, and a jog is to stop before them, not on them. Echoes counted past a MOVE_ABS&apos;s frame before one is believed to answer a later frame. Echoes come back in order, one per valid frame, so a lost frame or echo only makes the count lag; the margin of one more covers a duplicated or stale echo. Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none). Every echoed position is judged against the moves sent (stopped when off them). Frames sent and echoes received since the link opened (see _check_moves). Per axis: the last MOVE_ABS sent and the frame count it went out with, until an echo of a later frame shows whether the stage received it.</extracomment>
         <translation>z ničeho, co hlásí, nepozná, zda bylo mezitím vypnuto</translation>
+    </message>
+</context>
+<context>
+    <name>StageWords</name>
+    <message>
+        <source>position</source>
+        <extracomment>What an echo packet&apos;s TYPE says its DATA holds, in words (docs/protocols.md §1.3).</extracomment>
+        <translation>poloha</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <extracomment>Subscriber variables in words (docs/protocols.md §1.5).
+----------
+A field as a widget or a test hands it over: text typed or chosen, or a number.</extracomment>
+        <translation>žádná</translation>
+    </message>
+    <message>
+        <source>battery voltage</source>
+        <translation>napětí baterie</translation>
+    </message>
+    <message>
+        <source>battery charge</source>
+        <translation>nabití baterie</translation>
+    </message>
+    <message>
+        <source>charging current</source>
+        <translation>nabíjecí proud</translation>
+    </message>
+    <message>
+        <source>board temperature</source>
+        <translation>teplota desky</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>natočení</translation>
+    </message>
+    <message>
+        <source>yaw rate</source>
+        <translation>rychlost otáčení</translation>
+    </message>
+    <message>
+        <source>device flags</source>
+        <translation>příznaky zařízení</translation>
+    </message>
+    <message>
+        <source>X encoder</source>
+        <translation>enkodér X</translation>
+    </message>
+    <message>
+        <source>Y encoder</source>
+        <translation>enkodér Y</translation>
+    </message>
+    <message>
+        <source>firmware version</source>
+        <translation>verze firmwaru</translation>
+    </message>
+    <message>
+        <source>rejected frames</source>
+        <translation>odmítnuté rámce</translation>
+    </message>
+    <message>
+        <source>unknown subscriber</source>
+        <translation>neznámý odběratel</translation>
     </message>
 </context>
 <context>
@@ -3990,6 +4258,34 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     <message>
         <source>This machine reports no subscriber variables</source>
         <translation>Tento stroj nehlásí žádné proměnné odběratele</translation>
+    </message>
+</context>
+<context>
+    <name>Unit</name>
+    <message>
+        <source>deg</source>
+        <extracomment>The unit words the station shows, for lupdate; anything else is a symbol.</extracomment>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>deg/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>kroků</translation>
+    </message>
+    <message>
+        <source>µsteps</source>
+        <translation>µkroků</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>mm/ot</translation>
+    </message>
+    <message>
+        <source>frames</source>
+        <translation>rámců</translation>
     </message>
 </context>
 <context>

@@ -480,7 +480,7 @@ def test_profile_axes_and_the_estimate() -> None:
     assert move_seconds(np.array([90.0]), 75.0, 18.75)[0] == pytest.approx(2 * math.sqrt(4.8))
     # 300 mm on X passes the 250 mm ramp: 300/62.5 + 62.5/15.625 = 8.8 s.
     assert move_seconds(np.array([-300.0]), 62.5, 15.625)[0] == pytest.approx(8.8)
-    job = job_of(0, 4, 10.0, [0, 2])
+    job = job_of(0, 4, 10.0, [0, 2, 1])  # two threads: 0 to 2, 2 to 1
     program = build_program(job, profile)
     assert program.estimate_s == pytest.approx(winder_seconds(program, profile))
     assert program.estimate_s is not None and program.estimate_s > 0
@@ -508,7 +508,9 @@ def test_the_estimate_counts_the_drills_dwells() -> None:
 def test_summary_shows_the_totals(data_dir: Path) -> None:
     job = read_string_art(sample(data_dir, "cardioid") / "poradi.txt")
     text = job.summary(3725.0)
-    assert text.startswith("200 nails on a circle of 14.5 cm radius, 400 connections, thread ")
+    # 400 nails visited, tied at the first: 399 threads between them, as the generator counts.
+    assert len(job.sequence) == 400
+    assert text.startswith("200 nails on a circle of 14.5 cm radius, 399 connections, thread ")
     assert text.endswith(", about 1:02:05")
     assert f"thread {job.thread_length_mm() / 1000:.1f} m" in text
     assert "about" not in job.summary(None)

@@ -14,7 +14,7 @@ from PySide6.QtGui import QFocusEvent, QKeyEvent
 from PySide6.QtWidgets import QApplication, QComboBox, QFileDialog, QWidget
 from pytestqt.qtbot import QtBot
 
-from app.profiles import load_profile
+from app.profiles import available_profiles, load_profile
 from protocol.stage.codec import AxisStatus, CommandFrame, CommandId, CommandPacket, decode
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
@@ -672,7 +672,12 @@ def test_docks_shown_at_close_are_back_at_the_next_start(
     first.close()
 
     again = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
-    second = _open_window(qtbot, harness, settings=again)
+    second = MainWindow(harness.station, again)
+    qtbot.addWidget(second)
+    # Built after the window's first paint, so the window shows as fast as a bare one.
+    assert not second.docks.built() and second.docks_restored.pending
+    second.show()
+    qtbot.waitUntil(lambda: not second.docks_restored.pending)
     built = second.docks.built()  # the plots only: the jobs dock and the pane wait
     assert [dock.objectName() for dock in built] == ["telemetry_dock"] and built[0].isVisible()
     assert second.telemetry_action.isChecked()
@@ -680,3 +685,43 @@ def test_docks_shown_at_close_are_back_at_the_next_start(
     second.jobs_action.trigger()  # placed where the first window had it
     assert second.jobs_dock.isVisible()
     assert second.dockWidgetArea(second.jobs_dock) == Qt.DockWidgetArea.RightDockWidgetArea
+    second.close()
+
+
+def test_a_window_closed_before_its_first_paint_keeps_the_docks_it_was_given(
+    qtbot: QtBot, harness: StationHarness, tmp_path: Path
+) -> None:
+    """The docks wait for the first paint; saving before it must not forget them."""
+    settings = QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    first = _open_window(qtbot, harness, settings=settings)
+    first.telemetry_action.trigger()
+    first.close()
+    unshown = MainWindow(
+        harness.station, QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    )
+    qtbot.addWidget(unshown)
+    assert unshown._telemetry_dock is None
+    unshown.save_settings()
+    third = MainWindow(
+        harness.station, QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
+    )
+    qtbot.addWidget(third)
+    third.show()
+    qtbot.waitUntil(lambda: third._telemetry_dock is not None)
+    assert third.telemetry_dock.isVisible() and third.telemetry_action.isChecked()
+
+
+@pytest.mark.parametrize("profile", available_profiles())
+def test_a_dock_built_while_the_window_is_active_leaves_it_the_keyboard(
+    qtbot: QtBot, profile: str
+) -> None:
+    """Options the machine does not offer were shown as windows of their own for a moment."""
+    harness = StationHarness(load_profile(profile))
+    try:
+        window = _open_window(qtbot, harness)
+        for action in (window.jobs_action, window.telemetry_action, window.developer_action):
+            action.trigger()
+            QApplication.processEvents()
+            assert window.isActiveWindow(), action.text()
+    finally:
+        harness.close()

@@ -137,6 +137,10 @@ def test_generate_on_a_small_photo_then_load_it_as_a_job(
     assert not dialog.isVisible()
     qtbot.waitUntil(lambda: dock.string_art.dialog is None)
     assert f"poradi.txt: {len(program)} operations loaded" in dock.messages.toPlainText()
+    # The dialog's threads are the dock's connections: one fewer than the nails visited.
+    threads = len(job.sequence) - 1
+    assert dialog.status.text().startswith(f"{threads} thread")
+    assert f", {threads} connections," in dock.messages.toPlainText()
 
 
 def test_cancel_keeps_nothing_and_export_writes_the_pair_the_dock_loads(

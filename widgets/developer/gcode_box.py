@@ -48,6 +48,8 @@ class GcodeReplyBox(QGroupBox):
         self.quick_buttons: dict[str, QPushButton] = {}
         for caption, text in QUICK_REPLIES:
             button = QPushButton(caption)
+            # The reply's name; the wire's own words (ok, ALARM:1, Hold) are not in the list.
+            t.set(button.setText, lambda c=caption: self.tr(c))
             t.set(button.setToolTip, lambda r=text: self.tr("Inject {0}").format(repr(r)))
             button.clicked.connect(lambda _=False, t=text: self.inject_text(t))
             quick.addWidget(compact(button))

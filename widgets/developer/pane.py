@@ -13,7 +13,7 @@ frame rate a redraw per frame would stall the GUI the operator is using.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
 from PySide6.QtCore import QCoreApplication, Qt, QTimer
@@ -55,6 +55,9 @@ from app.developer.stage import (
     InjectError,
     inject_echo,
     raw_echo_text,
+    status_text,
+    subscriber_text,
+    type_text,
 )
 from app.machines.stage.echoes import STATUS_TEXT
 from app.station import Station
@@ -131,12 +134,20 @@ class EchoComposer(QGroupBox):
 
         grid = QGridLayout()
         grid.setHorizontalSpacing(6)
-        for column, title in enumerate(("", "TYPE", "STATUS", "DATA")):
-            grid.addWidget(QLabel(f"<small>{title}</small>"), 0, column)
+        # The wire's field names (TYPE, STATUS, DATA), said in the operator's language.
+        headings = (
+            lambda: self.tr("type"),
+            lambda: self.tr("status"),
+            lambda: self.tr("value"),
+        )
+        for column, heading in enumerate(headings, start=1):
+            label = QLabel()
+            t.set(label.setText, lambda h=heading: f"<small>{h()}</small>")
+            grid.addWidget(label, 0, column)
         for row, axis in enumerate(station.model.axes, start=1):
             grid.addWidget(QLabel(f"<b>{axis.name}</b>"), row, 0)
-            grid.addWidget(self._add_combo(self.type_combos, TYPE_TEXT), row, 1)
-            grid.addWidget(self._add_combo(self.status_combos, STATUS_TEXT), row, 2)
+            grid.addWidget(self._add_combo(self.type_combos, TYPE_TEXT, type_text), row, 1)
+            grid.addWidget(self._add_combo(self.status_combos, STATUS_TEXT, status_text), row, 2)
             edit = self._add_data_edit(self.data_edits, "")
             t.set(edit.setPlaceholderText, lambda: self.tr("µm, µm/s or value"))
             grid.addWidget(edit, row, 3)
@@ -147,8 +158,9 @@ class EchoComposer(QGroupBox):
             self.subscriber_combo.setToolTip,
             lambda: self.tr("Subscriber ID: pick one, or type any hex ID 00…FF"),
         )
-        for code, text in SUBSCRIBER_TEXT.items():
-            self.subscriber_combo.addItem(f"{code:02X} {text}", code)
+        for index, code in enumerate(SUBSCRIBER_TEXT):
+            self.subscriber_combo.addItem("", code)
+            t.item(self.subscriber_combo, index, lambda c=code: f"{c:02X} {subscriber_text(c)}")
         self.subscriber_data = self._add_data_edit([], "")
         t.set(self.subscriber_data.setPlaceholderText, lambda: self.tr("subscriber value"))
         grid.addWidget(QLabel("<b>SS</b>"), ss_row, 0)
@@ -173,11 +185,14 @@ class EchoComposer(QGroupBox):
         layout.addLayout(grid)
         layout.addLayout(buttons)
 
-    @staticmethod
-    def _add_combo(into: list[QComboBox], names: dict[int, str]) -> QComboBox:
+    def _add_combo(
+        self, into: list[QComboBox], names: dict[int, str], words: Callable[[int], str]
+    ) -> QComboBox:
         combo = QComboBox()
-        for code, text in names.items():
-            combo.addItem(f"{code:X} {text}", code)  # the hex digit first, as on the wire
+        for index, code in enumerate(names):
+            combo.addItem("", code)
+            # The hex digit first, as on the wire; the words in the operator's language.
+            self.texts.item(combo, index, lambda c=code: f"{c:X} {words(c)}")
         combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
         combo.setMinimumContentsLength(10)
         into.append(combo)
@@ -187,7 +202,10 @@ class EchoComposer(QGroupBox):
         # No validator on purpose: a malformed value gets a message that says why,
         # instead of keys that silently do nothing.
         edit = QLineEdit("0")
-        edit.setToolTip(f"{tip}: a whole number, {MINUS}99999…999999")
+        self.texts.set(
+            edit.setToolTip,
+            lambda: self.tr("A whole number, {0}").format(f"{MINUS}99999…999999"),
+        )
         edit.setMaximumWidth(90)
         edit.returnPressed.connect(self.inject)
         into.append(edit)
@@ -618,7 +636,10 @@ class DeveloperPane(QDockWidget):
             DeveloperBox.GCODE_BOARD: self.board_box,
         }
         for box, widget in boxes.items():
-            widget.setVisible(box in shown)
+            if box not in shown:
+                # Only hidden: shown before the pane holds it, a box flashed up as a window
+                # of its own and took the keyboard from the main window.
+                widget.hide()
         self.log_view = FrameLogView(self.frame_log)
 
         self.setWidget(self._build(self._controls_column()))

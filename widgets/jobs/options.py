@@ -180,7 +180,10 @@ class JobOptionsBox(QWidget):
         for index, widget in enumerate(placed):
             grid.addWidget(widget, index // 2, index % 2)  # hidden ones last: they take no room
         for widget, visible in offered:
-            widget.setVisible(visible)
+            if not visible:
+                # Only hidden: shown while not yet in the dock, each flashed up as a window of
+                # its own and took the keyboard from the main window (no more arrow jogs).
+                widget.hide()
         grid.setColumnStretch(2, 1)  # spare width beside, so a click on a check's caption hits it
         return grid
 
@@ -230,7 +233,7 @@ class JobOptionsBox(QWidget):
             translate_pen=self.translate_pen_check.isChecked(),
             skip_unsupported=self.skip_check.isChecked(),
             gcode=profile.gcode,
-            machine_title=profile.title,
+            machine_title=profile.shown_title,
             one_bit=profile.drill_one_bit,
             excellon_scale=self.station.drill_conversion.excellon_scale,
             axis_scale=tuple(

@@ -75,6 +75,7 @@ from widgets.jobs.string_art_thread import (
 )
 from widgets.retranslate import Texts
 from widgets.theme import LIGHT, PlotColours
+from widgets.units import shown_unit
 
 TRAVEL_COLOUR = "#9a9a9a"
 WORK_COLOUR = "#1f4fb4"
@@ -878,7 +879,7 @@ class JobPreview(QWidget):
             return self._say(
                 self.tr("Click-to-move refused: {0} (soft limits)").format("; ".join(outside))
             )
-        unit = self.station.profile.axes[0].unit
+        unit = shown_unit(self.station.profile.axes[0].unit)
         if not self.confirm(self.tr("Move to {0} {1}?").format(described, unit)):
             return self._say(self.tr("Click-to-move cancelled"))
         session = self.station.session
@@ -893,7 +894,7 @@ class JobPreview(QWidget):
         """The point (x, y) of the work as the shorter turn of A to its bearing, then X out."""
         angle_name, radius_name = self.axis_names
         axes = self.station.profile.axes
-        angle_unit, radius_unit = axes[polar.angle].unit, axes[polar.radius].unit
+        angle_unit, radius_unit = shown_unit(axes[polar.angle].unit), axes[polar.radius].unit
         radius = math.hypot(x, y)
         current = self.model.axes[polar.angle].position
         # At the centre every bearing is the same point: no turn.

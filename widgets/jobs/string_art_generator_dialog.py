@@ -59,6 +59,7 @@ from app.string_art_generator.target import (
     working_copy,
 )
 from widgets.jobs.string_art_worker import PREVIEW_PX, Cancelled, Finished, Generation, Worker
+from widgets.number_field import localized
 
 DEFAULT_BOARD = StringArtParams(0, 200, 14.5)
 IMAGE_FILTER = "Images (*.png *.jpg *.jpeg *.bmp *.gif *.tif *.tiff *.webp);;All files (*)"
@@ -427,12 +428,12 @@ class StringArtGeneratorDialog(QDialog):
                     "(1 px = {2} mm).\nThread {3} mm = 1/{4} of it; chosen on a raster "
                     "of {5} mm pixels."
                 ).format(
-                    f"{across_mm / 10:.1f}",
+                    localized(f"{across_mm / 10:.1f}"),
                     PREVIEW_PX,
-                    f"{across_mm / PREVIEW_PX:.2f}",
-                    f"{width:g}",
+                    localized(f"{across_mm / PREVIEW_PX:.2f}"),
+                    localized(f"{width:g}"),
                     f"{across_mm / width:.0f}",
-                    f"{raster.pixel_mm:.2f}",
+                    localized(f"{raster.pixel_mm:.2f}"),
                 )
                 + self._reach_warning(raster.nail_radius_mm)
             )
@@ -454,7 +455,7 @@ class StringArtGeneratorDialog(QDialog):
         return "\n" + self.tr(
             "This winder's needle reaches {0} mm from the centre: boards up to "
             "{1} cm radius fit it (export the files for a larger one)."
-        ).format(f"{reach:g}", f"{largest_cm:.1f}")
+        ).format(localized(f"{reach:g}"), localized(f"{largest_cm:.1f}"))
 
     # --- generating ----------------------------------------------------------
 
@@ -521,9 +522,9 @@ class StringArtGeneratorDialog(QDialog):
             self.status.setText(
                 self.tr("%n thread(s) ({0}), {1} m of thread; {2}; {3} s", "", result.lines).format(
                     ended,
-                    f"{job_of(result).thread_length_mm() / 1000:.1f}",
-                    outcome.quality,
-                    f"{result.seconds:.1f}",
+                    localized(f"{job_of(result).thread_length_mm() / 1000:.1f}"),
+                    localized(str(outcome.quality)),
+                    localized(f"{result.seconds:.1f}"),
                 )
             )
         elif isinstance(outcome, Cancelled):

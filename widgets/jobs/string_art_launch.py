@@ -53,7 +53,8 @@ class StringArtLaunch(QObject):
             self.open_generator,
         )
         axes = {axis.name for axis in station.profile.axes}
-        self.button.setVisible({"A", "X", "Z"} <= axes)
+        if not {"A", "X", "Z"} <= axes:
+            self.button.hide()  # never shown before it is placed: a window of its own
 
     def open_generator(self) -> StringArtGeneratorDialog:
         """The string-art generator, on the board of the loaded string-art job if there is one."""

@@ -13,6 +13,7 @@ from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QWidget
 from app.station import Station
 from widgets.number_field import FieldGate, NumberField, distance_box
 from widgets.retranslate import Texts, bold
+from widgets.units import shown_unit
 
 
 class AbsolutePanel(QWidget):
@@ -42,7 +43,7 @@ class AbsolutePanel(QWidget):
             t.set(
                 target.set_description,
                 lambda a=axis: self.tr("{0} target, 0…{1} {2} (Esc stops)").format(
-                    a.name, f"{a.travel:g}", a.unit
+                    a.name, f"{a.travel:g}", shown_unit(a.unit)
                 ),
             )
             go = t.button(

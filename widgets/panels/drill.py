@@ -36,6 +36,7 @@ from widgets.panels.drill_step import DrillStepBox
 from widgets.panels.drill_timing import DrillTimingBox
 from widgets.retranslate import Texts, bold
 from widgets.style import compact, monospace_font
+from widgets.units import shown_unit
 
 #: A move expected to run longer than this (seconds) asks first: it cannot be stopped.
 LONG_MOVE_S = 2.0
@@ -385,7 +386,7 @@ class DrillPanel(QWidget):
         if target is None:
             label.setText("—")
             return
-        label.setText(localized(f"{target / per_mm:8.3f} {profile_axis.unit}"))
+        label.setText(localized(f"{target / per_mm:8.3f} {shown_unit(profile_axis.unit)}"))
 
 
 COLUMN_ROWS = 1000

@@ -61,6 +61,7 @@ from protocol.stage.codec import EchoType
 from protocol.stage.driver import format_current, quantised_speed, rms_current_a
 from widgets.number_field import NumberField, localized
 from widgets.retranslate import Texts, bold
+from widgets.units import shown_unit
 
 _Key = tuple[int, int]  # (axis, parameter type)
 
@@ -83,6 +84,11 @@ PARAMETER_LABELS = (
 def parameter_label(parameter: StageParameter) -> str:
     """The parameter's name in the current language."""
     return QCoreApplication.translate("StageParameter", parameter.label)
+
+
+def _bracketed(unit: str) -> str:
+    """`` [mm/ot]``: the unit after a parameter's name, in the operator's language."""
+    return f" [{shown_unit(unit)}]" if unit else ""
 
 
 _WIDEST_STATE = "✓ confirmed"
@@ -114,8 +120,7 @@ class DynamicsPanel(QWidget):
         for axis_index in range(len(self._model.axes)):
             names = []
             for parameter in STAGE_PARAMETERS:
-                unit = f" [{parameter.unit}]" if parameter.unit else ""
-                names.append(t.label(lambda p=parameter, u=unit: parameter_label(p) + u))
+                names.append(t.label(lambda p=parameter: parameter_label(p) + _bracketed(p.unit)))
                 key = (axis_index, int(parameter.type))
                 state = QLabel()
                 state.setMinimumWidth(state.fontMetrics().horizontalAdvance(_WIDEST_STATE))
@@ -476,7 +481,7 @@ class DynamicsPanel(QWidget):
                     snapshot.title or snapshot.profile,
                     snapshot.firmware,
                     snapshot.date,
-                    self._station.profile.title,
+                    self._station.profile.shown_title,
                 )
                 + "\n\n"
                 + text

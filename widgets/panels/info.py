@@ -29,6 +29,7 @@ from widgets.link_text import axis_status_text, link_detail_text, link_state_tex
 from widgets.number_field import localized
 from widgets.retranslate import Texts
 from widgets.style import monospace_font
+from widgets.units import shown_unit
 
 LINK_COLOURS: dict[LinkState, str] = {
     LinkState.CONNECTED: "#2e9e44",
@@ -178,18 +179,20 @@ class InfoPanel(QFrame):
 
     def _show_axis(self, index: int) -> None:
         axis = self._model.axes[index]
-        self.positions[index].setText(localized(f"{axis.work_position:.3f} {axis.unit}"))
+        self.positions[index].setText(
+            localized(f"{axis.work_position:.3f} {shown_unit(axis.unit)}")
+        )
         machine = self.machine_positions[index]
         machine.setVisible(axis.offset != 0.0)
         machine.setEnabled(self._model.link_state is LinkState.CONNECTED)
         machine.setText(
-            self.tr("machine {0}").format(localized(f"{axis.position:.3f} {axis.unit}"))
+            self.tr("machine {0}").format(localized(f"{axis.position:.3f} {shown_unit(axis.unit)}"))
         )
         machine.setToolTip(
             self.tr(
                 "Machine position; the figure on the left is the work position "
                 "(G92 work offset {0})"
-            ).format(localized(f"{axis.offset:.3f} {axis.unit}"))
+            ).format(localized(f"{axis.offset:.3f} {shown_unit(axis.unit)}"))
         )
         status = self.statuses[index]
         status.setText(axis_status_text(axis.status_text))

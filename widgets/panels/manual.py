@@ -26,6 +26,7 @@ from widgets.number_field import localized
 from widgets.retranslate import Texts
 from widgets.stop_caption import pad_stop_caption, stop_caption
 from widgets.style import MINUS
+from widgets.units import shown_unit
 
 #: (row, column) in the cross → (dx, dy, label, key hint); ``{0}``/``{1}`` are the
 #: profile's first two axes (X and Y on a plotter, A and X on the string-art winder).
@@ -104,7 +105,7 @@ class ManualPanel(QWidget):
                 lambda s=step, u=first.unit: (
                     self.tr("continuous (hold)")
                     if s == 0
-                    else self.tr("{0} {1} per tap").format(localized(f"{s:g}"), u)
+                    else self.tr("{0} {1} per tap").format(localized(f"{s:g}"), shown_unit(u))
                 ),
             )
         t.set(

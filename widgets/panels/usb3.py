@@ -82,8 +82,14 @@ class Usb3Panel(QWidget):
             t.item(steps, 0, lambda: self.tr("full", "full step"))
             steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
             threads = QComboBox()
-            for thread in Thread:
-                threads.addItem(f"{thread.name} ({thread.pitch_mm:g} mm)", thread)
+            for number, thread in enumerate(Thread):
+                threads.addItem("", thread)
+                # The pitch in the language's form (0,7 mm), again after a language switch.
+                t.item(
+                    threads,
+                    number,
+                    lambda th=thread: localized(f"{th.name} ({th.pitch_mm:g} mm)"),
+                )
             threads.activated.connect(lambda _i=0, i=index: self._thread_chosen(i))
             send = t.button(lambda a=axis: self.tr("Send {0}").format(a.name))
             send.clicked.connect(lambda _=False, i=index: self.send(i))

@@ -43,7 +43,10 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
         "PageUp / PageDown",
         QT_TRANSLATE_NOOP("MainWindow", "Jog Z while held, on machines with a Z axis"),
     ),
-    ("Shift (held)", QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed")),
+    (
+        str(QT_TRANSLATE_NOOP("MainWindow", "Shift (held)")),
+        QT_TRANSLATE_NOOP("MainWindow", "Jog and move at the other speed"),
+    ),
     ("Esc", QT_TRANSLATE_NOOP("MainWindow", "Stop everything, from anywhere in the window")),
     (
         "Alt+M / A / R / D / L / X / G",
@@ -319,7 +322,7 @@ class WindowMenus(QObject):
                 "G-code plotters, the usb3 unit and the string-art winder.",
             )
             machine = QCoreApplication.translate("MainWindow", "Machine: {0}").format(
-                html.escape(self._station.profile.title)
+                html.escape(self._station.profile.shown_title)
             )
             self._about = QMessageBox(
                 QMessageBox.Icon.Information,
@@ -337,7 +340,7 @@ class WindowMenus(QObject):
         if self._help is None:
             esc = stop_key_text(self._station.profile)
             rows = "".join(
-                f"<tr><td style='padding-right:16px'><b>{keys}</b></td>"
+                f"<tr><td style='padding-right:16px'><b>{_tr(keys)}</b></td>"
                 f"<td>{esc if keys == 'Esc' else _tr(str(what))}</td></tr>"
                 for keys, what in SHORTCUTS
             )

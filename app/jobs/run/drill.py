@@ -42,6 +42,7 @@ from app.jobs.program import Operation, OpKind, Program
 from app.jobs.run.driver import RunnerPort
 from app.jobs.run.sequential import SequentialDriver
 from app.jobs.run.states import ACTIVE, JobState
+from app.jobs.texts import number
 from app.machines.drill.session import DrillSession
 from app.machines.session import MachineSession
 
@@ -88,7 +89,10 @@ class DrillDriver(SequentialDriver):
             return
         if session.busy:
             # Commands of somebody else (the terminal) still run: ours would finish among them.
-            self.runner.fail(index, "the drill is busy with another command")
+            self.runner.fail(
+                index,
+                QCoreApplication.translate("JobRunner", "the drill is busy with another command"),
+            )
             return
         profile = self.station.profile
         sends: list[tuple[str, Callable[[], bool]]] = []
@@ -112,7 +116,9 @@ class DrillDriver(SequentialDriver):
         for _, send in sends:
             if not send():
                 self._pending = []
-                self._refused_send(index, "the drill refused it")
+                self._refused_send(
+                    index, QCoreApplication.translate("JobRunner", "the drill refused it")
+                )
                 return
 
     def _dispatch(self, index: int) -> None:
@@ -138,7 +144,9 @@ class DrillDriver(SequentialDriver):
                 if not send():
                     self._pending = []
                     self._homing_first = False
-                    self._refused_send(index, "the drill refused to home")
+                    self._refused_send(
+                        index, QCoreApplication.translate("JobRunner", "the drill refused to home")
+                    )
                     return
             return
         super()._dispatch(index)
@@ -151,8 +159,11 @@ class DrillDriver(SequentialDriver):
         assert program is not None
         where, pen_down = _state_before(program, index)
         self.runner.note(
-            "The drill cannot report whether it has homed, and the station has not seen it "
-            "home since this link opened: homing first (N)"
+            QCoreApplication.translate(
+                "JobRunner",
+                "The drill cannot report whether it has homed, and the station has not seen it "
+                "home since this link opened: homing first (N)",
+            )
         )
         sends: list[tuple[str, Callable[[], bool]]] = []
         if pen_down:
@@ -186,7 +197,9 @@ class DrillDriver(SequentialDriver):
         self._pending = [letter for letter, _ in sends]
         self._parking = True
         self.runner.note(
-            "Parking at " + " ".join(f"{name}{value:.3f}" for name, value in park.items())
+            QCoreApplication.translate("JobRunner", "Parking at {0}").format(
+                " ".join(f"{name}{number(value, '.3f')}" for name, value in park.items())
+            )
         )
         for letter, send in sends:
             if not send():
@@ -195,7 +208,7 @@ class DrillDriver(SequentialDriver):
                 if not self.link_up():
                     self.runner.link_pause()
                     return False
-                self.runner.note(f"Not parked: the drill refused {letter}")
+                self.runner.note(_not_parked(letter))
                 self._parked = True
                 return True
         return False
@@ -223,8 +236,11 @@ class DrillDriver(SequentialDriver):
         if self._received:
             self._verify = False
             self.runner.note(
-                f"Drill cycle at {op.source} was received by the machine, which finishes it "
-                "on its own: counted as done"
+                QCoreApplication.translate(
+                    "JobRunner",
+                    "Drill cycle at {0} was received by the machine, which finishes it "
+                    "on its own: counted as done",
+                ).format(op.source)
             )
             self._done(index)
             return
@@ -303,14 +319,17 @@ class DrillDriver(SequentialDriver):
             self._pending = []
             self._parking = False
             self._parked = True
-            self.runner.note(f"Not parked: the drill refused {text}")
+            self.runner.note(_not_parked(text))
             if self.runner.state is JobState.RUNNING:
                 self.runner.finish()
             return
         if self.in_flight is None or self.runner.state not in ACTIVE:
             return
         self._pending = []
-        self.runner.fail(self.in_flight, f"the drill refused {text}")
+        self.runner.fail(
+            self.in_flight,
+            QCoreApplication.translate("JobRunner", "the drill refused {0}").format(text),
+        )
 
 
 def _state_before(program: Program, index: int) -> tuple[dict[str, float], bool]:
@@ -332,3 +351,7 @@ def _is_firmware_park(park: Mapping[str, float], limits: Mapping[str, tuple[floa
     x, y = park.get("X"), park.get("Y")
     back = limits.get("Y", (0.0, 0.0))[1]
     return x is not None and y is not None and abs(x) < 1e-9 and abs(y - back) < 1e-9
+
+
+def _not_parked(what: str) -> str:
+    return QCoreApplication.translate("JobRunner", "Not parked: the drill refused {0}").format(what)

@@ -22,12 +22,21 @@ import math
 from dataclasses import dataclass
 from typing import ClassVar, Protocol
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.program import LimitViolation, Operation, OpKind, Program, SourceRef
 from app.jobs.run.states import JobState
 from app.machine import LinkState
 from app.machines.session import MachineSession
 from app.profiles import MachineProfile
 from app.station import Station
+
+
+def unsupported_on(op: Operation, profile: MachineProfile) -> str:
+    """Why ``op`` failed on this machine, for the job's messages."""
+    return QCoreApplication.translate("JobRunner", "{0} is not supported on {1}").format(
+        op.describe(), profile.shown_title
+    )
 
 
 def capability_refusals(
@@ -37,17 +46,23 @@ def capability_refusals(
     capabilities = profile.capabilities
     problems: dict[OpKind, str] = {}
     if not capabilities.drill:
-        problems[OpKind.DRILL] = f"{profile.title} cannot drill"
+        problems[OpKind.DRILL] = QCoreApplication.translate("JobRunner", "{0} cannot drill").format(
+            profile.shown_title
+        )
     elif takes_gcode:
         # The winder drills with its own program's Z moves: G-code has no drill cycle, so a
         # drill file would load and fail at its first hole.  Refused here, line by line.
-        problems[OpKind.DRILL] = (
-            f"{profile.title} drills only with explicit moves: G-code has no drill cycle"
-        )
+        problems[OpKind.DRILL] = QCoreApplication.translate(
+            "JobRunner", "{0} drills only with explicit moves: G-code has no drill cycle"
+        ).format(profile.shown_title)
     if not capabilities.pen:
-        problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = f"{profile.title} has no pen"
+        problems[OpKind.PEN_DOWN] = problems[OpKind.PEN_UP] = QCoreApplication.translate(
+            "JobRunner", "{0} has no pen"
+        ).format(profile.shown_title)
     if not takes_gcode:
-        problems[OpKind.GCODE] = f"{profile.title} does not take G-code"
+        problems[OpKind.GCODE] = QCoreApplication.translate(
+            "JobRunner", "{0} does not take G-code"
+        ).format(profile.shown_title)
     refused: list[LimitViolation] = []
     for kind in sorted(program.kinds() & problems.keys(), key=lambda k: k.value):
         for index in program.indices_of(kind):

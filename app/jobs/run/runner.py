@@ -36,6 +36,7 @@ from app.jobs.run.driver import LINK_DOWN, JobDriver, ResumeChoice, UnsupportedO
 from app.jobs.run.drivers import driver_for
 from app.jobs.run.progress import JobProgress, estimate_inputs
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
+from app.jobs.texts import number
 from app.machines.session import MachineSession
 from app.machines.supervision import MotionFault
 from app.station import Station
@@ -193,6 +194,8 @@ class JobRunner(QObject):
     @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
+        if self._state is JobState.DONE:
+            return 0.0  # done is done, also when the driver ended past the last report (park)
         return self._progress.remaining_s
 
     # --- loading -------------------------------------------------------------
@@ -574,7 +577,7 @@ class JobRunner(QObject):
         self.emit_eta()
         self.message.emit(
             QCoreApplication.translate("JobRunner", "Job {0} done: {1} operations in {2} s").format(
-                repr(self._program.name), len(self._program), f"{self.elapsed_s:.1f}"
+                repr(self._program.name), len(self._program), number(self.elapsed_s, ".1f")
             )
         )
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 
 from app.jobs.program import Operation, OpKind
-from app.jobs.run.driver import JobDriver, RunnerPort
+from app.jobs.run.driver import JobDriver, RunnerPort, unsupported_on
 from app.jobs.run.states import CLOCK_RUNS, JobState
 
 
@@ -120,7 +120,7 @@ class SequentialDriver(JobDriver, ABC):
 
     def _unsupported(self, index: int, op: Operation) -> None:
         """Refused at load already; a program changed underneath would still not run."""
-        self.runner.fail(index, f"{op.describe()} is not supported on {self.station.profile.title}")
+        self.runner.fail(index, unsupported_on(op, self.station.profile))
 
     def _refused_send(self, index: int, what: str) -> None:
         """A session method returned False: the link went, or the machine is locked."""

@@ -14,11 +14,12 @@ absolute move, harmless either way).
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QCoreApplication, Qt
 
 from app.jobs.program import Operation, OpKind
-from app.jobs.run.driver import RunnerPort
+from app.jobs.run.driver import RunnerPort, unsupported_on
 from app.jobs.run.sequential import SequentialDriver
+from app.jobs.texts import number
 from app.machines.session import MachineSession
 from protocol.stage.codec import AxisStatus, EchoFrame, EchoType, Rejected
 
@@ -48,9 +49,7 @@ class StageDriver(SequentialDriver):
 
     def _send(self, index: int, op: Operation) -> None:
         if op.kind is not OpKind.MOVE:
-            self.runner.fail(
-                index, f"{op.describe()} is not supported on {self.station.profile.title}"
-            )
+            self.runner.fail(index, unsupported_on(op, self.station.profile))
             return
         session = self.station.session
         assert session is not None
@@ -60,7 +59,9 @@ class StageDriver(SequentialDriver):
         self._gate = len(self._targets) + 2
         for axis, target in self._targets.items():
             if not session.move_absolute(axis, target):
-                self._refused_send(index, "the move was refused")
+                self._refused_send(
+                    index, QCoreApplication.translate("JobRunner", "the move was refused")
+                )
                 return
         self._judge()
 
@@ -73,7 +74,11 @@ class StageDriver(SequentialDriver):
             return
         self._expect(op)
         self._gate = RESUME_ECHOES
-        self.runner.note(f"Checking whether {op.source} ({op.describe()}) was completed…")
+        self.runner.note(
+            QCoreApplication.translate(
+                "JobRunner", "Checking whether {0} ({1}) was completed…"
+            ).format(op.source, op.describe())
+        )
 
     def _expect(self, op: Operation) -> None:
         self._targets = {self.station.profile.axis_index(a): v for a, v in op.target.items()}
@@ -115,7 +120,11 @@ class StageDriver(SequentialDriver):
         if self.verifying:
             self._verify = False
             if arrived:
-                self.runner.note(f"Operation at {source} was already complete")
+                self.runner.note(
+                    QCoreApplication.translate(
+                        "JobRunner", "Operation at {0} was already complete"
+                    ).format(source)
+                )
                 self._done(index)
             else:
                 self._dispatch(index)
@@ -125,7 +134,12 @@ class StageDriver(SequentialDriver):
             return
         for axis, target in axes:
             if axis.status_code == AxisStatus.END_SWITCH:
-                self.runner.fail(index, f"{axis.name} hit an end switch at {axis.position:g} mm")
+                self.runner.fail(
+                    index,
+                    QCoreApplication.translate(
+                        "JobRunner", "{0} hit an end switch at {1} mm"
+                    ).format(axis.name, number(axis.position)),
+                )
                 return
             if axis.status_code == AxisStatus.STOPPED:
                 # Somebody stopped the machine (Esc): the job waits, resume sends the move again.

@@ -28,6 +28,8 @@ is not sent into a machine that ran into its stop, and the operator decides
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from app.jobs.program import Operation, OpKind
 from app.jobs.run.driver import RunnerPort
 from app.jobs.run.sequential import SequentialDriver
@@ -120,7 +122,9 @@ class Usb3Driver(SequentialDriver):
         for axis, delta in moves.items():
             if not session.move_relative(axis, delta, start=start[axis]):
                 self._forget_move()
-                self._refused_send(index, "the move was refused")
+                self._refused_send(
+                    index, QCoreApplication.translate("JobRunner", "the move was refused")
+                )
                 return
 
     def _start_verify(self, index: int) -> None:
@@ -138,7 +142,11 @@ class Usb3Driver(SequentialDriver):
         self._heard = {}
         self._since = self.station.clock.now()
         self._short_asked_at = None
-        self.runner.note(f"Asking the unit where it stands ({op.source}, {op.describe()})…")
+        self.runner.note(
+            QCoreApplication.translate(
+                "JobRunner", "Asking the unit where it stands ({0}, {1})…"
+            ).format(op.source, op.describe())
+        )
         session.request_positions(list(self._expected))
 
     def _clear(self) -> None:
@@ -255,7 +263,11 @@ class Usb3Driver(SequentialDriver):
             self._verify = False
             self._forget_move()
             if arrived:
-                self.runner.note(f"Operation at {self._source(index)} was already complete")
+                self.runner.note(
+                    QCoreApplication.translate(
+                        "JobRunner", "Operation at {0} was already complete"
+                    ).format(self._source(index))
+                )
                 self._done(index)
             else:
                 self._dispatch(index)  # toward the same absolute target, from where it stands

@@ -169,8 +169,27 @@ class DrillSession(MachineSession):
         link.connected.connect(self._on_connected)
         link.disconnected.connect(self._on_disconnected)
         link.dataReceived.connect(self._on_data)
-        self.frameSent.connect(lambda _c, raw: self.terminalLine.emit("> " + wire_text(raw)))
-        self.frameReceived.connect(lambda _r, raw: self.terminalLine.emit("< " + wire_text(raw)))
+        self.frameSent.connect(self._tell_sent)
+        self.frameReceived.connect(self._tell_received)
+
+    def _tell_sent(self, command: object, raw: bytes) -> None:
+        line = "> " + wire_text(raw)
+        if command == PROBE_LETTER or getattr(command, "letter", None) == PROBE_LETTER:
+            line += QCoreApplication.translate("DrillPanel", "   (link check: is the drill there?)")
+        self.terminalLine.emit(line)
+
+    def _tell_received(self, reply: object, raw: bytes) -> None:
+        line = "< " + wire_text(raw)
+        if (
+            isinstance(reply, Reply)
+            and reply.kind is ReplyKind.ERROR
+            and reply.letter == PROBE_LETTER
+        ):
+            # The drill answers the unknown letter I with EI: its "I am here", not a failure.
+            line += QCoreApplication.translate(
+                "DrillPanel", "  (link check answered: the drill is there)"
+            )
+        self.terminalLine.emit(line)
 
     # --- state the widgets read ------------------------------------------------
 

@@ -6,6 +6,8 @@ echo into the model exactly as a received one, with or without a link.
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from app.machine import MachineModel, ParameterState
 from app.machines.stage.parameters import BY_TYPE
 from protocol.clock import Clock
@@ -96,7 +98,11 @@ class StageEchoes:
 
     def _apply_packet(self, axis: int, type_: int, status: int, data: int, now: float) -> None:
         if status == AxisStatus.UNKNOWN_COMMAND:
-            self.model.message.emit(f"Axis {self.model.axes[axis].name}: device refused a command")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "Axis {0}: device refused a command").format(
+                    self.model.axes[axis].name
+                )
+            )
         if type_ in BY_TYPE:
             # A parameter answer replaces this echo's position; its status is left for the
             # next position packet so the panel never shows a new state beside an old position.

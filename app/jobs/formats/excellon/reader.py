@@ -53,6 +53,7 @@ from app.jobs.formats.excellon.bits import plan_bits
 from app.jobs.names import quoted, shown
 from app.jobs.program import JobFileError, Operation, OpKind, Program, SourceRef
 from app.jobs.reading import read_job_text
+from app.jobs.texts import localized_format
 
 DEFAULT_EXCELLON_STEP_INCH = 1e-4
 #: The highest tool number a drill file may use (Excellon writes two or three digits).
@@ -781,7 +782,7 @@ def bit_prompt(plan: ToolPlan, mode: DrillMode = "drill") -> str:
             if count == 1
             else QCoreApplication.translate("JobFile", "pen for {0}, {1:.2f} mm, {2} holes{3}")
         )
-    return text.format(plan.tool.name, plan.tool.diameter_mm, count, also)
+    return localized_format(text, plan.tool.name, plan.tool.diameter_mm, count, also)
 
 
 def _drawn_along(holes: Sequence[Hole], ax: str, ay: str) -> list[Operation]:
@@ -860,10 +861,16 @@ def build_drill_program(
         if mode == "draw":
             ops += _drawn_along(tool_plan.holes, ax, ay)
     saved = plan.file_travel_mm - plan.travel_mm
-    note = QCoreApplication.translate(
-        "JobFile",
-        "travel between holes: {0:.1f} mm in file order, {1:.1f} mm optimised ({2:.1f} mm saved)",
-    ).format(plan.file_travel_mm, plan.travel_mm, saved)
+    note = localized_format(
+        QCoreApplication.translate(
+            "JobFile",
+            "travel between holes: {0:.1f} mm in file order, {1:.1f} mm optimised "
+            "({2:.1f} mm saved)",
+        ),
+        plan.file_travel_mm,
+        plan.travel_mm,
+        saved,
+    )
     # gerbonara's warnings and our remarks, "line: text", as file:line: text for the operator.
     name = shown(job.path.name)
     warning = QCoreApplication.translate("JobFile", ": warning: ")

@@ -822,6 +822,10 @@ class Parser:
                 if len(numbers) > 10
                 else ""
             )
+            if len(numbers) == 1:
+                note = QCoreApplication.translate("JobFile", "skipped 1 line: {0} (line {1})")
+                notes.append(note.format(reason, shown))
+                continue
             notes.append(
                 QCoreApplication.translate(
                     "JobFile", "skipped {0} line(s): {1} (lines {2}{3})"

@@ -466,7 +466,9 @@ def build_program(
         Operation(
             OpKind.COMMENT,
             at_first,
-            message=QCoreApplication.translate("JobFile", "winding: {0} connections").format(total),
+            message=QCoreApplication.translate("JobFile", "winding: {0} connections").format(
+                job.connections
+            ),
         ),
         -1,
         -1,

@@ -176,12 +176,17 @@ class StringArtJob:
             return SourceRef("parameters entered", 0)
         return SourceRef(self.param_path.name, self.param_lines[key])
 
+    @property
+    def connections(self) -> int:
+        """Threads from nail to nail: one fewer than the nails visited (the generator's count)."""
+        return max(0, len(self.sequence) - 1)
+
     def summary(self, estimate_s: float | None = None) -> str:
         """Totals for the operator: nails, connections, thread length, estimated time."""
         p = self.params
         text = translate(
             "JobFile", "{0} nails on a {1} of {2:g} cm radius, {3} connections, thread {4:.1f} m"
-        ).format(p.nails, p.shape, p.radius_cm, len(self.sequence), self.thread_length_mm() / 1000)
+        ).format(p.nails, p.shape, p.radius_cm, self.connections, self.thread_length_mm() / 1000)
         if estimate_s is not None and math.isfinite(estimate_s):
             text += translate("JobFile", ", about {0}").format(_clock(estimate_s))
         return text
