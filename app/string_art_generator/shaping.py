@@ -13,7 +13,7 @@ Two changes to the target, both because of how string art is seen:
   (``stop_when_no_gain`` off), more thread than the photo's tone needs has
   to go somewhere; left to the squared error it piles up wherever it spoils
   least, and builds nothing.  Instead the target is darkened so that the
-  budget's thread (most of it: ``FILL_POWER``) covers it: threads stack as filters, so a darkness
+  budget's thread just covers it: threads stack as filters, so a darkness
   ``t`` wants a thread density ``-ln(1 - t)``, and scaling every density by
   the ratio ``k`` of the budget's thread to the density wanted turns ``t``
   into ``1 - (1 - t)^k`` -- the same picture, uniformly deeper, the extra
@@ -34,10 +34,6 @@ from app.string_art_generator.quality import gaussian_blur
 
 #: The blur the edges are found against, in mm on the board (a few thread widths).
 SHARPEN_SIGMA_MM = 1.0
-#: How much of the budget's surplus deepens the picture (as a power of the ratio ``k``):
-#: all of it gains structure but costs more tone than it gains (measured on photos, see
-#: docs/manual/benchmarks.md); 0 would keep the photo's tone.
-FILL_POWER = 0.85
 #: Darkness counted as full when working out the thread density wanted (ln(1 - 1) is -inf).
 DARKEST = 0.98
 
@@ -77,4 +73,4 @@ def aim(
     pixel_mm = table.key.raster.pixel_mm
     work = np.asarray(sharpened(np.where(mask, target, 0.0), mask, sharpen, pixel_mm), np.float32)
     ratio = budget_ratio(work, mask, table, fill_budget) if fill_budget else 1.0
-    return work, 1.0 / max(ratio, 1.0) ** FILL_POWER
+    return work, 1.0 / max(ratio, 1.0)
