@@ -150,13 +150,6 @@ class Greedy:
             for block in table.nails
         ]
 
-    def seen(self) -> np.ndarray:
-        """A copy of the darkness so far as the whole threads make it (about: for previews)."""
-        if self.opacity >= 1.0:
-            return self.darkness.copy()
-        result: np.ndarray = 1.0 - np.power(1.0 - self.darkness, 1.0 / self.opacity)
-        return result
-
     def scores(self, block: NailLines, nail: int) -> np.ndarray:
         """Per line of ``block``: how much it lowers the squared error (weighted)."""
         if not len(block.others):
@@ -225,7 +218,9 @@ def generate(params: StringArtParams, target: np.ndarray, settings: Settings) ->
             "threads",
             len(greedy.sequence) - 1,
             settings.lines,
-            darkness=greedy.seen().reshape(size, size),
+            # While a budget is toned in this is the share counted (lighter than the thread
+            # will be): the finished picture below is the real one.
+            darkness=greedy.darkness.reshape(size, size).copy(),
         )
     if greedy.opacity < 1.0:
         # The picture as the real thread makes it, not the share the greedy counted.
