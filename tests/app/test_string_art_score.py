@@ -8,7 +8,10 @@ generator beats the plain greedy by it (RMSE and SSIM both).
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -74,3 +77,23 @@ def test_the_generator_beats_the_plain_greedy_by_the_independent_score() -> None
         skip = chosen.skip_for(NAILS)
         plain = score(plain_greedy(params, target, lines, chosen.thread_mm, skip), NAILS, photo)
         assert ours.rmse < plain.rmse and ours.ssim > plain.ssim, (lines, ours, plain)
+
+
+def test_the_kaspar98_peer_pulls_only_lines_that_help_and_stops_when_none_does() -> None:
+    pytest.importorskip("skimage")
+    from tools.string_art_kaspar98 import SIDE, STRENGTH, canvas_target, kaspar98, nail_pixels
+
+    photo = np.full((64, 64), 0.8, dtype=np.float32)  # its target: 0.72 everywhere
+    order = kaspar98(photo, 40, 100_000)
+    assert order[0] == 0 and 1 < len(order) < 100_000  # stopped on its own, well short
+    from skimage.draw import line_aa
+
+    points = nail_pixels(40)
+    target = canvas_target(photo)
+    canvas = np.ones((SIDE, SIDE))
+    for a, b in itertools.pairwise(order):
+        rr, cc, val = line_aa(*points[min(a, b)], *points[max(a, b)])
+        after = np.clip(canvas[rr, cc] - STRENGTH * val, 0.0, 1.0)
+        gain = np.sum((canvas[rr, cc] - target[rr, cc]) ** 2 - (after - target[rr, cc]) ** 2)
+        assert gain > 0.0
+        canvas[rr, cc] = after
