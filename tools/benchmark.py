@@ -26,6 +26,7 @@ from tools.bench_drill_order import bench_drill_order_50k, bench_drill_order_qua
 from tools.bench_eta import bench_gcode_eta  # noqa: E402
 from tools.bench_streaming import bench_gcode_job_streaming, bench_gcode_streaming  # noqa: E402
 from tools.bench_string_art_generator import bench_string_art_generator  # noqa: E402
+from tools.bench_string_art_peers import bench_string_art_peers  # noqa: E402
 from tools.bench_work_offsets import bench_resume_file_offset  # noqa: E402
 
 if TYPE_CHECKING:
@@ -1137,6 +1138,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_gcode_streaming,
     bench_gcode_job_streaming,
     bench_string_art_generator,
+    bench_string_art_peers,
     bench_gcode_eta,
     bench_resume_file_offset,
 ]

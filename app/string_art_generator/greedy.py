@@ -30,6 +30,8 @@ import numpy as np
 from app.jobs.formats.string_art.reader import StringArtParams
 from app.string_art_generator.board import BoardRaster
 from app.string_art_generator.lines import LineKey, LineTable, NailLines, build_table
+from app.string_art_generator.render import render_darkness
+from app.string_art_generator.shaping import aim
 
 #: Lines chosen between two yields (about a millisecond each on a few hundred nails).
 CHUNK_LINES = 8
@@ -50,11 +52,15 @@ class Settings:
     lines: int = 4000  # the line budget: at most this many threads
     thread_mm: float = 0.15  # the real thread's width
     min_skip: int | None = None  # None: default_skip(nails)
-    resolution: int = 200  # raster pixels across the nail circle
+    #: Raster pixels across the nail circle: 0.5 mm on a 26 cm circle, a few thread widths.
+    resolution: int = 520
     length_weight: float = 0.0
     start_nail: int = 0
-    #: Stop before the budget when no line lowers the error; False draws the whole budget.
+    #: Stop before the budget when no line lowers the error; False draws the whole budget
+    #: (and tones the target to it: see shaping.py).
     stop_when_no_gain: bool = True
+    #: How much the target's edges are deepened (shaping.py); 0 aims at the photo as it is.
+    sharpen: float = 3.0
 
     def skip_for(self, nails: int) -> int:
         return default_skip(nails) if self.min_skip is None else self.min_skip
@@ -126,8 +132,12 @@ class Progress:
 class Greedy:
     """The weighted greedy's state: the darkness so far and the nail the thread is at."""
 
-    def __init__(self, table: LineTable, target: np.ndarray, settings: Settings) -> None:
+    def __init__(
+        self, table: LineTable, target: np.ndarray, settings: Settings, opacity: float = 1.0
+    ) -> None:
         size = table.key.raster.size
+        #: The share of a thread's opacity counted (below 1 when the budget is toned in).
+        self.opacity = np.float32(opacity)
         self.table = table
         self.target = np.ascontiguousarray(target, dtype=np.float32).reshape(size * size)
         self.darkness = np.zeros(size * size, dtype=np.float32)
@@ -146,7 +156,7 @@ class Greedy:
             return np.empty(0)
         pixels = block.pixels
         now = self.darkness[pixels]
-        delta = (1.0 - now) * block.alpha
+        delta = (1.0 - now) * (block.alpha * self.opacity)
         gain = delta * (2.0 * (self.target[pixels] - now) - delta)
         score = np.add.reduceat(gain, block.starts).astype(np.float64)
         divisor = self._divisors[nail]
@@ -166,7 +176,7 @@ class Greedy:
             return False
         pixels, alpha = block.line(best)
         now = self.darkness[pixels]
-        self.darkness[pixels] = now + (1.0 - now) * alpha
+        self.darkness[pixels] = now + (1.0 - now) * (alpha * self.opacity)
         self.sequence.append(int(block.others[best]))
         return True
 
@@ -195,7 +205,9 @@ def generate(params: StringArtParams, target: np.ndarray, settings: Settings) ->
             yield Progress("lines", item, params.nails)
     assert table is not None
     mask = raster.mask
-    greedy = Greedy(table, np.where(mask, target, 0.0), settings)
+    fill = 0 if settings.stop_when_no_gain else settings.lines
+    work, opacity = aim(target, mask, table, sharpen=settings.sharpen, fill_budget=fill)
+    greedy = Greedy(table, work, settings, opacity=opacity)
     stopped = False
     while greedy.sequence and len(greedy.sequence) - 1 < settings.lines and not stopped:
         for _ in range(min(CHUNK_LINES, settings.lines - (len(greedy.sequence) - 1))):
@@ -206,9 +218,15 @@ def generate(params: StringArtParams, target: np.ndarray, settings: Settings) ->
             "threads",
             len(greedy.sequence) - 1,
             settings.lines,
+            # While a budget is toned in this is the share counted (lighter than the thread
+            # will be): the finished picture below is the real one.
             darkness=greedy.darkness.reshape(size, size).copy(),
         )
-    darkness = greedy.darkness.reshape(size, size).copy()
+    if greedy.opacity < 1.0:
+        # The picture as the real thread makes it, not the share the greedy counted.
+        darkness = render_darkness(params, greedy.sequence, size, settings.thread_mm)
+    else:
+        darkness = greedy.darkness.reshape(size, size).copy()
     result = Result(
         params=params,
         settings=settings,

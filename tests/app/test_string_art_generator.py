@@ -34,6 +34,7 @@ from app.string_art_generator.lines import (
 )
 from app.string_art_generator.quality import measure
 from app.string_art_generator.render import render_darkness
+from app.string_art_generator.shaping import aim
 from app.string_art_generator.target import (
     Adjust,
     ImageError,
@@ -116,12 +117,15 @@ def test_stopping_early_means_no_line_lowers_the_error_any_more() -> None:
     target = target_of(face(200))
     result = run(SMALL, target, Settings(lines=5000, resolution=RES))
     table = line_table(LineKey(BoardRaster(SMALL, RES), 0.15, default_skip(60)))
+    # The error against what the greedy aims at: the photo with its edges deepened.
+    aimed, opacity = aim(target, result.mask, table, sharpen=Settings().sharpen, fill_budget=0)
+    assert opacity == 1.0
     block = table.nails[result.sequence[-1]]
     light = 1.0 - result.darkness.ravel()
     for k in range(len(block.others)):
         pixels, alpha = block.line(k)
         now = result.darkness.ravel()[pixels]
-        want = np.where(result.mask, target, 0.0).ravel()[pixels]
+        want = aimed.ravel()[pixels]
         after = now + light[pixels] * alpha
         assert np.sum((want - after) ** 2) >= np.sum((want - now) ** 2) - 1e-4
 
