@@ -12,6 +12,7 @@ when the folder cannot be written, 130 when interrupted (Ctrl+C).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import sys
 import time
 from collections.abc import Sequence
@@ -102,6 +103,8 @@ def main(argv: Sequence[str] | None = None, out: TextIO | None = None) -> int:
         resolution=args.resolution,
         stop_when_no_gain=not args.full_budget,
     )
+    if args.resolution == Settings.resolution:  # not chosen: coarser for many nails
+        settings = dataclasses.replace(settings, resolution=settings.fitted_resolution(params))
     reason = settings.check(params)
     if reason is None and not 16 <= args.png_size <= 8000:
         reason = f"--png-size {args.png_size}: must be 16 … 8000"

@@ -75,6 +75,17 @@ class Settings:
         per_nail = max(0, params.nails - 1 - 2 * (self.skip_for(params.nails) - 1))
         return round(params.nails * per_nail * 1.2 * self.resolution)
 
+    def fitted_resolution(self, params: StringArtParams) -> int:
+        """The finest raster up to this one whose line table stays within MAX_TABLE_ENTRIES.
+
+        Boards with many nails get a coarser raster rather than a refusal (the
+        default of 520 px holds about 370 nails; 200 px about 580).
+        """
+        per_pixel = self.table_entries(params) / self.resolution
+        if per_pixel <= 0:
+            return self.resolution
+        return max(16, min(self.resolution, int(MAX_TABLE_ENTRIES / per_pixel)))
+
     def check(self, params: StringArtParams) -> str | None:
         """Why these settings cannot make a sequence for ``params``, or None."""
         skip = self.skip_for(params.nails)

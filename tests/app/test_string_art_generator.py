@@ -10,6 +10,7 @@ on small boards so that each generation takes a fraction of a second.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 from pathlib import Path
@@ -325,3 +326,17 @@ def test_what_is_not_a_photo_is_refused_with_its_name(tmp_path: Path) -> None:
         load_image(bad)
     with pytest.raises(ImageError, match=r"missing\.jpg"):
         load_image(tmp_path / "missing.jpg")
+
+
+@pytest.mark.parametrize("nails", [200, 370, 500, 580, 1200])
+def test_the_fitted_raster_is_the_finest_that_can_be_built(nails: int) -> None:
+    from app.string_art_generator.greedy import Settings as GeneratorSettings
+
+    params = StringArtParams(0, nails, 13.0)
+    chosen = GeneratorSettings()
+    fitted = dataclasses.replace(chosen, resolution=chosen.fitted_resolution(params))
+    assert fitted.check(params) is None
+    assert fitted.resolution <= chosen.resolution
+    if fitted.resolution < chosen.resolution:  # one pixel finer would not fit
+        finer = dataclasses.replace(fitted, resolution=fitted.resolution + 1)
+        assert finer.check(params) is not None

@@ -223,6 +223,17 @@ def test_a_board_too_big_for_memory_cannot_be_generated_and_says_why(
     assert dialog.generate_button.isEnabled()
 
 
+def test_many_nails_take_a_coarser_raster_instead_of_a_refusal(
+    qtbot: QtBot, dock: JobsDock, photo: Path
+) -> None:
+    dialog = opened(qtbot, dock)
+    assert dialog.resolution.value() == 520
+    type_value(qtbot, dialog.nails, "500")
+    assert 200 <= dialog.resolution.value() < 520
+    assert "Cannot generate" not in dialog.scale_label.text()
+    assert dialog.generate_button.isEnabled()
+
+
 def test_a_board_the_winder_cannot_reach_is_named_but_can_still_be_exported(
     qtbot: QtBot, dock: JobsDock, photo: Path
 ) -> None:

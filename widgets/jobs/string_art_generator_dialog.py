@@ -412,6 +412,13 @@ class StringArtGeneratorDialog(QDialog):
     def _nails_changed(self, nails: int) -> None:
         self.skip.setMaximum(max(1, nails // 2 - 1))
         self.skip.setValue(default_skip(nails))
+        params = self.params()
+        fitted = self.settings().fitted_resolution(params)
+        if fitted < self.resolution.value():
+            # Many nails: a coarser raster rather than a refusal (a raster the operator
+            # types afterwards is taken as typed, and refused if it cannot be built).
+            self.resolution.setValue(fitted)  # its change comes back to _board_changed
+            return
         self._board_changed()
 
     def _board_changed(self, *_args: object) -> None:
