@@ -31,7 +31,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/session.py::MachineSession": "not yet taken on",
     "app/machines/stage/session.py::StageSession": "not yet taken on",
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
-    "app/scripting/machine.py::Machine": "not yet taken on (the scripting API's one object)",
     "app/telemetry.py::TelemetryRecorder": "not yet taken on",
     "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog": "not yet taken on",
     "protocol/emulator/drill_firmware.py::DrillFirmware": "not yet taken on",

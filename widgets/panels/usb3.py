@@ -76,21 +76,8 @@ class Usb3Panel(QWidget):
                 reachable.setToolTip,
                 lambda: self.tr("The unit moves in whole steps: this is what it will really move"),
             )
-            steps = QComboBox()
-            for size in StepSize:
-                steps.addItem(size.label, size)
-            t.item(steps, 0, lambda: self.tr("full", "full step"))
-            steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
-            threads = QComboBox()
-            for number, thread in enumerate(Thread):
-                threads.addItem("", thread)
-                # The pitch in the language's form (0,7 mm), again after a language switch.
-                t.item(
-                    threads,
-                    number,
-                    lambda th=thread: localized(f"{th.name} ({th.pitch_mm:g} mm)"),
-                )
-            threads.activated.connect(lambda _i=0, i=index: self._thread_chosen(i))
+            steps = self._step_combo(index)
+            threads = self._thread_combo(index)
             send = t.button(lambda a=axis: self.tr("Send {0}").format(a.name))
             send.clicked.connect(lambda _=False, i=index: self.send(i))
             for column, widget in enumerate(
@@ -131,6 +118,27 @@ class Usb3Panel(QWidget):
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
         t.also(self._show_settings)
+
+    def _step_combo(self, index: int) -> QComboBox:
+        steps = QComboBox()
+        for size in StepSize:
+            steps.addItem(size.label, size)
+        self.texts.item(steps, 0, lambda: self.tr("full", "full step"))
+        steps.activated.connect(lambda _i=0, i=index: self._step_chosen(i))
+        return steps
+
+    def _thread_combo(self, index: int) -> QComboBox:
+        threads = QComboBox()
+        for number, thread in enumerate(Thread):
+            threads.addItem("", thread)
+            # The pitch in the language's form (0,7 mm), again after a language switch.
+            self.texts.item(
+                threads,
+                number,
+                lambda th=thread: localized(f"{th.name} ({th.pitch_mm:g} mm)"),
+            )
+        threads.activated.connect(lambda _i=0, i=index: self._thread_chosen(i))
+        return threads
 
     @property
     def session(self) -> Usb3Session | None:

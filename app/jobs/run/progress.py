@@ -51,6 +51,9 @@ class JobProgress(QObject):
         self.done = 0  # operations [0, done) are complete
         self.executed = 0  # operations [0, executed) are reported run by the machine
         self.estimate: Estimate | None = None
+        #: The job is done: nothing is left, also when the driver ended past the last
+        #: report the estimate counted (the drill's park).
+        self.finished = False
         self._elapsed_before = 0.0
         self._running_since: float | None = None
         self._eta_timer = QTimer(self)
@@ -154,7 +157,7 @@ class JobProgress(QObject):
     @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        if self.estimate is None:
+        if self.estimate is None or self.finished:
             return 0.0
         return self.estimate.remaining_after(self.done)
 

@@ -194,8 +194,6 @@ class JobRunner(QObject):
     @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        if self._state is JobState.DONE:
-            return 0.0  # done is done, also when the driver ended past the last report (park)
         return self._progress.remaining_s
 
     # --- loading -------------------------------------------------------------
@@ -736,6 +734,7 @@ class JobRunner(QObject):
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
         self._progress.clock(was_running, runs)
+        self._progress.finished = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.
