@@ -3,9 +3,12 @@
 A streaming job answers a line every millisecond or so; the views hear of
 its progress at most every :data:`PROGRESS_INTERVAL_MS` on a real-time
 station (and with every state change), so a thousand answered lines a second
-cost the GUI thirty redraws, not a thousand.  The clock counts only the time
-the job runs (paused and waiting stretches are not the job's), and the ETA
-is the dry-run estimate's time still to go after the operations done.
+cost the GUI thirty redraws, not a thousand.  The elapsed time is the wall
+clock's from the run's start to its end, prompts and pauses included (what the
+operator lived through: a drill job of 24 s said "00:14" when it left out its
+bit changes); how much of it the machine stood waiting for the operator is
+told apart.  The ETA is the dry-run estimate's machine time still to go after
+the operations done.
 
 The runner owns the signals and the states; this keeps the figures and says
 when to tell them (:class:`JobProgress`).  A streaming driver paces its
@@ -23,6 +26,8 @@ from app.jobs.program import Program
 from app.station import Station
 
 ETA_INTERVAL_MS = 1000
+#: Waiting shorter than this is not worth a word (a prompt answered at once).
+WAITING_SHOWN_S = 0.5
 #: A streaming job answers a line every millisecond or so: the views hear of progress at
 #: most this often (a real-time station), never once per line.
 PROGRESS_INTERVAL_MS = 33
@@ -53,6 +58,9 @@ class JobProgress(QObject):
         self.estimate: Estimate | None = None
         self._elapsed_before = 0.0
         self._running_since: float | None = None
+        #: Station-clock times the run began and ended (None: not begun / not ended).
+        self._started_at: float | None = None
+        self._ended_at: float | None = None
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
@@ -78,6 +86,8 @@ class JobProgress(QObject):
         self.set_executed(index)
         self._elapsed_before = 0.0
         self._running_since = None
+        self._started_at = None
+        self._ended_at = None
 
     def tell_all(self) -> None:
         """Both counts to the views now (a job loaded)."""
@@ -131,25 +141,47 @@ class JobProgress(QObject):
 
     # --- time ------------------------------------------------------------------------
 
-    def clock(self, was_running: bool, runs: bool) -> None:
-        """The job's state changes between running and not: its clock follows."""
+    def clock(self, was_running: bool, runs: bool, active: bool = False) -> None:
+        """The job's state changes: its clocks follow.
+
+        ``runs``: operations are being sent; ``active``: the job owns the machine
+        (running, paused or waiting for the operator); the wall clock runs from
+        the first active state to the first that is not.
+        """
         now = self._station.clock.now()
         if was_running and not runs and self._running_since is not None:
             self._elapsed_before += now - self._running_since
             self._running_since = None
         elif runs and not was_running:
             self._running_since = now
-        if runs and self._station.realtime:
-            self._eta_timer.start()
-        elif not runs:
+        if (runs or active) and self._started_at is None:
+            self._started_at = now
+        elif not (runs or active) and self._started_at is not None and self._ended_at is None:
+            self._ended_at = now
+        if (runs or active) and self._station.realtime:
+            self._eta_timer.start()  # the elapsed time goes on while a prompt waits
+        elif not (runs or active):
             self._eta_timer.stop()
 
     @property
-    def elapsed_s(self) -> float:
+    def running_s(self) -> float:
         """Station-clock time spent running, without paused and waiting stretches."""
         if self._running_since is None:
             return self._elapsed_before
         return self._elapsed_before + self._station.clock.now() - self._running_since
+
+    @property
+    def elapsed_s(self) -> float:
+        """Wall-clock (station-clock) time from the run's start to its end, or to now."""
+        if self._started_at is None:
+            return 0.0
+        end = self._ended_at if self._ended_at is not None else self._station.clock.now()
+        return max(0.0, end - self._started_at)
+
+    @property
+    def waiting_s(self) -> float:
+        """Of :attr:`elapsed_s`, the time the job stood: at a prompt, paused, held."""
+        return max(0.0, self.elapsed_s - self.running_s)
 
     @property
     def remaining_s(self) -> float:
