@@ -174,7 +174,7 @@ def window_texts(window: MainWindow) -> Iterator[tuple[str, str]]:
         where = _where(widget)
         for kind, text in _widget_texts(widget):
             yield f"{where} ({kind})", text
-    if window._jobs_dock is not None:
+    if window.docks._jobs_dock is not None:
         for line in window.jobs_dock.messages.toPlainText().splitlines():
             yield "job messages", line
 

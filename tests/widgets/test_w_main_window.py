@@ -700,14 +700,14 @@ def test_a_window_closed_before_its_first_paint_keeps_the_docks_it_was_given(
         harness.station, QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     )
     qtbot.addWidget(unshown)
-    assert unshown._telemetry_dock is None
+    assert unshown.docks._telemetry_dock is None
     unshown.save_settings()
     third = MainWindow(
         harness.station, QSettings(str(tmp_path / "stepdeck.ini"), QSettings.Format.IniFormat)
     )
     qtbot.addWidget(third)
     third.show()
-    qtbot.waitUntil(lambda: third._telemetry_dock is not None)
+    qtbot.waitUntil(lambda: third.docks._telemetry_dock is not None)
     assert third.telemetry_dock.isVisible() and third.telemetry_action.isChecked()
 
 
