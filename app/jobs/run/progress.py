@@ -56,6 +56,8 @@ class JobProgress(QObject):
         self.done = 0  # operations [0, done) are complete
         self.executed = 0  # operations [0, executed) are reported run by the machine
         self.estimate: Estimate | None = None
+        #: The job is done: nothing is left, whatever was reported last.
+        self.ended = False
         self._elapsed_before = 0.0
         self._running_since: float | None = None
         #: Station-clock times the run began and ended (None: not begun / not ended).
@@ -88,6 +90,7 @@ class JobProgress(QObject):
         self._running_since = None
         self._started_at = None
         self._ended_at = None
+        self.ended = False
 
     def tell_all(self) -> None:
         """Both counts to the views now (a job loaded)."""
@@ -186,8 +189,8 @@ class JobProgress(QObject):
     @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        if self.estimate is None:
-            return 0.0
+        if self.estimate is None or self.ended:
+            return 0.0  # done is done, also when the driver ended past the last report (park)
         return self.estimate.remaining_after(self.done)
 
     def emit_eta(self) -> None:

@@ -754,6 +754,7 @@ class JobRunner(QObject):
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
         self._progress.clock(was_running, runs, state in ACTIVE)
+        self._progress.ended = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.
