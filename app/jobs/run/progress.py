@@ -58,6 +58,7 @@ class JobProgress(QObject):
         self.estimate: Estimate | None = None
         #: The job is done: nothing is left, whatever was reported last.
         self.ended = False
+        self._eta_told_at = 0.0
         self._elapsed_before = 0.0
         self._running_since: float | None = None
         #: Station-clock times the run began and ended (None: not begun / not ended).
@@ -136,6 +137,7 @@ class JobProgress(QObject):
             self._progress_changed.emit(self.done, total)
         if self.executed != told_executed:
             self._executed_changed.emit(self.executed, total)
+        self._eta_on_the_clock()
 
     def flush(self) -> None:
         """Progress held back for the timer is told now (a state change comes with it)."""
@@ -195,7 +197,15 @@ class JobProgress(QObject):
 
     def emit_eta(self) -> None:
         """Tell the views elapsed and remaining time (a timer calls this every second)."""
+        self._eta_told_at = self._station.clock.now()
         self._eta_changed.emit(self.elapsed_s, self.remaining_s)
+
+    def _eta_on_the_clock(self) -> None:
+        """On a station clock that is not real time (tests, screenshots) no timer ticks:
+        progress tells the time once per second of that clock instead."""
+        if not self._station.realtime and self._started_at is not None:
+            if self._station.clock.now() - self._eta_told_at >= ETA_INTERVAL_MS / 1000:
+                self.emit_eta()
 
 
 def estimate_inputs(station: Station) -> Callable[[Program], Estimate]:
