@@ -67,11 +67,14 @@ def test_after_generate_the_caption_and_status_stay_off_the_pictures(
     assert dialog is not None
     qtbot.mouseClick(dialog.image_button, LEFT)
     qtbot.waitUntil(lambda: dialog.generate_button.isEnabled(), timeout=WAIT_MS)
-    dialog.resolution.setValue(100)
-    dialog.lines.setValue(300)
+    # A budget it stops short of: the status then takes two lines ("stopped before…").
+    dialog.nails.setValue(40)
+    dialog.resolution.setValue(64)
+    dialog.lines.setValue(4000)
     qtbot.mouseClick(dialog.generate_button, LEFT)
     qtbot.waitUntil(lambda: dialog.finished_result is not None, timeout=WAIT_MS)
     qtbot.wait(50)  # the layout settles on the new texts
+    assert dialog.finished_result.result.stopped_early
     screen = dialog.screen().availableGeometry()
     assert dialog.frameGeometry().height() <= max(screen.height(), 800)
     pictures = [_rect(dialog.photo_view, dialog), _rect(dialog.thread_view, dialog)]
