@@ -11,6 +11,7 @@ them fails the test, as in the walk.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -25,6 +26,13 @@ from protocol.usb3.codec import StepSize
 from tests.helpers.harness import StationHarness
 from tests.widgets.test_i18n_every_widget import WORD, decimal_points, english_words
 from widgets.main_window import MainWindow
+
+
+@pytest.fixture(autouse=True)
+def english_after(qapp: object, i18n_cache: Path) -> Iterator[None]:
+    """The language this test installs does not follow the tests that come after it."""
+    yield
+    i18n.install("en", i18n_cache)
 
 
 def _corrupt_usb3_moves(direction: Direction, data: bytes) -> bytes:

@@ -31,6 +31,13 @@ LEFT = Qt.MouseButton.LeftButton
 WAIT_MS = 20_000
 
 
+@pytest.fixture(autouse=True)
+def english_after(qapp: object, i18n_cache: Path) -> Iterator[None]:
+    """The language this test installs does not follow the tests that come after it."""
+    yield
+    i18n.install("en", i18n_cache)
+
+
 def _rect(widget: QWidget, top: QWidget) -> QRect:
     return QRect(widget.mapTo(top, widget.rect().topLeft()), widget.size())
 

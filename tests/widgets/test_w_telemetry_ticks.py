@@ -7,6 +7,7 @@ in Czech and Slovak (issue 32).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -18,6 +19,13 @@ from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 from widgets.main_window import MainWindow
 from widgets.telemetry_axis import LocaleAxis, wider_step
+
+
+@pytest.fixture(autouse=True)
+def english_after(qapp: object, i18n_cache: Path) -> Iterator[None]:
+    """The language this test installs does not follow the tests that come after it."""
+    yield
+    i18n.install("en", i18n_cache)
 
 
 def test_the_steps_widen_one_two_five() -> None:
