@@ -18,7 +18,7 @@ from pathlib import Path
 from types import TracebackType
 from typing import TextIO
 
-from PySide6.QtCore import QSettings
+from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtGui import QGuiApplication, QIcon
 from PySide6.QtWidgets import QApplication, QDialog, QInputDialog, QMainWindow, QMessageBox
 
@@ -217,7 +217,11 @@ def report_unexpected(launcher: Launcher) -> Callable[..., None]:
             return
         if station.session is not None:
             station.session.stop_all()
-        station.model.message.emit(f"Internal error ({kind.__name__}: {error}); machine stopped")
+        station.model.message.emit(
+            QCoreApplication.translate(
+                "Station", "Internal error ({0}: {1}); machine stopped"
+            ).format(kind.__name__, error)
+        )
 
     return hook
 

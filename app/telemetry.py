@@ -69,7 +69,9 @@ from app.machine import LinkState
 from app.machines.stage.session import SUBSCRIBER_TELEMETRY, StageSession
 from app.station import Station
 from app.velocity_estimate import VelocityEstimator
+from protocol.gcode.codec import StatusReport
 from protocol.stage.codec import EchoFrame, Subscriber
+from protocol.usb3.codec import Position
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -84,6 +86,8 @@ SERIES_CAPACITY = int(MAX_WINDOW_S * MAX_RATE_HZ)
 DEFAULT_THROTTLE_MS = 1000 / 60  # redraws per second at most: 60, a display's rate
 #: Longer than the stage's 100 ms echo period, so a live link's frames alone move the window.
 DEFAULT_SCROLL_MS = 150
+#: Frames that report where the axes are (a value unchanged by one is known to hold).
+POSITION_REPORTS = (EchoFrame, StatusReport, Position)
 
 
 @dataclass(frozen=True)
@@ -699,8 +703,15 @@ class TelemetryRecorder(QObject):
             self._touched(series)
 
     def _on_frame(self, frame: object, _raw: bytes) -> None:
-        """An echo arrived: values the last echo left unchanged are known to hold."""
-        if not isinstance(frame, EchoFrame):
+        """An echo or a position report arrived: values the last one left unchanged are
+        known to hold.
+
+        Not the stage's echoes alone: a G-code board's status reports and the usb3
+        unit's positions say as much, and without them the curves of a machine at
+        rest ended where its last move did (a CoreXY jog seemed to stop drawing early,
+        its velocity left at the last estimate instead of 0).
+        """
+        if not isinstance(frame, POSITION_REPORTS):
             return
         now = self.now()
         held = False
@@ -712,7 +723,11 @@ class TelemetryRecorder(QObject):
                     held = True
         self._echo_t = now
         variable = self._variable
-        if variable is not None and frame.subscriber == variable.subscriber:
+        if (
+            isinstance(frame, EchoFrame)
+            and variable is not None
+            and frame.subscriber == variable.subscriber
+        ):
             if self._variable_echo_t is not None and self._variable_series is not None:
                 held = self._hold(self._variable_series, self._variable_echo_t) | held
             self._variable_echo_t = now

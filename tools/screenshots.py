@@ -15,7 +15,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QSize, Qt
-from PySide6.QtWidgets import QApplication
+from PySide6.QtWidgets import QApplication, QWidget
 
 from app import i18n
 from app.profiles import load_profile
@@ -48,10 +48,12 @@ def _page(window: MainWindow, title: str) -> None:
     raise LookupError(title)
 
 
-def _settle(window: MainWindow) -> None:
-    """The window at its size, and the views that redraw on a real-time timer (the frame
-    log) given the time to."""
-    window.resize(SCREEN)
+def _settle(window: QWidget) -> None:
+    """The window at its size (a dialog at its own), and the views that redraw on a
+    real-time timer (the frame log) given the time to."""
+    if isinstance(window, MainWindow):
+        window.resize(SCREEN)
+        window.job_runner.emit_eta()  # on the test clock no timer ticks the job's times
     until = time.monotonic() + 0.5
     while time.monotonic() < until:
         QApplication.processEvents()
@@ -132,6 +134,37 @@ def string_art(work: Path) -> tuple[StationHarness, MainWindow]:
     return harness, window
 
 
+def _wait(condition: Callable[[], bool], seconds: float) -> None:
+    """Process events until ``condition`` holds (a worker thread's result), wall-clock."""
+    until = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > until:
+            raise TimeoutError("the shot's state was not reached")
+        QApplication.processEvents()
+        time.sleep(0.01)
+
+
+def string_art_from_photo(work: Path) -> tuple[StationHarness, QWidget]:
+    """The winder's From photo dialog after Generate, on the test portrait."""
+    import numpy as np
+    from PIL import Image
+
+    from tests.helpers.string_art_images import face
+
+    harness, window = _window("string-art", work)
+    window.jobs_dock.show()
+    photo = work / "face_in.png"
+    Image.fromarray(np.round(face(300) * 255).astype(np.uint8)).save(photo)
+    window.jobs_dock.photo_button.click()
+    dialog = window.jobs_dock.string_art.dialog
+    assert dialog is not None
+    dialog.open_image(photo)
+    _wait(dialog.generate_button.isEnabled, 30.0)
+    dialog.generate_button.click()
+    _wait(lambda: dialog.finished_result is not None, 120.0)
+    return harness, dialog
+
+
 def czech(work: Path) -> tuple[StationHarness, MainWindow]:
     """The main window with its docks, switched to Czech in the running window."""
     return main_window(work, "cs")
@@ -192,7 +225,7 @@ def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
     return harness, window
 
 
-SHOTS: dict[str, Callable[[Path], tuple[StationHarness, MainWindow]]] = {
+SHOTS: dict[str, Callable[[Path], tuple[StationHarness, QWidget]]] = {
     "main-window": main_window,
     "dynamics": dynamics,
     "link": link,
@@ -205,6 +238,7 @@ SHOTS: dict[str, Callable[[Path], tuple[StationHarness, MainWindow]]] = {
     "drill": drill,
     "jobs": jobs,
     "plotter": plotter,
+    "string-art-from-photo": string_art_from_photo,
 }
 
 

@@ -77,6 +77,7 @@ from app.telemetry import (
 from widgets.number_field import localized
 from widgets.retranslate import Texts
 from widgets.style import CHECKED_BUTTON_STYLE, monospace_font
+from widgets.telemetry_axis import LocaleAxis
 from widgets.theme import LIGHT, PlotColours
 
 #: Curve colours per axis (X, Y, Z, then whatever else a profile has).
@@ -649,7 +650,11 @@ class TelemetryDock(QDockWidget):
         return str(self.captions[self.plots.index(plot)].text)
 
     def _add_plot(self, row: int) -> pg.PlotItem:
-        plot = self.graphics.addPlot(row=row, col=0)
+        plot = self.graphics.addPlot(
+            row=row,
+            col=0,
+            axisItems={"left": LocaleAxis("left"), "bottom": LocaleAxis("bottom")},
+        )
         caption = self.graphics.addLabel("", row=row, col=1, justify="left")
         caption.setFixedWidth(CAPTION_WIDTH)
         self.captions.append(caption)

@@ -17,6 +17,7 @@ from PySide6.QtCore import QObject, Signal
 from app.developer.gcode import describe_gcode
 from app.developer.raw_text import escape_raw
 from app.developer.stage import describe_command, describe_echo
+from app.developer.words import describe_drill, describe_usb3
 from app.machines.session import MachineSession
 from app.station import Station
 from protocol.stage.codec import (
@@ -30,9 +31,10 @@ from protocol.stage.codec import (
 
 def describe_message(message: object) -> str:
     """Other dialects' messages are small dataclasses: their fields read well enough."""
-    gcode = describe_gcode(message)
-    if gcode is not None:
-        return gcode
+    for describe in (describe_gcode, describe_drill, describe_usb3):
+        words = describe(message)
+        if words is not None:
+            return words
     if is_dataclass(message) and not isinstance(message, type):
         values = ", ".join(f"{f.name}={_plain(getattr(message, f.name))}" for f in fields(message))
         return f"{type(message).__name__}({values})"

@@ -12,9 +12,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject
 
+from app.local_numbers import local_number
 from app.machine import LinkState
+from app.machines.gcode.meanings import alarm_meaning, error_meaning
 from app.machines.gcode.session import GcodeSession
 from app.station import Station
 from protocol.gcode.codec import (
@@ -47,19 +49,33 @@ def describe_gcode(message: object) -> str | None:
     if isinstance(message, str):
         return message
     if isinstance(message, Ok):
-        return "ok: the oldest unanswered line was accepted"
+        return QCoreApplication.translate(
+            "FrameWords", "ok: the oldest unanswered line was accepted"
+        )
     if isinstance(message, ErrorReply):
-        return f"error {message.code}: {message.meaning}"
+        return QCoreApplication.translate("FrameWords", "error {0}: {1}").format(
+            message.code, error_meaning(message.code)
+        )
     if isinstance(message, AlarmReply):
-        return f"alarm {message.code}: {message.meaning}"
+        return QCoreApplication.translate("FrameWords", "alarm {0}: {1}").format(
+            message.code, alarm_meaning(message.code)
+        )
     if isinstance(message, StatusReport):
-        where = ", ".join(f"{v:.3f}" for v in message.mpos)
-        planner = f", {message.planner_free} planner blocks free" if message.planner_free else ""
-        return f"{message.state} at ({where}), feed {message.feed:g}{planner}"
+        where = ", ".join(local_number(v, ".3f") for v in message.mpos)
+        report = QCoreApplication.translate("FrameWords", "{0} at ({1}), feed {2}").format(
+            message.state, where, local_number(message.feed)
+        )
+        if message.planner_free:
+            report += QCoreApplication.translate("FrameWords", ", {0} planner blocks free").format(
+                message.planner_free
+            )
+        return report
     if isinstance(message, Banner):
-        return f"the board (re)started: {message.text}"
+        return QCoreApplication.translate("FrameWords", 'the board (re)started: "{0}"').format(
+            message.text
+        )
     if isinstance(message, Feedback):
-        return f"message: {message.text}"
+        return QCoreApplication.translate("FrameWords", "message: {0}").format(message.text)
     return None
 
 

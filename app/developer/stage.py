@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from app.developer.raw_text import escape_raw
+from app.local_numbers import local_number
 from app.machines.stage.echoes import STATUS_TEXT
 from app.machines.stage.parameters import BY_TYPE
 from app.station import Station
@@ -238,12 +239,32 @@ def inject_echo(station: Station, fields: EchoFields) -> EchoFrame:
 # --- describing frames in words -----------------------------------------------------
 
 
+#: The device flags' bits in words.
+FLAG_TEXT: dict[int, str] = {
+    DeviceFlag.CHARGER: str(QT_TRANSLATE_NOOP("StageWords", "charger")),
+    DeviceFlag.USB: str(QT_TRANSLATE_NOOP("StageWords", "USB")),
+    DeviceFlag.LOW_BATTERY: str(QT_TRANSLATE_NOOP("StageWords", "low battery")),
+    DeviceFlag.SLEEPING: str(QT_TRANSLATE_NOOP("StageWords", "sleeping")),
+    DeviceFlag.DATA_SESSION: str(QT_TRANSLATE_NOOP("StageWords", "data session")),
+}
+FAST_SLOW = (
+    str(QT_TRANSLATE_NOOP("StageWords", "slow")),
+    str(QT_TRANSLATE_NOOP("StageWords", "fast")),
+)
+ON_OFF = (str(QT_TRANSLATE_NOOP("StageWords", "off")), str(QT_TRANSLATE_NOOP("StageWords", "on")))
+
+
+def _choice(data: int, words: tuple[str, str]) -> str:
+    """0 and 1 in words (``words``: what 0 and 1 mean), anything else as the number."""
+    return QCoreApplication.translate("StageWords", words[data]) if data in (0, 1) else str(data)
+
+
 def _signed(value: int) -> str:
     return f"{value:+d}"
 
 
 def _mm(value_um: int, unit: str, *, signed: bool = False) -> str:
-    return f"{value_um / 1000:{'+' if signed else ''}.3f} {unit}"
+    return f"{local_number(value_um / 1000, '+.3f' if signed else '.3f')} {unit}"
 
 
 def describe_command(frame: CommandFrame, axis_names: Sequence[str], units: Sequence[str]) -> str:
@@ -277,9 +298,9 @@ def _command_words(command: int, data: int, unit: str) -> str:
         case CommandId.MOVE_REL:
             return f"MOVE_REL {_mm(data, unit, signed=True)}"
         case CommandId.SPEED:
-            return f"SPEED {'fast' if data == 1 else 'slow' if data == 0 else data}"
+            return f"SPEED {_choice(data, FAST_SLOW)}"
         case CommandId.SLEEP:
-            return f"SLEEP {'on' if data == 1 else 'off' if data == 0 else data}"
+            return f"SLEEP {_choice(data, ON_OFF)}"
         case CommandId.READ:
             return f"READ {type_text(data)}"
         case CommandId.NOP | CommandId.STOP | CommandId.HOME | CommandId.ESTOP:
@@ -293,7 +314,8 @@ def _command_words(command: int, data: int, unit: str) -> str:
 
 def _parameter_value(type_: int, data: int) -> str:
     meta = BY_TYPE[type_]
-    return f"{meta.to_shown(data):.{meta.decimals}f} {meta.unit}".rstrip()
+    unit = QCoreApplication.translate("Unit", meta.unit) if meta.unit else ""
+    return f"{local_number(meta.to_shown(data), f'.{meta.decimals}f')} {unit}".rstrip()
 
 
 def describe_echo(echo: EchoFrame, axis_names: Sequence[str], units: Sequence[str]) -> str:
@@ -309,9 +331,11 @@ def describe_echo(echo: EchoFrame, axis_names: Sequence[str], units: Sequence[st
 def _packet_words(packet: EchoPacket, unit: str) -> str:
     status = status_text(packet.status)
     if packet.type == EchoType.POSITION:
-        return f"pos {_mm(packet.data, unit)} {status}"
+        pos = QCoreApplication.translate("StageWords", "pos")
+        return f"{pos} {_mm(packet.data, unit)} {status}"
     if packet.type == EchoType.VELOCITY:
-        return f"vel {_mm(packet.data, unit + '/s')} {status}"
+        vel = QCoreApplication.translate("StageWords", "vel")
+        return f"{vel} {_mm(packet.data, unit + '/s')} {status}"
     if packet.type in BY_TYPE:
         return f"{type_text(packet.type)} {_parameter_value(packet.type, packet.data)} {status}"
     return f"TYPE {packet.type:X} {packet.data} {status}"
@@ -329,15 +353,15 @@ def _subscriber_words(subscriber: int, sdata: int) -> str:
         case Subscriber.CHARGING_CURRENT:
             return f"{name} {sdata} mA"
         case Subscriber.BOARD_TEMPERATURE:
-            return f"{name} {sdata / 100:.2f} °C"
+            return f"{name} {local_number(sdata / 100, '.2f')} °C"
         case Subscriber.ROTATION:
-            return f"{name} {sdata / 100:.2f}°"
+            return f"{name} {local_number(sdata / 100, '.2f')}°"
         case Subscriber.YAW_RATE:
-            return f"{name} {sdata / 100:.2f} °/s"
+            return f"{name} {local_number(sdata / 100, '.2f')} °/s"
         case Subscriber.DEVICE_FLAGS:
             return f"{name} {_flag_words(sdata)}"
         case Subscriber.X_ENCODER | Subscriber.Y_ENCODER:
-            return f"{name} {sdata / 1000:.3f} mm"
+            return f"{name} {local_number(sdata / 1000, '.3f')} mm"
         case Subscriber.FIRMWARE_VERSION:
             return f"{name} {sdata // 10000}.{sdata // 100 % 100}.{sdata % 100}"
         case Subscriber.REJECTED_FRAMES:
@@ -350,9 +374,9 @@ def _subscriber_words(subscriber: int, sdata: int) -> str:
 
 def _flag_words(value: int) -> str:
     names = [
-        flag.name.lower().replace("_", " ")
+        QCoreApplication.translate("StageWords", FLAG_TEXT[flag])
         for flag in DeviceFlag
-        if flag.name is not None and value & flag
+        if flag in FLAG_TEXT and value & flag
     ]
     none = QCoreApplication.translate("StageWords", "none")
     return f"{value:#04x} ({', '.join(names) or none})"

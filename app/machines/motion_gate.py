@@ -16,6 +16,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from PySide6.QtCore import QCoreApplication
+
+from app.local_numbers import local_number
 from app.machine import MachineModel
 
 #: Targets this close past a limit are rounding (a move to exactly the travel end).
@@ -62,14 +65,28 @@ class MotionGate:
     def refuse_target(self, axis: int, target: float) -> Refusal | None:
         """An absolute target outside the travel (or not a number) is refused."""
         if not 0 <= axis < len(self.model.axes):
-            return Refusal(f"there is no axis {axis + 1}")
+            return Refusal(
+                QCoreApplication.translate("MotionGate", "there is no axis {0}").format(axis + 1)
+            )
         name, unit = self._name(axis), self._unit(axis)
         if not math.isfinite(target):
-            return Refusal(f"{name} {target} is not a position")
+            return Refusal(
+                QCoreApplication.translate("MotionGate", "{0} {1} is not a position").format(
+                    name, target
+                )
+            )
         low, high = self.limits(axis)
         if target < low - EPSILON or target > high + EPSILON:
             return Refusal(
-                f"{name} {target:.3f} {unit} is outside the travel {low:g}…{high:g} {unit}"
+                QCoreApplication.translate(
+                    "MotionGate", "{0} {1} {2} is outside the travel {3}…{4} {2}"
+                ).format(
+                    name,
+                    local_number(target, ".3f"),
+                    unit,
+                    local_number(low),
+                    local_number(high),
+                )
             )
         return None
 
@@ -82,15 +99,25 @@ class MotionGate:
         (a job judging each report as it is decoded).
         """
         if not 0 <= axis < len(self.model.axes):
-            return Refusal(f"there is no axis {axis + 1}")
+            return Refusal(
+                QCoreApplication.translate("MotionGate", "there is no axis {0}").format(axis + 1)
+            )
         if not math.isfinite(delta):
-            return Refusal(f"{self._name(axis)} {delta} is not a distance")
+            return Refusal(
+                QCoreApplication.translate("MotionGate", "{0} {1} is not a distance").format(
+                    self._name(axis), delta
+                )
+            )
         here = self.position(axis) if start is None else start
         refusal = self.refuse_target(axis, here + delta)
         if refusal is None:
             return None
         unit = self._unit(axis)
-        return Refusal(f"{delta:+.3f} {unit} from {here:.3f}: {refusal}")
+        return Refusal(
+            QCoreApplication.translate("MotionGate", "{0} {1} from {2}: {3}").format(
+                local_number(delta, "+.3f"), unit, local_number(here, ".3f"), refusal
+            )
+        )
 
     def room(self, axis: int, direction: int) -> float:
         """How far the axis may still go in ``direction`` (+1/-1) before leaving the travel."""
@@ -122,11 +149,17 @@ class MotionGate:
         reason = reason or busy
         if reason is None:
             return None
-        return Refusal(f"the motors are not released: {reason}")
+        return Refusal(
+            QCoreApplication.translate("MotionGate", "the motors are not released: {0}").format(
+                reason
+            )
+        )
 
     def refuse(self, refusal: Refusal | None) -> bool:
         """Tell the operator (status bar) when refused; True when the motion must not go."""
         if refusal is None:
             return False
-        self.model.message.emit(f"Motion refused: {refusal}")
+        self.model.message.emit(
+            QCoreApplication.translate("MotionGate", "Motion refused: {0}").format(refusal)
+        )
         return True

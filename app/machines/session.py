@@ -118,10 +118,10 @@ class MachineSession(QObject):
 
     def set_jog(self, directions: Sequence[int]) -> None:
         if any(directions):
-            self._unsupported("jogging")
+            self._unsupported(QCoreApplication.translate("Session", "jogging"))
 
     def stop_all(self) -> None:
-        self._unsupported("stop command")
+        self._unsupported(QCoreApplication.translate("Session", "stop command"))
 
     def step_jog(self, axis: int, direction: int, step: float) -> bool:
         """One tap of an arrow key in step mode: ``step`` that way, or what is left of the travel.
@@ -136,7 +136,11 @@ class MachineSession(QObject):
         distance = min(step, self.gate.room(axis, direction))
         if distance <= 1e-6:
             name = self.model.axes[axis].name
-            self.model.message.emit(f"{name} is at the end of its travel")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "{0} is at the end of its travel").format(
+                    name
+                )
+            )
             return False
         return self.move_relative(axis, direction * distance)
 
@@ -172,7 +176,7 @@ class MachineSession(QObject):
         return not self.model.any_moving
 
     def move_relative(self, axis: int, delta: float) -> bool:
-        return self._unsupported("relative moves")
+        return self._unsupported(QCoreApplication.translate("Session", "relative moves"))
 
     def set_shift(self, held: bool) -> None:
         """Shift selects the other jog speed where the machine has two."""
@@ -181,7 +185,7 @@ class MachineSession(QObject):
         self._fast_selected = fast
 
     def move_absolute(self, axis: int, position: float) -> bool:
-        return self._unsupported("absolute moves")
+        return self._unsupported(QCoreApplication.translate("Session", "absolute moves"))
 
     def home(self, axis: int) -> bool:
         return self._unsupported("homing")

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 from PySide6.QtCore import QCoreApplication
 
+from app.local_numbers import local_number
 from app.machines.envelope import Deviation, Fault
 
 
@@ -37,7 +38,9 @@ def _fault_words(fault: Fault) -> str:
 
 def where(names: Sequence[str], point: Sequence[float]) -> str:
     """``X 3.000 Y 18.000``: a position as the operator reads it."""
-    return " ".join(f"{name} {value:.3f}" for name, value in zip(names, point, strict=False))
+    return " ".join(
+        f"{name} {local_number(value, '.3f')}" for name, value in zip(names, point, strict=False)
+    )
 
 
 def fault_text(deviation: Deviation, names: Sequence[str], *, scale: float = 1.0) -> str:
@@ -56,5 +59,5 @@ def fault_text(deviation: Deviation, names: Sequence[str], *, scale: float = 1.0
         _fault_words(deviation.fault),
         move,
         where(names, expected),
-        f"{deviation.distance * scale:.3f}",
+        local_number(deviation.distance * scale, ".3f"),
     )

@@ -272,6 +272,18 @@
     </message>
 </context>
 <context>
+    <name>ConsoleGate</name>
+    <message>
+        <source>{0} would move {1}</source>
+        <extracomment>GRBL&apos;s &quot;setting disabled&quot;: for ``$H`` it means homing is off (``$22=0``, a new board&apos;s). Whether the board is in G91 after the lines queued (a reset brings back G90).</extracomment>
+        <translation>{0} by pohol {1}</translation>
+    </message>
+    <message>
+        <source>. Homing is switched off on the board ($22=0, GRBL&apos;s default): with end switches fitted, send $22=1 from the console; without them, move the machine to its origin by hand and set it there</source>
+        <translation>. Referenčná jazda je na doske vypnutá ($22=0, predvolená v GRBL): s koncovými spínačmi pošlite z konzoly $22=1; bez nich presuňte stroj do počiatku ručne a nastavte ho tam</translation>
+    </message>
+</context>
+<context>
     <name>DeveloperPane</name>
     <message>
         <source>Developer</source>
@@ -481,7 +493,7 @@
     </message>
     <message>
         <source>   (link check: is the drill there?)</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages. The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <extracomment>The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>   (kontrola spojenia: je vŕtačka pripojená?)</translation>
     </message>
     <message>
@@ -504,6 +516,14 @@
         <translation>Vŕtačka nemá príkaz na zastavenie: zahodených príkazov vo fronte: {0}</translation>
     </message>
     <message>
+        <source>Not sent: {0} is not a drill command ({1})</source>
+        <translation>Neodoslané: {0} nie je príkaz vŕtačky ({1})</translation>
+    </message>
+    <message>
+        <source>Motion refused: {0} is no drill position (0…{1})</source>
+        <translation>Pohyb odmietnutý: {0} nie je poloha vŕtačky (0…{1})</translation>
+    </message>
+    <message>
         <source>Link lost: {0}; {1} command(s) dropped</source>
         <translation>Spojenie stratené: {0}; zahodených príkazov: {1}</translation>
     </message>
@@ -516,12 +536,69 @@
         <translation>; zahodených príkazov: {0}</translation>
     </message>
     <message>
+        <source>home</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages.</extracomment>
+        <translation>referenčná jazda</translation>
+    </message>
+    <message>
+        <source>move X</source>
+        <translation>pohyb X</translation>
+    </message>
+    <message>
+        <source>move Y</source>
+        <translation>pohyb Y</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>vŕtanie</translation>
+    </message>
+    <message>
+        <source>pen down</source>
+        <translation>pero dole</translation>
+    </message>
+    <message>
+        <source>pen up</source>
+        <translation>pero hore</translation>
+    </message>
+    <message>
+        <source>park</source>
+        <translation>parkovanie</translation>
+    </message>
+    <message>
+        <source>axis {0}</source>
+        <translation>os {0}</translation>
+    </message>
+    <message>
+        <source>moves of {0}</source>
+        <translation>pohyby {0}</translation>
+    </message>
+    <message>
         <source>{0} is at the end of its travel</source>
         <translation>{0} je na konci rozsahu posuvu</translation>
     </message>
     <message>
         <source>Jog ends: the end of the travel</source>
         <translation>Posuv končí: koniec rozsahu posuvu</translation>
+    </message>
+    <message>
+        <source>Garbage from the drill dropped: {0}</source>
+        <translation>Nezmyselné dáta z vŕtačky zahodené: {0}</translation>
+    </message>
+    <message>
+        <source>Unexpected reply {0} from the drill (waiting for {1})</source>
+        <translation>Neočakávaná odpoveď {0} z vŕtačky (čaká sa na {1})</translation>
+    </message>
+    <message>
+        <source>Unexpected reply {0} from the drill</source>
+        <translation>Neočakávaná odpoveď {0} z vŕtačky</translation>
+    </message>
+    <message>
+        <source>The drill refused {0} ({1})</source>
+        <translation>Vŕtačka odmietla {0} ({1})</translation>
+    </message>
+    <message>
+        <source>; {0} queued command(s) dropped</source>
+        <translation>; zahodené príkazy vo fronte: {0}</translation>
     </message>
 </context>
 <context>
@@ -1064,6 +1141,114 @@
     </message>
 </context>
 <context>
+    <name>FrameWords</name>
+    <message>
+        <source>ok: the oldest unanswered line was accepted</source>
+        <translation>ok: najstarší nezodpovedaný riadok prijatý</translation>
+    </message>
+    <message>
+        <source>error {0}: {1}</source>
+        <translation>chyba {0}: {1}</translation>
+    </message>
+    <message>
+        <source>alarm {0}: {1}</source>
+        <translation>alarm {0}: {1}</translation>
+    </message>
+    <message>
+        <source>{0} at ({1}), feed {2}</source>
+        <translation>{0} na ({1}), posuv {2}</translation>
+    </message>
+    <message>
+        <source>, {0} planner blocks free</source>
+        <translation>, voľné bloky plánovača: {0}</translation>
+    </message>
+    <message>
+        <source>the board (re)started: &quot;{0}&quot;</source>
+        <translation>doska (znovu) naštartovala: &quot;{0}&quot;</translation>
+    </message>
+    <message>
+        <source>message: {0}</source>
+        <translation>správa: {0}</translation>
+    </message>
+    <message>
+        <source>home both axes</source>
+        <extracomment>What each drill command letter does (docs/protocols.md, the drill).</extracomment>
+        <translation>referenčná jazda oboch osí</translation>
+    </message>
+    <message>
+        <source>move X to {0} µsteps</source>
+        <translation>X na {0} µkrokov</translation>
+    </message>
+    <message>
+        <source>move Y to {0} µsteps</source>
+        <translation>Y na {0} µkrokov</translation>
+    </message>
+    <message>
+        <source>drill a hole</source>
+        <translation>vyvŕtať otvor</translation>
+    </message>
+    <message>
+        <source>pen down</source>
+        <translation>pero dole</translation>
+    </message>
+    <message>
+        <source>pen up</source>
+        <translation>pero hore</translation>
+    </message>
+    <message>
+        <source>park</source>
+        <translation>parkovať</translation>
+    </message>
+    <message>
+        <source>{0} received</source>
+        <translation>{0} prijatý</translation>
+    </message>
+    <message>
+        <source>{0} done</source>
+        <translation>{0} hotový</translation>
+    </message>
+    <message>
+        <source>{0} refused (error)</source>
+        <translation>{0} odmietnutý (chyba)</translation>
+    </message>
+    <message>
+        <source>directions {0}</source>
+        <translation>smery {0}</translation>
+    </message>
+    <message>
+        <source>move {0} by {1} counts</source>
+        <translation>posun {0} o {1} dielikov</translation>
+    </message>
+    <message>
+        <source>step sizes {0}</source>
+        <translation>veľkosti kroku {0}</translation>
+    </message>
+    <message>
+        <source>threads {0}</source>
+        <translation>závity {0}</translation>
+    </message>
+    <message>
+        <source>every axis is zero where it stands</source>
+        <translation>každá os má nulu tam, kde stojí</translation>
+    </message>
+    <message>
+        <source>ask for the step sizes and threads</source>
+        <translation>otázka na veľkosti kroku a závity</translation>
+    </message>
+    <message>
+        <source>stop every axis</source>
+        <translation>zastaviť všetky osi</translation>
+    </message>
+    <message>
+        <source>{0} stands at {1} counts</source>
+        <translation>{0} stojí na {1} dielikoch</translation>
+    </message>
+    <message>
+        <source>the unit did not understand a command</source>
+        <translation>jednotka nerozumela príkazu</translation>
+    </message>
+</context>
+<context>
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>
@@ -1325,7 +1510,6 @@ Napriek tomu odoslať do stroja?</translation>
     <name>GcodeSession</name>
     <message>
         <source>Stopped: {0} line(s) not run</source>
-        <extracomment>No reply to status queries for this long: the link is lost (a job pauses) and the board is asked on until it answers. A board that answers a status query within milliseconds and then goes silent for seconds has stopped listening, but a few seconds can be a host&apos;s or a USB bridge&apos;s hiccup that loses nothing: a 2.5 s freeze of the board&apos;s replies mid-job must not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`). Status queries unanswered before the link is shown stale (amber), and the least time. A stop resets the device this long after its hold at the latest, standing or not. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). What the followed job had as the last status report was read (its snapshot). A stop went out and no report since its reset has shown the board standing: on a silent line its hold and reset may both have been lost. After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Zastavené: nevykonaných riadkov: {0}</translation>
     </message>
     <message>
@@ -1342,16 +1526,44 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Spojenie stratené: {0}</translation>
     </message>
     <message>
+        <source>Garbage from the device dropped: {0}</source>
+        <translation>Nezmyselné dáta zo zariadenia zahodené: {0}</translation>
+    </message>
+    <message>
         <source>Machine alarm {0}: {1}</source>
         <translation>Alarm stroja {0}: {1}</translation>
+    </message>
+    <message>
+        <source>The device reset: {0} unanswered line(s) were not run</source>
+        <translation>Zariadenie sa resetovalo: nevykonané nezodpovedané riadky: {0}</translation>
+    </message>
+    <message>
+        <source>The device&apos;s replies could not be read ({0}): stopping</source>
+        <translation>Odpovede zariadenia nemožno prečítať ({0}): zastavujem</translation>
+    </message>
+    <message>
+        <source>A reply arrived for no line (ignored)</source>
+        <translation>Prišla odpoveď bez riadku (ignorovaná)</translation>
+    </message>
+    <message>
+        <source>{0} refused: error {1}, {2}</source>
+        <translation>{0} odmietnutý: chyba {1}, {2}</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) of a line whose end never came (lost on the way) and waits for it: it stands idle, so it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>Doska drží {0} bajt(ov) riadku, ktorého koniec nikdy neprišiel (stratil sa cestou), a čaká naň: stojí v pokoji, preto je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>
     <message>
+        <source>{0} line(s) unanswered while the board stands idle; waiting for its answer (without Bf: in its reports it cannot show it has them)</source>
+        <translation>Nezodpovedané riadky, kým doska stojí v pokoji: {0}; čaká sa na jej odpoveď (bez Bf: v hláseniach nemôže ukázať, že ich má)</translation>
+    </message>
+    <message>
         <source>{0} line(s) sent never reached the board: it has taken every byte it got and stands idle short of where they end; it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} odoslaných riadkov nikdy nedorazilo do dosky: prevzala každý bajt, ktorý dostala, a stojí v pokoji pred miestom, kde končia; je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
+    </message>
+    <message>
+        <source>{0} answer(s) from the board were lost on the way; it has taken and run every line sent, so they count as answered</source>
+        <translation>Odpovede dosky stratené cestou: {0}; prevzala a vykonala každý odoslaný riadok, takže sa počítajú ako zodpovedané</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) more than were sent and not answered (a line or an answer arrived twice on the way): the lines it holds may be garbled, so it is stopped before it runs them</source>
@@ -1362,12 +1574,241 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>; nezodpovedaných riadkov: {0}</translation>
     </message>
     <message>
+        <source>Not sent without confirmation: {0}</source>
+        <extracomment>No reply to status queries for this long: the link is lost (a job pauses) and the board is asked on until it answers. A board that answers a status query within milliseconds and then goes silent for seconds has stopped listening, but a few seconds can be a host&apos;s or a USB bridge&apos;s hiccup that loses nothing: a 2.5 s freeze of the board&apos;s replies mid-job must not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`). Status queries unanswered before the link is shown stale (amber), and the least time. A stop resets the device this long after its hold at the latest, standing or not. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). What the followed job had as the last status report was read (its snapshot). A stop went out and no report since its reset has shown the board standing: on a silent line its hold and reset may both have been lost. After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
+        <translation>Bez potvrdenia neodoslané: {0}</translation>
+    </message>
+    <message>
+        <source>Not sent: {0} ({1})</source>
+        <translation>Neodoslané: {0} ({1})</translation>
+    </message>
+    <message>
+        <source>Not sent: {0} (not connected)</source>
+        <translation>Neodoslané: {0} (nepripojené)</translation>
+    </message>
+    <message>
         <source>it restarted meanwhile (its banner came), so what it had is gone</source>
         <translation>medzitým sa reštartovalo (prišiel jeho úvodný text), takže čo malo, je preč</translation>
     </message>
     <message>
         <source>it is in alarm</source>
         <translation>je v alarme</translation>
+    </message>
+</context>
+<context>
+    <name>GrblMeaning</name>
+    <message>
+        <source>expected command letter: a G-code word needs a letter</source>
+        <extracomment>The codec&apos;s texts, marked for translation (the same English: lupdate reads these).</extracomment>
+        <translation>očakávané písmeno príkazu: slovo G-kódu potrebuje písmeno</translation>
+    </message>
+    <message>
+        <source>bad number format: a word&apos;s value is missing or malformed</source>
+        <translation>chybný formát čísla: hodnota slova chýba alebo je chybná</translation>
+    </message>
+    <message>
+        <source>invalid statement: &apos;$&apos; system command not recognised</source>
+        <translation>neplatný príkaz: systémový príkaz &apos;$&apos; nerozpoznaný</translation>
+    </message>
+    <message>
+        <source>negative value where a positive one is expected</source>
+        <translation>záporná hodnota tam, kde sa čaká kladná</translation>
+    </message>
+    <message>
+        <source>setting disabled: homing is not enabled</source>
+        <translation>nastavenie vypnuté: referenčná jazda nie je povolená</translation>
+    </message>
+    <message>
+        <source>step pulse time must be at least 3 microseconds</source>
+        <translation>dĺžka krokového impulzu musí byť aspoň 3 mikrosekundy</translation>
+    </message>
+    <message>
+        <source>EEPROM read failed, defaults restored</source>
+        <translation>čítanie EEPROM zlyhalo, obnovené predvolené hodnoty</translation>
+    </message>
+    <message>
+        <source>not idle: this &apos;$&apos; command needs the machine idle</source>
+        <translation>nie je v pokoji: tento príkaz &apos;$&apos; vyžaduje stroj v pokoji</translation>
+    </message>
+    <message>
+        <source>G-code locked out during alarm or jog</source>
+        <translation>G-kód zablokovaný počas alarmu alebo ručného posuvu</translation>
+    </message>
+    <message>
+        <source>soft limits need homing enabled</source>
+        <translation>softvérové limity vyžadujú povolenú referenčnú jazdu</translation>
+    </message>
+    <message>
+        <source>line overflow: too many characters in the line, not executed</source>
+        <translation>pretečenie riadku: príliš veľa znakov, nevykonané</translation>
+    </message>
+    <message>
+        <source>setting would exceed the maximum step rate</source>
+        <translation>nastavenie by prekročilo najvyššiu frekvenciu krokov</translation>
+    </message>
+    <message>
+        <source>safety door open</source>
+        <translation>bezpečnostné dvierka otvorené</translation>
+    </message>
+    <message>
+        <source>line length exceeded: build info or startup line too long to store</source>
+        <translation>prekročená dĺžka riadku: údaj o zostavení alebo štartovací riadok je príliš dlhý na uloženie</translation>
+    </message>
+    <message>
+        <source>travel exceeded: target beyond the machine&apos;s travel, ignored</source>
+        <translation>prekročený pojazd: cieľ mimo pojazdu stroja, ignorované</translation>
+    </message>
+    <message>
+        <source>invalid jog command</source>
+        <translation>neplatný príkaz ručného posuvu</translation>
+    </message>
+    <message>
+        <source>laser mode requires PWM output</source>
+        <translation>laserový režim vyžaduje výstup PWM</translation>
+    </message>
+    <message>
+        <source>unsupported or invalid G-code command</source>
+        <translation>nepodporovaný alebo neplatný príkaz G-kódu</translation>
+    </message>
+    <message>
+        <source>modal group violation: two commands of one modal group in a line</source>
+        <translation>porušenie modálnej skupiny: dva príkazy jednej modálnej skupiny v riadku</translation>
+    </message>
+    <message>
+        <source>undefined feed rate</source>
+        <translation>nedefinovaný posuv</translation>
+    </message>
+    <message>
+        <source>command requires an integer value</source>
+        <translation>príkaz vyžaduje celé číslo</translation>
+    </message>
+    <message>
+        <source>more than one command in the line needs axis words</source>
+        <translation>viac ako jeden príkaz v riadku potrebuje slová osí</translation>
+    </message>
+    <message>
+        <source>repeated word in the line</source>
+        <translation>opakované slovo v riadku</translation>
+    </message>
+    <message>
+        <source>no axis words for a command that needs them</source>
+        <translation>chýbajú slová osí pre príkaz, ktorý ich potrebuje</translation>
+    </message>
+    <message>
+        <source>invalid line number</source>
+        <translation>neplatné číslo riadku</translation>
+    </message>
+    <message>
+        <source>command is missing a required value word</source>
+        <translation>príkazu chýba povinné slovo s hodnotou</translation>
+    </message>
+    <message>
+        <source>G59.x work coordinate systems are not supported</source>
+        <translation>pracovné súradnicové systémy G59.x nie sú podporované</translation>
+    </message>
+    <message>
+        <source>G53 only with G0 and G1</source>
+        <translation>G53 len s G0 a G1</translation>
+    </message>
+    <message>
+        <source>axis words that no command uses</source>
+        <translation>slová osí, ktoré žiadny príkaz nepoužíva</translation>
+    </message>
+    <message>
+        <source>G2/G3 arcs need at least one in-plane axis word</source>
+        <translation>oblúky G2/G3 potrebujú aspoň jedno slovo osi v rovine</translation>
+    </message>
+    <message>
+        <source>motion target is invalid</source>
+        <translation>cieľ pohybu je neplatný</translation>
+    </message>
+    <message>
+        <source>arc radius is invalid</source>
+        <translation>polomer oblúka je neplatný</translation>
+    </message>
+    <message>
+        <source>G2/G3 arcs need at least one in-plane offset word</source>
+        <translation>oblúky G2/G3 potrebujú aspoň jedno slovo posunutia v rovine</translation>
+    </message>
+    <message>
+        <source>unused value words in the line</source>
+        <translation>nepoužité slová s hodnotou v riadku</translation>
+    </message>
+    <message>
+        <source>dynamic tool length offset not on the tool length axis</source>
+        <translation>dynamická korekcia dĺžky nástroja nie je na osi dĺžky nástroja</translation>
+    </message>
+    <message>
+        <source>tool number greater than supported</source>
+        <translation>číslo nástroja väčšie, ako je podporované</translation>
+    </message>
+    <message>
+        <source>hard limit triggered: position likely lost, re-home</source>
+        <translation>zopol koncový spínač: poloha je pravdepodobne stratená, vykonajte referenčnú jazdu</translation>
+    </message>
+    <message>
+        <source>soft limit: motion target beyond the travel, position kept</source>
+        <translation>softvérový limit: cieľ pohybu mimo pojazdu, poloha zachovaná</translation>
+    </message>
+    <message>
+        <source>reset while in motion: position likely lost, re-home</source>
+        <translation>reset počas pohybu: poloha je pravdepodobne stratená, vykonajte referenčnú jazdu</translation>
+    </message>
+    <message>
+        <source>probe fail: probe not in the expected initial state</source>
+        <translation>chyba sondy: sonda nie je v očakávanom východiskovom stave</translation>
+    </message>
+    <message>
+        <source>probe fail: no contact within the programmed travel</source>
+        <translation>chyba sondy: žiadny dotyk v naprogramovanej dráhe</translation>
+    </message>
+    <message>
+        <source>homing fail: the homing cycle was reset</source>
+        <translation>chyba referenčnej jazdy: cyklus bol resetovaný</translation>
+    </message>
+    <message>
+        <source>homing fail: safety door opened while homing</source>
+        <translation>chyba referenčnej jazdy: počas nej sa otvorili bezpečnostné dvierka</translation>
+    </message>
+    <message>
+        <source>homing fail: pull-off did not clear the limit switch</source>
+        <translation>chyba referenčnej jazdy: odjazd neuvoľnil koncový spínač</translation>
+    </message>
+    <message>
+        <source>homing fail: limit switch not found within the search distance</source>
+        <translation>chyba referenčnej jazdy: koncový spínač nenájdený v hľadanej vzdialenosti</translation>
+    </message>
+    <message>
+        <source>unknown error {0}</source>
+        <translation>neznáma chyba {0}</translation>
+    </message>
+    <message>
+        <source>unknown alarm {0}</source>
+        <translation>neznámy alarm {0}</translation>
+    </message>
+</context>
+<context>
+    <name>HandZeroing</name>
+    <message>
+        <source>Not released: {0}</source>
+        <extracomment>The motors were released for zeroing by hand and nothing was sent since.</extracomment>
+        <translation>Neuvoľnené: {0}</translation>
+    </message>
+    <message>
+        <source>Motors released: turn the axes by hand to the zero, then Zero here</source>
+        <translation>Motory uvoľnené: otočte osi rukou do nuly, potom Nula tu</translation>
+    </message>
+    <message>
+        <source>Not zeroed: release the motors first</source>
+        <translation>Nevynulované: najprv uvoľnite motory</translation>
+    </message>
+    <message>
+        <source>Not zeroed: {0}</source>
+        <translation>Nevynulované: {0}</translation>
+    </message>
+    <message>
+        <source>Zeroed by hand: X is the board radius, {0} mm</source>
+        <translation>Vynulované ručne: X je polomer dosky, {0} mm</translation>
     </message>
 </context>
 <context>
@@ -2390,6 +2831,14 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Úloha {0} dokončená: operácií {1} za {2} s</translation>
     </message>
     <message>
+        <source>, of which {0} s waiting for you</source>
+        <translation>, z toho {0} s čakania na vás</translation>
+    </message>
+    <message>
+        <source>Job {0} not started: it moves {1} relative to where the machine stands (G91 or G92 before any absolute move), and was checked from 0; the machine is at {2}. Home it or move it to 0 first.</source>
+        <translation>Úloha {0} nespustená: pohybuje {1} relatívne k miestu, kde stroj stojí (G91 alebo G92 pred prvým absolútnym pohybom), a bola skontrolovaná od 0; stroj je na {2}. Najprv vykonajte referenčnú jazdu alebo ho presuňte na 0.</translation>
+    </message>
+    <message>
         <source>not connected</source>
         <translation>nepripojené</translation>
     </message>
@@ -2634,6 +3083,10 @@ Načítať ako:</translation>
         <translation>Okamžite zastaviť stroj a ukončiť úlohu</translation>
     </message>
     <message>
+        <source>Time since the job started, prompts and pauses included; of it, how long the machine waited for you</source>
+        <translation>Čas od spustenia úlohy vrátane výziev a prestávok; z toho, ako dlho stroj čakal na vás</translation>
+    </message>
+    <message>
         <source>Go on after the last operation the machine completed; none is repeated</source>
         <translation>Pokračovať za poslednou operáciou, ktorú stroj dokončil; nič sa neopakuje</translation>
     </message>
@@ -2821,6 +3274,10 @@ Načítať ako:</translation>
     <message>
         <source>elapsed {0}</source>
         <translation>uplynulo {0}</translation>
+    </message>
+    <message>
+        <source>(of which {0} waiting for you)</source>
+        <translation>(z toho {0} čakania na vás)</translation>
     </message>
     <message>
         <source>left {0}</source>
@@ -3263,6 +3720,38 @@ Načítať ako:</translation>
     </message>
 </context>
 <context>
+    <name>MotionGate</name>
+    <message>
+        <source>Motion refused: {0}</source>
+        <translation>Pohyb odmietnutý: {0}</translation>
+    </message>
+    <message>
+        <source>there is no axis {0}</source>
+        <extracomment>Targets this close past a limit are rounding (a move to exactly the travel end).</extracomment>
+        <translation>os {0} neexistuje</translation>
+    </message>
+    <message>
+        <source>{0} {1} is not a position</source>
+        <translation>{0} {1} nie je poloha</translation>
+    </message>
+    <message>
+        <source>{0} {1} {2} is outside the travel {3}…{4} {2}</source>
+        <translation>{0} {1} {2} je mimo pojazd {3}…{4} {2}</translation>
+    </message>
+    <message>
+        <source>{0} {1} is not a distance</source>
+        <translation>{0} {1} nie je vzdialenosť</translation>
+    </message>
+    <message>
+        <source>{0} {1} from {2}: {3}</source>
+        <translation>{0} {1} z {2}: {3}</translation>
+    </message>
+    <message>
+        <source>the motors are not released: {0}</source>
+        <translation>motory nie sú uvoľnené: {0}</translation>
+    </message>
+</context>
+<context>
     <name>NumberField</name>
     <message>
         <source>Allowed: {0}</source>
@@ -3553,8 +4042,28 @@ sa nevykresľuje</translation>
         <translation>Pohyb odmietnutý: {0}</translation>
     </message>
     <message>
-        <source>The device is silent ({0}){1}; asking it every {2} s</source>
+        <source>jogging</source>
         <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A device silent with its port open, or not answering since the link opened, is asked its dialect&apos;s harmless question this often: the devices that speak only when asked (usb3, the drill) would otherwise never be heard again once the line works. A tick this much later than its period means the station itself was not running (a busy computer, a stalled event loop): that time is not counted as the device&apos;s silence. :meth:`MachineSession._recovery_verdict`&apos;s &quot;not yet&quot;. A held jog ended without a release (dead-man or travel end): forget what is held. The device answers again after a silence with its port open: None when its state is intact (nothing can have been lost), else what does not match (a reset, a position). Since when the device has been silent with its port open, once that was a lost link (None: it is not); and whether it has answered since. Whether a late tick&apos;s lateness is the station&apos;s own, not counted as the device&apos;s silence (set by dialects whose ticks come from a real-time timer).</extracomment>
+        <translation>ručný posuv</translation>
+    </message>
+    <message>
+        <source>stop command</source>
+        <translation>príkaz zastavenia</translation>
+    </message>
+    <message>
+        <source>{0} is at the end of its travel</source>
+        <translation>{0} je na konci rozsahu pojazdu</translation>
+    </message>
+    <message>
+        <source>relative moves</source>
+        <translation>relatívne pohyby</translation>
+    </message>
+    <message>
+        <source>absolute moves</source>
+        <translation>absolútne pohyby</translation>
+    </message>
+    <message>
+        <source>The device is silent ({0}){1}; asking it every {2} s</source>
         <translation>Zariadenie mlčí ({0}){1}; pýtam sa ho každých {2} s</translation>
     </message>
     <message>
@@ -3581,6 +4090,10 @@ sa nevykresľuje</translation>
         <source>Axis {0}: device refused a command</source>
         <extracomment>Telemetry keys and the factor from wire units to displayed units.</extracomment>
         <translation>Os {0}: zariadenie odmietlo príkaz</translation>
+    </message>
+    <message>
+        <source>Link lost: {0}</source>
+        <translation>Spojenie stratené: {0}</translation>
     </message>
 </context>
 <context>
@@ -3650,13 +4163,33 @@ sa nevykresľuje</translation>
         <source>Encoder position</source>
         <translation>Poloha enkodéra</translation>
     </message>
+    <message>
+        <source>{0} must be within {1}…{2} {3}</source>
+        <translation>{0} musí byť v rozsahu {1}…{2} {3}</translation>
+    </message>
+    <message>
+        <source>{0} must be a power of two</source>
+        <translation>{0} musí byť mocnina dvoch</translation>
+    </message>
 </context>
 <context>
     <name>StageSession</name>
     <message>
-        <source>nothing it reports shows whether it was switched off meanwhile</source>
+        <source>Not written: {0} {1}</source>
         <extracomment>What the info panel shows; each is asked for at least once a second. Until the stage&apos;s own dynamics are read: its documented defaults (docs/protocols.md §1.4). Periods between a frame leaving and its effect being seen (frame out, echo back), on top of the braking distance when a jog is turned into a stop at the travel end. A jog stopped at the travel&apos;s end stops this far inside it: the stage&apos;s end switches sit at the travel&apos;s ends, and a jog is to stop before them, not on them. Echoes counted past a MOVE_ABS&apos;s frame before one is believed to answer a later frame. Echoes come back in order, one per valid frame, so a lost frame or echo only makes the count lag; the margin of one more covers a duplicated or stale echo. Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none). Every echoed position is judged against the moves sent (stopped when off them). Frames sent and echoes received since the link opened (see _check_moves). Per axis: the last MOVE_ABS sent and the frame count it went out with, until an echo of a later frame shows whether the stage received it.</extracomment>
+        <translation>Nezapísané: {0} {1}</translation>
+    </message>
+    <message>
+        <source>{0} jog ends before the travel&apos;s end, at {1} mm</source>
+        <translation>Ručný posuv {0} končí pred koncom pojazdu, na {1} mm</translation>
+    </message>
+    <message>
+        <source>nothing it reports shows whether it was switched off meanwhile</source>
         <translation>z ničoho, čo hlási, nie je poznať, či bolo medzitým vypnuté</translation>
+    </message>
+    <message>
+        <source>{0} {1}: refused, the device keeps {2}</source>
+        <translation>{0} {1}: odmietnuté, zariadenie ponecháva {2}</translation>
     </message>
 </context>
 <context>
@@ -3672,9 +4205,7 @@ sa nevykresľuje</translation>
     </message>
     <message>
         <source>none</source>
-        <extracomment>Subscriber variables in words (docs/protocols.md §1.5).
-----------
-A field as a widget or a test hands it over: text typed or chosen, or a number.</extracomment>
+        <extracomment>Subscriber variables in words (docs/protocols.md §1.5).</extracomment>
         <translation>žiadna</translation>
     </message>
     <message>
@@ -3724,6 +4255,51 @@ A field as a widget or a test hands it over: text typed or chosen, or a number.<
     <message>
         <source>unknown subscriber</source>
         <translation>neznámy odberateľ</translation>
+    </message>
+    <message>
+        <source>charger</source>
+        <extracomment>A field as a widget or a test hands it over: text typed or chosen, or a number. The device flags&apos; bits in words.</extracomment>
+        <translation>nabíjačka</translation>
+    </message>
+    <message>
+        <source>USB</source>
+        <translation>USB</translation>
+    </message>
+    <message>
+        <source>low battery</source>
+        <translation>slabá batéria</translation>
+    </message>
+    <message>
+        <source>sleeping</source>
+        <translation>spí</translation>
+    </message>
+    <message>
+        <source>data session</source>
+        <translation>dátová relácia</translation>
+    </message>
+    <message>
+        <source>slow</source>
+        <translation>pomaly</translation>
+    </message>
+    <message>
+        <source>fast</source>
+        <translation>rýchlo</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vyp</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zap</translation>
+    </message>
+    <message>
+        <source>pos</source>
+        <translation>poloha</translation>
+    </message>
+    <message>
+        <source>vel</source>
+        <translation>rýchlosť</translation>
     </message>
 </context>
 <context>
@@ -3803,6 +4379,11 @@ A field as a widget or a test hands it over: text typed or chosen, or a number.<
     <message>
         <source>{0} — retrying in {1} s</source>
         <translation>{0} — nový pokus o {1} s</translation>
+    </message>
+    <message>
+        <source>Internal error ({0}: {1}); machine stopped</source>
+        <extracomment>``stepdeck NAME …`` runs module&apos;s ``main(argv) -&gt; int`` with the rest of the command line. Qt platforms with no screen to ask on: there, a missing choice is refused, not guessed.</extracomment>
+        <translation>Vnútorná chyba ({0}: {1}); stroj zastavený</translation>
     </message>
 </context>
 <context>
@@ -4346,6 +4927,46 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
     <message>
         <source>The unit moves in whole steps; top speed at this step size {0} mm/s</source>
         <translation>Jednotka sa pohybuje po celých krokoch; najvyššia rýchlosť pri tomto kroku {0} mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>Usb3Session</name>
+    <message>
+        <source>{0}: {1} mm is less than one step</source>
+        <extracomment>How far ahead of the key a jog keeps the axis, in seconds of travel at top rate. An axis that has not reported for this long after a report has stopped. Seconds without any reply before the unit is asked ``G;``, then late (amber), then lost. An axis stopped at an end switch: axis index, &quot;low&quot; or &quot;high&quot;, position in mm. The unit answered ``?;`` and an axis never left where its move began: the move was the command it could not read. Axis index, position in mm. ``C;`` was sent and the axis has not reported since: its next report is a new zero. Asked where it stands (a move of nothing) and not answered yet: its next report is where it stands, not a motion. Where the jog leads sent so far take each axis (None: from its position). Per axis: the count the moves sent are heading for, their direction and when the last was sent (None: no move of the station&apos;s under way). Per axis: the count it stood at when a move was sent to it at rest (None: none). Station-clock time of the unit&apos;s last ``?;`` (None: none on this link). The direction register as the station last set it (``D``). Station-clock time of each axis&apos;s last position report. Per axis, the path (in counts) of the moves sent that the reports must follow. After a silence: per axis, the counts the unit may stand at (from where it was to where the moves sent take it), and whether it has been asked where it stands. Each axis&apos;s count when the silence began (what it answers if nothing sent meanwhile ran). Which settings reports came since the link opened (the first always counts).</extracomment>
+        <translation>{0}: {1} mm je menej ako jeden krok</translation>
+    </message>
+    <message>
+        <source>Nothing to move: every distance is less than one step</source>
+        <translation>Nie je čím pohnúť: každá vzdialenosť je menšia ako jeden krok</translation>
+    </message>
+    <message>
+        <source>This unit has no stop command: it finishes its move</source>
+        <translation>Táto jednotka nemá príkaz zastavenia: dokončí svoj pohyb</translation>
+    </message>
+    <message>
+        <source>{0} {1} mm, {2} counts</source>
+        <translation>{0} {1} mm, {2} dielikov</translation>
+    </message>
+    <message>
+        <source>{0} stopped at its high end switch at {1} mm, {2} mm short of its target</source>
+        <translation>{0} sa zastavila na hornom koncovom spínači na {1} mm, {2} mm pred cieľom</translation>
+    </message>
+    <message>
+        <source>{0} stopped at its low end switch at {1} mm, {2} mm short of its target</source>
+        <translation>{0} sa zastavila na dolnom koncovom spínači na {1} mm, {2} mm pred cieľom</translation>
+    </message>
+    <message>
+        <source>The unit could not read the move of {0} (it answered ?;) and did not move it: {0} stands at {1} mm</source>
+        <translation>Jednotka neprečítala pohyb {0} (odpovedala ?;) a nepohla ňou: {0} stojí na {1} mm</translation>
+    </message>
+    <message>
+        <source>Garbage from the unit dropped: {0}</source>
+        <translation>Nezmyselné dáta z jednotky zahodené: {0}</translation>
+    </message>
+    <message>
+        <source>The unit did not understand a command (?;)</source>
+        <translation>Jednotka nerozumela príkazu (?;)</translation>
     </message>
 </context>
 </TS>

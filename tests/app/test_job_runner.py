@@ -116,11 +116,13 @@ def test_pause_lets_the_current_move_finish_and_nothing_starts_until_resume(
     assert runner.done == 4  # the move under way was finished, not cut
     sent = executed_moves(connected)
     assert sent == expected_moves(prog.operations[:4])
-    elapsed_at_pause = runner.elapsed_s
+    elapsed_at_pause, waiting_at_pause = runner.elapsed_s, runner.waiting_s
     connected.run(10.0)
     assert executed_moves(connected) == sent
     assert runner.state is JobState.PAUSED and runner.done == 4
-    assert runner.elapsed_s == elapsed_at_pause  # paused time is not the job's
+    # The wall clock goes on while paused, and the pause is told apart as waiting.
+    assert runner.elapsed_s == pytest.approx(elapsed_at_pause + 10.0, abs=0.02)
+    assert runner.waiting_s == pytest.approx(waiting_at_pause + 10.0, abs=0.02)
 
     runner.resume()
     connected.run_until(lambda: finished(runner), timeout=120)
@@ -204,9 +206,11 @@ def test_a_wait_holds_the_job_until_the_operator_confirms(
     runner.start()
     connected.run_until(lambda: runner.state is JobState.WAITING)
     assert asked == ["load the sample"] and runner.done == 1
-    elapsed = runner.elapsed_s
+    elapsed, waiting = runner.elapsed_s, runner.waiting_s
     connected.run(20.0)
-    assert runner.state is JobState.WAITING and runner.elapsed_s == elapsed
+    assert runner.state is JobState.WAITING
+    assert runner.elapsed_s == pytest.approx(elapsed + 20.0, abs=0.02)  # the prompt's time counts
+    assert runner.waiting_s == pytest.approx(waiting + 20.0, abs=0.02)  # told apart as waiting
     assert executed_moves(connected) == expected_moves(prog.operations[:1])
 
     runner.confirm()

@@ -292,6 +292,40 @@ def test_wait_shows_the_prompt_and_continue_resumes(
     assert [a.position_um for a in harness.emulator.axes] == [40_000.0, 40_000.0]
 
 
+def test_elapsed_and_done_in_count_the_prompt_and_tell_the_waiting_apart(
+    qtbot: QtBot, harness: StationHarness, dock: JobsDock, tmp_path: Path
+) -> None:
+    """A job that stood 10 s at a prompt took 10 s longer: "elapsed" and "done in" are the
+    wall clock's, and the waiting is said apart; "left" stays the machine's time."""
+    connected(harness)
+    dock.open_path(write(tmp_path, "probe.csv", "5, 5\nwait: swap the probe\n7.5, 5\n"))
+    runner = dock.runner
+    qtbot.mouseClick(dock.run_button, LEFT)
+    harness.run_until(lambda: runner.state is JobState.WAITING, timeout=60)
+    harness.run(10.0)
+    running = runner.running_s
+    assert runner.waiting_s >= 10.0
+    qtbot.mouseClick(dock.continue_button, LEFT)
+    harness.run_until(lambda: runner.state is JobState.DONE, timeout=60)
+    harness.run(1.0)
+    assert runner.state is JobState.DONE
+    waited = runner.waiting_s
+    assert 10.0 <= waited < 10.5
+    assert runner.elapsed_s == pytest.approx(runner.running_s + waited)
+    assert runner.running_s > running  # the last move ran after the prompt
+    shown = dock.elapsed_label.text()
+    assert shown == (
+        f"elapsed {clock_text(runner.elapsed_s)} (of which {clock_text(waited)} waiting for you)"
+    ), shown
+    done = [line for line in messages(dock).splitlines() if "done:" in line][-1]
+    assert done.endswith(f"in {runner.elapsed_s:.1f} s, of which {waited:.1f} s waiting for you"), (
+        done
+    )
+    assert dock.eta_label.text() == "left 00:00"
+    harness.run(5.0)  # the clock stops with the job
+    assert dock.elapsed_label.text() == shown
+
+
 def test_clock_text() -> None:
     assert clock_text(0) == "00:00"
     assert clock_text(75.4) == "01:15"

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from PySide6.QtCore import QCoreApplication, QElapsedTimer, QObject, QTimer
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QProgressBar, QPushButton, QVBoxLayout
 
+from app.jobs.run.progress import WAITING_SHOWN_S
 from app.jobs.run.runner import JobRunner, JobState
 from widgets.jobs.preview import ACTIVE_STATES
 from widgets.retranslate import Maker, Texts
@@ -148,6 +149,14 @@ class RunControls(QObject):
         self.elapsed_label = QLabel()
         self.elapsed_label.setObjectName("job_elapsed")
         self.elapsed_label.setFont(monospace_font())
+        self._texts.set(
+            self.elapsed_label.setToolTip,
+            lambda: QCoreApplication.translate(
+                "JobsDock",
+                "Time since the job started, prompts and pauses included; "
+                "of it, how long the machine waited for you",
+            ),
+        )
         self.eta_label = QLabel()
         self.eta_label.setObjectName("job_eta")
         self.eta_label.setFont(monospace_font())
@@ -250,9 +259,13 @@ class RunControls(QObject):
 
     def set_times(self, elapsed_s: float | None, remaining_s: float | None) -> None:
         self._times = (elapsed_s, remaining_s)
-        self.elapsed_label.setText(
-            QCoreApplication.translate("JobsDock", "elapsed {0}").format(clock_text(elapsed_s))
-        )
+        text = QCoreApplication.translate("JobsDock", "elapsed {0}").format(clock_text(elapsed_s))
+        waiting = self._runner.waiting_s if elapsed_s else 0.0
+        if waiting >= WAITING_SHOWN_S:
+            text += " " + QCoreApplication.translate(
+                "JobsDock", "(of which {0} waiting for you)"
+            ).format(clock_text(waiting))
+        self.elapsed_label.setText(text)
         self.eta_label.setText(
             QCoreApplication.translate("JobsDock", "left {0}").format(clock_text(remaining_s))
         )

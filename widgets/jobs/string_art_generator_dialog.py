@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QStandardPaths, Qt, Signal
-from PySide6.QtGui import QCloseEvent, QImage, QPixmap
+from PySide6.QtGui import QCloseEvent, QImage, QPixmap, QResizeEvent
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -113,6 +113,29 @@ def grey_pixmap(grey: np.ndarray, size: int) -> QPixmap:
     )
 
 
+class GrowingLabel(QLabel):
+    """A word-wrapped label that asks its layout for the height its text needs.
+
+    A wrapped label's height depends on its width, which a dialog's minimum size
+    does not take in: the status growing to two lines after Generate took its
+    line from the fixed-size pictures, and the caption was drawn over both.
+    """
+
+    def setText(self, text: str) -> None:
+        super().setText(text)
+        self._ask_height()
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        super().resizeEvent(event)
+        self._ask_height()
+
+    def _ask_height(self) -> None:
+        if self.width() > 0:
+            need = self.heightForWidth(self.width())
+            if need > 0 and need != self.minimumHeight():
+                self.setMinimumHeight(need)
+
+
 class StringArtGeneratorDialog(QDialog):
     """Photo, board, budget, thread, skip → Generate (Cancel) → Export… / Load as job."""
 
@@ -181,7 +204,7 @@ class StringArtGeneratorDialog(QDialog):
         self.progress.setObjectName("sa_progress")
         self.progress.setRange(0, 1)
         self.progress.setValue(0)
-        self.status = QLabel(self.tr("Choose a photo"))
+        self.status = GrowingLabel(self.tr("Choose a photo"))
         self.status.setObjectName("sa_status")
         self.status.setWordWrap(True)
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)

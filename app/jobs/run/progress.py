@@ -3,9 +3,12 @@
 A streaming job answers a line every millisecond or so; the views hear of
 its progress at most every :data:`PROGRESS_INTERVAL_MS` on a real-time
 station (and with every state change), so a thousand answered lines a second
-cost the GUI thirty redraws, not a thousand.  The clock counts only the time
-the job runs (paused and waiting stretches are not the job's), and the ETA
-is the dry-run estimate's time still to go after the operations done.
+cost the GUI thirty redraws, not a thousand.  The elapsed time is the wall
+clock's from the run's start to its end, prompts and pauses included (what the
+operator lived through: a drill job of 24 s said "00:14" when it left out its
+bit changes); how much of it the machine stood waiting for the operator is
+told apart.  The ETA is the dry-run estimate's machine time still to go after
+the operations done.
 
 The runner owns the signals and the states; this keeps the figures and says
 when to tell them (:class:`JobProgress`).  A streaming driver paces its
@@ -23,6 +26,8 @@ from app.jobs.program import Program
 from app.station import Station
 
 ETA_INTERVAL_MS = 1000
+#: Waiting shorter than this is not worth a word (a prompt answered at once).
+WAITING_SHOWN_S = 0.5
 #: A streaming job answers a line every millisecond or so: the views hear of progress at
 #: most this often (a real-time station), never once per line.
 PROGRESS_INTERVAL_MS = 33
@@ -51,11 +56,14 @@ class JobProgress(QObject):
         self.done = 0  # operations [0, done) are complete
         self.executed = 0  # operations [0, executed) are reported run by the machine
         self.estimate: Estimate | None = None
-        #: The job is done: nothing is left, also when the driver ended past the last
-        #: report the estimate counted (the drill's park).
-        self.finished = False
+        #: The job is done: nothing is left, whatever was reported last.
+        self.ended = False
+        self._eta_told_at = 0.0
         self._elapsed_before = 0.0
         self._running_since: float | None = None
+        #: Station-clock times the run began and ended (None: not begun / not ended).
+        self._started_at: float | None = None
+        self._ended_at: float | None = None
         self._eta_timer = QTimer(self)
         self._eta_timer.setInterval(ETA_INTERVAL_MS)
         self._eta_timer.timeout.connect(self.emit_eta)
@@ -81,6 +89,9 @@ class JobProgress(QObject):
         self.set_executed(index)
         self._elapsed_before = 0.0
         self._running_since = None
+        self._started_at = None
+        self._ended_at = None
+        self.ended = False
 
     def tell_all(self) -> None:
         """Both counts to the views now (a job loaded)."""
@@ -126,6 +137,7 @@ class JobProgress(QObject):
             self._progress_changed.emit(self.done, total)
         if self.executed != told_executed:
             self._executed_changed.emit(self.executed, total)
+        self._eta_on_the_clock()
 
     def flush(self) -> None:
         """Progress held back for the timer is told now (a state change comes with it)."""
@@ -134,36 +146,66 @@ class JobProgress(QObject):
 
     # --- time ------------------------------------------------------------------------
 
-    def clock(self, was_running: bool, runs: bool) -> None:
-        """The job's state changes between running and not: its clock follows."""
+    def clock(self, was_running: bool, runs: bool, active: bool = False) -> None:
+        """The job's state changes: its clocks follow.
+
+        ``runs``: operations are being sent; ``active``: the job owns the machine
+        (running, paused or waiting for the operator); the wall clock runs from
+        the first active state to the first that is not.
+        """
         now = self._station.clock.now()
         if was_running and not runs and self._running_since is not None:
             self._elapsed_before += now - self._running_since
             self._running_since = None
         elif runs and not was_running:
             self._running_since = now
-        if runs and self._station.realtime:
-            self._eta_timer.start()
-        elif not runs:
+        if (runs or active) and self._started_at is None:
+            self._started_at = now
+        elif not (runs or active) and self._started_at is not None and self._ended_at is None:
+            self._ended_at = now
+        if (runs or active) and self._station.realtime:
+            self._eta_timer.start()  # the elapsed time goes on while a prompt waits
+        elif not (runs or active):
             self._eta_timer.stop()
 
     @property
-    def elapsed_s(self) -> float:
+    def running_s(self) -> float:
         """Station-clock time spent running, without paused and waiting stretches."""
         if self._running_since is None:
             return self._elapsed_before
         return self._elapsed_before + self._station.clock.now() - self._running_since
 
     @property
+    def elapsed_s(self) -> float:
+        """Wall-clock (station-clock) time from the run's start to its end, or to now."""
+        if self._started_at is None:
+            return 0.0
+        end = self._ended_at if self._ended_at is not None else self._station.clock.now()
+        return max(0.0, end - self._started_at)
+
+    @property
+    def waiting_s(self) -> float:
+        """Of :attr:`elapsed_s`, the time the job stood: at a prompt, paused, held."""
+        return max(0.0, self.elapsed_s - self.running_s)
+
+    @property
     def remaining_s(self) -> float:
         """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        if self.estimate is None or self.finished:
-            return 0.0
+        if self.estimate is None or self.ended:
+            return 0.0  # done is done, also when the driver ended past the last report (park)
         return self.estimate.remaining_after(self.done)
 
     def emit_eta(self) -> None:
         """Tell the views elapsed and remaining time (a timer calls this every second)."""
+        self._eta_told_at = self._station.clock.now()
         self._eta_changed.emit(self.elapsed_s, self.remaining_s)
+
+    def _eta_on_the_clock(self) -> None:
+        """On a station clock that is not real time (tests, screenshots) no timer ticks:
+        progress tells the time once per second of that clock instead."""
+        if not self._station.realtime and self._started_at is not None:
+            if self._station.clock.now() - self._eta_told_at >= ETA_INTERVAL_MS / 1000:
+                self.emit_eta()
 
 
 def estimate_inputs(station: Station) -> Callable[[Program], Estimate]:

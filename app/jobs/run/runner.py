@@ -34,7 +34,7 @@ from app.jobs.registration import Placement
 from app.jobs.run.checkpoint_keeper import CheckpointKeeper
 from app.jobs.run.driver import LINK_DOWN, JobDriver, ResumeChoice, UnsupportedOperation
 from app.jobs.run.drivers import driver_for
-from app.jobs.run.progress import JobProgress, estimate_inputs
+from app.jobs.run.progress import WAITING_SHOWN_S, JobProgress, estimate_inputs
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
 from app.jobs.texts import number
 from app.machines.session import MachineSession
@@ -188,8 +188,20 @@ class JobRunner(QObject):
 
     @property
     def elapsed_s(self) -> float:
-        """Station-clock time spent running, without paused and waiting stretches."""
+        """Wall-clock time from the run's start to its end (or now), prompts included."""
         return self._progress.elapsed_s
+
+    @property
+    def running_s(self) -> float:
+        """Of :attr:`elapsed_s`, the time operations were under way: what the estimate
+        forecasts."""
+        return self._progress.running_s
+
+    @property
+    def waiting_s(self) -> float:
+        """Of :attr:`elapsed_s`, the time the job stood waiting for the operator
+        (at a prompt, paused, or on hold)."""
+        return self._progress.waiting_s
 
     @property
     def remaining_s(self) -> float:
@@ -573,11 +585,14 @@ class JobRunner(QObject):
         )  # drivers finish only once the machine is idle
         self._set_state(JobState.DONE)
         self.emit_eta()
-        self.message.emit(
-            QCoreApplication.translate("JobRunner", "Job {0} done: {1} operations in {2} s").format(
-                repr(self._program.name), len(self._program), number(self.elapsed_s, ".1f")
-            )
+        done = QCoreApplication.translate("JobRunner", "Job {0} done: {1} operations in {2} s")
+        done = done.format(
+            repr(self._program.name), len(self._program), number(self.elapsed_s, ".1f")
         )
+        if self.waiting_s >= WAITING_SHOWN_S:
+            done += QCoreApplication.translate("JobRunner", ", of which {0} s waiting for you")
+            done = done.format(number(self.waiting_s, ".1f"))
+        self.message.emit(done)
 
     # --- running -------------------------------------------------------------
 
@@ -615,14 +630,17 @@ class JobRunner(QObject):
         for name in program.start_relative:
             axis = next((i for i, a in enumerate(model.axes) if a.name == name), None)
             if axis is not None and abs(model.axes[axis].work_position) > START_TOLERANCE:
-                away.append(f"{name}{model.axes[axis].work_position:.3f}")
+                away.append(name + number(model.axes[axis].work_position, ".3f"))
         if not away:
             return False
         axes = ", ".join(program.start_relative)
         self.message.emit(
-            f"Job {program.name!r} not started: it moves {axes} relative to where the machine "
-            f"stands (G91 or G92 before any absolute move), and was checked from 0; the machine "
-            f"is at {' '.join(away)}. Home it or move it to 0 first."
+            QCoreApplication.translate(
+                "JobRunner",
+                "Job {0} not started: it moves {1} relative to where the machine stands "
+                "(G91 or G92 before any absolute move), and was checked from 0; the machine "
+                "is at {2}. Home it or move it to 0 first.",
+            ).format(repr(program.name), axes, " ".join(away))
         )
         return True
 
@@ -733,8 +751,8 @@ class JobRunner(QObject):
         self._paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
         runs = state in CLOCK_RUNS
-        self._progress.clock(was_running, runs)
-        self._progress.finished = state is JobState.DONE
+        self._progress.clock(was_running, runs, state in ACTIVE)
+        self._progress.ended = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.

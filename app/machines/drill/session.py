@@ -40,7 +40,7 @@ from collections import deque
 from collections.abc import Sequence
 from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
-from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
@@ -87,13 +87,13 @@ MAX_POSITION = 999_999
 
 #: What each procedure is called in messages.
 PROCEDURES = {
-    "N": "home",
-    "X": "move X",
-    "Y": "move Y",
-    "V": "drill",
-    "K": "pen down",
-    "Z": "pen up",
-    "P": "park",
+    "N": str(QT_TRANSLATE_NOOP("DrillSession", "home")),
+    "X": str(QT_TRANSLATE_NOOP("DrillSession", "move X")),
+    "Y": str(QT_TRANSLATE_NOOP("DrillSession", "move Y")),
+    "V": str(QT_TRANSLATE_NOOP("DrillSession", "drill")),
+    "K": str(QT_TRANSLATE_NOOP("DrillSession", "pen down")),
+    "Z": str(QT_TRANSLATE_NOOP("DrillSession", "pen up")),
+    "P": str(QT_TRANSLATE_NOOP("DrillSession", "park")),
 }
 
 
@@ -247,10 +247,14 @@ class DrillSession(MachineSession):
 
     def move_absolute(self, axis: int, position: float) -> bool:
         if not 0 <= axis < self.axis_count:
-            return self._unsupported(f"axis {axis + 1}")
+            return self._unsupported(
+                QCoreApplication.translate("DrillSession", "axis {0}").format(axis + 1)
+            )
         name = self.model.profile.axes[axis].name
         if name not in POSITION_LETTERS:
-            return self._unsupported(f"moves of {name}")
+            return self._unsupported(
+                QCoreApplication.translate("DrillSession", "moves of {0}").format(name)
+            )
         if self.gate.refuse(self.gate.refuse_target(axis, position)):
             return False
         return self._enqueue(Command(name, self.to_microsteps(axis, position)))
@@ -269,7 +273,9 @@ class DrillSession(MachineSession):
             return False
         name = self.model.profile.axes[axis].name
         if name not in POSITION_LETTERS:
-            return self._unsupported(f"moves of {name}")
+            return self._unsupported(
+                QCoreApplication.translate("DrillSession", "moves of {0}").format(name)
+            )
         microsteps = max(1, self.to_microsteps(axis, step))
         target = self._jog_target(axis, direction, microsteps)
         if target is None:
@@ -424,7 +430,11 @@ class DrillSession(MachineSession):
 
     def _refuse_line(self, line: str, reason: str) -> bool:
         self._refused_lines += 1
-        self.model.message.emit(f"Not sent: {line!r} is not a drill command ({reason})")
+        self.model.message.emit(
+            QCoreApplication.translate(
+                "DrillSession", "Not sent: {0} is not a drill command ({1})"
+            ).format(repr(line), reason)
+        )
         return False
 
     def why_refused(self, command: Command) -> str | None:
@@ -450,9 +460,11 @@ class DrillSession(MachineSession):
         """
         refusal = self.gate.refuse_target(axis, self.to_mm(axis, microsteps))
         if refusal is not None:
-            return f"Motion refused: {refusal}"
+            return QCoreApplication.translate("MotionGate", "Motion refused: {0}").format(refusal)
         if not 0 <= microsteps <= MAX_POSITION:
-            return f"Motion refused: {microsteps} is no drill position (0…{MAX_POSITION})"
+            return QCoreApplication.translate(
+                "DrillSession", "Motion refused: {0} is no drill position (0…{1})"
+            ).format(microsteps, MAX_POSITION)
         return None
 
     def _enqueue(self, command: Command) -> bool:
@@ -677,7 +689,11 @@ class DrillSession(MachineSession):
         for reply in self.decoder.feed(data):
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
-                self.model.message.emit(f"Garbage from the drill dropped: {reply.raw!r}")
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "DrillSession", "Garbage from the drill dropped: {0}"
+                    ).format(repr(reply.raw))
+                )
                 continue
             self.frameReceived.emit(reply, encode_reply(reply))
             self._device_answered()
@@ -692,9 +708,15 @@ class DrillSession(MachineSession):
         # names (a line corrupted on the way is named by its corrupted first letter).
         refused = reply.kind is ReplyKind.ERROR
         if command is None or (reply.letter != command.letter and not refused):
-            expected = f" (waiting for {command.letter})" if command is not None else ""
+            got = f"{reply.kind.value}{reply.letter}"
             self.model.message.emit(
-                f"Unexpected reply {reply.kind.value}{reply.letter} from the drill{expected}"
+                QCoreApplication.translate(
+                    "DrillSession", "Unexpected reply {0} from the drill (waiting for {1})"
+                ).format(got, command.letter)
+                if command is not None
+                else QCoreApplication.translate(
+                    "DrillSession", "Unexpected reply {0} from the drill"
+                ).format(got)
             )
             return
         text = command_text(command)
@@ -717,8 +739,13 @@ class DrillSession(MachineSession):
             self._clear()
             self._end_held_jog("refused")
             self._show_stopped()
-            self.model.message.emit(
-                f"The drill refused {text} ({PROCEDURES[command.letter]})"
-                + (f"; {dropped} queued command(s) dropped" if dropped else "")
-            )
+            procedure = QCoreApplication.translate("DrillSession", PROCEDURES[command.letter])
+            refused_text = QCoreApplication.translate(
+                "DrillSession", "The drill refused {0} ({1})"
+            ).format(text, procedure)
+            if dropped:
+                refused_text += QCoreApplication.translate(
+                    "DrillSession", "; {0} queued command(s) dropped"
+                ).format(dropped)
+            self.model.message.emit(refused_text)
             self.commandFailed.emit(text)

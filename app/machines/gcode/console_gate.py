@@ -11,6 +11,8 @@ is written only under the feeder's lock (see :mod:`app.machines.gcode.job_feed`)
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
+
 from app.machine import MachineModel
 from app.machines.gcode.line_targets import line_motion
 from app.machines.motion_gate import MotionGate, Refusal
@@ -57,16 +59,21 @@ class ConsoleGate:
             offset = 0.0 if motion.machine else model.axes[index].offset
             refusal = self._gate.refuse_target(index, target + offset)
             if refusal is not None:
-                return Refusal(f"{text.strip()!r} would move {refusal}")
+                return Refusal(
+                    QCoreApplication.translate("ConsoleGate", "{0} would move {1}").format(
+                        repr(text.strip()), refusal
+                    )
+                )
         return None
 
 
 def refusal_hint(line: str, code: int) -> str:
     """What the operator can do about a refusal the error's meaning alone does not explain."""
     if code == SETTING_DISABLED and line.replace(" ", "").upper().startswith("$H"):
-        return (
+        return QCoreApplication.translate(
+            "ConsoleGate",
             ". Homing is switched off on the board ($22=0, GRBL's default): with end "
             "switches fitted, send $22=1 from the console; without them, move the machine "
-            "to its origin by hand and set it there"
+            "to its origin by hand and set it there",
         )
     return ""

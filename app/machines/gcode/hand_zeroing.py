@@ -12,6 +12,9 @@ from __future__ import annotations
 
 from typing import Protocol
 
+from PySide6.QtCore import QCoreApplication
+
+from app.local_numbers import local_number
 from app.machine import MachineModel
 from app.machines.gcode.jogger import reports_moving
 from app.machines.motion_gate import MotionGate
@@ -83,13 +86,17 @@ class HandZeroing:
         session = self._session
         refusal = session.gate.refuse_release(self._busy())
         if refusal is not None:
-            session.model.message.emit(f"Not released: {refusal}")
+            session.model.message.emit(
+                QCoreApplication.translate("HandZeroing", "Not released: {0}").format(refusal)
+            )
             return False
         if not session.send_line("M18", "intent"):
             return False
         self.released = True
         session.model.message.emit(
-            "Motors released: turn the axes by hand to the zero, then Zero here"
+            QCoreApplication.translate(
+                "HandZeroing", "Motors released: turn the axes by hand to the zero, then Zero here"
+            )
         )
         return True
 
@@ -105,17 +112,25 @@ class HandZeroing:
         session = self._session
         model = session.model
         if not self.released:
-            model.message.emit("Not zeroed: release the motors first")
+            model.message.emit(
+                QCoreApplication.translate("HandZeroing", "Not zeroed: release the motors first")
+            )
             return False
         refusal = session.gate.refuse_release(self._busy())
         names = [a.name for a in model.profile.axes]
         if refusal is None and "X" in names:
             refusal = session.gate.refuse_target(names.index("X"), board_radius)
         if refusal is not None:
-            model.message.emit(f"Not zeroed: {refusal}")
+            model.message.emit(
+                QCoreApplication.translate("HandZeroing", "Not zeroed: {0}").format(refusal)
+            )
             return False
         words = " ".join(f"{name}{board_radius if name == 'X' else 0.0:.3f}" for name in names)
         if not session.send_line(f"G92 {words}", "intent"):
             return False
-        model.message.emit(f"Zeroed by hand: X is the board radius, {board_radius:g} mm")
+        model.message.emit(
+            QCoreApplication.translate(
+                "HandZeroing", "Zeroed by hand: X is the board radius, {0} mm"
+            ).format(local_number(board_radius))
+        )
         return True

@@ -60,6 +60,7 @@ from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
 from app.machines.gcode.jogger import GcodeJogger, reports_moving
 from app.machines.gcode.lines import SentLine as SentLine
 from app.machines.gcode.lost_answers import AnswersLost, LostAnswerWatch, StreamWaits, pauses
+from app.machines.gcode.meanings import alarm_meaning, error_meaning
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.motion_gate import Refusal
@@ -271,15 +272,27 @@ class GcodeSession(MachineSession):
         if origin == "console" and not confirmed:
             refusal = self.beyond_travel(line)
             if refusal is not None:
-                self.model.message.emit(f"Not sent without confirmation: {refusal}")
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "GcodeSession", "Not sent without confirmation: {0}"
+                    ).format(refusal)
+                )
                 return False
         try:
             raw = encode_line(line)
         except ValueError as exc:
-            self.model.message.emit(f"Not sent: {line!r} ({exc})")
+            self.model.message.emit(
+                QCoreApplication.translate("GcodeSession", "Not sent: {0} ({1})").format(
+                    repr(line), exc
+                )
+            )
             return False
         if not self.link.is_open:
-            self.model.message.emit(f"Not sent: {line!r} (not connected)")
+            self.model.message.emit(
+                QCoreApplication.translate("GcodeSession", "Not sent: {0} (not connected)").format(
+                    repr(line)
+                )
+            )
             return False
         # One hold from the serial to the notes: a job's line pulled on the reader thread
         # meanwhile goes wholly before or after this one (see app.machines.gcode.job_feed).
@@ -293,7 +306,11 @@ class GcodeSession(MachineSession):
                 problem = None
                 self.note_queued(line, origin)
         if problem is not None:
-            self.model.message.emit(f"Not sent: {line!r} ({problem})")
+            self.model.message.emit(
+                QCoreApplication.translate("GcodeSession", "Not sent: {0} ({1})").format(
+                    repr(line), problem
+                )
+            )
             return False
         self.pump()
         return True
@@ -634,7 +651,11 @@ class GcodeSession(MachineSession):
                 continue
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
-                self.model.message.emit(f"Garbage from the device dropped: {reply.raw!r}")
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "GcodeSession", "Garbage from the device dropped: {0}"
+                    ).format(repr(reply.raw))
+                )
                 continue
             self._last_heard = self.clock.now()
             if self.silent_since is not None and self._heard_again_at is None:
@@ -664,10 +685,10 @@ class GcodeSession(MachineSession):
                     self._apply_status(reply)
             elif isinstance(reply, AlarmReply):
                 self.envelope.release()  # stopped by itself; it may have lost its position
-                self.replyText.emit(f"ALARM:{reply.code} ({reply.meaning})")
+                self.replyText.emit(f"ALARM:{reply.code} ({alarm_meaning(reply.code)})")
                 self.model.message.emit(
                     QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
-                        reply.code, reply.meaning
+                        reply.code, alarm_meaning(reply.code)
                     )
                 )
                 self.tell_written(self.feeder.release())
@@ -685,7 +706,9 @@ class GcodeSession(MachineSession):
                     lost = verdict.lost + lost  # the feeder forgot them when it read the banner
                 if lost:
                     self.model.message.emit(
-                        f"The device reset: {len(lost)} unanswered line(s) were not run"
+                        QCoreApplication.translate(
+                            "GcodeSession", "The device reset: {0} unanswered line(s) were not run"
+                        ).format(len(lost))
                     )
             elif isinstance(reply, Feedback):
                 self.replyText.emit(reply.text)
@@ -699,7 +722,11 @@ class GcodeSession(MachineSession):
         The feeder holds the sending meanwhile; the stop takes back what is queued.
         """
         _log.error("G-code replies could not be read", exc_info=failure)
-        self.model.message.emit(f"The device's replies could not be read ({failure}): stopping")
+        self.model.message.emit(
+            QCoreApplication.translate(
+                "GcodeSession", "The device's replies could not be read ({0}): stopping"
+            ).format(failure)
+        )
         self.stop_all()
         self.tell_written(self.feeder.release())
 
@@ -716,7 +743,9 @@ class GcodeSession(MachineSession):
         """
         self._lost_answers.answer_heard()
         if entry is None:
-            self.model.message.emit("A reply arrived for no line (ignored)")
+            self.model.message.emit(
+                QCoreApplication.translate("GcodeSession", "A reply arrived for no line (ignored)")
+            )
             if error is not None:
                 self.tell_written(self.feeder.release())
             return
@@ -735,13 +764,16 @@ class GcodeSession(MachineSession):
         else:
             self.errors += 1
             self.envelope.release()  # the refused line runs not: the path is not known
-            self.replyText.emit(f"error:{error.code} ({error.meaning})  ← {sent.text}")
+            meaning = error_meaning(error.code)
+            self.replyText.emit(f"error:{error.code} ({meaning})  ← {sent.text}")
             if sent.origin != "job":
                 self.model.message.emit(
-                    f"{sent.text!r} refused: error {error.code}, {error.meaning}"
+                    QCoreApplication.translate(
+                        "GcodeSession", "{0} refused: error {1}, {2}"
+                    ).format(repr(sent.text), error.code, meaning)
                     + refusal_hint(sent.text, error.code)
                 )
-            self.lineFailed.emit(sent, error.code, error.meaning)
+            self.lineFailed.emit(sent, error.code, meaning)
             # Seen and handled (a failed job has taken back its queue): sending may go on.
             self.tell_written(self.feeder.release())
 
@@ -776,8 +808,11 @@ class GcodeSession(MachineSession):
         )
         if isinstance(verdict, StreamWaits):
             self.model.message.emit(
-                f"{verdict.count} line(s) unanswered while the board stands idle; "
-                "waiting for its answer (without Bf: in its reports it cannot show it has them)"
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "{0} line(s) unanswered while the board stands idle; waiting for its "
+                    "answer (without Bf: in its reports it cannot show it has them)",
+                ).format(verdict.count)
             )
         if not isinstance(verdict, AnswersLost):
             return
@@ -796,8 +831,11 @@ class GcodeSession(MachineSession):
             self.soft_reset()
             return
         self.model.message.emit(
-            f"{len(verdict.lines)} answer(s) from the board were lost on the way; it has "
-            "taken and run every line sent, so they count as answered"
+            QCoreApplication.translate(
+                "GcodeSession",
+                "{0} answer(s) from the board were lost on the way; it has taken and run "
+                "every line sent, so they count as answered",
+            ).format(len(verdict.lines))
         )
         advanced = False
         for sent in verdict.lines:

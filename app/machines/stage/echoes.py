@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from app.local_numbers import local_number
 from app.machine import MachineModel, ParameterState
 from app.machines.stage.parameters import BY_TYPE
 from protocol.clock import Clock
@@ -136,9 +137,13 @@ class StageEchoes:
         meta = BY_TYPE[parameter]
         if status == AxisStatus.PARAMETER_REJECTED or value != requested:
             self.model.set_parameter(axis, parameter, value, ParameterState.REFUSED)
-            kept = f"{meta.to_shown(value):.{meta.decimals}f} {meta.unit}".rstrip()
+            shown = local_number(meta.to_shown(value), f".{meta.decimals}f")
+            kept = f"{shown} {meta.unit}".rstrip()
+            label = QCoreApplication.translate("StageParameter", meta.label)
             self.model.message.emit(
-                f"{self.model.axes[axis].name} {meta.label}: refused, the device keeps {kept}"
+                QCoreApplication.translate(
+                    "StageSession", "{0} {1}: refused, the device keeps {2}"
+                ).format(self.model.axes[axis].name, label, kept)
             )
         else:
             self.model.set_parameter(axis, parameter, value, ParameterState.CONFIRMED)

@@ -9,6 +9,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from PySide6.QtCore import QCoreApplication
+
+from app.local_numbers import local_number
 from app.profiles import AxisProfile
 from protocol.stage.codec import EchoType
 
@@ -35,9 +38,20 @@ class StageParameter:
         """Why the device would refuse ``wire``, or None when it is acceptable."""
         if not self.wire_min <= wire <= self.wire_max:
             low, high = self.to_shown(self.wire_min), self.to_shown(self.wire_max)
-            return f"{self.label} must be within {low:g}…{high:g} {self.unit}".rstrip()
+            return (
+                QCoreApplication.translate("StageParameter", "{0} must be within {1}…{2} {3}")
+                .format(
+                    QCoreApplication.translate("StageParameter", self.label),
+                    local_number(low),
+                    local_number(high),
+                    self.unit,
+                )
+                .rstrip()
+            )
         if self.power_of_two and wire & (wire - 1):
-            return f"{self.label} must be a power of two"
+            return QCoreApplication.translate(
+                "StageParameter", "{0} must be a power of two"
+            ).format(QCoreApplication.translate("StageParameter", self.label))
         return None
 
 

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from PySide6.QtCore import QCoreApplication, QObject, QTimer
 
 from app.link import Link
+from app.local_numbers import local_number
 from app.machine import LinkState, MachineModel
 from app.machines.session import MachineSession
 from app.machines.stage.echoes import STATUS_TEXT as STATUS_TEXT  # re-exported for callers
@@ -230,7 +231,11 @@ class StageSession(MachineSession):
         if known is not None:
             reason = beyond_mechanics(known, value, self.model.profile.axes[axis])
             if reason is not None:
-                self.model.message.emit(f"Not written: {self.model.axes[axis].name} {reason}")
+                self.model.message.emit(
+                    QCoreApplication.translate("StageSession", "Not written: {0} {1}").format(
+                        self.model.axes[axis].name, reason
+                    )
+                )
                 return False
         self.echoes.expect_write(axis, parameter, value)
         self._urgent[axis].append(CommandPacket(write_command(parameter), value))
@@ -297,7 +302,9 @@ class StageSession(MachineSession):
                 else:
                     end = min(high, low + JOG_END_MARGIN_MM)
                 self.model.message.emit(
-                    f"{self.model.axes[axis].name} jog ends before the travel's end, at {end:g} mm"
+                    QCoreApplication.translate(
+                        "StageSession", "{0} jog ends before the travel's end, at {1} mm"
+                    ).format(self.model.axes[axis].name, local_number(end))
                 )
                 return CommandPacket(CommandId.MOVE_ABS, _um(end))
             return CommandPacket(CommandId.JOG, self._jog[axis])
@@ -384,7 +391,9 @@ class StageSession(MachineSession):
             self.model.set_link_state(LinkState.DISCONNECTED)
         else:
             self.model.set_link_state(LinkState.LOST, str(reason))
-            self.model.message.emit(f"Link lost: {reason}")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "Link lost: {0}").format(reason)
+            )
 
     def _check_health(self) -> None:
         now = self.clock.now()

@@ -55,9 +55,10 @@ import math
 from collections.abc import Sequence
 from typing import TypeVar
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
+from app.local_numbers import local_number
 from app.machine import LinkState, MachineModel
 from app.machines.envelope import Envelope
 from app.machines.session import PENDING, MachineSession
@@ -205,7 +206,9 @@ class Usb3Session(MachineSession):
         counts[axis] = nearest_reachable_count(delta, self.step_sizes[axis], self.threads[axis])
         if not counts[axis]:
             self.model.message.emit(
-                f"{self.model.axes[axis].name}: {delta:g} mm is less than one step"
+                QCoreApplication.translate(
+                    "Usb3Session", "{0}: {1} mm is less than one step"
+                ).format(self.model.axes[axis].name, local_number(delta))
             )
             return False
         self._send(*move_commands(counts))
@@ -227,7 +230,11 @@ class Usb3Session(MachineSession):
         for axis, delta in enumerate(deltas):
             counts[axis] = nearest_reachable_count(delta, self.step_sizes[axis], self.threads[axis])
         if not any(counts):
-            self.model.message.emit("Nothing to move: every distance is less than one step")
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "Usb3Session", "Nothing to move: every distance is less than one step"
+                )
+            )
             return False
         self._send(*move_commands(counts))
         return True
@@ -273,7 +280,11 @@ class Usb3Session(MachineSession):
         if self._stop_command:
             self._send(StopAll())
         else:
-            self.model.message.emit("This unit has no stop command: it finishes its move")
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "Usb3Session", "This unit has no stop command: it finishes its move"
+                )
+            )
 
     def zero_all(self) -> None:
         if self.link.is_open:
@@ -479,7 +490,9 @@ class Usb3Session(MachineSession):
         envelope = self._envelopes[axis]
         name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
         mm = count_to_mm(target - base, self.threads[axis])
-        label = f"{name} {mm:+.3f} mm, {target - base:+d} counts"
+        label = QCoreApplication.translate("Usb3Session", "{0} {1} mm, {2} counts").format(
+            name, local_number(mm, "+.3f"), f"{target - base:+d}"
+        )
         if fresh:
             if self._reported_at[axis] is None:
                 envelope.release()  # not heard on this link yet: where it starts is not known
@@ -549,9 +562,20 @@ class Usb3Session(MachineSession):
             which = "high" if sign > 0 else "low"
             position = count_to_mm(count, self.threads[axis])
             name = self.model.axes[axis].name
+            short = count_to_mm(abs(target - count), self.threads[axis])
+            stopped = (
+                QCoreApplication.translate(
+                    "Usb3Session",
+                    "{0} stopped at its high end switch at {1} mm, {2} mm short of its target",
+                )
+                if sign > 0
+                else QCoreApplication.translate(
+                    "Usb3Session",
+                    "{0} stopped at its low end switch at {1} mm, {2} mm short of its target",
+                )
+            )
             self.model.message.emit(
-                f"{name} stopped at its {which} end switch at {position:.3f} mm, "
-                f"{count_to_mm(abs(target - count), self.threads[axis]):.3f} mm short of its target"
+                stopped.format(name, local_number(position, ".3f"), local_number(short, ".3f"))
             )
             self.endSwitchHit.emit(axis, which, position)
 
@@ -571,8 +595,11 @@ class Usb3Session(MachineSession):
         position = count_to_mm(count, self.threads[axis])
         name = self.model.axes[axis].name
         self.model.message.emit(
-            f"The unit could not read the move of {name} (it answered ?;) and did not "
-            f"move it: {name} stands at {position:.3f} mm"
+            QCoreApplication.translate(
+                "Usb3Session",
+                "The unit could not read the move of {0} (it answered ?;) and did not "
+                "move it: {0} stands at {1} mm",
+            ).format(name, local_number(position, ".3f"))
         )
         self.moveRefused.emit(axis, position)
         return True
@@ -622,7 +649,9 @@ class Usb3Session(MachineSession):
             self.model.set_link_state(LinkState.DISCONNECTED)
         else:
             self.model.set_link_state(LinkState.LOST, str(reason))
-            self.model.message.emit(f"Link lost: {reason}")
+            self.model.message.emit(
+                QCoreApplication.translate("Session", "Link lost: {0}").format(reason)
+            )
 
     def _on_data(self, data: bytes) -> None:
         self._heard_unrecognised(data)  # kept until the device answers: whose words?
@@ -634,7 +663,11 @@ class Usb3Session(MachineSession):
                 self.not_understood += 1
             self.frameReceived.emit(reply, raw)
             if isinstance(reply, Rejected):
-                self.model.message.emit(f"Garbage from the unit dropped: {reply.raw!r}")
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "Usb3Session", "Garbage from the unit dropped: {0}"
+                    ).format(repr(reply.raw))
+                )
                 continue
             self._last_heard = self.clock.now()
             first = not self.device_answered
@@ -657,7 +690,11 @@ class Usb3Session(MachineSession):
                     self._refresh_positions()
                     self.settingsChanged.emit()
             elif isinstance(reply, NotUnderstood):
-                self.model.message.emit("The unit did not understand a command (?;)")
+                self.model.message.emit(
+                    QCoreApplication.translate(
+                        "Usb3Session", "The unit did not understand a command (?;)"
+                    )
+                )
                 self._refused_at = self._last_heard
                 self._ask_after_refusal()
             # Any word from the unit settles an axis left silent short of its target: a
