@@ -24,7 +24,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     # Split along their seams by other branches of #35 (the lead shrinks this at merge).
     "app/machines/gcode/session.py::GcodeSession": "jogger, lost-answer watch, console gate",
     "app/jobs/run/runner.py::JobRunner": "progress/ETA and checkpoint scheduling out",
-    "protocol/emulator/stage_firmware.py::StageFirmware": "locked getters as one snapshot",
     # Over the limits and not yet taken on by any branch.
     "app/jobs/run/gcode.py::GcodeDriver": "not yet taken on",
     "app/machines/drill/session.py::DrillSession": "not yet taken on",
