@@ -31,7 +31,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
     "app/telemetry.py::TelemetryRecorder": "not yet taken on",
     "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog": "not yet taken on",
-    "protocol/emulator/drill_firmware.py::DrillFirmware": "not yet taken on",
     "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
     "protocol/mechanism.py::Axis": "not yet taken on (the emulators and the estimates share it)",
     "app/jobs/formats/gcode/parser.py::Parser._words": "one G-code lexer in protocol/gcode/ (#35)",
