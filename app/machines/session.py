@@ -146,6 +146,10 @@ class MachineSession(QObject):
 
     # --- the dead-man: a held jog needs signs that it is still held -------------------
 
+    def forget_jog(self) -> None:
+        """The held arrows are let go (a stop, a lost link): nothing jogs until pressed anew."""
+        self._jog = [0] * self.axis_count
+
     def keep_jogging(self) -> None:
         """A sign that the held key or button is still held (a key repeat, a button poll)."""
         if any(self._jog):
@@ -208,7 +212,7 @@ class MachineSession(QObject):
     def device_answered(self) -> bool:
         return self._device_heard
 
-    def _await_device(self) -> None:
+    def await_device(self) -> None:
         """The port is open: motion stays locked until the device answers in this dialect."""
         self._device_heard = False
         self._awaiting_since = self.clock.now()
@@ -221,7 +225,7 @@ class MachineSession(QObject):
             LinkState.CONNECTING, f"{self.link.describe()} — waiting for the device…"
         )
 
-    def _device_answered(self, *, proof: bool = True) -> None:
+    def device_replied(self, *, proof: bool = True) -> None:
         """A valid reply in this dialect: the link is up (and back, after silence).
 
         ``proof``: the reply can show whether the device's state survived a
@@ -234,7 +238,7 @@ class MachineSession(QObject):
         elif self._silent_since is not None:
             self._answered_after_silence = True
             if proof:
-                self._check_recovery()
+                self.check_recovery()
         elif self.model.link_state is LinkState.STALE:
             # Replies are back before the link was given up: green again, nothing reopened.
             self.model.set_link_state(LinkState.CONNECTED, self.link.describe())
@@ -255,7 +259,7 @@ class MachineSession(QObject):
         N s", motion still allowed: a reply may only be late); past
         ``lost_after_s`` it is *lost* (red, :meth:`_lost_to_silence`).  Any
         valid reply before that turns it green again
-        (:meth:`_device_answered`).  Each dialect says what is due and when.
+        (:meth:`device_replied`).  Each dialect says what is due and when.
         """
         if not self._device_heard or self.model.link_state not in (
             LinkState.CONNECTED,
@@ -319,7 +323,7 @@ class MachineSession(QObject):
         self._probed_at = now
         self._probe()
 
-    def _check_recovery(self) -> None:
+    def check_recovery(self) -> None:
         """The device answered after a silence: back, once its state is known."""
         since = self._silent_since
         if since is None or not self._answered_after_silence:
@@ -362,7 +366,7 @@ class MachineSession(QObject):
             return 0.0
         return max(0.0, now - last - self.period_ms / 1000 - STALL_GRACE_S)
 
-    def _heard_unrecognised(self, raw: bytes) -> None:
+    def heard_unrecognised(self, raw: bytes) -> None:
         """Bytes from the device before it answered: kept to tell which machine it is."""
         if not self._device_heard:
             self._unrecognised += raw
@@ -372,7 +376,7 @@ class MachineSession(QObject):
         """Called each tick: a silent device is asked again, and one that never answered (or
         speaks another dialect) is named once."""
         self._probe_if_due(self.clock.now())
-        self._check_recovery()
+        self.check_recovery()
         since = self._awaiting_since
         if self._device_heard or since is None or self._told_no_answer:
             return
@@ -392,7 +396,7 @@ class MachineSession(QObject):
         self.model.set_link_state(LinkState.CONNECTING, detail)
         self.model.message.emit(f"{self.link.describe()}: {detail}")
 
-    def _stop_for_fault(self, fault: MotionFault) -> None:
+    def stop_for_fault(self, fault: MotionFault) -> None:
         """A report left the envelope of the moves sent: stop now, say why, tell the job."""
         self.stop_all()
         self.model.message.emit(fault.text)

@@ -22,7 +22,7 @@ from pathlib import Path
 from PySide6.QtCore import QStandardPaths
 
 from app.jobs.loaders import JobOptions, load_job
-from app.jobs.program import JobFileError
+from app.jobs.program import JobFileError, Program
 from app.jobs.run.runner import JobRunner
 from app.jobs.run.states import ACTIVE, JobState
 from app.scripting.errors import CheckpointWaiting, JobAborted, JobFailed, JobRefused
@@ -116,23 +116,73 @@ def run_job(
     except (JobFileError, OSError) as exc:
         raise JobRefused(str(exc)) from None
     runner = JobRunner(station, Path(checkpoint_dir or default_checkpoint_dir()))
-    said: list[str] = []
-    events: deque[tuple[str, tuple[object, ...]]] = deque()
-
-    def tell(text: str) -> None:
-        said.append(text)
-        if on_message is not None:
-            on_message(text)
-
-    runner.message.connect(lambda text: events.append(("message", (text,))))
-    runner.progressChanged.connect(lambda *a: events.append(("progress", a)))
-    runner.waitingForOperator.connect(lambda text: events.append(("prompt", (text,))))
-    runner.decisionNeeded.connect(lambda *a: events.append(("decision", a)))
+    watch = _JobWatch(runner, program, on_progress, on_prompt, on_decision, on_message)
     try:
+        watch.start(resume)
+        while True:
+            yield Wait(watch.something_to_do, 24 * 3600.0, "the job", motion=False)
+            if not watch.step():
+                break
+        return watch.result()
+    except (GeneratorExit, KeyboardInterrupt):
+        if runner.state in ACTIVE:
+            runner.abort()  # stops the machine; the checkpoint stays
+        raise
+    except BaseException:
+        if runner.state in ACTIVE:
+            runner.abort()
+        raise
+    finally:
+        runner.deleteLater()
+
+
+class _JobWatch:
+    """One job run from a script: the runner's signals queued, answered between two pumps.
+
+    The script's callbacks answer for the operator; what the runner said is
+    kept for the exception that ends a job that did not finish.
+    """
+
+    def __init__(
+        self,
+        runner: JobRunner,
+        program: Program,
+        on_progress: Callable[[Progress], None] | None,
+        on_prompt: Callable[[str], bool] | None,
+        on_decision: Callable[[str, str, str], bool] | None,
+        on_message: Callable[[str], None] | None,
+    ) -> None:
+        self.runner = runner
+        self.program = program
+        self.clock = runner.station.clock
+        self._on_progress = on_progress
+        self._on_prompt = on_prompt
+        self._on_decision = on_decision
+        self._on_message = on_message
+        self.said: list[str] = []
+        self.events: deque[tuple[str, tuple[object, ...]]] = deque()
+        self.resumed_from: int | None = None
+        self.progress_due = 0.0
+        self.paused_by_script = False
+        self.why: list[str] = []  # why this module ended the job, when it did
+        events = self.events
+        runner.message.connect(lambda text: events.append(("message", (text,))))
+        runner.progressChanged.connect(lambda *a: events.append(("progress", a)))
+        runner.waitingForOperator.connect(lambda text: events.append(("prompt", (text,))))
+        runner.decisionNeeded.connect(lambda *a: events.append(("decision", a)))
+
+    def tell(self, text: str) -> None:
+        self.said.append(text)
+        if self._on_message is not None:
+            self._on_message(text)
+
+    def start(self, resume: bool | None) -> None:
+        """Load and start (or resume from a checkpoint); refused: JobRefused, said why."""
+        runner, program = self.runner, self.program
         refused = runner.load(program)
-        _drain(events, tell)
+        _drain(self.events, self.tell)
         if refused:
-            raise JobRefused("\n".join(said) or f"{len(refused)} operation(s) refused")
+            raise JobRefused("\n".join(self.said) or f"{len(refused)} operation(s) refused")
         resumed_from = runner.resume_available
         if resumed_from is not None:
             if resume is None:
@@ -150,107 +200,110 @@ def run_job(
                 runner.start()
         else:
             runner.start()
-        _drain(events, tell)
+        self.resumed_from = resumed_from
+        _drain(self.events, self.tell)
         if runner.state not in ACTIVE:
-            raise JobRefused("\n".join(said[-3:]) or f"{program.name}: not started")
-        progress_due = [0.0]
-        clock = station.clock
-        paused_by_script = [False]
-        why: list[str] = []  # why this module ended the job, when it did
+            raise JobRefused("\n".join(self.said[-3:]) or f"{program.name}: not started")
 
-        def report() -> None:
-            if on_progress is None:
-                return
-            progress = Progress(
-                runner.done,
-                len(program),
-                runner.elapsed_s,
-                runner.remaining_s,
-                runner.state.value,
-            )
-            on_progress(progress)
-            for request in progress._requests:  # noqa: SLF001 - its own dataclass
-                if request == "pause":
-                    paused_by_script[0] = True
-                    runner.pause()
-                elif request == "resume":
-                    paused_by_script[0] = False
-                    runner.resume()
-                elif request == "abort":
+    def report(self) -> None:
+        if self._on_progress is None:
+            return
+        runner = self.runner
+        progress = Progress(
+            runner.done,
+            len(self.program),
+            runner.elapsed_s,
+            runner.remaining_s,
+            runner.state.value,
+        )
+        self._on_progress(progress)
+        for request in progress._requests:  # noqa: SLF001 - its own dataclass
+            if request == "pause":
+                self.paused_by_script = True
+                runner.pause()
+            elif request == "resume":
+                self.paused_by_script = False
+                runner.resume()
+            elif request == "abort":
+                runner.abort()
+
+    def something_to_do(self) -> bool:
+        return (
+            bool(self.events)
+            or self.runner.state not in ACTIVE
+            or self.clock.now() >= self.progress_due
+        )
+
+    def answer_events(self) -> None:
+        """What the runner said or asked since the last pump, answered for the operator."""
+        runner = self.runner
+        while self.events:
+            kind, args = self.events.popleft()
+            if kind == "message":
+                self.tell(str(args[0]))
+            elif kind == "progress":
+                self.report()
+            elif kind == "prompt":
+                if self._on_prompt is not None and self._on_prompt(str(args[0])):
+                    runner.confirm()
+                else:
+                    self.why.append(f"the job asked {str(args[0])!r} and no one answered")
                     runner.abort()
+            elif kind == "decision":
+                question, again, done = (str(a) for a in args)
+                if self._on_decision is None:
+                    self.why.append(f"{question} (no on_decision to answer it)")
+                    runner.abort()
+                else:
+                    runner.decide(again=self._on_decision(question, again, done))
 
-        def something_to_do() -> bool:
-            return bool(events) or runner.state not in ACTIVE or clock.now() >= progress_due[0]
+    def step(self) -> bool:
+        """One pump's worth: False once the job is over (done, failed, aborted, given up)."""
+        runner, clock = self.runner, self.clock
+        self.answer_events()
+        if runner.state not in ACTIVE:
+            return False
+        if clock.now() >= self.progress_due:
+            self.progress_due = clock.now() + PROGRESS_EVERY_S
+            self.report()
+        choice = runner.resume_choice
+        if runner.needs_operator and choice is not None and self._on_decision is not None:
+            # Only the operator can say where the job goes on; the script answers for them.
+            from_first = self._on_decision(
+                choice.text,
+                f"resume from operation {choice.first + 1}, the first not proven run",
+                f"resume after operation {choice.last}, the last sent",
+            )
+            runner.resume_at(choice.first if from_first else choice.last)
+            _drain(self.events, self.tell)
+        if runner.needs_operator:
+            # An alarm, a board that restarted, a resume line to pick: a script is no
+            # operator.  The job ends (failed, its checkpoint kept) with what was said,
+            # once, rather than resuming into the same pause again and again.
+            runner.give_up()
+            _drain(self.events, self.tell)
+            self.report()
+            return False
+        if (
+            runner.state is JobState.PAUSED
+            and not self.paused_by_script
+            and runner.question is None
+            and runner.station.model.motion_lock_reason() is None
+        ):
+            runner.resume()  # the link came back: carry on, the runner re-examines first
+        return True
 
-        while True:
-            yield Wait(something_to_do, 24 * 3600.0, "the job", motion=False)
-            while events:
-                kind, args = events.popleft()
-                if kind == "message":
-                    tell(str(args[0]))
-                elif kind == "progress":
-                    report()
-                elif kind == "prompt":
-                    if on_prompt is not None and on_prompt(str(args[0])):
-                        runner.confirm()
-                    else:
-                        why.append(f"the job asked {str(args[0])!r} and no one answered")
-                        runner.abort()
-                elif kind == "decision":
-                    question, again, done = (str(a) for a in args)
-                    if on_decision is None:
-                        why.append(f"{question} (no on_decision to answer it)")
-                        runner.abort()
-                    else:
-                        runner.decide(again=on_decision(question, again, done))
-            if runner.state not in ACTIVE:
-                break
-            if clock.now() >= progress_due[0]:
-                progress_due[0] = clock.now() + PROGRESS_EVERY_S
-                report()
-            choice = runner.resume_choice
-            if runner.needs_operator and choice is not None and on_decision is not None:
-                # Only the operator can say where the job goes on; the script answers for them.
-                from_first = on_decision(
-                    choice.text,
-                    f"resume from operation {choice.first + 1}, the first not proven run",
-                    f"resume after operation {choice.last}, the last sent",
-                )
-                runner.resume_at(choice.first if from_first else choice.last)
-                _drain(events, tell)
-            if runner.needs_operator:
-                # An alarm, a board that restarted, a resume line to pick: a script is no
-                # operator.  The job ends (failed, its checkpoint kept) with what was said,
-                # once, rather than resuming into the same pause again and again.
-                runner.give_up()
-                _drain(events, tell)
-                report()
-                break
-            if (
-                runner.state is JobState.PAUSED
-                and not paused_by_script[0]
-                and runner.question is None
-                and station.model.motion_lock_reason() is None
-            ):
-                runner.resume()  # the link came back: carry on, the runner re-examines first
-        _drain(events, tell)
+    def result(self) -> JobResult:
+        """The finished job's result, or the exception that says why it did not finish."""
+        _drain(self.events, self.tell)
+        runner, program = self.runner, self.program
         state = runner.state
         if state is JobState.DONE:
-            report()
-            return JobResult(program.name, len(program), runner.elapsed_s, resumed_from)
-        reason = "; ".join([*why, said[-1] if said else state.value])
+            self.report()
+            return JobResult(program.name, len(program), runner.elapsed_s, self.resumed_from)
+        reason = "; ".join([*self.why, self.said[-1] if self.said else state.value])
         error = JobFailed if state is JobState.FAILED else JobAborted
         raise error(reason, runner.done, len(program))
-    except (GeneratorExit, KeyboardInterrupt):
-        if runner.state in ACTIVE:
-            runner.abort()  # stops the machine; the checkpoint stays
-        raise
-    except BaseException:
-        if runner.state in ACTIVE:
-            runner.abort()
-        raise
-    finally:
-        runner.deleteLater()
 
 
 def _drain(events: deque[tuple[str, tuple[object, ...]]], tell: Callable[[str], None]) -> None:

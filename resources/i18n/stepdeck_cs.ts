@@ -1510,6 +1510,7 @@ Přesto odeslat do stroje?</translation>
     <name>GcodeSession</name>
     <message>
         <source>Stopped: {0} line(s) not run</source>
+        <extracomment>A stop resets the device this long after its hold at the latest, standing or not. The stop under way ends a jog: no &quot;lines not run&quot; message for it. When the hold went out, while its reset has not (None: no stop under way). A stop went out and no report since its reset has shown the board standing: on a silent line its hold and reset may both have been lost.</extracomment>
         <translation>Zastaveno: neprovedeno řádků: {0}</translation>
     </message>
     <message>
@@ -1551,6 +1552,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) of a line whose end never came (lost on the way) and waits for it: it stands idle, so it is reset, keeping its position, and what it ran is looked at again</source>
+        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).</extracomment>
         <translation>Deska drží {0} bajt(ů) řádku, jehož konec nikdy nepřišel (ztratil se cestou), a čeká na něj: stojí v klidu, proto je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
     </message>
     <message>
@@ -1575,7 +1577,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Not sent without confirmation: {0}</source>
-        <extracomment>No reply to status queries for this long: the link is lost (a job pauses) and the board is asked on until it answers. A board that answers a status query within milliseconds and then goes silent for seconds has stopped listening, but a few seconds can be a host&apos;s or a USB bridge&apos;s hiccup that loses nothing: a 2.5 s freeze of the board&apos;s replies mid-job must not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`). Status queries unanswered before the link is shown stale (amber), and the least time. A stop resets the device this long after its hold at the latest, standing or not. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. A status report since the last line was answered showed the machine idle. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. The stop under way ends a jog: no &quot;lines not run&quot; message for it. A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). What the followed job had as the last status report was read (its snapshot). A stop went out and no report since its reset has shown the board standing: on a silent line its hold and reset may both have been lost. After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
+        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Bez potvrzení neodesláno: {0}</translation>
     </message>
     <message>

@@ -136,7 +136,7 @@ def test_a_single_step_sends_the_one_line_the_pull_would_have_sent(
     feed.step()
     with feed.locked() as source:
         assert source is job and job.taken == 1
-    assert session.unanswered == 1 and session.queued == 0
+    assert session.streamer.in_flight == 1 and session.streamer.queued == 0
     assert not session.feeder.pulling  # a step lets nothing more go on the reader thread
     session.feeder.receive(b"ok\r\n")
     assert job.counted == 1 and job.taken == 1

@@ -535,7 +535,7 @@ def short_timeouts(monkeypatch: pytest.MonkeyPatch) -> None:
     # The drill's emulator runs 50 times faster than the station's timing table expects.
     monkeypatch.setattr("app.machines.drill.session.DONE_FACTOR", 0.2)
     monkeypatch.setattr("app.machines.drill.session.DONE_MARGIN_S", 0.8)
-    monkeypatch.setattr("app.machines.gcode.session.SILENCE_S", 1.2)
+    monkeypatch.setattr("app.machines.gcode.timing.SILENCE_S", 1.2)
     monkeypatch.setattr("app.machines.stage.session.LOST_AFTER_S", 1.2)
     monkeypatch.setattr("app.machines.usb3.session.POLL_AFTER_S", 0.5)
     monkeypatch.setattr("app.machines.usb3.session.STALE_AFTER_S", 0.9)

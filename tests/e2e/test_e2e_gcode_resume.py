@@ -136,7 +136,7 @@ def board(request: pytest.FixtureRequest, tmp_path: Path) -> Iterator[Board]:
 
 @pytest.fixture
 def short_timeouts(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr("app.machines.gcode.session.SILENCE_S", 1.2)
+    monkeypatch.setattr("app.machines.gcode.timing.SILENCE_S", 1.2)
 
 
 def run_with_fault(

@@ -100,12 +100,12 @@ def test_g8_03_a_relative_move_after_g92_moves_by_its_distance(board: StationHar
 def test_g8_03_the_travel_is_judged_in_machine_coordinates(board: StationHarness) -> None:
     session = board.gcode_session
     # Work X290 is machine X310: past the 300 mm travel.
-    refusal = session.beyond_travel("G0 X290")
+    refusal = session.console.beyond_travel("G0 X290")
     assert refusal is not None and "310.000" in refusal.reason
     # Work X-10 is machine X10: inside.
-    assert session.beyond_travel("G0 X-10") is None
-    assert session.beyond_travel("G91 G0 X285") is not None  # from machine 20: 305
-    assert session.beyond_travel("G53 G0 X290") is None  # G53: machine coordinates
+    assert session.console.beyond_travel("G0 X-10") is None
+    assert session.console.beyond_travel("G91 G0 X285") is not None  # from machine 20: 305
+    assert session.console.beyond_travel("G53 G0 X290") is None  # G53: machine coordinates
     assert not session.move_absolute(0, 301.0)
     assert session.move_absolute(0, 295.0)
     settle(board)

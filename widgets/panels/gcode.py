@@ -203,7 +203,7 @@ class GcodePanel(QWidget):
         if not text:
             return False
         session = self.session
-        refusal = session.beyond_travel(text) if session is not None else None
+        refusal = session.console.beyond_travel(text) if session is not None else None
         if session is not None and refusal is not None:
             answer = QMessageBox.warning(
                 self,

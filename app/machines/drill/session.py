@@ -655,7 +655,7 @@ class DrillSession(MachineSession):
         self._homed_here = False
         self.decoder.reset()
         self._clear()
-        self._await_device()
+        self.await_device()
         if self._autotick:
             self._timer.start()
         # The drill speaks only when spoken to: a letter that is no command is answered
@@ -685,7 +685,7 @@ class DrillSession(MachineSession):
             )
 
     def _on_data(self, data: bytes) -> None:
-        self._heard_unrecognised(data)  # kept until the device answers: whose words?
+        self.heard_unrecognised(data)  # kept until the device answers: whose words?
         for reply in self.decoder.feed(data):
             if isinstance(reply, Rejected):
                 self.frameReceived.emit(reply, reply.raw)
@@ -696,7 +696,7 @@ class DrillSession(MachineSession):
                 )
                 continue
             self.frameReceived.emit(reply, encode_reply(reply))
-            self._device_answered()
+            self.device_replied()
             if self._probes_out and reply.kind is ReplyKind.ERROR and reply.letter == PROBE_LETTER:
                 self._probes_out -= 1  # the answer to a probe, not to a command
                 continue

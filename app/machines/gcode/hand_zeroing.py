@@ -17,9 +17,11 @@ from PySide6.QtCore import QCoreApplication
 from app.local_numbers import local_number
 from app.machine import MachineModel
 from app.machines.gcode.jogger import reports_moving
+from app.machines.gcode.lines import SentLine
 from app.machines.motion_gate import MotionGate
 from app.profiles import GcodeSettings
 from protocol.gcode.codec import StatusReport
+from protocol.gcode.streaming import LineStreamer
 
 
 def zeroes_by_hand(settings: GcodeSettings) -> bool:
@@ -44,9 +46,7 @@ class ZeroingPort(Protocol):
     @property
     def jog_vector(self) -> tuple[int, ...]: ...
     @property
-    def queued(self) -> int: ...
-    @property
-    def unanswered(self) -> int: ...
+    def streamer(self) -> LineStreamer[SentLine]: ...
     def send_line(self, text: str, origin: str) -> bool: ...
 
 
@@ -71,7 +71,7 @@ class HandZeroing:
             return "a jog is held"
         status = session.status
         held = status is not None and status.state == "Hold"
-        if session.queued or session.unanswered or reports_moving(status) or held:
+        if not session.streamer.idle or reports_moving(status) or held:
             return "the machine is still running what it was sent"
         return None
 

@@ -72,6 +72,12 @@ class JobSource(Protocol):
         ...
 
 
+class WrittenLines(Protocol):
+    """Where lines written are told (the session's status follower follows their path)."""
+
+    def written(self, written: list[tuple[bytes, SentLine]]) -> None: ...
+
+
 class FeedPort(Protocol):
     """What a job's feed uses of its session (the G-code session)."""
 
@@ -81,9 +87,11 @@ class FeedPort(Protocol):
     def streamer(self) -> LineStreamer[SentLine]: ...
     @property
     def link(self) -> Link: ...
-    def next_serial(self) -> int: ...
+    @property
+    def serials(self) -> Iterator[int]: ...
     def note_queued(self, line: str, origin: str) -> None: ...
-    def tell_written(self, written: list[tuple[bytes, SentLine]]) -> None: ...
+    @property
+    def follower(self) -> WrittenLines: ...
     def pump(self) -> None: ...
 
 
@@ -136,7 +144,7 @@ class JobFeed:
         if len(raw) > streamer.capacity:
             return f"{len(raw)} bytes never fit the board's {streamer.rx_buffer}-byte buffer"
         session.note_queued(line, "job")
-        return raw, SentLine(session.next_serial(), line, "job", index)
+        return raw, SentLine(next(session.serials), line, "job", index)
 
     # --- the driver's side (GUI thread) ----------------------------------------------
 
@@ -147,7 +155,7 @@ class JobFeed:
         stops that again; only this lets the job go on.
         """
         if self._session.link.is_open:
-            self._session.tell_written(self._feeder.pull())
+            self._session.follower.written(self._feeder.pull())
 
     def hold(self) -> None:
         """Pull nothing more (what is queued stays: see :meth:`GcodeSession.discard_queued`)."""

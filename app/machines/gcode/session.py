@@ -28,28 +28,18 @@ motion stays within the tolerance of the path sent cannot be told apart.
 
 from __future__ import annotations
 
-import logging
 from collections.abc import Sequence
 from itertools import count
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
-from app.machine import LinkState, MachineModel
+from app.machine import MachineModel
 from app.machines.envelope import Envelope
-from app.machines.gcode.byte_count import ByteCount
+from app.machines.gcode import timing
 from app.machines.gcode.console_gate import SETTING_DISABLED as SETTING_DISABLED
-from app.machines.gcode.console_gate import ConsoleGate, refusal_hint
-from app.machines.gcode.feeder import (
-    STALE,
-    WROTE,
-    Answer,
-    BannerSeen,
-    LineFeeder,
-    Received,
-    ReportSeen,
-    merged,
-)
+from app.machines.gcode.console_gate import ConsoleGate
+from app.machines.gcode.feeder import LineFeeder, merged
 from app.machines.gcode.hand_zeroing import HandZeroing
 from app.machines.gcode.hand_zeroing import zeroes_by_hand as zeroes_by_hand
 from app.machines.gcode.job_feed import JobFeed, JobSource
@@ -57,15 +47,15 @@ from app.machines.gcode.jogger import JOG_BLOCKS_AHEAD as JOG_BLOCKS_AHEAD
 from app.machines.gcode.jogger import JOG_RESOLUTION as JOG_RESOLUTION
 from app.machines.gcode.jogger import JOG_SPEED_SHARE as JOG_SPEED_SHARE
 from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
-from app.machines.gcode.jogger import GcodeJogger, reports_moving
+from app.machines.gcode.jogger import GcodeJogger
 from app.machines.gcode.lines import SentLine as SentLine
-from app.machines.gcode.lost_answers import AnswersLost, LostAnswerWatch, StreamWaits, pauses
-from app.machines.gcode.meanings import alarm_meaning, error_meaning
-from app.machines.gcode.planned_path import PlannedPath
-from app.machines.gcode.stuck_line import StuckLineWatch
-from app.machines.motion_gate import Refusal
+from app.machines.gcode.link_events import LinkEvents
+from app.machines.gcode.reply_reader import ReplyReader
+from app.machines.gcode.reply_reader import reply_bytes as reply_bytes
+from app.machines.gcode.status_follower import StatusFollower
+from app.machines.gcode.stop_sequence import RESET_AFTER_S as RESET_AFTER_S
+from app.machines.gcode.stop_sequence import StopSequence
 from app.machines.session import PENDING, MachineSession
-from app.machines.supervision import MotionFault, fault_text
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
 from protocol.gcode.codec import (
@@ -73,48 +63,17 @@ from protocol.gcode.codec import (
     FEED_HOLD,
     SOFT_RESET,
     STATUS_QUERY,
-    AlarmReply,
-    Banner,
-    ErrorReply,
-    Feedback,
-    Ok,
-    Rejected,
     StatusReport,
     encode_line,
     make_decoder,
-    with_work_offset,
 )
 from protocol.gcode.streaming import LineStreamer, StreamMode
 
-_log = logging.getLogger(__name__)
-
-#: No reply to status queries for this long: the link is lost (a job pauses) and the board is
-#: asked on until it answers.  A board that answers a status query within milliseconds and
-#: then goes silent for seconds has stopped listening, but a few seconds can be a host's or a
-#: USB bridge's hiccup that loses nothing: a 2.5 s freeze of the board's replies mid-job must
-#: not pause the job (the lamp is amber meanwhile, after :data:`STALE_QUERIES`).
-SILENCE_S = 4.0
+#: No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`).
+SILENCE_S = timing.SILENCE_S
 #: Status queries unanswered before the link is shown stale (amber), and the least time.
 STALE_QUERIES = 3
 STALE_AFTER_MIN_S = 0.5
-#: A stop resets the device this long after its hold at the latest, standing or not.
-RESET_AFTER_S = 2.0
-
-
-def reply_bytes(reply: object) -> bytes:
-    """The reply as a line again, for the frame log (the decoder keeps no raw bytes)."""
-    if isinstance(reply, Ok):
-        return b"ok"
-    if isinstance(reply, ErrorReply):
-        return f"error:{reply.code}".encode()
-    if isinstance(reply, AlarmReply):
-        return f"ALARM:{reply.code}".encode()
-    if isinstance(reply, StatusReport):
-        fields = "|".join(f"{k}:{v}" for k, v in reply.fields.items())
-        return f"<{reply.state}|{fields}>".encode()
-    if isinstance(reply, Banner | Feedback):
-        return reply.text.encode("ascii", "replace")
-    return repr(reply).encode("ascii", "replace")
 
 
 class GcodeSession(MachineSession):
@@ -157,60 +116,51 @@ class GcodeSession(MachineSession):
         )
         self.status: StatusReport | None = None
         self.errors = 0
-        self._serials = count(1)
-        #: A status report since the last line was answered showed the machine idle.
-        self._seen_idle = True
-        self._status_asked_at: float | None = None  # an unanswered "?", for request_status
-        self._last_heard = clock.now()
+        #: Line serials, taken under the feeder's lock: both threads number lines.
+        self.serials = count(1)
+        #: A status report since the last line was answered showed the machine idle
+        #: (written under the feeder's lock: a job's line queued on the reader thread clears it).
+        self.seen_idle = True
+        self.status_asked_at: float | None = None  # an unanswered "?", for a status soon
+        self.last_heard = clock.now()
+        #: Silence shown amber: a few status queries (one each ``status_ms``) unanswered.
+        self.stale_after_s = max(STALE_AFTER_MIN_S, STALE_QUERIES * settings.status_ms / 1000)
         self.jogger = GcodeJogger(self, with_command="$J" in settings.words)
         self.console = ConsoleGate(model, self.gate)
         self.zeroing = HandZeroing(self)
-        self._lost_answers = LostAnswerWatch(settings.rx_buffer)
         #: Whether the last :attr:`reset` was the board's own (a banner nobody here asked
         #: for: its reset button, a power dip), not a soft reset the station sent.
         self.reset_by_device = False
         #: The board's work coordinate offset last reported (GRBL's WCO:), None before any.
         self.work_offset: tuple[float, ...] | None = None
-        #: The stop under way ends a jog: no "lines not run" message for it.
-        self._quiet_stop = False
-        self._reset_requested_at: float | None = None
-        self._dropped_by_stop = 0
-        self._planner_size = 0
-        #: A line cut on the wire, its start stuck in the board's buffer (stuck_line.py).
-        self._stuck = StuckLineWatch(clock, settings.rx_buffer)
-        #: The board's buffer against the bytes counted unanswered (byte_count.py).
-        self._byte_count = ByteCount(settings.rx_buffer)
         #: What the followed job had as the last status report was read (its snapshot).
         self.job_at_report: object = None
         # The path of the lines written, which every status report must follow.
-        self.envelope = Envelope(
+        self.envelope: Envelope = Envelope(
             [self.gate.limits(axis) for axis in range(self.axis_count)],
             model.profile.supervision_tolerance_mm,
             # At rest a report moves the anchor (a board that came back, say): only the lines
             # written are judged, and each is, through the report that shows it run.
             hold_at_rest=False,
         )
-        self._planned = PlannedPath(
-            self.envelope,
-            tuple(axis.name for axis in model.profile.axes),
-            grbl="$J" in settings.words,
-        )
-        #: A stop went out and no report since its reset has shown the board standing: on a
-        #: silent line its hold and reset may both have been lost.
-        self._stop_unconfirmed = False
         #: After a silence: when the board was first heard again, the first status report
         #: made after that had settled, and whether a banner came meanwhile.
-        self._heard_again_at: float | None = None
-        self._report_after_silence: StatusReport | None = None
-        self._restarted_in_silence = False
-        self._autotick = autotick
+        self.heard_again_at: float | None = None
+        self.report_after_silence: StatusReport | None = None
+        self.restarted_in_silence = False
+        # The parts along the session's seams; each holds this session (GUI thread).
+        self.stops = StopSequence(self)
+        self.follower = StatusFollower(self)
+        self.replies = ReplyReader(self)
+        self.links = LinkEvents(self)
+        self.autotick = autotick
         self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
-        self._timer = QTimer(self)
-        self._timer.setInterval(settings.status_ms)
-        self._timer.timeout.connect(self.tick)
-        link.connected.connect(self._on_connected)
-        link.disconnected.connect(self._on_disconnected)
-        link.received.connect(self._on_received)
+        self.timer = QTimer(self)
+        self.timer.setInterval(settings.status_ms)
+        self.timer.timeout.connect(self.tick)
+        link.connected.connect(self.links.connected)
+        link.disconnected.connect(self.links.disconnected)
+        link.received.connect(self.replies.on_received)
         link.set_tap(self.feeder.receive, merged)
 
     # --- state the widgets and the runner read ---------------------------------
@@ -224,11 +174,6 @@ class GcodeSession(MachineSession):
         return self.settings.status_ms
 
     @property
-    def stale_after_s(self) -> float:
-        """Silence shown amber: a few status queries (one each ``status_ms``) unanswered."""
-        return max(STALE_AFTER_MIN_S, STALE_QUERIES * self.settings.status_ms / 1000)
-
-    @property
     def machine_state(self) -> str:
         """The device's last reported state (Idle, Run, Hold, Home, Alarm), or "" before any."""
         return self.status.state if self.status is not None else ""
@@ -240,13 +185,9 @@ class GcodeSession(MachineSession):
         Both read in one hold: a job's line queued on the reader thread changes both.
         """
         with self.feeder.lock:
-            return self.streamer.idle and self._seen_idle
+            return self.streamer.idle and self.seen_idle
 
     # --- lines --------------------------------------------------------------------
-
-    def beyond_travel(self, text: str) -> Refusal | None:
-        """Why a console line would move the machine past its travel (:class:`ConsoleGate`)."""
-        return self.console.beyond_travel(text)
 
     def send_line(
         self,
@@ -270,7 +211,7 @@ class GcodeSession(MachineSession):
         with self.feeder.lock:
             self.zeroing.line_queued()
         if origin == "console" and not confirmed:
-            refusal = self.beyond_travel(line)
+            refusal = self.console.beyond_travel(line)
             if refusal is not None:
                 self.model.message.emit(
                     QCoreApplication.translate(
@@ -297,7 +238,7 @@ class GcodeSession(MachineSession):
         # One hold from the serial to the notes: a job's line pulled on the reader thread
         # meanwhile goes wholly before or after this one (see app.machines.gcode.job_feed).
         with self.feeder.lock:
-            sent = SentLine(self.next_serial(), line, origin, op_index)
+            sent = SentLine(next(self.serials), line, origin, op_index)
             try:
                 self.streamer.queue(raw, sent)
             except ValueError as exc:
@@ -315,16 +256,12 @@ class GcodeSession(MachineSession):
         self.pump()
         return True
 
-    def next_serial(self) -> int:
-        """The next line's serial (under the feeder's lock: both threads number lines)."""
-        return next(self._serials)
-
     def note_queued(self, line: str, origin: str) -> None:
         """What a line queued implies (under the feeder's lock: a job's lines are queued on
         the reader thread): the board is busy again, a release for zeroing by hand is over,
         and the distance mode the board will be in is the line's (the console judges in it).
         """
-        self._seen_idle = False
+        self.seen_idle = False
         self.zeroing.released = False
         # A job's line without a 9 names neither G90 nor G91: job lines skip the parse on that.
         if origin != "job" or "9" in line:
@@ -337,32 +274,11 @@ class GcodeSession(MachineSession):
         self.feeder.follow(feed)
         return feed
 
-    @property
-    def queued(self) -> int:
-        """Lines waiting for room in the device's buffer."""
-        return self.streamer.queued
-
-    @property
-    def unanswered(self) -> int:
-        """Lines sent and not yet answered."""
-        return self.streamer.in_flight
-
     def pump(self) -> None:
         """Write every queued line that fits now (bytes sent while the board restarts are
         lost by the board itself: the feeder waits for its banner)."""
         # Bytes sent while the board restarts are lost by the board itself: the feeder waits.
-        self.tell_written(self.feeder.pump())
-
-    def tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
-        for raw, sent in written:
-            try:
-                self._planned.line(sent.text, sent.text, sent.op_index)
-            except (ValueError, ArithmeticError):
-                # A line this reading cannot place is not followed; the stream goes on.
-                _log.exception("the path of %r could not be followed", sent.text)
-                self.envelope.release()
-            self.frameSent.emit(sent.text, raw)
-            self.lineSent.emit(sent)
+        self.follower.written(self.feeder.pump())
 
     def send_realtime(self, byte: bytes, name: str) -> None:
         """A real-time byte (it bypasses the stream), shown in the frame log as ``name``."""
@@ -372,18 +288,12 @@ class GcodeSession(MachineSession):
 
     def query_status(self) -> None:
         self.send_realtime(STATUS_QUERY, "?")
-        self._status_asked_at = self.clock.now()
-
-    def request_status(self) -> None:
-        """A status report soon: asks now unless a question is already on its way."""
-        asked = self._status_asked_at
-        if asked is None or self.clock.now() - asked > self.settings.status_ms / 1000:
-            self.query_status()
+        self.status_asked_at = self.clock.now()
 
     @property
     def planner_size(self) -> int:
         """Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown)."""
-        return self._planner_size
+        return self.follower.planner_size
 
     def feed_hold(self) -> None:
         self.send_realtime(FEED_HOLD, "! (feed hold)")
@@ -401,7 +311,7 @@ class GcodeSession(MachineSession):
             self.send_realtime(SOFT_RESET, "Ctrl-X (soft reset)")
             if self.link.is_open:
                 self.feeder.reset_sent_at = self.clock.now()
-            return self._forget_stream(by_device=False)
+            return self.links.forget_stream(by_device=False)
 
     def discard_queued(self) -> list[SentLine]:
         """Drop lines not yet sent (the ones the device has stay and will be answered).
@@ -418,24 +328,10 @@ class GcodeSession(MachineSession):
         A reset while the axes still move makes GRBL raise ALARM:3 and forget its
         position, so the reset waits for a status report saying the hold is
         complete (``Hold:0``) or the machine idle — or for :data:`RESET_AFTER_S`.
-        ``quiet``: the stop ends a jog, no "lines not run" message for it.
+        ``quiet``: the stop ends a jog, no "lines not run" message for it
+        (:class:`~app.machines.gcode.stop_sequence.StopSequence`).
         """
-        if quiet:
-            self._quiet_stop = True
-        if not keep_jog:
-            self._jog = [0] * self.axis_count
-            self.jogger.forget()
-            # A job owns the machine (its jog lock): the job says what ran, in its operations;
-            # a count of lines here beside it read as a second, different figure.
-            self._quiet_stop = self.model.jog_lock_reason is not None
-        if not self.link.is_open:
-            return
-        with self.feeder.lock:  # nothing more is fed from here on
-            self._dropped_by_stop = len(self.feeder.discard_queued())
-            self.feed_hold()
-        self._reset_requested_at = self.clock.now()
-        self._stop_unconfirmed = True  # until a report shows the board standing
-        self.query_status()
+        self.stops.stop(keep_jog=keep_jog, quiet=quiet)
 
     def motion_stopped(self) -> bool:
         """Still, by the board's reports, and no stop waiting for its hold to complete."""
@@ -444,19 +340,7 @@ class GcodeSession(MachineSession):
     @property
     def stopping(self) -> bool:
         """A stop was asked for and its reset has not gone out yet."""
-        return self._reset_requested_at is not None
-
-    def _reset_after_stop(self) -> None:
-        self._reset_requested_at = None
-        lost = len(self.soft_reset()) + self._dropped_by_stop
-        self._dropped_by_stop = 0
-        quiet, self._quiet_stop = self._quiet_stop, False
-        if lost and not quiet:
-            self.model.message.emit(
-                QCoreApplication.translate("GcodeSession", "Stopped: {0} line(s) not run").format(
-                    lost
-                )
-            )
+        return self.stops.requested_at is not None
 
     def move_absolute(self, axis: int, position: float) -> bool:
         """To the machine position ``position``: sent as the work position GRBL takes it for."""
@@ -505,58 +389,43 @@ class GcodeSession(MachineSession):
         if self.feeder.reset_sent_at is not None and not self.feeder.awaiting_banner():
             self.pump()  # no banner after the reset: send what waited anyway
         now = self.clock.now()
-        requested = self._reset_requested_at
-        if requested is not None and now - requested > RESET_AFTER_S and self.silent_since is None:
-            self._reset_after_stop()  # no report of a finished hold came: reset anyway
+        self.stops.due(now)
         self.query_status()
         # Time the station itself was not running is nobody's silence (a busy computer).
-        self._last_heard = min(now, self._last_heard + self._station_stall(now))
-        silent = now - self._last_heard
-        self._watch_silence(silent, self.stale_after_s, SILENCE_S)
-        if self.device_answered and silent > SILENCE_S:
+        self.last_heard = min(now, self.last_heard + self._station_stall(now))
+        silent = now - self.last_heard
+        self._watch_silence(silent, self.stale_after_s, timing.SILENCE_S)
+        if self.device_answered and silent > timing.SILENCE_S:
             # The link status says it ("lost — no reply for 2.2 s"): no second message.
-            self._last_heard = now
+            self.last_heard = now
 
     # --- a silent board ----------------------------------------------------------------
 
     def _silence_began(self) -> str:
         """What was under way is forgotten as when the link goes: a job looks at the board
         again before it goes on (the port stays open, so the board may still answer it)."""
-        self._heard_again_at = None
-        self._report_after_silence = None
-        self._restarted_in_silence = False
+        self.heard_again_at = None
+        self.report_after_silence = None
+        self.restarted_in_silence = False
         # A stop under way is kept: it is carried out once the board is heard again.
-        lost = self._forget_jog_and_lines()
+        lost = self.links.forget_jog_and_lines()
         return (
             QCoreApplication.translate("GcodeSession", "; {0} unanswered line(s)").format(len(lost))
             if lost
             else ""
         )
 
-    def _forget_jog_and_lines(self) -> list[SentLine]:
-        """A jog under way ends and the unanswered lines are handed back (as not run): the
-        board may have lost them, so nothing counts them until it is looked at again."""
-        self._jog = [0] * self.axis_count
-        self.jogger.forget_cancel()
-        self._quiet_stop = False
-        self._byte_count.forget()
-        with self.feeder.lock:
-            return self.feeder.clear()
-
     def _back_after_silence(self) -> None:
         """A stop asked for before or during the silence is carried out now: its hold may
         have been lost on the way, so it goes again, and the reset follows once it holds."""
-        if (self.stopping or self._stop_unconfirmed) and self.link.is_open:
-            self.feed_hold()
-            self._reset_requested_at = self.clock.now()
-            self.query_status()
+        self.stops.after_silence()
 
     def _recovery_verdict(self) -> object:
         """Intact: no banner came, and a status report made once the board's held-back
         replies were through (a report from before a restart would prove nothing) shows no
         alarm."""
-        report = self._report_after_silence
-        if self._restarted_in_silence:
+        report = self.report_after_silence
+        if self.restarted_in_silence:
             return QCoreApplication.translate(
                 "GcodeSession", "it restarted meanwhile (its banner came), so what it had is gone"
             )
@@ -568,409 +437,12 @@ class GcodeSession(MachineSession):
 
     def shutdown(self) -> None:
         """Stop timers; a stop still waiting for its hold resets now (the link is closing)."""
-        self._timer.stop()
+        self.timer.stop()
         if self.stopping and self.link.is_open:
-            self._reset_after_stop()
+            self.stops.reset_now()
 
-    # --- link events and replies -------------------------------------------------------
-
-    def _forget_stream(self, *, by_device: bool) -> list[SentLine]:
-        self.reset_by_device = by_device
-        # GRBL forgets its G92 offset on a reset; its next report carries the offset it has.
-        self.work_offset = None
-        self.envelope.release()  # judged again from where it stands once idle
-        self._planned.reset_modes()
-        with self.feeder.lock:
-            self.console.reset()  # GRBL's power-on and reset mode is G90
-            lost = self.feeder.clear()
-            self._seen_idle = False
-        self._byte_count.forget()
-        self.jogger.lines_gone()
-        self.reset.emit()
-        return lost
-
-    def _on_connected(self) -> None:
-        # The decoder is not reset here: the reader thread may already have decoded the
-        # board's first words (a banner, a status) before this runs, and a reset now
-        # would cut a reply in half.  It starts fresh, and is reset when a link ends.
-        with self.feeder.lock:
-            self.feeder.clear()
-            self.feeder.reset_halt()
-            self._seen_idle = False
-            self.feeder.reset_sent_at = None
-            self.zeroing.released = False
-        self._byte_count.forget()
-        self._status_asked_at = None
-        self._reset_requested_at = None
-        self.envelope.release()
-        self._planned.reset_modes()
-        self._last_heard = self.clock.now()
-        self._await_device()
-        if self._autotick:
-            self._timer.start()
-        self.query_status()
-
-    def _on_disconnected(self, reason: object) -> None:
-        self._timer.stop()
-        self._reset_requested_at = None
-        with self.feeder.lock:
-            self.feeder.reset_sent_at = None
-        lost = self._forget_jog_and_lines()
-        with self.feeder.lock:
-            # No reader runs until the station opens the link again (after this): a reply
-            # cut by the loss is not glued to the next link's first bytes.
-            self.decoder.reset()
-        for axis in range(self.axis_count):
-            self.model.update_axis(axis, moving=False, velocity=0.0)
-        if reason is None:
-            self.model.set_link_state(LinkState.DISCONNECTED)
-        else:
-            self.model.set_link_state(LinkState.LOST, str(reason))
-            if lost:
-                text = QCoreApplication.translate(
-                    "GcodeSession", "Link lost: {0}; {1} unanswered line(s)"
-                ).format(reason, len(lost))
-            else:
-                text = QCoreApplication.translate("GcodeSession", "Link lost: {0}").format(reason)
-            self.model.message.emit(text)
+    # --- replies -------------------------------------------------------
 
     def receive_injected(self, data: bytes) -> None:
         """Bytes a developer injects as the device's (developer pane): handled as if read."""
-        self._on_received(self.feeder.receive(data))
-
-    def _on_received(self, received: Received[SentLine]) -> None:
-        """A read from the device, decoded and matched on the reader thread (the feeder)."""
-        if received.failure is not None:
-            self._reading_failed(received.failure)
-            return
-        self._heard_unrecognised(received.data)  # kept until the device answers: whose words?
-        advanced = False
-        for reply, verdict in received.replies:
-            if reply is WROTE:
-                self.tell_written(verdict)  # type: ignore[arg-type]
-                continue
-            if isinstance(reply, Rejected):
-                self.frameReceived.emit(reply, reply.raw)
-                self.model.message.emit(
-                    QCoreApplication.translate(
-                        "GcodeSession", "Garbage from the device dropped: {0}"
-                    ).format(repr(reply.raw))
-                )
-                continue
-            self._last_heard = self.clock.now()
-            if self.silent_since is not None and self._heard_again_at is None:
-                self._heard_again_at = self._last_heard
-            self._device_answered(proof=False)  # after a silence, a status report decides
-            self.frameReceived.emit(reply, reply_bytes(reply))
-            if verdict is STALE:
-                continue  # an answer from before the reset: the line it was for is gone
-            if isinstance(verdict, Answer) and verdict.counted:
-                self._answered(None, verdict.entry, counted=True)
-                advanced = True
-                continue
-            if advanced:  # the job hears of its answers before whatever came after them
-                advanced = False
-                self.jobAdvanced.emit()
-            if isinstance(reply, Ok | ErrorReply):
-                entry = verdict.entry if isinstance(verdict, Answer) else None
-                self._answered(reply if isinstance(reply, ErrorReply) else None, entry)
-            elif isinstance(reply, StatusReport):
-                if isinstance(verdict, ReportSeen):
-                    if self._count_broken(reply, verdict.unanswered, verdict.unanswered_bytes):
-                        continue
-                    self._apply_status(
-                        reply, verdict.unanswered, verdict.job, idle_then=verdict.idle
-                    )
-                else:
-                    self._apply_status(reply)
-            elif isinstance(reply, AlarmReply):
-                self.envelope.release()  # stopped by itself; it may have lost its position
-                self.replyText.emit(f"ALARM:{reply.code} ({alarm_meaning(reply.code)})")
-                self.model.message.emit(
-                    QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
-                        reply.code, alarm_meaning(reply.code)
-                    )
-                )
-                self.tell_written(self.feeder.release())
-            elif isinstance(reply, Banner):
-                ours = isinstance(verdict, BannerSeen) and verdict.ours
-                if self.silent_since is not None and not ours:
-                    self._restarted_in_silence = True
-                self.replyText.emit(reply.text)
-                self.query_status()  # a board that just started: where is it, how big its planner
-                if ours:
-                    self.pump()  # our reset's banner: what waited for it goes now
-                    continue
-                lost = self._forget_stream(by_device=True)
-                if isinstance(verdict, BannerSeen):
-                    lost = verdict.lost + lost  # the feeder forgot them when it read the banner
-                if lost:
-                    self.model.message.emit(
-                        QCoreApplication.translate(
-                            "GcodeSession", "The device reset: {0} unanswered line(s) were not run"
-                        ).format(len(lost))
-                    )
-            elif isinstance(reply, Feedback):
-                self.replyText.emit(reply.text)
-        self.tell_written(received.written)
-        if advanced:
-            self.jobAdvanced.emit()
-
-    def _reading_failed(self, failure: Exception) -> None:
-        """A bug in matching replies to lines: the count may be wrong, so the machine stops.
-
-        The feeder holds the sending meanwhile; the stop takes back what is queued.
-        """
-        _log.error("G-code replies could not be read", exc_info=failure)
-        self.model.message.emit(
-            QCoreApplication.translate(
-                "GcodeSession", "The device's replies could not be read ({0}): stopping"
-            ).format(failure)
-        )
-        self.stop_all()
-        self.tell_written(self.feeder.release())
-
-    def _answered(
-        self,
-        error: ErrorReply | None,
-        entry: tuple[bytes, SentLine] | None,
-        *,
-        counted: bool = False,
-    ) -> None:
-        """The reply to the oldest line, ``entry`` as the feeder matched it.
-
-        ``counted``: a job's line the job has counted already (told by :attr:`jobAdvanced`).
-        """
-        self._lost_answers.answer_heard()
-        if entry is None:
-            self.model.message.emit(
-                QCoreApplication.translate("GcodeSession", "A reply arrived for no line (ignored)")
-            )
-            if error is not None:
-                self.tell_written(self.feeder.release())
-            return
-        _, sent = entry
-        if self._seen_idle:  # only this thread sets it True: already False, no hold per answer
-            with self.feeder.lock:
-                self._seen_idle = False
-        if sent.origin == "jog":
-            self.jogger.answered(error is None)
-        if error is None:
-            if sent.origin in ("console", "intent"):
-                self.replyText.emit(f"ok  ← {sent.text}")
-            if not counted:
-                self.lineAcknowledged.emit(sent)
-                self.pump()
-        else:
-            self.errors += 1
-            self.envelope.release()  # the refused line runs not: the path is not known
-            meaning = error_meaning(error.code)
-            self.replyText.emit(f"error:{error.code} ({meaning})  ← {sent.text}")
-            if sent.origin != "job":
-                self.model.message.emit(
-                    QCoreApplication.translate(
-                        "GcodeSession", "{0} refused: error {1}, {2}"
-                    ).format(repr(sent.text), error.code, meaning)
-                    + refusal_hint(sent.text, error.code)
-                )
-            self.lineFailed.emit(sent, error.code, meaning)
-            # Seen and handled (a failed job has taken back its queue): sending may go on.
-            self.tell_written(self.feeder.release())
-
-    def _check_lost_answers(
-        self,
-        report: StatusReport,
-        planner_empty: bool,
-        unanswered: list[SentLine] | None = None,
-    ) -> None:
-        """An ``ok`` lost on the wire would stall the stream for ever (:class:`LostAnswerWatch`).
-
-        ``unanswered``: the lines unanswered when the report was read (None: now).
-        """
-        if unanswered is None:
-            unanswered = self.streamer.unanswered_tags()
-        pausing = any(pauses(sent.text) for sent in unanswered)
-        stuck = self._stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
-        if stuck is not None:
-            self._lost_answers.forget()
-            self.model.message.emit(
-                QCoreApplication.translate(
-                    "GcodeSession",
-                    "The board holds {0} byte(s) of a line whose end never came (lost on the "
-                    "way) and waits for it: it stands idle, so it is reset, keeping its "
-                    "position, and what it ran is looked at again",
-                ).format(stuck)
-            )
-            self.soft_reset()
-            return
-        verdict = self._lost_answers.judge(
-            report, unanswered, self._planner_size, planner_empty, self.clock.now(), SILENCE_S
-        )
-        if isinstance(verdict, StreamWaits):
-            self.model.message.emit(
-                QCoreApplication.translate(
-                    "GcodeSession",
-                    "{0} line(s) unanswered while the board stands idle; waiting for its "
-                    "answer (without Bf: in its reports it cannot show it has them)",
-                ).format(verdict.count)
-            )
-        if not isinstance(verdict, AnswersLost):
-            return
-        if self._short_of_lines_sent(report):
-            # Not their answers but the lines themselves were lost: the board stands
-            # short of where they end.  Reset (it stands: its position stays) and let
-            # the job look at it and go on from what is proven.
-            self.model.message.emit(
-                QCoreApplication.translate(
-                    "GcodeSession",
-                    "{0} line(s) sent never reached the board: it has taken every byte "
-                    "it got and stands idle short of where they end; it is reset, "
-                    "keeping its position, and what it ran is looked at again",
-                ).format(len(verdict.lines))
-            )
-            self.soft_reset()
-            return
-        self.model.message.emit(
-            QCoreApplication.translate(
-                "GcodeSession",
-                "{0} answer(s) from the board were lost on the way; it has taken and run "
-                "every line sent, so they count as answered",
-            ).format(len(verdict.lines))
-        )
-        advanced = False
-        for sent in verdict.lines:
-            with self.feeder.lock:
-                tags = self.streamer.unanswered_tags()
-                if not tags or tags[0] != sent:
-                    break  # answered meanwhile after all
-                answer = self.feeder.acknowledge()
-            self._answered(None, answer.entry, counted=answer.counted)
-            advanced = advanced or answer.counted
-        if advanced:
-            self.jobAdvanced.emit()
-            self.pump()
-
-    def _apply_status(
-        self,
-        report: StatusReport,
-        unanswered: list[SentLine] | None = None,
-        job: object = None,
-        *,
-        idle_then: bool | None = None,
-    ) -> None:
-        """``unanswered``, ``job`` and ``idle_then``: the lines unanswered, the job's snapshot
-        and whether nothing waited to go, as the report was read (on the reader thread;
-        None: read now)."""
-        self._status_asked_at = None
-        self.job_at_report = job
-        # A work position without any offset heard yet is no machine position.
-        placed = not report.work_reported or report.wco is not None or self.work_offset is not None
-        # GRBL sends its work offset (WCO:) only now and then: the last one heard completes
-        # the reports between, so both the machine and the work position are always known.
-        if report.wco is not None:
-            self.work_offset = report.wco
-        report = with_work_offset(report, self.work_offset)
-        self.status = report
-        if placed:
-            self._supervise(report)
-        if self._reset_requested_at is not None:
-            held = report.state == "Hold" and report.substate in (None, "0")
-            if held or report.state in ("Idle", "Alarm"):
-                self._reset_after_stop()
-            else:
-                self.request_status()  # still braking: ask again at once
-        if report.state == "Idle" and report.planner_free is not None and self.streamer.idle:
-            # Free blocks of an idle machine with nothing on its way: the planner's size.
-            self._planner_size = report.planner_free
-        self.jogger.reported(report)
-        moving = reports_moving(report)
-        for axis in range(min(self.axis_count, len(report.mpos))):
-            self.model.update_axis(
-                axis,
-                position=report.mpos[axis],
-                offset=report.mpos[axis] - report.wpos[axis],
-                status_text=report.state.lower(),
-                moving=moving,
-            )
-        # Replies and reports share one ordered stream, so with every line answered this
-        # report was made after the last line was planned.  A board that has planned a
-        # block but not yet started it still says Idle; its Bf then shows the block.
-        planner_empty = (
-            report.planner_free is None
-            or not self._planner_size
-            or report.planner_free >= self._planner_size
-        )
-        # Idle as it was read too: a report read before the last lines went (a burst of held
-        # replies, handled here after the reader thread sent them and counted their answers)
-        # says nothing of them.
-        with self.feeder.lock:  # nothing queued between the look and the note
-            idle = self.streamer.idle and idle_then is not False
-            at_rest = report.state == "Idle" and idle and planner_empty
-            if at_rest:
-                self._seen_idle = True
-        if at_rest:
-            # A GRBL board's offset is known once a WCO: came (the next lines' targets need it).
-            offset_known = self.work_offset is not None or not self.jogger.with_command
-            if (
-                placed
-                and offset_known
-                and not self.stopping
-                and len(report.mpos) >= self.axis_count
-            ):
-                # Standing with every line answered: where the next lines start from.
-                self._planned.anchor(report.mpos, report.wco or ())
-        self._check_lost_answers(report, planner_empty, unanswered)
-        self.statusChanged.emit(report)
-        self.jogger.feed()
-        if (
-            self._stop_unconfirmed
-            and self.silent_since is None
-            and not self.stopping
-            and report.state in ("Idle", "Alarm")
-        ):
-            self._stop_unconfirmed = False  # held and reset: it stands
-        if self.silent_since is not None:
-            heard = self._heard_again_at
-            # Replies held back on the way come first: the board's state is judged from a
-            # report made a few queries after it was heard again.
-            if heard is not None and self.clock.now() - heard >= self.stale_after_s:
-                self._report_after_silence = report
-            self._check_recovery()
-
-    def _short_of_lines_sent(self, report: StatusReport) -> bool:
-        """Whether an idle board stands off where the lines written end (as far as known)."""
-        end = self.envelope.end
-        if end is None or len(report.mpos) < self.axis_count:
-            return False
-        here = report.mpos[: self.axis_count]
-        return any(abs(a - b) > self.envelope.tolerance for a, b in zip(here, end, strict=False))
-
-    def _count_broken(
-        self, report: StatusReport, unanswered: list[SentLine], unanswered_bytes: int | None
-    ) -> bool:
-        """The board holds more than was sent and not answered: stop before it runs it."""
-        extra = self._byte_count.excess(report, unanswered_bytes)
-        if extra is None or self.stopping:
-            return False
-        self._byte_count.forget()  # one stop, one message
-        job = next((s.op_index for s in unanswered if s.origin == "job"), None)
-        text = QCoreApplication.translate(
-            "GcodeSession",
-            "The board holds {0} byte(s) more than were sent and not answered (a line or an "
-            "answer arrived twice on the way): the lines it holds may be garbled, so it is "
-            "stopped before it runs them",
-        ).format(extra)
-        self._stop_for_fault(MotionFault(text, job))
-        return True
-
-    def _supervise(self, report: StatusReport) -> None:
-        """A report off the path of the lines written stops the machine, naming the line."""
-        if report.state in ("Home", "Alarm") or len(report.mpos) < self.axis_count:
-            return
-        deviation = self.envelope.check(report.mpos[: self.axis_count])
-        if deviation is None:
-            return
-        self.envelope.release()  # one stop, one message: judged again once it stands
-        names = [axis.name for axis in self.model.profile.axes]
-        tag = deviation.tag if isinstance(deviation.tag, int) else None
-        self._stop_for_fault(MotionFault(fault_text(deviation, names), tag))
+        self.replies.on_received(self.feeder.receive(data))

@@ -372,7 +372,7 @@ class StageSession(MachineSession):
         self._jog = [0] * self.axis_count
         self._jog_limited = [0] * self.axis_count
         self.supervisor.release()
-        self._await_device()
+        self.await_device()
         self._sync_speed()
         self.read_all_parameters()
         if self._autotick:
@@ -412,7 +412,7 @@ class StageSession(MachineSession):
         self._watch_silence(silent, STALE_PERIODS * self._period_ms / 1000, LOST_AFTER_S)
 
     def _on_data(self, data: bytes) -> None:
-        self._heard_unrecognised(data)  # kept until the device answers: whose words?
+        self.heard_unrecognised(data)  # kept until the device answers: whose words?
         for result in self.decoder.feed(data):
             if isinstance(result, Rejected):
                 self.frameReceived.emit(result, result.raw)
@@ -432,11 +432,11 @@ class StageSession(MachineSession):
     def apply_echo(self, echo: EchoFrame) -> None:
         """Fold one echo into the model; any echo proves the link is alive."""
         self._last_echo = self.clock.now()
-        self._device_answered()  # green again, after a silence too: its frames kept asking
+        self.device_replied()  # green again, after a silence too: its frames kept asking
         fault = self.supervisor.judge(echo)
         self.echoes.apply(echo)
         if fault is not None:
-            self._stop_for_fault(fault)
+            self.stop_for_fault(fault)
 
     def _check_moves(self, echo: EchoFrame) -> None:
         """Send again a MOVE_ABS the stage never received (its frame lost or mangled).

@@ -379,7 +379,7 @@ class Usb3Session(MachineSession):
         if not self._recovery_asked:
             self._recovery_asked = True
             self.request_positions(range(len(self._books)))
-        self._check_recovery()
+        self.check_recovery()
 
     def _recovery_verdict(self) -> object:
         """Intact when every axis stands where the books allow (a unit switched off and on
@@ -525,7 +525,7 @@ class Usb3Session(MachineSession):
         text = fault_text(deviation, [name], scale=1 / count_per_mm(self.threads[axis]))
         for each in self._envelopes:
             each.release()  # stopped: the next reports say where it stands
-        self._stop_for_fault(MotionFault(text))
+        self.stop_for_fault(MotionFault(text))
         return False
 
     def _counts_of(self, axis: int) -> int:
@@ -637,7 +637,7 @@ class Usb3Session(MachineSession):
         self._last_heard = self.clock.now()
         self._asked_at = None
         self._reported.clear()
-        self._await_device()
+        self.await_device()
         if self._autotick:
             self._timer.start()
         self.request_settings()
@@ -654,7 +654,7 @@ class Usb3Session(MachineSession):
             )
 
     def _on_data(self, data: bytes) -> None:
-        self._heard_unrecognised(data)  # kept until the device answers: whose words?
+        self.heard_unrecognised(data)  # kept until the device answers: whose words?
         for reply in self.decoder.feed(data):
             raw = reply.raw if isinstance(reply, Rejected) else encode(reply)
             if isinstance(reply, NotUnderstood):
@@ -671,7 +671,7 @@ class Usb3Session(MachineSession):
                 continue
             self._last_heard = self.clock.now()
             first = not self.device_answered
-            self._device_answered(proof=False)  # after a silence, the positions decide
+            self.device_replied(proof=False)  # after a silence, the positions decide
             if first:
                 # The unit reports positions only when an axis stops: without asking, every
                 # axis would read "unknown" at 0 until it first moved.

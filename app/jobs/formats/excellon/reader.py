@@ -359,32 +359,16 @@ def _step_format(step: float, unit: str) -> tuple[int, int]:
     return (2 if unit == "inch" else 3), round(decimals)
 
 
-def read_drill_file(
+def _number_format(
     path: Path,
-    *,
-    dri: Path | None = None,
-    excellon_step_inch: float = DEFAULT_EXCELLON_STEP_INCH,
-) -> DrillJob:
-    """Read a drill file (or an EAGLE ``.dri`` and the drill file it names) into a DrillJob.
-
-    ``excellon_step_inch`` is the original tool's setting: what one count of a
-    bare integer coordinate is worth when neither the file nor a ``.dri``
-    states a number format.  Raises JobFileError (file, line, reason) for a
-    file the station must not drill.
-    """
-    if path.suffix.lower() == ".dri":
-        dri = path
-        path = _drill_file_of(path, read_dri(path))
-    elif dri is None and path.with_suffix(".dri").is_file() and path.suffix.lower() != ".dri":
-        dri = path.with_suffix(".dri")
-    info = read_dri(dri) if dri is not None else None
-
-    text = _read_text(path)
-    lines = text.splitlines()
-    notes: list[str] = []
-    _prescan(path.name, lines)
-
-    # Decide the number format before gerbonara does (see the module docstring).
+    lines: Sequence[str],
+    dri: Path | None,
+    info: DriInfo | None,
+    excellon_step_inch: float,
+    notes: list[str],
+) -> tuple[FileSettings, str]:
+    """The number format, chosen before gerbonara would (see the module docstring), and
+    where it comes from."""
     explicit = any(_FORMAT_IN_FILE.search(line.strip()) for line in lines[:200])
     metric = any(_METRIC.match(line.strip()) for line in lines[:200])
     inch = any(_INCH.match(line.strip()) for line in lines[:200])
@@ -416,7 +400,14 @@ def read_drill_file(
                     "JobFile", "no unit in the file; inch assumed, as the Excellon step is"
                 )
             )
+    return settings, format_from
 
+
+def _parse(
+    path: Path, lines: Sequence[str], settings: FileSettings, info: DriInfo | None
+) -> tuple[_Parser, dict[int, str], list[warnings.WarningMessage]]:
+    """gerbonara's parse of the file, its refusal as a JobFileError with the line; the
+    starts of G85 slots by line, and the warnings it gave."""
     # G85 slots: gerbonara 1.5.0 only gets the end point; the start is ours to read.
     slot_starts: dict[int, str] = {}
     fed: list[str] = []
@@ -467,8 +458,11 @@ def read_drill_file(
                 "JobFile", "the Excellon reader cannot read {0} ({1})"
             ).format(repr(text_), exc),
         ) from exc
-    notes += [f"0: {warning.message}" for warning in caught]
+    return parser, slot_starts, caught
 
+
+def _check_remarks(path: Path, parser: _Parser, notes: list[str]) -> None:
+    """What gerbonara remarked: coordinates where none may be are refused, the rest noted."""
     for line, text_, message, state in parser.remarks:
         if "before first tool" in message:
             reason = QCoreApplication.translate(
@@ -490,21 +484,47 @@ def read_drill_file(
                 message = message.replace("{index}", f"T{int(tool[1]):02d}" if tool else "")
             notes.append(f"{line}: {message}")
 
+
+def read_drill_file(
+    path: Path,
+    *,
+    dri: Path | None = None,
+    excellon_step_inch: float = DEFAULT_EXCELLON_STEP_INCH,
+) -> DrillJob:
+    """Read a drill file (or an EAGLE ``.dri`` and the drill file it names) into a DrillJob.
+
+    ``excellon_step_inch`` is the original tool's setting: what one count of a
+    bare integer coordinate is worth when neither the file nor a ``.dri``
+    states a number format.  Raises JobFileError (file, line, reason) for a
+    file the station must not drill.
+    """
+    if path.suffix.lower() == ".dri":
+        dri = path
+        path = _drill_file_of(path, read_dri(path))
+    elif dri is None and path.with_suffix(".dri").is_file() and path.suffix.lower() != ".dri":
+        dri = path.with_suffix(".dri")
+    info = read_dri(dri) if dri is not None else None
+
+    text = _read_text(path)
+    lines = text.splitlines()
+    notes: list[str] = []
+    _prescan(path.name, lines)
+
+    settings, format_from = _number_format(path, lines, dri, info, excellon_step_inch, notes)
+
+    parser, slot_starts, caught = _parse(path, lines, settings, info)
+    notes += [f"0: {warning.message}" for warning in caught]
+
+    _check_remarks(path, parser, notes)
+
     return _assemble(path, dri, info, parser, lines, slot_starts, format_from, notes)
 
 
-def _assemble(
-    path: Path,
-    dri: Path | None,
-    info: DriInfo | None,
-    parser: _Parser,
-    lines: Sequence[str],
-    slot_starts: dict[int, str],
-    format_from: str,
-    notes: list[str],
-) -> DrillJob:
-    settings = parser.settings
-    file_unit = settings.unit or Inch
+def _tool_table(
+    path: Path, dri: Path | None, info: DriInfo | None, parser: _Parser
+) -> tuple[dict[int, str], list[Tool]]:
+    """The tools the file (or its ``.dri``) defines, and each gerbonara aperture's name."""
+    file_unit = parser.settings.unit or Inch
     names: dict[int, str] = {}
     tools: list[Tool] = []
     defined: dict[int, Any] = dict(parser.tools) or dict(parser.external_tools)
@@ -519,7 +539,22 @@ def _assemble(
         name = f"T{number:02d}"
         names[id(tool)] = name
         tools.append(Tool(name, number, diameter, source))
+    return names, tools
 
+
+def _assemble(
+    path: Path,
+    dri: Path | None,
+    info: DriInfo | None,
+    parser: _Parser,
+    lines: Sequence[str],
+    slot_starts: dict[int, str],
+    format_from: str,
+    notes: list[str],
+) -> DrillJob:
+    settings = parser.settings
+    file_unit = settings.unit or Inch
+    names, tools = _tool_table(path, dri, info, parser)
     by_name = {t.name: t for t in tools}
     holes: list[Hole] = []
     slots: list[Slot] = []

@@ -39,31 +39,17 @@ ARC_RADIUS_ERROR_MM = 0.5
 ARC_RADIUS_ERROR_RATIO = 0.001
 
 
-def flatten_arc(
+def _centre(
     file: str,
     number: int,
     code: str,
-    start: list[float],
-    target: Mapping[int, float],
+    ends: tuple[float, float, float, float],
     offsets: Mapping[str, float],
     clockwise: bool,
-    columns: int,
-    budget: int = MAX_ARC_VERTICES,
-    *,
-    grbl_rules: bool = True,
-) -> np.ndarray:
-    """The inner vertices of an XY arc, chord error at most ARC_TOLERANCE_MM.
-
-    ``start`` and ``target`` are machine positions by column (0: X, 1: Y), the
-    result has ``columns`` columns; the other axes move linearly along the arc.
-    ``budget`` is how many vertices the file's arcs may still have; ``grbl_rules``:
-    the end must be on the circle (on a machine that runs the arc).  Raises
-    JobFileError on the arc's line where GRBL would refuse it or the bounds
-    are exceeded.
-    """
-    sx = 0.0 if math.isnan(start[0]) else start[0]
-    sy = 0.0 if math.isnan(start[1]) else start[1]
-    ex, ey = target[0], target[1]
+) -> tuple[float, float]:
+    """The arc's centre from R (the shorter way for R > 0, as GRBL takes it) or I/J;
+    refused as GRBL would refuse it (error:33, 34, 35)."""
+    sx, sy, ex, ey = ends
     if "R" in offsets:
         radius = offsets["R"]
         dx, dy = ex - sx, ey - sy
@@ -103,6 +89,66 @@ def flatten_arc(
                 "JobFile", "arc without offsets: it needs I/J or R (error:35): {0}"
             ).format(quoted(code)),
         )
+    return cx, cy
+
+
+def _segments(file: str, number: int, radius: float, sweep: float, budget: int) -> int:
+    """How many chords the arc needs at ARC_TOLERANCE_MM; refused past the bounds."""
+    if radius > ARC_TOLERANCE_MM:
+        step = 2 * math.acos(1 - ARC_TOLERANCE_MM / radius)
+        # A radius so large that the step rounds to nothing gets the most segments.
+        segments = math.ceil(sweep / step) if step > 0 else MAX_ARC_SEGMENTS + 1
+    else:
+        segments = 1
+    if segments > MAX_ARC_SEGMENTS:
+        raise JobFileError(
+            file,
+            number,
+            QCoreApplication.translate(
+                "JobFile",
+                "arc too long: {0:.4g} m of radius {1:.4g} mm needs {2} chords at {3:g} mm (at "
+                "most {4}); no machine's travel holds it",
+            ).format(radius * sweep / 1000, radius, segments, ARC_TOLERANCE_MM, MAX_ARC_SEGMENTS),
+        )
+    segments = max(segments, MIN_ARC_SEGMENTS)
+    if segments - 1 > budget:
+        raise JobFileError(
+            file,
+            number,
+            QCoreApplication.translate(
+                "JobFile",
+                "arcs too many: the file's arcs need more than {0:,} vertices at {1:g} mm",
+            ).format(MAX_ARC_VERTICES, ARC_TOLERANCE_MM),
+        )
+    return segments
+
+
+def flatten_arc(
+    file: str,
+    number: int,
+    code: str,
+    start: list[float],
+    target: Mapping[int, float],
+    offsets: Mapping[str, float],
+    clockwise: bool,
+    columns: int,
+    budget: int = MAX_ARC_VERTICES,
+    *,
+    grbl_rules: bool = True,
+) -> np.ndarray:
+    """The inner vertices of an XY arc, chord error at most ARC_TOLERANCE_MM.
+
+    ``start`` and ``target`` are machine positions by column (0: X, 1: Y), the
+    result has ``columns`` columns; the other axes move linearly along the arc.
+    ``budget`` is how many vertices the file's arcs may still have; ``grbl_rules``:
+    the end must be on the circle (on a machine that runs the arc).  Raises
+    JobFileError on the arc's line where GRBL would refuse it or the bounds
+    are exceeded.
+    """
+    sx = 0.0 if math.isnan(start[0]) else start[0]
+    sy = 0.0 if math.isnan(start[1]) else start[1]
+    ex, ey = target[0], target[1]
+    cx, cy = _centre(file, number, code, (sx, sy, ex, ey), offsets, clockwise)
     if not all(math.isfinite(v) for v in (sx, sy, ex, ey, cx, cy)):
         raise JobFileError(
             file,
@@ -136,32 +182,7 @@ def flatten_arc(
     if sweep < 1e-12 and "R" not in offsets:
         sweep = math.tau  # same start and end with a centre: a full circle
     radius = max(r0, r1)
-    if radius > ARC_TOLERANCE_MM:
-        step = 2 * math.acos(1 - ARC_TOLERANCE_MM / radius)
-        # A radius so large that the step rounds to nothing gets the most segments.
-        segments = math.ceil(sweep / step) if step > 0 else MAX_ARC_SEGMENTS + 1
-    else:
-        segments = 1
-    if segments > MAX_ARC_SEGMENTS:
-        raise JobFileError(
-            file,
-            number,
-            QCoreApplication.translate(
-                "JobFile",
-                "arc too long: {0:.4g} m of radius {1:.4g} mm needs {2} chords at {3:g} mm (at "
-                "most {4}); no machine's travel holds it",
-            ).format(radius * sweep / 1000, radius, segments, ARC_TOLERANCE_MM, MAX_ARC_SEGMENTS),
-        )
-    segments = max(segments, MIN_ARC_SEGMENTS)
-    if segments - 1 > budget:
-        raise JobFileError(
-            file,
-            number,
-            QCoreApplication.translate(
-                "JobFile",
-                "arcs too many: the file's arcs need more than {0:,} vertices at {1:g} mm",
-            ).format(MAX_ARC_VERTICES, ARC_TOLERANCE_MM),
-        )
+    segments = _segments(file, number, radius, sweep, budget)
     t = np.arange(1, segments) / segments
     angles = a0 + (-sweep if clockwise else sweep) * t
     radii = r0 + (r1 - r0) * t
