@@ -45,7 +45,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     ),
     "widgets/panels/drill.py::DrillPanel.__init__": "being changed by h-drillteach (#34)",
     "widgets/panels/manual.py::ManualPanel.__init__": "not yet taken on",
-    "widgets/panels/usb3.py::Usb3Panel.__init__": "grew with its translated texts (#32); its rows",
 }
 
 
