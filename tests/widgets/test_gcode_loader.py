@@ -534,7 +534,8 @@ def test_one_skipped_line_is_named_as_one(tmp_path: Path) -> None:
     """Not "(lines 2)" for a single line."""
     path = write(tmp_path, "G1 X1 Y1 F100\nM18\nG1 X2 Y2\n")
     program = load_for(path, "corexy-plotter", skip_unsupported=True)
-    assert "skipped 1 line: the CoreXY pen plotter cannot execute M18 (error:20) (line 2)" in program.notes
+    expected = "skipped 1 line: the CoreXY pen plotter cannot execute M18 (error:20) (line 2)"
+    assert expected in program.notes
 
 
 def test_skipped_lines_do_not_move_the_model(tmp_path: Path) -> None:
