@@ -195,19 +195,19 @@ class StringArtProgram(Program):
         return ProgramPath(coords, moves.astype(np.int64), np.zeros(len(moves), dtype=bool))
 
     def works_between(self, lo: int, hi: int) -> bool:
-        """A plunge drills a nail, and once the thread is tied every move winds it.
+        """A plunge drills a nail: any Z move is work, never sent again silently.
 
-        So any Z move, and any move after the operator's WAIT, is work: sent
-        again it drills a nail twice or winds a turn more (the relay's
-        string-art seeds 41 and 59: a reopened port, 13 operations "that draw
-        nothing" sent again, a nail drilled twice).
+        The relay's string-art seeds 41 and 59: a reopened port, 13 operations
+        "that draw nothing" sent again, a nail drilled twice.  The winding
+        phase's turns are not counted: the resume goes back along the winding
+        (retrace) before it sends them again, so a turn resent from where it
+        began winds its nail once (tests/e2e/test_e2e_string_art.py).
         """
         lo, hi = max(lo, 0), min(hi, len(self.kind_codes))
         if hi <= lo:
             return False
         moves = self.kind_codes[lo:hi] == _KIND_CODES[OpKind.MOVE]
-        winding = np.arange(lo, hi) > self.wait_index
-        return bool(np.any(moves & ((self.move_axis[lo:hi] == _COLUMN["Z"]) | winding)))
+        return bool(np.any(moves & (self.move_axis[lo:hi] == _COLUMN["Z"])))
 
     def preview_path(self, x_axis: str, y_axis: str | None) -> ProgramPath:
         """The board plane in mm whatever the axes: x = X·cos A, y = X·sin A; winding is work."""
