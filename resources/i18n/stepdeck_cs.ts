@@ -1354,6 +1354,10 @@ Přesto odeslat do stroje?</translation>
         <translation>Deska drží {0} bajt(ů) řádku, jehož konec nikdy nepřišel (ztratil se cestou), a čeká na něj: stojí v klidu, proto je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
     </message>
     <message>
+        <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
+        <translation>{0} řádek/řádků stále bez odpovědi, zatímco deska stojí nečinně, a její hlášení nemohou ukázat, zda je má: deska se resetuje, poloha zůstává, a co provedla, se posoudí znovu</translation>
+    </message>
+    <message>
         <source>{0} line(s) sent never reached the board: it has taken every byte it got and stands idle short of where they end; it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} odeslaných řádků nikdy nedorazilo do desky: převzala každý bajt, který dostala, a stojí v klidu před místem, kde končí; je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
     </message>

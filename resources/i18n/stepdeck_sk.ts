@@ -1354,6 +1354,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Doska drží {0} bajt(ov) riadku, ktorého koniec nikdy neprišiel (stratil sa cestou), a čaká naň: stojí v pokoji, preto je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>
     <message>
+        <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
+        <translation>{0} riadok/riadkov stále bez odpovede, kým doska stojí nečinne, a jej hlásenia nemôžu ukázať, či ich má: doska sa resetuje, poloha zostáva, a čo vykonala, sa posúdi znova</translation>
+    </message>
+    <message>
         <source>{0} line(s) sent never reached the board: it has taken every byte it got and stands idle short of where they end; it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} odoslaných riadkov nikdy nedorazilo do dosky: prevzala každý bajt, ktorý dostala, a stojí v pokoji pred miestom, kde končia; je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>

@@ -15,12 +15,16 @@ from the status reports the session applies.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 
 from app.machines.gcode.lines import SentLine
 from protocol.gcode.codec import StatusReport
 
+#: After the operator is told the stream waits, a board without ``Bf:`` still idle this much
+#: longer (plus every dwell unanswered) is reset: nothing it could say would show more.
+UNSEEN_RESET_AFTER_S = 2.0
 #: Reports in a row, at least this far apart, that show every sent byte consumed and the
 #: machine idle with an empty planner while lines are unanswered: their answers were lost.
 LOST_ANSWER_REPORTS = 2
@@ -34,6 +38,14 @@ class AnswersLost:
     """The board has taken and run these lines: their answers were lost (oldest first)."""
 
     lines: list[SentLine]
+
+
+@dataclass(frozen=True)
+class Unaccounted:
+    """A board without ``Bf:`` has stood idle so long with lines unanswered that none can
+    still be on its way: lost on the wire, answers or lines, or a fragment in its buffer."""
+
+    count: int
 
 
 @dataclass(frozen=True)
@@ -72,7 +84,7 @@ class LostAnswerWatch:
         planner_empty: bool,
         now: float,
         stall_after_s: float,
-    ) -> AnswersLost | StreamWaits | None:
+    ) -> AnswersLost | Unaccounted | StreamWaits | None:
         """The verdict of one status report.
 
         ``stall_after_s``: unanswered this long with nothing to show the board has the
@@ -107,6 +119,16 @@ class LostAnswerWatch:
         ):
             self._drained_since, self._drained_reports = None, 0
             return AnswersLost(unanswered)
+        if (
+            report.rx_free is None
+            and self._drained_reports >= LOST_ANSWER_REPORTS
+            and waited >= stall_after_s + UNSEEN_RESET_AFTER_S + _paused_s(unanswered)
+        ):
+            # Without Bf: nothing shows whether the lines are in its buffer, on the wire
+            # or run with their answers lost; idle this long, none is on its way (relay
+            # string-art seed 34: a silence took lines whole, the job waited for ever).
+            self._drained_since, self._drained_reports = None, 0
+            return Unaccounted(len(unanswered))
         if not drained and waited >= stall_after_s and not self._stall_told:
             self._stall_told = True
             return StreamWaits(len(unanswered))
@@ -121,3 +143,20 @@ def pauses(line: str) -> bool:
         if (letter == "G" and value == 4) or (letter == "M" and value in (0, 1, 2, 30)):
             return True
     return False
+
+
+_DWELL = re.compile(r"([PS])\s*([-+]?\d+(?:\.\d*)?)")
+
+
+def _paused_s(lines: list[SentLine]) -> float:
+    """How long ``lines`` may keep a board idle on their own: their dwells (a ``P`` taken as
+    seconds, the longest reading), for ever with a program stop."""
+    total = 0.0
+    for sent in lines:
+        code = _COMMENT.sub("", sent.text).upper()
+        words = _WORD.findall(code)
+        if any(letter == "M" and float(n) in (0, 1, 2, 30) for letter, n in words):
+            return math.inf
+        if any(letter == "G" and float(n) == 4 for letter, n in words):
+            total += sum(float(v) for _, v in _DWELL.findall(code))
+    return total

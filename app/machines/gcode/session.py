@@ -59,7 +59,13 @@ from app.machines.gcode.jogger import JOG_SPEED_SHARE as JOG_SPEED_SHARE
 from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
 from app.machines.gcode.jogger import GcodeJogger, reports_moving
 from app.machines.gcode.lines import SentLine as SentLine
-from app.machines.gcode.lost_answers import AnswersLost, LostAnswerWatch, StreamWaits, pauses
+from app.machines.gcode.lost_answers import (
+    AnswersLost,
+    LostAnswerWatch,
+    StreamWaits,
+    Unaccounted,
+    pauses,
+)
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.motion_gate import Refusal
@@ -779,6 +785,17 @@ class GcodeSession(MachineSession):
                 f"{verdict.count} line(s) unanswered while the board stands idle; "
                 "waiting for its answer (without Bf: in its reports it cannot show it has them)"
             )
+        if isinstance(verdict, Unaccounted):
+            self.model.message.emit(
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "{0} line(s) still unanswered while the board stands idle, and its reports "
+                    "cannot show whether it has them: it is reset, keeping its position, and "
+                    "what it ran is looked at again",
+                ).format(verdict.count)
+            )
+            self.soft_reset()
+            return
         if not isinstance(verdict, AnswersLost):
             return
         if self._short_of_lines_sent(report):
