@@ -4,9 +4,10 @@ GRBL answers every line once it has parsed it, so when its reports show the
 receive buffer empty (``Bf:…,<all free>``), the planner empty and the machine
 idle, reports in a row and some time apart, every line sent was taken and
 answered: the missing answers were lost, and the lines count as answered.  A
-line that pauses the board (a dwell, a program stop) is still waited for; a
-board that reports no ``Bf:`` cannot show this, and the operator is told the
-stream waits.
+line that pauses the board is waited for as long as it may (a dwell its
+time, a program stop for ever); a board that reports no ``Bf:`` cannot show
+this: the operator is told the stream waits, and a board still idle a while
+later is reset (it stands: its position stays) and the job goes on from proof.
 
 Plain Python: the watch only judges; the session acts on its verdict (it
 acknowledges the lines, or says the stream waits).  It runs on the GUI thread,
@@ -106,49 +107,42 @@ class LostAnswerWatch:
             and report.planner_free is not None
             and planner_size > 0
             and planner_empty
-            and not any(pauses(sent.text) for sent in unanswered)
         )
         if self._drained_since is None:
             self._drained_since, self._drained_reports = now, 0
         self._drained_reports += 1
         waited = now - self._drained_since
+        # A dwell keeps the board idle before its answer, but only as long as it lasts
+        # (relay string-art seed 34: a G4 S0.25 among the lines a silence took kept the
+        # job waiting for ever); a program stop, for as long as the operator takes.
+        paused = paused_s(unanswered)
         if (
             drained
             and self._drained_reports >= LOST_ANSWER_REPORTS
-            and (waited >= LOST_ANSWER_AFTER_S)
+            and (waited >= LOST_ANSWER_AFTER_S + paused)
         ):
             self._drained_since, self._drained_reports = None, 0
             return AnswersLost(unanswered)
         if (
             report.rx_free is None
             and self._drained_reports >= LOST_ANSWER_REPORTS
-            and waited >= stall_after_s + UNSEEN_RESET_AFTER_S + _paused_s(unanswered)
+            and waited >= stall_after_s + UNSEEN_RESET_AFTER_S + paused
         ):
             # Without Bf: nothing shows whether the lines are in its buffer, on the wire
             # or run with their answers lost; idle this long, none is on its way (relay
             # string-art seed 34: a silence took lines whole, the job waited for ever).
             self._drained_since, self._drained_reports = None, 0
             return Unaccounted(len(unanswered))
-        if not drained and waited >= stall_after_s and not self._stall_told:
+        if (not drained or math.isinf(paused)) and waited >= stall_after_s and not self._stall_told:
             self._stall_told = True
             return StreamWaits(len(unanswered))
         return None
 
 
-def pauses(line: str) -> bool:
-    """Whether ``line`` may keep the board idle and answer only later (a dwell, a stop)."""
-    code = _COMMENT.sub("", line).upper()
-    for letter, number in _WORD.findall(code):
-        value = float(number)
-        if (letter == "G" and value == 4) or (letter == "M" and value in (0, 1, 2, 30)):
-            return True
-    return False
-
-
 _DWELL = re.compile(r"([PS])\s*([-+]?\d+(?:\.\d*)?)")
 
 
-def _paused_s(lines: list[SentLine]) -> float:
+def paused_s(lines: list[SentLine]) -> float:
     """How long ``lines`` may keep a board idle on their own: their dwells (a ``P`` taken as
     seconds, the longest reading), for ever with a program stop."""
     total = 0.0

@@ -64,7 +64,7 @@ from app.machines.gcode.lost_answers import (
     LostAnswerWatch,
     StreamWaits,
     Unaccounted,
-    pauses,
+    paused_s,
 )
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
@@ -763,8 +763,9 @@ class GcodeSession(MachineSession):
         """
         if unanswered is None:
             unanswered = self.streamer.unanswered_tags()
-        pausing = any(pauses(sent.text) for sent in unanswered)
-        stuck = self._stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
+        stuck = self._stuck.stuck(
+            report, planner_empty=planner_empty, paused_s=paused_s(unanswered)
+        )
         if stuck is not None:
             self._lost_answers.forget()
             self.model.message.emit(
