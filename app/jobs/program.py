@@ -173,6 +173,15 @@ class Program:
         coords = np.array(rows, dtype=np.float64).reshape(len(rows), len(axes))
         return ProgramPath(coords, np.array(ops, dtype=np.int64), np.array(pen, dtype=bool))
 
+    def works_between(self, lo: int, hi: int) -> bool | None:
+        """Whether operations ``[lo, hi)`` do work that running them again would repeat.
+
+        None: the pen says (a plotter's pen-down strokes).  A machine without a
+        pen (the winder: its plunges drill, its moves wind) answers itself, so a
+        resume never sends its work again silently.
+        """
+        return None
+
     def preview_path(self, x_axis: str, y_axis: str | None) -> ProgramPath:
         """What the preview draws in the plane: the two axes as they are (polar jobs project)."""
         if y_axis is None:

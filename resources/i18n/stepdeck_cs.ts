@@ -363,6 +363,10 @@
         <source>Count it as drilled</source>
         <translation>Započítat jako vyvrtaný</translation>
     </message>
+    <message>
+        <source>the drill ran a command the station did not send ({0}): a hole may have been drilled twice or in the wrong place; look at the board</source>
+        <translation>vrtačka provedla příkaz, který stanice neposlala ({0}): díra mohla být vyvrtána dvakrát nebo na špatném místě; zkontrolujte desku</translation>
+    </message>
 </context>
 <context>
     <name>DrillPanel</name>
@@ -493,7 +497,7 @@
     </message>
     <message>
         <source>   (link check: is the drill there?)</source>
-        <extracomment>The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
+        <extracomment>The device acknowledged the command in flight (``R``); the command&apos;s text. The command in flight has finished (``D``); the command&apos;s text. The device refused the command in flight (``E``); the queue was cleared. The last queued command is done and nothing is waiting. The drill acknowledged or finished what the station did not send, in a way that can harm (a drill cycle run twice, another procedure): the message says what was heard. A line for the terminal: ``&gt; X248`` as sent, ``&lt; RX`` as heard (the text decoded here, so the page only shows it). Station-clock time by which the device must have answered the command in flight. Since when the reply due has been awaited, and from when on it is late. Probes (``I``) written and not yet answered ``EI``. After a silence: until when the drill may still be running the command it had.</extracomment>
         <translation>   (kontrola spojení: je vrtačka připojena?)</translation>
     </message>
     <message>
@@ -1595,6 +1599,10 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>it is in alarm</source>
         <translation>je v alarmu</translation>
+    </message>
+    <message>
+        <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
+        <translation>{0} řádek/řádků stále bez odpovědi, zatímco deska stojí nečinně, a její hlášení nemohou ukázat, zda je má: deska se resetuje, poloha zůstává, a co provedla, se posoudí znovu</translation>
     </message>
 </context>
 <context>

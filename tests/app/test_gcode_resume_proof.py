@@ -328,3 +328,25 @@ def test_moves_in_a_row_to_the_same_point_are_one_place(tmp_path: Path) -> None:
     lines = ["G21 G90", "G0 X10 Y10", "M3 S1000", "G1 X20 Y10 F3000", "G1 X20 Y10", "M5"]
     stream = _streamed(tmp_path, lines, answered=2, written=6)
     assert stream.stands_after((20.0, 10.0), 2, 6) == 4
+
+
+def test_a_winders_plunges_are_work_its_travel_is_not() -> None:
+    """Relay string-art seeds 41 and 59: after a reopened port the resume sent 13 operations
+    again as "drawing nothing" (the winder has no pen) and drilled a nail twice."""
+    from app.jobs.formats.string_art.program import build_program
+    from app.jobs.formats.string_art.reader import StringArtJob, StringArtParams
+    from app.jobs.program import OpKind
+
+    profile = load_profile("string-art")
+    program = build_program(StringArtJob(StringArtParams(0, 8, 8.0), (0, 3, 6, 1)), profile)
+    stream = GcodeStream(program, profile, 0)
+    ops = list(program)
+    z = [i for i, op in enumerate(ops) if op.kind is OpKind.MOVE and "Z" in op.target]
+    travel = [
+        i
+        for i, op in enumerate(ops[: program.wait_index])
+        if op.kind is OpKind.MOVE and "Z" not in op.target
+    ]
+    assert z and travel and z[0] < program.wait_index
+    assert stream.draws_between(z[0], z[0] + 1)  # a plunge drills
+    assert not stream.draws_between(travel[0], travel[0] + 1)  # travel to a nail does not

@@ -8,6 +8,7 @@ behind it.  The job hung for good.  Judged from the emulator's own log.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -190,6 +191,53 @@ def test_replies_held_then_read_in_a_burst_never_end_the_job_early(
         assert runner.state is JobState.DONE, messages
         # Done only once the board has drawn it all (the station closes the link after).
         assert drawn_when_done == ends, messages
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
+def test_lines_lost_on_a_board_without_bf_neither_hang_nor_redraw(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    """Relay string-art seed 34: a 3 s silence took lines whole on a board whose reports carry
+    no ``Bf:`` ($10=1).  It ran what it had and stood idle; nothing it reports could show the
+    lines missing, and the station waited for their answers for ever: the job hung."""
+    profile = load_profile("grbl-plotter")
+    program, ends = _short_strokes(profile, tmp_path)
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    # From here its reports carry no Bf:, as a fresh GRBL's ($10=1).
+    emulator = harness.gcode_emulator
+    emulator.config = replace(emulator.config, status_mask=1)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    strokes_sent = [0]
+    silent_from: list[float] = []
+
+    def lose_the_tenth_stroke(direction: Direction, data: bytes) -> bytes:
+        if silent_from:
+            return b"" if harness.clock.now() - silent_from[0] < 3.0 else data
+        if direction is Direction.TO_DEVICE:
+            strokes_sent[0] += data.count(b"G1 ")
+            if strokes_sent[0] >= 10:
+                silent_from.append(harness.clock.now())
+                return b""
+        return data
+
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        harness.station.model.message.connect(messages.append)
+        harness.loopback.set_manipulator(lose_the_tenth_stroke)
+        assert runner.load(program) == []
+        runner.start()
+        run_as_the_api_does(harness, runner)
+        assert silent_from
+        drawn = pen_down_moves(harness)
+        assert drawn == ends[: len(drawn)], messages  # none twice, none skipped, in order
+        assert runner.state in (JobState.DONE, JobState.FAILED), messages
+        if runner.state is JobState.DONE:
+            assert drawn == ends, messages
     finally:
         runner.deleteLater()
         harness.close()

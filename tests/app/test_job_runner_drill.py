@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -24,7 +24,7 @@ from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.profiles import load_profile
 from protocol.drill.codec import DRILL, Command
-from protocol.transport.loopback import Direction
+from protocol.transport.loopback import Direction, Manipulator
 from tests.helpers.harness import StationHarness
 
 X, Y = 0, 1
@@ -492,3 +492,74 @@ def test_a_registration_that_puts_holes_off_the_bed_is_refused_by_the_travel_che
     refused = runner.load(off_bed)
     assert refused and all(v.axis == "X" and v.value < 0 for v in refused)
     assert runner.program is None
+
+
+def _once(wanted: bytes, direction: Direction, change: Callable[[bytes], bytes]) -> Manipulator:
+    """A manipulator that changes the first message equal to ``wanted`` going ``direction``."""
+    fired: list[bool] = []
+
+    def manipulate(going: Direction, data: bytes) -> bytes:
+        if going is direction and data == wanted and not fired:
+            fired.append(True)
+            return change(data)
+        return data
+
+    return manipulate
+
+
+def test_a_drill_cycle_repeated_on_the_way_fails_the_job_instead_of_saying_done(
+    drill: StationHarness, runner: JobRunner, data_dir: Path
+) -> None:
+    """The relay's pcb-drill seed 55: ``V`` arrives twice, the drill says ``RV`` twice.
+
+    The drill has no checksum and no stop, so the second hole is drilled; but
+    the station heard the second acknowledgement and must not call the job done.
+    """
+    program = sample_program(data_dir)
+    messages: list[str] = []
+    runner.message.connect(messages.append)
+    first_drill = next(i for i, op in enumerate(program) if op.kind is OpKind.DRILL)
+    drill.loopback.set_manipulator(_once(b"V\r", Direction.TO_DEVICE, lambda d: d + d))
+    assert runner.load(program) == []
+    runner.start()
+    run_to_end(drill, runner)
+    assert runner.state is JobState.FAILED
+    assert runner.done <= first_drill + 1
+    assert any(
+        f"Job failed at {program[first_drill].source}" in m and "did not send" in m
+        for m in messages
+    )
+
+
+def test_a_move_repeated_on_the_way_or_a_reply_repeated_back_changes_nothing(
+    drill: StationHarness, runner: JobRunner, data_dir: Path
+) -> None:
+    """An absolute move run twice ends where once does; a repeated ``D`` is only a message."""
+    program = sample_program(data_dir)
+    first_move = next(op for op in program if op.kind is OpKind.MOVE)
+    x = drill.drill_session.to_microsteps(X, first_move.target["X"])
+    twice_x = _once(f"X{x}\r".encode(), Direction.TO_DEVICE, lambda d: d + d)
+    twice_dv = _once(b"DV\r\n", Direction.TO_HOST, lambda d: d + d)
+    drill.loopback.set_manipulator(lambda going, data: twice_dv(going, twice_x(going, data)))
+    assert runner.load(program) == []
+    runner.start()
+    run_to_end(drill, runner)
+    assert runner.state is JobState.DONE
+    assert drilled(drill) == expected_holes(drill, program)
+
+
+def test_a_letter_changed_on_the_way_fails_the_job(
+    drill: StationHarness, runner: JobRunner, data_dir: Path
+) -> None:
+    """``Y197`` arriving as ``X197``: the drill answers ``RX`` while ``Y`` is awaited."""
+    program = sample_program(data_dir)
+    first_move = next(op for op in program if op.kind is OpKind.MOVE)
+    y = drill.drill_session.to_microsteps(Y, first_move.target["Y"])
+    drill.loopback.set_manipulator(
+        _once(f"Y{y}\r".encode(), Direction.TO_DEVICE, lambda d: b"X" + d[1:])
+    )
+    assert runner.load(program) == []
+    runner.start()
+    run_to_end(drill, runner)
+    assert runner.state is JobState.FAILED
+    assert drill.drill_emulator.drill_log == ()

@@ -105,8 +105,23 @@ _BETWEEN = (
     " leaves the path is stopped at the next report, part of its stroke drawn"
 )
 _DRILL = (
-    "found by the relay: a flipped digit or a repeated line reaches the drill unchecked:"
-    " a hole in the wrong place, or drilled twice, and the job done"
+    "undetectable on the drill's wire (no checksum, no echo, no position): a flipped digit"
+    " is acknowledged as the command sent, and the hole is drilled in the wrong place with"
+    " the job done (seed 50)"
+)
+_DRILL_TWICE = (
+    "a drill cycle repeated on the way is run twice (the drill queues it and has no stop):"
+    " the hole is drilled twice; the station hears the second RV and fails the job, never"
+    " 'done' (seed 55, app/machines/drill/unasked.py), but the judge counts the hole"
+)
+_WINDER_REOPEN = (
+    "fixed, not yet measured in the slow mode: a reopened port resent 13 operations as"
+    " 'drawing nothing' and drilled a nail twice (seeds 41, 59); plunges now count as work"
+    " (StringArtProgram.works_between), so the resume asks the operator: a clean stop here"
+)
+_WINDER_DWELL = (
+    "fixed, not yet measured in the slow mode: a fragment stuck behind an unanswered G4"
+    " dwell was never judged, the job hung (seed 34)"
 )
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_LOST}",
@@ -122,8 +137,8 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("string-art", FaultKind.DROP): _NO_SUM,
     ("string-art", FaultKind.DUPLICATE): _DUP,
     ("string-art", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
-    ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
-    ("string-art", FaultKind.REOPEN): _REDRAW,
+    ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}; {_WINDER_DWELL}",
+    ("string-art", FaultKind.REOPEN): f"{_REDRAW}; {_WINDER_REOPEN}",
     ("grbl-sim", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
     ("grbl-sim", FaultKind.DUPLICATE): f"{_DUP}; {_REDRAW}",
     ("grbl-sim", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
@@ -131,7 +146,7 @@ KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
     ("grbl-sim", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
     ("grbl-sim", FaultKind.REOPEN): f"{_REDRAW}; {_RESET}",
     ("pcb-drill", FaultKind.DROP): f"{_SILENT} (lost reply bytes end the same way)",
-    ("pcb-drill", FaultKind.DUPLICATE): _DRILL,
+    ("pcb-drill", FaultKind.DUPLICATE): _DRILL_TWICE,
     ("pcb-drill", FaultKind.CORRUPT): _DRILL,
     ("pcb-drill", FaultKind.SILENCE): _SILENT,
     ("usb3", FaultKind.DROP): _USB3,

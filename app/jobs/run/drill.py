@@ -70,6 +70,7 @@ class DrillDriver(SequentialDriver):
                 old.commandDone.disconnect(self._on_done)
                 old.commandFailed.disconnect(self._on_failed)
                 old.idle.disconnect(self._on_idle)
+                old.commandUnasked.disconnect(self._on_unasked)
                 old.frameSent.disconnect(self._on_sent)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
@@ -80,6 +81,7 @@ class DrillDriver(SequentialDriver):
             self._session.commandDone.connect(self._on_done)
             self._session.commandFailed.connect(self._on_failed)
             self._session.idle.connect(self._on_idle)
+            self._session.commandUnasked.connect(self._on_unasked)
             self._session.frameSent.connect(self._on_sent)
 
     def _send(self, index: int, op: Operation) -> None:
@@ -329,6 +331,29 @@ class DrillDriver(SequentialDriver):
         self.runner.fail(
             self.in_flight,
             QCoreApplication.translate("JobRunner", "the drill refused {0}").format(text),
+        )
+
+    def _on_unasked(self, heard: str) -> None:
+        """The drill ran what the station did not send: the job is not done as the file says.
+
+        The drill has no stop command, so what it queued still runs; the job
+        stops sending and fails, never "done" past a hole drilled twice or elsewhere.
+        """
+        if self.runner.state not in ACTIVE:
+            return
+        program = self.runner.program
+        index = self.in_flight
+        if index is None:
+            index = max(0, self.runner.done - 1) if program is not None else 0
+        self._pending = []
+        self._parking = False
+        self.runner.fail(
+            index,
+            QCoreApplication.translate(
+                "DrillDriver",
+                "the drill ran a command the station did not send ({0}): a hole may have been "
+                "drilled twice or in the wrong place; look at the board",
+            ).format(heard),
         )
 
 

@@ -501,6 +501,9 @@ class GcodeStream:
         """
         if hi <= lo:
             return False
+        works = self.program.works_between(lo, hi)
+        if works is not None:
+            return works
         path = self.program.path(self._axis_order)
         first = int(np.searchsorted(path.ops, lo, side="left"))
         last = int(np.searchsorted(path.ops, hi, side="left"))

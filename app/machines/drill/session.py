@@ -45,6 +45,7 @@ from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, QTimer,
 from app.link import Link
 from app.machine import LinkState, MachineModel
 from app.machines.drill.conversion import mm_to_microsteps, profile_microsteps_per_mm
+from app.machines.drill.unasked import ReplyLedger
 from app.machines.session import PENDING, MachineSession
 from protocol.clock import Clock
 from protocol.drill.codec import (
@@ -128,6 +129,9 @@ class DrillSession(MachineSession):
     commandFailed = Signal(str)
     #: The last queued command is done and nothing is waiting.
     idle = Signal()
+    #: The drill acknowledged or finished what the station did not send, in a way that can
+    #: harm (a drill cycle run twice, another procedure): the message says what was heard.
+    commandUnasked = Signal(str)
     #: A line for the terminal: ``> X248`` as sent, ``< RX`` as heard (the text decoded here,
     #: so the page only shows it).
     terminalLine = Signal(str)
@@ -143,6 +147,7 @@ class DrillSession(MachineSession):
     ) -> None:
         super().__init__(model, link, clock, parent)
         self.decoder = ReplyDecoder()
+        self._ledger = ReplyLedger()
         self._queue: deque[Command] = deque()
         self._in_flight: Command | None = None
         self._received = False
@@ -490,6 +495,8 @@ class DrillSession(MachineSession):
         self._show_started(command)
 
     def _clear(self) -> None:
+        if self._in_flight is not None:
+            self._ledger.abandoned(self._in_flight.letter)
         self._queue.clear()
         self._in_flight = None
         self._received = False
@@ -709,7 +716,7 @@ class DrillSession(MachineSession):
         refused = reply.kind is ReplyKind.ERROR
         if command is None or (reply.letter != command.letter and not refused):
             got = f"{reply.kind.value}{reply.letter}"
-            self.model.message.emit(
+            heard = (
                 QCoreApplication.translate(
                     "DrillSession", "Unexpected reply {0} from the drill (waiting for {1})"
                 ).format(got, command.letter)
@@ -718,14 +725,26 @@ class DrillSession(MachineSession):
                     "DrillSession", "Unexpected reply {0} from the drill"
                 ).format(got)
             )
+            self.model.message.emit(heard)
+            why = self._ledger.unasked(
+                reply.kind, reply.letter, command.letter if command is not None else None
+            )
+            if why is not None:
+                self.commandUnasked.emit(f"{heard}: it {why}")
             return
         text = command_text(command)
+        if reply.kind is ReplyKind.RECEIVED and self._received:
+            why = self._ledger.again(reply.letter)
+            if why is not None:
+                self.commandUnasked.emit(f"The drill {why} ({text})")
+            return
         if reply.kind is ReplyKind.RECEIVED:
             self._received = True
             takes = self.expected_s(command)
             self._expect(takes + DONE_LATE_S, DONE_FACTOR * takes + DONE_MARGIN_S)
             self.commandReceived.emit(text)
         elif reply.kind is ReplyKind.DONE:
+            self._ledger.done(reply.letter)
             self._in_flight = None
             self._expect(None)
             self._show_done(command)

@@ -22,7 +22,13 @@ from app.machines.gcode import timing
 from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.jogger import reports_moving
 from app.machines.gcode.lines import SentLine
-from app.machines.gcode.lost_answers import AnswersLost, LostAnswerWatch, StreamWaits, pauses
+from app.machines.gcode.lost_answers import (
+    AnswersLost,
+    LostAnswerWatch,
+    StreamWaits,
+    Unaccounted,
+    paused_s,
+)
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.supervision import MotionFault, fault_text
@@ -79,8 +85,7 @@ class StatusFollower:
         session = self._session
         if unanswered is None:
             unanswered = session.streamer.unanswered_tags()
-        pausing = any(pauses(sent.text) for sent in unanswered)
-        stuck = self.stuck.stuck(report, planner_empty=planner_empty, pausing=pausing)
+        stuck = self.stuck.stuck(report, planner_empty=planner_empty, paused_s=paused_s(unanswered))
         if stuck is not None:
             self.lost_answers.forget()
             session.model.message.emit(
@@ -109,6 +114,17 @@ class StatusFollower:
                     "answer (without Bf: in its reports it cannot show it has them)",
                 ).format(verdict.count)
             )
+        if isinstance(verdict, Unaccounted):
+            session.model.message.emit(
+                QCoreApplication.translate(
+                    "GcodeSession",
+                    "{0} line(s) still unanswered while the board stands idle, and its reports "
+                    "cannot show whether it has them: it is reset, keeping its position, and "
+                    "what it ran is looked at again",
+                ).format(verdict.count)
+            )
+            session.soft_reset()
+            return
         if not isinstance(verdict, AnswersLost):
             return
         if self.short_of_lines_sent(report):

@@ -19,6 +19,8 @@ purpose, and is never taken for this.
 
 from __future__ import annotations
 
+import math
+
 from protocol.clock import Clock
 from protocol.gcode.codec import StatusReport
 
@@ -40,17 +42,19 @@ class StuckLineWatch:
     def forget(self) -> None:
         self._since, self._reports, self._free = None, 0, None
 
-    def stuck(self, report: StatusReport, *, planner_empty: bool, pausing: bool) -> int | None:
+    def stuck(self, report: StatusReport, *, planner_empty: bool, paused_s: float) -> int | None:
         """The bytes stuck when this report makes it certain (then it starts over), else None.
 
-        ``pausing``: a line unanswered holds the board on purpose (a dwell, ``M0``).
+        ``paused_s``: how long the lines unanswered may hold the board on purpose (their
+        dwells; for ever with ``M0``).  A dwell bounds the wait, it does not end it: relay
+        string-art seed 34, a fragment behind a ``G4 S0.25`` kept the job waiting for ever.
         """
         free = report.rx_free
         held = None if free is None else self._rx_buffer - free
         if (
             report.state != "Idle"
             or not planner_empty
-            or pausing
+            or math.isinf(paused_s)
             or held is None
             or held <= 1  # GRBL counts an empty buffer as 127 or 128 free
         ):
@@ -60,7 +64,7 @@ class StuckLineWatch:
         if self._since is None or free != self._free:
             self._since, self._reports, self._free = now, 0, free
         self._reports += 1
-        if self._reports >= STUCK_REPORTS and now - self._since >= STUCK_AFTER_S:
+        if self._reports >= STUCK_REPORTS and now - self._since >= STUCK_AFTER_S + paused_s:
             self.forget()
             return held
         return None

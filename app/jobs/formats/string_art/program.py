@@ -194,6 +194,21 @@ class StringArtProgram(Program):
                 coords[:, column] = self.axis_positions[moves, _COLUMN[name]]
         return ProgramPath(coords, moves.astype(np.int64), np.zeros(len(moves), dtype=bool))
 
+    def works_between(self, lo: int, hi: int) -> bool:
+        """A plunge drills a nail: any Z move is work, never sent again silently.
+
+        The relay's string-art seeds 41 and 59: a reopened port, 13 operations
+        "that draw nothing" sent again, a nail drilled twice.  The winding
+        phase's turns are not counted: the resume goes back along the winding
+        (retrace) before it sends them again, so a turn resent from where it
+        began winds its nail once (tests/e2e/test_e2e_string_art.py).
+        """
+        lo, hi = max(lo, 0), min(hi, len(self.kind_codes))
+        if hi <= lo:
+            return False
+        moves = self.kind_codes[lo:hi] == _KIND_CODES[OpKind.MOVE]
+        return bool(np.any(moves & (self.move_axis[lo:hi] == _COLUMN["Z"])))
+
     def preview_path(self, x_axis: str, y_axis: str | None) -> ProgramPath:
         """The board plane in mm whatever the axes: x = X·cos A, y = X·sin A; winding is work."""
         moves = self._move_indices()
