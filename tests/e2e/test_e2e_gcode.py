@@ -29,6 +29,7 @@ from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import OpKind, Program
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
+from app.machines.gcode.job_feed import wire_text
 from app.profiles import load_profile
 from app.station import Station
 from tests.helpers.emulator_process import emulator_on_pty
@@ -189,8 +190,10 @@ def test_arcs_go_as_written_and_the_board_ends_each_where_the_preview_does(
     assert runner.state is JobState.DONE, runner.state
     logged = events(log)
     received = [e["text"] for e in logged if e["event"] == "line"]
-    # Every arc went to the board as the file wrote it.
-    assert [text for text in received if text[:3] in ("G02", "G03")] == [op.line for op in arcs]
+    # Every arc went to the board as the file wrote it, compact (as GRBL reads it).
+    assert [text for text in received if text[:3] in ("G02", "G03")] == [
+        wire_text(op.line) for op in arcs
+    ]
     # The board's moves pass through every end point the preview has, in order.
     ends = iter(
         (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
@@ -247,3 +250,41 @@ def test_a_jog_then_a_square_without_g90_ends_where_the_file_says(
     drawn = last_moves()
     assert drawn and drawn[-1] == (10.0, 10.0), drawn
     assert set(drawn) == square
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_a_grbl_job_arrives_compact_within_the_buffer_and_draws_the_file(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    """What arrives on the wire is the compact line, counted as such: the board's
+    buffer held at most 127 bytes, it refused nothing, and it drew the file."""
+    path, log = emulator
+    connect(qtbot, station, path)
+    corners = [(10 + 30 * (k % 2), 10 + 30 * ((k // 2) % 2)) for k in range(40)]
+    written = ["G21 G90 (millimetres, absolute)", "g0 x10 y10", "M3 S1000 ; pen down"]
+    written += [f"G1   X{x:.3f}   Y{y:.3f}   F3000" for x, y in corners]
+    written += ["M5"]
+    job = tmp_path / "spaced.gcode"
+    job.write_text("\n".join(written) + "\n", encoding="ascii")
+    program = load_job(job, ["X", "Y"], JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title))
+    runner = run(qtbot, station, program, tmp_path, [])
+    assert runner.state is JobState.DONE, runner.state
+    qtbot.waitUntil(
+        lambda: any(e["event"] == "line" and e["text"] == "M5" for e in events(log)),
+        timeout=5000,
+    )
+    logged = events(log)
+    lines = [e for e in logged if e["event"] == "line"]
+    job_lines = [e["text"] for e in lines][-len(written) :]
+    assert job_lines == ["G21G90", "G0X10Y10", "M3S1000"] + [
+        f"G1X{x:.3f}Y{y:.3f}F3000" for x, y in corners
+    ] + ["M5"]
+    assert max(e["unacknowledged"] for e in lines) <= 127
+    # Counted by the compact bytes, the window kept several lines in the buffer at once.
+    assert max(e["unacknowledged"] for e in lines) > 60
+    assert not [e for e in logged if e["event"] == "reply" and "ERR" in e["text"].upper()]
+    moves = [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
+    ]
+    assert moves[-1] == corners[-1]

@@ -316,7 +316,7 @@ class GcodeSession(MachineSession):
     def start_job(self, source: JobSource) -> JobFeed:
         """A running job's lines go through the feed made here (:mod:`~app.machines.gcode.
         job_feed`); its answers are counted where they are read, it is not pulled yet."""
-        feed = JobFeed(self, source)
+        feed = JobFeed(self, source, compact=self.settings.compact_lines)
         self.feeder.follow(feed)
         return feed
 
@@ -339,7 +339,7 @@ class GcodeSession(MachineSession):
     def tell_written(self, written: list[tuple[bytes, SentLine]]) -> None:
         for raw, sent in written:
             try:
-                self._planned.line(sent.text, sent.text, sent.op_index)
+                self._planned.line(raw.decode("ascii").rstrip(), sent.text, sent.op_index)
             except (ValueError, ArithmeticError):
                 # A line this reading cannot place is not followed; the stream goes on.
                 _log.exception("the path of %r could not be followed", sent.text)
