@@ -1648,7 +1648,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>the {0}</source>
-        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter).</extracomment>
+        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter). Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is the compact line&apos;s, what the board&apos;s line buffer really holds.</extracomment>
         <translation>stroj {0}</translation>
     </message>
     <message>
@@ -2195,6 +2195,15 @@ Napriek tomu odoslať do stroja?</translation>
         <source>{0}: {1} — {2} {3:g}: the machine has no {2} axis</source>
         <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
         <translation>{0}: {1} — {2} {3:g}: stroj nemá os {2}</translation>
+    </message>
+    <message>
+        <source>change to pen T{0}</source>
+        <extracomment>``M6``, ``M06 T2``, ``T2 M6``, ``m6t02``: the change, with its tool number before or after. The highest tool number GRBL takes (its T is a byte), as the parser refuses above it.</extracomment>
+        <translation>vymeňte pero za T{0}</translation>
+    </message>
+    <message>
+        <source>change the pen</source>
+        <translation>vymeňte pero</translation>
     </message>
 </context>
 <context>
@@ -2914,7 +2923,7 @@ Načítať ako:</translation>
     <name>MachineProfile</name>
     <message>
         <source>XY positioning stage</source>
-        <extracomment>How far a reported position may stray from the path of the moves sent ([supervision] tolerance_mm): a few steps, a rounded report and a report read while the move went on. What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras). &quot;counting&quot; (at most rx_buffer - 1 bytes unacknowledged) or &quot;ping-pong&quot; G1/G2/G3 need a feed rate set first (GRBL&apos;s error:22); False: the firmware has a default. The unit of ``G4 P``: &quot;s&quot; on GRBL (P150 is two and a half minutes), &quot;ms&quot; on firmwares that read it as Marlin does. The loader, the estimate and the emulator follow it. GRBL&apos;s ``$11`` (mm): the board joins moves at their junction speed, planning ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without a look-ahead planner): every move starts and ends at rest. A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); False: GRBL&apos;s, which refuses it (error:26) and needs the axes named. The board answers a line only once its motion is done (the CoreXY plotter), not once planned (GRBL): every answered line ran, and an unanswered one is at most the one under way — what a resume after a fault can take as proven. A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval that only ``M98 &lt;µs&gt;`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on interval in µs. None: F sets the speed (GRBL, the winder).</extracomment>
+        <extracomment>How far a reported position may stray from the path of the moves sent ([supervision] tolerance_mm): a few steps, a rounded report and a report read while the move went on. What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras). &quot;counting&quot; (at most rx_buffer - 1 bytes unacknowledged) or &quot;ping-pong&quot; G1/G2/G3 need a feed rate set first (GRBL&apos;s error:22); False: the firmware has a default. The unit of ``G4 P``: &quot;s&quot; on GRBL (P150 is two and a half minutes), &quot;ms&quot; on firmwares that read it as Marlin does. The loader, the estimate and the emulator follow it. GRBL&apos;s ``$11`` (mm): the board joins moves at their junction speed, planning ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without a look-ahead planner): every move starts and ends at rest. A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); False: GRBL&apos;s, which refuses it (error:26) and needs the axes named. The board answers a line only once its motion is done (the CoreXY plotter), not once planned (GRBL): every answered line ran, and an unanswered one is at most the one under way — what a resume after a fault can take as proven. A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval that only ``M98 &lt;µs&gt;`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on interval in µs. None: F sets the speed (GRBL, the winder). A GRBL board&apos;s job lines go compact (:attr:`compact_lines`); False: as written.</extracomment>
         <translation>Polohovací stôl XY</translation>
     </message>
     <message>

@@ -288,3 +288,46 @@ def test_a_grbl_job_arrives_compact_within_the_buffer_and_draws_the_file(
         (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
     ]
     assert moves[-1] == corners[-1]
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_m6_t2_waits_for_the_operator_and_the_board_never_gets_it(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    """A pen change asks the operator once, with its pen; the board gets the lines before
+    and after it, never the M6 line (its error:20), and draws both strokes."""
+    path, log = emulator
+    connect(qtbot, station, path)
+    job = tmp_path / "two-pens.gcode"
+    job.write_text(
+        "G21 G90\nM3 S1000\nG1 X10 Y0 F3000\nM5\nM6 T2 (red)\nM3 S1000\nG1 X10 Y10 F3000\nM5\n",
+        encoding="ascii",
+    )
+    program = load_job(job, ["X", "Y"], JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title))
+    asked: list[str] = []
+    runner = run(qtbot, station, program, tmp_path, asked)
+    assert runner.state is JobState.DONE, runner.state
+    assert asked == ["change to pen T2: red"]
+    qtbot.waitUntil(
+        lambda: sum(e["event"] == "line" and e["text"] == "M5" for e in events(log)) == 2,
+        timeout=5000,
+    )
+    logged = events(log)
+    lines = [e["text"] for e in logged if e["event"] == "line"]
+    assert lines[-7:] == [
+        "G21G90",
+        "M3S1000",
+        "G1X10Y0F3000",
+        "M5",
+        "M3S1000",
+        "G1X10Y10F3000",
+        "M5",
+    ]
+    assert not [e for e in logged if e["event"] == "reply" and "ERR" in e["text"].upper()]
+    drawn = [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3), bool(e["pen"]))
+        for e in logged
+        if e["event"] == "move"
+    ]
+    assert drawn[-2:] == [(10.0, 0.0, True), (10.0, 10.0, True)]

@@ -50,6 +50,7 @@ from app.jobs.formats.gcode.program import (
     GcodeProblem,
 )
 from app.jobs.formats.gcode.state import Pending, State
+from app.jobs.formats.gcode.tool_change import tool_change, tool_prompt
 from app.jobs.formats.gcode.words import (
     EXPONENT,
     MAX_LINE_CHARS,
@@ -341,6 +342,8 @@ class Parser:
                 or QCoreApplication.translate("JobFile", "M{0}: paused").format(wait.group(1))
             )
             self._commit(number, code, [Pending(WAIT, "", message=message)], ())
+        elif (tool := tool_change(code)) is not None:
+            self._commit(number, code, [Pending(WAIT, "", message=tool_prompt(tool, comment))], ())
         elif display := MESSAGE_RE.match(code):
             word = f"M{display.group(1)}"
             reasons = () if word in self.words else (self._cannot(word),)
