@@ -1234,6 +1234,7 @@
     </message>
     <message>
         <source>Zero by hand</source>
+        <extracomment>A GRBL alarm or error explained, with what clears it (hidden without one).</extracomment>
         <translation>Nulování rukou</translation>
     </message>
     <message>
@@ -1368,6 +1369,253 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>it is in alarm</source>
         <translation>je v alarmu</translation>
+    </message>
+</context>
+<context>
+    <name>GrblAlarmBand</name>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Odemknout ($X)</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Výchozí poloha ($H)</translation>
+    </message>
+</context>
+<context>
+    <name>GrblCodes</name>
+    <message>
+        <source>Home the machine ($H): its position is likely lost.</source>
+        <extracomment>The actions, in words (each code says one).</extracomment>
+        <translation>Najeďte stroj do výchozí polohy ($H): jeho poloha je pravděpodobně ztracena.</translation>
+    </message>
+    <message>
+        <source>Unlock the machine ($X): its position is kept.</source>
+        <translation>Odemkněte stroj ($X): jeho poloha zůstala zachována.</translation>
+    </message>
+    <message>
+        <source>Check the limit switches and their wiring, then home the machine ($H).</source>
+        <translation>Zkontrolujte koncové spínače a jejich zapojení, pak najeďte stroj do výchozí polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Check the probe and its wiring, then unlock ($X).</source>
+        <translation>Zkontrolujte sondu a její zapojení, pak odemkněte ($X).</translation>
+    </message>
+    <message>
+        <source>Close the safety door, then home the machine ($H).</source>
+        <translation>Zavřete bezpečnostní dvířka, pak najeďte stroj do výchozí polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Correct the line: the board did not run it.</source>
+        <translation>Opravte řádek: deska ho neprovedla.</translation>
+    </message>
+    <message>
+        <source>Check the board&apos;s settings ($$).</source>
+        <translation>Zkontrolujte nastavení desky ($$).</translation>
+    </message>
+    <message>
+        <source>Wait until the machine stands idle, then send it again.</source>
+        <translation>Počkejte, až stroj stojí v klidu, a pošlete příkaz znovu.</translation>
+    </message>
+    <message>
+        <source>Clear the alarm first: home the machine ($H), or unlock it ($X).</source>
+        <translation>Nejprve zrušte alarm: najeďte stroj do výchozí polohy ($H), nebo ho odemkněte ($X).</translation>
+    </message>
+    <message>
+        <source>Close the safety door.</source>
+        <translation>Zavřete bezpečnostní dvířka.</translation>
+    </message>
+    <message>
+        <source>Jog within the machine&apos;s travel.</source>
+        <translation>Posouvejte jen v rozsahu pojezdu stroje.</translation>
+    </message>
+    <message>
+        <source>Hard limit has been triggered. Machine position is likely lost due to sudden halt. Re-homing is highly recommended.</source>
+        <translation>Sepnul koncový spínač. Poloha stroje je po náhlém zastavení pravděpodobně ztracena. Důrazně doporučujeme znovu najet do výchozí polohy.</translation>
+    </message>
+    <message>
+        <source>Soft limit alarm. G-code motion target exceeds machine travel. Machine position retained. Alarm may be safely unlocked.</source>
+        <translation>Softwarový limit. Cíl pohybu G-kódu leží mimo pojezd stroje. Poloha stroje zůstala zachována. Alarm lze bezpečně odemknout.</translation>
+    </message>
+    <message>
+        <source>Reset while in motion. Machine position is likely lost due to sudden halt. Re-homing is highly recommended.</source>
+        <translation>Reset během pohybu. Poloha stroje je po náhlém zastavení pravděpodobně ztracena. Důrazně doporučujeme znovu najet do výchozí polohy.</translation>
+    </message>
+    <message>
+        <source>Probe fail. Probe is not in the expected initial state before starting probe cycle.</source>
+        <translation>Chyba sondy. Sonda není před začátkem měřicího cyklu v očekávaném výchozím stavu.</translation>
+    </message>
+    <message>
+        <source>Probe fail. Probe did not contact the workpiece within the programmed travel.</source>
+        <translation>Chyba sondy. Sonda se v naprogramované dráze nedotkla obrobku.</translation>
+    </message>
+    <message>
+        <source>Homing fail. The active homing cycle was reset.</source>
+        <translation>Chyba najetí do výchozí polohy. Probíhající cyklus byl resetován.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Safety door was opened during homing cycle.</source>
+        <translation>Chyba najetí do výchozí polohy. Během cyklu byla otevřena bezpečnostní dvířka.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Pull off travel failed to clear limit switch. Try increasing pull-off setting or check wiring.</source>
+        <translation>Chyba najetí do výchozí polohy. Odjezd od spínače ho neuvolnil. Zkuste zvětšit odjezd (pull-off) nebo zkontrolujte zapojení.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Could not find limit switch within search distances. Try increasing max travel, decreasing pull-off distance, or check wiring.</source>
+        <translation>Chyba najetí do výchozí polohy. Koncový spínač nebyl v hledané vzdálenosti nalezen. Zkuste zvětšit maximální pojezd, zmenšit odjezd (pull-off) nebo zkontrolujte zapojení.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Second dual axis limit switch failed to trigger within configured search distance after first. Try increasing trigger fail distance or check wiring.</source>
+        <translation>Chyba najetí do výchozí polohy. Druhý spínač zdvojené osy nesepnul v nastavené vzdálenosti po prvním. Zkuste zvětšit tuto vzdálenost nebo zkontrolujte zapojení.</translation>
+    </message>
+    <message>
+        <source>G-code words consist of a letter and a value. Letter was not found.</source>
+        <translation>Slovo G-kódu tvoří písmeno a hodnota. Písmeno chybí.</translation>
+    </message>
+    <message>
+        <source>Missing the expected G-code word value or numeric value format is not valid.</source>
+        <translation>Chybí očekávaná hodnota slova G-kódu nebo číslo nemá platný tvar.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; system command was not recognized or supported.</source>
+        <translation>Systémový příkaz &apos;$&apos; GRBL nezná nebo nepodporuje.</translation>
+    </message>
+    <message>
+        <source>Negative value received for an expected positive value.</source>
+        <translation>Záporná hodnota tam, kde se očekává kladná.</translation>
+    </message>
+    <message>
+        <source>Homing cycle failure. Homing is not enabled via settings.</source>
+        <translation>Najetí do výchozí polohy selhalo. V nastavení není povoleno.</translation>
+    </message>
+    <message>
+        <source>Minimum step pulse time must be greater than 3usec.</source>
+        <translation>Nejkratší krokový impulz musí být delší než 3 µs.</translation>
+    </message>
+    <message>
+        <source>An EEPROM read failed. Auto-restoring affected EEPROM to default values.</source>
+        <translation>Čtení EEPROM selhalo. Dotčené hodnoty EEPROM se obnovují na výchozí.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; command cannot be used unless Grbl is IDLE. Ensures smooth operation during a job.</source>
+        <translation>Příkaz &apos;$&apos; lze použít jen v klidu (Idle). Tak nenaruší běžící úlohu.</translation>
+    </message>
+    <message>
+        <source>G-code commands are locked out during alarm or jog state.</source>
+        <translation>Příkazy G-kódu jsou během alarmu nebo ručního posuvu zablokovány.</translation>
+    </message>
+    <message>
+        <source>Soft limits cannot be enabled without homing also enabled.</source>
+        <translation>Softwarové limity nelze zapnout bez povoleného najetí do výchozí polohy.</translation>
+    </message>
+    <message>
+        <source>Max characters per line exceeded. Received command line was not executed.</source>
+        <translation>Překročen největší počet znaků na řádku. Přijatý řádek nebyl proveden.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; setting value cause the step rate to exceed the maximum supported.</source>
+        <translation>Hodnota nastavení &apos;$&apos; by překročila nejvyšší podporovanou krokovou frekvenci.</translation>
+    </message>
+    <message>
+        <source>Safety door detected as opened and door state initiated.</source>
+        <translation>Bezpečnostní dvířka jsou otevřena; deska přešla do stavu Door.</translation>
+    </message>
+    <message>
+        <source>Build info or startup line exceeded EEPROM line length limit. Line not stored.</source>
+        <translation>Informace o sestavení nebo startovní řádek přesahuje délku řádku v EEPROM. Řádek nebyl uložen.</translation>
+    </message>
+    <message>
+        <source>Jog target exceeds machine travel. Jog command has been ignored.</source>
+        <translation>Cíl ručního posuvu leží mimo pojezd stroje. Příkaz byl ignorován.</translation>
+    </message>
+    <message>
+        <source>Jog command has no &apos;=&apos; or contains prohibited g-code.</source>
+        <translation>Příkaz ručního posuvu nemá &apos;=&apos; nebo obsahuje zakázaný G-kód.</translation>
+    </message>
+    <message>
+        <source>Laser mode requires PWM output.</source>
+        <translation>Laserový režim vyžaduje výstup PWM.</translation>
+    </message>
+    <message>
+        <source>Unsupported or invalid g-code command found in block.</source>
+        <translation>Řádek obsahuje nepodporovaný nebo neplatný příkaz G-kódu.</translation>
+    </message>
+    <message>
+        <source>More than one g-code command from same modal group found in block.</source>
+        <translation>Řádek obsahuje víc příkazů G-kódu z téže modální skupiny.</translation>
+    </message>
+    <message>
+        <source>Feed rate has not yet been set or is undefined.</source>
+        <translation>Rychlost posuvu ještě nebyla nastavena.</translation>
+    </message>
+    <message>
+        <source>G-code command in block requires an integer value.</source>
+        <translation>Příkaz G-kódu na řádku vyžaduje celé číslo.</translation>
+    </message>
+    <message>
+        <source>More than one g-code command that requires axis words found in block.</source>
+        <translation>Řádek obsahuje víc příkazů G-kódu, které vyžadují slova os.</translation>
+    </message>
+    <message>
+        <source>Repeated g-code word found in block.</source>
+        <translation>Řádek obsahuje opakované slovo G-kódu.</translation>
+    </message>
+    <message>
+        <source>No axis words found in block for g-code command or current modal state which requires them.</source>
+        <translation>Řádek nemá slova os, která příkaz nebo aktuální modální stav vyžaduje.</translation>
+    </message>
+    <message>
+        <source>Line number value is invalid.</source>
+        <translation>Číslo řádku je neplatné.</translation>
+    </message>
+    <message>
+        <source>G-code command is missing a required value word.</source>
+        <translation>Příkazu G-kódu chybí povinné slovo s hodnotou.</translation>
+    </message>
+    <message>
+        <source>G59.x work coordinate systems are not supported.</source>
+        <translation>Pracovní souřadnicové systémy G59.x nejsou podporovány.</translation>
+    </message>
+    <message>
+        <source>G53 only allowed with G0 and G1 motion modes.</source>
+        <translation>G53 je povoleno jen s pohyby G0 a G1.</translation>
+    </message>
+    <message>
+        <source>Axis words found in block when no command or current modal state uses them.</source>
+        <translation>Řádek obsahuje slova os, která žádný příkaz ani modální stav nepoužívá.</translation>
+    </message>
+    <message>
+        <source>G2 and G3 arcs require at least one in-plane axis word.</source>
+        <translation>Oblouky G2 a G3 vyžadují aspoň jedno slovo osy v rovině.</translation>
+    </message>
+    <message>
+        <source>Motion command target is invalid.</source>
+        <translation>Cíl pohybového příkazu je neplatný.</translation>
+    </message>
+    <message>
+        <source>Arc radius value is invalid.</source>
+        <translation>Poloměr oblouku je neplatný.</translation>
+    </message>
+    <message>
+        <source>G2 and G3 arcs require at least one in-plane offset word.</source>
+        <translation>Oblouky G2 a G3 vyžadují aspoň jedno slovo odsazení v rovině.</translation>
+    </message>
+    <message>
+        <source>Unused value words found in block.</source>
+        <translation>Řádek obsahuje nepoužitá slova s hodnotou.</translation>
+    </message>
+    <message>
+        <source>G43.1 dynamic tool length offset is not assigned to configured tool length axis.</source>
+        <translation>Dynamická korekce délky nástroje G43.1 není přiřazena k nastavené ose délky nástroje.</translation>
+    </message>
+    <message>
+        <source>Tool number greater than max supported value.</source>
+        <translation>Číslo nástroje je větší než největší podporované.</translation>
+    </message>
+    <message>
+        <source>A code GRBL 1.1 does not document.</source>
+        <translation>Kód, který dokumentace GRBL 1.1 nezná.</translation>
     </message>
 </context>
 <context>

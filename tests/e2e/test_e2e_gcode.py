@@ -32,7 +32,9 @@ from app.machine import LinkState
 from app.machines.gcode.job_feed import wire_text
 from app.profiles import load_profile
 from app.station import Station
+from protocol.gcode.codec import ErrorReply
 from tests.helpers.emulator_process import emulator_on_pty
+from widgets.panels.gcode import GcodePanel
 
 JOB_TIMEOUT_MS = 90_000
 TIME_SCALE = 50
@@ -331,3 +333,34 @@ def test_m6_t2_waits_for_the_operator_and_the_board_never_gets_it(
         if e["event"] == "move"
     ]
     assert drawn[-2:] == [(10.0, 0.0, True), (10.0, 10.0, True)]
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_a_refused_line_is_explained_once_and_gone_when_a_line_is_accepted(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station
+) -> None:
+    path, log = emulator
+    connect(qtbot, station, path)
+    panel = GcodePanel(station)
+    qtbot.addWidget(panel)
+    panel.show()
+    band = panel.alarm_band
+    session = station.gcode_session
+    assert session is not None
+    session.send_line("G1 X10", "console")  # no feed rate yet: GRBL's error:22
+    qtbot.waitUntil(band.isVisible, timeout=5000)
+    assert band.title.text() == "error:22"
+    assert band.meaning.text() == "Feed rate has not yet been set or is undefined."
+    assert not band.unlock_button.isVisible() and not band.home_button.isVisible()
+    shown = band.explainer.shown
+    refusals: list[object] = []
+    session.frameReceived.connect(
+        lambda reply, _raw: refusals.append(reply) if isinstance(reply, ErrorReply) else None
+    )
+    session.send_line("G1 X10", "console")  # the same refusal: nothing new
+    qtbot.waitUntil(lambda: len(refusals) == 1, timeout=5000)  # the band has heard it too
+    assert sum(e["event"] == "reply" and e["text"] == "error:22" for e in events(log)) == 2
+    assert band.explainer.shown is shown and band.isVisible()
+    session.send_line("G1 X10 F600", "console")
+    qtbot.waitUntil(lambda: not band.isVisible(), timeout=5000)
