@@ -130,11 +130,21 @@ class GcodeSettings:
     #: that only ``M98 <µs>`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on
     #: interval in µs.  None: F sets the speed (GRBL, the winder).
     step_interval_us: float | None = None
+    #: A GRBL board's job lines go compact (:attr:`compact_lines`); False: as written.
+    compact: bool = True
 
     @property
     def feed_ignored(self) -> bool:
         """F words mean nothing to this firmware: the step interval alone sets the speed."""
         return self.step_interval_us is not None
+
+    @property
+    def compact_lines(self) -> bool:
+        """A job's lines go on the wire without spaces and in upper case, as GRBL's own
+        ``stream.py`` sends them: GRBL's serial layer drops both before its parser, so the
+        board reads the same line in fewer bytes (a wire-bound job is delivered sooner).
+        Not for firmwares that read spaces (the CoreXY plotter's ``M98 500``)."""
+        return self.compact and "$J" in self.words
 
     @property
     def dwell_p_seconds(self) -> float:
@@ -293,6 +303,8 @@ def _profile_from(data: dict[str, Any], path: Path) -> MachineProfile:
             isinstance(interval, int | float) and math.isfinite(interval) and interval > 0
         ):
             raise ProfileError(f"{path}: [gcode] step_interval_us must be a time > 0 (µs)")
+        if not isinstance(gcode.compact, bool):
+            raise ProfileError(f"{path}: [gcode] compact must be true or false")
         if gcode.streaming not in ("counting", "ping-pong"):
             raise ProfileError(f"{path}: [gcode] streaming must be 'counting' or 'ping-pong'")
         if gcode.kinematics not in ("cartesian", "corexy", "cylindrical"):

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -44,6 +45,8 @@ from tests.helpers.emulator_process import device_path, start_emulator, stop  # 
 BAUD = 115200
 WIRE_BYTES_PER_S = BAUD / 10
 PROFILE = "corexy-plotter"
+#: The GRBL plotter, whose lines go compact (issue #33's delivery row).
+GRBL_PROFILE = "grbl-plotter"
 #: Lines of the job row (the issue's figure).
 JOB_LINES = 10_000
 
@@ -90,16 +93,18 @@ class Run:
 
 
 @contextmanager
-def _emulator() -> Iterator[tuple[str, int]]:
+def _emulator(profile: str = PROFILE) -> Iterator[tuple[str, int]]:
     """A paced emulator of the plotter: its device path and process id."""
-    process = start_emulator("--profile", PROFILE, "--baud", str(BAUD))
+    process = start_emulator("--profile", profile, "--baud", str(BAUD))
     try:
         yield device_path(process), process.pid
     finally:
         stop(process)
 
 
-def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> Run:
+def _stream(
+    mode: str, lines: list[str], *, as_job: bool = False, profile_name: str = PROFILE
+) -> Run:
     """Stream ``lines`` through the station in ``mode`` until every one is answered.
 
     ``as_job``: the lines are a G-code file run by the job runner with the jobs dock
@@ -112,10 +117,10 @@ def _stream(mode: str, lines: list[str], *, as_job: bool = False) -> Run:
     from app.station import Station
 
     app = QApplication.instance() or QApplication([])
-    profile = load_profile(PROFILE)
+    profile = load_profile(profile_name)
     assert profile.gcode is not None
     profile = replace(profile, gcode=replace(profile.gcode, streaming=mode))
-    with _emulator() as (path, pid):
+    with _emulator(profile_name) as (path, pid):
         station = Station(profile)
         try:
             station.connect_serial(path)
@@ -216,7 +221,14 @@ def _run_as_job(
 # --- the peer: grbl's stream.py, character counting --------------------------------------
 
 
-def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float, float]:
+def stream_py_line(line: str) -> str:
+    """A line as grbl's ``stream.py`` sends it: spaces and comments dropped, upper case."""
+    return re.sub(r"\s|\(.*?\)", "", line).upper()
+
+
+def stream_counting(
+    path: str, lines: list[str], rx_buffer: int, *, compact: bool = False
+) -> tuple[float, float]:
     """Stream ``lines`` as grbl's ``stream.py`` does by character counting; (wall, processor) s.
 
     Written here from the method (GRBL wiki, "Streaming a G-code program"), not
@@ -227,7 +239,9 @@ def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float,
     The window is the station's (``rx_buffer - 1`` bytes unanswered at most), so
     the two differ in how they send, not in how much they may.
     The first line takes the pen there and is waited out (``?`` until Idle),
-    as the station's run does before it is timed.
+    as the station's run does before it is timed.  ``compact``: each line as
+    ``stream.py`` itself sends it (:func:`stream_py_line`: no spaces, no
+    comments, upper case), the figure the station's delivery is held to.
     """
     import serial
 
@@ -241,7 +255,8 @@ def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float,
             text = reply.strip().lower()
             return text.startswith(b"ok") or text.startswith(b"error")
 
-        port.write(lines[0].strip().encode() + b"\n")
+        shape = stream_py_line if compact else str.strip
+        port.write(shape(lines[0]).encode() + b"\n")
         while not answered(port.readline()):
             pass
         while True:
@@ -256,7 +271,7 @@ def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float,
         cpu = time.process_time()
         start = time.perf_counter()
         for line in lines:
-            block = line.strip().encode() + b"\n"
+            block = shape(line).encode() + b"\n"
             while in_flight and (sum(in_flight) + len(block) >= rx_buffer or port.in_waiting):
                 reply = port.readline()
                 if not reply:
@@ -276,17 +291,17 @@ def stream_counting(path: str, lines: list[str], rx_buffer: int) -> tuple[float,
         port.close()
 
 
-def _peer(lines: list[str]) -> Run:
+def _peer(lines: list[str], profile: str = PROFILE, *, compact: bool = False) -> Run:
     """The peer in a process of its own against a fresh emulator, as it would be run."""
     from app.profiles import load_profile
 
-    gcode = load_profile(PROFILE).gcode
+    gcode = load_profile(profile).gcode
     assert gcode is not None
-    with _emulator() as (path, pid):
+    with _emulator(profile) as (path, pid):
         emulator_cpu = process_cpu_s(pid)
         command = [sys.executable, str(Path(__file__)), "--peer-counting", path]
         child = subprocess.run(
-            [*command, str(len(lines)), str(gcode.rx_buffer)],
+            [*command, str(len(lines)), str(gcode.rx_buffer), "compact" if compact else "as-is"],
             cwd=ROOT,
             check=True,
             capture_output=True,
@@ -330,10 +345,38 @@ def bench_gcode_job_streaming() -> list[str]:
     ]
 
 
+def _grbl_lines(count: int) -> list[str]:
+    """The same short lines for the GRBL plotter: the first sets the feed GRBL requires."""
+    return [f"{_lines(1)[0]} F3000", *_lines(count - 1)]
+
+
+def bench_gcode_delivery() -> list[str]:
+    """Issue #33: a 10 000-line job on the GRBL plotter beside grbl's own ``stream.py``.
+
+    Both on a paced emulator of the GRBL plotter, same lines as written; the
+    station sends them compact, as ``stream.py`` does (goal: delivered in at
+    most 1.00 times its time).
+    """
+    lines = _grbl_lines(JOB_LINES)
+    job = _stream("counting", lines, as_job=True, profile_name=GRBL_PROFILE)
+    peer = _peer(lines, GRBL_PROFILE, compact=True)
+    written = sum(len(line) + 1 for line in lines)
+    wire = sum(len(stream_py_line(line)) + 1 for line in lines)
+    return [
+        f"{len(lines):,} lines of ~{written / len(lines):.0f} bytes as written, "
+        f"~{wire / len(lines):.0f} compact, on the GRBL plotter over a pty paced at {BAUD} "
+        "baud: the station's job beside grbl's stream.py (compact lines, its own process):",
+        f"  job: {job.elapsed:.2f} s; stream.py: {peer.elapsed:.2f} s; delivery ratio "
+        f"{job.elapsed / peer.elapsed:.2f}x stream.py's time (goal <= 1.00) {job.load}",
+    ]
+
+
 def main(argv: list[str]) -> None:
     if argv[:1] == ["--peer-counting"]:
         path, count, rx_buffer = argv[1], int(argv[2]), int(argv[3])
-        elapsed, cpu = stream_counting(path, _lines(count), rx_buffer)
+        compact = argv[4:5] == ["compact"]
+        lines = _grbl_lines(count) if compact else _lines(count)
+        elapsed, cpu = stream_counting(path, lines, rx_buffer, compact=compact)
         print(json.dumps({"elapsed": elapsed, "cpu": cpu}))
         return
     for text in bench_gcode_streaming() + bench_gcode_job_streaming():

@@ -24,7 +24,11 @@ if str(ROOT) not in sys.path:
 from protocol.clock import ManualClock  # noqa: E402
 from tools.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tools.bench_eta import bench_gcode_eta  # noqa: E402
-from tools.bench_streaming import bench_gcode_job_streaming, bench_gcode_streaming  # noqa: E402
+from tools.bench_streaming import (  # noqa: E402
+    bench_gcode_delivery,
+    bench_gcode_job_streaming,
+    bench_gcode_streaming,
+)
 from tools.bench_string_art_generator import bench_string_art_generator  # noqa: E402
 from tools.bench_string_art_peers import bench_string_art_peers  # noqa: E402
 from tools.bench_work_offsets import bench_resume_file_offset  # noqa: E402
@@ -1137,6 +1141,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_huge_arcs,
     bench_gcode_streaming,
     bench_gcode_job_streaming,
+    bench_gcode_delivery,
     bench_string_art_generator,
     bench_string_art_peers,
     bench_gcode_eta,

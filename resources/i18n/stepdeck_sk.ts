@@ -1423,6 +1423,7 @@
     </message>
     <message>
         <source>Zero by hand</source>
+        <extracomment>A GRBL alarm or error explained, with what clears it (hidden without one).</extracomment>
         <translation>Nulovanie rukou</translation>
     </message>
     <message>
@@ -1603,6 +1604,253 @@ Napriek tomu odoslať do stroja?</translation>
     <message>
         <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} riadok/riadkov stále bez odpovede, kým doska stojí nečinne, a jej hlásenia nemôžu ukázať, či ich má: doska sa resetuje, poloha zostáva, a čo vykonala, sa posúdi znova</translation>
+    </message>
+</context>
+<context>
+    <name>GrblAlarmBand</name>
+    <message>
+        <source>Unlock ($X)</source>
+        <translation>Odomknúť ($X)</translation>
+    </message>
+    <message>
+        <source>Home ($H)</source>
+        <translation>Východisková poloha ($H)</translation>
+    </message>
+</context>
+<context>
+    <name>GrblCodes</name>
+    <message>
+        <source>Home the machine ($H): its position is likely lost.</source>
+        <extracomment>The actions, in words (each code says one).</extracomment>
+        <translation>Nabehnite strojom do východiskovej polohy ($H): jeho poloha je pravdepodobne stratená.</translation>
+    </message>
+    <message>
+        <source>Unlock the machine ($X): its position is kept.</source>
+        <translation>Odomknite stroj ($X): jeho poloha zostala zachovaná.</translation>
+    </message>
+    <message>
+        <source>Check the limit switches and their wiring, then home the machine ($H).</source>
+        <translation>Skontrolujte koncové spínače a ich zapojenie, potom nabehnite do východiskovej polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Check the probe and its wiring, then unlock ($X).</source>
+        <translation>Skontrolujte sondu a jej zapojenie, potom odomknite ($X).</translation>
+    </message>
+    <message>
+        <source>Close the safety door, then home the machine ($H).</source>
+        <translation>Zatvorte bezpečnostné dvierka, potom nabehnite do východiskovej polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Correct the line: the board did not run it.</source>
+        <translation>Opravte riadok: doska ho nevykonala.</translation>
+    </message>
+    <message>
+        <source>Check the board&apos;s settings ($$).</source>
+        <translation>Skontrolujte nastavenia dosky ($$).</translation>
+    </message>
+    <message>
+        <source>Wait until the machine stands idle, then send it again.</source>
+        <translation>Počkajte, kým stroj stojí v pokoji, a pošlite príkaz znova.</translation>
+    </message>
+    <message>
+        <source>Clear the alarm first: home the machine ($H), or unlock it ($X).</source>
+        <translation>Najprv zrušte alarm: nabehnite do východiskovej polohy ($H), alebo stroj odomknite ($X).</translation>
+    </message>
+    <message>
+        <source>Close the safety door.</source>
+        <translation>Zatvorte bezpečnostné dvierka.</translation>
+    </message>
+    <message>
+        <source>Jog within the machine&apos;s travel.</source>
+        <translation>Posúvajte len v rozsahu pojazdu stroja.</translation>
+    </message>
+    <message>
+        <source>Hard limit has been triggered. Machine position is likely lost due to sudden halt. Re-homing is highly recommended.</source>
+        <translation>Zopol koncový spínač. Poloha stroja je po náhlom zastavení pravdepodobne stratená. Dôrazne odporúčame znova nabehnúť do východiskovej polohy.</translation>
+    </message>
+    <message>
+        <source>Soft limit alarm. G-code motion target exceeds machine travel. Machine position retained. Alarm may be safely unlocked.</source>
+        <translation>Softvérový limit. Cieľ pohybu G-kódu leží mimo pojazdu stroja. Poloha stroja zostala zachovaná. Alarm možno bezpečne odomknúť.</translation>
+    </message>
+    <message>
+        <source>Reset while in motion. Machine position is likely lost due to sudden halt. Re-homing is highly recommended.</source>
+        <translation>Reset počas pohybu. Poloha stroja je po náhlom zastavení pravdepodobne stratená. Dôrazne odporúčame znova nabehnúť do východiskovej polohy.</translation>
+    </message>
+    <message>
+        <source>Probe fail. Probe is not in the expected initial state before starting probe cycle.</source>
+        <translation>Chyba sondy. Sonda nie je pred začiatkom meracieho cyklu v očakávanom východiskovom stave.</translation>
+    </message>
+    <message>
+        <source>Probe fail. Probe did not contact the workpiece within the programmed travel.</source>
+        <translation>Chyba sondy. Sonda sa v naprogramovanej dráhe nedotkla obrobku.</translation>
+    </message>
+    <message>
+        <source>Homing fail. The active homing cycle was reset.</source>
+        <translation>Chyba nábehu do východiskovej polohy. Prebiehajúci cyklus bol resetovaný.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Safety door was opened during homing cycle.</source>
+        <translation>Chyba nábehu do východiskovej polohy. Počas cyklu boli otvorené bezpečnostné dvierka.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Pull off travel failed to clear limit switch. Try increasing pull-off setting or check wiring.</source>
+        <translation>Chyba nábehu do východiskovej polohy. Odjazd od spínača ho neuvoľnil. Skúste zväčšiť odjazd (pull-off) alebo skontrolujte zapojenie.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Could not find limit switch within search distances. Try increasing max travel, decreasing pull-off distance, or check wiring.</source>
+        <translation>Chyba nábehu do východiskovej polohy. Koncový spínač sa v hľadanej vzdialenosti nenašiel. Skúste zväčšiť maximálny pojazd, zmenšiť odjazd (pull-off) alebo skontrolujte zapojenie.</translation>
+    </message>
+    <message>
+        <source>Homing fail. Second dual axis limit switch failed to trigger within configured search distance after first. Try increasing trigger fail distance or check wiring.</source>
+        <translation>Chyba nábehu do východiskovej polohy. Druhý spínač zdvojenej osi nezopol v nastavenej vzdialenosti po prvom. Skúste zväčšiť túto vzdialenosť alebo skontrolujte zapojenie.</translation>
+    </message>
+    <message>
+        <source>G-code words consist of a letter and a value. Letter was not found.</source>
+        <translation>Slovo G-kódu tvorí písmeno a hodnota. Písmeno chýba.</translation>
+    </message>
+    <message>
+        <source>Missing the expected G-code word value or numeric value format is not valid.</source>
+        <translation>Chýba očakávaná hodnota slova G-kódu alebo číslo nemá platný tvar.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; system command was not recognized or supported.</source>
+        <translation>Systémový príkaz &apos;$&apos; GRBL nepozná alebo nepodporuje.</translation>
+    </message>
+    <message>
+        <source>Negative value received for an expected positive value.</source>
+        <translation>Záporná hodnota tam, kde sa očakáva kladná.</translation>
+    </message>
+    <message>
+        <source>Homing cycle failure. Homing is not enabled via settings.</source>
+        <translation>Nábeh do východiskovej polohy zlyhal. V nastaveniach nie je povolený.</translation>
+    </message>
+    <message>
+        <source>Minimum step pulse time must be greater than 3usec.</source>
+        <translation>Najkratší krokový impulz musí byť dlhší ako 3 µs.</translation>
+    </message>
+    <message>
+        <source>An EEPROM read failed. Auto-restoring affected EEPROM to default values.</source>
+        <translation>Čítanie EEPROM zlyhalo. Dotknuté hodnoty EEPROM sa obnovujú na predvolené.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; command cannot be used unless Grbl is IDLE. Ensures smooth operation during a job.</source>
+        <translation>Príkaz &apos;$&apos; možno použiť len v pokoji (Idle). Tak nenaruší bežiacu úlohu.</translation>
+    </message>
+    <message>
+        <source>G-code commands are locked out during alarm or jog state.</source>
+        <translation>Príkazy G-kódu sú počas alarmu alebo ručného posuvu zablokované.</translation>
+    </message>
+    <message>
+        <source>Soft limits cannot be enabled without homing also enabled.</source>
+        <translation>Softvérové limity nemožno zapnúť bez povoleného nábehu do východiskovej polohy.</translation>
+    </message>
+    <message>
+        <source>Max characters per line exceeded. Received command line was not executed.</source>
+        <translation>Prekročený najväčší počet znakov na riadku. Prijatý riadok nebol vykonaný.</translation>
+    </message>
+    <message>
+        <source>Grbl &apos;$&apos; setting value cause the step rate to exceed the maximum supported.</source>
+        <translation>Hodnota nastavenia &apos;$&apos; by prekročila najvyššiu podporovanú krokovú frekvenciu.</translation>
+    </message>
+    <message>
+        <source>Safety door detected as opened and door state initiated.</source>
+        <translation>Bezpečnostné dvierka sú otvorené; doska prešla do stavu Door.</translation>
+    </message>
+    <message>
+        <source>Build info or startup line exceeded EEPROM line length limit. Line not stored.</source>
+        <translation>Informácia o zostavení alebo štartovací riadok presahuje dĺžku riadku v EEPROM. Riadok nebol uložený.</translation>
+    </message>
+    <message>
+        <source>Jog target exceeds machine travel. Jog command has been ignored.</source>
+        <translation>Cieľ ručného posuvu leží mimo pojazdu stroja. Príkaz bol ignorovaný.</translation>
+    </message>
+    <message>
+        <source>Jog command has no &apos;=&apos; or contains prohibited g-code.</source>
+        <translation>Príkaz ručného posuvu nemá &apos;=&apos; alebo obsahuje zakázaný G-kód.</translation>
+    </message>
+    <message>
+        <source>Laser mode requires PWM output.</source>
+        <translation>Laserový režim vyžaduje výstup PWM.</translation>
+    </message>
+    <message>
+        <source>Unsupported or invalid g-code command found in block.</source>
+        <translation>Riadok obsahuje nepodporovaný alebo neplatný príkaz G-kódu.</translation>
+    </message>
+    <message>
+        <source>More than one g-code command from same modal group found in block.</source>
+        <translation>Riadok obsahuje viac príkazov G-kódu z tej istej modálnej skupiny.</translation>
+    </message>
+    <message>
+        <source>Feed rate has not yet been set or is undefined.</source>
+        <translation>Rýchlosť posuvu ešte nebola nastavená.</translation>
+    </message>
+    <message>
+        <source>G-code command in block requires an integer value.</source>
+        <translation>Príkaz G-kódu na riadku vyžaduje celé číslo.</translation>
+    </message>
+    <message>
+        <source>More than one g-code command that requires axis words found in block.</source>
+        <translation>Riadok obsahuje viac príkazov G-kódu, ktoré vyžadujú slová osí.</translation>
+    </message>
+    <message>
+        <source>Repeated g-code word found in block.</source>
+        <translation>Riadok obsahuje opakované slovo G-kódu.</translation>
+    </message>
+    <message>
+        <source>No axis words found in block for g-code command or current modal state which requires them.</source>
+        <translation>Riadok nemá slová osí, ktoré príkaz alebo aktuálny modálny stav vyžaduje.</translation>
+    </message>
+    <message>
+        <source>Line number value is invalid.</source>
+        <translation>Číslo riadku je neplatné.</translation>
+    </message>
+    <message>
+        <source>G-code command is missing a required value word.</source>
+        <translation>Príkazu G-kódu chýba povinné slovo s hodnotou.</translation>
+    </message>
+    <message>
+        <source>G59.x work coordinate systems are not supported.</source>
+        <translation>Pracovné súradnicové systémy G59.x nie sú podporované.</translation>
+    </message>
+    <message>
+        <source>G53 only allowed with G0 and G1 motion modes.</source>
+        <translation>G53 je povolené len s pohybmi G0 a G1.</translation>
+    </message>
+    <message>
+        <source>Axis words found in block when no command or current modal state uses them.</source>
+        <translation>Riadok obsahuje slová osí, ktoré žiadny príkaz ani modálny stav nepoužíva.</translation>
+    </message>
+    <message>
+        <source>G2 and G3 arcs require at least one in-plane axis word.</source>
+        <translation>Oblúky G2 a G3 vyžadujú aspoň jedno slovo osi v rovine.</translation>
+    </message>
+    <message>
+        <source>Motion command target is invalid.</source>
+        <translation>Cieľ pohybového príkazu je neplatný.</translation>
+    </message>
+    <message>
+        <source>Arc radius value is invalid.</source>
+        <translation>Polomer oblúka je neplatný.</translation>
+    </message>
+    <message>
+        <source>G2 and G3 arcs require at least one in-plane offset word.</source>
+        <translation>Oblúky G2 a G3 vyžadujú aspoň jedno slovo odsadenia v rovine.</translation>
+    </message>
+    <message>
+        <source>Unused value words found in block.</source>
+        <translation>Riadok obsahuje nepoužité slová s hodnotou.</translation>
+    </message>
+    <message>
+        <source>G43.1 dynamic tool length offset is not assigned to configured tool length axis.</source>
+        <translation>Dynamická korekcia dĺžky nástroja G43.1 nie je priradená k nastavenej osi dĺžky nástroja.</translation>
+    </message>
+    <message>
+        <source>Tool number greater than max supported value.</source>
+        <translation>Číslo nástroja je väčšie ako najväčšie podporované.</translation>
+    </message>
+    <message>
+        <source>A code GRBL 1.1 does not document.</source>
+        <translation>Kód, ktorý dokumentácia GRBL 1.1 nepozná.</translation>
     </message>
 </context>
 <context>
@@ -2099,7 +2347,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>the {0}</source>
-        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter).</extracomment>
+        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter). Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is the compact line&apos;s, what the board&apos;s line buffer really holds.</extracomment>
         <translation>stroj {0}</translation>
     </message>
     <message>
@@ -2646,6 +2894,15 @@ Napriek tomu odoslať do stroja?</translation>
         <source>{0}: {1} — {2} {3:g}: the machine has no {2} axis</source>
         <extracomment>What the loader wants the operator to know (e.g. the travel its ordering saved). Axes the job moves relative to wherever the machine stands when it starts (a G-code file&apos;s G91 or G92 before it set them); its positions on them are as if that were 0, so the runner starts it only from there. What :meth:`preview_path` gives: &quot;axes&quot;, the two axes asked for as they are (the preview projects them on a polar machine), or &quot;board&quot;, the work&apos;s own plane in mm whatever the axes (a job that knows its geometry projects itself, and better).</extracomment>
         <translation>{0}: {1} — {2} {3:g}: stroj nemá os {2}</translation>
+    </message>
+    <message>
+        <source>change to pen T{0}</source>
+        <extracomment>``M6``, ``M06 T2``, ``T2 M6``, ``m6t02``: the change, with its tool number before or after. The highest tool number GRBL takes (its T is a byte), as the parser refuses above it.</extracomment>
+        <translation>vymeňte pero za T{0}</translation>
+    </message>
+    <message>
+        <source>change the pen</source>
+        <translation>vymeňte pero</translation>
     </message>
 </context>
 <context>
@@ -3381,7 +3638,7 @@ Načítať ako:</translation>
     <name>MachineProfile</name>
     <message>
         <source>XY positioning stage</source>
-        <extracomment>How far a reported position may stray from the path of the moves sent ([supervision] tolerance_mm): a few steps, a rounded report and a report read while the move went on. What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras). &quot;counting&quot; (at most rx_buffer - 1 bytes unacknowledged) or &quot;ping-pong&quot; G1/G2/G3 need a feed rate set first (GRBL&apos;s error:22); False: the firmware has a default. The unit of ``G4 P``: &quot;s&quot; on GRBL (P150 is two and a half minutes), &quot;ms&quot; on firmwares that read it as Marlin does. The loader, the estimate and the emulator follow it. GRBL&apos;s ``$11`` (mm): the board joins moves at their junction speed, planning ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without a look-ahead planner): every move starts and ends at rest. A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); False: GRBL&apos;s, which refuses it (error:26) and needs the axes named. The board answers a line only once its motion is done (the CoreXY plotter), not once planned (GRBL): every answered line ran, and an unanswered one is at most the one under way — what a resume after a fault can take as proven. A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval that only ``M98 &lt;µs&gt;`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on interval in µs. None: F sets the speed (GRBL, the winder).</extracomment>
+        <extracomment>How far a reported position may stray from the path of the moves sent ([supervision] tolerance_mm): a few steps, a rounded report and a report read while the move went on. What a GRBL-compatible board executes (docs/protocols.md §4 plus the usual GRBL extras). &quot;counting&quot; (at most rx_buffer - 1 bytes unacknowledged) or &quot;ping-pong&quot; G1/G2/G3 need a feed rate set first (GRBL&apos;s error:22); False: the firmware has a default. The unit of ``G4 P``: &quot;s&quot; on GRBL (P150 is two and a half minutes), &quot;ms&quot; on firmwares that read it as Marlin does. The loader, the estimate and the emulator follow it. GRBL&apos;s ``$11`` (mm): the board joins moves at their junction speed, planning ``planner_blocks`` ahead, and the estimate plans as it does; None (firmwares without a look-ahead planner): every move starts and ends at rest. A bare ``G92`` makes the current position the origin (the CoreXY plotter&apos;s firmware); False: GRBL&apos;s, which refuses it (error:26) and needs the axes named. The board answers a line only once its motion is done (the CoreXY plotter), not once planned (GRBL): every answered line ran, and an unanswered one is at most the one under way — what a resume after a fault can take as proven. A firmware that ignores F and runs G0 as G1, stepping its lead motor at one interval that only ``M98 &lt;µs&gt;`` changes (the CoreXY plotter, FIDELITY S1-01): its power-on interval in µs. None: F sets the speed (GRBL, the winder). A GRBL board&apos;s job lines go compact (:attr:`compact_lines`); False: as written.</extracomment>
         <translation>Polohovací stôl XY</translation>
     </message>
     <message>

@@ -27,6 +27,7 @@ from app.profiles import load_profile
 from protocol.transport.loopback import Direction
 from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 from tests.helpers.harness import StationHarness
+from tests.helpers.wire_as_written import as_written
 
 
 def _strokes_drawn_are_the_jobs(harness: StationHarness) -> None:
@@ -52,7 +53,7 @@ def _strokes_drawn_are_the_jobs(harness: StationHarness) -> None:
 def test_a_line_or_answer_arriving_twice_stops_the_job_before_a_wrong_stroke(
     qtbot: QtBot, tmp_path: Path, name: str, way: Direction
 ) -> None:
-    profile = load_profile(name)
+    profile = as_written(load_profile(name))
     settings = profile.gcode
     assert settings is not None
     harness = StationHarness(profile)

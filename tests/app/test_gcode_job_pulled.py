@@ -42,7 +42,7 @@ from tests.helpers.fake_transport import UnannouncedPort
 JOB_OPS = 600
 IDLE = b"<Idle|MPos:0.000,0.000,0.000|Bf:15,127|FS:0,0>\r\n"
 MODES = b"[GC:G0 G54 G17 G21 G90 G94 M5 M9 T0 F0 S0]\r\n"
-_X = re.compile(rb"^G1 X([0-9.]+)")
+_X = re.compile(rb"^G1 ?X([0-9.]+)")
 #: Millimetres between the moves of consecutive operations (the travel is 300 mm).
 PITCH = 0.25
 

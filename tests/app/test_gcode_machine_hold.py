@@ -19,12 +19,13 @@ from app.profiles import load_profile
 from protocol.transport.loopback import Direction
 from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, zigzag
 from tests.helpers.harness import StationHarness
+from tests.helpers.wire_as_written import as_written
 
 
 def test_a_space_flipped_into_a_feed_hold_pauses_the_job_and_resume_goes_on(
     qtbot: QtBot, tmp_path: Path
 ) -> None:
-    profile = load_profile("grbl-plotter")
+    profile = as_written(load_profile("grbl-plotter"))
     harness = StationHarness(profile)
     harness.connect()
     harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)

@@ -21,6 +21,7 @@ from app.profiles import MachineProfile, load_profile
 from protocol.transport.loopback import Direction
 from tests.app.test_gcode_resume_proof import EXPECTED, pen_down_moves, run_as_the_api_does, zigzag
 from tests.helpers.harness import StationHarness
+from tests.helpers.wire_as_written import as_written
 
 
 @pytest.mark.parametrize("seconds", [3.0, 6.0], ids=["3s", "6s-given-up"])
@@ -30,7 +31,7 @@ def test_a_silence_that_cuts_a_line_in_half_neither_hangs_nor_redraws(
 ) -> None:
     """3 s: the station still waits for the answers (the board, fast, ran what it had); 6 s:
     it gave the board up as silent, forgot its lines, and looks at it once it answers."""
-    profile = load_profile(name)
+    profile = as_written(load_profile(name))
     harness = StationHarness(profile)
     harness.connect()
     harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
@@ -100,7 +101,7 @@ def test_a_whole_line_lost_on_the_way_is_not_taken_for_a_lost_answer(
     station took every missing answer for one lost on the way back, counted the lost line as
     run too, and went on after it: a stroke from the wrong place, the job "done".  The board
     standing short of where the lines sent end shows they did not all run."""
-    profile = load_profile(name)
+    profile = as_written(load_profile(name))
     program, ends = _short_strokes(profile, tmp_path)
     harness = StationHarness(profile)
     harness.connect()
@@ -145,7 +146,7 @@ def test_replies_held_then_read_in_a_burst_never_end_the_job_early(
     answers let the last lines go, and the board planned and answered them before the window
     had handled the burst; a status report in the burst, made while those lines still waited
     to go, then passed for the board standing after them: "done", six strokes undrawn."""
-    profile = load_profile("grbl-plotter")
+    profile = as_written(load_profile("grbl-plotter"))
     program, ends = _short_strokes(profile, tmp_path, 60)
     harness = StationHarness(profile)
     harness.connect()

@@ -29,9 +29,12 @@ from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import OpKind, Program
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
+from app.machines.gcode.job_feed import wire_text
 from app.profiles import load_profile
 from app.station import Station
+from protocol.gcode.codec import ErrorReply
 from tests.helpers.emulator_process import emulator_on_pty
+from widgets.panels.gcode import GcodePanel
 
 JOB_TIMEOUT_MS = 90_000
 TIME_SCALE = 50
@@ -189,8 +192,10 @@ def test_arcs_go_as_written_and_the_board_ends_each_where_the_preview_does(
     assert runner.state is JobState.DONE, runner.state
     logged = events(log)
     received = [e["text"] for e in logged if e["event"] == "line"]
-    # Every arc went to the board as the file wrote it.
-    assert [text for text in received if text[:3] in ("G02", "G03")] == [op.line for op in arcs]
+    # Every arc went to the board as the file wrote it, compact (as GRBL reads it).
+    assert [text for text in received if text[:3] in ("G02", "G03")] == [
+        wire_text(op.line) for op in arcs
+    ]
     # The board's moves pass through every end point the preview has, in order.
     ends = iter(
         (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
@@ -247,3 +252,115 @@ def test_a_jog_then_a_square_without_g90_ends_where_the_file_says(
     drawn = last_moves()
     assert drawn and drawn[-1] == (10.0, 10.0), drawn
     assert set(drawn) == square
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_a_grbl_job_arrives_compact_within_the_buffer_and_draws_the_file(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    """What arrives on the wire is the compact line, counted as such: the board's
+    buffer held at most 127 bytes, it refused nothing, and it drew the file."""
+    path, log = emulator
+    connect(qtbot, station, path)
+    corners = [(10 + 30 * (k % 2), 10 + 30 * ((k // 2) % 2)) for k in range(40)]
+    written = ["G21 G90 (millimetres, absolute)", "g0 x10 y10", "M3 S1000 ; pen down"]
+    written += [f"G1   X{x:.3f}   Y{y:.3f}   F3000" for x, y in corners]
+    written += ["M5"]
+    job = tmp_path / "spaced.gcode"
+    job.write_text("\n".join(written) + "\n", encoding="ascii")
+    program = load_job(job, ["X", "Y"], JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title))
+    runner = run(qtbot, station, program, tmp_path, [])
+    assert runner.state is JobState.DONE, runner.state
+    qtbot.waitUntil(
+        lambda: any(e["event"] == "line" and e["text"] == "M5" for e in events(log)),
+        timeout=5000,
+    )
+    logged = events(log)
+    lines = [e for e in logged if e["event"] == "line"]
+    job_lines = [e["text"] for e in lines][-len(written) :]
+    assert job_lines == ["G21G90", "G0X10Y10", "M3S1000"] + [
+        f"G1X{x:.3f}Y{y:.3f}F3000" for x, y in corners
+    ] + ["M5"]
+    assert max(e["unacknowledged"] for e in lines) <= 127
+    # Counted by the compact bytes, the window kept several lines in the buffer at once.
+    assert max(e["unacknowledged"] for e in lines) > 60
+    assert not [e for e in logged if e["event"] == "reply" and "ERR" in e["text"].upper()]
+    moves = [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3)) for e in logged if e["event"] == "move"
+    ]
+    assert moves[-1] == corners[-1]
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_m6_t2_waits_for_the_operator_and_the_board_never_gets_it(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station, tmp_path: Path
+) -> None:
+    """A pen change asks the operator once, with its pen; the board gets the lines before
+    and after it, never the M6 line (its error:20), and draws both strokes."""
+    path, log = emulator
+    connect(qtbot, station, path)
+    job = tmp_path / "two-pens.gcode"
+    job.write_text(
+        "G21 G90\nM3 S1000\nG1 X10 Y0 F3000\nM5\nM6 T2 (red)\nM3 S1000\nG1 X10 Y10 F3000\nM5\n",
+        encoding="ascii",
+    )
+    program = load_job(job, ["X", "Y"], JobOptions(gcode=GRBL.gcode, machine_title=GRBL.title))
+    asked: list[str] = []
+    runner = run(qtbot, station, program, tmp_path, asked)
+    assert runner.state is JobState.DONE, runner.state
+    assert asked == ["change to pen T2: red"]
+    qtbot.waitUntil(
+        lambda: sum(e["event"] == "line" and e["text"] == "M5" for e in events(log)) == 2,
+        timeout=5000,
+    )
+    logged = events(log)
+    lines = [e["text"] for e in logged if e["event"] == "line"]
+    assert lines[-7:] == [
+        "G21G90",
+        "M3S1000",
+        "G1X10Y0F3000",
+        "M5",
+        "M3S1000",
+        "G1X10Y10F3000",
+        "M5",
+    ]
+    assert not [e for e in logged if e["event"] == "reply" and "ERR" in e["text"].upper()]
+    drawn = [
+        (round(e["pos"]["X"], 3), round(e["pos"]["Y"], 3), bool(e["pen"]))
+        for e in logged
+        if e["event"] == "move"
+    ]
+    assert drawn[-2:] == [(10.0, 0.0, True), (10.0, 10.0, True)]
+
+
+@pytest.mark.parametrize("emulator", ["grbl-plotter"], indirect=True)
+@pytest.mark.parametrize("station", ["grbl-plotter"], indirect=True)
+def test_a_refused_line_is_explained_once_and_gone_when_a_line_is_accepted(
+    qtbot: QtBot, emulator: tuple[str, Path], station: Station
+) -> None:
+    path, log = emulator
+    connect(qtbot, station, path)
+    panel = GcodePanel(station)
+    qtbot.addWidget(panel)
+    panel.show()
+    band = panel.alarm_band
+    session = station.gcode_session
+    assert session is not None
+    session.send_line("G1 X10", "console")  # no feed rate yet: GRBL's error:22
+    qtbot.waitUntil(band.isVisible, timeout=5000)
+    assert band.title.text() == "error:22"
+    assert band.meaning.text() == "Feed rate has not yet been set or is undefined."
+    assert not band.unlock_button.isVisible() and not band.home_button.isVisible()
+    shown = band.explainer.shown
+    refusals: list[object] = []
+    session.frameReceived.connect(
+        lambda reply, _raw: refusals.append(reply) if isinstance(reply, ErrorReply) else None
+    )
+    session.send_line("G1 X10", "console")  # the same refusal: nothing new
+    qtbot.waitUntil(lambda: len(refusals) == 1, timeout=5000)  # the band has heard it too
+    assert sum(e["event"] == "reply" and e["text"] == "error:22" for e in events(log)) == 2
+    assert band.explainer.shown is shown and band.isVisible()
+    session.send_line("G1 X10 F600", "console")
+    qtbot.waitUntil(lambda: not band.isVisible(), timeout=5000)

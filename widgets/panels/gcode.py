@@ -27,6 +27,7 @@ from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.link_text import axis_status_text
 from widgets.number_field import NumberField, localized
+from widgets.panels.grbl_alarm_band import GrblAlarmBand
 from widgets.retranslate import Maker, Texts
 
 if TYPE_CHECKING:
@@ -131,6 +132,9 @@ class GcodePanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addWidget(machine)
+        #: A GRBL alarm or error explained, with what clears it (hidden without one).
+        self.alarm_band = GrblAlarmBand(self)
+        layout.addWidget(self.alarm_band)
         layout.addWidget(self.hand_group)
         layout.addWidget(console, 1)
         station.sessionChanged.connect(self._watch_session)
@@ -303,6 +307,7 @@ class GcodePanel(QWidget):
         if session is self._watched:
             return
         self._watched = session
+        self.alarm_band.watch(session)
         if session is not None:
             # Bound methods: Qt drops them with the panel (a lambda would outlive it).
             session.lineSent.connect(self._show_sent)

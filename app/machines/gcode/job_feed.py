@@ -45,6 +45,22 @@ from app.machines.gcode.feeder import LineFeeder
 from app.machines.gcode.lines import SentLine
 from protocol.gcode.codec import encode_line
 from protocol.gcode.streaming import LineStreamer
+from protocol.gcode.words import grbl_text
+
+
+def wire_text(line: str) -> str:
+    """A job's line as it goes to a GRBL board: without comments and spaces, upper case.
+
+    GRBL's serial layer drops spaces and comments and upper-cases the letters
+    before its parser sees a line (``protocol.c``), and grbl's own ``stream.py``
+    sends lines so; sent as written, a drawing's short lines cost about 1.14
+    times the bytes.  Everything else keeps the line as written: the file, the
+    log, the console, the checkpoint and the resume (:class:`SentLine` carries
+    that text), and the operator never sees the compact one.
+    A line that is nothing once compacted (a lone ``/``) goes as written: the
+    board answers it as it would have.
+    """
+    return grbl_text(line) or line
 
 
 class JobSource(Protocol):
@@ -98,10 +114,12 @@ class FeedPort(Protocol):
 class JobFeed:
     """One running job between its line source and the feeder (the feeder follows it)."""
 
-    def __init__(self, session: FeedPort, source: JobSource) -> None:
+    def __init__(self, session: FeedPort, source: JobSource, *, compact: bool = False) -> None:
         self._session = session
         self._feeder = session.feeder
         self.source = source
+        #: Lines go on the wire as GRBL reads them (:func:`wire_text`); tagged as written.
+        self._compact = compact
 
     @contextmanager
     def locked(self) -> Iterator[JobSource]:
@@ -137,7 +155,9 @@ class JobFeed:
         session = self._session
         line = text.strip()
         try:
-            raw = encode_line(line)
+            # What is counted against the board's buffer and its 80-byte line limit is
+            # what goes: the compact line, when it is sent compact.
+            raw = encode_line(wire_text(line) if self._compact else line)
         except ValueError as exc:
             return str(exc)
         streamer = session.streamer

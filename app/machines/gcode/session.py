@@ -270,7 +270,7 @@ class GcodeSession(MachineSession):
     def start_job(self, source: JobSource) -> JobFeed:
         """A running job's lines go through the feed made here (:mod:`~app.machines.gcode.
         job_feed`); its answers are counted where they are read, it is not pulled yet."""
-        feed = JobFeed(self, source)
+        feed = JobFeed(self, source, compact=self.settings.compact_lines)
         self.feeder.follow(feed)
         return feed
 

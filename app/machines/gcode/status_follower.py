@@ -64,7 +64,7 @@ class StatusFollower:
         session = self._session
         for raw, sent in written:
             try:
-                self.planned.line(sent.text, sent.text, sent.op_index)
+                self.planned.line(raw.decode("ascii").rstrip(), sent.text, sent.op_index)
             except (ValueError, ArithmeticError):
                 # A line this reading cannot place is not followed; the stream goes on.
                 _log.exception("the path of %r could not be followed", sent.text)

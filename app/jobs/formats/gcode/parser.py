@@ -50,6 +50,7 @@ from app.jobs.formats.gcode.program import (
     GcodeProblem,
 )
 from app.jobs.formats.gcode.state import Pending, State
+from app.jobs.formats.gcode.tool_change import tool_change, tool_prompt
 from app.jobs.formats.gcode.words import (
     EXPONENT,
     MAX_LINE_CHARS,
@@ -66,7 +67,7 @@ from app.jobs.formats.gcode.words import (
 from app.jobs.names import quoted
 from app.jobs.program import JobFileError
 from app.profiles import GcodeSettings
-from protocol.gcode.words import Word, split_comment, strip_checksum, take_line_number
+from protocol.gcode.words import Word, grbl_text, split_comment, strip_checksum, take_line_number
 
 INCH_MM = 25.4
 
@@ -105,6 +106,9 @@ class Parser:
         self.file = file
         self.machine_axes = frozenset(a.upper() for a in axis_names)
         self.words = frozenset(w.upper() for w in settings.words)
+        #: Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is
+        #: the compact line's, what the board's line buffer really holds.
+        self.compact = settings.compact_lines
         self.translate = translate_pen
         self.skip = skip_unsupported
         self.who = (
@@ -223,9 +227,15 @@ class Parser:
         A line too long for the board is refused as that (it is listed with the
         unsupported lines): GRBL never parses it, so it has no other error.
         """
-        if len(code) > MAX_LINE_CHARS:
+        if self._sent_length(code) > MAX_LINE_CHARS:
             return
         raise JobFileError(self.file, number, reason)
+
+    def _sent_length(self, text: str) -> int:
+        """The characters of ``text`` as the board is sent it (compact on GRBL)."""
+        if self.compact and len(text) > MAX_LINE_CHARS:
+            return len(grbl_text(text) or text)
+        return len(text)
 
     def _grbl_rules(self, number: int, code: str, words: Sequence[Word]) -> None:
         """GRBL's word-level errors on one line: negative values, repeats, motion conflicts."""
@@ -332,6 +342,8 @@ class Parser:
                 or QCoreApplication.translate("JobFile", "M{0}: paused").format(wait.group(1))
             )
             self._commit(number, code, [Pending(WAIT, "", message=message)], ())
+        elif (tool := tool_change(code)) is not None:
+            self._commit(number, code, [Pending(WAIT, "", message=tool_prompt(tool, comment))], ())
         elif display := MESSAGE_RE.match(code):
             word = f"M{display.group(1)}"
             reasons = () if word in self.words else (self._cannot(word),)
@@ -662,11 +674,12 @@ class Parser:
                         quoted(op.text)
                     ),
                 )
-            if len(op.text) > MAX_LINE_CHARS:
+            length = self._sent_length(op.text)
+            if length > MAX_LINE_CHARS:
                 found += (
                     QCoreApplication.translate(
                         "JobFile", "{0} characters; a line holds at most {1}"
-                    ).format(len(op.text), MAX_LINE_CHARS),
+                    ).format(length, MAX_LINE_CHARS),
                 )
             reasons += [r for r in found if r not in reasons]
         return tuple(reasons)
