@@ -4,7 +4,7 @@ An operator who reads ``ALARM:1`` or ``error:9`` has to look the number up,
 and then guess what to do; unlocking a board whose position was lost (a hard
 limit) instead of homing it can drive an axis into its end.  So each code
 carries its meaning (GRBL 1.1's own description, ``doc/csv/*_codes_en_US.csv``
-of grbl's sources in tests/third_party/grbl), the action that clears it, and
+in grbl 1.1h's sources), the action that clears it, and
 the remedies the station can run for the operator (unlock ``$X``, home
 ``$H``).  A board that lost its position is offered homing only.
 
