@@ -24,6 +24,7 @@ if str(ROOT) not in sys.path:
 from protocol.clock import ManualClock  # noqa: E402
 from tools.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tools.bench_eta import bench_gcode_eta  # noqa: E402
+from tools.bench_grbl_planner import bench_grbl_planner_vs_grbl_sim  # noqa: E402
 from tools.bench_streaming import (  # noqa: E402
     bench_gcode_delivery,
     bench_gcode_job_streaming,
@@ -1145,6 +1146,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_string_art_generator,
     bench_string_art_peers,
     bench_gcode_eta,
+    bench_grbl_planner_vs_grbl_sim,
     bench_resume_file_offset,
 ]
 

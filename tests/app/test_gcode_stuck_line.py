@@ -203,7 +203,7 @@ def test_lines_lost_on_a_board_without_bf_neither_hang_nor_redraw(
     """Relay string-art seed 34: a 3 s silence took lines whole on a board whose reports carry
     no ``Bf:`` ($10=1).  It ran what it had and stood idle; nothing it reports could show the
     lines missing, and the station waited for their answers for ever: the job hung."""
-    profile = load_profile("grbl-plotter")
+    profile = as_written(load_profile("grbl-plotter"))  # the wire it was found on
     program, ends = _short_strokes(profile, tmp_path)
     harness = StationHarness(profile)
     harness.connect()

@@ -8,12 +8,17 @@ machine's repertoire is refused with the code its firmware answers.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
+
+import pytest
 
 from app.jobs.formats.gcode.program import GcodeProgram
 from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import JobFileError
 from app.profiles import load_profile
+from tests.helpers import grbl_sim, grbl_sim_timing
+from tests.helpers.grbl_check import check_mode_verdicts
 
 
 def preflight_refusals(path: Path, profile: str) -> dict[int, str]:
@@ -47,3 +52,73 @@ def test_g7_10_every_refusal_names_the_error_the_firmware_answers(tmp_path: Path
     assert grbl[4].endswith("cannot execute $Q (error:3)")
     corexy = preflight_refusals(path, "corexy-plotter")
     assert corexy[3].endswith("cannot execute M8 (error:20)")  # no coolant pin on that one
+
+
+# -- GRBL's own verdict: every real file through grbl-sim's $C check mode --------------------
+
+_CODE = re.compile(r"\(error:(\d+)\)$")
+#: GRBL reads an M code into a byte: ``M300`` is "not an integer" to it (error:23), the
+#: pre-flight calls it unknown (error:20).  Pinned here until the pre-flight says 23.
+_M_BEYOND_A_BYTE = ("error:20", "error:23")
+
+
+@pytest.fixture(scope="module")
+def check_sim() -> Path:
+    if grbl_sim.compiler() is None:
+        pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
+    return grbl_sim_timing.build(Path(__file__).resolve().parents[1] / "third_party" / "grbl")
+
+
+REAL_FILES = (
+    "CNC-Drawinger_unicorn_BUNNY.gcode",
+    "Escriba_gcodetools_calibration.gcode",
+    "Makelangelo_polargraph_multi_shapes_path-circle-line-rect.gcode",
+)
+
+
+def _code(reason: str) -> str:
+    """``error:N`` as GRBL would answer the refused line (see :data:`_M_BEYOND_A_BYTE`)."""
+    found = _CODE.search(reason)
+    assert found is not None, reason
+    code = f"error:{found.group(1)}"
+    return _M_BEYOND_A_BYTE[1] if code == _M_BEYOND_A_BYTE[0] and "M300" in reason else code
+
+
+@pytest.mark.parametrize("name", REAL_FILES)
+def test_g7_10_the_preflight_agrees_with_grbls_check_mode_on_a_real_file(
+    name: str, check_sim: Path, data_dir: Path
+) -> None:
+    """Whole file: no line GRBL takes is refused, each refusal carries GRBL's code, and
+    what the station sends of the file (pen commands translated) GRBL takes."""
+    path = data_dir / "realdata" / "gcode" / name
+    assert sorted(p.name for p in path.parent.glob("*.gcode")) == sorted(REAL_FILES)
+    lines = path.read_text(encoding="ascii", errors="replace").splitlines()
+    grbl = check_mode_verdicts(check_sim, lines)
+    refused = preflight_refusals(path, "grbl-plotter")
+    for number, reason in refused.items():
+        code = _CODE.search(reason)
+        assert code is not None, reason
+        ours, theirs = f"error:{code.group(1)}", grbl[number - 1]
+        assert theirs != "ok", f"line {number} refused, GRBL takes it: {lines[number - 1]}"
+        if (ours, theirs) == _M_BEYOND_A_BYTE:
+            assert lines[number - 1].split()[0].upper() in ("M300",)
+            continue
+        assert ours == theirs, f"line {number}: {lines[number - 1]}"
+    # What the station sends: translated pen lines, no operator pauses.  GRBL takes all
+    # of it; its $ report commands answer error:8 in check mode (not idle), which is the
+    # board's state, not the file's.
+    machine = load_profile("grbl-plotter")
+    options = JobOptions(gcode=machine.gcode, machine_title=machine.title)
+    program = load_job(path, [axis.name for axis in machine.axes], options)
+    assert isinstance(program, GcodeProgram)
+    sent = [text for text in program.data.texts if text]
+    verdicts = check_mode_verdicts(check_sim, sent)
+    refusals = [
+        verdict
+        for text, verdict in zip(sent, verdicts, strict=True)
+        if verdict != "ok" and not (text.startswith("$") and verdict == "error:8")
+    ]
+    # The only sent lines GRBL refuses are the ones the pre-flight refused (and the operator
+    # was told of): as many, with the same codes but for the one pinned above.
+    assert sorted(refusals) == sorted(_code(reason) for reason in refused.values())
+    assert len(sent) > 100
