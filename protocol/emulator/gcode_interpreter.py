@@ -58,6 +58,7 @@ NEGATIVE_VALUE = 4
 TRAVEL_EXCEEDED = 15
 UNSUPPORTED = 20
 MODAL_GROUP_VIOLATION = 21
+VALUE_NOT_INTEGER = 23
 UNDEFINED_FEED_RATE = 22
 AXIS_COMMAND_CONFLICT = 24
 WORD_REPEATED = 25
@@ -184,6 +185,12 @@ class Interpreter:
         for word in words:
             letter, value = word.letter, word.value
             if letter in ("G", "M"):
+                if (
+                    letter == "M"
+                    and self.config.grbl
+                    and not (value.is_integer() and 0 <= value < 256)
+                ):
+                    return VALUE_NOT_INTEGER  # GRBL reads an M number into a byte (gcode.c)
                 if letter == "G" and value == 92.1 and self.config.grbl:
                     code = G92_1
                 elif not value.is_integer():

@@ -57,9 +57,6 @@ def test_g7_10_every_refusal_names_the_error_the_firmware_answers(tmp_path: Path
 # -- GRBL's own verdict: every real file through grbl-sim's $C check mode --------------------
 
 _CODE = re.compile(r"\(error:(\d+)\)$")
-#: GRBL reads an M code into a byte: ``M300`` is "not an integer" to it (error:23), the
-#: pre-flight calls it unknown (error:20).  Pinned here until the pre-flight says 23.
-_M_BEYOND_A_BYTE = ("error:20", "error:23")
 
 
 @pytest.fixture(scope="module")
@@ -77,11 +74,10 @@ REAL_FILES = (
 
 
 def _code(reason: str) -> str:
-    """``error:N`` as GRBL would answer the refused line (see :data:`_M_BEYOND_A_BYTE`)."""
+    """``error:N`` as the pre-flight names it for the refused line."""
     found = _CODE.search(reason)
     assert found is not None, reason
-    code = f"error:{found.group(1)}"
-    return _M_BEYOND_A_BYTE[1] if code == _M_BEYOND_A_BYTE[0] and "M300" in reason else code
+    return f"error:{found.group(1)}"
 
 
 @pytest.mark.parametrize("name", REAL_FILES)
@@ -100,9 +96,6 @@ def test_g7_10_the_preflight_agrees_with_grbls_check_mode_on_a_real_file(
         assert code is not None, reason
         ours, theirs = f"error:{code.group(1)}", grbl[number - 1]
         assert theirs != "ok", f"line {number} refused, GRBL takes it: {lines[number - 1]}"
-        if (ours, theirs) == _M_BEYOND_A_BYTE:
-            assert lines[number - 1].split()[0].upper() in ("M300",)
-            continue
         assert ours == theirs, f"line {number}: {lines[number - 1]}"
     # What the station sends: translated pen lines, no operator pauses.  GRBL takes all
     # of it; its $ report commands answer error:8 in check mode (not idle), which is the

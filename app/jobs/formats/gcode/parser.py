@@ -109,6 +109,8 @@ class Parser:
         #: Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is
         #: the compact line's, what the board's line buffer really holds.
         self.compact = settings.compact_lines
+        #: A GRBL board (it takes ``$J``): its error codes are GRBL 1.1's own.
+        self.grbl = "$J" in self.words
         self.translate = translate_pen
         self.skip = skip_unsupported
         self.who = (
@@ -201,7 +203,21 @@ class Parser:
         reason = QCoreApplication.translate("JobFile", "{0} cannot execute {1}").format(
             self.who, word
         )
-        return f"{reason} (error:{3 if word.startswith('$') else 20})"
+        return f"{reason} (error:{self._error_code(word)})"
+
+    def _error_code(self, word: str) -> int:
+        """GRBL reads an M number into a byte and refuses what is left over (``gcode.c``:
+        "No Mxx.x commands"): ``M300`` or ``M1.5`` is error:23 there, not unknown (20)."""
+        if word.startswith("$"):
+            return 3
+        if self.grbl and word[:1] == "M":
+            try:
+                value = float(word[1:])
+            except ValueError:
+                return 20
+            if not (value.is_integer() and 0 <= value < 256):
+                return 23
+        return 20
 
     def _add_refusals(self, found: Sequence[JobFileError]) -> None:
         self.refusals += found
