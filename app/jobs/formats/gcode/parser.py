@@ -164,6 +164,7 @@ class Parser:
             text += "\n"
         lines = text.split("\n")
         plain = self.plain.find(text, lines, self.fast_path_allowed())
+        del text  # the caller's is gone too (the loader hands it over): 25 MB a million lines
         slow = np.flatnonzero(~plain)
         self.pens.prescan([lines[i] for i in slow.tolist()], self.tokens)
         plain_before = (np.cumsum(plain) - plain)[slow].tolist()
