@@ -836,15 +836,20 @@ def bench_gcode_load_1m() -> list[str]:
             runs.append(json.loads(child.stdout.strip().splitlines()[-1]))
     best = min(runs, key=lambda r: r["load"] + r["geometry"])
     total = best["load"] + best["geometry"]
+    peak = max(r["peak_mb"] for r in runs)
     return [
         f"gcode_load_1m: {lines:,} lines ({size_mb:.1f} MB, {best['operations']:,} operations): "
         f"load {best['load']:.2f} s + preview geometry {best['geometry']:.2f} s = {total:.2f} s "
-        f"(goal <= 5 s; best of 3, median load "
+        f"(goal <= 2.5 s: {_met(total <= 2.5)}; best of 3, median load "
         f"{statistics.median(r['load'] for r in runs):.2f} s); "
-        f"peak RSS {best['peak_mb']:.0f} MB ({best['imports_mb']:.0f} MB after imports; "
-        f"goal <= 500 MB); estimate {best['estimate']:.2f} s "
-        f"({best['model_hours']:.1f} h of plotting)"
+        f"peak RSS {peak:.0f} MB, the highest of the 3 ({best['imports_mb']:.0f} MB after "
+        f"imports; goal <= 250 MB: {_met(peak <= 250)}; peer: gcodeparser 8.9 s, 744 MiB); "
+        f"estimate {best['estimate']:.2f} s ({best['model_hours']:.1f} h of plotting)"
     ]
+
+
+def _met(ok: bool) -> str:
+    return "met" if ok else "NOT met"
 
 
 #: A 2-million-entry poradi.txt loaded in a fresh interpreter (its peak RSS is the load's own).
@@ -916,11 +921,13 @@ def bench_string_art_2m() -> list[str]:
             for _ in range(3)
         ]
     best = min(runs, key=lambda r: r["load"])
+    peak = max(r["peak_mb"] for r in runs)
     return [
         f"string_art_2m: poradi.txt of {entries:,} entries ({size_mb:.1f} MB, "
-        f"{best['operations']:,} operations): load {best['load']:.2f} s (goal <= 5 s; best of 3), "
-        f"peak RSS {max(r['peak_mb'] for r in runs):.0f} MB ({best['imports_mb']:.0f} MB after "
-        f"imports; goal <= 500 MB); limit check + fingerprint {best['check']:.2f} s"
+        f"{best['operations']:,} operations): load {best['load']:.2f} s (goal <= 1.5 s: "
+        f"{_met(best['load'] <= 1.5)}; best of 3), peak RSS {peak:.0f} MB, the highest of "
+        f"the 3 ({best['imports_mb']:.0f} MB after imports; goal <= 250 MB: {_met(peak <= 250)}); "
+        f"limit check + fingerprint {best['check']:.2f} s"
     ]
 
 
@@ -1015,7 +1022,54 @@ def bench_string_art_2m_dock() -> list[str]:
         f"string_art_2m_dock: 2,000,000-entry poradi.txt opened in the jobs dock "
         f"({results[0][2]:,} operations): ready in {min(r[0] for r in results):.2f} s, "
         f"longest GUI-thread hold {max(r[1] for r in results) * 1000:.0f} ms "
-        f"(goal <= 100 ms; load, checks, estimate and first paint of the preview)"
+        f"(goal <= 100 ms: {_met(max(r[1] for r in results) <= 0.1)}; load, checks, estimate "
+        f"and first paint of the preview)"
+    ]
+
+
+def bench_gcode_1m_dock() -> list[str]:
+    """The 1,000,000-line plotter file opened in a shown jobs dock (grbl-plotter).
+
+    The dock reads it as the Open dialog does (its worker thread); a 5 ms timer
+    measures the longest the GUI thread went unserved from Open to the job READY
+    and its preview painted (goal <= 100 ms), and the time to READY.
+    """
+    import tempfile
+
+    from PySide6.QtWidgets import QApplication
+
+    from app.jobs.run.runner import JobRunner, JobState
+    from app.profiles import load_profile
+    from app.station import Station
+    from widgets.jobs.dock import JobsDock
+
+    app = QApplication.instance() or QApplication([])
+    station = Station(load_profile("grbl-plotter"), ManualClock(), realtime=False)
+    results: list[tuple[float, float, int]] = []
+    with tempfile.TemporaryDirectory() as directory:
+        path = Path(directory) / "synthetic-1m.gcode"
+        _write_plotter_gcode(path, 1_000_000)
+        for _ in range(2):
+            runner = JobRunner(station, Path(directory) / "checkpoints")
+            dock = JobsDock(station, runner, confirm=lambda _t: False, throttle_ms=0)
+            dock.resize(900, 700)
+            dock.show()
+            app.processEvents()
+            ready, hold = _open_measuring_holds(app, dock, path, settle_s=0.5)
+            if runner.state is not JobState.READY or runner.program is None:
+                raise RuntimeError(dock.messages.toPlainText())
+            results.append((ready, hold, len(runner.program)))
+            dock.close()
+            dock.deleteLater()
+            runner.deleteLater()
+            app.processEvents()
+    station.shutdown()
+    hold = max(r[1] for r in results)
+    return [
+        f"gcode_1m_dock: 1,000,000-line G-code file opened in the jobs dock "
+        f"({results[0][2]:,} operations): ready in {min(r[0] for r in results):.2f} s, "
+        f"longest GUI-thread hold {hold * 1000:.0f} ms (goal <= 100 ms: {_met(hold <= 0.1)}; "
+        f"load, checks, estimate and first paint of the preview)"
     ]
 
 
@@ -1081,6 +1135,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_gcode_load_1m,
     bench_string_art_2m,
     bench_string_art_2m_dock,
+    bench_gcode_1m_dock,
     bench_huge_arcs,
     bench_gcode_streaming,
     bench_gcode_job_streaming,

@@ -120,7 +120,7 @@ def load_gcode(
     finally:
         if collecting:
             gc.enable()
-    if not any(data.texts):
+    if not data.sent.any():
         raise JobFileError(
             path.name, 0, QCoreApplication.translate("JobFile", "no G-code to send in the file")
         )
