@@ -30,8 +30,9 @@ FAST_LINE = re.compile(
     rf"[ \t]*(?:;[^\n]*|\([^()\n]*\)[ \t]*)?\r?\n|[^\n]*\n)"
 )
 FAST_LETTERS = bytes.maketrans(b"GXYF\t\r", b"      ")
-#: Plain lines whose numbers are read in one numpy call.
-NUMBERS_CHUNK = 65_536
+#: Plain lines read in one call (regex, numpy): short enough that the window, waiting for the
+#: interpreter lock meanwhile, is not kept waiting long.
+NUMBERS_CHUNK = 8_192
 
 
 #: FAST_LINE on the file's UTF-8 bytes (the pattern is ASCII: the same lines match).
@@ -93,7 +94,16 @@ class PlainMoves:
         count = len(line_ends)
         plain: np.ndarray
         if allowed:
-            plain = np.array(FAST_LINE_BYTES.findall(buffer), dtype="S1") != b""
+            # A chunk of lines per call: one call over the whole file holds the interpreter
+            # lock for as long as it takes (tenths of a second), and the window waits.
+            found: list[bytes] = []
+            for first in range(0, count, NUMBERS_CHUNK):
+                last = min(first + NUMBERS_CHUNK, count) - 1
+                found += FAST_LINE_BYTES.findall(
+                    buffer, int(line_starts[first]), int(line_ends[last]) + 1
+                )
+            plain = np.array(found, dtype="S1") != b""
+            del found
         else:
             plain = np.zeros(count, dtype=bool)
         if len(plain) != count:  # cannot happen: one record per line
