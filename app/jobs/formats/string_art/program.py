@@ -146,19 +146,28 @@ class StringArtProgram(Program):
     preview_plane: ClassVar[Literal["axes", "board"]] = "board"
 
     def column_after(self, column: int, ops: np.ndarray) -> np.ndarray:
-        """Axis ``column`` (0 A, 1 X, 2 Z) after each operation in ``ops`` (NaN until set).
+        """Axis ``column`` (0 A, 1 X, 2 Z) after each operation in ``ops`` (ascending; NaN
+        until set).
 
         One column at a time, not kept: all three for 8 million operations
-        were 192 MB held for the program's life.
+        were 192 MB held for the program's life.  And a chunk of operations
+        at a time, carrying the last move on the axis: numpy's gathers hold
+        the interpreter lock, and over millions at once the window waited
+        for it a tenth of a second and more.
         """
-        last = np.where(
-            self.move_axis == column, np.arange(len(self.move_axis), dtype=np.int32), -1
-        )
-        np.maximum.accumulate(last, out=last)
-        at = last[ops]
-        del last
-        values: np.ndarray = np.where(at >= 0, self.move_values[np.maximum(at, 0)], np.nan)
-        return values
+        axis, values = self.move_axis, self.move_values
+        out = np.empty(len(ops))
+        carry = -1  # the last operation so far that set the axis
+        for first in range(0, len(axis), COLUMN_CHUNK):
+            stop = min(first + COLUMN_CHUNK, len(axis))
+            last = np.where(axis[first:stop] == column, np.arange(first, stop), -1)
+            np.maximum.accumulate(last, out=last)
+            np.maximum(last, carry, out=last)
+            carry = int(last[-1])
+            lo, hi = np.searchsorted(ops, (first, stop))
+            at = last[ops[lo:hi] - first]
+            out[lo:hi] = np.where(at >= 0, values[np.maximum(at, 0)], np.nan)
+        return out
 
     def axis_positions(self, ops: np.ndarray) -> np.ndarray:
         """(len(ops), 3): A, X, Z after each operation in ``ops`` (NaN until first set)."""
@@ -277,6 +286,9 @@ def _turn(current: np.ndarray, target: np.ndarray) -> np.ndarray:
     result: np.ndarray = (target - current + 180.0) % 360.0 - 180.0
     return result
 
+
+#: Operations read at a time by :meth:`StringArtProgram.column_after`.
+COLUMN_CHUNK = 1 << 18
 
 #: Entries computed at a time: the temporaries of a chunk stay a few megabytes however long
 #: the list (a whole 2-million-entry list at once took about 150 MB of them).
