@@ -76,7 +76,7 @@ from protocol.usb3.codec import Position
 FloatArray = npt.NDArray[np.float64]
 
 #: Window lengths the operator can choose from, in seconds.
-WINDOW_CHOICES_S: tuple[float, ...] = (10.0, 30.0, 60.0, 120.0, 300.0, 600.0)
+WINDOW_CHOICES_S: tuple[float, ...] = (10.0, 30.0, 60.0, 120.0, 300.0, 600.0, 1800.0)
 MIN_WINDOW_S = WINDOW_CHOICES_S[0]
 MAX_WINDOW_S = WINDOW_CHOICES_S[-1]
 #: The highest sample rate the buffers are sized for (a fast serial link or a benchmark).

@@ -2473,7 +2473,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>could not split the file into lines</source>
-        <extracomment>One record per line: group 1 is the G0/G1 digit of a plain move (a comment may follow), empty for any other line.</extracomment>
+        <extracomment>One record per line: group 1 is the G0/G1 digit of a plain move (a comment may follow), empty for any other line. Plain lines read in one call (regex, numpy): short enough that the window, waiting for the interpreter lock meanwhile, is not kept waiting long. FAST_LINE on the file&apos;s UTF-8 bytes (the pattern is ASCII: the same lines match).</extracomment>
         <translation>soubor nešlo rozdělit na řádky</translation>
     </message>
     <message>
@@ -2524,7 +2524,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>turn beside it</source>
-        <extracomment>The winder&apos;s axes: base angle (deg), tool radius (mm), tool along the drill axis (mm). The nail each operation serves (-1: none). The sequence entry each operation winds to (-1: drill phase). The axis each MOVE sets (0 A, 1 X, 2 Z; -1 for other operations) and its value. Index of the operator&apos;s WAIT between drilling and winding. Model seconds on the profile it was built for (None without a profile). The largest outer radius (each nail&apos;s own is its radius plus ``needle_out_mm``). The dwells at the holes&apos; bottoms (``G4`` operations) and how long each is. Translated once per program (an operation is made each time it is read).</extracomment>
+        <extracomment>The winder&apos;s axes: base angle (deg), tool radius (mm), tool along the drill axis (mm). The nail each operation serves (-1: none). The sequence entry each operation winds to (-1: drill phase). The axis each MOVE sets (0 A, 1 X, 2 Z; -1 for other operations) and its value. Index of the operator&apos;s WAIT between drilling and winding. Model seconds on the profile it was built for (None without a profile). The largest outer radius (each nail&apos;s own is its radius plus ``needle_out_mm``). The dwells at the holes&apos; bottoms (``G4`` operations) and how long each is. Operations read at a time by :meth:`StringArtProgram.column_after`. Entries computed at a time: the temporaries of a chunk stay a few megabytes however long the list (a whole 2-million-entry list at once took about 150 MB of them). Translated once per program (an operation is made each time it is read).</extracomment>
         <translation>natočit vedle něj</translation>
     </message>
     <message>

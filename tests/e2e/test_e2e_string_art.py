@@ -331,8 +331,8 @@ class Connection:
     def of(cls, program: StringArtProgram, entry: int) -> Connection:
         moving = program.indices_of(OpKind.MOVE)
         ops = moving[program.entry_of_op[moving] == entry]
-        turn, out, wrap, _in = (program.axis_positions[i] for i in ops)
-        before = program.axis_positions[ops[0] - 1][0]
+        turn, out, wrap, _in = program.axis_positions(ops)
+        before = program.axis_positions(ops[:1] - 1)[0][0]
         angles, _radii = program.job.nail_polar()
         nail = program.job.sequence[entry]
         target = float(turn[0]) + shortest_turn(float(turn[0]), float(angles[nail]))

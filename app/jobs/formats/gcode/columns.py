@@ -21,6 +21,7 @@ from app.jobs.formats.gcode.program import (
     PEN_UP,
     GcodeData,
 )
+from app.jobs.formats.gcode.sent_texts import SentTextsBuilder
 from app.jobs.formats.gcode.state import Pending
 from app.jobs.program import JobFileError
 
@@ -33,7 +34,7 @@ class OperationColumns:
 
     def __init__(self) -> None:
         # Output, in operation order.
-        self.texts: list[str] = []
+        self.texts = SentTextsBuilder()
         self.messages: dict[int, str] = {}
         # Compact columns (array, not list: a million lines of them must stay small).
         self.s_op = array("q")
@@ -90,6 +91,7 @@ class OperationColumns:
     def data(self, file: str, columns: Sequence[str], plain: PlainMoves) -> GcodeData:
         """The program's arrays: these columns and the plain moves, modal values carried."""
         n = len(self.texts)
+        sent = self.texts.done()  # first: its build arrays go before the columns are made
         k = len(columns)
         if k > 16:
             raise JobFileError(file, 0, QCoreApplication.translate("JobFile", "more than 16 axes"))
@@ -102,6 +104,7 @@ class OperationColumns:
 
         # Plain moves, placed run by run.
         plain.fill(lines, motion, feed, named, positions)
+        plain.release()
 
         # Everything else.
         slow = _numbers(self.s_op, np.int64)
@@ -149,7 +152,7 @@ class OperationColumns:
             pen_info,
             positions,
             named,
-            self.texts,
+            sent,
             self.messages,
             _numbers(self.dwell_ops, np.int64),
             _numbers(self.dwell_s, np.float64),

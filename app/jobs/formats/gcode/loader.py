@@ -103,9 +103,6 @@ def load_gcode(
     is G-code but beyond this machine is returned in ``unsupported`` (or, with
     ``skip_unsupported``, as comments listed in the notes).
     """
-    text = read_job_text(path)
-    if "\r" in text:
-        text = text.replace("\r\n", "\n").replace("\r", "\n")
     parser = Parser(
         path.name,
         axis_names,
@@ -117,13 +114,13 @@ def load_gcode(
     collecting = gc.isenabled()
     gc.disable()  # millions of small objects, none cyclic: collections would only cost time
     try:
-        parser.parse(text)
-        del text
+        # The text is the parser's alone, so it can let it go once split into lines.
+        parser.parse(_lines_text(path))
         data = parser.data()
     finally:
         if collecting:
             gc.enable()
-    if not any(data.texts):
+    if not data.sent.any():
         raise JobFileError(
             path.name, 0, QCoreApplication.translate("JobFile", "no G-code to send in the file")
         )
@@ -137,6 +134,14 @@ def load_gcode(
         data=data,
         start_relative=tuple(parser.columns[c] for c in sorted(parser.start_relative)),
     )
+
+
+def _lines_text(path: Path) -> str:
+    """The file's text with its line ends made ``\n``."""
+    text = read_job_text(path)
+    if "\r" in text:
+        return text.replace("\r\n", "\n").replace("\r", "\n")
+    return text
 
 
 #: A G-code line: a G/M word (optionally numbered), a GRBL ``$`` command or bare coordinates.

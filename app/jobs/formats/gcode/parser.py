@@ -49,6 +49,7 @@ from app.jobs.formats.gcode.program import (
     GcodeData,
     GcodeProblem,
 )
+from app.jobs.formats.gcode.sent_texts import SentTextsBuilder
 from app.jobs.formats.gcode.state import Pending, State
 from app.jobs.formats.gcode.tool_change import tool_change, tool_prompt
 from app.jobs.formats.gcode.words import (
@@ -166,22 +167,39 @@ class Parser:
         return {"G0", "G1"} <= self.words and {"X", "Y"} <= self.machine_axes
 
     def parse(self, text: str) -> None:
+        """Read ``text`` (the caller's reference handed over: it is let go once encoded).
+
+        The file is kept as UTF-8 bytes, which the operations' texts are spans
+        of (:mod:`app.jobs.formats.gcode.sent_texts`); only the lines the full
+        parser reads become strings.
+        """
         if not text.endswith("\n"):
             text += "\n"
-        lines = text.split("\n")
-        plain = self.plain.find(text, lines, self.fast_path_allowed())
+        buffer = text.encode("utf-8", "surrogatepass")
+        del text  # the caller's is gone too (the loader hands it over): 25 MB a million lines
+        ends = np.flatnonzero(np.frombuffer(buffer, dtype=np.uint8) == ord("\n"))
+        kind = np.int32 if len(buffer) < 2**31 - 1 else np.int64  # offsets in half the memory
+        ends = ends.astype(kind)
+        starts = np.concatenate(([0], ends[:-1] + 1)).astype(kind)
+        plain = self.plain.find(buffer, starts, ends, self.fast_path_allowed())
+        self.out.texts.set_buffer(buffer)
         slow = np.flatnonzero(~plain)
-        self.pens.prescan([lines[i] for i in slow.tolist()], self.tokens)
+        lines = [
+            buffer[a:b].decode("utf-8", "surrogatepass")
+            for a, b in zip(starts[slow].tolist(), ends[slow].tolist(), strict=True)
+        ]
+        del starts, ends
+        self.pens.prescan(lines, self.tokens)
         plain_before = (np.cumsum(plain) - plain)[slow].tolist()
         place, texts, line = self._place, self.out.texts, self._guarded
         done = 0
-        for i, before in zip(slow.tolist(), plain_before, strict=True):
+        for i, raw, before in zip(slow.tolist(), lines, plain_before, strict=True):
             if before > done:
                 place(done, before, self.state, texts)
                 done = before
-            line(i + 1, lines[i])
-        if done < len(self.plain.texts):
-            place(done, len(self.plain.texts), self.state, texts)
+            line(i + 1, raw)
+        if done < len(self.plain):
+            place(done, len(self.plain), self.state, texts)
         self._raise_refusals()
 
     def _guarded(self, number: int, raw: str) -> None:
@@ -231,7 +249,7 @@ class Parser:
             first.more = tuple(more)
             raise first
 
-    def _place(self, k0: int, k1: int, st: State, texts: list[str]) -> None:
+    def _place(self, k0: int, k1: int, st: State, texts: SentTextsBuilder) -> None:
         """A run of plain moves, refused where GRBL would refuse one (feed rules)."""
         self._add_refusals(self.plain.check_feeds(k0, k1, st.feed, self.feed_required))
         self.f_lines += int(np.count_nonzero(~np.isnan(self.plain.f[k0:k1])))

@@ -16,12 +16,14 @@ import math
 import operator
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from types import MappingProxyType
 from typing import overload
 
 import numpy as np
 import numpy.typing as npt
 
+from app.jobs.formats.gcode.sent_texts import SentTexts
 from app.jobs.program import (
     LimitViolation,
     LineProblem,
@@ -66,7 +68,7 @@ class GcodeData:
         pen_info: bool,
         positions: npt.NDArray[np.float64],
         named: npt.NDArray[np.uint16],
-        texts: list[str],
+        texts: SentTexts,
         messages: dict[int, str],
         dwell_ops: npt.NDArray[np.int64],
         dwell_s: npt.NDArray[np.float64],
@@ -90,8 +92,8 @@ class GcodeData:
         self.positions = positions
         #: Bit ``c`` set: the operation (a MOVE) moves column ``c``.
         self.named = named
-        #: What each operation sends (empty: not sent).
-        self.texts = texts
+        #: What each operation sends (empty: not sent), made when asked for.
+        self.sent = texts
         self.messages = messages
         #: G4 dwells: the operations and their seconds (sparse).
         self.dwell_ops = dwell_ops
@@ -117,8 +119,18 @@ class GcodeData:
             SourceRef(self.file, int(self.lines[index])),
             target,
             self.messages.get(index, ""),
-            self.texts[index],
+            self.sent[index],
         )
+
+    @cached_property
+    def texts(self) -> list[str]:
+        """Every operation's text as a list, made on first use and kept.
+
+        For the callers that search all of them (a resume's ``G92`` offsets,
+        the CoreXY's step-interval estimate); the load, the preview, the run
+        and the fingerprint read :attr:`sent` and never make it.
+        """
+        return list(self.sent)
 
     def column_values(self, rows: npt.NDArray[np.float64], axes: Sequence[str]) -> np.ndarray:
         """``rows`` (n, columns) rearranged to ``axes``; NaN for axes the file never moves."""
@@ -185,7 +197,8 @@ class GcodeProgram(Program):
         d = self.data
         digest = hashlib.sha256()
         digest.update(d.kinds.tobytes())
-        digest.update("\n".join(d.texts).encode("utf-8", "surrogatepass"))
+        for piece in d.sent.encoded_joined():  # the same bytes as all joined at once
+            digest.update(piece)
         digest.update(repr(sorted(d.messages.items())).encode("utf-8", "surrogatepass"))
         return digest.hexdigest()[:16]
 

@@ -145,17 +145,33 @@ class StringArtProgram(Program):
     dwell_s: float = 0.0
     preview_plane: ClassVar[Literal["axes", "board"]] = "board"
 
-    @cached_property
-    def axis_positions(self) -> np.ndarray:
-        """(operations, 3): A, X, Z after each operation (NaN until first set)."""
-        n = len(self.move_axis)
-        positions = np.full((n, len(AXES)), np.nan)
-        steps = np.arange(n)
-        for column in range(len(AXES)):
-            last = np.maximum.accumulate(np.where(self.move_axis == column, steps, -1))
-            known = last >= 0
-            positions[known, column] = self.move_values[last[known]]
-        return positions
+    def column_after(self, column: int, ops: np.ndarray) -> np.ndarray:
+        """Axis ``column`` (0 A, 1 X, 2 Z) after each operation in ``ops`` (ascending; NaN
+        until set).
+
+        One column at a time, not kept: all three for 8 million operations
+        were 192 MB held for the program's life.  And a chunk of operations
+        at a time, carrying the last move on the axis: numpy's gathers hold
+        the interpreter lock, and over millions at once the window waited
+        for it a tenth of a second and more.
+        """
+        axis, values = self.move_axis, self.move_values
+        out = np.empty(len(ops))
+        carry = -1  # the last operation so far that set the axis
+        for first in range(0, len(axis), COLUMN_CHUNK):
+            stop = min(first + COLUMN_CHUNK, len(axis))
+            last = np.where(axis[first:stop] == column, np.arange(first, stop), -1)
+            np.maximum.accumulate(last, out=last)
+            np.maximum(last, carry, out=last)
+            carry = int(last[-1])
+            lo, hi = np.searchsorted(ops, (first, stop))
+            at = last[ops[lo:hi] - first]
+            out[lo:hi] = np.where(at >= 0, values[np.maximum(at, 0)], np.nan)
+        return out
+
+    def axis_positions(self, ops: np.ndarray) -> np.ndarray:
+        """(len(ops), 3): A, X, Z after each operation in ``ops`` (NaN until first set)."""
+        return np.column_stack([self.column_after(column, ops) for column in range(len(AXES))])
 
     def _move_indices(self) -> np.ndarray:
         return np.flatnonzero(self.kind_codes == _KIND_CODES[OpKind.MOVE])
@@ -165,8 +181,12 @@ class StringArtProgram(Program):
         digest = hashlib.sha256()
         # The arrays' own memory, not a tobytes() copy: copying 64 MB holds the interpreter
         # lock (the GUI thread waits), hashing a buffer does not.
-        for column in (self.kind_codes, self.move_axis, self.move_values, self.nail_of_op):
+        for column in (self.kind_codes, self.move_axis, self.move_values):
             digest.update(np.ascontiguousarray(column).data.cast("B"))
+        # Hashed as the int32 it was kept as before (the same job, the same fingerprint, so a
+        # checkpoint written then still resumes), a chunk at a time rather than a 32 MB copy.
+        for first in range(0, len(self.nail_of_op), 1 << 20):
+            digest.update(self.nail_of_op[first : first + (1 << 20)].astype(np.int32).data)
         digest.update(np.ascontiguousarray(self.entry_of_op).data.cast("B"))
         return digest.hexdigest()[:16]
 
@@ -191,7 +211,7 @@ class StringArtProgram(Program):
         coords = np.full((len(moves), len(names)), np.nan)
         for column, name in enumerate(names):
             if name in _COLUMN:
-                coords[:, column] = self.axis_positions[moves, _COLUMN[name]]
+                coords[:, column] = self.column_after(_COLUMN[name], moves)
         return ProgramPath(coords, moves.astype(np.int64), np.zeros(len(moves), dtype=bool))
 
     def works_between(self, lo: int, hi: int) -> bool:
@@ -212,8 +232,8 @@ class StringArtProgram(Program):
     def preview_path(self, x_axis: str, y_axis: str | None) -> ProgramPath:
         """The board plane in mm whatever the axes: x = X·cos A, y = X·sin A; winding is work."""
         moves = self._move_indices()
-        angle = np.radians(np.nan_to_num(self.axis_positions[moves, 0]))
-        radius = np.nan_to_num(self.axis_positions[moves, 1])
+        angle = np.radians(np.nan_to_num(self.column_after(0, moves)))
+        radius = np.nan_to_num(self.column_after(1, moves))
         coords = np.column_stack((radius * np.cos(angle), radius * np.sin(angle)))
         pen = moves > self.wait_index
         return ProgramPath(coords, moves.astype(np.int64), pen)
@@ -282,10 +302,24 @@ def _turn(current: np.ndarray, target: np.ndarray) -> np.ndarray:
     return result
 
 
-def _winding_turns(
-    sequence: np.ndarray, angles: np.ndarray, before: np.ndarray, after: np.ndarray, start: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """Per further entry, the turn to the gap beside its nail and the wrap round it (degrees).
+#: Operations read at a time by :meth:`StringArtProgram.column_after`.
+COLUMN_CHUNK = 1 << 18
+
+#: Entries computed at a time: the temporaries of a chunk stay a few megabytes however long
+#: the list (a whole 2-million-entry list at once took about 150 MB of them).
+WINDING_CHUNK = 131_072
+
+
+def _fill_winding_angles(
+    sequence: np.ndarray,
+    angles: np.ndarray,
+    before: np.ndarray,
+    after: np.ndarray,
+    start: float,
+    rows: np.ndarray,
+) -> None:
+    """Per further entry, the base's unwrapped angle after the turn to the gap beside its
+    nail (``rows[:, 0]``) and after the wrap round it (``rows[:, 2]``), in degrees.
 
     Entry ``k`` is approached counter-clockwise when the shortest turn from
     where the base is (the gap the previous wrap ended in) to the nail is
@@ -293,41 +327,44 @@ def _winding_turns(
     was wrapped, so the direction is a two-state recurrence.  Both answers
     are computed for every entry; an entry whose two answers agree fixes the
     direction whatever came before, and between two such entries each one
-    keeps or flips it, so the chain is a running parity (no Python loop).
+    keeps or flips it, so the chain is a running parity (no Python loop per
+    entry).  Chunk by chunk, each carrying the previous chunk's last gap
+    ends, direction and angle: the sums are made in the same order as one
+    pass over the whole list would, so the angles are the same to the bit.
     """
-    nails = sequence[1:]
-    angle = angles[nails]
-    end_ccw = angle + after[nails]  # where a wrap approached counter-clockwise ends
-    end_cw = angle - before[nails]
-    # ``start``: where the base stands after the step in (the first nail's angle).
-    from_ccw = np.concatenate(([start], end_ccw[:-1]))
-    from_cw = np.concatenate(([start], end_cw[:-1]))
-    if_ccw = _turn(from_ccw, angle) >= 0  # the direction after a counter-clockwise wrap
-    if_cw = _turn(from_cw, angle) >= 0  # … after a clockwise one
-    fixed = if_ccw == if_cw
-    flips = np.cumsum(~if_ccw & if_cw, dtype=np.int64)
-    steps = np.arange(len(nails))
-    reset = np.maximum.accumulate(np.where(fixed, steps, -1))
-    at = np.maximum(reset, 0)
-    # The step-in leaves the needle where a counter-clockwise wrap would have.
-    base = np.where(reset >= 0, if_ccw[at], True)
-    since = flips - np.where(reset >= 0, flips[at], 0)
-    counter = base ^ ((since & 1) == 1)
-    del fixed, flips, steps, reset, at, base, since, if_ccw, if_cw
-    previous = np.where(np.concatenate(([True], counter[:-1])), from_ccw, from_cw)
-    del from_ccw, from_cw
-    gap = np.where(counter, end_cw, end_ccw)  # the gap on the side it is approached from
-    span = before[nails] + after[nails]
-    return _turn(previous, gap), np.where(counter, span, -span)
-
-
-def _unwrapped(start: float, turns: np.ndarray, wraps: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The base's unwrapped angle after each turn and after each wrap, from ``start``."""
-    steps = np.empty(2 * len(turns) + 1)
-    steps[0] = start
-    steps[1::2], steps[2::2] = turns, wraps
-    angles = np.cumsum(steps)  # added in order, as turn after turn on the machine
-    return angles[1::2], angles[2::2]
+    nails_all = sequence[1:]
+    # ``start``: where the base stands after the step in (the first nail's angle); the
+    # step-in leaves the needle where a counter-clockwise wrap would have.
+    prev_ccw_end, prev_cw_end, prev_counter, angle_now = start, start, True, start
+    for first in range(0, len(nails_all), WINDING_CHUNK):
+        nails = nails_all[first : first + WINDING_CHUNK]
+        angle = angles[nails]
+        end_ccw = angle + after[nails]  # where a wrap approached counter-clockwise ends
+        end_cw = angle - before[nails]
+        from_ccw = np.concatenate(([prev_ccw_end], end_ccw[:-1]))
+        from_cw = np.concatenate(([prev_cw_end], end_cw[:-1]))
+        if_ccw = _turn(from_ccw, angle) >= 0  # the direction after a counter-clockwise wrap
+        if_cw = _turn(from_cw, angle) >= 0  # … after a clockwise one
+        fixed = if_ccw == if_cw
+        flips = np.cumsum(~if_ccw & if_cw, dtype=np.int64)
+        reset = np.maximum.accumulate(np.where(fixed, np.arange(len(nails)), -1))
+        at = np.maximum(reset, 0)
+        base = np.where(reset >= 0, if_ccw[at], prev_counter)
+        since = flips - np.where(reset >= 0, flips[at], 0)
+        counter = base ^ ((since & 1) == 1)
+        previous = np.where(np.concatenate(([prev_counter], counter[:-1])), from_ccw, from_cw)
+        gap = np.where(counter, end_cw, end_ccw)  # the gap on the side it is approached from
+        span = before[nails] + after[nails]
+        steps = np.empty(2 * len(nails) + 1)
+        steps[0] = angle_now
+        steps[1::2] = _turn(previous, gap)
+        steps[2::2] = np.where(counter, span, -span)
+        unwrapped = np.cumsum(steps)  # added in order, as turn after turn on the machine
+        chunk = rows[first : first + len(nails)]
+        chunk[:, 0] = unwrapped[1::2]
+        chunk[:, 2] = unwrapped[2::2]
+        prev_ccw_end, prev_cw_end = float(end_ccw[-1]), float(end_cw[-1])
+        prev_counter, angle_now = bool(counter[-1]), float(unwrapped[-1])
 
 
 class StringArtOperations(Sequence[Operation]):
@@ -553,8 +590,6 @@ def build_program(
         first,
         0,
     )
-    turns, wraps = _winding_turns(job.indices, angles, before, after, b.angle)
-    a_turn, a_wrap = _unwrapped(b.angle, turns, wraps)
     last = sequence[-1]
     tail = Operation(
         OpKind.COMMENT,
@@ -564,48 +599,49 @@ def build_program(
         ).format(last),
     )
     winding = total - 1
-    nails_wound = job.indices[1:].astype(np.int32)
-    r_out = radii[nails_wound] + settings.needle_out_mm
+    head = len(b.ops)
+    size = head + 4 * winding + 1
+    indices = job.indices
+    # Every column is made at its full size once and filled in place, the winding as an
+    # (entries, 4) view of it: a 2-million-entry list is 8 million operations, and a
+    # concatenated copy of each column would double the load's peak memory.
+    move_values = np.empty(size)
+    move_values[:head] = [next(iter(op.target.values())) if op.target else math.nan for op in b.ops]
+    move_values[-1] = math.nan
+    rows = move_values[head : head + 4 * winding].reshape(winding, 4)
+    rows[:, 1] = radii[indices[1:]]
+    rows[:, 1] += settings.needle_out_mm
+    rows[:, 3] = r_in
+    _fill_winding_angles(indices, angles, before, after, b.angle, rows)
+    r_out = rows[:, 1]
     r_out_max = float(max(first_out, float(r_out.max()) if len(r_out) else first_out))
-    head_axis = [_COLUMN[next(iter(op.target))] if op.target else -1 for op in b.ops]
-    head_values = [next(iter(op.target.values())) if op.target else math.nan for op in b.ops]
-    move_values = np.empty(4 * winding)
-    move_values[0::4], move_values[1::4] = a_turn, r_out
-    move_values[2::4], move_values[3::4] = a_wrap, r_in
-    operations = StringArtOperations(job, tuple(b.ops), a_turn, a_wrap, r_in, r_out, tail)
+    move_axis = np.empty(size, dtype=np.int8)
+    move_axis[:head] = [_COLUMN[next(iter(op.target))] if op.target else -1 for op in b.ops]
+    move_axis[head:-1].reshape(winding, 4)[:] = (0, 1, 0, 1)
+    move_axis[-1] = -1
+    kind_codes = np.full(size, _KIND_CODES[OpKind.MOVE], dtype=np.int8)
+    kind_codes[:head] = [_KIND_CODES[op.kind] for op in b.ops]
+    kind_codes[-1] = _KIND_CODES[OpKind.COMMENT]
+    nail_of_op = np.empty(size, dtype=np.int16)  # MAX_NAILS fits
+    nail_of_op[:head] = b.nails
+    nail_of_op[head:-1].reshape(winding, 4)[:] = indices[1:, None]
+    nail_of_op[-1] = last
+    entry_of_op = np.empty(size, dtype=np.int32)
+    entry_of_op[:head] = b.entries
+    entry_of_op[head:-1].reshape(winding, 4)[:] = np.arange(1, total, dtype=np.int32)[:, None]
+    entry_of_op[-1] = total - 1
+    operations = StringArtOperations(job, tuple(b.ops), rows[:, 0], rows[:, 2], r_in, r_out, tail)
     program = StringArtProgram(
         name=job.name,
         operations=operations,
         source=job.poradi_path,
         notes=(job.summary(),),
         job=job,
-        nail_of_op=np.concatenate(
-            (np.array(b.nails, dtype=np.int32), np.repeat(nails_wound, 4), [last])
-        ).astype(np.int32),
-        entry_of_op=np.concatenate(
-            (
-                np.array(b.entries, dtype=np.int32),
-                np.repeat(np.arange(1, total, dtype=np.int32), 4),
-                [total - 1],
-            )
-        ).astype(np.int32),
-        move_axis=np.concatenate(
-            (
-                np.array(head_axis, dtype=np.int8),
-                np.tile(np.array([0, 1, 0, 1], np.int8), winding),
-                [-1],
-            )
-        ).astype(np.int8),
-        move_values=np.concatenate(
-            (np.array(head_values, dtype=np.float64), move_values, [math.nan])
-        ),
-        kind_codes=np.concatenate(
-            (
-                np.array([_KIND_CODES[op.kind] for op in b.ops], dtype=np.int8),
-                np.full(4 * winding, _KIND_CODES[OpKind.MOVE], dtype=np.int8),
-                [_KIND_CODES[OpKind.COMMENT]],
-            )
-        ).astype(np.int8),
+        nail_of_op=nail_of_op,
+        entry_of_op=entry_of_op,
+        move_axis=move_axis,
+        move_values=move_values,
+        kind_codes=kind_codes,
         wait_index=wait_index,
         needle_in_radius_mm=r_in,
         needle_out_radius_mm=r_out_max,

@@ -142,8 +142,15 @@ class StringArtJob:
     @cached_property
     def _thread_length_mm(self) -> float:
         # Once per job: a generator's list has millions of entries, and summaries repeat it.
-        points = self.nail_positions()[self.indices]
-        return float(np.hypot(*np.diff(points, axis=0).T).sum())
+        # Chunk by chunk (each overlapping the next by one entry): the points of a whole
+        # 2-million-entry list at once were 80 MB of temporaries at the load's peak.
+        positions = self.nail_positions()
+        indices = self.indices
+        total = 0.0
+        for first in range(0, max(len(indices) - 1, 0), CONVERT_CHUNK):
+            points = positions[indices[first : first + CONVERT_CHUNK + 1]]
+            total += float(np.hypot(*np.diff(points, axis=0).T).sum())
+        return total
 
     @cached_property
     def indices(self) -> np.ndarray:
