@@ -2347,7 +2347,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>the {0}</source>
-        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter). Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is the compact line&apos;s, what the board&apos;s line buffer really holds.</extracomment>
+        <extracomment>Words GRBL refuses negative (error:4). GRBL&apos;s largest tool number (error:38) and line number (error:27). Refusals collected from one file before reading stops (the first ones are what matter). Lines go to the board compact (``GcodeSettings.compact_lines``): the line limit is the compact line&apos;s, what the board&apos;s line buffer really holds. A GRBL board (it takes ``$J``): its error codes are GRBL 1.1&apos;s own.</extracomment>
         <translation>stroj {0}</translation>
     </message>
     <message>
