@@ -597,12 +597,33 @@
         <translation>Neočakávaná odpoveď {0} z vŕtačky</translation>
     </message>
     <message>
+        <source>{0}: it {1}</source>
+        <translation>{0}: vŕtačka {1}</translation>
+    </message>
+    <message>
+        <source>The drill {0} ({1})</source>
+        <translation>Vŕtačka {0} ({1})</translation>
+    </message>
+    <message>
         <source>The drill refused {0} ({1})</source>
         <translation>Vŕtačka odmietla {0} ({1})</translation>
     </message>
     <message>
         <source>; {0} queued command(s) dropped</source>
         <translation>; zahodené príkazy vo fronte: {0}</translation>
+    </message>
+    <message>
+        <source>acknowledged twice: the command or its answer was repeated on the way</source>
+        <extracomment>Procedures whose second run leaves the machine where one run does (absolute positions, a pen position, homing, parking): repeating them changes nothing on the board. ``R`` heard once more than sent, per letter: their ``D`` is still to come. The letter of the last procedure the station saw finish (a ``D`` repeated on the way). Commands in flight when the link went or fell silent: their R and D may still come.</extracomment>
+        <translation>potvrdila príkaz dvakrát: príkaz alebo odpoveď sa cestou zopakovali</translation>
+    </message>
+    <message>
+        <source>finished a procedure the station did not send</source>
+        <translation>dokončila procedúru, ktorú stanica neposlala</translation>
+    </message>
+    <message>
+        <source>received a command the station did not send (a line changed on the way)</source>
+        <translation>prijala príkaz, ktorý stanica neposlala (riadok sa cestou zmenil)</translation>
     </message>
 </context>
 <context>

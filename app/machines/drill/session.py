@@ -730,13 +730,21 @@ class DrillSession(MachineSession):
                 reply.kind, reply.letter, command.letter if command is not None else None
             )
             if why is not None:
-                self.commandUnasked.emit(f"{heard}: it {why}")
+                self.commandUnasked.emit(
+                    QCoreApplication.translate("DrillSession", "{0}: it {1}").format(
+                        heard, QCoreApplication.translate("DrillSession", why)
+                    )
+                )
             return
         text = command_text(command)
         if reply.kind is ReplyKind.RECEIVED and self._received:
             why = self._ledger.again(reply.letter)
             if why is not None:
-                self.commandUnasked.emit(f"The drill {why} ({text})")
+                self.commandUnasked.emit(
+                    QCoreApplication.translate("DrillSession", "The drill {0} ({1})").format(
+                        QCoreApplication.translate("DrillSession", why), text
+                    )
+                )
             return
         if reply.kind is ReplyKind.RECEIVED:
             self._received = True

@@ -20,6 +20,8 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass, field
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP
+
 from protocol.drill.codec import ReplyKind
 
 #: Procedures whose second run leaves the machine where one run does (absolute positions,
@@ -57,7 +59,12 @@ class ReplyLedger:
         self._extra[letter] += 1
         if letter in HARMLESS_AGAIN:
             return None
-        return "acknowledged twice: the command or its answer was repeated on the way"
+        return str(
+            QT_TRANSLATE_NOOP(
+                "DrillSession",
+                "acknowledged twice: the command or its answer was repeated on the way",
+            )
+        )
 
     def unasked(self, kind: ReplyKind, letter: str, in_flight: str | None) -> str | None:
         """An ``R``/``D`` for another command than the one in flight (or none): why, or None."""
@@ -71,10 +78,17 @@ class ReplyLedger:
                 return None
             if letter == self._last_done:
                 return None  # the last D, repeated on the way back
-            return "finished a procedure the station did not send"
+            return str(
+                QT_TRANSLATE_NOOP("DrillSession", "finished a procedure the station did not send")
+            )
         if kind is ReplyKind.RECEIVED:
             if letter in HARMLESS_AGAIN and letter == self._last_done and in_flight is None:
                 self._extra[letter] += 1  # a repeat of the last command, received late
                 return None
-            return "received a command the station did not send (a line changed on the way)"
+            return str(
+                QT_TRANSLATE_NOOP(
+                    "DrillSession",
+                    "received a command the station did not send (a line changed on the way)",
+                )
+            )
         return None
