@@ -89,7 +89,7 @@ def estimate_gcode(
 
     settings = profile.gcode
     if settings is not None and settings.step_interval_us is not None:
-        texts = program.data.texts if isinstance(program, GcodeProgram) else []
+        texts = program.data.sent if isinstance(program, GcodeProgram) else []
         seconds = _stepped(
             path, coords, previous, profile, _step_intervals(texts, n, settings.step_interval_us)
         )

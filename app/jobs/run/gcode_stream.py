@@ -123,8 +123,8 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
     """
     offset = dict.fromkeys(axes, 0.0)
     data = getattr(program, "data", None)
-    texts = getattr(data, "texts", None)
-    if not isinstance(texts, list) or index <= 0:
+    texts = getattr(data, "sent", None)  # the texts made as read (not all kept as str)
+    if not isinstance(texts, Sequence) or isinstance(texts, str) or index <= 0:
         return offset
     # One regex pass over the text before ``index`` (a resume on a file of a million lines
     # must not hold the GUI thread), the line of each hit counted from the one before.
