@@ -149,6 +149,18 @@ class JogState(QObject):
         if self._buttons.pop(source, None) is not None:
             self._push()
 
+    def holds(self, source: Hashable) -> bool:
+        """Whether ``source`` (a button, the gamepad) is held as far as the jog knows: a
+        source let go by the station (Stop, the lock, the dead-man) must be let go too."""
+        return source in self._buttons
+
+    def keep_held(self, source: Hashable) -> None:
+        """A source that reports its state (the gamepad) says it is still held: the sign
+        the session's dead-man waits for."""
+        session = self._station.session
+        if source in self._buttons and session is not None:
+            session.keep_jogging()
+
     def set_shift(self, held: bool) -> None:
         """Shift held jogs at the other speed; the session switches at once."""
         if held == self._shift:

@@ -7,6 +7,7 @@ on a plotter) is refused with a message rather than silently ignored.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
@@ -72,6 +73,8 @@ class MachineSession(QObject):
         self._jog_evidence_at: float | None = None  # last sign the jog is still held
         self.gate = MotionGate(model)
         self._fast_selected = True
+        #: Share of its usual jog speed a held jog asks for (a gamepad's stick half pushed).
+        self.jog_speed_share = 1.0
         self._device_heard = False  # a valid reply in this dialect came since the link opened
         self._awaiting_since: float | None = None
         self._told_no_answer = False
@@ -145,6 +148,12 @@ class MachineSession(QObject):
         return self.move_relative(axis, direction * distance)
 
     # --- the dead-man: a held jog needs signs that it is still held -------------------
+
+    def set_jog_speed(self, share: float) -> None:
+        """How fast a held jog goes, as a share (0…1] of its usual speed: where the dialect
+        chooses its jog's speed (a G-code board's feed), the next step goes at it; the others
+        jog at the speed the machine has selected."""
+        self.jog_speed_share = min(1.0, max(0.01, share)) if math.isfinite(share) else 1.0
 
     def forget_jog(self) -> None:
         """The held arrows are let go (a stop, a lost link): nothing jogs until pressed anew."""

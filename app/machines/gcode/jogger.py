@@ -65,6 +65,8 @@ class JogPort(Protocol):
     def stopping(self) -> bool: ...
     @property
     def jog_vector(self) -> tuple[int, ...]: ...
+    @property
+    def jog_speed_share(self) -> float: ...
     def send_line(self, text: str, origin: str) -> bool: ...
     def send_realtime(self, byte: bytes, name: str) -> None: ...
     def query_status(self) -> None: ...
@@ -196,11 +198,16 @@ class GcodeJogger:
         for axis, direction in enumerate(self._session.jog_vector):
             if not direction:
                 continue
-            step = model.profile.axes[axis].max_speed * JOG_SPEED_SHARE * JOG_STEP_S
+            step = self._speed(axis) * JOG_STEP_S
             lead = (target[axis] - model.axes[axis].position) * direction
             if lead > (JOG_BLOCKS_AHEAD - 1) * step + JOG_RESOLUTION:
                 return True
         return False
+
+    def _speed(self, axis: int) -> float:
+        """A held jog's speed on ``axis``: a share of its top speed (less, a stick half pushed)."""
+        top = self._session.model.profile.axes[axis].max_speed
+        return top * JOG_SPEED_SHARE * self._session.jog_speed_share
 
     def _step(self) -> None:
         """One step of the held jog, ending inside the travel; none once the travel ends."""
@@ -214,7 +221,7 @@ class GcodeJogger:
             if not direction:
                 continue
             profile = model.profile.axes[axis]
-            axis_speed = profile.max_speed * JOG_SPEED_SHARE
+            axis_speed = self._speed(axis)
             here = self._target[axis]
             end = session.gate.clamp(axis, here + direction * axis_speed * JOG_STEP_S)
             if abs(end - here) < JOG_RESOLUTION:
