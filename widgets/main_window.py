@@ -34,6 +34,7 @@ from app.settings import DOCKS_SHOWN, GEOMETRY, PAGE, WINDOW_STATE, StationSetti
 from app.station import Station
 from widgets.after_first_paint import AfterFirstPaint
 from widgets.dialects import window_dialect
+from widgets.gamepad_setup import GamepadSetup
 from widgets.jog_input import JogInput
 from widgets.page_stack import PageArea, PageStack
 from widgets.panels.connection import ConnectionPanel
@@ -115,6 +116,14 @@ class MainWindow(QMainWindow):
         self._restore_settings()
         self.keys = KeyRouter(self, self.jog, self.developer_action.trigger)
         self.keys.install()
+        self.gamepad = GamepadSetup(
+            self,
+            station,
+            self.jog,
+            self._settings,
+            self.menus.machine_menu,
+            remembers=self._remembers,
+        )
         self.texts.also(self._retranslate)
 
     # --- building ------------------------------------------------------------
@@ -440,6 +449,7 @@ class MainWindow(QMainWindow):
         then it closes by itself.
         """
         self.jog.release_all()
+        self.gamepad.shutdown()
         if not self.station.stop_and_close():
             if not self._close_after_stop:
                 self._close_after_stop = True

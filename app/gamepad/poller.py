@@ -26,17 +26,17 @@ from app.gamepad.source import PadDevice, PadSource, PadUnavailable
 from app.jog_state import JogState
 from app.station import Station
 
-#: How often the pad is looked at: 25 times a second (a release is seen within 40 ms).
+# How often the pad is looked at: 25 times a second (a release is seen within 40 ms).
 POLL_MS = 40
-#: The pad's key in the jog state machine's held sources.
+# The pad's key in the jog state machine's held sources.
 SOURCE = "gamepad"
 
 
 class PadState(enum.Enum):
     OFF = "off"
-    #: The gamepad support cannot load (:attr:`GamepadJog.unavailable` says why).
+    # The gamepad support cannot load (:attr:`GamepadJog.unavailable` says why).
     UNAVAILABLE = "unavailable"
-    #: On, and waiting for the device chosen (or any) to be plugged in.
+    # On, and waiting for the device chosen (or any) to be plugged in.
     SEARCHING = "searching"
     CONNECTED = "connected"
 
@@ -50,7 +50,7 @@ def _load_sdl() -> PadSource:
 class GamepadJog(QObject):
     """Looks at the chosen pad and keeps the jog state machine in step with it."""
 
-    #: The state or the device changed (the window shows it).
+    # The state or the device changed (the window shows it).
     stateChanged = Signal()
 
     def __init__(
@@ -58,7 +58,7 @@ class GamepadJog(QObject):
         station: Station,
         jog: JogState,
         *,
-        source_factory: Callable[[], PadSource] = _load_sdl,
+        source_factory: Callable[[], PadSource] | None = None,
         active: Callable[[], bool] = lambda: True,
         poll_ms: int | None = POLL_MS,
         parent: QObject | None = None,
@@ -66,21 +66,22 @@ class GamepadJog(QObject):
         super().__init__(parent)
         self._station = station
         self._jog = jog
-        self._factory = source_factory
-        #: Whether the station's window is the one the operator uses now: a pad in another
-        #: program's hands (or a second StepDeck's) jogs nothing here.
+        # SDL unless a test hands in its own device.
+        self._factory = source_factory or _load_sdl
+        # Whether the station's window is the one the operator uses now: a pad in another
+        # program's hands (or a second StepDeck's) jogs nothing here.
         self._active = active
         self._source: PadSource | None = None
         self.state = PadState.OFF
-        #: Why the gamepad support is unavailable (None: it is not known to be).
+        # Why the gamepad support is unavailable (None: it is not known to be).
         self.unavailable: str | None = None
-        #: The device chosen by name ("" : the first found).
+        # The device chosen by name ("" : the first found).
         self.wanted = ""
-        #: The device read now (None: none).
+        # The device read now (None: none).
         self.device: PadDevice | None = None
         self._held: tuple[int, ...] = IDLE.directions
         self._speed = 1.0
-        #: Let go by something else while the pad still asked for a jog: wait for its release.
+        # Let go by something else while the pad still asked for a jog: wait for its release.
         self._latched = False
         self.timer: QTimer | None = None
         if poll_ms is not None:
@@ -89,6 +90,11 @@ class GamepadJog(QObject):
             self.timer.timeout.connect(self.poll)
 
     # --- the operator's choices -----------------------------------------------------
+
+    @property
+    def enabled(self) -> bool:
+        """Whether the operator has the pad on (available or not)."""
+        return self.state is not PadState.OFF
 
     def set_enabled(self, enabled: bool) -> None:
         """Turn the gamepad on (loading SDL the first time) or off (letting go of its jog)."""
@@ -100,7 +106,8 @@ class GamepadJog(QObject):
             self._stop_timer()
             self._set_state(PadState.OFF)
             return
-        if self._source is None and not self._load():
+        if not self._load():
+            self._set_state(PadState.UNAVAILABLE)
             return
         self._set_state(PadState.CONNECTED if self.device else PadState.SEARCHING)
         if self.timer is not None:
@@ -118,8 +125,8 @@ class GamepadJog(QObject):
             self.poll()
 
     def device_names(self) -> list[str]:
-        """The names of the devices attached now (none while the support is not loaded)."""
-        if self._source is None:
+        """The names of the devices attached now (loading the library to see them)."""
+        if not self._load() or self._source is None:
             return []
         return [device.name for device in self._source.devices()]
 
@@ -182,11 +189,14 @@ class GamepadJog(QObject):
     # --- devices ---------------------------------------------------------------------
 
     def _load(self) -> bool:
+        """Load the library (once it works); whether it is there (else ``unavailable`` says
+        why)."""
+        if self._source is not None:
+            return True
         try:
             self._source = self._factory()
         except PadUnavailable as exc:
             self.unavailable = str(exc)
-            self._set_state(PadState.UNAVAILABLE)
             return False
         self.unavailable = None
         return True

@@ -73,7 +73,7 @@ class MachineSession(QObject):
         self._jog_evidence_at: float | None = None  # last sign the jog is still held
         self.gate = MotionGate(model)
         self._fast_selected = True
-        #: Share of its usual jog speed a held jog asks for (a gamepad's stick half pushed).
+        # Share of its usual jog speed a held jog asks for (a gamepad's stick half pushed).
         self.jog_speed_share = 1.0
         self._device_heard = False  # a valid reply in this dialect came since the link opened
         self._awaiting_since: float | None = None

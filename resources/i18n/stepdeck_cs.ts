@@ -1274,6 +1274,89 @@
     </message>
 </context>
 <context>
+    <name>Gamepad</name>
+    <message>
+        <source>Gamepad {0} unplugged: jog stopped</source>
+        <translation>Gamepad {0} odpojen: ruční posuv zastaven</translation>
+    </message>
+    <message>
+        <source>Gamepad: left stick + shoulder button (held)</source>
+        <translation>Gamepad: levá páčka + ramenní tlačítko (držené)</translation>
+    </message>
+    <message>
+        <source>Jog X and Y while both are held; pushed further, faster (G-code boards)</source>
+        <translation>Posuv v osách X a Y, dokud jsou obě držena; páčka vychýlená dál = rychleji (G-kódové desky)</translation>
+    </message>
+    <message>
+        <source>Gamepad: right stick up/down + shoulder button</source>
+        <translation>Gamepad: pravá páčka nahoru/dolů + ramenní tlačítko</translation>
+    </message>
+    <message>
+        <source>Jog Z while both are held, on machines with a Z axis</source>
+        <translation>Posuv v ose Z, dokud jsou obě držena, u strojů s osou Z</translation>
+    </message>
+    <message>
+        <source>Joystick: stick + trigger (held)</source>
+        <translation>Joystick: páka + spoušť (držené)</translation>
+    </message>
+    <message>
+        <source>Jog X and Y while both are held</source>
+        <translation>Posuv v osách X a Y, dokud jsou obě držena</translation>
+    </message>
+    <message>
+        <source>Let go of the stick or the button, or unplug</source>
+        <translation>Pustit páčku nebo tlačítko, nebo odpojit</translation>
+    </message>
+    <message>
+        <source>The jog stops at once</source>
+        <translation>Posuv se okamžitě zastaví</translation>
+    </message>
+    <message>
+        <source>&amp;Gamepad…</source>
+        <translation>&amp;Gamepad…</translation>
+    </message>
+    <message>
+        <source>Gamepad unavailable: {0}</source>
+        <translation>Gamepad není k dispozici: {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: off</source>
+        <translation>Gamepad: vypnut</translation>
+    </message>
+    <message>
+        <source>Gamepad: {0}</source>
+        <translation>Gamepad: {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: waiting for {0}</source>
+        <translation>Gamepad: čeká se na {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: none plugged in</source>
+        <translation>Gamepad: žádný není připojen</translation>
+    </message>
+    <message>
+        <source>StepDeck — gamepad</source>
+        <translation>StepDeck — gamepad</translation>
+    </message>
+    <message>
+        <source>&amp;Jog with a gamepad or joystick</source>
+        <translation>&amp;Ruční posuv gamepadem nebo joystickem</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>&amp;Zařízení:</translation>
+    </message>
+    <message>
+        <source>The first one found</source>
+        <translation>První nalezené</translation>
+    </message>
+    <message>
+        <source>Nothing jogs unless the enable button is held with the stick: a dropped pad or a drifting stick moves nothing. The pad jogs only while a StepDeck window is active, and a job under way refuses it as it refuses the keys.</source>
+        <translation>Nic se nepohne, dokud není s páčkou drženo i povolovací tlačítko: upuštěný gamepad ani ujíždějící páčka strojem nepohnou. Gamepad posouvá jen tehdy, je-li aktivní okno StepDecku, a probíhající úloha ho odmítne stejně jako klávesy.</translation>
+    </message>
+</context>
+<context>
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>

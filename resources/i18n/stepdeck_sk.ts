@@ -1274,6 +1274,89 @@
     </message>
 </context>
 <context>
+    <name>Gamepad</name>
+    <message>
+        <source>Gamepad {0} unplugged: jog stopped</source>
+        <translation>Gamepad {0} odpojený: ručný posuv zastavený</translation>
+    </message>
+    <message>
+        <source>Gamepad: left stick + shoulder button (held)</source>
+        <translation>Gamepad: ľavá páčka + ramenné tlačidlo (držané)</translation>
+    </message>
+    <message>
+        <source>Jog X and Y while both are held; pushed further, faster (G-code boards)</source>
+        <translation>Posuv v osiach X a Y, kým sú obe držané; páčka vychýlená ďalej = rýchlejšie (G-kódové dosky)</translation>
+    </message>
+    <message>
+        <source>Gamepad: right stick up/down + shoulder button</source>
+        <translation>Gamepad: pravá páčka hore/dole + ramenné tlačidlo</translation>
+    </message>
+    <message>
+        <source>Jog Z while both are held, on machines with a Z axis</source>
+        <translation>Posuv v osi Z, kým sú obe držané, pri strojoch s osou Z</translation>
+    </message>
+    <message>
+        <source>Joystick: stick + trigger (held)</source>
+        <translation>Joystick: páka + spúšť (držané)</translation>
+    </message>
+    <message>
+        <source>Jog X and Y while both are held</source>
+        <translation>Posuv v osiach X a Y, kým sú obe držané</translation>
+    </message>
+    <message>
+        <source>Let go of the stick or the button, or unplug</source>
+        <translation>Pustiť páčku alebo tlačidlo, alebo odpojiť</translation>
+    </message>
+    <message>
+        <source>The jog stops at once</source>
+        <translation>Posuv sa okamžite zastaví</translation>
+    </message>
+    <message>
+        <source>&amp;Gamepad…</source>
+        <translation>&amp;Gamepad…</translation>
+    </message>
+    <message>
+        <source>Gamepad unavailable: {0}</source>
+        <translation>Gamepad nie je k dispozícii: {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: off</source>
+        <translation>Gamepad: vypnutý</translation>
+    </message>
+    <message>
+        <source>Gamepad: {0}</source>
+        <translation>Gamepad: {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: waiting for {0}</source>
+        <translation>Gamepad: čaká sa na {0}</translation>
+    </message>
+    <message>
+        <source>Gamepad: none plugged in</source>
+        <translation>Gamepad: žiadny nie je pripojený</translation>
+    </message>
+    <message>
+        <source>StepDeck — gamepad</source>
+        <translation>StepDeck — gamepad</translation>
+    </message>
+    <message>
+        <source>&amp;Jog with a gamepad or joystick</source>
+        <translation>&amp;Ručný posuv gamepadom alebo joystickom</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>&amp;Zariadenie:</translation>
+    </message>
+    <message>
+        <source>The first one found</source>
+        <translation>Prvé nájdené</translation>
+    </message>
+    <message>
+        <source>Nothing jogs unless the enable button is held with the stick: a dropped pad or a drifting stick moves nothing. The pad jogs only while a StepDeck window is active, and a job under way refuses it as it refuses the keys.</source>
+        <translation>Nič sa nepohne, kým nie je s páčkou držané aj povoľovacie tlačidlo: spadnutý gamepad ani ubiehajúca páčka strojom nepohnú. Gamepad posúva, len keď je aktívne okno StepDecku, a prebiehajúca úloha ho odmietne rovnako ako klávesy.</translation>
+    </message>
+</context>
+<context>
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>

@@ -31,6 +31,7 @@ from app.machine import LinkState
 from app.settings import StationSettings
 from app.station import Station
 from app.version import station_version
+from widgets.gamepad_setup import mapping_rows
 from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
@@ -344,6 +345,7 @@ class WindowMenus(QObject):
                 f"<td>{esc if keys == 'Esc' else _tr(str(what))}</td></tr>"
                 for keys, what in SHORTCUTS
             )
+            rows += mapping_rows()  # the gamepad's (Machine → Gamepad…)
             note = QCoreApplication.translate(
                 "MainWindow",
                 "Arrows do not jog while a text or number field has focus: there they keep "
