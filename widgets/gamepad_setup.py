@@ -157,6 +157,8 @@ class GamepadSetup(QObject):
             )
         if state is PadState.OFF:
             return QCoreApplication.translate("Gamepad", "Gamepad: off")
+        if state is PadState.LOADING:
+            return QCoreApplication.translate("Gamepad", "Gamepad: starting…")
         if state is PadState.CONNECTED and poller.device is not None:
             return QCoreApplication.translate("Gamepad", "Gamepad: {0}").format(poller.device.name)
         if poller.wanted:

@@ -21,6 +21,7 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
+from app.gamepad.background import BackgroundImport
 from app.gamepad.mapping import IDLE, PadIntent, PadReading, intent
 from app.gamepad.source import PadDevice, PadSource, PadUnavailable
 from app.jog_state import JogState
@@ -34,6 +35,8 @@ SOURCE = "gamepad"
 
 class PadState(enum.Enum):
     OFF = "off"
+    # On, and its library is being imported (off the GUI thread).
+    LOADING = "loading"
     # The gamepad support cannot load (:attr:`GamepadJog.unavailable` says why).
     UNAVAILABLE = "unavailable"
     # On, and waiting for the device chosen (or any) to be plugged in.
@@ -45,6 +48,12 @@ def _load_sdl() -> PadSource:
     from app.gamepad.sdl import SdlPadSource  # SDL only once the operator wants it
 
     return SdlPadSource()
+
+
+def _import_sdl() -> None:
+    from app.gamepad.sdl import import_sdl
+
+    import_sdl()
 
 
 class GamepadJog(QObject):
@@ -59,6 +68,7 @@ class GamepadJog(QObject):
         jog: JogState,
         *,
         source_factory: Callable[[], PadSource] | None = None,
+        preload: Callable[[], None] | None = None,
         active: Callable[[], bool] = lambda: True,
         poll_ms: int | None = POLL_MS,
         parent: QObject | None = None,
@@ -66,8 +76,15 @@ class GamepadJog(QObject):
         super().__init__(parent)
         self._station = station
         self._jog = jog
-        # SDL unless a test hands in its own device.
+        # SDL unless a test hands in its own device; SDL's import runs off the GUI thread.
         self._factory = source_factory or _load_sdl
+        if preload is None and source_factory is None:
+            preload = _import_sdl
+        self._preload = None if preload is None else BackgroundImport(preload, self)
+        if self._preload is not None:
+            self._preload.done.connect(self._preloaded)
+        # Whether the operator wants the pad on (kept while its library loads).
+        self._wanted_on = False
         # Whether the station's window is the one the operator uses now: a pad in another
         # program's hands (or a second StepDeck's) jogs nothing here.
         self._active = active
@@ -98,6 +115,7 @@ class GamepadJog(QObject):
 
     def set_enabled(self, enabled: bool) -> None:
         """Turn the gamepad on (loading SDL the first time) or off (letting go of its jog)."""
+        self._wanted_on = enabled
         if not enabled:
             self._let_go()
             if self._source is not None:
@@ -105,6 +123,9 @@ class GamepadJog(QObject):
             self.device = None
             self._stop_timer()
             self._set_state(PadState.OFF)
+            return
+        if not self._ready():
+            self._set_state(PadState.LOADING)
             return
         if not self._load():
             self._set_state(PadState.UNAVAILABLE)
@@ -126,7 +147,7 @@ class GamepadJog(QObject):
 
     def device_names(self) -> list[str]:
         """The names of the devices attached now (loading the library to see them)."""
-        if not self._load() or self._source is None:
+        if not self._ready() or not self._load() or self._source is None:
             return []
         return [device.name for device in self._source.devices()]
 
@@ -135,7 +156,7 @@ class GamepadJog(QObject):
     def poll(self) -> None:
         """Look at the pad once: find it, notice it gone, or follow its sticks."""
         source = self._source
-        if source is None or self.state in (PadState.OFF, PadState.UNAVAILABLE):
+        if source is None or self.state not in (PadState.SEARCHING, PadState.CONNECTED):
             return
         if self.device is None and not self._find(source):
             return
@@ -187,6 +208,22 @@ class GamepadJog(QObject):
             session.set_jog_speed(share)
 
     # --- devices ---------------------------------------------------------------------
+
+    def _ready(self) -> bool:
+        """Whether the library can be loaded now without a wait; if not, its import starts
+        (:meth:`_preloaded` follows)."""
+        preload = self._preload
+        if self._source is not None or preload is None or preload.finished:
+            return True
+        preload.start()
+        return False
+
+    def _preloaded(self) -> None:
+        """The library's import ended: go on where the operator was."""
+        if self._wanted_on:
+            self.set_enabled(True)
+        else:
+            self.stateChanged.emit()  # the devices can be listed now
 
     def _load(self) -> bool:
         """Load the library (once it works); whether it is there (else ``unavailable`` says

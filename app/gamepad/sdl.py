@@ -23,16 +23,26 @@ AXIS_FULL = 32767.0
 EXTRA_HINT = "pip install 'stepdeck[gamepad]'"
 
 
+def import_sdl() -> Any:
+    """Import pysdl2: slow (ctypes bindings of SDL's whole API), so run off the GUI thread
+    first.  pysdl2 warns that it found pysdl2-dll's library, which is just what is wanted
+    (a filter, not ``catch_warnings``: that is not safe on a thread)."""
+    warnings.filterwarnings(
+        "ignore", message="Using SDL2 binaries from pysdl2-dll", category=UserWarning
+    )
+    import sdl2
+
+    return sdl2
+
+
 def load_sdl() -> Any:
     """pysdl2 (untyped: ctypes bindings), with its joystick subsystem started;
     :class:`PadUnavailable` says why not.
 
-    pysdl2 warns that it found pysdl2-dll's library, which is just what is wanted.
+    The import is quick once :func:`import_sdl` has run (off the GUI thread).
     """
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            import sdl2
+        sdl2 = import_sdl()
     except ImportError as exc:
         raise PadUnavailable(f"pysdl2 is not installed ({EXTRA_HINT})") from exc
     except (RuntimeError, OSError) as exc:  # pysdl2 found no usable SDL2 library

@@ -1324,6 +1324,10 @@
         <translation>Gamepad: vypnut</translation>
     </message>
     <message>
+        <source>Gamepad: starting…</source>
+        <translation>Gamepad: spouští se…</translation>
+    </message>
+    <message>
         <source>Gamepad: {0}</source>
         <translation>Gamepad: {0}</translation>
     </message>

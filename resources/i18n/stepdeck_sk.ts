@@ -1324,6 +1324,10 @@
         <translation>Gamepad: vypnutý</translation>
     </message>
     <message>
+        <source>Gamepad: starting…</source>
+        <translation>Gamepad: spúšťa sa…</translation>
+    </message>
+    <message>
         <source>Gamepad: {0}</source>
         <translation>Gamepad: {0}</translation>
     </message>

@@ -3,6 +3,7 @@ a stick pushed with enable held jogs through the same state machine and gate as 
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterator
 
 import pytest
@@ -265,3 +266,43 @@ def test_without_the_library_the_pad_says_it_is_unavailable(grbl: StationHarness
     assert poller.unavailable == "pysdl2 is not installed"
     poller.poll()  # nothing to look at, nothing breaks
     assert poller.device_names() == []
+
+
+def test_the_library_is_imported_off_the_gui_thread_then_the_pad_is_read(
+    grbl: StationHarness, qtbot: QtBot
+) -> None:
+    pad = FakePad()
+    imported_on: list[str] = []
+    gate = threading.Event()
+
+    def slow_import() -> None:
+        imported_on.append(threading.current_thread().name)
+        gate.wait(5)
+
+    jog = JogState(grbl.station, {})
+    poller = GamepadJog(
+        grbl.station, jog, source_factory=lambda: pad, preload=slow_import, poll_ms=None
+    )
+    poller.set_enabled(True)
+    assert poller.state is PadState.LOADING  # returned at once: the import is elsewhere
+    poller.poll()  # nothing to read yet, nothing breaks
+    gate.set()
+    qtbot.waitUntil(lambda: poller.state is PadState.CONNECTED)
+    assert imported_on and imported_on[0] != threading.main_thread().name
+    pad.reading = PUSHED_RIGHT
+    poller.set_enabled(False)
+    poller.set_enabled(True)  # loaded now: at once
+    assert poller.state is PadState.CONNECTED
+
+
+def test_turned_off_while_loading_stays_off(grbl: StationHarness, qtbot: QtBot) -> None:
+    loaded = threading.Event()
+    jog = JogState(grbl.station, {})
+    poller = GamepadJog(grbl.station, jog, source_factory=FakePad, preload=loaded.set, poll_ms=None)
+    changed: list[PadState] = []
+    poller.stateChanged.connect(lambda: changed.append(poller.state))
+    poller.set_enabled(True)
+    poller.set_enabled(False)
+    qtbot.waitUntil(lambda: len(changed) >= 3)  # loading, off, then the import's end
+    assert loaded.is_set() and poller.state is PadState.OFF
+    assert poller.device_names() == ["Test Pad"]  # the dialog can list devices now

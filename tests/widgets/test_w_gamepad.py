@@ -63,6 +63,9 @@ def test_the_pad_jogs_in_the_window_named_in_the_status_bar_and_the_lock_refuses
     setup.set_enabled(True)
     label = window.findChild(QLabel, "gamepad_status")
     assert label is not None and label.isVisible()
+    # SDL's import runs off the GUI thread first: the station says it is starting.
+    assert label.text() in ("Gamepad: starting…", f"Gamepad: {pad.name}")
+    qtbot.waitUntil(lambda: setup.poller.state is PadState.CONNECTED)
     assert label.text() == f"Gamepad: {pad.name}"
     pad.button(LEFT_SHOULDER, True)
     pad.axis(LEFT_X, FULL)
@@ -93,19 +96,20 @@ def test_on_and_the_device_are_kept_and_the_pad_is_read_after_a_restart(
     window = shown_window(qtbot, grbl, ini)
     dialog = window.gamepad.show_dialog()
     combo = dialog.device_combo
+    qtbot.waitUntil(lambda: combo.count() > 1)  # listed once SDL is imported
     names = [combo.itemText(i) for i in range(combo.count())]
     assert names[0] == "The first one found" and pad.name in names
     combo.setCurrentIndex(names.index(pad.name))
     combo.activated.emit(names.index(pad.name))
     dialog.enable_box.setChecked(True)
-    assert window.gamepad.poller.state is PadState.CONNECTED
+    qtbot.waitUntil(lambda: window.gamepad.poller.state is PadState.CONNECTED)
     assert dialog.state_label.text() == f"Gamepad: {pad.name}"
     window.close()
     stored = StationSettings(QSettings(str(ini), QSettings.Format.IniFormat))
     assert stored.read(GAMEPAD_ENABLED) is True and stored.read(GAMEPAD_DEVICE) == pad.name
     again = shown_window(qtbot, grbl, ini)
     again.gamepad.started.now()  # after the first paint
-    assert again.gamepad.poller.state is PadState.CONNECTED
+    qtbot.waitUntil(lambda: again.gamepad.poller.state is PadState.CONNECTED)
     assert again.gamepad.poller.wanted == pad.name
     again.gamepad.set_enabled(False)
     assert not again.findChild(QLabel, "gamepad_status").isVisible()  # type: ignore[union-attr]
