@@ -645,6 +645,12 @@ class JobRunner(QObject):
         return True
 
     def _refuse_for_link(self) -> bool:
+        owner = self.station.model.jog_lock_reason
+        if owner is not None and self._state not in ACTIVE:  # another runner's (a macro's)
+            self.message.emit(
+                QCoreApplication.translate("JobRunner", "Cannot run the job: {0}").format(owner)
+            )
+            return True
         reason = self.station.model.motion_lock_reason()
         if self.station.session is None or self.station.model.link_state in LINK_DOWN:
             reason = reason or QCoreApplication.translate("JobRunner", "not connected")
@@ -750,19 +756,22 @@ class JobRunner(QObject):
         self._progress.flush()  # the views see the progress the new state comes with
         self._paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
+        was_active = self._state in ACTIVE
         runs = state in CLOCK_RUNS
         self._progress.clock(was_running, runs, state in ACTIVE)
         self._progress.ended = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
-        # where the machine was), a jog would move the machine under it.
-        self.station.model.set_jog_lock(
-            QCoreApplication.translate(
-                "JobRunner", "a job is under way — abort it or let it finish"
+        # where the machine was), a jog would move the machine under it.  Only the runner
+        # that took the lock gives it back (a macro's runner may hold it).
+        if state in ACTIVE or was_active:
+            self.station.model.set_jog_lock(
+                QCoreApplication.translate(
+                    "JobRunner", "a job is under way — abort it or let it finish"
+                )
+                if state in ACTIVE
+                else None
             )
-            if state in ACTIVE
-            else None
-        )
         self.stateChanged.emit(state)
         if not runs:
             self.emit_eta()
