@@ -26,10 +26,9 @@ from app.jobs.formats.gcode.loader import GcodeProgram
 from app.jobs.program import JobFileError
 from app.jobs.run.runner import JobRunner, LoadCheck
 from app.jobs.run.states import ACTIVE, JobState
-from app.machines.registry import dialect_for
+from app.macros.machines import macros_available
 from app.macros.program import file_error_text, macro_program, refusal_text
 from app.macros.store import Macro
-from app.profiles import MachineProfile
 from app.station import Station
 
 #: Refusals listed in a message; more are counted.
@@ -46,14 +45,6 @@ def macro_checkpoint_dir() -> Path:
     if not data:
         return Path(tempfile.gettempdir()) / "stepdeck-macro-checkpoints"
     return Path(data) / "macro-checkpoints"
-
-
-def macros_available(profile: MachineProfile) -> bool:
-    """Macros are G-code text: only machines sent G-code text as written run them."""
-    try:
-        return dialect_for(profile).takes_gcode_text
-    except ValueError:
-        return False
 
 
 class MacroRefused(ValueError):

@@ -18,12 +18,8 @@ from typing import Any
 from PySide6.QtCore import QSettings
 
 from app.jobs.run.runner import JobRunner
-from app.macros.runner import (
-    MacroRefused,
-    macro_checkpoint_dir,
-    macros_available,
-    prepare_macro,
-)
+from app.macros.machines import macros_available
+from app.macros.runner import MacroRefused, macro_checkpoint_dir, prepare_macro
 from app.macros.store import Macro, MacroError, MacroStore, checked_macro, find
 from app.scripting.errors import JobRefused, Unsupported
 from app.scripting.job import JobResult, run_program

@@ -16,7 +16,8 @@ from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.run.runner import JobRunner
 from app.jobs.run.states import ACTIVE, JobState
 from app.machine import LinkState
-from app.macros.runner import MacroRunner, macros_available
+from app.macros.machines import macros_available
+from app.macros.runner import MacroRunner
 from app.macros.store import Macro
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
