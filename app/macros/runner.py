@@ -35,10 +35,6 @@ from app.station import Station
 REFUSALS_SHOWN = 10
 
 
-def _translate(text: str) -> str:
-    return QCoreApplication.translate("Macros", text)
-
-
 def macro_checkpoint_dir() -> Path:
     """Where macro runs keep their checkpoints (beside the jobs', apart from them)."""
     data = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppDataLocation)
@@ -65,7 +61,11 @@ def prepare_macro(
     if checked.refused:
         lines = [refusal_text(v) for v in checked.refused[:REFUSALS_SHOWN]]
         if len(checked.refused) > REFUSALS_SHOWN:
-            lines.append(_translate("… and {0} more").format(len(checked.refused) - REFUSALS_SHOWN))
+            lines.append(
+                QCoreApplication.translate("Macros", "… and {0} more").format(
+                    len(checked.refused) - REFUSALS_SHOWN
+                )
+            )
         raise MacroRefused("\n".join(lines))
     return program, checked
 
@@ -107,16 +107,20 @@ class MacroRunner(QObject):
         """Why no macro may start now (None: one may), in the operator's language."""
         model = self.station.model
         if not macros_available(self.station.profile):
-            return _translate("{0} takes no G-code macros").format(self.station.profile.shown_title)
+            return QCoreApplication.translate("Macros", "{0} takes no G-code macros").format(
+                self.station.profile.shown_title
+            )
         if self.active:
-            return _translate("macro {0} is running").format(repr(self.name))
+            return QCoreApplication.translate("Macros", "macro {0} is running").format(
+                repr(self.name)
+            )
         if model.jog_lock_reason is not None:
             return model.jog_lock_reason
         reason = model.motion_lock_reason()
         if reason is not None or self.station.session is None:
-            return reason or _translate("not connected")
+            return reason or QCoreApplication.translate("Macros", "not connected")
         if model.any_moving:
-            return _translate("the machine is moving")
+            return QCoreApplication.translate("Macros", "the machine is moving")
         return None
 
     def run(self, macro: Macro) -> bool:
@@ -132,7 +136,9 @@ class MacroRunner(QObject):
         self._quiet = True
         try:
             if runner.load(program, checked=checked):
-                return self._refuse(macro, _translate("the travel check failed"))
+                return self._refuse(
+                    macro, QCoreApplication.translate("Macros", "the travel check failed")
+                )
             if runner.resume_available is not None:
                 # An earlier run of the same text that did not end: it starts from its start.
                 runner.discard_checkpoint()
@@ -141,7 +147,7 @@ class MacroRunner(QObject):
         self.name = macro.name
         runner.start()
         if not self.active:
-            return self._refuse(macro, _translate("it did not start"))
+            return self._refuse(macro, QCoreApplication.translate("Macros", "it did not start"))
         return True
 
     def abort(self) -> None:
@@ -158,7 +164,11 @@ class MacroRunner(QObject):
         self.runner.confirm()
 
     def _refuse(self, macro: Macro, why: str) -> bool:
-        self.message.emit(_translate("Macro {0} refused: {1}").format(repr(macro.name), why))
+        self.message.emit(
+            QCoreApplication.translate("Macros", "Macro {0} refused: {1}").format(
+                repr(macro.name), why
+            )
+        )
         return False
 
     def _on_message(self, text: str) -> None:
@@ -177,6 +187,8 @@ class MacroRunner(QObject):
         runner = self.runner
         if runner.state is JobState.PAUSED and runner.needs_operator:
             self.message.emit(
-                _translate("Macro {0} ended: the machine needs you first").format(repr(self.name))
+                QCoreApplication.translate(
+                    "Macros", "Macro {0} ended: the machine needs you first"
+                ).format(repr(self.name))
             )
             runner.give_up()

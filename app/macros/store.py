@@ -41,37 +41,41 @@ class Macro:
     code: str
 
 
-def _translate(text: str) -> str:
-    return QCoreApplication.translate("Macros", text)
-
-
 def name_problem(name: object) -> str | None:
     """Why ``name`` cannot name a macro (None: it can)."""
     if not isinstance(name, str) or not name.strip():
-        return _translate("a macro needs a name")
+        return QCoreApplication.translate("Macros", "a macro needs a name")
     if name != name.strip():
-        return _translate("the name starts or ends with a space")
+        return QCoreApplication.translate("Macros", "the name starts or ends with a space")
     if len(name) > MAX_NAME_CHARS:
-        return _translate("the name is longer than {0} characters").format(MAX_NAME_CHARS)
+        return QCoreApplication.translate(
+            "Macros", "the name is longer than {0} characters"
+        ).format(MAX_NAME_CHARS)
     if not name.isprintable() or '"' in name:
-        return _translate("the name may hold printable characters only, and no quote")
+        return QCoreApplication.translate(
+            "Macros", "the name may hold printable characters only, and no quote"
+        )
     return None
 
 
 def code_problem(code: object) -> str | None:
     """Why ``code`` cannot be a macro's text (None: it can; the parser judges the G-code)."""
     if not isinstance(code, str):
-        return _translate("the G-code is not text")
+        return QCoreApplication.translate("Macros", "the G-code is not text")
     if len(code) > MAX_CODE_CHARS:
-        return _translate("the G-code is longer than {0} characters").format(MAX_CODE_CHARS)
+        return QCoreApplication.translate(
+            "Macros", "the G-code is longer than {0} characters"
+        ).format(MAX_CODE_CHARS)
     lines = code.split("\n")
     if len(lines) > MAX_LINES:
-        return _translate("the G-code has more than {0} lines").format(MAX_LINES)
+        return QCoreApplication.translate("Macros", "the G-code has more than {0} lines").format(
+            MAX_LINES
+        )
     for number, line in enumerate(lines, start=1):
         if not line.replace("\t", " ").isprintable():
-            return _translate("line {0} holds a character that is not printable text").format(
-                number
-            )
+            return QCoreApplication.translate(
+                "Macros", "line {0} holds a character that is not printable text"
+            ).format(number)
     return None
 
 
@@ -87,12 +91,18 @@ def checked_macro(name: object, code: object) -> Macro:
 def checked_list(macros: Sequence[Macro]) -> list[Macro]:
     """``macros`` as a profile may keep them: each valid, names unique, not too many."""
     if len(macros) > MAX_MACROS:
-        raise MacroError(_translate("more than {0} macros").format(MAX_MACROS))
+        raise MacroError(
+            QCoreApplication.translate("Macros", "more than {0} macros").format(MAX_MACROS)
+        )
     seen: set[str] = set()
     for macro in macros:
         checked_macro(macro.name, macro.code)
         if macro.name.casefold() in seen:
-            raise MacroError(_translate("two macros are named {0}").format(repr(macro.name)))
+            raise MacroError(
+                QCoreApplication.translate("Macros", "two macros are named {0}").format(
+                    repr(macro.name)
+                )
+            )
         seen.add(macro.name.casefold())
     return list(macros)
 

@@ -32,10 +32,6 @@ FORMAT = 1
 MAX_FILE_BYTES = 512 * 1024
 
 
-def _translate(text: str) -> str:
-    return QCoreApplication.translate("Macros", text)
-
-
 def toml_string(text: str) -> str:
     """``text`` as a TOML basic string (JSON's escapes are TOML's, non-ASCII kept as is)."""
     return json.dumps(text, ensure_ascii=False)
@@ -65,26 +61,35 @@ def parse_macros(text: str, file: str) -> tuple[list[Macro], str]:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise MacroError(_translate("{0}: not TOML ({1})").format(where, exc)) from None
+        raise MacroError(
+            QCoreApplication.translate("Macros", "{0}: not TOML ({1})").format(where, exc)
+        ) from None
     if data.get("format") != FORMAT:
         raise MacroError(
-            _translate("{0}: not a StepDeck macro file (format {1})").format(where, FORMAT)
+            QCoreApplication.translate(
+                "Macros", "{0}: not a StepDeck macro file (format {1})"
+            ).format(where, FORMAT)
         )
     entries = data.get("macro", [])
     if not isinstance(entries, list) or len(entries) > MAX_MACROS:
         raise MacroError(
-            _translate("{0}: [[macro]] must be a list of at most {1} tables").format(
-                where, MAX_MACROS
-            )
+            QCoreApplication.translate(
+                "Macros", "{0}: [[macro]] must be a list of at most {1} tables"
+            ).format(where, MAX_MACROS)
         )
     macros: list[Macro] = []
     for number, entry in enumerate(entries, start=1):
         if not isinstance(entry, dict):
-            raise MacroError(_translate("{0}: macro {1} is not a table").format(where, number))
+            raise MacroError(
+                QCoreApplication.translate("Macros", "{0}: macro {1} is not a table").format(
+                    where, number
+                )
+            )
         try:
             macros.append(checked_macro(entry.get("name"), entry.get("code", "")))
         except MacroError as exc:
-            raise MacroError(f"{where}: macro {number}: {exc}") from None
+            text = QCoreApplication.translate("Macros", "{0}: macro {1}: {2}")
+            raise MacroError(text.format(where, number, exc)) from None
     try:
         checked_list(macros)
     except MacroError as exc:
@@ -98,12 +103,18 @@ def import_macros(path: Path) -> tuple[list[Macro], str]:
     where = shown(path.name)
     try:
         if not path.is_file():
-            raise MacroError(_translate("{0}: not a file").format(where))
+            raise MacroError(QCoreApplication.translate("Macros", "{0}: not a file").format(where))
         if path.stat().st_size > MAX_FILE_BYTES:
-            raise MacroError(_translate("{0}: too large for a macro file").format(where))
+            raise MacroError(
+                QCoreApplication.translate("Macros", "{0}: too large for a macro file").format(
+                    where
+                )
+            )
         text = path.read_bytes().decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise MacroError(_translate("{0}: not readable ({1})").format(where, exc)) from None
+        raise MacroError(
+            QCoreApplication.translate("Macros", "{0}: not readable ({1})").format(where, exc)
+        ) from None
     return parse_macros(text, path.name)
 
 
