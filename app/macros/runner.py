@@ -43,6 +43,11 @@ def macro_checkpoint_dir() -> Path:
     return Path(data) / "macro-checkpoints"
 
 
+def macro_busy_text() -> str:
+    """The jog lock's reason while a macro runs (a job is refused with it, too)."""
+    return QCoreApplication.translate("Macros", "a macro is under way — stop it or let it finish")
+
+
 class MacroRefused(ValueError):
     """A macro that will not run as written, with every reason (``macro "Name":line: …``)."""
 
@@ -84,6 +89,7 @@ class MacroRunner(QObject):
         super().__init__(parent)
         self.station = station
         self.runner = JobRunner(station, checkpoint_dir, parent=self)
+        self.runner.busy_text = macro_busy_text
         #: The macro running, or last run.
         self.name: str | None = None
         #: While a macro is loaded: the runner's words about an earlier run's checkpoint

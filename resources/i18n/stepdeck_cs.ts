@@ -3069,7 +3069,7 @@ Přesto odeslat do stroje?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since.</extracomment>
+        <extracomment>Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since. What the jog lock says while this runner&apos;s program is under way (a macro&apos;s runner says its own, so that neither kind of runner starts while the other&apos;s runs).</extracomment>
         <translation>Před načtením další úlohy zastavte tu běžící</translation>
     </message>
     <message>
@@ -3136,6 +3136,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>a job is under way — abort it or let it finish</source>
+        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start.</extracomment>
         <translation>probíhá úloha — přerušte ji, nebo ji nechte doběhnout</translation>
     </message>
     <message>
@@ -3763,8 +3764,12 @@ Docks of features built elsewhere (the macros&apos;), by object name → their b
         <translation>{0}: {1} {2:g} je mimo rozsah pojezdu {3:g}…{4:g}</translation>
     </message>
     <message>
-        <source>… and {0} more</source>
+        <source>a macro is under way — stop it or let it finish</source>
         <extracomment>Refusals listed in a message; more are counted.</extracomment>
+        <translation>běží makro — zastavte ho, nebo ho nechte doběhnout</translation>
+    </message>
+    <message>
+        <source>… and {0} more</source>
         <translation>… a dalších {0}</translation>
     </message>
     <message>

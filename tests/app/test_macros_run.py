@@ -136,7 +136,7 @@ def test_a_macro_is_refused_while_a_job_runs_and_a_job_while_a_macro_runs(
     assert macros.run(Macro("Home", "G0 X0 Y0"))
     job.start()
     assert job.state is JobState.DONE  # not started again
-    assert "Cannot run the job" in job_said[-1]
+    assert "Cannot run the job: a macro is under way" in job_said[-1]
     grbl.run_until(lambda: macros.state is JobState.DONE, timeout=60)
     # The macro's end gave the jog lock back: a jog is the operator's again.
     assert grbl.station.model.jog_lock_reason is None
