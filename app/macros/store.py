@@ -135,8 +135,9 @@ def name_spec(index: int) -> Spec[str]:
     return Spec(f"macros/{index}/name", "", "a macro name", _converter(name_problem))
 
 
-def code_spec(index: int) -> Spec[str]:
-    return Spec(f"macros/{index}/code", "", "a macro's G-code", _converter(code_problem))
+def code_spec(index: int) -> Spec[str | None]:
+    """None where the code is missing or spoilt: the macro is left out, not run emptied."""
+    return Spec(f"macros/{index}/code", None, "a macro's G-code", _converter(code_problem))
 
 
 class MacroStore:
@@ -155,7 +156,7 @@ class MacroStore:
         for index in range(count):
             name = read(machine_spec(name_spec(index), self.profile))
             code = read(machine_spec(code_spec(index), self.profile))
-            if not name or name.casefold() in seen:
+            if not name or code is None or name.casefold() in seen:
                 _log.warning("macros: entry %d of %s left out", index, self.profile)
                 continue
             seen.add(name.casefold())

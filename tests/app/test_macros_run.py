@@ -193,3 +193,48 @@ def test_macros_are_for_machines_sent_gcode_text() -> None:
     assert not macros_available(load_profile("usb3"))
     assert not macros_available(load_profile("pcb-drill"))
     assert not macros_available(load_profile("xy-stage"))
+
+
+@pytest.mark.parametrize(
+    ("profile", "far", "inside", "where"),
+    [
+        ("corexy-plotter", "G0 X900 Y10", "G0 X20 Y15", {"X": 20.0, "Y": 15.0}),
+        ("string-art", "G0 X900", "G0 X20 A90", {"X": 20.0, "A": 90.0}),
+    ],
+)
+def test_every_gcode_machine_refuses_out_of_travel_and_runs_the_rest(
+    qtbot: QtBot, tmp_path: Path, profile: str, far: str, inside: str, where: dict[str, float]
+) -> None:
+    harness = StationHarness(load_profile(profile))
+    harness.connect()
+    runner = MacroRunner(harness.station, tmp_path / "macros")
+    try:
+        said = heard(runner)
+        harness.run(0.5)
+        before = len(job_lines(harness))
+        assert not runner.run(Macro("Far", far))
+        assert 'macro "Far":1: X 900 is outside the travel' in said[-1]
+        harness.run(0.5)
+        assert len(job_lines(harness)) == before
+        run_macro(harness, runner, Macro("Inside", inside))
+        assert runner.state is JobState.DONE, said
+        reached = harness.gcode_emulator.position()
+        assert {axis: round(reached[axis], 3) for axis in where} == where
+    finally:
+        runner.deleteLater()
+        harness.close()
+
+
+def test_a_machine_without_gcode_text_refuses_every_macro(qtbot: QtBot, tmp_path: Path) -> None:
+    harness = StationHarness(load_profile("usb3"))
+    harness.connect()
+    runner = MacroRunner(harness.station, tmp_path / "macros")
+    try:
+        said = heard(runner)
+        written = len(harness.written)
+        assert not runner.run(Macro("Park", "G0 X0"))
+        assert "takes no G-code macros" in said[-1]
+        assert len(harness.written) == written
+    finally:
+        runner.deleteLater()
+        harness.close()

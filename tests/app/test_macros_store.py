@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -29,11 +30,12 @@ def ini(tmp_path: Path) -> QSettings:
 
 
 def test_macros_are_kept_per_profile_across_a_restart(tmp_path: Path) -> None:
+    odd = Macro("Čára, ☃ = 1", 'G0 X1, Y2 ; "q" \\ back\t;\n\n[comment]\n@ %')
     settings = StationSettings(ini(tmp_path))
-    MacroStore(settings, "grbl-plotter").save([PARK, PEN])
+    MacroStore(settings, "grbl-plotter").save([PARK, PEN, odd])
     MacroStore(settings, "corexy-plotter").save([Macro("Home", "G28")])
     again = StationSettings(ini(tmp_path))
-    assert MacroStore(again, "grbl-plotter").load() == [PARK, PEN]
+    assert MacroStore(again, "grbl-plotter").load() == [PARK, PEN, odd]
     assert MacroStore(again, "corexy-plotter").load() == [Macro("Home", "G28")]
     assert MacroStore(again, "string-art").load() == []
     assert again.take_warnings() == []
@@ -188,3 +190,29 @@ def test_an_unreadable_macro_file_is_refused_not_raised_through(tmp_path: Path) 
 def test_an_import_replaces_macros_of_the_same_name_and_adds_the_rest() -> None:
     park2, new = Macro("PARK", "G0 X5"), Macro("New", "G0 Y1")
     assert merged([PARK, PEN], [park2, new]) == [park2, PEN, new]
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    st.lists(
+        st.tuples(
+            st.text(st.characters(blacklist_categories=("Cc", "Cs", "Zl", "Zp")), max_size=40),
+            st.text(st.characters(blacklist_categories=("Cs", "Zl", "Zp")), max_size=120),
+        ),
+        max_size=4,
+    )
+)
+def test_any_valid_macros_survive_the_settings_file(entries: list[tuple[str, str]]) -> None:
+    macros: list[Macro] = []
+    for name, code in entries:
+        try:
+            macro = checked_macro(name, code)
+            checked_list([*macros, macro])
+        except MacroError:
+            continue
+        macros.append(macro)
+    with tempfile.TemporaryDirectory() as folder:
+        MacroStore(StationSettings(ini(Path(folder))), "grbl-plotter").save(macros)
+        again = StationSettings(ini(Path(folder)))
+        assert MacroStore(again, "grbl-plotter").load() == macros
+        assert again.take_warnings() == []

@@ -214,3 +214,17 @@ def test_machines_without_gcode_text_show_no_macros(qtbot: QtBot, tmp_path: Path
         assert "Macros" not in [a.text() for a in window.view_menu.actions()]
     finally:
         harness.close()
+
+
+def test_a_macro_the_settings_file_spoilt_is_left_out_and_said(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path
+) -> None:
+    keep(tmp_path, Macro("Park", "G0 X0 Y0"), Macro("Home", "G0 X0"))
+    store = ini(tmp_path)
+    store.setValue("machines/grbl-plotter/macros/1/code", "G0 X0\x07")  # a bell in the G-code
+    store.sync()
+    window = open_window(qtbot, grbl, tmp_path)
+    qtbot.keyClick(window.manual_panel, Qt.Key.Key_M, Qt.KeyboardModifier.ControlModifier)
+    dock = dock_of(window)
+    assert [b.text() for b in dock.buttons] == ["1  Park"]
+    assert "machines/grbl-plotter/macros/1/code" in dock.message_label.text()

@@ -99,6 +99,10 @@ class MacrosDock(QDockWidget):
         station.sessionChanged.connect(self._update)
         t.also(self._update)
         self._build_buttons()
+        # Macros the settings file held but could not be read back (said once, here).
+        warnings = store.settings.take_warnings()
+        if warnings:
+            self.message_label.setText("\n".join(warnings))
 
     # --- the buttons ---------------------------------------------------------------
 
