@@ -228,3 +228,22 @@ def test_a_macro_the_settings_file_spoilt_is_left_out_and_said(
     dock = dock_of(window)
     assert [b.text() for b in dock.buttons] == ["1  Park"]
     assert "machines/grbl-plotter/macros/1/code" in dock.message_label.text()
+
+
+def test_the_macros_dock_shown_at_close_is_back_at_the_next_start(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path
+) -> None:
+    keep(tmp_path, Macro("Park", "G0 X0 Y0"))
+    first = open_window(qtbot, grbl, tmp_path)
+    assert first.macros is not None and not first.macros.built
+    first.macros.action.trigger()
+    assert first.macros.dock.isVisible()
+    first.close()
+    second = MainWindow(grbl.station, ini(tmp_path), checkpoint_dir=tmp_path / "checkpoints")
+    qtbot.addWidget(second)
+    assert second.macros is not None and not second.macros.built  # not before the first paint
+    second.show()
+    qtbot.waitUntil(lambda: not second.docks_restored.pending)
+    assert second.macros.built and second.macros.dock.isVisible()
+    assert second.macros.action.isChecked()
+    assert [b.text() for b in second.macros.dock.buttons] == ["1  Park"]
