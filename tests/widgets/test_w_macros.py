@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QFileDialog
 from pytestqt.qtbot import QtBot
 
 from app.jobs.run.states import ACTIVE, JobState
+from app.machine import LinkState
 from app.macros.store import Macro, MacroStore
 from app.macros.toml_file import export_macros
 from app.profiles import load_profile
@@ -247,3 +248,26 @@ def test_the_macros_dock_shown_at_close_is_back_at_the_next_start(
     assert second.macros.built and second.macros.dock.isVisible()
     assert second.macros.action.isChecked()
     assert [b.text() for b in second.macros.dock.buttons] == ["1  Park"]
+
+
+def test_a_lost_link_pauses_the_macro_and_resume_finishes_it(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path
+) -> None:
+    keep(tmp_path, Macro("Walk", "G1 X20 F300\nG1 X40\nG1 X60"))
+    window = open_window(qtbot, grbl, tmp_path)
+    connect(grbl)
+    dock = dock_of(window)
+    dock.show()
+    qtbot.mouseClick(dock.buttons[0], Qt.MouseButton.LeftButton)
+    grbl.run_until(lambda: position(grbl)[0] > 5.0, timeout=30)
+    assert not dock.resume_button.isEnabled()
+    grbl.loopback.sever("cable pulled")
+    grbl.run_until(lambda: dock.runner.state is JobState.PAUSED, timeout=5)
+    assert dock.resume_button.isEnabled() and dock.stop_button.isEnabled()
+    assert "paused" in dock.message_label.text()
+    grbl.loopback.set_manipulator(None)
+    grbl.run_until(lambda: grbl.station.model.link_state is LinkState.CONNECTED, timeout=30)
+    qtbot.mouseClick(dock.resume_button, Qt.MouseButton.LeftButton)
+    grbl.run_until(lambda: dock.runner.state not in ACTIVE, timeout=120)
+    assert dock.runner.state is JobState.DONE, dock.message_label.text()
+    assert position(grbl) == (60.0, 0.0)
