@@ -36,6 +36,7 @@ from widgets.after_first_paint import AfterFirstPaint
 from widgets.dialects import window_dialect
 from widgets.gamepad_setup import GamepadSetup
 from widgets.jog_input import JogInput
+from widgets.macros import install_macros
 from widgets.page_stack import PageArea, PageStack
 from widgets.panels.connection import ConnectionPanel
 from widgets.panels.info import InfoPanel
@@ -229,6 +230,11 @@ class MainWindow(QMainWindow):
         )
         # Stop ends the job (its checkpoint kept).
         self.jog.stopRequested.connect(docks.abort_job)
+        self.macros = install_macros(
+            self, self.station, self._settings, docks, menus.view_menu, self.texts, checkpoint_dir
+        )
+        if self.macros is not None:  # and a macro under way
+            self.jog.stopRequested.connect(self.macros.stop)
         self.theme = menus.build_theme_menu(docks.apply_colours)
         menus.build_language_menu(self.set_language)
         menus.update_machine_menu()

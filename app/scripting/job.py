@@ -115,6 +115,31 @@ def run_job(
         )
     except (JobFileError, OSError) as exc:
         raise JobRefused(str(exc)) from None
+    return run_program(
+        machine,
+        program,
+        on_progress=on_progress,
+        on_prompt=on_prompt,
+        on_decision=on_decision,
+        on_message=on_message,
+        resume=resume,
+        checkpoint_dir=checkpoint_dir,
+    )
+
+
+def run_program(
+    machine: MachinePort,
+    program: Program,
+    *,
+    on_progress: Callable[[Progress], None] | None = None,
+    on_prompt: Callable[[str], bool] | None = None,
+    on_decision: Callable[[str, str, str], bool] | None = None,
+    on_message: Callable[[str], None] | None = None,
+    resume: bool | None = None,
+    checkpoint_dir: str | Path | None = None,
+) -> Operation[JobResult]:
+    """Run a program already read (a job file's, a macro's) as :func:`run_job` runs a file's."""
+    station = machine.station
     runner = JobRunner(station, Path(checkpoint_dir or default_checkpoint_dir()))
     watch = _JobWatch(runner, program, on_progress, on_prompt, on_decision, on_message)
     try:

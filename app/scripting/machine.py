@@ -31,6 +31,7 @@ from app.scripting.errors import (
     StepdeckError,
 )
 from app.scripting.job import JobResult, run_job
+from app.scripting.macros import macro_table, run_macro
 from app.scripting.operations import LINK_DOWN as LINK_DOWN
 from app.scripting.operations import Operations
 from app.scripting.pump import Pump, RealtimePump, SimulatedPump, ensure_qt
@@ -231,6 +232,26 @@ class Machine:
     def run(self, job_path: str | Path, **options: Any) -> JobResult:
         """Run a job file to its end; see :func:`app.scripting.job.run_job` for the options."""
         return self._drive(run_job(self, Path(job_path), **options))
+
+    # --- macros -------------------------------------------------------------------
+
+    def macros(self, *, settings: str | Path | None = None) -> dict[str, str]:
+        """The macros the window keeps for this profile, name → G-code (``settings``: an
+        INI settings file instead of the station's own)."""
+        return macro_table(self.profile.name, settings)
+
+    def run_macro(
+        self,
+        name: str,
+        *,
+        code: str | None = None,
+        settings: str | Path | None = None,
+        **options: Any,
+    ) -> JobResult:
+        """Run a kept macro (or ``code`` under ``name``) from where the machine stands, as a
+        job; refused (JobRefused, ``macro "Name":line: reason``) before a byte is sent.
+        ``options``: :func:`app.scripting.job.run_job`'s callbacks."""
+        return self._drive(run_macro(self, name, code=code, settings=settings, options=options))
 
     # --- the end ------------------------------------------------------------------
 

@@ -3156,7 +3156,7 @@ Přesto odeslat do stroje?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since.</extracomment>
+        <extracomment>Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since. What the jog lock says while this runner&apos;s program is under way (a macro&apos;s runner says its own, so that neither kind of runner starts while the other&apos;s runs).</extracomment>
         <translation>Před načtením další úlohy zastavte tu běžící</translation>
     </message>
     <message>
@@ -3223,6 +3223,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>a job is under way — abort it or let it finish</source>
+        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start.</extracomment>
         <translation>probíhá úloha — přerušte ji, nebo ji nechte doběhnout</translation>
     </message>
     <message>
@@ -3324,7 +3325,9 @@ Načíst jako:</translation>
     </message>
     <message>
         <source>Jobs</source>
-        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.
+----------
+Docks of features built elsewhere (the macros&apos;), by object name → their builder: shown again at start and saved with these (:meth:`place_dock` places them).</extracomment>
         <translation>Úlohy</translation>
     </message>
     <message>
@@ -3771,6 +3774,262 @@ Načíst jako:</translation>
     </message>
 </context>
 <context>
+    <name>MacroEditor</name>
+    <message>
+        <source>Macros — {0}</source>
+        <translation>Makra — {0}</translation>
+    </message>
+    <message>
+        <source>&amp;Name</source>
+        <translation>&amp;Název</translation>
+    </message>
+    <message>
+        <source>&amp;G-code</source>
+        <translation>&amp;G-kód</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>&amp;Přidat</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Smazat</translation>
+    </message>
+    <message>
+        <source>&amp;Up</source>
+        <translation>Nahor&amp;u</translation>
+    </message>
+    <message>
+        <source>Do&amp;wn</source>
+        <translation>Dol&amp;ů</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importovat…</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportovat…</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>(bez názvu)</translation>
+    </message>
+    <message>
+        <source>Macro {0}</source>
+        <translation>Makro {0}</translation>
+    </message>
+    <message>
+        <source>Import macros</source>
+        <translation>Importovat makra</translation>
+    </message>
+    <message>
+        <source>Macro files (*.toml)</source>
+        <translation>Soubory maker (*.toml)</translation>
+    </message>
+    <message>
+        <source>{0} macro(s) imported</source>
+        <translation>Importováno maker: {0}</translation>
+    </message>
+    <message>
+        <source>Export macros</source>
+        <translation>Exportovat makra</translation>
+    </message>
+    <message>
+        <source>Exported to {0}</source>
+        <translation>Exportováno do {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Macros</name>
+    <message>
+        <source>no G-code to send in the macro</source>
+        <translation>makro neobsahuje žádný G-kód k odeslání</translation>
+    </message>
+    <message>
+        <source>{0}: {1} {2:g} is outside the travel {3:g}…{4:g}</source>
+        <translation>{0}: {1} {2:g} je mimo rozsah pojezdu {3:g}…{4:g}</translation>
+    </message>
+    <message>
+        <source>a macro is under way — stop it or let it finish</source>
+        <extracomment>Refusals listed in a message; more are counted.</extracomment>
+        <translation>běží makro — zastavte ho, nebo ho nechte doběhnout</translation>
+    </message>
+    <message>
+        <source>… and {0} more</source>
+        <translation>… a dalších {0}</translation>
+    </message>
+    <message>
+        <source>{0} takes no G-code macros</source>
+        <extracomment>The macro run&apos;s JobState. A macro&apos;s ``M0``/``M6`` asks the operator (confirm with :meth:`confirm`). The macro running, or last run. While a macro is loaded: the runner&apos;s words about an earlier run&apos;s checkpoint (a macro always starts from its start) are not the operator&apos;s business.</extracomment>
+        <translation>{0} nepřijímá makra v G-kódu</translation>
+    </message>
+    <message>
+        <source>macro {0} is running</source>
+        <translation>běží makro {0}</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>the machine is moving</source>
+        <translation>stroj se pohybuje</translation>
+    </message>
+    <message>
+        <source>the travel check failed</source>
+        <translation>kontrola pojezdu selhala</translation>
+    </message>
+    <message>
+        <source>it did not start</source>
+        <translation>nespustilo se</translation>
+    </message>
+    <message>
+        <source>Macro {0} refused: {1}</source>
+        <translation>Makro {0} odmítnuto: {1}</translation>
+    </message>
+    <message>
+        <source>Macro {0} ended: the machine needs you first</source>
+        <translation>Makro {0} ukončeno: stroj nejprve potřebuje vás</translation>
+    </message>
+    <message>
+        <source>a macro needs a name</source>
+        <extracomment>A bar of buttons, not a program library: more than this is a job file. A snippet, not a job: a few lines a person reads before pressing its button.</extracomment>
+        <translation>makro potřebuje název</translation>
+    </message>
+    <message>
+        <source>the name starts or ends with a space</source>
+        <translation>název začíná nebo končí mezerou</translation>
+    </message>
+    <message>
+        <source>the name is longer than {0} characters</source>
+        <translation>název je delší než {0} znaků</translation>
+    </message>
+    <message>
+        <source>the name may hold printable characters only, and no quote</source>
+        <translation>název smí obsahovat jen tisknutelné znaky a žádné uvozovky</translation>
+    </message>
+    <message>
+        <source>the G-code is not text</source>
+        <translation>G-kód není text</translation>
+    </message>
+    <message>
+        <source>the G-code is longer than {0} characters</source>
+        <translation>G-kód je delší než {0} znaků</translation>
+    </message>
+    <message>
+        <source>the G-code has more than {0} lines</source>
+        <translation>G-kód má více než {0} řádků</translation>
+    </message>
+    <message>
+        <source>line {0} holds a character that is not printable text</source>
+        <translation>řádek {0} obsahuje netisknutelný znak</translation>
+    </message>
+    <message>
+        <source>more than {0} macros</source>
+        <translation>více než {0} maker</translation>
+    </message>
+    <message>
+        <source>two macros are named {0}</source>
+        <translation>dvě makra se jmenují {0}</translation>
+    </message>
+    <message>
+        <source>{0}: not TOML ({1})</source>
+        <extracomment>32 macros of 8000 characters, escaped, is well under this; more is not a macro file.</extracomment>
+        <translation>{0}: není TOML ({1})</translation>
+    </message>
+    <message>
+        <source>{0}: not a StepDeck macro file (format {1})</source>
+        <translation>{0}: není soubor maker StepDecku (formát {1})</translation>
+    </message>
+    <message>
+        <source>{0}: [[macro]] must be a list of at most {1} tables</source>
+        <translation>{0}: [[macro]] musí být seznam nejvýše {1} tabulek</translation>
+    </message>
+    <message>
+        <source>{0}: macro {1} is not a table</source>
+        <translation>{0}: makro {1} není tabulka</translation>
+    </message>
+    <message>
+        <source>{0}: macro {1}: {2}</source>
+        <translation>{0}: makro {1}: {2}</translation>
+    </message>
+    <message>
+        <source>{0}: not a file</source>
+        <translation>{0}: není soubor</translation>
+    </message>
+    <message>
+        <source>{0}: too large for a macro file</source>
+        <translation>{0}: na soubor maker příliš velký</translation>
+    </message>
+    <message>
+        <source>{0}: not readable ({1})</source>
+        <translation>{0}: nelze přečíst ({1})</translation>
+    </message>
+</context>
+<context>
+    <name>MacrosDock</name>
+    <message>
+        <source>Macros</source>
+        <extracomment>The dock&apos;s object name: where the window&apos;s saved layout places it. Ctrl+1 … Ctrl+9.
+----------
+Buttons a row.</extracomment>
+        <translation>Makra</translation>
+    </message>
+    <message>
+        <source>No macros yet: Edit… adds one.</source>
+        <translation>Zatím žádná makra: přidáte je v Upravit…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the macro (Esc)</source>
+        <translation>Zastavit makro (Esc)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Go on after a pause or a prompt</source>
+        <translation>Pokračovat po pauze nebo výzvě</translation>
+    </message>
+    <message>
+        <source>Edit…</source>
+        <translation>Upravit…</translation>
+    </message>
+    <message>
+        <source>Add, change, order, import and export</source>
+        <translation>Přidat, změnit, seřadit, importovat a exportovat</translation>
+    </message>
+    <message>
+        <source>No macro {0}</source>
+        <translation>Makro {0} neexistuje</translation>
+    </message>
+    <message>
+        <source>Macro {0} waits: {1} — Resume when done</source>
+        <translation>Makro {0} čeká: {1} — až budete hotovi, stiskněte Pokračovat</translation>
+    </message>
+    <message>
+        <source>Macros locked: {0}</source>
+        <translation>Makra zamčena: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: %v of %m</source>
+        <translation>{0}: %v z %m</translation>
+    </message>
+    <message>
+        <source>{0}: done</source>
+        <translation>{0}: hotovo</translation>
+    </message>
+    <message>
+        <source>{0}: stopped</source>
+        <translation>{0}: zastaveno</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Jog X while held</source>
@@ -3820,6 +4079,14 @@ Načíst jako:</translation>
     <message>
         <source>Show or hide the developer pane</source>
         <translation>Zobrazit nebo skrýt vývojářský panel</translation>
+    </message>
+    <message>
+        <source>Show or hide the macros (G-code machines)</source>
+        <translation>Zobrazit nebo skrýt makra (stroje na G-kód)</translation>
+    </message>
+    <message>
+        <source>Run macro 1 … 9 (G-code machines)</source>
+        <translation>Spustit makro 1 … 9 (stroje na G-kód)</translation>
     </message>
     <message>
         <source>This list</source>

@@ -3156,7 +3156,7 @@ Napriek tomu odoslať do stroja?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start. Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since.</extracomment>
+        <extracomment>Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since. What the jog lock says while this runner&apos;s program is under way (a macro&apos;s runner says its own, so that neither kind of runner starts while the other&apos;s runs).</extracomment>
         <translation>Pred načítaním ďalšej úlohy zastavte tú bežiacu</translation>
     </message>
     <message>
@@ -3223,6 +3223,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a job is under way — abort it or let it finish</source>
+        <extracomment>Refused operations listed in the message (the dock&apos;s list holds them all). How far from 0 (mm or degrees) a job that counts from its start may start.</extracomment>
         <translation>prebieha úloha — prerušte ju, alebo ju nechajte dobehnúť</translation>
     </message>
     <message>
@@ -3324,7 +3325,9 @@ Načítať ako:</translation>
     </message>
     <message>
         <source>Jobs</source>
-        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.</extracomment>
+        <extracomment>A job file was loaded (its path): the window lists it under File → Recent jobs.
+----------
+Docks of features built elsewhere (the macros&apos;), by object name → their builder: shown again at start and saved with these (:meth:`place_dock` places them).</extracomment>
         <translation>Úlohy</translation>
     </message>
     <message>
@@ -3771,6 +3774,262 @@ Načítať ako:</translation>
     </message>
 </context>
 <context>
+    <name>MacroEditor</name>
+    <message>
+        <source>Macros — {0}</source>
+        <translation>Makrá — {0}</translation>
+    </message>
+    <message>
+        <source>&amp;Name</source>
+        <translation>&amp;Názov</translation>
+    </message>
+    <message>
+        <source>&amp;G-code</source>
+        <translation>&amp;G-kód</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>&amp;Pridať</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Vymazať</translation>
+    </message>
+    <message>
+        <source>&amp;Up</source>
+        <translation>Na&amp;hor</translation>
+    </message>
+    <message>
+        <source>Do&amp;wn</source>
+        <translation>Na&amp;dol</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importovať…</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportovať…</translation>
+    </message>
+    <message>
+        <source>(no name)</source>
+        <translation>(bez názvu)</translation>
+    </message>
+    <message>
+        <source>Macro {0}</source>
+        <translation>Makro {0}</translation>
+    </message>
+    <message>
+        <source>Import macros</source>
+        <translation>Importovať makrá</translation>
+    </message>
+    <message>
+        <source>Macro files (*.toml)</source>
+        <translation>Súbory makier (*.toml)</translation>
+    </message>
+    <message>
+        <source>{0} macro(s) imported</source>
+        <translation>Importovaných makier: {0}</translation>
+    </message>
+    <message>
+        <source>Export macros</source>
+        <translation>Exportovať makrá</translation>
+    </message>
+    <message>
+        <source>Exported to {0}</source>
+        <translation>Exportované do {0}</translation>
+    </message>
+</context>
+<context>
+    <name>Macros</name>
+    <message>
+        <source>no G-code to send in the macro</source>
+        <translation>makro neobsahuje žiadny G-kód na odoslanie</translation>
+    </message>
+    <message>
+        <source>{0}: {1} {2:g} is outside the travel {3:g}…{4:g}</source>
+        <translation>{0}: {1} {2:g} je mimo rozsahu posuvu {3:g}…{4:g}</translation>
+    </message>
+    <message>
+        <source>a macro is under way — stop it or let it finish</source>
+        <extracomment>Refusals listed in a message; more are counted.</extracomment>
+        <translation>beží makro — zastavte ho, alebo ho nechajte dobehnúť</translation>
+    </message>
+    <message>
+        <source>… and {0} more</source>
+        <translation>… a ďalších {0}</translation>
+    </message>
+    <message>
+        <source>{0} takes no G-code macros</source>
+        <extracomment>The macro run&apos;s JobState. A macro&apos;s ``M0``/``M6`` asks the operator (confirm with :meth:`confirm`). The macro running, or last run. While a macro is loaded: the runner&apos;s words about an earlier run&apos;s checkpoint (a macro always starts from its start) are not the operator&apos;s business.</extracomment>
+        <translation>{0} neprijíma makrá v G-kóde</translation>
+    </message>
+    <message>
+        <source>macro {0} is running</source>
+        <translation>beží makro {0}</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepripojené</translation>
+    </message>
+    <message>
+        <source>the machine is moving</source>
+        <translation>stroj sa pohybuje</translation>
+    </message>
+    <message>
+        <source>the travel check failed</source>
+        <translation>kontrola posuvu zlyhala</translation>
+    </message>
+    <message>
+        <source>it did not start</source>
+        <translation>nespustilo sa</translation>
+    </message>
+    <message>
+        <source>Macro {0} refused: {1}</source>
+        <translation>Makro {0} odmietnuté: {1}</translation>
+    </message>
+    <message>
+        <source>Macro {0} ended: the machine needs you first</source>
+        <translation>Makro {0} ukončené: stroj najprv potrebuje vás</translation>
+    </message>
+    <message>
+        <source>a macro needs a name</source>
+        <extracomment>A bar of buttons, not a program library: more than this is a job file. A snippet, not a job: a few lines a person reads before pressing its button.</extracomment>
+        <translation>makro potrebuje názov</translation>
+    </message>
+    <message>
+        <source>the name starts or ends with a space</source>
+        <translation>názov začína alebo končí medzerou</translation>
+    </message>
+    <message>
+        <source>the name is longer than {0} characters</source>
+        <translation>názov je dlhší ako {0} znakov</translation>
+    </message>
+    <message>
+        <source>the name may hold printable characters only, and no quote</source>
+        <translation>názov smie obsahovať iba tlačiteľné znaky a žiadne úvodzovky</translation>
+    </message>
+    <message>
+        <source>the G-code is not text</source>
+        <translation>G-kód nie je text</translation>
+    </message>
+    <message>
+        <source>the G-code is longer than {0} characters</source>
+        <translation>G-kód je dlhší ako {0} znakov</translation>
+    </message>
+    <message>
+        <source>the G-code has more than {0} lines</source>
+        <translation>G-kód má viac ako {0} riadkov</translation>
+    </message>
+    <message>
+        <source>line {0} holds a character that is not printable text</source>
+        <translation>riadok {0} obsahuje netlačiteľný znak</translation>
+    </message>
+    <message>
+        <source>more than {0} macros</source>
+        <translation>viac ako {0} makier</translation>
+    </message>
+    <message>
+        <source>two macros are named {0}</source>
+        <translation>dve makrá sa volajú {0}</translation>
+    </message>
+    <message>
+        <source>{0}: not TOML ({1})</source>
+        <extracomment>32 macros of 8000 characters, escaped, is well under this; more is not a macro file.</extracomment>
+        <translation>{0}: nie je TOML ({1})</translation>
+    </message>
+    <message>
+        <source>{0}: not a StepDeck macro file (format {1})</source>
+        <translation>{0}: nie je súbor makier StepDecku (formát {1})</translation>
+    </message>
+    <message>
+        <source>{0}: [[macro]] must be a list of at most {1} tables</source>
+        <translation>{0}: [[macro]] musí byť zoznam najviac {1} tabuliek</translation>
+    </message>
+    <message>
+        <source>{0}: macro {1} is not a table</source>
+        <translation>{0}: makro {1} nie je tabuľka</translation>
+    </message>
+    <message>
+        <source>{0}: macro {1}: {2}</source>
+        <translation>{0}: makro {1}: {2}</translation>
+    </message>
+    <message>
+        <source>{0}: not a file</source>
+        <translation>{0}: nie je súbor</translation>
+    </message>
+    <message>
+        <source>{0}: too large for a macro file</source>
+        <translation>{0}: na súbor makier príliš veľký</translation>
+    </message>
+    <message>
+        <source>{0}: not readable ({1})</source>
+        <translation>{0}: nedá sa prečítať ({1})</translation>
+    </message>
+</context>
+<context>
+    <name>MacrosDock</name>
+    <message>
+        <source>Macros</source>
+        <extracomment>The dock&apos;s object name: where the window&apos;s saved layout places it. Ctrl+1 … Ctrl+9.
+----------
+Buttons a row.</extracomment>
+        <translation>Makrá</translation>
+    </message>
+    <message>
+        <source>No macros yet: Edit… adds one.</source>
+        <translation>Zatiaľ žiadne makrá: pridáte ich v Upraviť…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the macro (Esc)</source>
+        <translation>Zastaviť makro (Esc)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovať</translation>
+    </message>
+    <message>
+        <source>Go on after a pause or a prompt</source>
+        <translation>Pokračovať po pauze alebo výzve</translation>
+    </message>
+    <message>
+        <source>Edit…</source>
+        <translation>Upraviť…</translation>
+    </message>
+    <message>
+        <source>Add, change, order, import and export</source>
+        <translation>Pridať, zmeniť, zoradiť, importovať a exportovať</translation>
+    </message>
+    <message>
+        <source>No macro {0}</source>
+        <translation>Makro {0} neexistuje</translation>
+    </message>
+    <message>
+        <source>Macro {0} waits: {1} — Resume when done</source>
+        <translation>Makro {0} čaká: {1} — keď budete hotoví, stlačte Pokračovať</translation>
+    </message>
+    <message>
+        <source>Macros locked: {0}</source>
+        <translation>Makrá zamknuté: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: %v of %m</source>
+        <translation>{0}: %v z %m</translation>
+    </message>
+    <message>
+        <source>{0}: done</source>
+        <translation>{0}: hotovo</translation>
+    </message>
+    <message>
+        <source>{0}: stopped</source>
+        <translation>{0}: zastavené</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Jog X while held</source>
@@ -3820,6 +4079,14 @@ Načítať ako:</translation>
     <message>
         <source>Show or hide the developer pane</source>
         <translation>Zobraziť alebo skryť vývojársky panel</translation>
+    </message>
+    <message>
+        <source>Show or hide the macros (G-code machines)</source>
+        <translation>Zobraziť alebo skryť makrá (stroje na G-kód)</translation>
+    </message>
+    <message>
+        <source>Run macro 1 … 9 (G-code machines)</source>
+        <translation>Spustiť makro 1 … 9 (stroje na G-kód)</translation>
     </message>
     <message>
         <source>This list</source>

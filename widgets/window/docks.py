@@ -68,6 +68,10 @@ class WindowDocks(QObject):
         self._telemetry_dock: TelemetryDock | None = None
         self._developer_pane: DeveloperPane | None = None
         self._colours: PlotColours | None = None
+        #: Docks of features built elsewhere (the macros'), by object name → their builder:
+        #: shown again at start and saved with these (:meth:`place_dock` places them).
+        self.more: dict[str, Callable[[], QDockWidget]] = {}
+        self._more_built: list[QDockWidget] = []
         self.telemetry = TelemetryRecorder(station, parent=window)
         self.frame_log = FrameLog(station, parent=window)
         self.jobs_action = self._dock_action(
@@ -110,6 +114,11 @@ class WindowDocks(QObject):
         dock.setVisible(checked)
         if checked:
             dock.raise_()
+
+    def place_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
+        """A dock of :attr:`more`, built just now: placed, saved and restored as these are."""
+        self._more_built.append(dock)
+        self._add_dock(dock, area, action)
 
     def _add_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
         """Place a dock built just now where the last session left it, hidden until asked."""
@@ -208,7 +217,7 @@ class WindowDocks(QObject):
     def built(self) -> list[QDockWidget]:
         """The docks built so far (none until first wanted)."""
         docks = (self._jobs_dock, self._telemetry_dock, self._developer_pane)
-        return [dock for dock in docks if dock is not None]
+        return [dock for dock in docks if dock is not None] + self._more_built
 
     def build_shown(self, shown: str | None) -> None:
         """Build the docks the last session showed (``shown``: their names, comma-separated),
@@ -218,6 +227,7 @@ class WindowDocks(QObject):
             "jobs_dock": lambda: self.jobs_dock,
             "telemetry_dock": lambda: self.telemetry_dock,
             "developer_pane": lambda: self.developer_pane,
+            **self.more,
         }
         for name, build in docks.items():
             if shown is None or name in shown.split(","):

@@ -60,6 +60,8 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
     ("Ctrl+J", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the jobs dock")),
     ("Ctrl+T", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the telemetry plots")),
     ("Shift+V", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the developer pane")),
+    ("Ctrl+M", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the macros (G-code machines)")),
+    ("Ctrl+1 … Ctrl+9", QT_TRANSLATE_NOOP("MainWindow", "Run macro 1 … 9 (G-code machines)")),
     ("F1", QT_TRANSLATE_NOOP("MainWindow", "This list")),
 )
 

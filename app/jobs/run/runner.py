@@ -64,6 +64,10 @@ class LoadCheck:
     fingerprint: str
 
 
+def job_busy_text() -> str:
+    return QCoreApplication.translate("JobRunner", "a job is under way — abort it or let it finish")
+
+
 class JobRunner(QObject):
     stateChanged = Signal(object)  # JobState
     progressChanged = Signal(int, int)  # done, total
@@ -110,6 +114,9 @@ class JobRunner(QObject):
         self._paused_by_link = False
         self._failing = False  # a checkpoint write failed and the job is being failed
         self._session: object = None
+        #: What the jog lock says while this runner's program is under way (a macro's runner
+        #: says its own, so that neither kind of runner starts while the other's runs).
+        self.busy_text: Callable[[], str] = job_busy_text
         # A station keeps its profile, so its dialect and driver, for life.
         self._driver: JobDriver = driver_for(station.profile.dialect)(self)
         station.sessionChanged.connect(self._bind_session)
@@ -645,6 +652,13 @@ class JobRunner(QObject):
         return True
 
     def _refuse_for_link(self) -> bool:
+        owner = self.station.model.jog_lock_reason
+        if owner is not None and self._state not in ACTIVE and owner != self.busy_text():
+            # Another kind of runner owns the machine (a macro under way).
+            self.message.emit(
+                QCoreApplication.translate("JobRunner", "Cannot run the job: {0}").format(owner)
+            )
+            return True
         reason = self.station.model.motion_lock_reason()
         if self.station.session is None or self.station.model.link_state in LINK_DOWN:
             reason = reason or QCoreApplication.translate("JobRunner", "not connected")
@@ -750,19 +764,19 @@ class JobRunner(QObject):
         self._progress.flush()  # the views see the progress the new state comes with
         self._paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
+        was_active = self._state in ACTIVE
         runs = state in CLOCK_RUNS
         self._progress.clock(was_running, runs, state in ACTIVE)
         self._progress.ended = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
-        # where the machine was), a jog would move the machine under it.
-        self.station.model.set_jog_lock(
-            QCoreApplication.translate(
-                "JobRunner", "a job is under way — abort it or let it finish"
-            )
-            if state in ACTIVE
-            else None
-        )
+        # where the machine was), a jog would move the machine under it.  The lock another
+        # kind of runner holds (a macro's, its own text) is not this runner's to give back.
+        model = self.station.model
+        if state in ACTIVE:
+            model.set_jog_lock(self.busy_text())
+        elif was_active or model.jog_lock_reason == self.busy_text():
+            model.set_jog_lock(None)
         self.stateChanged.emit(state)
         if not runs:
             self.emit_eta()
