@@ -275,6 +275,9 @@ class GcodeStream:
         self._answered_at_last_report = start
         #: The operation whose line could not go, and why (the job fails there).
         self.refused: tuple[int, str] | None = None
+        #: A start part-way in an arc mode: the operation whose line gets that motion word in
+        #: front (see :mod:`app.jobs.run.start_point`).
+        self.lead: tuple[int, str] | None = None
 
     # --- what to send --------------------------------------------------------
 
@@ -311,6 +314,8 @@ class GcodeStream:
             if op.kind is OpKind.WAIT:
                 break
             text = self.line_for(index, op)  # a G-code file builds each operation when asked
+            if self.lead is not None and self.lead[0] == index and text is not None:
+                text = f"{self.lead[1]} {text}"
             self.next_index += 1
             if text is None:
                 if not pending:
