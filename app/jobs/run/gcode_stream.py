@@ -93,9 +93,13 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     return ResumeState(position, pen_down=bool(last_down > last_up))
 
 
-#: What a G92 line has (a literal search: a word pattern would be 20 times slower); lines
-#: where it is a coordinate's digits are told apart by their words.
-_G92_TEXT = re.compile(r"92(?![0-9])")
+#: What a G92 line has (a literal search: a word pattern would be 20 times slower), or a unit
+#: word (G20/G21: a G92 under G20 is in inches); lines where it is a coordinate's digits are
+#: told apart by their words.
+_G92_TEXT = re.compile(r"92(?![0-9])|[Gg][ \t]*0*2[01](?![0-9])")
+#: Millimetres an inch; the axes G20 scales (A B C are degrees).
+_INCH_MM = 25.4
+_LINEAR = frozenset("XYZUVW")
 
 
 def _position_before(
@@ -119,7 +123,7 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
     given; ``G92.1`` clears it; a bare ``G92``, where the machine takes it, calls
     here 0), in the program's coordinates, so that program position minus it
     is the file's work position.  0 for programs that are not G-code files.
-    Values are taken as millimetres (a ``G92`` under ``G20`` is not converted).
+    A ``G92`` under ``G20`` is read in inches, as the loader reads it.
     """
     offset = dict.fromkeys(axes, 0.0)
     data = getattr(program, "data", None)
@@ -139,9 +143,12 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
     if not candidates:
         return offset
     path = None if hasattr(data, "positions") else program.path(axes)
+    scale = 1.0
     for k in candidates:
         words = scan_words(texts[k])
         codes = {v for w, v in words if w == "G"}
+        if 20.0 in codes or 21.0 in codes:
+            scale = _INCH_MM if 20.0 in codes else 1.0
         if 92.1 in codes:
             offset = dict.fromkeys(axes, 0.0)
             continue
@@ -152,7 +159,7 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
         for i, axis in enumerate(axes):
             where = 0.0 if math.isnan(here[i]) else float(here[i])
             if axis in given:
-                offset[axis] = where - given[axis]
+                offset[axis] = where - given[axis] * (scale if axis in _LINEAR else 1.0)
             elif not given:
                 offset[axis] = where  # a bare G92: here is the origin
     return offset
