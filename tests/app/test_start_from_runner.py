@@ -18,6 +18,7 @@ from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import Program
 from app.jobs.run.runner import JobRunner, JobState
 from app.jobs.run.start_point import operation_at_line
+from app.machine import LinkState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
 
@@ -149,3 +150,26 @@ def test_the_scripting_api_starts_at_a_line(qapp: object, tmp_path: Path) -> Non
             machine.run(job(tmp_path), from_line=4, resume=True, checkpoint_dir=tmp_path / "ck")
     finally:
         machine.close()
+
+
+def test_a_resume_inside_an_inch_stretch_goes_back_in_mm_and_on_in_inches(
+    harness: StationHarness, tmp_path: Path
+) -> None:
+    """The resume's way back is in mm; before, a board left in G20 read it as inches (the
+    supervision caught the move and failed the job).  The file's units come back after it."""
+    strokes = [(1 + (k % 2) * 3, round(0.5 + 0.1 * k, 1)) for k in range(30)]
+    lines = ["G20 G90 F100", "G0 X0.5 Y0.5", "M3 S1000"]
+    lines += [f"G1 X{x} Y{y}" for x, y in strokes] + ["M5"]
+    loaded = program(job(tmp_path, lines))
+    runner = JobRunner(harness.station, tmp_path / "ck")
+    assert runner.load(loaded) == []
+    runner.start()
+    harness.run_until(lambda: runner.executed > 8, 60)
+    harness.loopback.sever("cable pulled")
+    harness.run_until(lambda: runner.state is JobState.PAUSED, 10)
+    harness.run_until(lambda: harness.station.model.link_state is LinkState.CONNECTED, 30)
+    runner.resume()
+    harness.run_until(lambda: runner.state in (JobState.DONE, JobState.FAILED), 120)
+    assert runner.state is JobState.DONE
+    expected = [(round(x * 25.4, 3), round(y * 25.4, 3)) for x, y in strokes]
+    assert pen_down_ends(harness) == expected

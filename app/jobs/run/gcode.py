@@ -662,6 +662,7 @@ class GcodeDriver(JobDriver):
         way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
         lines = (
             preamble(state, stream.settings, way_back, self._restore(planned, start, now))
+            + self._file_modes(stream, start)
             if plan is None
             else plan.lines(stream.settings, shift)
         )
@@ -675,6 +676,20 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
+
+    def _file_modes(self, stream: GcodeStream, start: int) -> list[str]:
+        """A resume's way back is in mm, G90: the file's own modes at ``start`` go after it
+        (units, plane, distance mode, motion and feed; an arc's word before its next move).
+        None where the file's state there cannot be rebuilt: the way back alone, as before."""
+        program = self.runner.program
+        assert program is not None
+        try:
+            plan = plan_start(program, start, [a.name for a in self.station.profile.axes])
+        except StartRefused:
+            return []
+        with self._locked():
+            stream.lead = plan.lead
+        return plan.modes(stream.settings)
 
     def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
         """``G92`` setting again the work offset the job needs here, if the board lost it.

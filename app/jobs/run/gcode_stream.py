@@ -233,7 +233,9 @@ def preamble(
     goes straight there — on the winder one axis at a time.  ``restore`` goes out
     once it is there (the work offset a reset took, set again).
     """
-    lines = [settings.pen_up, "G90"]
+    # In millimetres where the machine has G21: the way back's numbers are (a file's G20
+    # would have them read as inches); the file's own units follow (start_point.py).
+    lines = [settings.pen_up, "G90 G21" if "G21" in settings.words else "G90"]
     if way_back:
         lines += ["G0 " + " ".join(f"{a}{v:.3f}" for a, v in point.items()) for point in way_back]
     elif state.position and settings.kinematics == "cylindrical":

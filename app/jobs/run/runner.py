@@ -701,8 +701,8 @@ class JobRunner(QObject):
         return True
 
     def _op_source(self, index: int | None) -> str:
-        if self._program is None or index is None:
-            return "?"
+        if self._program is None or index is None or not 0 <= index < len(self._program):
+            return "?"  # (a fault reported after the last operation: nothing of the job there)
         return str(self._program[index].source)
 
     def _total(self) -> int:

@@ -137,6 +137,17 @@ class StartPlan:
             out.append(
                 "G92 " + " ".join(f"{a}{state.resume.position[a] - own[a]:.3f}" for a in own)
             )
+        out += self.modes(settings)
+        if state.resume.pen_down:
+            out.append(settings.pen_down)
+        return out
+
+    def modes(self, settings: GcodeSettings) -> list[str]:
+        """The file's units, plane, distance mode, motion mode and feed, set once the machine
+        stands at the start (also after a resume's way back, which travels in mm, G90)."""
+        state, words = self.state, settings.words
+        if not self.from_file:
+            return []
         modes = []
         if state.inches and "G20" in words:
             modes.append("G20")
@@ -144,15 +155,12 @@ class StartPlan:
             modes.append(f"G{state.plane}")
         if state.relative and "G91" in words:
             modes.append("G91")
-        if modes:
-            out.append(" ".join(modes))
+        out = [" ".join(modes)] if modes else []
         feed = f"F{_number(state.feed)}" if state.feed is not None else ""
         if state.motion in ("G0", "G1"):
             out.append(f"{state.motion} {feed}".strip())
         elif feed:
             out.append(feed)
-        if state.resume.pen_down:
-            out.append(settings.pen_down)
         return out
 
     def summary(self, program: Program) -> str:
