@@ -7,6 +7,7 @@ counts as run in the checkpoint, and a refused start sends nothing.
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
@@ -14,10 +15,11 @@ from pathlib import Path
 import pytest
 
 import stepdeck
+from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
 from app.jobs.loaders import JobOptions, load_job
-from app.jobs.program import Program
+from app.jobs.program import OpKind, Program
 from app.jobs.run.runner import JobRunner, JobState
-from app.jobs.run.start_point import operation_at_line
+from app.jobs.run.start_point import operation_at_line, operation_numbered
 from app.machine import LinkState
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
@@ -173,3 +175,44 @@ def test_a_resume_inside_an_inch_stretch_goes_back_in_mm_and_on_in_inches(
     assert runner.state is JobState.DONE
     expected = [(round(x * 25.4, 3), round(y * 25.4, 3)) for x, y in strokes]
     assert pen_down_ends(harness) == expected
+
+
+def test_a_drill_job_started_at_a_hole_drills_that_hole_and_the_rest_once(
+    qapp: object, tmp_path: Path, data_dir: Path
+) -> None:
+    """From operation N: a drill cycle starts with the move to its hole; nothing before it."""
+    drill = StationHarness(load_profile("pcb-drill"))
+    try:
+        drill.connect()
+        drill.run_until(lambda: drill.station.model.link_state is LinkState.CONNECTED)
+        session = drill.drill_session
+        assert session.home(0)
+        drill.run_until(lambda: not session.busy, timeout=60)
+        loaded = build_drill_program(read_drill_file(data_dir / "samples/pcb-driver/driver"))
+        runner = JobRunner(drill.station, tmp_path / "ck")
+        assert runner.load(loaded) == []
+        cycles = [i for i, op in enumerate(loaded) if op.kind is OpKind.DRILL]
+        picked = cycles[len(cycles) // 2]  # a hole in the middle, given by its drill cycle
+        start = operation_numbered(loaded, picked + 1)
+        assert start == picked - 1 and loaded[start].kind is OpKind.MOVE
+        runner.start_from(start)
+
+        def over() -> bool:
+            if runner.state is JobState.WAITING:
+                runner.confirm()
+            return runner.state in (JobState.DONE, JobState.FAILED, JobState.ABORTED)
+
+        drill.run_until(over, timeout=400)
+        assert runner.state is JobState.DONE
+        expected = Counter(
+            (
+                session.to_microsteps(0, loaded[i - 1].target["X"]),
+                session.to_microsteps(1, loaded[i - 1].target["Y"]),
+            )
+            for i in cycles
+            if i >= picked
+        )
+        made = Counter((hole.x, hole.y) for hole in drill.drill_emulator.drill_log)
+        assert made == expected
+    finally:
+        drill.close()
