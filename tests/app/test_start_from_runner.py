@@ -16,8 +16,11 @@ import pytest
 
 import stepdeck
 from app.jobs.formats.excellon.reader import build_drill_program, read_drill_file
+from app.jobs.formats.string_art.program import build_program
+from app.jobs.formats.string_art.reader import read_string_art
 from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import OpKind, Program
+from app.jobs.run.gcode_stream import resume_state
 from app.jobs.run.runner import JobRunner, JobState
 from app.jobs.run.start_point import operation_at_line, operation_numbered
 from app.machine import LinkState
@@ -216,3 +219,43 @@ def test_a_drill_job_started_at_a_hole_drills_that_hole_and_the_rest_once(
         assert made == expected
     finally:
         drill.close()
+
+
+def test_a_winder_job_started_part_way_goes_there_tool_first_then_radius_then_turn(
+    qapp: object, tmp_path: Path, data_dir: Path
+) -> None:
+    """From operation N of the winding: the needle is taken out first, then the radius, then
+    the base turns (never through the nail ring), and the job goes on from N to its end."""
+    job = read_string_art(data_dir / "samples" / "string-art-hexagon" / "poradi.txt")
+    job = replace(job, sequence=job.sequence[:7], entry_lines=job.entry_lines[:7])
+    winder = StationHarness(load_profile("string-art"))
+    try:
+        winder.connect()
+        winder.run_until(lambda: winder.gcode_session.planner_size > 0, timeout=1)
+        loaded = build_program(job, winder.station.profile)
+        runner = JobRunner(winder.station, tmp_path / "ck")
+        assert runner.load(loaded) == []
+        wait = next(i for i, op in enumerate(loaded) if op.kind is OpKind.WAIT)
+        moves = [i for i, op in enumerate(loaded) if op.kind is OpKind.MOVE and i > wait]
+        start = moves[len(moves) // 2]
+        runner.start_from(operation_numbered(loaded, start + 1))
+        winder.run_until(lambda: runner.state in (JobState.DONE, JobState.FAILED), 1500)
+        assert runner.state is JobState.DONE
+        log = [e["pos"] for e in winder.gcode_emulator.event_log if e["event"] == "move"]
+        names = [a.name for a in winder.station.profile.axes]
+        there = resume_state(loaded, start, names).position
+        # The way there: one axis a move, in the order Z, X, A, ending where the file stood.
+        way, here = [], dict.fromkeys(names, 0.0)
+        for pos in log:
+            moved = [a for a in names if abs(pos[a] - here[a]) > 1e-6]
+            here = dict(pos)
+            way.append(moved)
+            if all(abs(pos[a] - v) <= 1e-3 for a, v in there.items()):
+                break
+        assert all(abs(here[a] - v) <= 1e-3 for a, v in there.items()), "never got there"
+        assert all(len(axes) == 1 for axes in way), way
+        order = [axes[0] for axes in way]
+        assert order == sorted(order, key="ZXA".index), order
+        assert 2 <= len(way) <= 3, way  # the start stands off home on the radius and the turn
+    finally:
+        winder.close()
