@@ -9,6 +9,7 @@ plain interpreter of the lines before it, written here from GRBL's rules.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -18,7 +19,9 @@ from hypothesis import strategies as st
 
 from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
+from app.jobs.run.gcode_stream import texts_matching
 from app.jobs.run.start_point import (
+    MODAL_HINT,
     StartRefused,
     operation_at_line,
     operation_numbered,
@@ -229,3 +232,29 @@ def test_a_drill_hole_starts_with_its_move_and_its_lines_are_no_start(tmp_path: 
     plan = plan_start(program, 3, AXES)
     assert plan.state.prompt == "insert T01"
     assert plan.state.resume.position == {"X": 1.0, "Y": 1.0}
+
+
+@settings(
+    max_examples=60,
+    deadline=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
+@given(
+    body=st.lists(
+        st.one_of(
+            modal_line(),
+            st.sampled_from(["(G20 in a comment)", "G1 X20 Y92 ; G91", "", "G4 P0.2", "M5 (up)"]),
+        ),
+        min_size=1,
+        max_size=30,
+    ),
+    stop=st.integers(0, 40),
+)
+def test_searching_the_file_bytes_finds_the_lines_the_texts_would(
+    tmp_path: Path, body: list[str], stop: int
+) -> None:
+    """The fast search of a G-code file's texts (its bytes at once) against the plain one."""
+    program = load(tmp_path, ["G21 G90 F1000", *body])
+    texts = program.data.sent  # type: ignore[attr-defined]
+    for pattern in (MODAL_HINT, re.compile(r"92(?![0-9])|[Gg][ \t]*0*2[01](?![0-9])")):
+        assert texts_matching(texts, pattern, stop) == texts_matching(list(texts), pattern, stop)

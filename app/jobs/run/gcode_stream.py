@@ -116,6 +116,29 @@ def _position_before(
     return path.coords[first - 1] if first else np.full(len(axes), np.nan)
 
 
+def texts_matching(texts: Sequence[str], pattern: re.Pattern[str], stop: int) -> list[int]:
+    """Indices before ``stop`` of the texts ``pattern`` finds something in, in order.
+
+    A resume or a start part-way on a file of a million lines must not hold
+    the GUI thread: a G-code file's texts are searched in its bytes at once
+    (:meth:`~app.jobs.formats.gcode.sent_texts.SentTexts.matching`), others in
+    one regex pass over their joined text.
+    """
+    find = getattr(texts, "matching", None)
+    if callable(find):
+        found: list[int] = find(pattern, stop)
+        return found
+    joined = "\n".join(texts[:stop])
+    hits: list[int] = []
+    line, at = 0, 0
+    for hit in pattern.finditer(joined):
+        line += joined.count("\n", at, hit.start())
+        at = hit.start()
+        if not hits or hits[-1] != line:
+            hits.append(line)
+    return hits
+
+
 def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, float]:
     """The file's own ``G92`` offset in force before operation ``index``, per axis.
 
@@ -130,16 +153,7 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
     texts = getattr(data, "sent", None)  # the texts made as read (not all kept as str)
     if not isinstance(texts, Sequence) or isinstance(texts, str) or index <= 0:
         return offset
-    # One regex pass over the text before ``index`` (a resume on a file of a million lines
-    # must not hold the GUI thread), the line of each hit counted from the one before.
-    joined = "\n".join(texts[:index])
-    candidates: list[int] = []
-    line, at = 0, 0
-    for hit in _G92_TEXT.finditer(joined):
-        line += joined.count("\n", at, hit.start())
-        at = hit.start()
-        if not candidates or candidates[-1] != line:
-            candidates.append(line)
+    candidates = texts_matching(texts, _G92_TEXT, index)
     if not candidates:
         return offset
     path = None if hasattr(data, "positions") else program.path(axes)

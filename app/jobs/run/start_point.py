@@ -46,13 +46,19 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication
 
 from app.jobs.program import OpKind, Program
-from app.jobs.run.gcode_stream import ResumeState, file_offset, preamble, resume_state
+from app.jobs.run.gcode_stream import (
+    ResumeState,
+    file_offset,
+    preamble,
+    resume_state,
+    texts_matching,
+)
 from app.profiles import GcodeSettings
 from protocol.gcode.words import scan_words
 
 #: Lines that may change the modal state this module follows (a literal-ish search over
 #: the text before the start; each hit is then read word by word).
-_MODAL_HINT = re.compile(r"[Gg][ \t]*0*(?:1[789]|2[01]|9[01]|10|28\.1|30\.1|38|43|5[4-9])(?![0-9])")
+MODAL_HINT = re.compile(r"[Gg][ \t]*0*(?:1[789]|2[01]|9[01]|10|28\.1|30\.1|38|43|5[4-9])(?![0-9])")
 #: Motion words, and the codes they are.
 _MOTION = {0.0: "G0", 1.0: "G1", 2.0: "G2", 3.0: "G3"}
 #: Words that make the position at the start unknown to the station's model.
@@ -307,17 +313,7 @@ def _file_modes(program: Program, texts: Sequence[str], index: int) -> tuple[boo
     inches, relative, plane = False, False, 17
     if index <= 0:
         return inches, relative, plane
-    joined = "\n".join(texts[:index])
-    if _MODAL_HINT.search(joined) is None:
-        return inches, relative, plane
-    # The line of each hit counted from the one before (a million lines in one pass).
-    line, at = 0, 0
-    seen: list[int] = []
-    for hit in _MODAL_HINT.finditer(joined):
-        line += joined.count("\n", at, hit.start())
-        at = hit.start()
-        if not seen or seen[-1] != line:
-            seen.append(line)
+    seen = texts_matching(texts, MODAL_HINT, index)
     for k in seen:
         for letter, value in scan_words(texts[k]):
             if letter != "G":

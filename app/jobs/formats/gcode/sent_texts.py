@@ -12,6 +12,7 @@ are kept apart as strings.  A text is made when it is asked for.
 from __future__ import annotations
 
 import operator
+import re
 from array import array
 from collections.abc import Iterator, Sequence
 from typing import overload
@@ -78,6 +79,33 @@ class SentTexts(Sequence[str]):
                 self.starts[first:stop].tolist(), self.ends[first:stop].tolist(), strict=True
             )
         ]
+
+    def matching(self, pattern: re.Pattern[str], stop: int) -> list[int]:
+        """Operations before ``stop`` whose text ``pattern`` (ASCII) finds something in.
+
+        One pass over the file's bytes: making a million strings to search them
+        took seconds (a start part-way or a resume looks for a few modal words).
+        """
+        stop = min(stop, len(self))
+        if stop <= 0:
+            return []
+        starts, ends = self.starts[:stop], self.ends[:stop]
+        found: list[int] = []
+        spans = np.flatnonzero(starts >= 0)
+        if len(spans):
+            first, last = starts[spans], ends[spans]
+            raw = re.compile(pattern.pattern.encode("ascii"), pattern.flags & ~re.UNICODE)
+            hits = [(m.start(), m.end()) for m in raw.finditer(self.buffer, 0, int(last.max()))]
+            if hits:
+                at = np.array(hits, dtype=np.int64)
+                k = np.searchsorted(first, at[:, 0], side="right") - 1
+                inside = (k >= 0) & (at[:, 1] <= last[np.maximum(k, 0)])
+                found += spans[np.unique(k[inside])].tolist()
+        extra = self.extra
+        for i in np.flatnonzero(starts < 0).tolist():
+            if pattern.search(extra[-1 - int(starts[i])]):
+                found.append(i)
+        return sorted(found)
 
     def any(self) -> bool:
         """Whether any operation sends anything."""
