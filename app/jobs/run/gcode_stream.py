@@ -96,7 +96,11 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
 #: What a G92 line has (a literal search: a word pattern would be 20 times slower), or a unit
 #: word (G20/G21: a G92 under G20 is in inches); lines where it is a coordinate's digits are
 #: told apart by their words.
-_G92_TEXT = re.compile(r"92(?![0-9])|[Gg][ \t]*0*2[01](?![0-9])")
+_G92_TEXT = (
+    re.compile(r"92(?![0-9])"),
+    re.compile(r"G[ \t0]*2[01](?![0-9])"),
+    re.compile(r"g[ \t0]*2[01](?![0-9])"),
+)
 #: Millimetres an inch; the axes G20 scales (A B C are degrees).
 _INCH_MM = 25.4
 _LINEAR = frozenset("XYZUVW")
@@ -116,27 +120,29 @@ def _position_before(
     return path.coords[first - 1] if first else np.full(len(axes), np.nan)
 
 
-def texts_matching(texts: Sequence[str], pattern: re.Pattern[str], stop: int) -> list[int]:
-    """Indices before ``stop`` of the texts ``pattern`` finds something in, in order.
+def texts_matching(
+    texts: Sequence[str], patterns: Sequence[re.Pattern[str]], stop: int
+) -> list[int]:
+    """Indices before ``stop`` of the texts any of ``patterns`` finds something in, in order.
 
     A resume or a start part-way on a file of a million lines must not hold
     the GUI thread: a G-code file's texts are searched in its bytes at once
     (:meth:`~app.jobs.formats.gcode.sent_texts.SentTexts.matching`), others in
-    one regex pass over their joined text.
+    one regex pass a pattern over their joined text.
     """
     find = getattr(texts, "matching", None)
     if callable(find):
-        found: list[int] = find(pattern, stop)
+        found: list[int] = find(patterns, stop)
         return found
     joined = "\n".join(texts[:stop])
-    hits: list[int] = []
-    line, at = 0, 0
-    for hit in pattern.finditer(joined):
-        line += joined.count("\n", at, hit.start())
-        at = hit.start()
-        if not hits or hits[-1] != line:
-            hits.append(line)
-    return hits
+    hits: set[int] = set()
+    for pattern in patterns:
+        line, at = 0, 0
+        for hit in pattern.finditer(joined):
+            line += joined.count("\n", at, hit.start())
+            at = hit.start()
+            hits.add(line)
+    return sorted(hits)
 
 
 def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, float]:

@@ -58,7 +58,8 @@ from protocol.gcode.words import scan_words
 
 #: Lines that may change the modal state this module follows (a literal-ish search over
 #: the text before the start; each hit is then read word by word).
-MODAL_HINT = re.compile(r"[Gg][ \t]*0*(?:1[789]|2[01]|9[01]|10|28\.1|30\.1|38|43|5[4-9])(?![0-9])")
+_MODAL_CODES = r"[ \t0]*(?:1[789]|2[01]|9[01]|10|28\.1|30\.1|38|43|5[4-9])(?![0-9])"
+MODAL_HINT = (re.compile("G" + _MODAL_CODES), re.compile("g" + _MODAL_CODES))
 #: Motion words, and the codes they are.
 _MOTION = {0.0: "G0", 1.0: "G1", 2.0: "G2", 3.0: "G3"}
 #: Words that make the position at the start unknown to the station's model.

@@ -80,31 +80,44 @@ class SentTexts(Sequence[str]):
             )
         ]
 
-    def matching(self, pattern: re.Pattern[str], stop: int) -> list[int]:
-        """Operations before ``stop`` whose text ``pattern`` (ASCII) finds something in.
+    def matching(self, patterns: Sequence[re.Pattern[str]], stop: int) -> list[int]:
+        """Operations before ``stop`` whose text any of ``patterns`` (ASCII) finds something in.
 
-        One pass over the file's bytes: making a million strings to search them
-        took seconds (a start part-way or a resume looks for a few modal words).
+        One pass a pattern over the file's bytes: making a million strings to
+        search them took seconds (a start part-way or a resume looks for a few
+        modal words).  Patterns that begin with a literal are searched fastest.
         """
         stop = min(stop, len(self))
         if stop <= 0:
             return []
         starts, ends = self.starts[:stop], self.ends[:stop]
-        found: list[int] = []
+        found: set[int] = set()
         spans = np.flatnonzero(starts >= 0)
         if len(spans):
             first, last = starts[spans], ends[spans]
-            raw = re.compile(pattern.pattern.encode("ascii"), pattern.flags & ~re.UNICODE)
-            hits = [(m.start(), m.end()) for m in raw.finditer(self.buffer, 0, int(last.max()))]
-            if hits:
+            end = int(last.max())
+            for pattern in patterns:
+                raw = re.compile(pattern.pattern.encode("ascii"), pattern.flags & ~re.UNICODE)
+                hits = [(m.start(), m.end()) for m in raw.finditer(self.buffer, 0, end)]
+                if not hits:
+                    continue
                 at = np.array(hits, dtype=np.int64)
                 k = np.searchsorted(first, at[:, 0], side="right") - 1
                 inside = (k >= 0) & (at[:, 1] <= last[np.maximum(k, 0)])
-                found += spans[np.unique(k[inside])].tolist()
-        extra = self.extra
-        for i in np.flatnonzero(starts < 0).tolist():
-            if pattern.search(extra[-1 - int(starts[i])]):
-                found.append(i)
+                found.update(spans[np.unique(k[inside])].tolist())
+        # The texts of their own (pen commands translated, comments cut): few distinct ones.
+        own = np.flatnonzero(starts < 0)
+        if len(own):
+            seen: dict[str, bool] = {}
+
+            def matches(text: str) -> bool:
+                known = seen.get(text)
+                if known is None:
+                    known = seen[text] = any(p.search(text) for p in patterns)
+                return known
+
+            hit = np.fromiter(map(matches, self.extra), dtype=bool, count=len(self.extra))
+            found.update(own[hit[-1 - starts[own]]].tolist())
         return sorted(found)
 
     def any(self) -> bool:
