@@ -4,7 +4,9 @@ For a machine in a lab corner or a headless computer: the job runs through
 the scripting API (the same runner, gate and checkpoints as the jobs dock)
 with a progress bar and ETA on the terminal, and the job's ``wait:`` prompts
 asked there.  Ctrl+C stops the machine and keeps the checkpoint; ``--resume``
-carries on from it, ``--restart`` discards it.
+carries on from it, ``--restart`` discards it.  ``--from-line N`` starts a
+G-code job at line N of its file, ``--from-op N`` any job at its operation N
+(see docs/manual/jobs.md, "Starting part-way").
 
 Exit status: 0 done, 2 refused (unreadable job, outside the travel, no
 answer from the device, a checkpoint waiting without --resume/--restart),
@@ -65,6 +67,19 @@ def build_parser() -> argparse.ArgumentParser:
     )
     resume.add_argument(
         "--restart", action="store_true", help="discard an interrupted run's checkpoint"
+    )
+    start = parser.add_mutually_exclusive_group()
+    start.add_argument(
+        "--from-line",
+        type=int,
+        metavar="N",
+        help="start a G-code job at line N of its file, set up as the file had it there",
+    )
+    start.add_argument(
+        "--from-op",
+        type=int,
+        metavar="N",
+        help="start at operation N (from 1; drill and string-art jobs count operations)",
     )
     parser.add_argument(
         "--checkpoints",
@@ -141,6 +156,8 @@ def main(argv: Sequence[str], out: TextIO | None = None, err: TextIO | None = No
         args = build_parser().parse_args(list(argv))
         if args.simulate and not args.emulator:
             raise UsageError("--simulate runs the built-in emulator only (with --emulator)")
+        if args.resume and (args.from_line is not None or args.from_op is not None):
+            raise UsageError("--resume goes on from the checkpoint: not with --from-line/--from-op")
     except UsageError as exc:
         print(f"stepdeck run: {exc}", file=err)
         return USAGE
@@ -164,6 +181,8 @@ def main(argv: Sequence[str], out: TextIO | None = None, err: TextIO | None = No
             on_message=terminal.say,
             resume=resume,
             checkpoint_dir=args.checkpoints,
+            from_line=args.from_line,
+            from_op=args.from_op,
         )
         terminal.close()
         print(

@@ -24,6 +24,7 @@ from PySide6.QtCore import QStandardPaths
 from app.jobs.loaders import JobOptions, load_job
 from app.jobs.program import JobFileError, Program
 from app.jobs.run.runner import JobRunner
+from app.jobs.run.start_point import StartRefused, operation_at_line, operation_numbered
 from app.jobs.run.states import ACTIVE, JobState
 from app.scripting.errors import CheckpointWaiting, JobAborted, JobFailed, JobRefused
 from app.scripting.waits import MachinePort, Operation, Wait
@@ -83,6 +84,8 @@ def run_job(
     resume: bool | None = None,
     checkpoint_dir: str | Path | None = None,
     options: JobOptions | None = None,
+    from_line: int | None = None,
+    from_op: int | None = None,
 ) -> Operation[JobResult]:
     """Run ``path``; returns a :class:`JobResult`, raises JobRefused / JobAborted / JobFailed.
 
@@ -100,6 +103,13 @@ def run_job(
       the job: JobFailed, with what was said, the checkpoint kept.
     * ``resume``: when a checkpoint of this job waits, True resumes from it,
       False starts over (discarding it); None refuses to choose (JobRefused).
+    * ``from_line``: start at this line of a G-code file (the first operation
+      of it, or of the next line that makes one), the machine first set up as
+      the file had it there (units, distance mode, plane, feed, the file's G92,
+      the pen) and brought there with the pen up; ``from_op``: start at this
+      operation (counted from 1, as the jobs dock shows them; a drill hole
+      starts with its move).  Refused (JobRefused, with file:line and why)
+      where that state cannot be rebuilt, and with ``resume=True``.
     """
     station = machine.station
     profile = station.profile
@@ -143,7 +153,7 @@ def run_program(
     runner = JobRunner(station, Path(checkpoint_dir or default_checkpoint_dir()))
     watch = _JobWatch(runner, program, on_progress, on_prompt, on_decision, on_message)
     try:
-        watch.start(resume)
+        watch.start(resume, _start_index(program, from_line, from_op, resume))
         while True:
             yield Wait(watch.something_to_do, 24 * 3600.0, "the job", motion=False)
             if not watch.step():
@@ -201,8 +211,9 @@ class _JobWatch:
         if self._on_message is not None:
             self._on_message(text)
 
-    def start(self, resume: bool | None) -> None:
-        """Load and start (or resume from a checkpoint); refused: JobRefused, said why."""
+    def start(self, resume: bool | None, start_at: int | None = None) -> None:
+        """Load and start (or resume from a checkpoint, or start at ``start_at``); refused:
+        JobRefused, said why."""
         runner, program = self.runner, self.program
         refused = runner.load(program)
         _drain(self.events, self.tell)
@@ -222,10 +233,10 @@ class _JobWatch:
             else:
                 runner.discard_checkpoint()
                 resumed_from = None
-                runner.start()
+                _start(runner, start_at)
         else:
-            runner.start()
-        self.resumed_from = resumed_from
+            _start(runner, start_at)
+        self.resumed_from = resumed_from if start_at is None else start_at
         _drain(self.events, self.tell)
         if runner.state not in ACTIVE:
             raise JobRefused("\n".join(self.said[-3:]) or f"{program.name}: not started")
@@ -329,6 +340,32 @@ class _JobWatch:
         reason = "; ".join([*self.why, self.said[-1] if self.said else state.value])
         error = JobFailed if state is JobState.FAILED else JobAborted
         raise error(reason, runner.done, len(program))
+
+
+def _start_index(
+    program: Program, from_line: int | None, from_op: int | None, resume: bool | None
+) -> int | None:
+    """The operation ``from_line`` or ``from_op`` names (None: the first); JobRefused if none."""
+    if from_line is None and from_op is None:
+        return None
+    if from_line is not None and from_op is not None:
+        raise JobRefused("from_line and from_op name two starts: give one")
+    if resume:
+        raise JobRefused("resume=True goes on from the checkpoint: it takes no from_line/from_op")
+    try:
+        if from_line is not None:
+            return operation_at_line(program, from_line)
+        assert from_op is not None
+        return operation_numbered(program, from_op)
+    except StartRefused as exc:
+        raise JobRefused(str(exc)) from None
+
+
+def _start(runner: JobRunner, index: int | None) -> None:
+    if index is None:
+        runner.start()
+    else:
+        runner.start_from(index)
 
 
 def _drain(events: deque[tuple[str, tuple[object, ...]]], tell: Callable[[str], None]) -> None:

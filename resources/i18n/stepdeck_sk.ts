@@ -1364,7 +1364,7 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>
-        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent.</extracomment>
+        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at).</extracomment>
         <translation>Stroj stojí v pozdržaní (feed hold: jeho tlačidlo, tunajšie tlačidlo Pozdržať, alebo znak „!“, ktorý k nemu dorazil po vedení): úloha je pozastavená na {0}. Pokračovať ju nechá ísť ďalej (cycle start).</translation>
     </message>
     <message>
@@ -3046,7 +3046,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Takes a click&apos;s plot point instead of a move (the &quot;Run from…&quot; dialog picks a stroke). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
     </message>
     <message>
@@ -3174,6 +3174,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Najprv pokračujte od kontrolného bodu, alebo ho zahoďte</translation>
     </message>
     <message>
+        <source>Job {0} not started from {1}: {2}</source>
+        <translation>Úloha {0} nespustená od {1}: {2}</translation>
+    </message>
+    <message>
         <source>Answer the question about the interrupted operation first</source>
         <translation>Najprv odpovedzte na otázku k prerušenej operácii</translation>
     </message>
@@ -3255,6 +3259,11 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>{0} neprijíma G-kód</translation>
     </message>
     <message>
+        <source>{0}: a drill cycle drills where the tool stands; start at op {1}, the move to its hole</source>
+        <extracomment>Link states in which nothing can be sent. Whether G-code lines (``OpKind.GCODE``) can be sent as they are.</extracomment>
+        <translation>{0}: vŕtací cyklus vŕta tam, kde nástroj stojí; začnite od op. {1}, nájazdu na jeho otvor</translation>
+    </message>
+    <message>
         <source>the drill is busy with another command</source>
         <translation>vŕtačka je zaneprázdnená iným príkazom</translation>
     </message>
@@ -3308,6 +3317,35 @@ Station-clock seconds the unit has to show it started a move, or to say where it
     <message>
         <source>Asking the unit where it stands ({0}, {1})…</source>
         <translation>Dopyt na polohu jednotky ({0}, {1})…</translation>
+    </message>
+    <message>
+        <source>Starting at {0}: the machine goes there with the pen up, set as the file had it ({1})</source>
+        <extracomment>Lines that may change the modal state this module follows (a literal-ish search over the text before the start; each hit is then read word by word). Motion words, and the codes they are. Words that make the position at the start unknown to the station&apos;s model. File offsets smaller than this (mm) are none. Operations after the start looked at for the move that needs the arc&apos;s word. Where the machine stands (program coordinates, mm), and whether the pen is down. The motion mode in force (``G0``…``G3``), None when the file set none yet. The feed in force, in the file&apos;s units per minute at the start (None: never set). The file&apos;s own G92 offset per axis (mm), as :func:`file_offset` gives it. The last operator prompt before the start (a pen or bit change), if any. The operation that gets the arc&apos;s motion word in front (see the module doc). The program is a G-code file whose own modal state is rebuilt (else only the position and the pen, as a resume does: its lines carry their own words).</extracomment>
+        <translation>Začína sa od {0}: stroj tam nabehne so zdvihnutým perom, nastavený tak, ako ho tam mal súbor ({1})</translation>
+    </message>
+    <message>
+        <source>; the file&apos;s last prompt before it was: {0}</source>
+        <translation>; posledná výzva súboru pred týmto miestom bola: {0}</translation>
+    </message>
+    <message>
+        <source>this job does not run in the order of its file&apos;s lines: start from an operation number instead</source>
+        <translation>táto úloha nebeží v poradí riadkov svojho súboru: začnite radšej od čísla operácie</translation>
+    </message>
+    <message>
+        <source>lines count from 1</source>
+        <translation>riadky sa číslujú od 1</translation>
+    </message>
+    <message>
+        <source>beyond the end: nothing runs after line {0}</source>
+        <translation>za koncom: po riadku {0} sa už nič nevykonáva</translation>
+    </message>
+    <message>
+        <source>the job has operations 1 to {0}</source>
+        <translation>úloha má operácie 1 až {0}</translation>
+    </message>
+    <message>
+        <source>{0} before the start changes where the file&apos;s coordinates are, which the station does not follow: start before this line</source>
+        <translation>{0} pred začiatkom mení, kde sú súradnice súboru, a to stanica nesleduje: začnite pred týmto riadkom</translation>
     </message>
 </context>
 <context>
@@ -3676,6 +3714,34 @@ Docks of features built elsewhere (the macros&apos;), by object name → their b
     <message>
         <source>waiting for the operator: {0}</source>
         <translation>čaká sa na obsluhu: {0}</translation>
+    </message>
+    <message>
+        <source>op {0}: {1}  {2}</source>
+        <translation>op. {0}: {1}  {2}</translation>
+    </message>
+    <message>
+        <source>Run from a line</source>
+        <translation>Spustiť od riadku</translation>
+    </message>
+    <message>
+        <source>Pick the line to start from, here or by clicking its stroke in the preview. The machine goes there with the pen up, set as the file had it there (units, distance mode, feed, offsets, pen), then carries on; the lines before it count as run.</source>
+        <translation>Vyberte riadok, od ktorého začať, tu alebo kliknutím na jeho ťah v náhľade. Stroj tam nabehne so zdvihnutým perom, nastavený tak, ako ho tam mal súbor (jednotky, režim vzdialeností, posuv, posunutia, pero), a pokračuje; riadky pred ním sa počítajú ako vykonané.</translation>
+    </message>
+    <message>
+        <source>Run from here</source>
+        <translation>Spustiť odtiaľto</translation>
+    </message>
+    <message>
+        <source>On this machine pick the line in the list</source>
+        <translation>Na tomto stroji vyberte riadok v zozname</translation>
+    </message>
+    <message>
+        <source>Run from…</source>
+        <translation>Spustiť od…</translation>
+    </message>
+    <message>
+        <source>Start the job at a line you pick (list or preview) ({0})</source>
+        <translation>Spustiť úlohu od riadku, ktorý vyberiete (zoznam alebo náhľad) ({0})</translation>
     </message>
 </context>
 <context>
@@ -4063,6 +4129,10 @@ Buttons a row.</extracomment>
     <message>
         <source>Open a job (File → Open job…)</source>
         <translation>Otvoriť úlohu (Súbor → Otvoriť úlohu…)</translation>
+    </message>
+    <message>
+        <source>Run the job from a line you pick (Jobs → Run from…)</source>
+        <translation>Spustiť úlohu od riadku, ktorý vyberiete (Úlohy → Spustiť od…)</translation>
     </message>
     <message>
         <source>Quit (stops the machine first)</source>

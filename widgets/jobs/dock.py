@@ -62,6 +62,7 @@ from widgets.jobs.registration_bar import RegistrationBar
 from widgets.jobs.resume_choice import ResumeChoicePanel
 from widgets.jobs.run_controls import RunControls, job_button
 from widgets.jobs.source_lines import read_lines
+from widgets.jobs.start_from import StartFromLaunch
 from widgets.jobs.string_art_board import BoardAsker
 from widgets.jobs.string_art_board import ask_board as ask_board_dialog
 from widgets.jobs.string_art_launch import StringArtLaunch
@@ -176,6 +177,8 @@ class JobsDock(QDockWidget):
         self.photo_button = self.string_art.button
         self.exports = JobExport(station, runner, self.texts, self.say, self)
         self.export_button = self.exports.button
+        self.start_from = StartFromLaunch(runner, self.preview, self._source_line, self.texts, self)
+        self.run_from_button = self.start_from.button
 
         self.setWidget(self._build_content())
 
@@ -298,6 +301,8 @@ class JobsDock(QDockWidget):
         files = QHBoxLayout()
         files.setSpacing(6)
         files.addWidget(self.open_button)
+        # On the file row: beside Run it made the dock too wide for a 1280 px screen.
+        files.addWidget(self.run_from_button)
         files.addWidget(self.export_button)
         files.addWidget(self.photo_button)
         files.addWidget(self.file_label, 1)

@@ -503,6 +503,8 @@ class JobPreview(QWidget):
         self.last_message = ""
         #: The reference the next click picks a hole for (None: a click moves the machine).
         self.picking: int | None = None
+        #: Takes a click's plot point instead of a move (the "Run from…" dialog picks a stroke).
+        self.point_picker: Callable[[float, float], None] | None = None
         axes = station.profile.axes
         #: Set on a cylindrical machine: the plot is the work's plane, not two axes.
         self.polar = polar_axes(station.profile)
@@ -992,6 +994,9 @@ class JobPreview(QWidget):
         point: QPointF = view.mapSceneToView(scene_pos)
         if self.picking is not None:
             self._pick(point)  # choosing a reference hole moves nothing
+            return
+        if self.point_picker is not None:
+            self.point_picker(point.x(), point.y())  # picking where to start moves nothing
             return
         self.request_move(point.x(), point.y())
 

@@ -56,6 +56,10 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
         ),
     ),
     ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),
+    (
+        "Ctrl+Shift+R",
+        QT_TRANSLATE_NOOP("MainWindow", "Run the job from a line you pick (Jobs → Run from…)"),
+    ),
     ("Ctrl+Q", QT_TRANSLATE_NOOP("MainWindow", "Quit (stops the machine first)")),
     ("Ctrl+J", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the jobs dock")),
     ("Ctrl+T", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the telemetry plots")),

@@ -227,6 +227,25 @@ class JobDriver:
     def begin(self, index: int, *, verify: bool) -> None:
         """A run starts at ``index``; ``verify``: it may have been under way before."""
 
+    def start_refusal(self, index: int) -> str | None:
+        """Why the job cannot start at operation ``index`` the operator chose (None: it can).
+
+        Here every operation goes to absolute places by itself, except a drill
+        cycle, which drills where the tool stands: it starts with its hole's move.
+        """
+        program = self.runner.program
+        if program is not None and program[index].kind is OpKind.DRILL:
+            return QCoreApplication.translate(
+                "JobRunner",
+                "{0}: a drill cycle drills where the tool stands; start at op {1}, "
+                "the move to its hole",
+            ).format(program[index].source, index)
+        return None
+
+    def start_at(self, index: int) -> None:
+        """A run starts at the operator's chosen ``index`` (:meth:`start_refusal` said yes)."""
+        self.begin(index, verify=False)
+
     def proceed(self) -> None:
         """Send what may be sent now; end, wait or pause when the program says so."""
 

@@ -44,6 +44,7 @@ from app.jobs.run.gcode_stream import (
 )
 from app.jobs.run.pacing import Every
 from app.jobs.run.standing import Standing, StandingProof
+from app.jobs.run.start_point import StartPlan, StartRefused, plan_start
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.job_feed import JobFeed
 from app.machines.gcode.session import GcodeSession, SentLine
@@ -124,6 +125,8 @@ class GcodeDriver(JobDriver):
         #: a ``!`` that reached it on the wire): the job is paused, and its resume is a
         #: cycle start — the board still has every line it was sent.
         self._held_by_machine = False
+        #: The operator's chosen start (its state rebuilt once the machine is looked at).
+        self._start: StartPlan | None = None
 
     def _locked(self) -> AbstractContextManager[object]:
         """The feed's lock: the reader thread pulls and counts the stream under it."""
@@ -214,8 +217,28 @@ class GcodeDriver(JobDriver):
         self._chosen = None
         self._choice_open = False
         self._held_by_machine = False
+        self._start = None
         if index == 0 and not verify and session is not None:
             self._set_up(session)
+
+    def start_refusal(self, index: int) -> str | None:
+        """Whether the file's state at ``index`` can be rebuilt (see start_point.py)."""
+        program = self.runner.program
+        assert program is not None
+        try:
+            self._start = plan_start(program, index, [a.name for a in self.station.profile.axes])
+        except StartRefused as exc:
+            self._start = None
+            return str(exc)
+        return None
+
+    def start_at(self, index: int) -> None:
+        """Looked at first, as a resume: then set up as the file had it, and on from there."""
+        plan = self._start if self._start is not None and self._start.index == index else None
+        self.begin(index, verify=True)
+        self._start, self._chosen = plan, index
+        if self.stream is not None and plan is not None:
+            self.stream.lead = plan.lead
 
     def _set_up(self, session: GcodeSession) -> None:
         """The machine in the state the program was checked for, confirmed where it can say.
@@ -617,7 +640,12 @@ class GcodeDriver(JobDriver):
         self._position_lost = False
         self._resume_at = start
         axes = [a.name for a in runner.station.profile.axes]
-        way_back = retrace(program, axes, start, _sent_upto(stream, start), here)
+        plan, self._start = self._start, None
+        if plan is not None and plan.index != start:
+            plan = None
+        way_back = (
+            retrace(program, axes, start, _sent_upto(stream, start), here) if plan is None else []
+        )
         with self._locked():
             stream.rewind(start)
         if start >= len(program):
@@ -632,14 +660,36 @@ class GcodeDriver(JobDriver):
         shift = {name: _offset(self._origin, i) - _offset(now, i) for i, name in enumerate(axes)}
         state = replace(planned, position={a: v + shift[a] for a, v in planned.position.items()})
         way_back = [{a: v + shift[a] for a, v in point.items()} for point in way_back]
-        for line in preamble(state, stream.settings, way_back, self._restore(planned, start, now)):
+        lines = (
+            preamble(state, stream.settings, way_back, self._restore(planned, start, now))
+            + self._file_modes(stream, start)
+            if plan is None
+            else plan.lines(stream.settings, shift)
+        )
+        for line in lines:
             self._preparing += session.send_line(line, "resume")
         runner.note(
-            f"Resuming at {program[start].source}: {note}; machine set up again "
+            plan.summary(program)
+            if plan is not None
+            else f"Resuming at {program[start].source}: {note}; machine set up again "
             f"({'pen down' if state.pen_down else 'pen up'}, at the program's position)"
         )
         self._report(stream)
         self.proceed()
+
+    def _file_modes(self, stream: GcodeStream, start: int) -> list[str]:
+        """A resume's way back is in mm, G90: the file's own modes at ``start`` go after it
+        (units, plane, distance mode, motion and feed; an arc's word before its next move).
+        None where the file's state there cannot be rebuilt: the way back alone, as before."""
+        program = self.runner.program
+        assert program is not None
+        try:
+            plan = plan_start(program, start, [a.name for a in self.station.profile.axes])
+        except StartRefused:
+            return []
+        with self._locked():
+            stream.lead = plan.lead
+        return plan.modes(stream.settings)
 
     def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
         """``G92`` setting again the work offset the job needs here, if the board lost it.

@@ -93,9 +93,17 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     return ResumeState(position, pen_down=bool(last_down > last_up))
 
 
-#: What a G92 line has (a literal search: a word pattern would be 20 times slower); lines
-#: where it is a coordinate's digits are told apart by their words.
-_G92_TEXT = re.compile(r"92(?![0-9])")
+#: What a G92 line has (a literal search: a word pattern would be 20 times slower), or a unit
+#: word (G20/G21: a G92 under G20 is in inches); lines where it is a coordinate's digits are
+#: told apart by their words.
+_G92_TEXT = (
+    re.compile(r"92(?![0-9])"),
+    re.compile(r"G[ \t0]*2[01](?![0-9])"),
+    re.compile(r"g[ \t0]*2[01](?![0-9])"),
+)
+#: Millimetres an inch; the axes G20 scales (A B C are degrees).
+_INCH_MM = 25.4
+_LINEAR = frozenset("XYZUVW")
 
 
 def _position_before(
@@ -112,6 +120,31 @@ def _position_before(
     return path.coords[first - 1] if first else np.full(len(axes), np.nan)
 
 
+def texts_matching(
+    texts: Sequence[str], patterns: Sequence[re.Pattern[str]], stop: int
+) -> list[int]:
+    """Indices before ``stop`` of the texts any of ``patterns`` finds something in, in order.
+
+    A resume or a start part-way on a file of a million lines must not hold
+    the GUI thread: a G-code file's texts are searched in its bytes at once
+    (:meth:`~app.jobs.formats.gcode.sent_texts.SentTexts.matching`), others in
+    one regex pass a pattern over their joined text.
+    """
+    find = getattr(texts, "matching", None)
+    if callable(find):
+        found: list[int] = find(patterns, stop)
+        return found
+    joined = "\n".join(texts[:stop])
+    hits: set[int] = set()
+    for pattern in patterns:
+        line, at = 0, 0
+        for hit in pattern.finditer(joined):
+            line += joined.count("\n", at, hit.start())
+            at = hit.start()
+            hits.add(line)
+    return sorted(hits)
+
+
 def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, float]:
     """The file's own ``G92`` offset in force before operation ``index``, per axis.
 
@@ -119,29 +152,23 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
     given; ``G92.1`` clears it; a bare ``G92``, where the machine takes it, calls
     here 0), in the program's coordinates, so that program position minus it
     is the file's work position.  0 for programs that are not G-code files.
-    Values are taken as millimetres (a ``G92`` under ``G20`` is not converted).
+    A ``G92`` under ``G20`` is read in inches, as the loader reads it.
     """
     offset = dict.fromkeys(axes, 0.0)
     data = getattr(program, "data", None)
     texts = getattr(data, "sent", None)  # the texts made as read (not all kept as str)
     if not isinstance(texts, Sequence) or isinstance(texts, str) or index <= 0:
         return offset
-    # One regex pass over the text before ``index`` (a resume on a file of a million lines
-    # must not hold the GUI thread), the line of each hit counted from the one before.
-    joined = "\n".join(texts[:index])
-    candidates: list[int] = []
-    line, at = 0, 0
-    for hit in _G92_TEXT.finditer(joined):
-        line += joined.count("\n", at, hit.start())
-        at = hit.start()
-        if not candidates or candidates[-1] != line:
-            candidates.append(line)
+    candidates = texts_matching(texts, _G92_TEXT, index)
     if not candidates:
         return offset
     path = None if hasattr(data, "positions") else program.path(axes)
+    scale = 1.0
     for k in candidates:
         words = scan_words(texts[k])
         codes = {v for w, v in words if w == "G"}
+        if 20.0 in codes or 21.0 in codes:
+            scale = _INCH_MM if 20.0 in codes else 1.0
         if 92.1 in codes:
             offset = dict.fromkeys(axes, 0.0)
             continue
@@ -152,7 +179,7 @@ def file_offset(program: Program, index: int, axes: Sequence[str]) -> dict[str, 
         for i, axis in enumerate(axes):
             where = 0.0 if math.isnan(here[i]) else float(here[i])
             if axis in given:
-                offset[axis] = where - given[axis]
+                offset[axis] = where - given[axis] * (scale if axis in _LINEAR else 1.0)
             elif not given:
                 offset[axis] = where  # a bare G92: here is the origin
     return offset
@@ -226,7 +253,9 @@ def preamble(
     goes straight there — on the winder one axis at a time.  ``restore`` goes out
     once it is there (the work offset a reset took, set again).
     """
-    lines = [settings.pen_up, "G90"]
+    # In millimetres where the machine has G21: the way back's numbers are (a file's G20
+    # would have them read as inches); the file's own units follow (start_point.py).
+    lines = [settings.pen_up, "G90 G21" if "G21" in settings.words else "G90"]
     if way_back:
         lines += ["G0 " + " ".join(f"{a}{v:.3f}" for a, v in point.items()) for point in way_back]
     elif state.position and settings.kinematics == "cylindrical":
@@ -275,6 +304,9 @@ class GcodeStream:
         self._answered_at_last_report = start
         #: The operation whose line could not go, and why (the job fails there).
         self.refused: tuple[int, str] | None = None
+        #: A start part-way in an arc mode: the operation whose line gets that motion word in
+        #: front (see :mod:`app.jobs.run.start_point`).
+        self.lead: tuple[int, str] | None = None
 
     # --- what to send --------------------------------------------------------
 
@@ -311,6 +343,8 @@ class GcodeStream:
             if op.kind is OpKind.WAIT:
                 break
             text = self.line_for(index, op)  # a G-code file builds each operation when asked
+            if self.lead is not None and self.lead[0] == index and text is not None:
+                text = f"{self.lead[1]} {text}"
             self.next_index += 1
             if text is None:
                 if not pending:

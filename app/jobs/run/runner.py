@@ -322,6 +322,34 @@ class JobRunner(QObject):
             return
         self._begin(0, single_step=False, verify=False)
 
+    def start_from(self, index: int) -> None:
+        """Run from operation ``index``, those before it counted as run: a resume at the point
+        the operator chose, the machine set up as the file had it there (the driver's plan)."""
+        program = self._program
+        if program is None or self._state not in (JobState.READY, *FINISHED):
+            return
+        if index == 0:
+            self.start()  # nothing before it: the whole job, set up as a whole job is
+            return
+        if not 0 < index < len(program):
+            return  # the callers map lines and numbers to operations, refusing what is out
+        reason = (
+            QCoreApplication.translate(
+                "JobRunner", "Resume from the checkpoint or discard it first"
+            )
+            if self._checkpoints.resume_available is not None
+            else self._driver.start_refusal(index)
+        )
+        if reason is not None:
+            self.message.emit(
+                QCoreApplication.translate("JobRunner", "Job {0} not started from {1}: {2}").format(
+                    repr(program.name), program[index].source, reason
+                )
+            )
+            return
+        if not self._refuse_start_position(program):
+            self._begin(index, single_step=False, verify=False, chosen=True)
+
     def pause(self) -> None:
         """Let the operation under way finish, then stop before the next one."""
         driver = self._driver
@@ -603,7 +631,7 @@ class JobRunner(QObject):
 
     # --- running -------------------------------------------------------------
 
-    def _begin(self, index: int, *, single_step: bool, verify: bool) -> None:
+    def _begin(self, index: int, *, single_step: bool, verify: bool, chosen: bool = False) -> None:
         assert self._program is not None
         driver = self._driver
         if self._refuse_for_link():
@@ -613,7 +641,10 @@ class JobRunner(QObject):
         self._pause_requested = False
         self._choice = None
         self._operator_hold = False
-        driver.begin(index, verify=verify)
+        if chosen:
+            driver.start_at(index)
+        else:
+            driver.begin(index, verify=verify)
         self._progress.tell_done()
         self._set_state(JobState.RUNNING)
         driver.proceed()
@@ -684,8 +715,8 @@ class JobRunner(QObject):
         return True
 
     def _op_source(self, index: int | None) -> str:
-        if self._program is None or index is None:
-            return "?"
+        if self._program is None or index is None or not 0 <= index < len(self._program):
+            return "?"  # (a fault reported after the last operation: nothing of the job there)
         return str(self._program[index].source)
 
     def _total(self) -> int:

@@ -12,6 +12,7 @@ are kept apart as strings.  A text is made when it is asked for.
 from __future__ import annotations
 
 import operator
+import re
 from array import array
 from collections.abc import Iterator, Sequence
 from typing import overload
@@ -78,6 +79,46 @@ class SentTexts(Sequence[str]):
                 self.starts[first:stop].tolist(), self.ends[first:stop].tolist(), strict=True
             )
         ]
+
+    def matching(self, patterns: Sequence[re.Pattern[str]], stop: int) -> list[int]:
+        """Operations before ``stop`` whose text any of ``patterns`` (ASCII) finds something in.
+
+        One pass a pattern over the file's bytes: making a million strings to
+        search them took seconds (a start part-way or a resume looks for a few
+        modal words).  Patterns that begin with a literal are searched fastest.
+        """
+        stop = min(stop, len(self))
+        if stop <= 0:
+            return []
+        starts, ends = self.starts[:stop], self.ends[:stop]
+        found: set[int] = set()
+        spans = np.flatnonzero(starts >= 0)
+        if len(spans):
+            first, last = starts[spans], ends[spans]
+            end = int(last.max())
+            for pattern in patterns:
+                raw = re.compile(pattern.pattern.encode("ascii"), pattern.flags & ~re.UNICODE)
+                hits = [(m.start(), m.end()) for m in raw.finditer(self.buffer, 0, end)]
+                if not hits:
+                    continue
+                at = np.array(hits, dtype=np.int64)
+                k = np.searchsorted(first, at[:, 0], side="right") - 1
+                inside = (k >= 0) & (at[:, 1] <= last[np.maximum(k, 0)])
+                found.update(spans[np.unique(k[inside])].tolist())
+        # The texts of their own (pen commands translated, comments cut): few distinct ones.
+        own = np.flatnonzero(starts < 0)
+        if len(own):
+            seen: dict[str, bool] = {}
+
+            def matches(text: str) -> bool:
+                known = seen.get(text)
+                if known is None:
+                    known = seen[text] = any(p.search(text) for p in patterns)
+                return known
+
+            hit = np.fromiter(map(matches, self.extra), dtype=bool, count=len(self.extra))
+            found.update(own[hit[-1 - starts[own]]].tolist())
+        return sorted(found)
 
     def any(self) -> bool:
         """Whether any operation sends anything."""
