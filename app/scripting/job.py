@@ -134,6 +134,8 @@ def run_job(
         on_message=on_message,
         resume=resume,
         checkpoint_dir=checkpoint_dir,
+        from_line=from_line,
+        from_op=from_op,
     )
 
 
@@ -147,6 +149,8 @@ def run_program(
     on_message: Callable[[str], None] | None = None,
     resume: bool | None = None,
     checkpoint_dir: str | Path | None = None,
+    from_line: int | None = None,
+    from_op: int | None = None,
 ) -> Operation[JobResult]:
     """Run a program already read (a job file's, a macro's) as :func:`run_job` runs a file's."""
     station = machine.station
