@@ -291,7 +291,14 @@ class ProgramGeometry:
         ``view_px``: the plot's size in device pixels, when known: a merged string-art
         thread is then painted into an image at the scale the view will fit it to.
         """
-        path = program.preview_path(x_axis, y_axis)
+        #: A string-art job's nails and thread (merged when huge), laid out here too.
+        self.thread = ThreadGeometry.of(program) if isinstance(program, StringArtProgram) else None
+        reach = 0.0
+        if self.thread is not None and self.thread.merged and isinstance(program, StringArtProgram):
+            # The winding is hidden under the thread: only the travel and its extent.
+            path, reach = program.preview_travel()
+        else:
+            path = program.preview_path(x_axis, y_axis)
         if polar and y_axis is not None and program.preview_plane == "axes":
             path = board_plane(path)
         # Views, not copies: a million moves' copies were 16 MB more at the load's peak.
@@ -300,13 +307,12 @@ class ProgramGeometry:
         self.travel = _runs(xs, ys, ops, pen, wanted=False)
         self.work = _runs(xs, ys, ops, pen, wanted=True)
         self.markers = self._markers(program, xs, ys, ops)
-        #: A string-art job's nails and thread (merged when huge), laid out here too.
-        self.thread = ThreadGeometry.of(program) if isinstance(program, StringArtProgram) else None
+        around = np.array([-reach, reach]) if reach > 0 else _EMPTY
         #: (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view
         #: must not scan millions of points on the GUI thread.
         self.bounds = _bounds(
-            (self.travel.x, self.work.x, self.markers.x),
-            (self.travel.y, self.work.y, self.markers.y),
+            (self.travel.x, self.work.x, self.markers.x, around),
+            (self.travel.y, self.work.y, self.markers.y, around),
         )
         if self.thread is not None:
             # The needle's winding path is hidden under the thread: millions of points that
