@@ -293,6 +293,10 @@ class GcodeDriver(JobDriver):
             return True
         if wait is not None or sent_all:
             if not session.settled:
+                if session.status_asked_at is None:
+                    # Asked now, not at the next poll (up to status_ms away): every line is
+                    # answered, and the job is done, or waits, once a report shows it idle.
+                    session.query_status()
                 return True  # the session's next status report can show it settled
             self._hold()
             if wait is not None:
