@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import threading
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -87,6 +88,7 @@ def paint_layers(
                 painter.drawPath(
                     pg.arrayToQPath(x[start : end + 1], y[start : end + 1], connect="finite")
                 )
+                time.sleep(0)  # the interpreter lock to the window now, if it waits for it
     finally:
         painter.end()
     return PathPicture(image, QRectF(rect), (sx, sy))
@@ -227,7 +229,11 @@ class PathPictureItem(pg.GraphicsObject):  # type: ignore[misc]
         painted = self._painted
 
         def paint() -> None:
-            painted.done.emit(paint_layers(layers, rect, scale), generation)
+            picture = paint_layers(layers, rect, scale)
+            try:
+                painted.done.emit(picture, generation)
+            except RuntimeError:
+                pass  # the preview was closed meanwhile: nobody waits for it
 
         self._worker = threading.Thread(target=paint, name="path-picture", daemon=True)
         self._worker.start()
