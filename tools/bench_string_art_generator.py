@@ -85,6 +85,17 @@ def _measured(
     return measure(target, darkness, mask)
 
 
+def _usage() -> tuple[int, int, int]:
+    """Voluntary switches, major page faults and involuntary switches so far (0 without
+    the ``resource`` module, off Unix)."""
+    try:
+        import resource
+    except ImportError:
+        return 0, 0, 0
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_nvcsw, usage.ru_majflt, usage.ru_nivcsw
+
+
 def bench_speed() -> list[str]:
     """The whole budget (no early stop), cold (line table built) and warm (table cached)."""
     lines = []
@@ -92,17 +103,25 @@ def bench_speed() -> list[str]:
         params = StringArtParams(0, nails, 14.5)
         settings = Settings(lines=budget, stop_when_no_gain=False)
         target = target_darkness(face(SOURCE_PX), Adjust(), settings.resolution)
+        before = _usage()
         start, cpu = time.perf_counter(), time.process_time()
         run(params, target, settings)
         cold, cold_cpu = time.perf_counter() - start, time.process_time() - cpu
         start, cpu = time.perf_counter(), time.process_time()
         run(params, target, settings)
         warm, warm_cpu = time.perf_counter() - start, time.process_time() - cpu
+        after = _usage()
         lines.append(
             f"string art speed: {nails} nails x {budget} lines on {settings.resolution} px: "
             f"{cold:.2f} s ({cold_cpu:.2f} s processor) with the line table built, "
             f"{warm:.2f} s ({warm_cpu:.2f} s processor) with it cached "
-            f"(goal <= {10 if nails == 200 else 30} s)"
+            f"(goal <= {10 if nails == 200 else 30} s); "
+            # Why wall time exceeds processor time: waits of its own (voluntary switches:
+            # I/O, locks, sleeps; page faults from disk) or other processes taking the
+            # processor (involuntary switches: the machine's load).
+            f"waited: {after[0] - before[0]} voluntary switches, "
+            f"{after[1] - before[1]} page faults from disk, preempted "
+            f"{after[2] - before[2]} times"
         )
     return lines
 

@@ -198,6 +198,12 @@ class Program:
         """The operation kinds the program uses (capability checks without a full scan)."""
         return frozenset(op.kind for op in self.operations)
 
+    def kind_and_line(self, index: int) -> tuple[OpKind, str]:
+        """Operation ``index``'s kind and its :attr:`Operation.line` ("" when the dialect
+        renders it): what a running job reads of every line, without building the operation."""
+        op = self[index]
+        return op.kind, op.line
+
     def indices_of(self, kind: OpKind) -> np.ndarray:
         """Indices of the operations of ``kind``, ascending."""
         found = [i for i, op in enumerate(self.operations) if op.kind is kind]

@@ -275,7 +275,7 @@ class Envelope:
         return Deviation(fault, point, expected, distance, nearest.label, nearest.tag)
 
     def _point(self, values: Sequence[float]) -> Point:
-        point = tuple(float(v) for v in values)
+        point = tuple(map(float, values))
         if len(point) != self.dims:
             raise ValueError(f"{len(point)} coordinates for a path of {self.dims}")
         return point

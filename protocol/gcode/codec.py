@@ -17,6 +17,7 @@ a line.  The CoreXY plotter's firmware says ``OK`` and ``ERROR:<n>``, GRBL
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
@@ -33,6 +34,12 @@ JOG_CANCEL = b"\x85"
 REALTIME_BYTES = frozenset(STATUS_QUERY + FEED_HOLD + CYCLE_START + SOFT_RESET + JOG_CANCEL)
 
 TERMINATOR = b"\n"
+#: A character no line may hold: a real-time byte, or a control byte other than a tab.
+_UNSENDABLE = re.compile(
+    "["
+    + re.escape("".join(sorted({chr(b) for b in REALTIME_BYTES} | {"\x7f"})))
+    + "\x00-\x08\x0a-\x1f]"
+)
 #: The longest line a board takes, its ``\n`` included (GRBL's line buffer).
 MAX_LINE_BYTES = 80
 #: GRBL's serial receive buffer; a character-counting host keeps at most one
@@ -220,13 +227,15 @@ def encode_line(text: str) -> bytes:
     line = text.strip()
     if not line.isascii():
         raise ValueError(f"G-code lines are ASCII; {line!r} is not")
-    for char in line:
+    # One search for the rare bad byte, not a loop over every character of every line.
+    bad = _UNSENDABLE.search(line)
+    if bad is not None:
+        char = bad.group()
         if ord(char) in REALTIME_BYTES:
             raise ValueError(
                 f"{char!r} is a real-time command byte and cannot be part of a line: {line!r}"
             )
-        if (char < " " and char != "\t") or char == "\x7f":
-            raise ValueError(f"control byte {char!r} inside the line {line!r}")
+        raise ValueError(f"control byte {char!r} inside the line {line!r}")
     data = line.encode("ascii") + TERMINATOR
     if len(data) > MAX_LINE_BYTES:
         raise ValueError(

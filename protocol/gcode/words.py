@@ -186,4 +186,10 @@ def scan_words(line: str) -> list[tuple[str, float]]:
     motion gate places what a line could do; whether the board takes the
     line is the board's to answer.
     """
-    return [(letter, float(number)) for letter, number in _ANY_WORD.findall(grbl_text(line))]
+    return scan_grbl_words(grbl_text(line))
+
+
+def scan_grbl_words(code: str) -> list[tuple[str, float]]:
+    """:func:`scan_words` of a line already in GRBL's reading (:func:`grbl_text`'s result):
+    a sender's every line is read so once, not twice."""
+    return [(letter, float(number)) for letter, number in _ANY_WORD.findall(code)]

@@ -1690,7 +1690,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Not sent without confirmation: {0}</source>
-        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
+        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. The lines of one write, in order (list[SentLine]): what hears every line of a running job listens here, once a batch, not once a line. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Bez potvrdenia neodoslané: {0}</translation>
     </message>
     <message>
@@ -3046,7 +3046,6 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within the tool&apos;s reach turns the base and moves the tool there after you confirm</source>
-        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Takes a click&apos;s plot point instead of a move (the &quot;Run from…&quot; dialog picks a stroke). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>Ťahaním posuniete pohľad, kolieskom zväčšíte, Celé ukáže všetko; kliknutie (nie ťahanie) v dosahu nástroja po potvrdení natočí základňu a presunie tam nástroj</translation>
     </message>
     <message>
@@ -3067,6 +3066,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>x on the work</source>
+        <extracomment>A string-art job&apos;s nails and thread (merged when huge), laid out here too. (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view must not scan millions of points on the GUI thread. A merged thread&apos;s chords painted here (see :mod:`widgets.jobs.string_art_picture`). Points in the done trail&apos;s growing piece; past this it is frozen and a new piece starts. A refusal or news about click-to-move, for the dock&apos;s message area. A hole clicked while picking a reference: the reference (0-based) and the hole&apos;s index among the job&apos;s holes in drilling order (the registration row&apos;s numbering). The program now drawn (None: cleared), refused ones too: the drill page walks it. Wall seconds the last :meth:`set_program` took to build the curves. The reference the next click picks a hole for (None: a click moves the machine). Takes a click&apos;s plot point instead of a move (the &quot;Run from…&quot; dialog picks a stroke). Set on a cylindrical machine: the plot is the work&apos;s plane, not two axes.</extracomment>
         <translation>x na obrobku</translation>
     </message>
     <message>
@@ -3075,7 +3075,6 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>a job is under way</source>
-        <extracomment>A ring around the operation the operator is asked about (a hole perhaps drilled). The hole the drill page&apos;s step-through stands at (FIDELITY S2-41). The segments of lines sent but not proven run, for the operator&apos;s resume pick.</extracomment>
         <translation>prebieha úloha</translation>
     </message>
     <message>

@@ -94,9 +94,13 @@ def test_a_grbl_job_goes_compact_and_is_told_as_written(
     session = session_of(station)
     told: list[SentLine] = []
     logged: list[str] = []
+    batches: list[list[SentLine]] = []
     session.lineSent.connect(told.append)
+    session.linesSent.connect(batches.append)
     session.frameSent.connect(lambda text, _raw: logged.append(text))
     start(station, port, tmp_path, "G1 X1.5 Y2 F600 (corner)\nx 3   y 4\nM5 ; pen up\n")
+    # The batches the window hears carry every line sent, once, in order.
+    assert [sent for batch in batches for sent in batch] == told
     assert port.lines()[2:] == [b"G1X1.5Y2F600\n", b"X3Y4\n", b"M5\n"]
     job = [sent.text for sent in told if sent.origin == "job"]
     assert job == ["G1 X1.5 Y2 F600", "x 3   y 4", "M5"]

@@ -69,7 +69,7 @@ def test_the_readers_call_the_lexers_own_functions() -> None:
     assert parser.split_comment is lexer.split_comment
     assert job_words.words_or_none is lexer.words_or_none
     assert line_targets.scan_words is lexer.scan_words
-    assert planned_path.scan_words is lexer.scan_words
+    assert planned_path.scan_grbl_words is lexer.scan_grbl_words
     assert gcode_firmware.split_words is lexer.split_words
     assert gcode_firmware.grbl_text is lexer.grbl_text
 

@@ -82,6 +82,22 @@ def test_lines_that_would_corrupt_the_stream_are_refused(text: str, reason: str)
         encode_line(text)
 
 
+@pytest.mark.parametrize("code", range(128))
+def test_every_ascii_character_inside_a_line_is_sent_or_refused_by_its_kind(code: int) -> None:
+    """Printable characters and the tab go; control bytes, DEL and real-time bytes never."""
+    char = chr(code)
+    realtime = code in (ord("?"), ord("!"), ord("~"), 0x18)
+    control = (code < 0x20 and char != "\t") or code == 0x7F
+    if realtime:
+        with pytest.raises(ValueError, match="real-time"):
+            encode_line(f"G1{char}X1")
+    elif control:
+        with pytest.raises(ValueError, match="control byte"):
+            encode_line(f"G1{char}X1")
+    else:
+        assert encode_line(f"G1{char}X1") == f"G1{char}X1\n".encode("ascii")
+
+
 # -- decoding every reply form ------------------------------------------------------------
 
 

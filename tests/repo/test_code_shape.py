@@ -37,8 +37,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/jobs/formats/string_art/program.py::build_program": "not yet taken on",
     "protocol/emulator/gcode_interpreter.py::Interpreter._plan": "not yet taken on",
     "widgets/developer/pane.py::EmulatorBox.__init__": "not yet taken on",
-    "widgets/jobs/preview.py::JobPreview._build": "not yet taken on",
-    "widgets/jobs/preview.py::JobPreview": "31 with the step-through marker (the seam)",
     "widgets/jobs/registration_bar.py::RegistrationBar.__init__": "not yet taken on",
     "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog.__init__": (
         "not yet taken on"

@@ -61,6 +61,14 @@ from app.jobs.registration import hole_positions
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import MachineProfile
 from app.station import Station
+from widgets.jobs.preview_items import (
+    DONE_COLOUR,
+    LIMIT_COLOUR,
+    POSITION_COLOUR,
+    TRAVEL_COLOUR,
+    WORK_COLOUR,
+    PreviewItems,
+)
 from widgets.jobs.string_art_picture import (
     ThreadPicture,
     ThreadPictureItem,
@@ -77,12 +85,6 @@ from widgets.retranslate import Texts
 from widgets.theme import LIGHT, PlotColours
 from widgets.units import shown_unit
 
-TRAVEL_COLOUR = "#9a9a9a"
-WORK_COLOUR = "#1f4fb4"
-DONE_COLOUR = "#2ca02c"
-POSITION_COLOUR = "#d62728"
-QUESTION_COLOUR = "#ff7f0e"
-LIMIT_COLOUR = "#e08a00"
 DEFAULT_THROTTLE_MS = 33.0
 # The plot's least height (px), when the bands over the preview (a prompt, the
 # registration row, a resume offer) take their room from it; without them it has
@@ -289,7 +291,14 @@ class ProgramGeometry:
         ``view_px``: the plot's size in device pixels, when known: a merged string-art
         thread is then painted into an image at the scale the view will fit it to.
         """
-        path = program.preview_path(x_axis, y_axis)
+        #: A string-art job's nails and thread (merged when huge), laid out here too.
+        self.thread = ThreadGeometry.of(program) if isinstance(program, StringArtProgram) else None
+        reach = 0.0
+        if self.thread is not None and self.thread.merged and isinstance(program, StringArtProgram):
+            # The winding is hidden under the thread: only the travel and its extent.
+            path, reach = program.preview_travel()
+        else:
+            path = program.preview_path(x_axis, y_axis)
         if polar and y_axis is not None and program.preview_plane == "axes":
             path = board_plane(path)
         # Views, not copies: a million moves' copies were 16 MB more at the load's peak.
@@ -298,13 +307,12 @@ class ProgramGeometry:
         self.travel = _runs(xs, ys, ops, pen, wanted=False)
         self.work = _runs(xs, ys, ops, pen, wanted=True)
         self.markers = self._markers(program, xs, ys, ops)
-        #: A string-art job's nails and thread (merged when huge), laid out here too.
-        self.thread = ThreadGeometry.of(program) if isinstance(program, StringArtProgram) else None
+        around = np.array([-reach, reach]) if reach > 0 else _EMPTY
         #: (x0, x1, y0, y1) of everything drawn, None when nothing is: fitting the view
         #: must not scan millions of points on the GUI thread.
         self.bounds = _bounds(
-            (self.travel.x, self.work.x, self.markers.x),
-            (self.travel.y, self.work.y, self.markers.y),
+            (self.travel.x, self.work.x, self.markers.x, around),
+            (self.travel.y, self.work.y, self.markers.y, around),
         )
         if self.thread is not None:
             # The needle's winding path is hidden under the thread: millions of points that
@@ -550,41 +558,7 @@ class JobPreview(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(2)
-        bar = QHBoxLayout()
-        bar.setSpacing(6)
-        polar = self.polar is not None
-        t = self.texts = Texts(self)
-        self.hint_label = t.label(lambda: legend_html(polar))
-        self.hint_label.setObjectName("preview_hint")
-        t.set(
-            self.hint_label.setToolTip,
-            lambda: (
-                self.tr(
-                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within "
-                    "the tool's reach turns the base and moves the tool there after you confirm"
-                )
-                if polar
-                else self.tr(
-                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside "
-                    "the travel limits moves the machine there after you confirm"
-                )
-            ),
-        )
-        self.fit_button = t.button(
-            lambda: self.tr("Fit"),
-            lambda: (
-                self.tr("Show the whole job (without a job, the tool's reach)")
-                if polar
-                else self.tr("Show the whole job and the machine's travel")
-            ),
-        )
-        self.fit_button.setObjectName("preview_fit")
-        t.also(self._update_enabled)
-        self.fit_button.clicked.connect(self.fit)
-        bar.addWidget(self.hint_label, 1)
-        bar.addWidget(self.fit_button)
-        layout.addLayout(bar)
-
+        layout.addLayout(self._build_bar())
         self.plot_widget = pg.PlotWidget(background="w")
         self.plot_widget.setObjectName("job_preview_plot")
         self.plot_widget.setMinimumSize(240, PLOT_MIN_HEIGHT)
@@ -618,61 +592,54 @@ class JobPreview(QWidget):
         else:
             (x0, x1), (y0, y1) = self._limits_2d()
             outline_x, outline_y = np.array([x0, x1, x1, x0, x0]), np.array([y0, y0, y1, y1, y0])
-        self.limits_curve = self.plot.plot(
-            outline_x,
-            outline_y,
-            pen=pg.mkPen(LIMIT_COLOUR, width=1, style=Qt.PenStyle.DashDotLine),
+        items = self.items = PreviewItems(self.plot, outline_x, outline_y)
+        self.limits_curve, self.path_picture = items.limits_curve, items.path_picture
+        self.travel_curve, self.work_curve = items.travel_curve, items.work_curve
+        self.done_travel_curve, self.done_work_curve = (
+            items.done_travel_curve,
+            items.done_work_curve,
         )
-        # Width-1 pens: wider ones make Qt stroke segment by segment, far slower on big paths.
-        self.travel_curve = self._curve(
-            pg.mkPen(TRAVEL_COLOUR, width=1, style=Qt.PenStyle.DashLine)
-        )
-        self.work_curve = self._curve(pg.mkPen(WORK_COLOUR, width=1))
-        self.done_travel_curve = self._curve(
-            pg.mkPen(DONE_COLOUR, width=1, style=Qt.PenStyle.DashLine)
-        )
-        self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
-        self.work_markers = self._markers(WORK_COLOUR, 6)
-        self.done_markers = self._markers(DONE_COLOUR, 6)
-        for item in (self.limits_curve, self.travel_curve, self.work_curve, self.work_markers):
-            # Unchanged while a job runs, yet repainted with every frame of its done part and
-            # position (10 000 dots drawn again and again): painted once into a pixmap
-            # instead, redrawn only when their data or the view changes.
-            item.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
-        self.position_marker = pg.ScatterPlotItem(
-            size=16,
-            symbol="+",
-            pen=pg.mkPen(POSITION_COLOUR, width=2),
-            brush=pg.mkBrush(POSITION_COLOUR),
-        )
-        self.position_marker.setZValue(10)
-        self.plot.addItem(self.position_marker)
-        #: A ring around the operation the operator is asked about (a hole perhaps drilled).
-        self.question_marker = pg.ScatterPlotItem(
-            size=22, symbol="o", pen=pg.mkPen(QUESTION_COLOUR, width=3), brush=None
-        )
-        self.question_marker.setZValue(11)
-        self.plot.addItem(self.question_marker)
-        #: The hole the drill page's step-through stands at (FIDELITY S2-41).
-        self.step_marker = pg.ScatterPlotItem(
-            size=18, symbol="s", pen=pg.mkPen(QUESTION_COLOUR, width=2), brush=None
-        )
-        self.step_marker.setZValue(11)
-        self.plot.addItem(self.step_marker)
-        #: The segments of lines sent but not proven run, for the operator's resume pick.
-        self.candidate_curve = self._curve(pg.mkPen(QUESTION_COLOUR, width=3))
-        self.candidate_curve.setZValue(9)
+        self.work_markers, self.done_markers = items.work_markers, items.done_markers
+        self.position_marker, self.question_marker = items.position_marker, items.question_marker
+        self.step_marker, self.candidate_curve = items.step_marker, items.candidate_curve
         self.plot.scene().sigMouseClicked.connect(self._clicked)
 
-    def _curve(self, pen: object) -> pg.PlotDataItem:
-        return self.plot.plot(pen=pen, connect="finite")
-
-    def _markers(self, colour: str, size: int) -> pg.ScatterPlotItem:
-        markers = pg.ScatterPlotItem(
-            size=size, symbol="o", pen=pg.mkPen(colour), brush=pg.mkBrush(colour)
+    def _build_bar(self) -> QHBoxLayout:
+        """The row over the plot: the colours' key (a legend inside would hide the path), Fit."""
+        bar = QHBoxLayout()
+        bar.setSpacing(6)
+        polar = self.polar is not None
+        t = self.texts = Texts(self)
+        self.hint_label = t.label(lambda: legend_html(polar))
+        self.hint_label.setObjectName("preview_hint")
+        t.set(
+            self.hint_label.setToolTip,
+            lambda: (
+                self.tr(
+                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) within "
+                    "the tool's reach turns the base and moves the tool there after you confirm"
+                )
+                if polar
+                else self.tr(
+                    "Drag pans, the wheel zooms, Fit shows it all; a click (not a drag) inside "
+                    "the travel limits moves the machine there after you confirm"
+                )
+            ),
         )
-        self.plot.addItem(markers)
-        return markers
+        self.fit_button = t.button(
+            lambda: self.tr("Fit"),
+            lambda: (
+                self.tr("Show the whole job (without a job, the tool's reach)")
+                if polar
+                else self.tr("Show the whole job and the machine's travel")
+            ),
+        )
+        self.fit_button.setObjectName("preview_fit")
+        t.also(self._update_enabled)
+        self.fit_button.clicked.connect(self.fit)
+        bar.addWidget(self.hint_label, 1)
+        bar.addWidget(self.fit_button)
+        return bar
 
     def _limits_2d(self) -> tuple[tuple[float, float], tuple[float, float]]:
         limits = self.travel_limits
@@ -784,6 +751,7 @@ class JobPreview(QWidget):
             self.path_geometry = None
             for curve in (self.travel_curve, self.work_curve):
                 curve.setData(_EMPTY, _EMPTY)
+            self.path_picture.set_layers((), None)
             self.work_markers.setData(x=_EMPTY, y=_EMPTY)
         else:
             y_axis = self.axis_names[1] if len(self.axis_names) > 1 else None
@@ -794,8 +762,7 @@ class JobPreview(QWidget):
                     program, self.axis_names[0], y_axis, polar=self.polar is not None
                 )
             self.path_geometry = geometry
-            self.travel_curve.setData(geometry.travel.x, geometry.travel.y, connect="finite")
-            self.work_curve.setData(geometry.work.x, geometry.work.y, connect="finite")
+            self.items.show_path(geometry.travel, geometry.work, geometry.bounds)
             self.work_markers.setData(x=geometry.markers.x, y=geometry.markers.y)
         thread = self.path_geometry.thread if self.path_geometry is not None else None
         picture = self.path_geometry.thread_picture if self.path_geometry is not None else None

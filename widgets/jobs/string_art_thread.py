@@ -46,6 +46,28 @@ def band_alpha(alpha: int, band: int) -> int:
     return max(1, min(255, round(255 * opacity)))
 
 
+#: Connections numbered at a time by :func:`_chords_of` (each gather holds the interpreter lock).
+CHORD_CHUNK = 1 << 18
+
+
+def _chords_of(key: np.ndarray, keys: int) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(key, return_inverse=True)`` for keys below ``keys``, without a sort.
+
+    Sorting two million connections held the interpreter lock a tenth of a
+    second and more per call (the window waited); a table of the nail pairs
+    (some hundred thousand) numbers them in a few gathers, a chunk at a time.
+    """
+    present = np.zeros(keys, dtype=bool)
+    for first in range(0, len(key), CHORD_CHUNK):
+        present[key[first : first + CHORD_CHUNK]] = True
+    unique = np.flatnonzero(present)
+    rank = np.cumsum(present, dtype=np.int64) - 1
+    chord_of = np.empty(len(key), dtype=np.int64)
+    for first in range(0, len(key), CHORD_CHUNK):
+        chord_of[first : first + CHORD_CHUNK] = rank[key[first : first + CHORD_CHUNK]]
+    return unique, chord_of
+
+
 @dataclass(frozen=True)
 class ThreadGeometry:
     """A string-art program's nails, thread and drill ends, as the preview needs them."""
@@ -92,7 +114,7 @@ class ThreadGeometry:
         a, b = sequence[:-1], sequence[1:]
         low, high = np.minimum(a, b), np.maximum(a, b)
         key = low * len(xy) + high  # the same chord whichever way it is wound
-        unique, chord_of = np.unique(key, return_inverse=True)
+        unique, chord_of = _chords_of(key, len(xy) * len(xy))
         ends = np.column_stack((unique // len(xy), unique % len(xy)))
         merged = cls(xy, (_EMPTY, _EMPTY), connections, chord_of.astype(np.int64), ends, drill_ends)
         return replace(merged, whole=tuple(merged.bands(merged.counts(connections))))

@@ -310,14 +310,15 @@ class GcodePanel(QWidget):
         self.alarm_band.watch(session)
         if session is not None:
             # Bound methods: Qt drops them with the panel (a lambda would outlive it).
-            session.lineSent.connect(self._show_sent)
-            session.lineSent.connect(self._sync_hand_zeroing)
+            session.linesSent.connect(self._show_sent)
+            session.linesSent.connect(self._sync_hand_zeroing)
             session.replyText.connect(self._show_reply)
             session.statusChanged.connect(self._show_status)
 
-    def _show_sent(self, sent: SentLine) -> None:
-        if sent.origin in ("console", "intent"):
-            self.output.appendPlainText(f"> {sent.text}")
+    def _show_sent(self, lines: list[SentLine]) -> None:
+        for sent in lines:  # one write's lines at once: a job's are many, and never shown
+            if sent.origin in ("console", "intent"):
+                self.output.appendPlainText(f"> {sent.text}")
 
     def _show_reply(self, text: str) -> None:
         self.output.appendPlainText(f"< {text}")

@@ -50,6 +50,9 @@ from app.jobs.program import Program, ProgramPath
 from app.profiles import MachineProfile
 from protocol.gcode.junctions import lookahead_entries, profile_seconds
 
+#: Operations of a string-art program timed at a time (see :func:`_one_axis_moves`).
+ESTIMATE_CHUNK = 1 << 18
+
 
 def estimate_gcode(
     program: Program,
@@ -247,21 +250,40 @@ def _axis_limited(profile: MachineProfile, directions: np.ndarray) -> tuple[np.n
 def _one_axis_moves(
     program: StringArtProgram, profile: MachineProfile, start: Mapping[str, float]
 ) -> Estimate:
-    """Each move a trapezoid on its one axis at that axis' limits, from the axis' last value."""
-    seconds = np.zeros(len(program))
-    for axis in profile.axes:
-        if axis.name not in WINDER_AXES:
-            continue
-        ops = np.flatnonzero(program.move_axis == WINDER_AXES.index(axis.name))
-        values = program.move_values[ops]
-        previous = np.concatenate(([start.get(axis.name, 0.0)], values[:-1]))
-        distance = np.abs(values - previous)
-        v, a = axis.max_speed, axis.max_acceleration
-        with np.errstate(invalid="ignore"):
-            seconds[ops] = np.where(
-                distance >= v * v / a, distance / v + v / a, 2.0 * np.sqrt(distance / a)
-            )
+    """Each move a trapezoid on its one axis at that axis' limits, from the axis' last value.
+
+    A chunk of operations at a time, carrying each axis' last value: numpy's
+    passes over 8 million operations at once held the interpreter lock a tenth
+    of a second each, and the window (this runs on the loading thread) waited.
+    """
+    count = len(program)
+    seconds = np.zeros(count)
+    axes = [
+        (WINDER_AXES.index(axis.name), axis) for axis in profile.axes if axis.name in WINDER_AXES
+    ]
+    last = {column: start.get(axis.name, 0.0) for column, axis in axes}
+    for first in range(0, count, ESTIMATE_CHUNK):
+        moved = program.move_axis[first : first + ESTIMATE_CHUNK]
+        for column, axis in axes:
+            ops = np.flatnonzero(moved == column)
+            if not len(ops):
+                continue
+            values = program.move_values[first + ops]
+            previous = np.concatenate(([last[column]], values[:-1]))
+            last[column] = float(values[-1])
+            distance = np.abs(values - previous)
+            v, a = axis.max_speed, axis.max_acceleration
+            with np.errstate(invalid="ignore"):
+                seconds[first + ops] = np.where(
+                    distance >= v * v / a, distance / v + v / a, 2.0 * np.sqrt(distance / a)
+                )
     seconds[~np.isfinite(seconds)] = 0.0
     seconds[program.dwell_ops] += program.dwell_s  # the drill's 250 ms at each hole's bottom
-    cumulative = np.cumsum(seconds)
+    cumulative = seconds  # summed in place, a chunk at a time, carrying the total
+    total = 0.0
+    for first in range(0, count, ESTIMATE_CHUNK):
+        piece = cumulative[first : first + ESTIMATE_CHUNK]
+        np.cumsum(piece, out=piece)
+        piece += total
+        total = float(piece[-1])
     return Estimate(float(cumulative[-1]) if len(cumulative) else 0.0, cumulative)

@@ -155,7 +155,7 @@ class GcodeDriver(JobDriver):
         if old is not None:
             try:
                 self._follow(stream_too=False)
-                old.lineSent.disconnect(self._on_sent)
+                old.linesSent.disconnect(self._on_sent)
                 old.jobAdvanced.disconnect(self._on_advanced)
                 old.lineAcknowledged.disconnect(self._on_line_ok)
                 old.lineFailed.disconnect(self._on_error)
@@ -166,7 +166,7 @@ class GcodeDriver(JobDriver):
                 pass  # already deleted with its link
         self.session = session if isinstance(session, GcodeSession) else None
         if self.session is not None:
-            self.session.lineSent.connect(self._on_sent)
+            self.session.linesSent.connect(self._on_sent)
             self.session.jobAdvanced.connect(self._on_advanced)
             self.session.lineAcknowledged.connect(self._on_line_ok)
             self.session.lineFailed.connect(self._on_error)
@@ -316,6 +316,10 @@ class GcodeDriver(JobDriver):
             return True
         if wait is not None or sent_all:
             if not session.settled:
+                if session.status_asked_at is None:
+                    # Asked now, not at the next poll (up to status_ms away): every line is
+                    # answered, and the job is done, or waits, once a report shows it idle.
+                    session.query_status()
                 return True  # the session's next status report can show it settled
             self._hold()
             if wait is not None:
@@ -373,9 +377,14 @@ class GcodeDriver(JobDriver):
 
     # --- replies ------------------------------------------------------------------
 
-    def _on_sent(self, sent: SentLine) -> None:
-        if self.stream is not None and sent.origin == "job" and sent.op_index is not None:
-            self.stream.note_written(sent.op_index)
+    def _on_sent(self, lines: list[SentLine]) -> None:
+        """One write's lines (a batch: a signal a line cost the window as much as the line)."""
+        stream = self.stream
+        if stream is None:
+            return
+        for sent in lines:
+            if sent.origin == "job" and sent.op_index is not None:
+                stream.note_written(sent.op_index)
 
     def _on_line_ok(self, sent: SentLine) -> None:
         """The set-up or the way back answered, line by line: the job goes on after the last."""

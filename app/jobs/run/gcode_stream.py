@@ -339,10 +339,12 @@ class GcodeStream:
         program, pending = self.program, self.pending
         while len(out) < count and self.next_index < len(program):
             index = self.next_index
-            op = program[index]
-            if op.kind is OpKind.WAIT:
+            kind, line = program.kind_and_line(index)
+            if kind is OpKind.WAIT:
                 break
-            text = self.line_for(index, op)  # a G-code file builds each operation when asked
+            # A line as written goes as it is (render_operation's first answer); only the
+            # others are rendered, from an operation built for them.
+            text = line if line and kind is not OpKind.COMMENT else self.line_for(index)
             if self.lead is not None and self.lead[0] == index and text is not None:
                 text = f"{self.lead[1]} {text}"
             self.next_index += 1

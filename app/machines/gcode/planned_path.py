@@ -17,7 +17,8 @@ the envelope, and nothing is judged until the machine next stands idle with
 every line answered, where the session anchors it again.
 
 Lines are read by the one G-code lexer as GRBL reads them
-(:func:`protocol.gcode.words.scan_words`), as the console's gate reads them.
+(:func:`protocol.gcode.words.scan_grbl_words` of its GRBL reading), as the console's gate
+reads them.
 
 Pure logic, no Qt: the session feeds it the lines it wrote.
 """
@@ -27,7 +28,7 @@ from __future__ import annotations
 import math
 
 from app.machines.envelope import Envelope, arc_box
-from protocol.gcode.words import grbl_text, scan_words
+from protocol.gcode.words import grbl_text, scan_grbl_words
 
 _INCH = 25.4
 #: G codes whose motion or coordinates the station cannot follow: the envelope lets go.
@@ -75,22 +76,27 @@ class PlannedPath:
             if code.startswith(("$H", "$RST", "$C")):
                 self.envelope.release()  # homing, settings reset, check mode: not followed
             return
-        words = scan_words(code)
-        g_codes = {round(value, 1) for letter, value in words if letter == "G"}
-        m_codes = {round(value, 1) for letter, value in words if letter == "M"}
-        relative, inch = self.relative, self.inch
-        if 90.0 in g_codes:
-            relative = False
-        if 91.0 in g_codes:
-            relative = True
-        if 20.0 in g_codes:
-            inch = True
-        if 21.0 in g_codes:
-            inch = False
-        motion = self.motion
-        for candidate in (0.0, 1.0, 2.0, 3.0):
-            if candidate in g_codes:
-                motion = candidate
+        words = scan_grbl_words(code)
+        g_codes: set[float] = set()
+        m_codes: set[float] = set()
+        for letter, value in words:
+            if letter == "G":
+                g_codes.add(round(value, 1))
+            elif letter == "M":
+                m_codes.add(round(value, 1))
+        relative, inch, motion = self.relative, self.inch, self.motion
+        if g_codes:  # most of a drawing's lines are axis words alone: no mode changes
+            if 90.0 in g_codes:
+                relative = False
+            if 91.0 in g_codes:
+                relative = True
+            if 20.0 in g_codes:
+                inch = True
+            if 21.0 in g_codes:
+                inch = False
+            for candidate in (0.0, 1.0, 2.0, 3.0):
+                if candidate in g_codes:
+                    motion = candidate
         if not jog:  # a jog leaves the board's modes as they were
             self.relative, self.inch, self.motion = relative, inch, motion
         else:

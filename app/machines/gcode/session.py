@@ -80,6 +80,9 @@ class GcodeSession(MachineSession):
     """frameSent carries the line text (or the real-time byte's name), frameReceived a reply."""
 
     lineSent = Signal(object)  # SentLine
+    #: The lines of one write, in order (list[SentLine]): what hears every line of a running
+    #: job listens here, once a batch, not once a line.
+    linesSent = Signal(object)
     lineAcknowledged = Signal(object)  # SentLine (not a job's line the job counted)
     #: Lines of the followed job were answered (counted there): once per batch of replies.
     jobAdvanced = Signal()

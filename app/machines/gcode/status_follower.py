@@ -71,6 +71,8 @@ class StatusFollower:
                 session.envelope.release()
             session.frameSent.emit(sent.text, raw)
             session.lineSent.emit(sent)
+        if written:
+            session.linesSent.emit([sent for _raw, sent in written])
 
     def check_lost_answers(
         self,

@@ -229,6 +229,16 @@ class GcodeProgram(Program):
     def indices_of(self, kind: OpKind) -> np.ndarray:
         return np.flatnonzero(self.data.kinds == KIND_CODE[kind]).astype(np.int64)
 
+    def kind_and_line(self, index: int) -> tuple[OpKind, str]:
+        # From the arrays: building each line's operation (its target's mapping) cost a
+        # running job about as much as the rest of sending the line.
+        d = self.data
+        if index < 0:
+            index += len(d)
+        if not 0 <= index < len(d):
+            raise IndexError(index)
+        return KINDS[int(d.kinds[index])], d.sent[index]
+
     def limit_violations(self, limits: Mapping[str, tuple[float, float]]) -> list[LimitViolation]:
         """One entry per move and axis outside the travel; arcs are judged by their vertices."""
         d = self.data

@@ -159,6 +159,8 @@ class StringArtProgram(Program):
         out = np.empty(len(ops))
         carry = -1  # the last operation so far that set the axis
         for first in range(0, len(axis), COLUMN_CHUNK):
+            if not len(ops) or first > ops[-1]:
+                break  # past the last operation asked about: nothing more to carry
             stop = min(first + COLUMN_CHUNK, len(axis))
             last = np.where(axis[first:stop] == column, np.arange(first, stop), -1)
             np.maximum.accumulate(last, out=last)
@@ -237,6 +239,28 @@ class StringArtProgram(Program):
         coords = np.column_stack((radius * np.cos(angle), radius * np.sin(angle)))
         pen = moves > self.wait_index
         return ProgramPath(coords, moves.astype(np.int64), pen)
+
+    def preview_travel(self) -> tuple[ProgramPath, float]:
+        """The board-plane path up to the wait (the drilling: travel) and how far from the
+        centre the winding goes.
+
+        The preview hides the winding under the thread it lays: for a
+        2-million-entry job its 8 million vertices took seconds to lay out and
+        held the interpreter lock (the window waited) only to be thrown away.
+        """
+        moves = self._move_indices()
+        moves = moves[: int(np.searchsorted(moves, self.wait_index, side="right"))]
+        angle = np.radians(np.nan_to_num(self.column_after(0, moves)))
+        radius = np.nan_to_num(self.column_after(1, moves))
+        coords = np.column_stack((radius * np.cos(angle), radius * np.sin(angle)))
+        path = ProgramPath(coords, moves.astype(np.int64), np.zeros(len(moves), dtype=bool))
+        reach = 0.0
+        for first in range(max(self.wait_index + 1, 0), len(self.move_axis), COLUMN_CHUNK):
+            piece = slice(first, first + COLUMN_CHUNK)
+            values = self.move_values[piece][self.move_axis[piece] == _COLUMN["X"]]
+            if len(values):
+                reach = max(reach, float(np.nanmax(np.abs(values), initial=0.0)))
+        return path, reach
 
     @cached_property
     def _kind_set(self) -> frozenset[OpKind]:
