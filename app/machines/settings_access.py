@@ -16,8 +16,7 @@ what the device keeps.
 
 from __future__ import annotations
 
-import weakref
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
@@ -195,37 +194,3 @@ class SettingsAccess(QObject):
     def _link_changed(self, state: LinkState) -> None:
         if state in (LinkState.LOST, LinkState.DISCONNECTED):
             self._fail(tr("the link went down before the device answered"))
-
-
-#: One access per session, made when first asked for (it lives as long as its session).
-_MADE: weakref.WeakKeyDictionary[QObject, SettingsAccess] = weakref.WeakKeyDictionary()
-#: Makers by session type, registered by the dialects' modules: the session, or None.
-MAKERS: list[Callable[[QObject], SettingsAccess | None]] = []
-
-
-def settings_access(session: QObject | None) -> SettingsAccess | None:
-    """The stored settings of ``session``, or None when its device keeps none the station edits.
-
-    (The stage's parameters have their own page and calls: Dynamics, ``read_parameters``.)
-    """
-    if session is None:
-        return None
-    made = _MADE.get(session)
-    if made is None:
-        _load_makers()
-        for maker in MAKERS:
-            made = maker(session)
-            if made is not None:
-                _MADE[session] = made
-                break
-    return made
-
-
-def _load_makers() -> None:
-    """The dialects' makers, imported here and not at the top: they import this module."""
-    if MAKERS:
-        return
-    from app.machines.gcode.grbl_settings_access import grbl_access
-    from app.machines.usb3.eeprom_access import eeprom_access
-
-    MAKERS.extend((grbl_access, eeprom_access))

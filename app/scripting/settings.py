@@ -13,11 +13,12 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TypeVar
 
-from app.machines.settings_access import Outcome, SettingsAccess, settings_access
+from app.machines.settings_access import Outcome, SettingsAccess
 from app.scripting import settings_snapshot as snapshots
 from app.scripting.errors import SettingRefused, Unsupported
 from app.scripting.settings_snapshot import SettingDifference
 from app.scripting.waits import MachinePort, Operation, Wait
+from app.stored_access import settings_access
 
 T = TypeVar("T")
 #: How long a write waits for the board to settle (the answer to a line just sent).

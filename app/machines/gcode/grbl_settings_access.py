@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from PySide6.QtCore import QCoreApplication, QObject
+from PySide6.QtCore import QCoreApplication
 
 from app.machines.gcode.grbl_settings import GRBL_SETTINGS, cross_check, parse_setting_line
 from app.machines.gcode.session import GcodeSession, SentLine
@@ -138,10 +138,3 @@ class GrblSettingsAccess(SettingsAccess):
     def _board_reset(self) -> None:
         self._unanswered.clear()
         self._fail(tr("the board was reset before it answered"))
-
-
-def grbl_access(session: QObject) -> SettingsAccess | None:
-    """GRBL's settings, on a G-code session whose firmware lists them (``$$`` in its words)."""
-    if isinstance(session, GcodeSession) and "$$" in session.settings.words:
-        return GrblSettingsAccess(session)
-    return None

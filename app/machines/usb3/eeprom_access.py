@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP
 
 from app.machines.settings_access import SettingsAccess
 from app.machines.stored_settings import Kind, StoredSetting
@@ -152,8 +152,3 @@ class Usb3EepromAccess(SettingsAccess):
             self._finish_read(heard)
         else:
             self._finish_write(heard, {})
-
-
-def eeprom_access(session: QObject) -> SettingsAccess | None:
-    """The EEPROM values of a usb3 session."""
-    return Usb3EepromAccess(session) if isinstance(session, Usb3Session) else None
