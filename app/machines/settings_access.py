@@ -41,10 +41,6 @@ class Outcome:
         return not self.refusals
 
 
-def tr(text: str) -> str:
-    return QCoreApplication.translate("SettingsAccess", text)
-
-
 class SettingsAccess(QObject):
     """The stored settings of one session; subclasses speak the wire."""
 
@@ -76,11 +72,11 @@ class SettingsAccess(QObject):
     def why_not_now(self) -> str | None:
         """Why nothing may be read or written now (in the operator's language), or None."""
         if self.model.link_state not in (LinkState.CONNECTED, LinkState.STALE):
-            return tr("not connected")
+            return QCoreApplication.translate("SettingsAccess", "not connected")
         if self.model.jog_lock_reason is not None:
-            return tr("a job is running")
+            return QCoreApplication.translate("SettingsAccess", "a job is running")
         if self.model.any_moving:
-            return tr("the machine is moving")
+            return QCoreApplication.translate("SettingsAccess", "the machine is moving")
         return None
 
     def cross_check(self, changes: Mapping[str, float]) -> list[str]:
@@ -101,7 +97,9 @@ class SettingsAccess(QObject):
         for key, value in changes.items():
             spec = self.by_key.get(key)
             if spec is None:
-                reasons.append(tr("{0}: no such setting").format(key))
+                reasons.append(
+                    QCoreApplication.translate("SettingsAccess", "{0}: no such setting").format(key)
+                )
                 continue
             problem = spec.check(value)
             if problem is not None:
@@ -118,7 +116,7 @@ class SettingsAccess(QObject):
         self.busy = "read"
         if not self._send_read():
             self.busy = None
-            return tr("not sent")
+            return QCoreApplication.translate("SettingsAccess", "not sent")
         return None
 
     def write(self, changes: Mapping[str, object]) -> str | None:
@@ -128,7 +126,7 @@ class SettingsAccess(QObject):
         counted written once read back like the others.
         """
         if not changes:
-            return tr("nothing to write")
+            return QCoreApplication.translate("SettingsAccess", "nothing to write")
         reasons = self.validate(changes)
         refusal = self.busy_reason() or self.why_not_now()
         if refusal is not None:
@@ -139,14 +137,14 @@ class SettingsAccess(QObject):
         self.busy = "write"
         if not self._send_writes(self._wanted):
             self.busy = None
-            return tr("not sent")
+            return QCoreApplication.translate("SettingsAccess", "not sent")
         return None
 
     def busy_reason(self) -> str | None:
         if self.busy == "read":
-            return tr("a read is under way")
+            return QCoreApplication.translate("SettingsAccess", "a read is under way")
         if self.busy == "write":
-            return tr("a write is under way")
+            return QCoreApplication.translate("SettingsAccess", "a write is under way")
         return None
 
     # --- endings -----------------------------------------------------------------------
@@ -170,9 +168,9 @@ class SettingsAccess(QObject):
             elif key not in refused:
                 kept = "?" if held is None else spec.shown_value(held)
                 refusals.append(
-                    tr("{0}: {1} was written, the device keeps {2}").format(
-                        key, spec.shown_value(wanted), kept
-                    )
+                    QCoreApplication.translate(
+                        "SettingsAccess", "{0}: {1} was written, the device keeps {2}"
+                    ).format(key, spec.shown_value(wanted), kept)
                 )
         self._wanted = {}
         self._end(Outcome("write", written, tuple(refusals)))
@@ -193,4 +191,8 @@ class SettingsAccess(QObject):
 
     def _link_changed(self, state: LinkState) -> None:
         if state in (LinkState.LOST, LinkState.DISCONNECTED):
-            self._fail(tr("the link went down before the device answered"))
+            self._fail(
+                QCoreApplication.translate(
+                    "SettingsAccess", "the link went down before the device answered"
+                )
+            )

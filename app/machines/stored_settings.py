@@ -17,11 +17,21 @@ from __future__ import annotations
 
 import enum
 import math
+import re
 from dataclasses import dataclass
 
-from PySide6.QtCore import QCoreApplication
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QLocale
 
 from app.local_numbers import local_number
+
+#: The unit words of the stored settings, for lupdate (symbols like mm pass unchanged; the
+#: window's :mod:`widgets.units` says the others in the same context).
+UNIT_WORDS = (
+    QT_TRANSLATE_NOOP("Unit", "step/mm"),
+    QT_TRANSLATE_NOOP("Unit", "RPM"),
+)
+
+_DECIMAL_POINT = re.compile(r"(?<=\d)\.(?=\d)")
 
 
 class Kind(enum.Enum):
@@ -74,22 +84,28 @@ class StoredSetting:
         return QCoreApplication.translate(self.context, self.description)
 
     def shown_unit(self) -> str:
-        return QCoreApplication.translate("StoredSetting", self.unit) if self.unit else ""
+        return QCoreApplication.translate("Unit", self.unit) if self.unit else ""
 
     def check(self, value: object) -> str | None:
         """Why ``value`` must not be written, in the operator's language; None: it may."""
         name = f"{self.key} ({self.shown_label()})"
         if isinstance(value, bool) or not isinstance(value, int | float):
-            return tr("{0}: {1!r} is not a number").format(name, value)
+            return QCoreApplication.translate("StoredSetting", "{0}: {1!r} is not a number").format(
+                name, value
+            )
         if not math.isfinite(value):
-            return tr("{0}: {1} is not a number").format(name, value)
+            return QCoreApplication.translate("StoredSetting", "{0}: {1} is not a number").format(
+                name, value
+            )
         whole = self.kind is not Kind.DECIMAL
         if whole and value != int(value):
-            return tr("{0}: must be a whole number, not {1}").format(name, local_number(value))
+            return QCoreApplication.translate(
+                "StoredSetting", "{0}: must be a whole number, not {1}"
+            ).format(name, local_number(value))
         if not self.low <= value <= self.high:
-            text = tr("{0}: must be within {1}…{2} {3}").format(
-                name, local_number(self.low), local_number(self.high), self.shown_unit()
-            )
+            text = QCoreApplication.translate(
+                "StoredSetting", "{0}: must be within {1}…{2} {3}"
+            ).format(name, local_number(self.low), local_number(self.high), self.shown_unit())
             text = text.rstrip()
             if self.narrowed:
                 text += f" ({QCoreApplication.translate(self.context, self.narrowed)})"
@@ -97,11 +113,13 @@ class StoredSetting:
         if self.kind is Kind.DECIMAL and abs(round(value, self.decimals) - value) > 1e-9 * max(
             1.0, abs(value)
         ):
-            return tr("{0}: at most {1} decimals are kept, not {2}").format(
-                name, self.decimals, local_number(value)
-            )
+            return QCoreApplication.translate(
+                "StoredSetting", "{0}: at most {1} decimals are kept, not {2}"
+            ).format(name, self.decimals, local_number(value))
         if self.kind is Kind.CHOICE and int(value) not in {v for v, _ in self.choices}:
-            return tr("{0}: {1} is none of the choices").format(name, local_number(value))
+            return QCoreApplication.translate(
+                "StoredSetting", "{0}: {1} is none of the choices"
+            ).format(name, local_number(value))
         return None
 
     def wire_text(self, value: float) -> str:
@@ -131,11 +149,9 @@ class StoredSetting:
         if self.kind is Kind.CHOICE:
             for number, label in self.choices:
                 if number == int(value):
-                    return QCoreApplication.translate(self.context, label)
+                    text = QCoreApplication.translate(self.context, label)
+                    # "M8 (1.25 mm)": the pitch with the language's decimal separator.
+                    return _DECIMAL_POINT.sub(QLocale().decimalPoint(), text)
         if self.kind is Kind.DECIMAL:
             return local_number(value)
         return str(int(value))
-
-
-def tr(text: str) -> str:
-    return QCoreApplication.translate("StoredSetting", text)

@@ -166,7 +166,7 @@ class StoredSettingsPanel(QWidget):
         else:
             low, high = localized(f"{spec.low:g}"), localized(f"{spec.high:g}")
             allowed = f"{low}…{high} {spec.shown_unit()}".rstrip()
-        text = f"{spec.shown_description()}\n{self.tr('Allowed: {0}').format(allowed)}"
+        text = spec.shown_description() + "\n" + self.tr("Allowed: {0}").format(allowed)
         if spec.bits:
             bits = ", ".join(
                 f"{1 << i} = {QCoreApplication.translate(spec.context, bit)}"

@@ -159,28 +159,33 @@ def cross_check(
     after = {**held, **changes}
     reasons: list[str] = []
 
-    def tr(text: str) -> str:
-        return QCoreApplication.translate(CONTEXT, text)
-
     touched = set(changes)
     if {"$20", "$22"} & touched and after.get("$20") == 1 and after.get("$22") != 1:
-        reasons.append(tr("$20 (soft limits) needs homing: $22=1"))
+        reasons.append(
+            QCoreApplication.translate("GrblSetting", "$20 (soft limits) needs homing: $22=1")
+        )
     if {"$30", "$31"} & touched and "$30" in after and "$31" in after:
         if after["$31"] >= after["$30"]:
-            reasons.append(tr("$31 (minimum spindle speed) must be below $30"))
+            reasons.append(
+                QCoreApplication.translate(
+                    "GrblSetting", "$31 (minimum spindle speed) must be below $30"
+                )
+            )
     for index, axis in enumerate(profile.axes[: len(GRBL_AXES)]):
         travel_key, steps_key, rate_key = f"${130 + index}", f"${100 + index}", f"${110 + index}"
         if travel_key in touched and after[travel_key] > axis.travel:
             reasons.append(
-                tr("{0}: at most the mechanical travel, {1} mm").format(
-                    travel_key, local_number(axis.travel)
-                )
+                QCoreApplication.translate(
+                    "GrblSetting", "{0}: at most the mechanical travel, {1} mm"
+                ).format(travel_key, local_number(axis.travel))
             )
         if {steps_key, rate_key} & touched and steps_key in after and rate_key in after:
             rate_hz = after[steps_key] * after[rate_key] / 60
             if rate_hz > MAX_STEP_RATE_HZ:
                 reasons.append(
-                    tr("{0} and {1}: {2} steps/s, more than GRBL steps ({3})").format(
+                    QCoreApplication.translate(
+                        "GrblSetting", "{0} and {1}: {2} steps/s, more than GRBL steps ({3})"
+                    ).format(
                         steps_key,
                         rate_key,
                         local_number(round(rate_hz)),

@@ -23,7 +23,7 @@ from PySide6.QtCore import QCoreApplication
 
 from app.machines.gcode.grbl_settings import GRBL_SETTINGS, cross_check, parse_setting_line
 from app.machines.gcode.session import GcodeSession, SentLine
-from app.machines.settings_access import SettingsAccess, tr
+from app.machines.settings_access import SettingsAccess
 
 #: The lines' origin in the session (the frame log and the console show it).
 ORIGIN = "settings"
@@ -55,13 +55,15 @@ class GrblSettingsAccess(SettingsAccess):
         session = self.session
         state = session.machine_state
         if session.stopping:
-            return tr("the machine is stopping")
+            return QCoreApplication.translate("SettingsAccess", "the machine is stopping")
         if state not in QUIET_STATES:
-            return tr("the board is {0}: settings wait until it stands idle").format(
-                state or tr("not heard from yet")
-            )
+            return QCoreApplication.translate(
+                "SettingsAccess", "the board is {0}: settings wait until it stands idle"
+            ).format(state or QCoreApplication.translate("SettingsAccess", "not heard from yet"))
         if not session.settled:
-            return tr("lines sent before are still being run")
+            return QCoreApplication.translate(
+                "SettingsAccess", "lines sent before are still being run"
+            )
         return None
 
     def cross_check(self, changes: Mapping[str, float]) -> list[str]:
@@ -91,7 +93,7 @@ class GrblSettingsAccess(SettingsAccess):
             if line == "$$":
                 self._heard = {}
             return True
-        self._fail(tr("{0} was not sent").format(line))
+        self._fail(QCoreApplication.translate("SettingsAccess", "{0} was not sent").format(line))
         return False
 
     # --- replies ----------------------------------------------------------------------------
@@ -137,4 +139,6 @@ class GrblSettingsAccess(SettingsAccess):
 
     def _board_reset(self) -> None:
         self._unanswered.clear()
-        self._fail(tr("the board was reset before it answered"))
+        self._fail(
+            QCoreApplication.translate("SettingsAccess", "the board was reset before it answered")
+        )
