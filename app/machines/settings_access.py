@@ -182,7 +182,11 @@ class SettingsAccess(QObject):
             return
         kind = self.busy
         self._wanted = {}
+        self._forget()
         self._end(Outcome(kind, {}, (reason,)))
+
+    def _forget(self) -> None:
+        """What the subclass awaited will not come (its lines or reports are lost)."""
 
     def _end(self, outcome: Outcome) -> None:
         self.busy = None

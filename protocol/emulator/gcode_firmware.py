@@ -141,7 +141,6 @@ _JOG_G_WORDS = frozenset({20.0, 21.0, 53.0, 90.0, 91.0})
 GCODE_LOCKED = 9
 LINE_OVERFLOW = 11
 SETTING_DISABLED = 5
-NEGATIVE_VALUE = 4
 #: GRBL 1.1's line buffer (LINE_BUFFER_SIZE): at most 79 characters kept per line.
 GRBL_LINE = 80
 #: GRBL 1.1h's default settings, those the emulated board does not derive from its machine.

@@ -233,3 +233,37 @@ def test_the_usb3_units_eeprom_values_are_written_and_read_back(usb3: StationHar
     refusal = access.write({"X.thread": 7, "Y.step_size": 1.5})
     assert refusal is not None and "none of the choices" not in refusal
     assert "0…6" in refusal and "whole number" in refusal
+
+
+def test_a_dollar_dollar_typed_in_the_console_updates_the_values(grbl: StationHarness) -> None:
+    access = access_of(grbl)
+    changed: list[bool] = []
+    access.changed.connect(lambda: changed.append(True))
+    assert grbl.gcode_session.send_line("$$")
+    grbl.run_until(lambda: access.values.get("$132") is not None, timeout=5.0)
+    assert set(access.values) == set(BY_KEY) and changed
+
+
+def test_a_board_reset_before_the_answer_ends_the_write_with_the_reason(
+    grbl: StationHarness,
+) -> None:
+    access = access_of(grbl)
+    access.read()
+    finish(grbl, access)
+    assert access.write({"$1": 30}) is None
+    grbl.gcode_session.soft_reset()  # before the board answered
+    grbl.run_until(lambda: access.busy is None, timeout=5.0)
+    assert access.last is not None and not access.last.ok
+    assert "reset" in access.last.refusals[0]
+    finish(grbl, access)
+    assert access.read() is None  # nothing left over: the next read works
+    finish(grbl, access)
+    assert access.last is not None and access.last.ok
+
+
+def test_a_lost_link_ends_a_read_with_the_reason(grbl: StationHarness) -> None:
+    access = access_of(grbl)
+    assert access.read() is None
+    grbl.station.close_link()
+    grbl.run_until(lambda: access.busy is None, timeout=5.0)
+    assert access.last is not None and "link" in access.last.refusals[0]

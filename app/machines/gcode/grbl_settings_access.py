@@ -126,7 +126,6 @@ class GrblSettingsAccess(SettingsAccess):
             return
         line = self._unanswered.pop(0)
         if line == "$$":
-            self._unanswered.clear()
             self._fail(
                 QCoreApplication.translate("SettingsAccess", "$$ refused: error {0}, {1}").format(
                     code, meaning
@@ -136,6 +135,10 @@ class GrblSettingsAccess(SettingsAccess):
         self._refused[line.partition("=")[0]] = QCoreApplication.translate(
             "SettingsAccess", "{0}: refused, error {1}, {2}"
         ).format(line, code, meaning)
+
+    def _forget(self) -> None:
+        self._unanswered.clear()
+        self._heard = {}
 
     def _board_reset(self) -> None:
         self._unanswered.clear()

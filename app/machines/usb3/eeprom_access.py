@@ -129,6 +129,9 @@ class Usb3EepromAccess(SettingsAccess):
         self._reports_due = sent  # each set_* asks G; once
         return True
 
+    def _forget(self) -> None:
+        self._reports_due = 0
+
     def _frame(self, reply: object, _raw: bytes) -> None:
         if isinstance(reply, StepSizes):
             for axis, size in zip(self.axes, reply.sizes, strict=False):
