@@ -62,6 +62,28 @@ def run(machine: MachinePort, access: SettingsAccess, start: Callable[[], str | 
     return outcome
 
 
+def read(machine: MachinePort, timeout: float) -> Operation[dict[str, float]]:
+    """Every setting, freshly read."""
+    access = access_of(machine)
+    yield from run(machine, access, access.read, "the settings", timeout)
+    return dict(access.values)
+
+
+def write(
+    machine: MachinePort, changes: Mapping[str, float], timeout: float
+) -> Operation[dict[str, float]]:
+    """Write ``changes`` and read them back; the values the device kept as written."""
+    access = access_of(machine)
+    outcome = yield from run(
+        machine,
+        access,
+        lambda: access.write(changes),
+        "the settings to be written and read back",
+        timeout,
+    )
+    return outcome.values
+
+
 class MachineSettings:
     """The stored settings of a connected machine, as last read (see :meth:`read`).
 
@@ -71,7 +93,7 @@ class MachineSettings:
     def __init__(
         self,
         machine: MachinePort,
-        drive: Callable[[Operation[Outcome]], Outcome],
+        drive: Callable[[Operation[dict[str, float]]], dict[str, float]],
         timeout: float,
     ) -> None:
         self._machine = machine
@@ -104,10 +126,7 @@ class MachineSettings:
 
     def read(self, *, timeout: float | None = None) -> dict[str, float]:
         """Every setting, freshly read from the device."""
-        self._drive(
-            run(self._machine, self.access, self.access.read, "the settings", self._t(timeout))
-        )
-        return self.values
+        return self._drive(read(self._machine, self._t(timeout)))
 
     def write(
         self, changes: Mapping[str, float], *, timeout: float | None = None
@@ -117,14 +136,7 @@ class MachineSettings:
         Raises SettingRefused with every reason when the station refuses the write
         (nothing is sent), or when the device refused or reads back a value otherwise.
         """
-        operation = run(
-            self._machine,
-            self.access,
-            lambda: self.access.write(changes),
-            "the settings to be written and read back",
-            self._t(timeout),
-        )
-        return self._drive(operation).values
+        return self._drive(write(self._machine, changes, self._t(timeout)))
 
     def save(self, path: str | Path) -> Path:
         """Save the values last read to a TOML snapshot (read first: :meth:`read`)."""
