@@ -16,7 +16,10 @@ one a line, each with its name as a comment::
     "$0" = 10  # Step pulse time [µs]
     "$110" = 6000.0  # X maximum rate [mm/min]
 
-A restore writes only what differs, through the same checks as any write
+The file's reading, its format number and the machine check are the stage
+snapshots' own (:func:`~app.scripting.parameters.read_snapshot_file`,
+:func:`~app.scripting.parameters.check_machine`).  A restore writes only
+what differs, through the same checks as any write
 (:class:`~app.machines.settings_access.SettingsAccess`): a file edited by
 hand to hold a value out of range is refused whole, with the reason.
 """
@@ -24,7 +27,6 @@ hand to hold a value out of range is refused whole, with the reason.
 from __future__ import annotations
 
 import json
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
@@ -33,11 +35,9 @@ from pathlib import Path
 from app.machines.settings_access import SettingsAccess
 from app.machines.stored_settings import Kind, StoredSetting
 from app.profiles import MachineProfile
-from app.scripting.errors import StepdeckError, WrongMachine
-
-SNAPSHOT_FORMAT = 1
-#: A snapshot is a few kilobytes; a larger file is not one.
-MAX_SNAPSHOT_BYTES = 256 * 1024
+from app.scripting.errors import StepdeckError
+from app.scripting.parameters import SNAPSHOT_FORMAT, read_snapshot_file
+from app.scripting.parameters import check_machine as check_machine
 
 
 @dataclass(frozen=True)
@@ -100,12 +100,7 @@ def save_snapshot(path: Path, profile: MachineProfile, access: SettingsAccess) -
 
 def load_snapshot(path: Path, access: SettingsAccess) -> SettingsSnapshot:
     """Read a snapshot of ``access``'s kind; a file that is not one is refused with the reason."""
-    try:
-        if path.stat().st_size > MAX_SNAPSHOT_BYTES:
-            raise StepdeckError(f"{path}: too large for a settings snapshot")
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise StepdeckError(f"{path}: not a readable snapshot ({exc})") from None
+    data = read_snapshot_file(path, "settings")
     machine = data.get("machine")
     settings = data.get("settings")
     if data.get("format") != SNAPSHOT_FORMAT or not isinstance(machine, dict):
@@ -131,16 +126,6 @@ def load_snapshot(path: Path, access: SettingsAccess) -> SettingsSnapshot:
         date=str(machine.get("date", "")),
         values=values,
     )
-
-
-def check_machine(
-    snapshot: SettingsSnapshot, profile: MachineProfile, *, other_machine: bool
-) -> None:
-    if snapshot.profile != profile.name and not other_machine:
-        raise WrongMachine(
-            f"the snapshot is of {snapshot.title or snapshot.profile!r}, this is "
-            f"{profile.title}; pass other_machine=True to load it anyway"
-        )
 
 
 def diff(snapshot: SettingsSnapshot, access: SettingsAccess) -> list[SettingDifference]:
