@@ -3964,8 +3964,8 @@ Načíst jako:</translation>
         <translation>Zastavit vše, odkudkoli v okně</translation>
     </message>
     <message>
-        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
-        <translation>Stránka Manuální / Absolutně / Relativně / Dynamika / Spojení / Osy / G-kód</translation>
+        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page</source>
+        <translation>Stránka Manuální / Absolutně / Relativně / Dynamika / Spojení / Osy / G-kód / Nastavení</translation>
     </message>
     <message>
         <source>Open a job (File → Open job…)</source>

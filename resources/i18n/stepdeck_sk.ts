@@ -3964,8 +3964,8 @@ Načítať ako:</translation>
         <translation>Zastaviť všetko, odkiaľkoľvek v okne</translation>
     </message>
     <message>
-        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
-        <translation>Stránka Manuálne / Absolútne / Relatívne / Dynamika / Spojenie / Osi / G-kód</translation>
+        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page</source>
+        <translation>Stránka Manuálne / Absolútne / Relatívne / Dynamika / Spojenie / Osi / G-kód / Nastavenia</translation>
     </message>
     <message>
         <source>Open a job (File → Open job…)</source>
