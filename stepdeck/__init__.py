@@ -19,6 +19,7 @@ from app.scripting.errors import (
     MotionRefused,
     MotionTimeout,
     ParameterRefused,
+    SettingRefused,
     StepdeckError,
     Unsupported,
     WrongMachine,
@@ -26,6 +27,8 @@ from app.scripting.errors import (
 from app.scripting.job import JobResult, Progress
 from app.scripting.machine import AxisStatus, Machine, Status, connect
 from app.scripting.parameters import Difference
+from app.scripting.settings import MachineSettings
+from app.scripting.settings_snapshot import SettingDifference
 
 __all__ = [
     "AxisStatus",
@@ -38,11 +41,14 @@ __all__ = [
     "JobResult",
     "LinkLost",
     "Machine",
+    "MachineSettings",
     "MotionFailed",
     "MotionRefused",
     "MotionTimeout",
     "ParameterRefused",
     "Progress",
+    "SettingDifference",
+    "SettingRefused",
     "Status",
     "StepdeckError",
     "Unsupported",

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from app.profiles import MachineProfile
+from app.scripting import settings as stored
 from app.scripting.job import run_job
 from app.scripting.machine import Machine, Status
 from app.scripting.machine import connect as connect_blocking
@@ -89,6 +90,16 @@ class AsyncMachine:
         self, values: Mapping[str, Mapping[str, float]], *, timeout: float = 10.0
     ) -> dict[str, dict[str, float]]:
         return await self._drive(self.machine.operations.write_parameters(values, timeout))
+
+    async def read_settings(self, *, timeout: float = 10.0) -> dict[str, float]:
+        """The stored settings (GRBL's ``$$``, the usb3 unit's EEPROM), freshly read."""
+        return await self._drive(stored.read(self.machine, timeout))
+
+    async def write_settings(
+        self, changes: Mapping[str, float], *, timeout: float = 10.0
+    ) -> dict[str, float]:
+        """As :meth:`MachineSettings.write <app.scripting.settings.MachineSettings.write>`."""
+        return await self._drive(stored.write(self.machine, changes, timeout))
 
     async def run(self, job_path: str | Path, **options: Any) -> Any:
         return await self._drive(run_job(self.machine, Path(job_path), **options))

@@ -47,6 +47,18 @@ class ParameterRefused(StepdeckError):
         self.written = written or {}
 
 
+class SettingRefused(StepdeckError):
+    """A stored setting (GRBL's ``$N``, the usb3 unit's EEPROM) was not written: refused by
+    the station before anything was sent, refused by the device, or read back otherwise.
+
+    ``written`` holds the values of the same call the device read back as written.
+    """
+
+    def __init__(self, message: str, written: dict[str, float] | None = None) -> None:
+        super().__init__(message)
+        self.written = written or {}
+
+
 class WrongMachine(StepdeckError):
     """A parameter snapshot of another machine (pass ``other_machine=True`` to load it anyway)."""
 

@@ -35,6 +35,7 @@ from app.scripting.macros import macro_table, run_macro
 from app.scripting.operations import LINK_DOWN as LINK_DOWN
 from app.scripting.operations import Operations
 from app.scripting.pump import Pump, RealtimePump, SimulatedPump, ensure_qt
+from app.scripting.settings import MachineSettings
 from app.scripting.waits import Operation, Wait
 from app.station import Station
 from protocol.clock import ManualClock
@@ -226,6 +227,18 @@ class Machine:
         if changes:
             self.write_parameters(changes, timeout=timeout)
         return [d for d in differences if d.writable]
+
+    # --- stored settings ----------------------------------------------------------
+
+    def settings(self, *, timeout: float = 10.0) -> MachineSettings:
+        """The device's stored settings (GRBL's ``$$``, the usb3 unit's EEPROM), freshly read.
+
+        The object it returns writes, saves, diffs and restores them
+        (:class:`~app.scripting.settings.MachineSettings`).
+        """
+        stored = MachineSettings(self, self._drive, timeout)
+        stored.read()
+        return stored
 
     # --- jobs ---------------------------------------------------------------------
 

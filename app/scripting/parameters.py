@@ -19,7 +19,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from app.machine import MachineModel, ParameterState
 from app.machines.stage.parameters import BY_TYPE, STAGE_PARAMETERS, StageParameter
@@ -211,14 +211,22 @@ def save_snapshot(path: Path, station: Station, values: Mapping[str, Mapping[str
     return path
 
 
-def load_snapshot(path: Path) -> Snapshot:
-    """Read a snapshot; a file that is not one is refused with the reason."""
+def read_snapshot_file(path: Path, what: str) -> dict[str, Any]:
+    """A snapshot file's TOML (``what``: "parameter", "settings"), or the reason it is none.
+
+    Shared with the stored settings' snapshots (:mod:`app.scripting.settings_snapshot`).
+    """
     try:
         if path.stat().st_size > MAX_SNAPSHOT_BYTES:
-            raise StepdeckError(f"{path}: too large for a parameter snapshot")
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+            raise StepdeckError(f"{path}: too large for a {what} snapshot")
+        return tomllib.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise StepdeckError(f"{path}: not a readable snapshot ({exc})") from None
+
+
+def load_snapshot(path: Path) -> Snapshot:
+    """Read a snapshot; a file that is not one is refused with the reason."""
+    data = read_snapshot_file(path, "parameter")
     machine = data.get("machine")
     axes = data.get("axes")
     if data.get("format") != SNAPSHOT_FORMAT or not isinstance(machine, dict):
@@ -244,7 +252,18 @@ def load_snapshot(path: Path) -> Snapshot:
     )
 
 
-def check_machine(snapshot: Snapshot, profile: MachineProfile, *, other_machine: bool) -> None:
+class OfMachine(Protocol):
+    """A snapshot's machine (a parameter or a settings snapshot)."""
+
+    @property
+    def profile(self) -> str: ...
+
+    @property
+    def title(self) -> str: ...
+
+
+def check_machine(snapshot: OfMachine, profile: MachineProfile, *, other_machine: bool) -> None:
+    """Another machine's snapshot is refused unless ``other_machine``."""
     if snapshot.profile != profile.name and not other_machine:
         raise WrongMachine(
             f"the snapshot is of {snapshot.title or snapshot.profile!r}, this is "

@@ -51,7 +51,9 @@ Decisions the contract leaves open, made here:
 - ``$H`` goes to 0 on every axis at the rapid rate (state ``Home``) and is
   answered when queued; like ``$I`` and ``$$`` it needs the machine idle
   (``error:8``).  Unknown ``$`` commands are ``error:3``.  A GRBL board
-  takes ``$N=value`` for its settings, idle: ``$10`` (status mask), ``$12``
+  takes ``$N=value`` for its settings, idle or in alarm, and answers a bad
+  one as GRBL 1.1h does (:mod:`~protocol.emulator.grbl_settings`, checked
+  against grbl-sim): ``$10`` (status mask), ``$12``
   (arc tolerance), ``$11`` (junction deviation), ``$20`` (soft limits, off
   by default as in GRBL), ``$22`` (homing: off, ``$H`` is ``error:5``),
   ``$110…`` (rates, mm/min), ``$120…`` (accelerations, mm/s²) and
@@ -83,6 +85,7 @@ from dataclasses import replace
 from typing import Any
 
 from protocol.clock import Clock
+from protocol.emulator import grbl_settings
 from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.gcode_interpreter import Interpreter
 from protocol.emulator.gcode_machine import (
@@ -138,7 +141,6 @@ _JOG_G_WORDS = frozenset({20.0, 21.0, 53.0, 90.0, 91.0})
 GCODE_LOCKED = 9
 LINE_OVERFLOW = 11
 SETTING_DISABLED = 5
-NEGATIVE_VALUE = 4
 #: GRBL 1.1's line buffer (LINE_BUFFER_SIZE): at most 79 characters kept per line.
 GRBL_LINE = 80
 #: GRBL 1.1h's default settings, those the emulated board does not derive from its machine.
@@ -146,13 +148,13 @@ _GRBL_DEFAULTS: dict[int, float] = {
     0: 10, 1: 25, 2: 0, 3: 0, 4: 0, 5: 0, 6: 0, 10: 1, 11: 0.010, 12: 0.002, 13: 0,
     20: 0, 21: 0, 22: 0, 23: 0, 24: 25.0, 25: 500.0, 26: 250, 27: 1.0, 30: 1000, 31: 0, 32: 0,
 }  # fmt: skip
-#: The settings GRBL lists with three decimals (the others are whole numbers).
-_GRBL_DECIMAL = frozenset({11, 12, 24, 25, 27})
 
 _LINE_END = 0x0A
 #: Bytes of an arriving line the ``line`` event keeps: a host that never ends its line
 #: cannot grow the log's memory without bound (the parser has refused such a line anyway).
 _ARRIVING_KEPT = 1024
+#: What follows ``$`` in GRBL 1.1's own commands; anything else is read as ``$N=value``.
+_GRBL_COMMAND_LETTERS = "$#CGHIJNRSX"
 _HELP = "[HLP:$$ $# $G $I $H $X ~ ! ? ctrl-x]"
 #: GRBL 1.1's REPORT_WCO_REFRESH_BUSY_COUNT and _IDLE_COUNT: reports between two ``WCO:``.
 WCO_REFRESH_BUSY = 30
@@ -686,8 +688,8 @@ class GcodeFirmware(ControlCycles):
             return [] if start == home else [self._interpreter.move(start, home, "home", None)]
         elif command == "$C" and self.config.grbl:
             return self._toggle_check_mode()
-        elif self.config.grbl and command[1:2].isdigit() and "=" in command:
-            return self._set(command[1:])
+        elif self.config.grbl and command[1:2] and command[1:2] not in _GRBL_COMMAND_LETTERS:
+            return self._set(command)
         else:
             return INVALID_STATEMENT
         return []
@@ -705,20 +707,12 @@ class GcodeFirmware(ControlCycles):
             self._send_line("[MSG:Enabled]")
         return []
 
-    def _set(self, assignment: str) -> list[Block] | int:
-        """``$N=value``: GRBL's settings; those that shape the machine act at once."""
-        number, _, text = assignment.partition("=")
-        try:
-            key, value = int(number), float(text)
-        except ValueError:
-            return INVALID_STATEMENT
-        if key not in self._settings_table:
-            return INVALID_STATEMENT
-        if value < 0:
-            return NEGATIVE_VALUE
-        if self.state not in ("Idle", "Alarm"):
-            return NOT_IDLE
-        self._settings_table[key] = value
+    def _set(self, line: str) -> list[Block] | int:
+        """``$N=value``: GRBL's settings (:mod:`~protocol.emulator.grbl_settings`); those that
+        shape the machine act at once."""
+        code = grbl_settings.store(self._settings_table, line, idle=self.state in ("Idle", "Alarm"))
+        if code:
+            return code
         self._apply_settings()
         return []
 
@@ -811,10 +805,7 @@ class GcodeFirmware(ControlCycles):
     def _settings(self) -> list[str]:
         """``$$``: a few GRBL settings, per axis in the machine's axis order; all on GRBL."""
         if self._settings_table:
-            return [
-                f"${k}={v:.3f}" if k >= 100 or k in _GRBL_DECIMAL else f"${k}={v:.0f}"
-                for k, v in sorted(self._settings_table.items())
-            ]
+            return grbl_settings.setting_lines(self._settings_table)
         cfg = self.config
         lines = [f"$12={cfg.arc_tolerance:.3f}", "$13=0", "$20=1", "$22=1"]
         for group, values in (

@@ -2154,6 +2154,259 @@ Přesto odeslat do stroje?</translation>
     </message>
 </context>
 <context>
+    <name>GrblSetting</name>
+    <message>
+        <source>X</source>
+        <extracomment>GRBL 1.1h on a 328p: N_AXIS. The most steps a second GRBL 1.1 generates on a 16 MHz board (its documentation). GRBL&apos;s uint8 settings keep one byte. The station&apos;s ceiling for a rate, a resolution or a distance. GRBL prints a setting through a 32-bit integer of thousandths (4 294 967.295 at most): far below that.</extracomment>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>machine position (off: work position)</source>
+        <translation>strojová poloha (bez něj: pracovní poloha)</translation>
+    </message>
+    <message>
+        <source>buffer state (Bf:)</source>
+        <translation>stav vyrovnávacích pamětí (Bf:)</translation>
+    </message>
+    <message>
+        <source>the station reads positions in millimetres</source>
+        <translation>stanice čte polohy v milimetrech</translation>
+    </message>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Délka krokového pulzu</translation>
+    </message>
+    <message>
+        <source>How long each step pulse lasts. The stepper drivers name the least they need; GRBL takes no less than 3 µs.</source>
+        <translation>Jak dlouho trvá každý krokový pulz. Budiče motorů udávají nejkratší, který potřebují; GRBL nepřijme méně než 3 µs.</translation>
+    </message>
+    <message>
+        <source>Step idle delay</source>
+        <translation>Prodleva před uvolněním motorů</translation>
+    </message>
+    <message>
+        <source>How long the motors stay powered after a motion ends, so the axes settle before they are let go. 255 keeps them powered.</source>
+        <translation>Jak dlouho zůstanou motory pod proudem po skončení pohybu, aby se osy ustálily, než se uvolní. 255 je nechá pod proudem stále.</translation>
+    </message>
+    <message>
+        <source>Step pulse invert</source>
+        <translation>Inverze krokového signálu</translation>
+    </message>
+    <message>
+        <source>Axes whose step signal is inverted, one bit each (X 1, Y 2, Z 4), for drivers that step on the other edge.</source>
+        <translation>Osy s obráceným krokovým signálem, každá jeden bit (X 1, Y 2, Z 4): pro budiče, které krokují na opačné hraně.</translation>
+    </message>
+    <message>
+        <source>Direction invert</source>
+        <translation>Inverze směru</translation>
+    </message>
+    <message>
+        <source>Axes that move the other way, one bit each (X 1, Y 2, Z 4): the fix for an axis wired backwards.</source>
+        <translation>Osy, které se pohybují opačně, každá jeden bit (X 1, Y 2, Z 4): náprava osy zapojené obráceně.</translation>
+    </message>
+    <message>
+        <source>Invert step enable</source>
+        <translation>Inverze povolení budičů</translation>
+    </message>
+    <message>
+        <source>Inverts the drivers&apos; enable signal (takes effect after a reset).</source>
+        <translation>Obrátí signál povolení budičů (platí po resetu).</translation>
+    </message>
+    <message>
+        <source>Invert limit pins</source>
+        <translation>Inverze koncových spínačů</translation>
+    </message>
+    <message>
+        <source>Inverts every limit switch input: for switches that are closed until hit.</source>
+        <translation>Obrátí všechny vstupy koncových spínačů: pro spínače sepnuté, dokud na ně osa nenarazí.</translation>
+    </message>
+    <message>
+        <source>Invert probe pin</source>
+        <translation>Inverze sondy</translation>
+    </message>
+    <message>
+        <source>Inverts the probe input.</source>
+        <translation>Obrátí vstup sondy.</translation>
+    </message>
+    <message>
+        <source>Status report options</source>
+        <translation>Obsah stavových hlášení</translation>
+    </message>
+    <message>
+        <source>What a status report carries: value 1 the machine position (else the work position), value 2 the free buffer space.</source>
+        <translation>Co nese stavové hlášení: hodnota 1 strojovou polohu (jinak pracovní), hodnota 2 volné místo ve vyrovnávacích pamětech.</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Odchylka v rozích</translation>
+    </message>
+    <message>
+        <source>How fast the machine may go through a corner between two moves: smaller is slower and gentler.</source>
+        <translation>Jak rychle smí stroj projet rohem mezi dvěma pohyby: menší je pomalejší a šetrnější.</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolerance oblouků</translation>
+    </message>
+    <message>
+        <source>How far the short lines GRBL draws an arc with may stray from the arc. Very small values cost speed.</source>
+        <translation>Jak daleko se smějí krátké úsečky, kterými GRBL kreslí oblouk, od oblouku odchýlit. Velmi malé hodnoty stojí rychlost.</translation>
+    </message>
+    <message>
+        <source>Report in inches</source>
+        <translation>Hlášení v palcích</translation>
+    </message>
+    <message>
+        <source>Positions and rates reported in inches instead of millimetres.</source>
+        <translation>Polohy a rychlosti hlášené v palcích místo milimetrů.</translation>
+    </message>
+    <message>
+        <source>Soft limits</source>
+        <translation>Softwarové limity</translation>
+    </message>
+    <message>
+        <source>Refuses, with an alarm, any motion past the maximum travel ($130…). Needs homing ($22=1).</source>
+        <translation>Odmítne s alarmem každý pohyb za největší dráhu ($130…). Potřebuje najetí do výchozí polohy ($22=1).</translation>
+    </message>
+    <message>
+        <source>Hard limits</source>
+        <translation>Koncové spínače</translation>
+    </message>
+    <message>
+        <source>Stops at once with an alarm when a limit switch is hit.</source>
+        <translation>Zastaví okamžitě s alarmem, když osa narazí na koncový spínač.</translation>
+    </message>
+    <message>
+        <source>Homing cycle</source>
+        <translation>Najetí do výchozí polohy</translation>
+    </message>
+    <message>
+        <source>Enables homing ($H). Needs a limit switch on every axis; the board then starts in alarm until homed.</source>
+        <translation>Povolí najetí do výchozí polohy ($H). Potřebuje koncový spínač na každé ose; deska pak startuje v alarmu, dokud nenajede.</translation>
+    </message>
+    <message>
+        <source>Homing direction invert</source>
+        <translation>Inverze směru najíždění</translation>
+    </message>
+    <message>
+        <source>Axes that look for their switch in the negative direction, one bit each (X 1, Y 2, Z 4).</source>
+        <translation>Osy, které hledají svůj spínač v záporném směru, každá jeden bit (X 1, Y 2, Z 4).</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Rychlost dohledání spínače</translation>
+    </message>
+    <message>
+        <source>The slow speed at which homing finds the switch&apos;s exact place.</source>
+        <translation>Pomalá rychlost, kterou najíždění najde přesné místo spínače.</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Rychlost hledání spínače</translation>
+    </message>
+    <message>
+        <source>The fast speed at which homing first looks for the switch.</source>
+        <translation>Rychlá rychlost, kterou najíždění nejdřív hledá spínač.</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce</source>
+        <translation>Odskok spínače při najíždění</translation>
+    </message>
+    <message>
+        <source>A pause between the phases of homing while the switch stops bouncing.</source>
+        <translation>Pauza mezi fázemi najíždění, než spínač přestane zakmitávat.</translation>
+    </message>
+    <message>
+        <source>Homing pull-off</source>
+        <translation>Odjetí od spínače</translation>
+    </message>
+    <message>
+        <source>How far homing backs off its switch. Homing fails if the switch is still pressed after it.</source>
+        <translation>Jak daleko najíždění odjede od spínače. Selže, když je spínač potom stále sepnutý.</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed</source>
+        <translation>Největší otáčky vřetena</translation>
+    </message>
+    <message>
+        <source>The S value that gives full PWM duty (on a servo pen plotter: the pen&apos;s full travel).</source>
+        <translation>Hodnota S, která dá plnou střídu PWM (u plotru se servem: plný zdvih pera).</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed</source>
+        <translation>Nejmenší otáčky vřetena</translation>
+    </message>
+    <message>
+        <source>The S value that gives the least PWM duty; below $30.</source>
+        <translation>Hodnota S, která dá nejmenší střídu PWM; pod $30.</translation>
+    </message>
+    <message>
+        <source>Laser mode</source>
+        <translation>Laserový režim</translation>
+    </message>
+    <message>
+        <source>Moves go on through changes of S without stopping, as a laser needs; a spindle would need time to change speed.</source>
+        <translation>Pohyby pokračují přes změny S bez zastavení, jak potřebuje laser; vřeteno by potřebovalo čas na změnu otáček.</translation>
+    </message>
+    <message>
+        <source>{0} resolution</source>
+        <translation>{0} rozlišení</translation>
+    </message>
+    <message>
+        <source>Steps the axis&apos;s motor makes for one millimetre of travel.</source>
+        <translation>Kroky, které motor osy udělá na jeden milimetr dráhy.</translation>
+    </message>
+    <message>
+        <source>{0} maximum rate</source>
+        <translation>{0} největší rychlost</translation>
+    </message>
+    <message>
+        <source>The axis&apos;s top speed; rapid moves (G0) run at it.</source>
+        <translation>Nejvyšší rychlost osy; rychloposuvy (G0) jedou jí.</translation>
+    </message>
+    <message>
+        <source>{0} acceleration</source>
+        <translation>{0} zrychlení</translation>
+    </message>
+    <message>
+        <source>How fast the axis may speed up and slow down, planned so that the motor loses no steps.</source>
+        <translation>Jak rychle smí osa zrychlovat a brzdit, plánováno tak, aby motor neztratil kroky.</translation>
+    </message>
+    <message>
+        <source>{0} maximum travel</source>
+        <translation>{0} největší dráha</translation>
+    </message>
+    <message>
+        <source>How far the axis can travel from its home switch: the space soft limits keep to, and how far homing searches.</source>
+        <translation>Jak daleko může osa dojet od svého výchozího spínače: prostor, který hlídají softwarové limity, a kam až hledá najíždění.</translation>
+    </message>
+    <message>
+        <source>$20 (soft limits) needs homing: $22=1</source>
+        <extracomment>Every setting GRBL 1.1h lists in ``$$``, in its order.</extracomment>
+        <translation>$20 (softwarové limity) potřebuje najetí do výchozí polohy: $22=1</translation>
+    </message>
+    <message>
+        <source>$31 (minimum spindle speed) must be below $30</source>
+        <translation>$31 (nejmenší otáčky vřetena) musí být pod $30</translation>
+    </message>
+    <message>
+        <source>{0}: at most the mechanical travel, {1} mm</source>
+        <translation>{0}: nejvýše mechanická dráha, {1} mm</translation>
+    </message>
+    <message>
+        <source>{0} and {1}: {2} steps/s, more than GRBL steps ({3})</source>
+        <translation>{0} a {1}: {2} kroků/s, víc, než GRBL zvládne ({3})</translation>
+    </message>
+</context>
+<context>
     <name>HandZeroing</name>
     <message>
         <source>Not released: {0}</source>
@@ -4122,8 +4375,8 @@ Buttons a row.</extracomment>
         <translation>Zastavit vše, odkudkoli v okně</translation>
     </message>
     <message>
-        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
-        <translation>Stránka Manuální / Absolutně / Relativně / Dynamika / Spojení / Osy / G-kód</translation>
+        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page</source>
+        <translation>Stránka Manuální / Absolutně / Relativně / Dynamika / Spojení / Osy / G-kód / Nastavení</translation>
     </message>
     <message>
         <source>Open a job (File → Open job…)</source>
@@ -4168,7 +4421,7 @@ Buttons a row.</extracomment>
     </message>
     <message>
         <source>&amp;Manual</source>
-        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
+        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. GRBL&apos;s $$ or the usb3 unit&apos;s EEPROM values (:mod:`widgets.panels.stored_settings`). The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
         <translation>&amp;Manuální</translation>
     </message>
     <message>
@@ -4222,6 +4475,14 @@ Buttons a row.</extracomment>
     <message>
         <source>Device parameters (Alt+D)</source>
         <translation>Parametry zařízení (Alt+D)</translation>
+    </message>
+    <message>
+        <source>Se&amp;ttings</source>
+        <translation>Nas&amp;tavení</translation>
+    </message>
+    <message>
+        <source>Stored settings: read, edit, snapshots (Alt+T)</source>
+        <translation>Uložená nastavení: čtení, úpravy, zálohy (Alt+T)</translation>
     </message>
     <message>
         <source>&amp;Link</source>
@@ -4828,6 +5089,83 @@ se nevykresluje</translation>
     </message>
 </context>
 <context>
+    <name>SettingsAccess</name>
+    <message>
+        <source>the machine is stopping</source>
+        <extracomment>The lines&apos; origin in the session (the frame log and the console show it). GRBL states in which it takes ``$$`` and ``$N=``, as the station allows them. ``$N=`` lines heard since the last ``$$`` sent (GRBL lists them before its ok). The settings lines sent and not answered, oldest first. The device&apos;s refusals of this write, by key.</extracomment>
+        <translation>stroj zastavuje</translation>
+    </message>
+    <message>
+        <source>the board is {0}: settings wait until it stands idle</source>
+        <translation>deska je ve stavu {0}: nastavení počká, až bude v klidu</translation>
+    </message>
+    <message>
+        <source>not heard from yet</source>
+        <translation>zatím neozvala</translation>
+    </message>
+    <message>
+        <source>lines sent before are still being run</source>
+        <translation>dříve odeslané řádky se ještě provádějí</translation>
+    </message>
+    <message>
+        <source>{0} was not sent</source>
+        <translation>{0} nebylo odesláno</translation>
+    </message>
+    <message>
+        <source>$$ refused: error {0}, {1}</source>
+        <translation>$$ odmítnuto: chyba {0}, {1}</translation>
+    </message>
+    <message>
+        <source>{0}: refused, error {1}, {2}</source>
+        <translation>{0}: odmítnuto, chyba {1}, {2}</translation>
+    </message>
+    <message>
+        <source>the board was reset before it answered</source>
+        <translation>deska byla resetována dřív, než odpověděla</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <extracomment>&quot;read&quot; or &quot;write&quot;. The values the device read back as written (a write), or every value read. Why a value was not written, or why the read failed (empty: all went well). :attr:`values` changed (a read, a verified write, a report nobody asked for). A read or write ended: its :class:`Outcome`. What the settings are called in the window and in snapshots (&quot;grbl&quot;, &quot;usb3-eeprom&quot;). What the device last said it holds, by key. The last read or write&apos;s outcome (None before any). A read or write under way (&quot;read&quot;/&quot;write&quot;), None when idle. What a write under way asked for.</extracomment>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>a job is running</source>
+        <translation>běží úloha</translation>
+    </message>
+    <message>
+        <source>the machine is moving</source>
+        <translation>stroj se pohybuje</translation>
+    </message>
+    <message>
+        <source>{0}: no such setting</source>
+        <translation>{0}: takové nastavení není</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>neodesláno</translation>
+    </message>
+    <message>
+        <source>nothing to write</source>
+        <translation>není co zapsat</translation>
+    </message>
+    <message>
+        <source>a read is under way</source>
+        <translation>probíhá čtení</translation>
+    </message>
+    <message>
+        <source>a write is under way</source>
+        <translation>probíhá zápis</translation>
+    </message>
+    <message>
+        <source>{0}: {1} was written, the device keeps {2}</source>
+        <translation>{0}: zapsáno {1}, zařízení drží {2}</translation>
+    </message>
+    <message>
+        <source>the link went down before the device answered</source>
+        <translation>spojení spadlo dřív, než zařízení odpovědělo</translation>
+    </message>
+</context>
+<context>
     <name>StageParameter</name>
     <message>
         <source>Fast speed</source>
@@ -5152,6 +5490,194 @@ doběhne (Esc)</translation>
 queue</source>
         <translation>■ Zahodit
 frontu</translation>
+    </message>
+</context>
+<context>
+    <name>StoredSetting</name>
+    <message>
+        <source>{0}: {1!r} is not a number</source>
+        <extracomment>A whole number. A number with at most ``decimals`` decimals. 0 (off) or 1 (on). A whole number whose bits each mean one thing (``bits`` names them, lowest first). One of ``choices`` (a number that stands for a label). How snapshots and scripts name it: ``&quot;$110&quot;``, ``&quot;X.thread&quot;``. Bit names of a MASK, lowest bit first. A CHOICE&apos;s (value, label) pairs. Why the range is narrower than the device&apos;s own (said with a refusal), or &quot;&quot;. The translation context of the label, description and ``narrowed``. The device keeps the value as a 32-bit float (GRBL): read back, it may differ in its last digits from the one written, and still be the same. The axis a per-axis row is of: its label&apos;s ``{0}``.</extracomment>
+        <translation>{0}: {1!r} není číslo</translation>
+    </message>
+    <message>
+        <source>{0}: {1} is not a number</source>
+        <translation>{0}: {1} není číslo</translation>
+    </message>
+    <message>
+        <source>{0}: must be a whole number, not {1}</source>
+        <translation>{0}: musí být celé číslo, ne {1}</translation>
+    </message>
+    <message>
+        <source>{0}: must be within {1}…{2} {3}</source>
+        <translation>{0}: musí být v rozsahu {1}…{2} {3}</translation>
+    </message>
+    <message>
+        <source>{0}: at most {1} decimals are kept, not {2}</source>
+        <translation>{0}: uloží se nejvýše {1} desetinná místa, ne {2}</translation>
+    </message>
+    <message>
+        <source>{0}: {1} is none of the choices</source>
+        <translation>{0}: {1} není žádná z možností</translation>
+    </message>
+</context>
+<context>
+    <name>StoredSettingsPanel</name>
+    <message>
+        <source>Read</source>
+        <extracomment>Keys the operator changed since the device last said what it holds. Keys the last write read back as written (their state says so until the next read). The open &quot;write these differences?&quot; question, while it is asked.</extracomment>
+        <translation>Načíst</translation>
+    </message>
+    <message>
+        <source>Read every setting from the device</source>
+        <translation>Načíst ze zařízení všechna nastavení</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použít</translation>
+    </message>
+    <message>
+        <source>Write the edited values, then read them back from the device</source>
+        <translation>Zapsat upravené hodnoty a pak je ze zařízení přečíst zpět</translation>
+    </message>
+    <message>
+        <source>Save snapshot…</source>
+        <translation>Uložit zálohu…</translation>
+    </message>
+    <message>
+        <source>Save every setting to a TOML file</source>
+        <translation>Uložit všechna nastavení do souboru TOML</translation>
+    </message>
+    <message>
+        <source>Load snapshot…</source>
+        <translation>Načíst zálohu…</translation>
+    </message>
+    <message>
+        <source>Show what a snapshot changes, then write only that</source>
+        <translation>Ukázat, co záloha změní, a zapsat jen to</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Nastavení</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Hodnota</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>0 (off) or 1 (on)</source>
+        <translation>0 (vypnuto) nebo 1 (zapnuto)</translation>
+    </message>
+    <message>
+        <source>Allowed: {0}</source>
+        <translation>Povoleno: {0}</translation>
+    </message>
+    <message>
+        <source>Bits: {0}</source>
+        <translation>Bity: {0}</translation>
+    </message>
+    <message>
+        <source>Not read: {0}</source>
+        <translation>Nenačteno: {0}</translation>
+    </message>
+    <message>
+        <source>Reading from the device…</source>
+        <translation>Načítám ze zařízení…</translation>
+    </message>
+    <message>
+        <source>Nothing changed</source>
+        <translation>Nic se nezměnilo</translation>
+    </message>
+    <message>
+        <source>Not written: {0}</source>
+        <translation>Nezapsáno: {0}</translation>
+    </message>
+    <message>
+        <source>Writing, then reading back…</source>
+        <translation>Zapisuji a pak čtu zpět…</translation>
+    </message>
+    <message>
+        <source>Every setting read</source>
+        <translation>Všechna nastavení načtena</translation>
+    </message>
+    <message>
+        <source>Written and read back: {0}</source>
+        <translation>Zapsáno a přečteno zpět: {0}</translation>
+    </message>
+    <message>
+        <source>✗ refused</source>
+        <translation>✗ odmítnuto</translation>
+    </message>
+    <message>
+        <source>Save settings snapshot</source>
+        <translation>Uložit zálohu nastavení</translation>
+    </message>
+    <message>
+        <source>Settings snapshots (*.toml)</source>
+        <translation>Zálohy nastavení (*.toml)</translation>
+    </message>
+    <message>
+        <source>Load settings snapshot</source>
+        <translation>Načíst zálohu nastavení</translation>
+    </message>
+    <message>
+        <source>Not saved: {0} — press Read</source>
+        <translation>Neuloženo: {0} — stiskněte Načíst</translation>
+    </message>
+    <message>
+        <source>Snapshot saved to {0}</source>
+        <translation>Záloha uložena do {0}</translation>
+    </message>
+    <message>
+        <source>Not loaded: {0}</source>
+        <translation>Nenačteno: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: the device holds every value</source>
+        <translation>{0}: zařízení už drží všechny hodnoty</translation>
+    </message>
+    <message>
+        <source>Values of {0} that differ from the device:</source>
+        <translation>Hodnoty z {0}, které se liší od zařízení:</translation>
+    </message>
+    <message>
+        <source>This snapshot is of another machine ({0}), not {1}.</source>
+        <translation>Tato záloha je z jiného stroje ({0}), ne z {1}.</translation>
+    </message>
+    <message>
+        <source>Write anyway</source>
+        <translation>Přesto zapsat</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Zapsat</translation>
+    </message>
+    <message>
+        <source>Writing the snapshot&apos;s values, then reading back…</source>
+        <translation>Zapisuji hodnoty zálohy a pak čtu zpět…</translation>
+    </message>
+    <message>
+        <source>Snapshot not loaded</source>
+        <translation>Záloha nenačtena</translation>
+    </message>
+    <message>
+        <source>• edited</source>
+        <translation>• upraveno</translation>
+    </message>
+    <message>
+        <source>✗ not allowed</source>
+        <translation>✗ nepovoleno</translation>
+    </message>
+    <message>
+        <source>✓ read back</source>
+        <translation>✓ přečteno zpět</translation>
     </message>
 </context>
 <context>
@@ -5579,6 +6105,15 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
         <source>frames</source>
         <translation>rámců</translation>
     </message>
+    <message>
+        <source>step/mm</source>
+        <extracomment>The unit words of the stored settings, for lupdate (symbols like mm pass unchanged; the window&apos;s :mod:`widgets.units` says the others in the same context).</extracomment>
+        <translation>kroků/mm</translation>
+    </message>
+    <message>
+        <source>RPM</source>
+        <translation>ot/min</translation>
+    </message>
 </context>
 <context>
     <name>Usb3Panel</name>
@@ -5678,6 +6213,49 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     <message>
         <source>The unit did not understand a command (?;)</source>
         <translation>Jednotka nerozuměla příkazu (?;)</translation>
+    </message>
+</context>
+<context>
+    <name>Usb3Setting</name>
+    <message>
+        <source>full step</source>
+        <translation>celý krok</translation>
+    </message>
+    <message>
+        <source>1/2 step</source>
+        <translation>1/2 kroku</translation>
+    </message>
+    <message>
+        <source>1/4 step</source>
+        <translation>1/4 kroku</translation>
+    </message>
+    <message>
+        <source>1/8 step</source>
+        <translation>1/8 kroku</translation>
+    </message>
+    <message>
+        <source>1/16 step</source>
+        <translation>1/16 kroku</translation>
+    </message>
+    <message>
+        <source>1/32 step</source>
+        <translation>1/32 kroku</translation>
+    </message>
+    <message>
+        <source>{0} step size</source>
+        <translation>{0} velikost kroku</translation>
+    </message>
+    <message>
+        <source>The driver&apos;s microstep: finer steps move more smoothly and more slowly (the pulse rate stays the same).</source>
+        <translation>Mikrokrok budiče: jemnější kroky jedou plynuleji a pomaleji (četnost pulzů zůstává stejná).</translation>
+    </message>
+    <message>
+        <source>{0} thread</source>
+        <translation>{0} závit</translation>
+    </message>
+    <message>
+        <source>The axis&apos;s lead screw: how far one turn moves it. It decides how the unit&apos;s counts become millimetres.</source>
+        <translation>Pohybový šroub osy: jak daleko ji posune jedna otáčka. Určuje, jak se počty jednotky převádějí na milimetry.</translation>
     </message>
 </context>
 </TS>

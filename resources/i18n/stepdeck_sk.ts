@@ -2154,6 +2154,259 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
 </context>
 <context>
+    <name>GrblSetting</name>
+    <message>
+        <source>X</source>
+        <extracomment>GRBL 1.1h on a 328p: N_AXIS. The most steps a second GRBL 1.1 generates on a 16 MHz board (its documentation). GRBL&apos;s uint8 settings keep one byte. The station&apos;s ceiling for a rate, a resolution or a distance. GRBL prints a setting through a 32-bit integer of thousandths (4 294 967.295 at most): far below that.</extracomment>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>machine position (off: work position)</source>
+        <translation>strojová poloha (bez neho: pracovná poloha)</translation>
+    </message>
+    <message>
+        <source>buffer state (Bf:)</source>
+        <translation>stav vyrovnávacích pamätí (Bf:)</translation>
+    </message>
+    <message>
+        <source>the station reads positions in millimetres</source>
+        <translation>stanica číta polohy v milimetroch</translation>
+    </message>
+    <message>
+        <source>Step pulse time</source>
+        <translation>Dĺžka krokového impulzu</translation>
+    </message>
+    <message>
+        <source>How long each step pulse lasts. The stepper drivers name the least they need; GRBL takes no less than 3 µs.</source>
+        <translation>Ako dlho trvá každý krokový impulz. Budiče motorov udávajú najkratší, ktorý potrebujú; GRBL neprijme menej ako 3 µs.</translation>
+    </message>
+    <message>
+        <source>Step idle delay</source>
+        <translation>Oneskorenie pred uvoľnením motorov</translation>
+    </message>
+    <message>
+        <source>How long the motors stay powered after a motion ends, so the axes settle before they are let go. 255 keeps them powered.</source>
+        <translation>Ako dlho zostanú motory pod prúdom po skončení pohybu, aby sa osi ustálili, kým sa uvoľnia. 255 ich nechá pod prúdom stále.</translation>
+    </message>
+    <message>
+        <source>Step pulse invert</source>
+        <translation>Inverzia krokového signálu</translation>
+    </message>
+    <message>
+        <source>Axes whose step signal is inverted, one bit each (X 1, Y 2, Z 4), for drivers that step on the other edge.</source>
+        <translation>Osi s obráteným krokovým signálom, každá jeden bit (X 1, Y 2, Z 4): pre budiče, ktoré krokujú na opačnej hrane.</translation>
+    </message>
+    <message>
+        <source>Direction invert</source>
+        <translation>Inverzia smeru</translation>
+    </message>
+    <message>
+        <source>Axes that move the other way, one bit each (X 1, Y 2, Z 4): the fix for an axis wired backwards.</source>
+        <translation>Osi, ktoré sa pohybujú opačne, každá jeden bit (X 1, Y 2, Z 4): náprava osi zapojenej obrátene.</translation>
+    </message>
+    <message>
+        <source>Invert step enable</source>
+        <translation>Inverzia povolenia budičov</translation>
+    </message>
+    <message>
+        <source>Inverts the drivers&apos; enable signal (takes effect after a reset).</source>
+        <translation>Obráti signál povolenia budičov (platí po resete).</translation>
+    </message>
+    <message>
+        <source>Invert limit pins</source>
+        <translation>Inverzia koncových spínačov</translation>
+    </message>
+    <message>
+        <source>Inverts every limit switch input: for switches that are closed until hit.</source>
+        <translation>Obráti všetky vstupy koncových spínačov: pre spínače zopnuté, kým na ne os nenarazí.</translation>
+    </message>
+    <message>
+        <source>Invert probe pin</source>
+        <translation>Inverzia sondy</translation>
+    </message>
+    <message>
+        <source>Inverts the probe input.</source>
+        <translation>Obráti vstup sondy.</translation>
+    </message>
+    <message>
+        <source>Status report options</source>
+        <translation>Obsah stavových hlásení</translation>
+    </message>
+    <message>
+        <source>What a status report carries: value 1 the machine position (else the work position), value 2 the free buffer space.</source>
+        <translation>Čo nesie stavové hlásenie: hodnota 1 strojovú polohu (inak pracovnú), hodnota 2 voľné miesto vo vyrovnávacích pamätiach.</translation>
+    </message>
+    <message>
+        <source>Junction deviation</source>
+        <translation>Odchýlka v rohoch</translation>
+    </message>
+    <message>
+        <source>How fast the machine may go through a corner between two moves: smaller is slower and gentler.</source>
+        <translation>Ako rýchlo smie stroj prejsť rohom medzi dvoma pohybmi: menšia je pomalšia a šetrnejšia.</translation>
+    </message>
+    <message>
+        <source>Arc tolerance</source>
+        <translation>Tolerancia oblúkov</translation>
+    </message>
+    <message>
+        <source>How far the short lines GRBL draws an arc with may stray from the arc. Very small values cost speed.</source>
+        <translation>Ako ďaleko sa smú krátke úsečky, ktorými GRBL kreslí oblúk, od oblúka odchýliť. Veľmi malé hodnoty stoja rýchlosť.</translation>
+    </message>
+    <message>
+        <source>Report in inches</source>
+        <translation>Hlásenia v palcoch</translation>
+    </message>
+    <message>
+        <source>Positions and rates reported in inches instead of millimetres.</source>
+        <translation>Polohy a rýchlosti hlásené v palcoch namiesto milimetrov.</translation>
+    </message>
+    <message>
+        <source>Soft limits</source>
+        <translation>Softvérové limity</translation>
+    </message>
+    <message>
+        <source>Refuses, with an alarm, any motion past the maximum travel ($130…). Needs homing ($22=1).</source>
+        <translation>Odmietne s alarmom každý pohyb za najväčšiu dráhu ($130…). Potrebuje nájazd do východiskovej polohy ($22=1).</translation>
+    </message>
+    <message>
+        <source>Hard limits</source>
+        <translation>Koncové spínače</translation>
+    </message>
+    <message>
+        <source>Stops at once with an alarm when a limit switch is hit.</source>
+        <translation>Zastaví okamžite s alarmom, keď os narazí na koncový spínač.</translation>
+    </message>
+    <message>
+        <source>Homing cycle</source>
+        <translation>Nájazd do východiskovej polohy</translation>
+    </message>
+    <message>
+        <source>Enables homing ($H). Needs a limit switch on every axis; the board then starts in alarm until homed.</source>
+        <translation>Povolí nájazd do východiskovej polohy ($H). Potrebuje koncový spínač na každej osi; doska potom štartuje v alarme, kým nenabehne.</translation>
+    </message>
+    <message>
+        <source>Homing direction invert</source>
+        <translation>Inverzia smeru nájazdu</translation>
+    </message>
+    <message>
+        <source>Axes that look for their switch in the negative direction, one bit each (X 1, Y 2, Z 4).</source>
+        <translation>Osi, ktoré hľadajú svoj spínač v zápornom smere, každá jeden bit (X 1, Y 2, Z 4).</translation>
+    </message>
+    <message>
+        <source>Homing locate feed rate</source>
+        <translation>Rýchlosť dohľadania spínača</translation>
+    </message>
+    <message>
+        <source>The slow speed at which homing finds the switch&apos;s exact place.</source>
+        <translation>Pomalá rýchlosť, ktorou nájazd nájde presné miesto spínača.</translation>
+    </message>
+    <message>
+        <source>Homing search seek rate</source>
+        <translation>Rýchlosť hľadania spínača</translation>
+    </message>
+    <message>
+        <source>The fast speed at which homing first looks for the switch.</source>
+        <translation>Rýchla rýchlosť, ktorou nájazd najprv hľadá spínač.</translation>
+    </message>
+    <message>
+        <source>Homing switch debounce</source>
+        <translation>Odskok spínača pri nájazde</translation>
+    </message>
+    <message>
+        <source>A pause between the phases of homing while the switch stops bouncing.</source>
+        <translation>Prestávka medzi fázami nájazdu, kým spínač prestane zakmitávať.</translation>
+    </message>
+    <message>
+        <source>Homing pull-off</source>
+        <translation>Odjazd od spínača</translation>
+    </message>
+    <message>
+        <source>How far homing backs off its switch. Homing fails if the switch is still pressed after it.</source>
+        <translation>Ako ďaleko nájazd odíde od spínača. Zlyhá, keď je spínač potom stále zopnutý.</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed</source>
+        <translation>Najväčšie otáčky vretena</translation>
+    </message>
+    <message>
+        <source>The S value that gives full PWM duty (on a servo pen plotter: the pen&apos;s full travel).</source>
+        <translation>Hodnota S, ktorá dá plnú striedu PWM (pri plotri so servom: plný zdvih pera).</translation>
+    </message>
+    <message>
+        <source>Minimum spindle speed</source>
+        <translation>Najmenšie otáčky vretena</translation>
+    </message>
+    <message>
+        <source>The S value that gives the least PWM duty; below $30.</source>
+        <translation>Hodnota S, ktorá dá najmenšiu striedu PWM; pod $30.</translation>
+    </message>
+    <message>
+        <source>Laser mode</source>
+        <translation>Laserový režim</translation>
+    </message>
+    <message>
+        <source>Moves go on through changes of S without stopping, as a laser needs; a spindle would need time to change speed.</source>
+        <translation>Pohyby pokračujú cez zmeny S bez zastavenia, ako potrebuje laser; vreteno by potrebovalo čas na zmenu otáčok.</translation>
+    </message>
+    <message>
+        <source>{0} resolution</source>
+        <translation>{0} rozlíšenie</translation>
+    </message>
+    <message>
+        <source>Steps the axis&apos;s motor makes for one millimetre of travel.</source>
+        <translation>Kroky, ktoré motor osi urobí na jeden milimeter dráhy.</translation>
+    </message>
+    <message>
+        <source>{0} maximum rate</source>
+        <translation>{0} najväčšia rýchlosť</translation>
+    </message>
+    <message>
+        <source>The axis&apos;s top speed; rapid moves (G0) run at it.</source>
+        <translation>Najvyššia rýchlosť osi; rýchloposuvy (G0) idú ňou.</translation>
+    </message>
+    <message>
+        <source>{0} acceleration</source>
+        <translation>{0} zrýchlenie</translation>
+    </message>
+    <message>
+        <source>How fast the axis may speed up and slow down, planned so that the motor loses no steps.</source>
+        <translation>Ako rýchlo smie os zrýchľovať a brzdiť, plánované tak, aby motor nestratil kroky.</translation>
+    </message>
+    <message>
+        <source>{0} maximum travel</source>
+        <translation>{0} najväčšia dráha</translation>
+    </message>
+    <message>
+        <source>How far the axis can travel from its home switch: the space soft limits keep to, and how far homing searches.</source>
+        <translation>Ako ďaleko môže os dôjsť od svojho východiskového spínača: priestor, ktorý strážia softvérové limity, a kam až hľadá nájazd.</translation>
+    </message>
+    <message>
+        <source>$20 (soft limits) needs homing: $22=1</source>
+        <extracomment>Every setting GRBL 1.1h lists in ``$$``, in its order.</extracomment>
+        <translation>$20 (softvérové limity) potrebuje nájazd do východiskovej polohy: $22=1</translation>
+    </message>
+    <message>
+        <source>$31 (minimum spindle speed) must be below $30</source>
+        <translation>$31 (najmenšie otáčky vretena) musí byť pod $30</translation>
+    </message>
+    <message>
+        <source>{0}: at most the mechanical travel, {1} mm</source>
+        <translation>{0}: najviac mechanická dráha, {1} mm</translation>
+    </message>
+    <message>
+        <source>{0} and {1}: {2} steps/s, more than GRBL steps ({3})</source>
+        <translation>{0} a {1}: {2} krokov/s, viac, než GRBL zvládne ({3})</translation>
+    </message>
+</context>
+<context>
     <name>HandZeroing</name>
     <message>
         <source>Not released: {0}</source>
@@ -4122,8 +4375,8 @@ Buttons a row.</extracomment>
         <translation>Zastaviť všetko, odkiaľkoľvek v okne</translation>
     </message>
     <message>
-        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page</source>
-        <translation>Stránka Manuálne / Absolútne / Relatívne / Dynamika / Spojenie / Osi / G-kód</translation>
+        <source>Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page</source>
+        <translation>Stránka Manuálne / Absolútne / Relatívne / Dynamika / Spojenie / Osi / G-kód / Nastavenia</translation>
     </message>
     <message>
         <source>Open a job (File → Open job…)</source>
@@ -4168,7 +4421,7 @@ Buttons a row.</extracomment>
     </message>
     <message>
         <source>&amp;Manual</source>
-        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
+        <extracomment>A page with motion controls: the motion lock turns it off. Adds a page button: its title, the page, its tooltip (both made again on a language switch). Every page with motion controls, for the motion lock. GRBL&apos;s $$ or the usb3 unit&apos;s EEPROM values (:mod:`widgets.panels.stored_settings`). The Dynamics page: the panel in a scroll area that only scrolls up and down.</extracomment>
         <translation>&amp;Manuálne</translation>
     </message>
     <message>
@@ -4222,6 +4475,14 @@ Buttons a row.</extracomment>
     <message>
         <source>Device parameters (Alt+D)</source>
         <translation>Parametre zariadenia (Alt+D)</translation>
+    </message>
+    <message>
+        <source>Se&amp;ttings</source>
+        <translation>Nas&amp;tavenia</translation>
+    </message>
+    <message>
+        <source>Stored settings: read, edit, snapshots (Alt+T)</source>
+        <translation>Uložené nastavenia: čítanie, úpravy, zálohy (Alt+T)</translation>
     </message>
     <message>
         <source>&amp;Link</source>
@@ -4828,6 +5089,83 @@ sa nevykresľuje</translation>
     </message>
 </context>
 <context>
+    <name>SettingsAccess</name>
+    <message>
+        <source>the machine is stopping</source>
+        <extracomment>The lines&apos; origin in the session (the frame log and the console show it). GRBL states in which it takes ``$$`` and ``$N=``, as the station allows them. ``$N=`` lines heard since the last ``$$`` sent (GRBL lists them before its ok). The settings lines sent and not answered, oldest first. The device&apos;s refusals of this write, by key.</extracomment>
+        <translation>stroj zastavuje</translation>
+    </message>
+    <message>
+        <source>the board is {0}: settings wait until it stands idle</source>
+        <translation>doska je v stave {0}: nastavenie počká, kým bude v pokoji</translation>
+    </message>
+    <message>
+        <source>not heard from yet</source>
+        <translation>zatiaľ neozvala</translation>
+    </message>
+    <message>
+        <source>lines sent before are still being run</source>
+        <translation>skôr odoslané riadky sa ešte vykonávajú</translation>
+    </message>
+    <message>
+        <source>{0} was not sent</source>
+        <translation>{0} nebolo odoslané</translation>
+    </message>
+    <message>
+        <source>$$ refused: error {0}, {1}</source>
+        <translation>$$ odmietnuté: chyba {0}, {1}</translation>
+    </message>
+    <message>
+        <source>{0}: refused, error {1}, {2}</source>
+        <translation>{0}: odmietnuté, chyba {1}, {2}</translation>
+    </message>
+    <message>
+        <source>the board was reset before it answered</source>
+        <translation>doska bola resetovaná skôr, než odpovedala</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <extracomment>&quot;read&quot; or &quot;write&quot;. The values the device read back as written (a write), or every value read. Why a value was not written, or why the read failed (empty: all went well). :attr:`values` changed (a read, a verified write, a report nobody asked for). A read or write ended: its :class:`Outcome`. What the settings are called in the window and in snapshots (&quot;grbl&quot;, &quot;usb3-eeprom&quot;). What the device last said it holds, by key. The last read or write&apos;s outcome (None before any). A read or write under way (&quot;read&quot;/&quot;write&quot;), None when idle. What a write under way asked for.</extracomment>
+        <translation>nepripojené</translation>
+    </message>
+    <message>
+        <source>a job is running</source>
+        <translation>beží úloha</translation>
+    </message>
+    <message>
+        <source>the machine is moving</source>
+        <translation>stroj sa pohybuje</translation>
+    </message>
+    <message>
+        <source>{0}: no such setting</source>
+        <translation>{0}: také nastavenie nie je</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>neodoslané</translation>
+    </message>
+    <message>
+        <source>nothing to write</source>
+        <translation>nie je čo zapísať</translation>
+    </message>
+    <message>
+        <source>a read is under way</source>
+        <translation>prebieha čítanie</translation>
+    </message>
+    <message>
+        <source>a write is under way</source>
+        <translation>prebieha zápis</translation>
+    </message>
+    <message>
+        <source>{0}: {1} was written, the device keeps {2}</source>
+        <translation>{0}: zapísané {1}, zariadenie drží {2}</translation>
+    </message>
+    <message>
+        <source>the link went down before the device answered</source>
+        <translation>spojenie spadlo skôr, než zariadenie odpovedalo</translation>
+    </message>
+</context>
+<context>
     <name>StageParameter</name>
     <message>
         <source>Fast speed</source>
@@ -5152,6 +5490,194 @@ dobehne (Esc)</translation>
 queue</source>
         <translation>■ Zahodiť
 front</translation>
+    </message>
+</context>
+<context>
+    <name>StoredSetting</name>
+    <message>
+        <source>{0}: {1!r} is not a number</source>
+        <extracomment>A whole number. A number with at most ``decimals`` decimals. 0 (off) or 1 (on). A whole number whose bits each mean one thing (``bits`` names them, lowest first). One of ``choices`` (a number that stands for a label). How snapshots and scripts name it: ``&quot;$110&quot;``, ``&quot;X.thread&quot;``. Bit names of a MASK, lowest bit first. A CHOICE&apos;s (value, label) pairs. Why the range is narrower than the device&apos;s own (said with a refusal), or &quot;&quot;. The translation context of the label, description and ``narrowed``. The device keeps the value as a 32-bit float (GRBL): read back, it may differ in its last digits from the one written, and still be the same. The axis a per-axis row is of: its label&apos;s ``{0}``.</extracomment>
+        <translation>{0}: {1!r} nie je číslo</translation>
+    </message>
+    <message>
+        <source>{0}: {1} is not a number</source>
+        <translation>{0}: {1} nie je číslo</translation>
+    </message>
+    <message>
+        <source>{0}: must be a whole number, not {1}</source>
+        <translation>{0}: musí byť celé číslo, nie {1}</translation>
+    </message>
+    <message>
+        <source>{0}: must be within {1}…{2} {3}</source>
+        <translation>{0}: musí byť v rozsahu {1}…{2} {3}</translation>
+    </message>
+    <message>
+        <source>{0}: at most {1} decimals are kept, not {2}</source>
+        <translation>{0}: uložia sa najviac {1} desatinné miesta, nie {2}</translation>
+    </message>
+    <message>
+        <source>{0}: {1} is none of the choices</source>
+        <translation>{0}: {1} nie je žiadna z možností</translation>
+    </message>
+</context>
+<context>
+    <name>StoredSettingsPanel</name>
+    <message>
+        <source>Read</source>
+        <extracomment>Keys the operator changed since the device last said what it holds. Keys the last write read back as written (their state says so until the next read). The open &quot;write these differences?&quot; question, while it is asked.</extracomment>
+        <translation>Načítať</translation>
+    </message>
+    <message>
+        <source>Read every setting from the device</source>
+        <translation>Načítať zo zariadenia všetky nastavenia</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použiť</translation>
+    </message>
+    <message>
+        <source>Write the edited values, then read them back from the device</source>
+        <translation>Zapísať upravené hodnoty a potom ich zo zariadenia prečítať späť</translation>
+    </message>
+    <message>
+        <source>Save snapshot…</source>
+        <translation>Uložiť zálohu…</translation>
+    </message>
+    <message>
+        <source>Save every setting to a TOML file</source>
+        <translation>Uložiť všetky nastavenia do súboru TOML</translation>
+    </message>
+    <message>
+        <source>Load snapshot…</source>
+        <translation>Načítať zálohu…</translation>
+    </message>
+    <message>
+        <source>Show what a snapshot changes, then write only that</source>
+        <translation>Ukázať, čo záloha zmení, a zapísať len to</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Nastavenie</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Názov</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Hodnota</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>0 (off) or 1 (on)</source>
+        <translation>0 (vypnuté) alebo 1 (zapnuté)</translation>
+    </message>
+    <message>
+        <source>Allowed: {0}</source>
+        <translation>Povolené: {0}</translation>
+    </message>
+    <message>
+        <source>Bits: {0}</source>
+        <translation>Bity: {0}</translation>
+    </message>
+    <message>
+        <source>Not read: {0}</source>
+        <translation>Nenačítané: {0}</translation>
+    </message>
+    <message>
+        <source>Reading from the device…</source>
+        <translation>Načítavam zo zariadenia…</translation>
+    </message>
+    <message>
+        <source>Nothing changed</source>
+        <translation>Nič sa nezmenilo</translation>
+    </message>
+    <message>
+        <source>Not written: {0}</source>
+        <translation>Nezapísané: {0}</translation>
+    </message>
+    <message>
+        <source>Writing, then reading back…</source>
+        <translation>Zapisujem a potom čítam späť…</translation>
+    </message>
+    <message>
+        <source>Every setting read</source>
+        <translation>Všetky nastavenia načítané</translation>
+    </message>
+    <message>
+        <source>Written and read back: {0}</source>
+        <translation>Zapísané a prečítané späť: {0}</translation>
+    </message>
+    <message>
+        <source>✗ refused</source>
+        <translation>✗ odmietnuté</translation>
+    </message>
+    <message>
+        <source>Save settings snapshot</source>
+        <translation>Uložiť zálohu nastavení</translation>
+    </message>
+    <message>
+        <source>Settings snapshots (*.toml)</source>
+        <translation>Zálohy nastavení (*.toml)</translation>
+    </message>
+    <message>
+        <source>Load settings snapshot</source>
+        <translation>Načítať zálohu nastavení</translation>
+    </message>
+    <message>
+        <source>Not saved: {0} — press Read</source>
+        <translation>Neuložené: {0} — stlačte Načítať</translation>
+    </message>
+    <message>
+        <source>Snapshot saved to {0}</source>
+        <translation>Záloha uložená do {0}</translation>
+    </message>
+    <message>
+        <source>Not loaded: {0}</source>
+        <translation>Nenačítané: {0}</translation>
+    </message>
+    <message>
+        <source>{0}: the device holds every value</source>
+        <translation>{0}: zariadenie už drží všetky hodnoty</translation>
+    </message>
+    <message>
+        <source>Values of {0} that differ from the device:</source>
+        <translation>Hodnoty z {0}, ktoré sa líšia od zariadenia:</translation>
+    </message>
+    <message>
+        <source>This snapshot is of another machine ({0}), not {1}.</source>
+        <translation>Táto záloha je z iného stroja ({0}), nie z {1}.</translation>
+    </message>
+    <message>
+        <source>Write anyway</source>
+        <translation>Napriek tomu zapísať</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Zapísať</translation>
+    </message>
+    <message>
+        <source>Writing the snapshot&apos;s values, then reading back…</source>
+        <translation>Zapisujem hodnoty zálohy a potom čítam späť…</translation>
+    </message>
+    <message>
+        <source>Snapshot not loaded</source>
+        <translation>Záloha nenačítaná</translation>
+    </message>
+    <message>
+        <source>• edited</source>
+        <translation>• upravené</translation>
+    </message>
+    <message>
+        <source>✗ not allowed</source>
+        <translation>✗ nepovolené</translation>
+    </message>
+    <message>
+        <source>✓ read back</source>
+        <translation>✓ prečítané späť</translation>
     </message>
 </context>
 <context>
@@ -5579,6 +6105,15 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
         <source>frames</source>
         <translation>rámcov</translation>
     </message>
+    <message>
+        <source>step/mm</source>
+        <extracomment>The unit words of the stored settings, for lupdate (symbols like mm pass unchanged; the window&apos;s :mod:`widgets.units` says the others in the same context).</extracomment>
+        <translation>krokov/mm</translation>
+    </message>
+    <message>
+        <source>RPM</source>
+        <translation>ot/min</translation>
+    </message>
 </context>
 <context>
     <name>Usb3Panel</name>
@@ -5678,6 +6213,49 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
     <message>
         <source>The unit did not understand a command (?;)</source>
         <translation>Jednotka nerozumela príkazu (?;)</translation>
+    </message>
+</context>
+<context>
+    <name>Usb3Setting</name>
+    <message>
+        <source>full step</source>
+        <translation>celý krok</translation>
+    </message>
+    <message>
+        <source>1/2 step</source>
+        <translation>1/2 kroku</translation>
+    </message>
+    <message>
+        <source>1/4 step</source>
+        <translation>1/4 kroku</translation>
+    </message>
+    <message>
+        <source>1/8 step</source>
+        <translation>1/8 kroku</translation>
+    </message>
+    <message>
+        <source>1/16 step</source>
+        <translation>1/16 kroku</translation>
+    </message>
+    <message>
+        <source>1/32 step</source>
+        <translation>1/32 kroku</translation>
+    </message>
+    <message>
+        <source>{0} step size</source>
+        <translation>{0} veľkosť kroku</translation>
+    </message>
+    <message>
+        <source>The driver&apos;s microstep: finer steps move more smoothly and more slowly (the pulse rate stays the same).</source>
+        <translation>Mikrokrok budiča: jemnejšie kroky idú plynulejšie a pomalšie (frekvencia impulzov zostáva rovnaká).</translation>
+    </message>
+    <message>
+        <source>{0} thread</source>
+        <translation>{0} závit</translation>
+    </message>
+    <message>
+        <source>The axis&apos;s lead screw: how far one turn moves it. It decides how the unit&apos;s counts become millimetres.</source>
+        <translation>Pohybová skrutka osi: ako ďaleko ju posunie jedna otáčka. Určuje, ako sa počty jednotky prevádzajú na milimetre.</translation>
     </message>
 </context>
 </TS>

@@ -645,7 +645,7 @@ def test_grbl_status_mask_leaves_out_the_buffers_as_a_fresh_board_does() -> None
         ("G2 X10 Y0 R2 F100", 34),
         ("G2 X10 Y0 I1 J1 F100", 33),
         ("G2 X0 Y0 I1000000000 F100", 33),  # a circle of a thousand km: not flattened
-        ("$Q", 3),
+        ("$Q", 2),  # read as $N=value, and Q is no number (grbl-sim answers so too)
     ],
 )
 def test_refused_lines_get_grbls_error_and_move_nothing(line: str, code: int) -> None:

@@ -50,9 +50,10 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
     ),
     ("Esc", QT_TRANSLATE_NOOP("MainWindow", "Stop everything, from anywhere in the window")),
     (
-        "Alt+M / A / R / D / L / X / G",
+        "Alt+M / A / R / D / L / X / G / T",
         QT_TRANSLATE_NOOP(
-            "MainWindow", "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page"
+            "MainWindow",
+            "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page",
         ),
     ),
     ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),

@@ -2,7 +2,8 @@
 
 Manual comes first on every machine, then the dialect's own pages in its
 entry's order, then Dynamics where the device has stored parameters, then
-Link.  The page titles keep the ``MainWindow`` translation context they had
+Settings where it keeps settings the station edits (GRBL's ``$$``, the usb3
+unit's EEPROM), then Link.  The page titles keep the ``MainWindow`` translation context they had
 when the window built them itself.
 """
 
@@ -16,6 +17,7 @@ from PySide6.QtWidgets import QFrame, QPushButton, QScrollArea, QWidget
 
 from app.settings import StationSettings
 from app.station import Station
+from app.stored_access import specs_for
 from protocol.drill.timing import DrillTiming
 from widgets.dialects import Page, WindowDialect
 from widgets.jog_input import JogInput
@@ -25,6 +27,7 @@ from widgets.panels.dynamics import DynamicsPanel
 from widgets.panels.gcode import GcodePanel
 from widgets.panels.manual import ManualPanel
 from widgets.panels.relative import RelativePanel
+from widgets.panels.stored_settings import StoredSettingsPanel
 from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker
 
@@ -48,6 +51,8 @@ class Pages:
     relative: RelativePanel | None = None
     gcode: GcodePanel | None = None
     dynamics: DynamicsPanel | None = None
+    #: GRBL's $$ or the usb3 unit's EEPROM values (:mod:`widgets.panels.stored_settings`).
+    settings: StoredSettingsPanel | None = None
     #: The Dynamics page: the panel in a scroll area that only scrolls up and down.
     dynamics_page: QScrollArea | None = None
 
@@ -105,6 +110,7 @@ def build_pages(
         _BUILDERS[page](station, pages, add_page, drill_timing)
     if station.profile.capabilities.parameters:
         _add_dynamics(station, pages, add_page)
+    _add_settings(station, pages, add_page)
     return pages
 
 
@@ -186,4 +192,19 @@ def _add_dynamics(station: Station, pages: Pages, add: AddPage) -> None:
         lambda: QCoreApplication.translate("MainWindow", "&Dynamics"),
         page,
         lambda: QCoreApplication.translate("MainWindow", "Device parameters (Alt+D)"),
+    )
+
+
+def _add_settings(station: Station, pages: Pages, add: AddPage) -> None:
+    """The device's stored settings, where it keeps some the station edits."""
+    specs = specs_for(station.dialect.session_type, station.profile)
+    if specs is None:
+        return
+    panel = pages.settings = StoredSettingsPanel(station, specs)
+    add(
+        lambda: QCoreApplication.translate("MainWindow", "Se&ttings"),
+        panel,
+        lambda: QCoreApplication.translate(
+            "MainWindow", "Stored settings: read, edit, snapshots (Alt+T)"
+        ),
     )
