@@ -23,7 +23,6 @@ from typing import Any, TypeVar
 
 from app.machine import LinkState
 from app.profiles import MachineProfile, ProfileError, load_profile
-from app.scripting import parameters as params
 from app.scripting.errors import (
     ConnectionFailed,
     LinkLost,
@@ -31,6 +30,7 @@ from app.scripting.errors import (
     StepdeckError,
 )
 from app.scripting.job import JobResult, run_job
+from app.scripting.machine_parameters import StageParameterCalls
 from app.scripting.macros import macro_table, run_macro
 from app.scripting.operations import LINK_DOWN as LINK_DOWN
 from app.scripting.operations import Operations
@@ -72,7 +72,7 @@ class Status:
         return any(a.moving for a in self.axes)
 
 
-class Machine:
+class Machine(StageParameterCalls):
     """A connected machine; see the module docstring.  Build it with :func:`connect`."""
 
     def __init__(self, station: Station, pump: Pump, *, timeout: float = DEFAULT_TIMEOUT_S) -> None:
@@ -166,67 +166,6 @@ class Machine:
 
     def wake(self, *, timeout: float = 5.0) -> None:
         self._drive(self.operations.sleep(False, timeout))
-
-    # --- parameters ---------------------------------------------------------------
-
-    def read_parameters(self, *, timeout: float = 10.0) -> dict[str, dict[str, float]]:
-        """Every stored parameter of every axis, freshly read (``{"X": {"fast_speed": 10.0}}``).
-
-        Values are in the units the Dynamics page shows (mm, mm/s, mm/s², counts).
-        """
-        return self._drive(self.operations.read_parameters(timeout))
-
-    def write_parameters(
-        self, values: Mapping[str, Mapping[str, float]], *, timeout: float = 10.0
-    ) -> dict[str, dict[str, float]]:
-        """Write parameters, each verified by the device's answer; returns what was written.
-
-        Raises :class:`~app.scripting.errors.ParameterRefused` naming every
-        refusal (the station's or the device's, with the value it keeps) after
-        trying all of them.  :meth:`undo_last_write` puts back what was there.
-        """
-        return self._drive(self.operations.write_parameters(values, timeout))
-
-    def undo_last_write(self, *, timeout: float = 10.0) -> dict[str, dict[str, float]]:
-        """Write back the values the last :meth:`write_parameters` replaced."""
-        ops = self.operations
-        if not ops.undo:
-            raise StepdeckError("no parameter write to undo")
-        previous, ops.undo = ops.undo, None
-        result = self._drive(self.operations.write_parameters(previous, timeout, remember=False))
-        return result
-
-    def save_parameters(self, path: str | Path, *, timeout: float = 10.0) -> Path:
-        """Save every stored parameter to a TOML snapshot (machine, firmware, date)."""
-        values = self.read_parameters(timeout=timeout)
-        self._drive(params.read_firmware(self, timeout))
-        return params.save_snapshot(Path(path), self.station, values)
-
-    def parameter_diff(
-        self, path: str | Path, *, other_machine: bool = False, timeout: float = 10.0
-    ) -> list[params.Difference]:
-        """What loading a snapshot would change: the parameters that differ from the device."""
-        snapshot = params.load_snapshot(Path(path))
-        params.check_machine(snapshot, self.station.profile, other_machine=other_machine)
-        return params.diff(snapshot, self.read_parameters(timeout=timeout))
-
-    def load_parameters(
-        self, path: str | Path, *, other_machine: bool = False, timeout: float = 10.0
-    ) -> list[params.Difference]:
-        """Write what differs between a snapshot and the device, each write verified.
-
-        Another machine's snapshot is refused unless ``other_machine=True``.
-        Returns the differences written; refusals raise ParameterRefused after
-        every write was tried.  :meth:`undo_last_write` reverts it.
-        """
-        differences = self.parameter_diff(path, other_machine=other_machine, timeout=timeout)
-        changes: dict[str, dict[str, float]] = {}
-        for difference in differences:
-            if difference.writable:
-                changes.setdefault(difference.axis, {})[difference.name] = difference.wanted
-        if changes:
-            self.write_parameters(changes, timeout=timeout)
-        return [d for d in differences if d.writable]
 
     # --- stored settings ----------------------------------------------------------
 
