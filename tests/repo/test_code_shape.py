@@ -21,8 +21,6 @@ MAX_LINES = 100
 #: ``path::Class`` or ``path::function`` (a method: ``path::Class.method``) → why it is
 #: still over: split in parallel branches of #35, or not yet taken on.
 NOT_YET_SPLIT: dict[str, str] = {
-    # Split along their seams by other branches of #35 (the lead shrinks this at merge).
-    "app/jobs/run/runner.py::JobRunner": "progress/ETA and checkpoint scheduling out",
     # Over the limits and not yet taken on by any branch.
     "app/jobs/run/gcode.py::GcodeDriver": "not yet taken on",
     "app/machines/drill/session.py::DrillSession": "not yet taken on",
