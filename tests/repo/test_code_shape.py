@@ -30,7 +30,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/telemetry.py::TelemetryRecorder": "not yet taken on",
     "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog": "not yet taken on",
     "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
-    "protocol/emulator/gcode_interpreter.py::Interpreter._plan": "not yet taken on",
     "widgets/developer/pane.py::EmulatorBox.__init__": "not yet taken on",
     "widgets/jobs/preview.py::JobPreview._build": "not yet taken on",
     "widgets/jobs/preview.py::JobPreview": "31 with the step-through marker (the seam)",
