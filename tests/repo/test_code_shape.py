@@ -27,7 +27,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/session.py::MachineSession": "not yet taken on",
     "app/machines/stage/session.py::StageSession": "not yet taken on",
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
-    "app/telemetry.py::TelemetryRecorder": "not yet taken on",
     "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog": "not yet taken on",
     "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
     "widgets/developer/pane.py::EmulatorBox.__init__": "not yet taken on",
