@@ -28,12 +28,8 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/stage/session.py::StageSession": "not yet taken on",
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
     "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
-    "widgets/developer/pane.py::EmulatorBox.__init__": "not yet taken on",
     "widgets/jobs/preview.py::JobPreview._build": "not yet taken on",
     "widgets/jobs/preview.py::JobPreview": "31 with the step-through marker (the seam)",
-    "widgets/jobs/registration_bar.py::RegistrationBar.__init__": "not yet taken on",
-    "widgets/panels/drill.py::DrillPanel.__init__": "being changed by h-drillteach (#34)",
-    "widgets/panels/manual.py::ManualPanel.__init__": "not yet taken on",
 }
 
 
