@@ -254,12 +254,275 @@ class _ProfileBuilder:
         self.cruise(math.inf)
 
 
+class AxisMotion:
+    """Where an axis is and how it moves: the plan's phases walked event by event.
+
+    :class:`Axis` is the command surface (settings checked, commands planned,
+    positions read out); this is the state those commands change and the walk
+    through time that :meth:`Axis.advance` asks for, end switches included.
+    Its attributes are the axis's own; only :class:`Axis` writes them.
+    """
+
+    def __init__(
+        self, limits: AxisLimits, *, acceleration: float, start_speed: float, position_um: float
+    ) -> None:
+        #: Settings, checked by :class:`Axis` before they are written here.
+        self.limits = limits
+        self.acceleration = acceleration
+        self.start_speed = start_speed
+        self.offset = 0.0  # logical - physical
+        self.x0 = float(position_um)  # logical position at the start of the phase (or at rest)
+        self.t = 0.0  # time into the current phase
+        self.plan: _Plan | None = None
+        self.phase: _Phase | None = None
+        self.queue: tuple[_Phase, ...] = ()  # phases after the current one
+        self.rest_state = AxisState.IDLE
+        #: Physical position at which a closed switch opens again; None = open.
+        self.low_release_at: float | None = None
+        self.high_release_at: float | None = None
+        self.sync_switches()
+
+    @property
+    def position(self) -> float:
+        if self.phase is None:
+            return self.x0
+        return self.phase.position(self.x0, self.t)
+
+    @property
+    def velocity(self) -> float:
+        if self.phase is None:
+            return 0.0
+        return self.phase.velocity(self.t)
+
+    @property
+    def state(self) -> AxisState:
+        if self.phase is None:
+            return self.rest_state
+        return self.phase.state
+
+    def physical(self) -> float:
+        return self.position - self.offset
+
+    # -- plans ----------------------------------------------------------------
+
+    def builder(self, state: AxisState | None = None) -> _ProfileBuilder:
+        return _ProfileBuilder(
+            self.position,
+            self.velocity,
+            acceleration=self.acceleration,
+            start_speed=self.start_speed,
+            state=state,
+        )
+
+    def seek_plan(self, speed: float) -> _Plan:
+        builder = self.builder(AxisState.HOMING)
+        builder.run(-1, speed)
+        return _Plan(_Goal.HOME_SEEK, tuple(builder.phases), speed=speed)
+
+    def install(self, plan: _Plan) -> None:
+        """Replace the plan from the present instant (no time passes)."""
+        self.x0 = self.position
+        self.t = 0.0
+        self.plan = plan
+        self.phase = plan.phases[0] if plan.phases else None
+        self.queue = plan.phases[1:]
+
+    def start(self, plan: _Plan) -> None:
+        self.install(plan)
+        self.run(0.0)  # refusals and zero-length plans resolve before the caller looks
+
+    def halt(self, state: AxisState) -> None:
+        """Standstill here and now."""
+        self.x0 = self.position
+        self.t = 0.0
+        self.plan = None
+        self.phase = None
+        self.queue = ()
+        self.rest_state = state
+        self.sync_switches()
+
+    def sync_switches(self) -> None:
+        """Close a switch whose edge the axis rests on, open one it has backed off from.
+
+        Only for an axis at rest: while moving, switches change only through
+        the events of :meth:`_next_event`, which know to let a move that ends
+        on a switch edge arrive. Judging a moving axis by its position here
+        would turn the last nanometre of such a move into a crash.
+        """
+        physical = self.physical()
+        travel = self.limits.travel_um
+        step = self.limits.microstep_um
+        if self.low_release_at is None:
+            if physical <= POS_EPS:
+                self.low_release_at = max(physical, 0.0) + step
+        elif physical >= self.low_release_at - POS_EPS:
+            self.low_release_at = None
+        if self.high_release_at is None:
+            if physical >= travel - POS_EPS:
+                self.high_release_at = min(physical, travel) - step
+        elif physical <= self.high_release_at + POS_EPS:
+            self.high_release_at = None
+
+    # -- time -----------------------------------------------------------------
+
+    def run(self, dt: float) -> float:
+        """Advance up to ``dt`` (may be inf); return the time that passed while moving."""
+        elapsed = 0.0
+        while self.plan is not None:
+            if self._settle():
+                continue
+            phase = self.phase
+            assert phase is not None  # _settle() ends a plan whose phases ran out
+            budget = max(dt - elapsed, 0.0)
+            event = self._next_event(phase)
+            if event is not None and event[0] - self.t <= budget:
+                at, which, closing = event
+                elapsed += at - self.t
+                self._arrive(phase, at, which, closing)
+                continue
+            if budget <= 0:
+                break
+            left = phase.duration - self.t
+            if math.isinf(left):
+                if math.isinf(budget):
+                    return math.inf  # an endless run: no event will ever stop it
+                self.t += budget
+                elapsed = dt
+            elif left <= budget + TIME_EPS:
+                elapsed += left
+                self._next_phase(phase)
+            else:
+                self.t += budget
+                elapsed = dt
+        return elapsed
+
+    def _settle(self) -> bool:
+        """Apply what the present instant demands; True if that changed the plan."""
+        plan = self.plan
+        assert plan is not None
+        phase = self.phase
+        if phase is None:
+            self._finish(plan)
+            return True
+        if plan.goal is _Goal.HOME_BACK_OFF and self.low_release_at is None:
+            self._finish_homing()
+            return True
+        direction = phase.direction
+        if direction < 0 and self.low_release_at is not None:
+            self._on_switch(plan, "low")
+            return True
+        if direction > 0 and self.high_release_at is not None:
+            self._on_switch(plan, "high")
+            return True
+        return False
+
+    def _next_event(self, phase: _Phase) -> tuple[float, SwitchName, bool] | None:
+        """Earliest switch edge this phase reaches before its end: (time, switch, closing).
+
+        An edge that coincides with the phase's end is left to the phase end, so
+        a move planned to stop exactly on a switch arrives (TARGET_REACHED)
+        rather than crashes into it.
+        """
+        direction = phase.direction
+        travel = self.limits.travel_um
+        edges: list[tuple[float, SwitchName, bool]] = []
+        if direction < 0:
+            if self.low_release_at is None:
+                edges.append((0.0, "low", True))
+            if self.high_release_at is not None:
+                edges.append((self.high_release_at, "high", False))
+        elif direction > 0:
+            if self.high_release_at is None:
+                edges.append((travel, "high", True))
+            if self.low_release_at is not None:
+                edges.append((self.low_release_at, "low", False))
+        end = self._phase_end_position(phase)
+        best: tuple[float, SwitchName, bool] | None = None
+        here = phase.position(self.x0, self.t)
+        for physical, which, closing in edges:
+            edge = physical + self.offset
+            if (end - edge) * direction <= POS_EPS:
+                continue
+            if (edge - here) * direction <= 0:
+                at = self.t  # already on or past it (the travel just shrank)
+            else:
+                at = max(phase.time_to_reach(self.x0, edge), self.t)
+            if best is None or at < best[0]:
+                best = (at, which, closing)
+        return best
+
+    def _phase_end_position(self, phase: _Phase) -> float:
+        if math.isinf(phase.duration):
+            return math.inf * phase.direction
+        plan = self.plan
+        if not self.queue and plan is not None and plan.target is not None:
+            return plan.target
+        return phase.position(self.x0, phase.duration)
+
+    def _arrive(self, phase: _Phase, at: float, which: SwitchName, closing: bool) -> None:
+        """Re-base the phase on the switch edge reached at ``at``, exactly on the edge."""
+        physical = self._physical_edge(which, closing)
+        self.x0 = physical + self.offset
+        self.phase = _Phase(phase.velocity(at), phase.accel, phase.duration - at, phase.state)
+        self.t = 0.0
+        step = self.limits.microstep_um
+        # Latch explicitly (not via sync_switches) so the edge cannot be found again.
+        if which == "low":
+            self.low_release_at = physical + step if closing else None
+        else:
+            self.high_release_at = physical - step if closing else None
+
+    def _physical_edge(self, which: SwitchName, closing: bool) -> float:
+        if closing:
+            return 0.0 if which == "low" else self.limits.travel_um
+        release = self.low_release_at if which == "low" else self.high_release_at
+        assert release is not None
+        return release
+
+    def _next_phase(self, phase: _Phase) -> None:
+        self.x0 = self._phase_end_position(phase)
+        self.t = 0.0
+        if self.queue:
+            self.phase, self.queue = self.queue[0], self.queue[1:]
+        else:
+            self.phase = None
+
+    def _finish(self, plan: _Plan) -> None:
+        if plan.goal is _Goal.MOVE:
+            assert plan.target is not None
+            self.x0 = plan.target
+            self.halt(AxisState.TARGET_REACHED)
+        else:
+            self.halt(AxisState.STOPPED)
+
+    def _on_switch(self, plan: _Plan, which: SwitchName) -> None:
+        """The axis is pushing into a closed switch: it stops dead, without ramp."""
+        self.halt(AxisState.END_SWITCH)
+        if plan.goal is _Goal.HOME_SEEK:
+            if which == "low":
+                back_off = self.start_speed or plan.speed
+                builder = self.builder(AxisState.HOMING)
+                builder.run(1, back_off)
+                self.install(_Plan(_Goal.HOME_BACK_OFF, tuple(builder.phases)))
+            else:
+                # Braking out of a + motion carried the axis into the high switch:
+                # homing goes on, away from it.
+                self.install(self.seek_plan(plan.speed))
+
+    def _finish_homing(self) -> None:
+        physical = self.physical()
+        self.halt(AxisState.TARGET_REACHED)
+        self.offset = -physical
+        self.x0 = 0.0
+
+
 class Axis:
     """One emulated stepper axis: plans trapezoidal moves and steps through them exactly.
 
     Commands only re-plan from the present position and velocity; nothing moves
     until :meth:`advance` is called with elapsed time, which the owner takes
-    from its injected clock.
+    from its injected clock.  The state and the walk through time are
+    :class:`AxisMotion`'s.
     """
 
     def __init__(
@@ -272,77 +535,65 @@ class Axis:
     ) -> None:
         if not math.isfinite(position_um):
             raise ValueError(f"position must be finite, got {position_um!r}")
-        self._limits = limits
-        self._acceleration = 1.0
-        self._start_speed = 0.0
+        self._motion = AxisMotion(
+            limits, acceleration=1.0, start_speed=0.0, position_um=position_um
+        )
         self.acceleration = acceleration
         self.start_speed = start_speed
-        self._offset = 0.0  # logical - physical
-        self._x0 = float(position_um)  # logical position at the start of the phase (or at rest)
-        self._t = 0.0  # time into the current phase
-        self._plan: _Plan | None = None
-        self._phase: _Phase | None = None
-        self._queue: tuple[_Phase, ...] = ()  # phases after the current one
-        self._rest_state = AxisState.IDLE
         self._target: float | None = None
-        # Physical position at which a closed switch opens again; None = open.
-        self._low_release_at: float | None = None
-        self._high_release_at: float | None = None
-        self._sync_switches()
 
     # -- settings -------------------------------------------------------------
 
     @property
     def acceleration(self) -> float:
         """µm/s²; read when a motion is planned, so a change applies from the next command."""
-        return self._acceleration
+        return self._motion.acceleration
 
     @acceleration.setter
     def acceleration(self, value: float) -> None:
         if not (math.isfinite(value) and value > 0):
             raise ValueError(f"acceleration must be positive, got {value!r}")
-        self._acceleration = float(value)
+        self._motion.acceleration = float(value)
 
     @property
     def start_speed(self) -> float:
         """µm/s the motor can jump to from rest (and stop from) without losing steps."""
-        return self._start_speed
+        return self._motion.start_speed
 
     @start_speed.setter
     def start_speed(self, value: float) -> None:
         if not (math.isfinite(value) and value >= 0):
             raise ValueError(f"start speed must be >= 0, got {value!r}")
-        self._start_speed = float(value)
+        self._motion.start_speed = float(value)
 
     @property
     def limits(self) -> AxisLimits:
-        return self._limits
+        return self._motion.limits
 
     @limits.setter
     def limits(self, limits: AxisLimits) -> None:
-        previous, self._limits = self._limits, limits
+        motion = self._motion
+        previous, motion.limits = motion.limits, limits
         if limits.travel_um != previous.travel_um:
             # The high switch sits at the travel, so it moved: forget its latch
             # and judge it afresh from the position.
-            self._high_release_at = None
-        if self._plan is None:
-            self._sync_switches()
+            motion.high_release_at = None
+        if motion.plan is None:
+            motion.sync_switches()
         # A moving axis meets a moved switch through its events, at once if already past it.
-        self._run(0.0)
+        motion.run(0.0)
 
     # -- read-out -------------------------------------------------------------
 
     @property
     def position_um(self) -> float:
-        if self._phase is None:
-            return self._x0
-        return self._phase.position(self._x0, self._t)
+        return self._motion.position
 
     @property
     def physical_um(self) -> float:
         """Where the axis really is, from its low end switch: what an absolute encoder reads,
         whatever SET_POS and homing have made of the logical frame."""
-        return self._physical()
+        return self._motion.physical()
 
     @property
     def microsteps(self) -> int:
@@ -350,27 +601,23 @@ class Axis:
 
         Ties round up, so the count does not depend on Python's banker's rounding.
         """
-        return math.floor(self.position_um / self._limits.microstep_um + 0.5)
+        return math.floor(self.position_um / self._motion.limits.microstep_um + 0.5)
 
     @property
     def position_quantised_um(self) -> float:
-        return self.microsteps * self._limits.microstep_um
+        return self.microsteps * self._motion.limits.microstep_um
 
     @property
     def velocity(self) -> float:
-        if self._phase is None:
-            return 0.0
-        return self._phase.velocity(self._t)
+        return self._motion.velocity
 
     @property
     def state(self) -> AxisState:
-        if self._phase is None:
-            return self._rest_state
-        return self._phase.state
+        return self._motion.state
 
     @property
     def moving(self) -> bool:
-        return self._plan is not None
+        return self._motion.plan is not None
 
     @property
     def target_um(self) -> float | None:
@@ -379,11 +626,11 @@ class Axis:
 
     @property
     def end_switch_low(self) -> bool:
-        return self._low_release_at is not None
+        return self._motion.low_release_at is not None
 
     @property
     def end_switch_high(self) -> bool:
-        return self._high_release_at is not None
+        return self._motion.high_release_at is not None
 
     # -- commands -------------------------------------------------------------
 
@@ -392,19 +639,19 @@ class Axis:
         if not math.isfinite(target_um):
             raise ValueError(f"target must be finite, got {target_um!r}")
         _check_speed(speed)
-        travel = self._limits.travel_um
+        travel = self._motion.limits.travel_um
         clamped = float(min(max(target_um, 0.0), travel))
         self._target = clamped
         if clamped != target_um:
             # The firmware gives up on a position it may not reach and simply
             # heads for that end until the switch stops it.
-            builder = self._builder()
+            builder = self._motion.builder()
             builder.run(1 if target_um > travel else -1, speed)
-            self._start(_Plan(_Goal.RUN, tuple(builder.phases)))
+            self._motion.start(_Plan(_Goal.RUN, tuple(builder.phases)))
             return
-        builder = self._builder()
+        builder = self._motion.builder()
         builder.move(clamped, speed)
-        self._start(_Plan(_Goal.MOVE, tuple(builder.phases), target=clamped))
+        self._motion.start(_Plan(_Goal.MOVE, tuple(builder.phases), target=clamped))
 
     def move_by(self, delta_um: float, speed: float) -> None:
         """MOVE_REL: relative to where the axis is now, not to a target it is still heading for."""
@@ -419,31 +666,31 @@ class Axis:
             return
         _check_speed(speed)
         self._target = None
-        builder = self._builder()
+        builder = self._motion.builder()
         builder.run(direction, speed)
-        self._start(_Plan(_Goal.RUN, tuple(builder.phases), open_ended=True))
+        self._motion.start(_Plan(_Goal.RUN, tuple(builder.phases), open_ended=True))
 
     def stop(self) -> None:
         """STOP: brake to start speed and halt (STOPPED); nothing to do if at rest."""
-        if self._plan is None:
+        if self._motion.plan is None:
             return
         self._target = None
-        builder = self._builder()
+        builder = self._motion.builder()
         builder.brake()
-        self._start(_Plan(_Goal.HALT, tuple(builder.phases)))
+        self._motion.start(_Plan(_Goal.HALT, tuple(builder.phases)))
 
     def estop(self) -> None:
         """ESTOP: standstill at once, whatever the speed (steps are lost on real hardware)."""
-        if self._plan is None:
+        if self._motion.plan is None:
             return
         self._target = None
-        self._halt(AxisState.STOPPED)
+        self._motion.halt(AxisState.STOPPED)
 
     def home(self, speed: float) -> None:
         """HOME: seek the low switch, back off until it releases, call that 0."""
         _check_speed(speed)
         self._target = None
-        self._start(self._seek_plan(speed))
+        self._motion.start(self._motion.seek_plan(speed))
 
     def set_position(self, position_um: float) -> None:
         """SET_POS: rename the present position; a motion in progress carries on physically.
@@ -453,21 +700,22 @@ class Axis:
         """
         if not math.isfinite(position_um):
             raise ValueError(f"position must be finite, got {position_um!r}")
+        motion = self._motion
         shift = position_um - self.position_um
-        self._offset += shift
-        if self._phase is None:
-            self._x0 = float(position_um)
+        motion.offset += shift
+        if motion.phase is None:
+            motion.x0 = float(position_um)
         else:
-            self._x0 += shift
+            motion.x0 += shift
         if self._target is not None:
             self._target += shift
-        if self._plan is not None and self._plan.target is not None:
-            self._plan = _Plan(
-                self._plan.goal,
-                self._plan.phases,
-                target=self._plan.target + shift,
-                speed=self._plan.speed,
-                open_ended=self._plan.open_ended,
+        if motion.plan is not None and motion.plan.target is not None:
+            motion.plan = _Plan(
+                motion.plan.goal,
+                motion.plan.phases,
+                target=motion.plan.target + shift,
+                speed=motion.plan.speed,
+                open_ended=motion.plan.open_ended,
             )
 
     def trigger_end_switch(self, which: SwitchName) -> None:
@@ -476,15 +724,16 @@ class Axis:
         It opens again once the axis has moved a microstep away from it, like
         the real switches.
         """
-        physical = self.position_um - self._offset
-        step = self._limits.microstep_um
+        motion = self._motion
+        physical = motion.physical()
+        step = motion.limits.microstep_um
         if which == "low":
-            self._low_release_at = max(physical, 0.0) + step
+            motion.low_release_at = max(physical, 0.0) + step
         elif which == "high":
-            self._high_release_at = min(physical, self._limits.travel_um) - step
+            motion.high_release_at = min(physical, motion.limits.travel_um) - step
         else:
             raise ValueError(f"no such end switch: {which!r}")
-        self._run(0.0)
+        motion.run(0.0)
 
     # -- time -----------------------------------------------------------------
 
@@ -492,235 +741,22 @@ class Axis:
         """Let ``dt`` seconds pass; any dt gives the same result as the same time in pieces."""
         if not (math.isfinite(dt) and dt >= 0):
             raise ValueError(f"dt must be finite and >= 0, got {dt!r}")
-        self._run(dt)
+        self._motion.run(dt)
 
     def time_to_idle(self) -> float | None:
         """Seconds until standstill if nothing else is commanded.
 
-        Found by running a copy of the axis to the end, so it includes switch
-        stops and homing's back-off exactly as :meth:`advance` would do them.
-        None for a jog, whose end is the operator's decision.
+        Found by running a copy of the axis's motion to the end, so it includes
+        switch stops and homing's back-off exactly as :meth:`advance` would do
+        them. None for a jog, whose end is the operator's decision.
         """
-        if self._plan is None:
+        plan = self._motion.plan
+        if plan is None:
             return 0.0
-        if self._plan.open_ended:
+        if plan.open_ended:
             return None
-        ghost = copy.copy(self)
-        elapsed = ghost._run(math.inf)  # noqa: SLF001 (a copy of self)
+        elapsed = copy.copy(self._motion).run(math.inf)
         return elapsed if math.isfinite(elapsed) else None
-
-    # -- internals ------------------------------------------------------------
-
-    def _builder(self, state: AxisState | None = None) -> _ProfileBuilder:
-        return _ProfileBuilder(
-            self.position_um,
-            self.velocity,
-            acceleration=self._acceleration,
-            start_speed=self._start_speed,
-            state=state,
-        )
-
-    def _seek_plan(self, speed: float) -> _Plan:
-        builder = self._builder(AxisState.HOMING)
-        builder.run(-1, speed)
-        return _Plan(_Goal.HOME_SEEK, tuple(builder.phases), speed=speed)
-
-    def _install(self, plan: _Plan) -> None:
-        """Replace the plan from the present instant (no time passes)."""
-        self._x0 = self.position_um
-        self._t = 0.0
-        self._plan = plan
-        self._phase = plan.phases[0] if plan.phases else None
-        self._queue = plan.phases[1:]
-
-    def _start(self, plan: _Plan) -> None:
-        self._install(plan)
-        self._run(0.0)  # refusals and zero-length plans resolve before the caller looks
-
-    def _halt(self, state: AxisState) -> None:
-        """Standstill here and now."""
-        self._x0 = self.position_um
-        self._t = 0.0
-        self._plan = None
-        self._phase = None
-        self._queue = ()
-        self._rest_state = state
-        self._sync_switches()
-
-    def _physical(self) -> float:
-        return self.position_um - self._offset
-
-    def _sync_switches(self) -> None:
-        """Close a switch whose edge the axis rests on, open one it has backed off from.
-
-        Only for an axis at rest: while moving, switches change only through
-        the events of :meth:`_next_event`, which know to let a move that ends
-        on a switch edge arrive. Judging a moving axis by its position here
-        would turn the last nanometre of such a move into a crash.
-        """
-        physical = self._physical()
-        travel = self._limits.travel_um
-        step = self._limits.microstep_um
-        if self._low_release_at is None:
-            if physical <= POS_EPS:
-                self._low_release_at = max(physical, 0.0) + step
-        elif physical >= self._low_release_at - POS_EPS:
-            self._low_release_at = None
-        if self._high_release_at is None:
-            if physical >= travel - POS_EPS:
-                self._high_release_at = min(physical, travel) - step
-        elif physical <= self._high_release_at + POS_EPS:
-            self._high_release_at = None
-
-    def _run(self, dt: float) -> float:
-        """Advance up to ``dt`` (may be inf); return the time that passed while moving."""
-        elapsed = 0.0
-        while self._plan is not None:
-            if self._settle():
-                continue
-            phase = self._phase
-            assert phase is not None  # _settle() ends a plan whose phases ran out
-            budget = max(dt - elapsed, 0.0)
-            event = self._next_event(phase)
-            if event is not None and event[0] - self._t <= budget:
-                at, which, closing = event
-                elapsed += at - self._t
-                self._arrive(phase, at, which, closing)
-                continue
-            if budget <= 0:
-                break
-            left = phase.duration - self._t
-            if math.isinf(left):
-                if math.isinf(budget):
-                    return math.inf  # an endless run: no event will ever stop it
-                self._t += budget
-                elapsed = dt
-            elif left <= budget + TIME_EPS:
-                elapsed += left
-                self._next_phase(phase)
-            else:
-                self._t += budget
-                elapsed = dt
-        return elapsed
-
-    def _settle(self) -> bool:
-        """Apply what the present instant demands; True if that changed the plan."""
-        plan = self._plan
-        assert plan is not None
-        phase = self._phase
-        if phase is None:
-            self._finish(plan)
-            return True
-        if plan.goal is _Goal.HOME_BACK_OFF and self._low_release_at is None:
-            self._finish_homing()
-            return True
-        direction = phase.direction
-        if direction < 0 and self._low_release_at is not None:
-            self._on_switch(plan, "low")
-            return True
-        if direction > 0 and self._high_release_at is not None:
-            self._on_switch(plan, "high")
-            return True
-        return False
-
-    def _next_event(self, phase: _Phase) -> tuple[float, SwitchName, bool] | None:
-        """Earliest switch edge this phase reaches before its end: (time, switch, closing).
-
-        An edge that coincides with the phase's end is left to the phase end, so
-        a move planned to stop exactly on a switch arrives (TARGET_REACHED)
-        rather than crashes into it.
-        """
-        direction = phase.direction
-        travel = self._limits.travel_um
-        edges: list[tuple[float, SwitchName, bool]] = []
-        if direction < 0:
-            if self._low_release_at is None:
-                edges.append((0.0, "low", True))
-            if self._high_release_at is not None:
-                edges.append((self._high_release_at, "high", False))
-        elif direction > 0:
-            if self._high_release_at is None:
-                edges.append((travel, "high", True))
-            if self._low_release_at is not None:
-                edges.append((self._low_release_at, "low", False))
-        end = self._phase_end_position(phase)
-        best: tuple[float, SwitchName, bool] | None = None
-        here = phase.position(self._x0, self._t)
-        for physical, which, closing in edges:
-            edge = physical + self._offset
-            if (end - edge) * direction <= POS_EPS:
-                continue
-            if (edge - here) * direction <= 0:
-                at = self._t  # already on or past it (the travel just shrank)
-            else:
-                at = max(phase.time_to_reach(self._x0, edge), self._t)
-            if best is None or at < best[0]:
-                best = (at, which, closing)
-        return best
-
-    def _phase_end_position(self, phase: _Phase) -> float:
-        if math.isinf(phase.duration):
-            return math.inf * phase.direction
-        plan = self._plan
-        if not self._queue and plan is not None and plan.target is not None:
-            return plan.target
-        return phase.position(self._x0, phase.duration)
-
-    def _arrive(self, phase: _Phase, at: float, which: SwitchName, closing: bool) -> None:
-        """Re-base the phase on the switch edge reached at ``at``, exactly on the edge."""
-        physical = self._physical_edge(which, closing)
-        self._x0 = physical + self._offset
-        self._phase = _Phase(phase.velocity(at), phase.accel, phase.duration - at, phase.state)
-        self._t = 0.0
-        step = self._limits.microstep_um
-        # Latch explicitly (not via _sync_switches) so the edge cannot be found again.
-        if which == "low":
-            self._low_release_at = physical + step if closing else None
-        else:
-            self._high_release_at = physical - step if closing else None
-
-    def _physical_edge(self, which: SwitchName, closing: bool) -> float:
-        if closing:
-            return 0.0 if which == "low" else self._limits.travel_um
-        release = self._low_release_at if which == "low" else self._high_release_at
-        assert release is not None
-        return release
-
-    def _next_phase(self, phase: _Phase) -> None:
-        self._x0 = self._phase_end_position(phase)
-        self._t = 0.0
-        if self._queue:
-            self._phase, self._queue = self._queue[0], self._queue[1:]
-        else:
-            self._phase = None
-
-    def _finish(self, plan: _Plan) -> None:
-        if plan.goal is _Goal.MOVE:
-            assert plan.target is not None
-            self._x0 = plan.target
-            self._halt(AxisState.TARGET_REACHED)
-        else:
-            self._halt(AxisState.STOPPED)
-
-    def _on_switch(self, plan: _Plan, which: SwitchName) -> None:
-        """The axis is pushing into a closed switch: it stops dead, without ramp."""
-        self._halt(AxisState.END_SWITCH)
-        if plan.goal is _Goal.HOME_SEEK:
-            if which == "low":
-                back_off = self._start_speed or plan.speed
-                builder = self._builder(AxisState.HOMING)
-                builder.run(1, back_off)
-                self._install(_Plan(_Goal.HOME_BACK_OFF, tuple(builder.phases)))
-            else:
-                # Braking out of a + motion carried the axis into the high switch:
-                # homing goes on, away from it.
-                self._install(self._seek_plan(plan.speed))
-
-    def _finish_homing(self) -> None:
-        physical = self._physical()
-        self._halt(AxisState.TARGET_REACHED)
-        self._offset = -physical
-        self._x0 = 0.0
 
 
 def _check_speed(speed: float) -> None:

@@ -191,7 +191,7 @@ for action in (window.jobs_action, window.telemetry_action, window.developer_act
     action.trigger()
 app.processEvents()
 window.save_settings()
-names = ",".join(d.objectName() for d in window._built_docks() if d.isVisible())
+names = ",".join(d.objectName() for d in window.docks.built() if d.isVisible())
 station.shutdown()
 print(names)
 """
@@ -709,17 +709,17 @@ def bench_drill_eta() -> list[str]:
                 harness.run_until(lambda h=harness: h.drill_emulator.homed, timeout=10)
                 runner = JobRunner(harness.station, Path(checkpoints))
                 program = build_drill_program(read_drill_file(path))
-                if runner.load(program) or runner.estimate is None:
+                if runner.load(program) or runner.progress.estimate is None:
                     lines.append(f"drill ETA {path.name}: refused on this machine")
                     continue
-                eta = runner.estimate.total_s
+                eta = runner.progress.estimate.total_s
                 runner.waitingForOperator.connect(lambda _m, r=runner: r.confirm())
                 runner.start()
                 harness.run_until(
                     lambda r=runner: r.state not in (JobState.RUNNING, JobState.WAITING),
                     timeout=3600,
                 )
-                ran = runner.elapsed_s
+                ran = runner.progress.elapsed_s
                 lines.append(
                     f"drill ETA {path.name}: estimate {eta:.1f} s, emulated {ran:.1f} s, "
                     f"ratio {eta / ran:.3f} (goal 0.95…1.05), {runner.state.value}"

@@ -53,7 +53,7 @@ def _settle(window: QWidget) -> None:
     real-time timer (the frame log) given the time to."""
     if isinstance(window, MainWindow):
         window.resize(SCREEN)
-        window.job_runner.emit_eta()  # on the test clock no timer ticks the job's times
+        window.job_runner.progress.emit_eta()  # on the test clock no timer ticks the job's times
     until = time.monotonic() + 0.5
     while time.monotonic() < until:
         QApplication.processEvents()

@@ -252,8 +252,8 @@ class _JobWatch:
         progress = Progress(
             runner.done,
             len(self.program),
-            runner.elapsed_s,
-            runner.remaining_s,
+            runner.progress.elapsed_s,
+            runner.progress.remaining_s,
             runner.state.value,
         )
         self._on_progress(progress)
@@ -340,7 +340,9 @@ class _JobWatch:
         state = runner.state
         if state is JobState.DONE:
             self.report()
-            return JobResult(program.name, len(program), runner.elapsed_s, self.resumed_from)
+            return JobResult(
+                program.name, len(program), runner.progress.elapsed_s, self.resumed_from
+            )
         reason = "; ".join([*self.why, self.said[-1] if self.said else state.value])
         error = JobFailed if state is JobState.FAILED else JobAborted
         raise error(reason, runner.done, len(program))

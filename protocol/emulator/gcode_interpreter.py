@@ -272,25 +272,10 @@ class Interpreter:
             spindle = values["S"]
             used.add("S")
 
-        step_rate, servo = self.step_rate, self.servo_level
-        servo_moved = False
-        plotter = line.m.get("plotter")
-        if plotter is not None:
-            argument = line.bare if line.bare is not None else values.get("P")
-            if argument is None:
-                return VALUE_WORD_MISSING
-            used.add("P")
-            if plotter == 98:
-                if argument <= 0:
-                    return NEGATIVE_VALUE
-                step_rate = 1e6 / argument
-            else:
-                if argument < 0:
-                    return NEGATIVE_VALUE
-                servo = argument
-                servo_moved = True
-        elif line.bare is not None:
-            return EXPECTED_COMMAND_LETTER
+        plotted = self._plotter_words(line, used)
+        if isinstance(plotted, int):
+            return plotted
+        step_rate, servo, servo_moved = plotted
 
         spindle_on = modal.spindle_on
         pen = self.pen_down
@@ -313,18 +298,105 @@ class Interpreter:
             blocks.append(PenChange(pen, cfg.pen_time if pen != self.pen_down else 0.0, level))
 
         if nonmodal == 4:
-            if "P" in values:
-                seconds = values["P"] * cfg.dwell_p_seconds
-                used.add("P")
-            elif dwell_in_s:
-                seconds = values["S"]
-                used.add("S")
-            else:
-                return VALUE_WORD_MISSING
-            if seconds < 0:
-                return NEGATIVE_VALUE
-            blocks.append(Dwell(seconds))
+            dwell = self._dwell(values, dwell_in_s, used)
+            if isinstance(dwell, int):
+                return dwell
+            blocks.append(dwell)
 
+        moved = self._axes(line, absolute, scale, feed, used, blocks)
+        if isinstance(moved, int):
+            return moved
+        motion, position, offset = moved
+
+        if set(values) - used:
+            return UNUSED_WORDS
+
+        flow = line.m.get("flow")
+        if flow in (2, 30):
+            motion, absolute, spindle_on = 1, True, False
+            if pen or level:
+                blocks.append(PenChange(False, cfg.pen_time if pen else 0.0, 0.0))
+            pen, level = False, 0.0
+        elif flow == 0:
+            blocks.append(Pause())
+
+        coolant = line.m.get("coolant")
+        self.modal = replace(
+            modal,
+            coolant=modal.coolant if coolant is None else coolant == 8 and flow not in (2, 30),
+            tool=int(values["T"]) if "T" in values else modal.tool,
+            motion=motion,
+            absolute=absolute,
+            inches=inches,
+            feed=feed,
+            spindle_on=spindle_on,
+            spindle=spindle,
+        )
+        self.position = position
+        self.offset = offset
+        self.pen_down = pen
+        self.spindle_level = level
+        self.step_rate = step_rate
+        self.servo_level = servo
+        return blocks
+
+    def _plotter_words(
+        self, line: _Words, used: set[str]
+    ) -> tuple[float, float | None, bool] | int:
+        """The plotter's M98 (step interval) and M99 (servo level): the step rate, the
+        servo level and whether the servo moves, or the error code."""
+        values = line.values
+        step_rate, servo = self.step_rate, self.servo_level
+        servo_moved = False
+        plotter = line.m.get("plotter")
+        if plotter is not None:
+            argument = line.bare if line.bare is not None else values.get("P")
+            if argument is None:
+                return VALUE_WORD_MISSING
+            used.add("P")
+            if plotter == 98:
+                if argument <= 0:
+                    return NEGATIVE_VALUE
+                step_rate = 1e6 / argument
+            else:
+                if argument < 0:
+                    return NEGATIVE_VALUE
+                servo = argument
+                servo_moved = True
+        elif line.bare is not None:
+            return EXPECTED_COMMAND_LETTER
+        return step_rate, servo, servo_moved
+
+    def _dwell(self, values: dict[str, float], in_s: bool, used: set[str]) -> Dwell | int:
+        """G4: P in the firmware's unit (GRBL: seconds), or S in seconds where the firmware
+        takes it; the dwell, or the error code."""
+        if "P" in values:
+            seconds = values["P"] * self.config.dwell_p_seconds
+            used.add("P")
+        elif in_s:
+            seconds = values["S"]
+            used.add("S")
+        else:
+            return VALUE_WORD_MISSING
+        if seconds < 0:
+            return NEGATIVE_VALUE
+        return Dwell(seconds)
+
+    def _axes(
+        self,
+        line: _Words,
+        absolute: bool,
+        scale: float,
+        feed: float | None,
+        used: set[str],
+        blocks: list[Block],
+    ) -> tuple[int, tuple[float, ...], tuple[float, ...]] | int:
+        """What the line's axis words do: G92, G28, a move or an arc (queued on ``blocks``),
+        drivers off; the motion mode, position and offset after it, or the error code."""
+        cfg = self.config
+        values = line.values
+        modal = self.modal
+        nonmodal = line.g.get("non-modal")
         motion_given = line.g.get("motion")
         motion = modal.motion if motion_given is None else motion_given
         if nonmodal in (28, 92) and motion_given is not None:
@@ -388,38 +460,7 @@ class Interpreter:
         if nonmodal == G92_1:
             offset = (0.0,) * len(cfg.axes)
             blocks.append(SetOffset(offset))
-
-        if set(values) - used:
-            return UNUSED_WORDS
-
-        flow = line.m.get("flow")
-        if flow in (2, 30):
-            motion, absolute, spindle_on = 1, True, False
-            if pen or level:
-                blocks.append(PenChange(False, cfg.pen_time if pen else 0.0, 0.0))
-            pen, level = False, 0.0
-        elif flow == 0:
-            blocks.append(Pause())
-
-        coolant = line.m.get("coolant")
-        self.modal = replace(
-            modal,
-            coolant=modal.coolant if coolant is None else coolant == 8 and flow not in (2, 30),
-            tool=int(values["T"]) if "T" in values else modal.tool,
-            motion=motion,
-            absolute=absolute,
-            inches=inches,
-            feed=feed,
-            spindle_on=spindle_on,
-            spindle=spindle,
-        )
-        self.position = position
-        self.offset = offset
-        self.pen_down = pen
-        self.spindle_level = level
-        self.step_rate = step_rate
-        self.servo_level = servo
-        return blocks
+        return motion, position, offset
 
     def _target(
         self,

@@ -3408,7 +3408,7 @@ Přesto odeslat do stroje?</translation>
     <name>JobRunner</name>
     <message>
         <source>Stop the running job before loading another</source>
-        <extracomment>Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since. What the jog lock says while this runner&apos;s program is under way (a macro&apos;s runner says its own, so that neither kind of runner starts while the other&apos;s runs).</extracomment>
+        <extracomment>Operations the machine reported as run, and the total. Equal to ``done`` where one operation is sent at a time; behind it on G-code, whose planner holds answered lines. Only the operator can tell whether an operation ran: question, &quot;again&quot; and &quot;done&quot; labels. Only the operator can say where an interrupted job goes on: a ResumeChoice. The station the job runs on (its profile, so its dialect, is kept for life). Operations done and executed, the estimate, the elapsed, running and waiting times and the time left; it emits the progress and ETA signals above. What the jog lock says while this runner&apos;s program is under way (a macro&apos;s runner says its own, so that neither kind of runner starts while the other&apos;s runs).</extracomment>
         <translation>Před načtením další úlohy zastavte tu běžící</translation>
     </message>
     <message>
@@ -3447,6 +3447,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Job failed at {0}: {1}</source>
+        <extracomment>The run stops after the operation under way (Step). A pause was asked for while an operation was under way (PAUSING). The operation the operator is asked about. Where to go on, for the operator to pick. Paused until the operator acts (an alarm, a board that restarted): nothing resumes it on its own (the scripting API ends the job instead). Paused because the link went, and nothing else has happened to the job since.</extracomment>
         <translation>Úloha selhala na {0}: {1}</translation>
     </message>
     <message>
@@ -4647,6 +4648,7 @@ Buttons a row.</extracomment>
     </message>
     <message>
         <source>continuous (hold)</source>
+        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds). The pad and the arrow-key choice, left out on a machine that cannot jog.</extracomment>
         <translation>plynule (držet)</translation>
     </message>
     <message>
@@ -4679,7 +4681,6 @@ Buttons a row.</extracomment>
     </message>
     <message>
         <source>Hold to jog {0} up  (key: {1})</source>
-        <extracomment>Why the jog buttons are off while the machine itself may move (a job under way). Buttons shown pressed for a held arrow key (never one the mouse holds). The pad and the arrow-key choice, left out on a machine that cannot jog.</extracomment>
         <translation>Držením posouvat {0} nahoru  (klávesa: {1})</translation>
     </message>
     <message>

@@ -84,8 +84,8 @@ def test_a_job_on_a_link_that_saw_no_homing_homes_first_then_parks_and_switches_
     prompted_at: list[int] = []
     runner.waitingForOperator.connect(lambda _message: prompted_at.append(len(sent)))
     assert runner.load(two_holes()) == []
-    assert runner.estimate is not None
-    eta = runner.estimate.total_s
+    assert runner.progress.estimate is not None
+    eta = runner.progress.estimate.total_s
     runner.start()
     run_to_end(drill, runner)
 
@@ -99,7 +99,7 @@ def test_a_job_on_a_link_that_saw_no_homing_homes_first_then_parks_and_switches_
     model = drill.station.model
     assert model.axes[0].position == 0.0 and model.axes[1].position == pytest.approx(150.0)
     # Homing and park are in the estimate: the run takes what it said, within 5 %.
-    assert runner.running_s == pytest.approx(eta, rel=0.05)
+    assert runner.progress.running_s == pytest.approx(eta, rel=0.05)
 
     # The station saw the N: the next job on this link does not home again.
     assert not session.homes_before_job

@@ -84,9 +84,9 @@ def test_200_random_moves_run_to_done_each_target_once_in_order_and_the_eta_hold
     runner.stateChanged.connect(states.append)
     assert runner.load(prog) == []
     assert runner.state is JobState.READY
-    assert runner.estimate is not None
-    eta_at_start = runner.remaining_s
-    assert eta_at_start == runner.estimate.total_s
+    assert runner.progress.estimate is not None
+    eta_at_start = runner.progress.remaining_s
+    assert eta_at_start == runner.progress.estimate.total_s
 
     runner.start()
     took = connected.run_until(lambda: finished(runner), timeout=2000)
@@ -95,8 +95,8 @@ def test_200_random_moves_run_to_done_each_target_once_in_order_and_the_eta_hold
     assert runner.done == 200
     assert executed_moves(connected) == expected_moves(prog)
     assert abs(eta_at_start - took) <= 0.02 * took, (eta_at_start, took)
-    assert runner.remaining_s == 0.0
-    assert runner.elapsed_s == pytest.approx(took, abs=0.02)
+    assert runner.progress.remaining_s == 0.0
+    assert runner.progress.elapsed_s == pytest.approx(took, abs=0.02)
     assert not list((tmp_path / "checkpoints").glob("*.json"))  # removed when done
     x, y = connected.station.model.axes
     assert (x.position, y.position) == pytest.approx(tuple(prog[-1].target.values()), abs=0.002)
@@ -116,13 +116,13 @@ def test_pause_lets_the_current_move_finish_and_nothing_starts_until_resume(
     assert runner.done == 4  # the move under way was finished, not cut
     sent = executed_moves(connected)
     assert sent == expected_moves(prog.operations[:4])
-    elapsed_at_pause, waiting_at_pause = runner.elapsed_s, runner.waiting_s
+    elapsed_at_pause, waiting_at_pause = runner.progress.elapsed_s, runner.progress.waiting_s
     connected.run(10.0)
     assert executed_moves(connected) == sent
     assert runner.state is JobState.PAUSED and runner.done == 4
     # The wall clock goes on while paused, and the pause is told apart as waiting.
-    assert runner.elapsed_s == pytest.approx(elapsed_at_pause + 10.0, abs=0.02)
-    assert runner.waiting_s == pytest.approx(waiting_at_pause + 10.0, abs=0.02)
+    assert runner.progress.elapsed_s == pytest.approx(elapsed_at_pause + 10.0, abs=0.02)
+    assert runner.progress.waiting_s == pytest.approx(waiting_at_pause + 10.0, abs=0.02)
 
     runner.resume()
     connected.run_until(lambda: finished(runner), timeout=120)
@@ -206,11 +206,15 @@ def test_a_wait_holds_the_job_until_the_operator_confirms(
     runner.start()
     connected.run_until(lambda: runner.state is JobState.WAITING)
     assert asked == ["load the sample"] and runner.done == 1
-    elapsed, waiting = runner.elapsed_s, runner.waiting_s
+    elapsed, waiting = runner.progress.elapsed_s, runner.progress.waiting_s
     connected.run(20.0)
     assert runner.state is JobState.WAITING
-    assert runner.elapsed_s == pytest.approx(elapsed + 20.0, abs=0.02)  # the prompt's time counts
-    assert runner.waiting_s == pytest.approx(waiting + 20.0, abs=0.02)  # told apart as waiting
+    assert runner.progress.elapsed_s == pytest.approx(
+        elapsed + 20.0, abs=0.02
+    )  # the prompt's time counts
+    assert runner.progress.waiting_s == pytest.approx(
+        waiting + 20.0, abs=0.02
+    )  # told apart as waiting
     assert executed_moves(connected) == expected_moves(prog.operations[:1])
 
     runner.confirm()

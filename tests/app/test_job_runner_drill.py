@@ -97,8 +97,8 @@ def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_
 ) -> None:
     program = sample_program(data_dir)
     assert runner.load(program) == []
-    assert runner.estimate is not None
-    eta = runner.estimate.total_s
+    assert runner.progress.estimate is not None
+    eta = runner.progress.estimate.total_s
     asked = auto_confirm(runner)
     runner.start()
     run_to_end(drill, runner)
@@ -115,8 +115,8 @@ def test_the_sample_board_is_drilled_every_hole_once_where_the_file_says_within_
     assert (round(25.654 * 19.8), round(11.684 * 19.7)) in expected
     # At least the drill cycles themselves, and the model's time within 5 % of the run's.
     assert eta > SAMPLE_HOLES * DRILL_CYCLE_S
-    print(f"drill: ETA {eta:.2f} s, emulated {runner.running_s:.2f} s")
-    assert runner.running_s == pytest.approx(eta, rel=0.05)
+    print(f"drill: ETA {eta:.2f} s, emulated {runner.progress.running_s:.2f} s")
+    assert runner.progress.running_s == pytest.approx(eta, rel=0.05)
 
 
 def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
@@ -124,8 +124,8 @@ def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
 ) -> None:
     program = sample_program(data_dir, "draw")
     assert runner.load(program) == []
-    assert runner.estimate is not None
-    eta = runner.estimate.total_s
+    assert runner.progress.estimate is not None
+    eta = runner.progress.estimate.total_s
     auto_confirm(runner)
     runner.start()
     run_to_end(drill, runner)
@@ -145,8 +145,8 @@ def test_s2_12_a_drawn_job_draws_on_the_machine_what_its_preview_shows(
     assert drawn == [seg for seg in previewed if seg[:2] != seg[2:]]
     assert drill.drill_emulator.drill_log == ()
     assert not drill.drill_emulator.pen_down
-    print(f"draw: ETA {eta:.2f} s, emulated {runner.running_s:.2f} s")
-    assert runner.running_s == pytest.approx(eta, rel=0.05)
+    print(f"draw: ETA {eta:.2f} s, emulated {runner.progress.running_s:.2f} s")
+    assert runner.progress.running_s == pytest.approx(eta, rel=0.05)
 
 
 def test_cross_mode_puts_the_pen_down_at_both_arms_of_every_cross(
@@ -154,8 +154,8 @@ def test_cross_mode_puts_the_pen_down_at_both_arms_of_every_cross(
 ) -> None:
     program = sample_program(data_dir, "cross")
     assert runner.load(program) == []
-    assert runner.estimate is not None
-    eta = runner.estimate.total_s
+    assert runner.progress.estimate is not None
+    eta = runner.progress.estimate.total_s
     auto_confirm(runner)
     runner.start()
     run_to_end(drill, runner)
@@ -173,8 +173,8 @@ def test_cross_mode_puts_the_pen_down_at_both_arms_of_every_cross(
     assert downs == expected
     assert drill.drill_emulator.drill_log == ()
     assert not drill.drill_emulator.pen_down
-    print(f"draw: ETA {eta:.2f} s, emulated {runner.running_s:.2f} s")
-    assert runner.running_s == pytest.approx(eta, rel=0.05)
+    print(f"draw: ETA {eta:.2f} s, emulated {runner.progress.running_s:.2f} s")
+    assert runner.progress.running_s == pytest.approx(eta, rel=0.05)
 
 
 def test_the_dry_run_times_moves_axis_after_axis_at_the_step_periods() -> None:

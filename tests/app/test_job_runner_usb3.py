@@ -80,7 +80,7 @@ def test_a_point_list_runs_on_the_unit_each_target_reached_once_in_order(
         lambda _i: seen.append((unit_at(unit, AxisId.X), unit_at(unit, AxisId.Y)))
     )
     assert runner.load(program) == []
-    assert runner.estimate is not None and runner.estimate.total_s > 0
+    assert runner.progress.estimate is not None and runner.progress.estimate.total_s > 0
     runner.start()
     unit.run_until(lambda: finished(runner), timeout=60)
 

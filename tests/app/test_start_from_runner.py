@@ -123,7 +123,7 @@ def test_what_comes_before_the_start_counts_as_run_in_the_checkpoint(
     runner.load(loaded)
     start = operation_at_line(loaded, 7)
     runner.start_from(start)
-    harness.run_until(lambda: runner.executed > start, 30)
+    harness.run_until(lambda: runner.progress.executed > start, 30)
     runner.abort()
     again = JobRunner(harness.station, tmp_path / "ck")
     again.load(loaded)
@@ -169,7 +169,7 @@ def test_a_resume_inside_an_inch_stretch_goes_back_in_mm_and_on_in_inches(
     runner = JobRunner(harness.station, tmp_path / "ck")
     assert runner.load(loaded) == []
     runner.start()
-    harness.run_until(lambda: runner.executed > 8, 60)
+    harness.run_until(lambda: runner.progress.executed > 8, 60)
     harness.loopback.sever("cable pulled")
     harness.run_until(lambda: runner.state is JobState.PAUSED, 10)
     harness.run_until(lambda: harness.station.model.link_state is LinkState.CONNECTED, 30)

@@ -237,7 +237,7 @@ def test_throttle_coalesces_a_burst_into_few_emits(harness: StationHarness, qtbo
     assert seen[-1] == pytest.approx(5.0)  # the trailing emit shows the last sample
     assert len(recorder.recorded("X position")[0]) == 500
     # Quiet again: the next change is shown at once, after the interval has passed.
-    qtbot.waitUntil(lambda: not recorder._throttle.isActive(), timeout=2000)
+    qtbot.waitUntil(lambda: not recorder._pacer.throttle.isActive(), timeout=2000)
     model.update_axis(0, position=9.0)
     assert len(seen) == 3 and seen[-1] == 9.0
     recorder.deleteLater()
@@ -252,7 +252,7 @@ def test_scroll_beat_moves_the_window_without_samples(
     recorder.set_paused(True)
     emits: list[int] = []
     recorder.updated.connect(lambda: emits.append(1))
-    with qtbot.waitSignal(recorder._scroll.timeout, timeout=2000):
+    with qtbot.waitSignal(recorder._pacer.scroll.timeout, timeout=2000):
         pass
     assert emits == []  # paused: nothing moves
     recorder.deleteLater()
@@ -429,7 +429,7 @@ def test_scroll_beat_stays_silent_while_samples_keep_coming(
         harness.clock.advance(0.3)
         model.update_axis(0, position=float(k + 1))
         # counted afresh from this frame (a coarse timer may round by 5 %)
-        assert recorder._scroll.remainingTime() > 4000
+        assert recorder._pacer.scroll.remainingTime() > 4000
     assert len(emits) == 5
     recorder.deleteLater()
 

@@ -512,7 +512,7 @@ def test_a_board_that_restarts_when_its_port_reopens_draws_each_stroke_once(
         runner = start(station, program, tmp_path)
         runner.message.connect(said.append)
         # Pulled while the board has a planner full of answered lines and more are to come.
-        until(qtbot, board, lambda: runner.executed >= 6, JOB_TIMEOUT_MS)
+        until(qtbot, board, lambda: runner.progress.executed >= 6, JOB_TIMEOUT_MS)
         unplugged_at = len(_wire_events(board))
         os.kill(process.pid, signal.SIGUSR1)  # the USB cable pulled
         until(qtbot, board, lambda: runner.state is JobState.PAUSED, 30_000)

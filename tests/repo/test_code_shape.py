@@ -21,28 +21,13 @@ MAX_LINES = 100
 #: ``path::Class`` or ``path::function`` (a method: ``path::Class.method``) → why it is
 #: still over: split in parallel branches of #35, or not yet taken on.
 NOT_YET_SPLIT: dict[str, str] = {
-    # Split along their seams by other branches of #35 (the lead shrinks this at merge).
-    "app/jobs/run/runner.py::JobRunner": "progress/ETA and checkpoint scheduling out",
     # Over the limits and not yet taken on by any branch.
     "app/jobs/run/gcode.py::GcodeDriver": "not yet taken on",
     "app/machines/drill/session.py::DrillSession": "not yet taken on",
     "app/machines/session.py::MachineSession": "not yet taken on",
     "app/machines/stage/session.py::StageSession": "not yet taken on",
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
-    "app/telemetry.py::TelemetryRecorder": "not yet taken on",
-    "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog": "not yet taken on",
     "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
-    "protocol/mechanism.py::Axis": "not yet taken on (the emulators and the estimates share it)",
-    "app/jobs/formats/gcode/parser.py::Parser._words": "one G-code lexer in protocol/gcode/ (#35)",
-    "app/jobs/formats/string_art/program.py::build_program": "not yet taken on",
-    "protocol/emulator/gcode_interpreter.py::Interpreter._plan": "not yet taken on",
-    "widgets/developer/pane.py::EmulatorBox.__init__": "not yet taken on",
-    "widgets/jobs/registration_bar.py::RegistrationBar.__init__": "not yet taken on",
-    "widgets/jobs/string_art_generator_dialog.py::StringArtGeneratorDialog.__init__": (
-        "not yet taken on"
-    ),
-    "widgets/panels/drill.py::DrillPanel.__init__": "being changed by h-drillteach (#34)",
-    "widgets/panels/manual.py::ManualPanel.__init__": "not yet taken on",
 }
 
 

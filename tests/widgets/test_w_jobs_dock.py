@@ -182,7 +182,7 @@ def test_run_shows_progress_eta_and_the_current_operation(
     assert dock.progress.value() == dock.runner.done
     assert dock.count_label.text() == f"{dock.runner.done} / 13 ops"
     assert dock.eta_label.text() != eta_before
-    assert dock.elapsed_label.text() != "elapsed 00:00" or dock.runner.elapsed_s < 0.5
+    assert dock.elapsed_label.text() != "elapsed 00:00" or dock.runner.progress.elapsed_s < 0.5
     assert dock.operation_label.text().startswith("square.csv:")
     assert "move to X" in dock.operation_label.text()
     done_x = dock.preview.done_travel_curve.getData()[0]
@@ -303,24 +303,25 @@ def test_elapsed_and_done_in_count_the_prompt_and_tell_the_waiting_apart(
     qtbot.mouseClick(dock.run_button, LEFT)
     harness.run_until(lambda: runner.state is JobState.WAITING, timeout=60)
     harness.run(10.0)
-    running = runner.running_s
-    assert runner.waiting_s >= 10.0
+    running = runner.progress.running_s
+    assert runner.progress.waiting_s >= 10.0
     qtbot.mouseClick(dock.continue_button, LEFT)
     harness.run_until(lambda: runner.state is JobState.DONE, timeout=60)
     harness.run(1.0)
     assert runner.state is JobState.DONE
-    waited = runner.waiting_s
+    waited = runner.progress.waiting_s
     assert 10.0 <= waited < 10.5
-    assert runner.elapsed_s == pytest.approx(runner.running_s + waited)
-    assert runner.running_s > running  # the last move ran after the prompt
+    assert runner.progress.elapsed_s == pytest.approx(runner.progress.running_s + waited)
+    assert runner.progress.running_s > running  # the last move ran after the prompt
     shown = dock.elapsed_label.text()
+    elapsed = runner.progress.elapsed_s
     assert shown == (
-        f"elapsed {clock_text(runner.elapsed_s)} (of which {clock_text(waited)} waiting for you)"
+        f"elapsed {clock_text(elapsed)} (of which {clock_text(waited)} waiting for you)"
     ), shown
     done = [line for line in messages(dock).splitlines() if "done:" in line][-1]
-    assert done.endswith(f"in {runner.elapsed_s:.1f} s, of which {waited:.1f} s waiting for you"), (
-        done
-    )
+    assert done.endswith(
+        f"in {runner.progress.elapsed_s:.1f} s, of which {waited:.1f} s waiting for you"
+    ), done
     assert dock.eta_label.text() == "left 00:00"
     harness.run(5.0)  # the clock stops with the job
     assert dock.elapsed_label.text() == shown

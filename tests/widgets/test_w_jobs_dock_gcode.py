@@ -197,13 +197,13 @@ def test_progress_counts_what_the_machine_ran_and_says_what_was_sent_ahead(
     runner = dock.runner
     total = len(runner.program or [])
     qtbot.mouseClick(dock.run_button, LEFT)
-    plotter.run_until(lambda: runner.done > runner.executed, timeout=10)
+    plotter.run_until(lambda: runner.done > runner.progress.executed, timeout=10)
     # Everything sent, the machine still on its way: not shown as done.
     plotter.run_until(lambda: runner.done == total, timeout=10)
-    assert runner.executed < total and runner.state is not JobState.DONE
-    assert dock.progress.value() == runner.executed < dock.progress.maximum()
-    assert dock.count_label.text() == f"{runner.executed} / {total} ops · {total} sent"
-    assert dock.preview.done == runner.executed  # green only what was drawn
+    assert runner.progress.executed < total and runner.state is not JobState.DONE
+    assert dock.progress.value() == runner.progress.executed < dock.progress.maximum()
+    assert dock.count_label.text() == f"{runner.progress.executed} / {total} ops · {total} sent"
+    assert dock.preview.done == runner.progress.executed  # green only what was drawn
     plotter.run_until(lambda: runner.state is JobState.DONE, timeout=120)
     assert plotter.gcode_session.settled
     assert dock.count_label.text() == f"{total} / {total} ops"
@@ -220,10 +220,10 @@ def test_an_abort_reports_one_count_the_one_the_resume_offer_holds(
     assert dock.open_path(job)
     runner = dock.runner
     qtbot.mouseClick(dock.run_button, LEFT)
-    plotter.run_until(lambda: runner.done > runner.executed >= 3, timeout=60)
+    plotter.run_until(lambda: runner.done > runner.progress.executed >= 3, timeout=60)
     qtbot.mouseClick(dock.abort_button, LEFT)
     plotter.run(1.0)
-    executed = runner.executed
+    executed = runner.progress.executed
     assert f"Job aborted after {executed} of" in messages(dock)
     assert runner.resume_available == executed
     assert f"completed {executed} of" in dock.resume_offer_label.text()

@@ -133,16 +133,18 @@ def test_esc_during_a_job_ends_the_job_and_the_machine_stays_still(
         assert dock.open_path(job)
         runner = dock.runner
         qtbot.mouseClick(dock.run_button, LEFT)
-        harness.run_until(lambda: runner.executed >= 2 and harness.station.model.any_moving)
+        harness.run_until(
+            lambda: runner.progress.executed >= 2 and harness.station.model.any_moving
+        )
         qtbot.keyPress(window, Qt.Key.Key_Escape)
         harness.run_until(lambda: not harness.station.model.any_moving, timeout=10)
         assert runner.state is JobState.ABORTED
         harness.run(1.0)  # the last position reports of the stop arrive
-        executed = runner.executed
+        executed = runner.progress.executed
         still = [a.position for a in harness.station.model.axes]
         harness.run(5.0)
         assert [a.position for a in harness.station.model.axes] == still
-        assert runner.state is JobState.ABORTED and runner.executed == executed
+        assert runner.state is JobState.ABORTED and runner.progress.executed == executed
         # One figure everywhere: the dock's message, its count and its resume offer.
         assert f"Job aborted after {executed} of {len(points)}" in dock.messages.toPlainText()
         assert dock.count_label.text() == f"{executed} / {len(points)} ops"

@@ -41,7 +41,7 @@ def test_a_finished_drill_job_has_no_time_left(qtbot: QtBot, tmp_path: Path) -> 
                 dock.continue_button.click()
         assert prompts == 2
         harness.run(2.0)
-        assert dock.runner.remaining_s == 0.0
+        assert dock.runner.progress.remaining_s == 0.0
         assert dock.eta_label.text() == "left 00:00"
     finally:
         harness.close()

@@ -147,7 +147,7 @@ def test_a_start_that_cannot_be_set_up_is_refused_in_the_dialog_with_file_and_li
     program = runner.program
     assert program is not None
     runner.start_from(operation_at_line(program, 4))
-    plotter.run_until(lambda: runner.executed > operation_at_line(program, 4), timeout=30)
+    plotter.run_until(lambda: runner.progress.executed > operation_at_line(program, 4), timeout=30)
     runner.abort()
     assert runner.resume_available is not None
     dialog = open_dialog(qtbot, dock)

@@ -82,8 +82,8 @@ def test_a_2m_entry_poradi_loads_through_the_dock_and_its_thread_is_drawn_merged
         assert list(program.job.sequence) == order
         assert program.job.params == StringArtParams(0, NAILS, 12.0)
         # The checks and estimate made on the loading thread are the runner's own.
-        assert runner.estimate is not None and runner.estimate.total_s > 0
-        assert runner.estimate.total_s == pytest.approx(
+        assert runner.progress.estimate is not None and runner.progress.estimate.total_s > 0
+        assert runner.progress.estimate.total_s == pytest.approx(
             runner.checker()(program).estimate.total_s  # type: ignore[union-attr]
         )
 

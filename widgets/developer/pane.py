@@ -261,6 +261,34 @@ class EmulatorBox(QGroupBox):
         self.usb.toggled.connect(controls.set_usb)
         self.verification_fault.toggled.connect(controls.set_verification_fault)
 
+        form = self._build_fields(t, controls)
+        axes = self._build_axes(t, controls, axis_names)
+        link = self._build_link(t, controls)
+        self.note = QLabel()
+        self.gate = FieldGate(self.note, self)
+        self.gate.watch(self.battery, lambda: self.tr("Battery"))
+        self.gate.watch(self.temperature, lambda: self.tr("Temperature"))
+        self.gate.watch(self.rotation, lambda: self.tr("Rotation rate"))
+        self.gate.watch(self.corrupt_count, lambda: self.tr("Corrupt"))
+        self.gate.bind(self.corrupt_button, self.corrupt_count)
+
+        body = QVBoxLayout(self.body)
+        body.setContentsMargins(0, 0, 0, 0)
+        for box in (self.charger, self.usb, self.verification_fault):
+            body.addWidget(box)
+        body.addLayout(form)
+        body.addLayout(axes)
+        body.addLayout(link)
+        body.addWidget(self.note)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.note)
+        layout.addWidget(self.body)
+
+        controls.availabilityChanged.connect(self.sync)
+        self.sync()
+
+    def _build_fields(self, t: Texts, controls: EmulatorControls) -> QFormLayout:
+        """The battery, the temperature and the rotation rate."""
         # Applied on Enter, focus out or an arrow step (committed), not at every keystroke
         # of "12.5"; a value outside the range stays red and is not applied.
         self.battery = NumberField(
@@ -288,7 +316,12 @@ class EmulatorBox(QGroupBox):
         form.addRow(t.label(lambda: self.tr("Battery")), self.battery)
         form.addRow(t.label(lambda: self.tr("Temperature")), self.temperature)
         form.addRow(t.label(lambda: self.tr("Rotation rate")), self.rotation)
+        return form
 
+    def _build_axes(
+        self, t: Texts, controls: EmulatorControls, axis_names: list[str]
+    ) -> QGridLayout:
+        """Per axis: its end switches to close, and a driver fault."""
         self.switch_buttons: dict[tuple[int, str], QPushButton] = {}
         self.driver_faults: list[QCheckBox] = []
         axes = QGridLayout()
@@ -309,7 +342,10 @@ class EmulatorBox(QGroupBox):
             fault.toggled.connect(lambda on, a=index: controls.set_driver_fault(a, on))
             self.driver_faults.append(fault)
             axes.addWidget(fault, index, 3)
+        return axes
 
+    def _build_link(self, t: Texts, controls: EmulatorControls) -> QHBoxLayout:
+        """Drop the link; corrupt the next frames."""
         self.drop_button = t.button(
             lambda: self.tr("Drop link"),
             lambda: self.tr("Cut the emulated cable; the station reconnects with back-off"),
@@ -323,34 +359,13 @@ class EmulatorBox(QGroupBox):
             lambda: self.tr("Flip a byte in each of the next frames from the device"),
         )
         self.corrupt_button.clicked.connect(self._corrupt)
-        self.note = QLabel()
-        self.gate = FieldGate(self.note, self)
-        self.gate.watch(self.battery, lambda: self.tr("Battery"))
-        self.gate.watch(self.temperature, lambda: self.tr("Temperature"))
-        self.gate.watch(self.rotation, lambda: self.tr("Rotation rate"))
-        self.gate.watch(self.corrupt_count, lambda: self.tr("Corrupt"))
-        self.gate.bind(self.corrupt_button, self.corrupt_count)
         link = QHBoxLayout()
         link.addWidget(self.drop_button)
         link.addSpacing(12)
         link.addWidget(self.corrupt_button)
         link.addWidget(self.corrupt_count)
         link.addStretch(1)
-
-        body = QVBoxLayout(self.body)
-        body.setContentsMargins(0, 0, 0, 0)
-        for box in (self.charger, self.usb, self.verification_fault):
-            body.addWidget(box)
-        body.addLayout(form)
-        body.addLayout(axes)
-        body.addLayout(link)
-        body.addWidget(self.note)
-        layout = QVBoxLayout(self)
-        layout.addWidget(self.note)
-        layout.addWidget(self.body)
-
-        controls.availabilityChanged.connect(self.sync)
-        self.sync()
+        return link
 
     def sync(self, *_args: object) -> None:
         """Show the emulator's present state, or disable everything when there is none."""

@@ -527,7 +527,7 @@ class JobsDock(QDockWidget):
         notes = list(program.notes)
         if isinstance(program, StringArtProgram):
             # The totals with this machine's time for them (the loader knew no machine).
-            estimate = self.runner.estimate
+            estimate = self.runner.progress.estimate
             plain = program.job.summary()
             notes = [n for n in notes if n != plain]
             notes.insert(0, program.job.summary(estimate.total_s if estimate else None))
@@ -566,7 +566,7 @@ class JobsDock(QDockWidget):
             self.preview.set_program(program)
         self._show_file(program)
         self.run_controls.show_progress()
-        estimate = self.runner.estimate if program is not None else None
+        estimate = self.runner.progress.estimate if program is not None else None
         self.run_controls.set_times(
             0.0 if estimate else None, estimate.total_s if estimate else None
         )

@@ -93,56 +93,13 @@ class RegistrationBar(QWidget):
                 lambda: self.tr("Register on holes: two (or three) reference holes of the job"),
             )
         )
-        self.side_combo = QComboBox()
-        self.side_combo.setObjectName("job_side")
-        t.set(
-            self.side_combo.setToolTip,
-            lambda: self.tr(
-                "The bottom side of a double-sided board: the job mirrored about its own extent"
-            ),
-        )
-        sides: tuple[tuple[Maker, str], ...] = (
-            (lambda: self.tr("Top side"), ""),
-            (lambda: self.tr("Bottom, mirrored in X"), "X"),
-            (lambda: self.tr("Bottom, mirrored in Y"), "Y"),
-        )
-        for label, about in sides:
-            self.side_combo.addItem("", about)
-            t.item(self.side_combo, self.side_combo.count() - 1, label)
-        self.side_combo.activated.connect(self._side_changed)
+        self.side_combo = self._build_side_combo(t)
         row.addWidget(self.side_combo)
         self.hole_spins: list[QSpinBox] = []
         self.pick_buttons: list[QToolButton] = []
         self.here_buttons: list[QToolButton] = []
         for k in range(MAX_REFERENCES):
-            spin = QSpinBox()
-            spin.setObjectName(f"job_reference_{k + 1}")
-            t.set(
-                spin.setToolTip, lambda: self.tr("A reference hole: its number in drilling order")
-            )
-            spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
-            pick = self._small_button(
-                lambda: self.tr("Pick"), lambda: self.tr("Then click the hole in the preview")
-            )
-            pick.setObjectName(f"job_reference_pick_{k + 1}")
-            pick.setCheckable(True)
-            pick.toggled.connect(lambda on, k=k: self._pick(k, on))
-            here = self._small_button(
-                lambda: self.tr("Here"),
-                lambda: self.tr("The tool stands over this hole on the board: take its position"),
-            )
-            here.setObjectName(f"job_reference_here_{k + 1}")
-            here.clicked.connect(lambda _c=False, k=k: self.take(k))
-            # A reference's number and its two buttons close together, the references apart:
-            # at the style's spacing the row outgrew the dock beside the pages (Czech).
-            group = QHBoxLayout()
-            group.setSpacing(1)
-            for widget in (spin, pick, here):
-                group.addWidget(widget)
-            references.addLayout(group)
-            self.hole_spins.append(spin)
-            self.pick_buttons.append(pick)
-            self.here_buttons.append(here)
+            references.addLayout(self._build_reference(t, k))
         self.three_check = QCheckBox()
         t.set(self.three_check.setText, lambda: self.tr("3 points"))
         self.three_check.setObjectName("job_reference_three")
@@ -167,6 +124,57 @@ class RegistrationBar(QWidget):
         row.addWidget(compact(self.clear_button))
         self._count_changed()
         self.set_job(None)
+
+    def _build_side_combo(self, t: Texts) -> QComboBox:
+        """Which side of the board the job is for: the top, or the bottom mirrored."""
+        combo = QComboBox()
+        combo.setObjectName("job_side")
+        t.set(
+            combo.setToolTip,
+            lambda: self.tr(
+                "The bottom side of a double-sided board: the job mirrored about its own extent"
+            ),
+        )
+        sides: tuple[tuple[Maker, str], ...] = (
+            (lambda: self.tr("Top side"), ""),
+            (lambda: self.tr("Bottom, mirrored in X"), "X"),
+            (lambda: self.tr("Bottom, mirrored in Y"), "Y"),
+        )
+        for label, about in sides:
+            combo.addItem("", about)
+            t.item(combo, combo.count() - 1, label)
+        combo.activated.connect(self._side_changed)
+        return combo
+
+    def _build_reference(self, t: Texts, k: int) -> QHBoxLayout:
+        """Reference ``k``: its hole's number, Pick (in the preview) and Here (the tool's
+        position)."""
+        spin = QSpinBox()
+        spin.setObjectName(f"job_reference_{k + 1}")
+        t.set(spin.setToolTip, lambda: self.tr("A reference hole: its number in drilling order"))
+        spin.valueChanged.connect(lambda _v, k=k: self._forget(k))
+        pick = self._small_button(
+            lambda: self.tr("Pick"), lambda: self.tr("Then click the hole in the preview")
+        )
+        pick.setObjectName(f"job_reference_pick_{k + 1}")
+        pick.setCheckable(True)
+        pick.toggled.connect(lambda on, k=k: self._pick(k, on))
+        here = self._small_button(
+            lambda: self.tr("Here"),
+            lambda: self.tr("The tool stands over this hole on the board: take its position"),
+        )
+        here.setObjectName(f"job_reference_here_{k + 1}")
+        here.clicked.connect(lambda _c=False, k=k: self.take(k))
+        # A reference's number and its two buttons close together, the references apart:
+        # at the style's spacing the row outgrew the dock beside the pages (Czech).
+        group = QHBoxLayout()
+        group.setSpacing(1)
+        for widget in (spin, pick, here):
+            group.addWidget(widget)
+        self.hole_spins.append(spin)
+        self.pick_buttons.append(pick)
+        self.here_buttons.append(here)
+        return group
 
     def _small_button(self, make: Maker, tip: Maker) -> QToolButton:
         """As wide as its text (a push button is 80 px at least): three references in a row."""

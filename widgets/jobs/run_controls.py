@@ -239,7 +239,7 @@ class RunControls(QObject):
             self._bar_shown.start()
         program = runner.program
         total = len(program) if program is not None else 0
-        executed = runner.executed if program is not None else 0
+        executed = runner.progress.executed if program is not None else 0
         sent = runner.done if program is not None else 0
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(executed, max(1, total)))
@@ -260,7 +260,7 @@ class RunControls(QObject):
     def set_times(self, elapsed_s: float | None, remaining_s: float | None) -> None:
         self._times = (elapsed_s, remaining_s)
         text = QCoreApplication.translate("JobsDock", "elapsed {0}").format(clock_text(elapsed_s))
-        waiting = self._runner.waiting_s if elapsed_s else 0.0
+        waiting = self._runner.progress.waiting_s if elapsed_s else 0.0
         if waiting >= WAITING_SHOWN_S:
             text += " " + QCoreApplication.translate(
                 "JobsDock", "(of which {0} waiting for you)"

@@ -113,6 +113,49 @@ def grey_pixmap(grey: np.ndarray, size: int) -> QPixmap:
     )
 
 
+def _button(text: str, name: str, tip: str) -> QPushButton:
+    """A push button that never answers Enter (the dialog's fields take it)."""
+    button = QPushButton(text)
+    button.setObjectName(name)
+    button.setToolTip(tip)
+    button.setAutoDefault(False)
+    return button
+
+
+def _picture(name: str, tip: str) -> QLabel:
+    """A square the size of the worker's previews, white as the board."""
+    view = QLabel()
+    view.setObjectName(name)
+    view.setToolTip(tip)
+    view.setFixedSize(PREVIEW_PX, PREVIEW_PX)
+    view.setAlignment(Qt.AlignmentFlag.AlignCenter)
+    view.setStyleSheet("background: white; border: 1px solid #bbb;")
+    return view
+
+
+def _spin(name: str, low: int, high: int, value: int, tip: str) -> QSpinBox:
+    spin = QSpinBox()
+    spin.setObjectName(name)
+    spin.setRange(low, high)
+    spin.setValue(value)
+    spin.setToolTip(tip)
+    spin.setKeyboardTracking(False)  # a value counts once typed, not digit by digit
+    return spin
+
+
+def _real(
+    name: str, low: float, high: float, value: float, step: float, decimals: int
+) -> QDoubleSpinBox:
+    spin = QDoubleSpinBox()
+    spin.setObjectName(name)
+    spin.setRange(low, high)
+    spin.setDecimals(decimals)
+    spin.setSingleStep(step)
+    spin.setValue(value)
+    spin.setKeyboardTracking(False)
+    return spin
+
+
 class GrowingLabel(QLabel):
     """A word-wrapped label that asks its layout for the height its text needs.
 
@@ -171,7 +214,7 @@ class StringArtGeneratorDialog(QDialog):
         layout = QVBoxLayout(self)
         layout.setSizeConstraint(QLayout.SizeConstraint.SetMinimumSize)
         top = QHBoxLayout()
-        self.image_button = self._button(
+        self.image_button = _button(
             self.tr("Photo…"), "sa_image", self.tr("Choose a PNG or JPEG photo")
         )
         self.image_button.clicked.connect(self.ask_image)
@@ -181,19 +224,7 @@ class StringArtGeneratorDialog(QDialog):
         top.addWidget(self.image_label, 1)
         layout.addLayout(top)
 
-        pictures = QGridLayout()
-        self.photo_view = self._picture("sa_photo", self.tr("The photo cropped to the board"))
-        self.thread_view = self._picture(
-            "sa_thread", self.tr("The thread, as wound at the real width")
-        )
-        self.scale_label = QLabel()
-        self.scale_label.setObjectName("sa_scale")
-        pictures.addWidget(QLabel(self.tr("Photo on the board")), 0, 0)
-        pictures.addWidget(QLabel(self.tr("Thread")), 0, 1)
-        pictures.addWidget(self.photo_view, 1, 0)
-        pictures.addWidget(self.thread_view, 1, 1)
-        pictures.addWidget(self.scale_label, 2, 0, 1, 2)
-        layout.addLayout(pictures)
+        layout.addLayout(self._build_pictures())
 
         form_row = QHBoxLayout()
         form_row.addLayout(self._build_board_form(board or DEFAULT_BOARD))
@@ -211,24 +242,45 @@ class StringArtGeneratorDialog(QDialog):
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
 
+        layout.addLayout(self._build_buttons())
+        self._board_changed()
+        self._update_buttons()
+
+    # --- building ------------------------------------------------------------
+
+    def _build_pictures(self) -> QGridLayout:
+        """The photo as cropped to the board beside the thread as generated."""
+        pictures = QGridLayout()
+        self.photo_view = _picture("sa_photo", self.tr("The photo cropped to the board"))
+        self.thread_view = _picture("sa_thread", self.tr("The thread, as wound at the real width"))
+        self.scale_label = QLabel()
+        self.scale_label.setObjectName("sa_scale")
+        pictures.addWidget(QLabel(self.tr("Photo on the board")), 0, 0)
+        pictures.addWidget(QLabel(self.tr("Thread")), 0, 1)
+        pictures.addWidget(self.photo_view, 1, 0)
+        pictures.addWidget(self.thread_view, 1, 1)
+        pictures.addWidget(self.scale_label, 2, 0, 1, 2)
+        return pictures
+
+    def _build_buttons(self) -> QHBoxLayout:
         buttons = QHBoxLayout()
-        self.generate_button = self._button(
+        self.generate_button = _button(
             self.tr("Generate"), "sa_generate", self.tr("Make the nail sequence")
         )
-        self.cancel_button = self._button(
+        self.cancel_button = _button(
             self.tr("Cancel"), "sa_cancel", self.tr("Stop; nothing is kept")
         )
-        self.export_button = self._button(
+        self.export_button = _button(
             self.tr("Export…"),
             "sa_export",
             self.tr("Write param.txt, poradi.txt and a PNG into a folder"),
         )
-        self.load_button = self._button(
+        self.load_button = _button(
             self.tr("Load as job"),
             "sa_load",
             self.tr("Open the sequence in the jobs dock to drill and wind it"),
         )
-        self.close_button = self._button(
+        self.close_button = _button(
             self.tr("Close"), "sa_close", self.tr("Close (a generation is cancelled)")
         )
         self.generate_button.clicked.connect(self.start)
@@ -245,48 +297,7 @@ class StringArtGeneratorDialog(QDialog):
             buttons.addWidget(button)
         buttons.addStretch(1)
         buttons.addWidget(self.close_button)
-        layout.addLayout(buttons)
-        self._board_changed()
-        self._update_buttons()
-
-    # --- building ------------------------------------------------------------
-
-    def _button(self, text: str, name: str, tip: str) -> QPushButton:
-        button = QPushButton(text)
-        button.setObjectName(name)
-        button.setToolTip(tip)
-        button.setAutoDefault(False)
-        return button
-
-    def _picture(self, name: str, tip: str) -> QLabel:
-        view = QLabel()
-        view.setObjectName(name)
-        view.setToolTip(tip)
-        view.setFixedSize(PREVIEW_PX, PREVIEW_PX)
-        view.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        view.setStyleSheet("background: white; border: 1px solid #bbb;")
-        return view
-
-    def _spin(self, name: str, low: int, high: int, value: int, tip: str) -> QSpinBox:
-        spin = QSpinBox()
-        spin.setObjectName(name)
-        spin.setRange(low, high)
-        spin.setValue(value)
-        spin.setToolTip(tip)
-        spin.setKeyboardTracking(False)  # a value counts once typed, not digit by digit
-        return spin
-
-    def _real(
-        self, name: str, low: float, high: float, value: float, step: float, decimals: int
-    ) -> QDoubleSpinBox:
-        spin = QDoubleSpinBox()
-        spin.setObjectName(name)
-        spin.setRange(low, high)
-        spin.setDecimals(decimals)
-        spin.setSingleStep(step)
-        spin.setValue(value)
-        spin.setKeyboardTracking(False)
-        return spin
+        return buttons
 
     def _build_board_form(self, board: StringArtParams) -> QFormLayout:
         form = QFormLayout()
@@ -297,26 +308,26 @@ class StringArtGeneratorDialog(QDialog):
             self.shape.addItem(self.tr("{0}-gon").format(sides), sides)
         index = self.shape.findData(board.tvar)
         self.shape.setCurrentIndex(max(0, index))
-        self.nails = self._spin("sa_nails", 3, 2000, board.nails, "pocet_hrebiku")
-        self.radius = self._real("sa_radius", 1.6, 100.0, board.radius_cm, 0.5, 2)
+        self.nails = _spin("sa_nails", 3, 2000, board.nails, "pocet_hrebiku")
+        self.radius = _real("sa_radius", 1.6, 100.0, board.radius_cm, 0.5, 2)
         self.radius.setSuffix(" cm")
         self.radius.setToolTip(
             self.tr("Board radius (polomer_matrice); the nails sit 1.5 cm inside")
         )
-        self.lines = self._spin("sa_lines", 1, 100_000, Settings.lines, self.tr("The line budget"))
-        self.thread_width = self._real("sa_thread_mm", 0.01, 5.0, Settings.thread_mm, 0.01, 2)
+        self.lines = _spin("sa_lines", 1, 100_000, Settings.lines, self.tr("The line budget"))
+        self.thread_width = _real("sa_thread_mm", 0.01, 5.0, Settings.thread_mm, 0.01, 2)
         self.thread_width.setSuffix(" mm")
         self.thread_width.setToolTip(
             self.tr("The real thread's width: it sets how dark each thread looks")
         )
-        self.skip = self._spin(
+        self.skip = _spin(
             "sa_skip",
             1,
             1000,
             default_skip(board.nails),
             self.tr("Least nails between a thread's two ends (never to a neighbouring nail)"),
         )
-        self.resolution = self._spin(
+        self.resolution = _spin(
             "sa_resolution", 32, 600, Settings.resolution, self.tr("Pixels across the nail circle")
         )
         form.addRow(self.tr("Shape"), self.shape)
@@ -335,12 +346,12 @@ class StringArtGeneratorDialog(QDialog):
 
     def _build_photo_form(self) -> QFormLayout:
         form = QFormLayout()
-        self.zoom = self._real("sa_zoom", 1.0, 10.0, 1.0, 0.1, 2)
+        self.zoom = _real("sa_zoom", 1.0, 10.0, 1.0, 0.1, 2)
         self.zoom.setToolTip(self.tr("Crop: 1 fits the photo's shorter side to the board"))
-        self.centre_x = self._real("sa_centre_x", 0.0, 1.0, 0.5, 0.02, 2)
-        self.centre_y = self._real("sa_centre_y", 0.0, 1.0, 0.5, 0.02, 2)
-        self.contrast = self._real("sa_contrast", 0.1, 5.0, 1.0, 0.1, 2)
-        self.brightness = self._real("sa_brightness", -1.0, 1.0, 0.0, 0.05, 2)
+        self.centre_x = _real("sa_centre_x", 0.0, 1.0, 0.5, 0.02, 2)
+        self.centre_y = _real("sa_centre_y", 0.0, 1.0, 0.5, 0.02, 2)
+        self.contrast = _real("sa_contrast", 0.1, 5.0, 1.0, 0.1, 2)
+        self.brightness = _real("sa_brightness", -1.0, 1.0, 0.0, 0.05, 2)
         self.invert = QCheckBox(self.tr("Invert (light thread, dark board)"))
         self.invert.setObjectName("sa_invert")
         form.addRow(self.tr("Zoom"), self.zoom)

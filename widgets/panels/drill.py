@@ -95,6 +95,46 @@ class DrillPanel(QWidget):
         self._pending_s = 0.0
         t = self.texts = Texts(self)
 
+        commands = self._build_commands(t, station)
+        axes = self._build_targets(t, station)
+
+        # Shown instead of sending a long move: it cannot be stopped once it runs.
+        self.long_move = QGroupBox()
+        self.long_move.setObjectName("long_move_warning")
+        self.long_move.setStyleSheet(
+            "QGroupBox#long_move_warning { background: #fff3cd; border: 1px solid #e0c060; }"
+            " QGroupBox#long_move_warning QLabel { color: #1d1d1d; }"
+        )
+        self.long_move_label = QLabel()
+        self.long_move_label.setWordWrap(True)
+        self.long_move_send = t.button(lambda: self.tr("Send anyway"))
+        self.long_move_send.clicked.connect(self.confirm_long_move)
+        self.long_move_cancel = t.button(lambda: self.tr("Cancel"))
+        self.long_move_cancel.clicked.connect(self.cancel_long_move)
+        warning_row = QHBoxLayout(self.long_move)
+        warning_row.addWidget(self.long_move_label, 1)
+        warning_row.addWidget(self.long_move_send)
+        warning_row.addWidget(self.long_move_cancel)
+        self.long_move.hide()
+
+        lower = self._build_terminal(t)
+        layout = QVBoxLayout(self)
+        layout.addWidget(commands)
+        layout.addWidget(axes)
+        layout.addWidget(self.timing_box)
+        layout.addWidget(self.conversion_box)
+        layout.addWidget(self.step_box)
+        layout.addWidget(self.long_move)
+        layout.addLayout(lower, 1)
+
+        self._show_every_mm()
+        station.sessionChanged.connect(self._watch_session)
+        self._watch_session()
+        t.also(self._show_long_move)
+        t.also(self._show_every_mm)
+
+    def _build_commands(self, t: Texts, station: Station) -> QGroupBox:
+        """The command buttons, and the toggles of the boxes folded away until asked for."""
         commands = t.group(lambda: self.tr("Commands"))
         # Two rows of three: in one row (even with each button as wide as its caption) the
         # commands made the page, beside the jobs dock, wider than a 1280 px screen.
@@ -145,7 +185,10 @@ class DrillPanel(QWidget):
             compact(self.conversion_toggle), last // COMMAND_COLUMNS, last % COMMAND_COLUMNS
         )
         row.setColumnStretch(COMMAND_COLUMNS, 1)
+        return commands
 
+    def _build_targets(self, t: Texts, station: Station) -> QGroupBox:
+        """Per axis: a target in microsteps, what it is in mm, and Send."""
         axes = t.group(lambda: self.tr("Move to (microsteps from zero)"))
         grid = QGridLayout(axes)
         for index, axis in enumerate(station.profile.axes):
@@ -176,26 +219,10 @@ class DrillPanel(QWidget):
             self.gate.watch(target, lambda a=axis.name: self.tr("{0} target").format(a))
             self.gate.bind(send, target)
         grid.addWidget(self.note, len(self.targets), 0, 1, 4)
+        return axes
 
-        # Shown instead of sending a long move: it cannot be stopped once it runs.
-        self.long_move = QGroupBox()
-        self.long_move.setObjectName("long_move_warning")
-        self.long_move.setStyleSheet(
-            "QGroupBox#long_move_warning { background: #fff3cd; border: 1px solid #e0c060; }"
-            " QGroupBox#long_move_warning QLabel { color: #1d1d1d; }"
-        )
-        self.long_move_label = QLabel()
-        self.long_move_label.setWordWrap(True)
-        self.long_move_send = t.button(lambda: self.tr("Send anyway"))
-        self.long_move_send.clicked.connect(self.confirm_long_move)
-        self.long_move_cancel = t.button(lambda: self.tr("Cancel"))
-        self.long_move_cancel.clicked.connect(self.cancel_long_move)
-        warning_row = QHBoxLayout(self.long_move)
-        warning_row.addWidget(self.long_move_label, 1)
-        warning_row.addWidget(self.long_move_send)
-        warning_row.addWidget(self.long_move_cancel)
-        self.long_move.hide()
-
+    def _build_terminal(self, t: Texts) -> QHBoxLayout:
+        """The terminal (output, entry, Send, Clear) beside the received and done columns."""
         terminal = t.group(lambda: self.tr("Terminal"))
         box = QVBoxLayout(terminal)
         self.output = QPlainTextEdit()
@@ -240,20 +267,7 @@ class DrillPanel(QWidget):
         lower = QHBoxLayout()
         lower.addWidget(terminal, 2)
         lower.addLayout(columns, 1)
-        layout = QVBoxLayout(self)
-        layout.addWidget(commands)
-        layout.addWidget(axes)
-        layout.addWidget(self.timing_box)
-        layout.addWidget(self.conversion_box)
-        layout.addWidget(self.step_box)
-        layout.addWidget(self.long_move)
-        layout.addLayout(lower, 1)
-
-        self._show_every_mm()
-        station.sessionChanged.connect(self._watch_session)
-        self._watch_session()
-        t.also(self._show_long_move)
-        t.also(self._show_every_mm)
+        return lower
 
     @property
     def session(self) -> DrillSession | None:

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.profiles import AxisProfile
 from app.settings import JOG_STEPS
 from app.station import Station
 from widgets.jog_input import JogInput
@@ -93,60 +94,8 @@ class ManualPanel(QWidget):
         if jog.jogs:
             grid.addWidget(self.stop_button, 1, 1)
 
-        first = axes[0]
-        self.key_step = QComboBox()
-        self.key_step.setObjectName("key_step")
-        self.key_step.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # arrows stay the machine's
-        for step in JOG_STEPS:
-            self.key_step.addItem("", step)
-            t.item(
-                self.key_step,
-                self.key_step.count() - 1,
-                lambda s=step, u=first.unit: (
-                    self.tr("continuous (hold)")
-                    if s == 0
-                    else self.tr("{0} {1} per tap").format(localized(f"{s:g}"), shown_unit(u))
-                ),
-            )
-        t.set(
-            self.key_step.setToolTip,
-            lambda: self.tr(
-                "What a tap of an arrow key does: jog while held, or move one step "
-                "(never past the travel)"
-            ),
-        )
-        self.key_step.currentIndexChanged.connect(self._key_step_chosen)
-        steps = QHBoxLayout()
-        steps.addWidget(t.label(lambda: self.tr("Arrow keys:")))
-        steps.addWidget(self.key_step)
-        steps.addStretch(1)
-
-        homes = QHBoxLayout()
-        homes.setSpacing(6)
-        if station.profile.capabilities.home and station.dialect.homes_all_axes:
-            # One command homes every axis here: per-axis buttons that all did the same
-            # thing promised what the machine cannot do.
-            button = t.button(
-                lambda: self.tr("Home all"),
-                lambda: self.tr("Home every axis: the machine's home command does them all"),
-            )
-            button.clicked.connect(lambda _=False: self._home(0))
-            homes.addWidget(button)
-            self.home_buttons.append(button)
-        elif station.profile.capabilities.home:
-            for index, axis in enumerate(station.profile.axes):
-                button = t.button(
-                    lambda a=axis: self.tr("Home {0}").format(a.name),
-                    lambda a=axis: self.tr("Seek the {0} home switch and set {0} = 0").format(
-                        a.name
-                    ),
-                )
-                button.clicked.connect(lambda _=False, i=index: self._home(i))
-                homes.addWidget(button)
-                self.home_buttons.append(button)
-        if not jog.jogs:
-            homes.insertWidget(0, self.stop_button)  # no pad to sit in: Stop stays in sight
-        homes.addStretch(1)
+        steps = self._build_key_step(t, axes[0])
+        homes = self._build_homes(t, station, jog)
 
         cross = QHBoxLayout()
         cross.addLayout(grid)
@@ -180,6 +129,66 @@ class ManualPanel(QWidget):
         layout.addLayout(homes)
         layout.addStretch(1)
         self.jog_pad.setVisible(jog.jogs)
+
+    def _build_key_step(self, t: Texts, first: AxisProfile) -> QHBoxLayout:
+        """What a tap of an arrow key does: jog while held, or one step of the first axis's unit."""
+        self.key_step = QComboBox()
+        self.key_step.setObjectName("key_step")
+        self.key_step.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # arrows stay the machine's
+        for step in JOG_STEPS:
+            self.key_step.addItem("", step)
+            t.item(
+                self.key_step,
+                self.key_step.count() - 1,
+                lambda s=step, u=first.unit: (
+                    self.tr("continuous (hold)")
+                    if s == 0
+                    else self.tr("{0} {1} per tap").format(localized(f"{s:g}"), shown_unit(u))
+                ),
+            )
+        t.set(
+            self.key_step.setToolTip,
+            lambda: self.tr(
+                "What a tap of an arrow key does: jog while held, or move one step "
+                "(never past the travel)"
+            ),
+        )
+        self.key_step.currentIndexChanged.connect(self._key_step_chosen)
+        steps = QHBoxLayout()
+        steps.addWidget(t.label(lambda: self.tr("Arrow keys:")))
+        steps.addWidget(self.key_step)
+        steps.addStretch(1)
+        return steps
+
+    def _build_homes(self, t: Texts, station: Station, jog: JogInput) -> QHBoxLayout:
+        """Home all (one command homes every axis), or a button per axis; Stop when no pad."""
+        homes = QHBoxLayout()
+        homes.setSpacing(6)
+        if station.profile.capabilities.home and station.dialect.homes_all_axes:
+            # One command homes every axis here: per-axis buttons that all did the same
+            # thing promised what the machine cannot do.
+            button = t.button(
+                lambda: self.tr("Home all"),
+                lambda: self.tr("Home every axis: the machine's home command does them all"),
+            )
+            button.clicked.connect(lambda _=False: self._home(0))
+            homes.addWidget(button)
+            self.home_buttons.append(button)
+        elif station.profile.capabilities.home:
+            for index, axis in enumerate(station.profile.axes):
+                button = t.button(
+                    lambda a=axis: self.tr("Home {0}").format(a.name),
+                    lambda a=axis: self.tr("Seek the {0} home switch and set {0} = 0").format(
+                        a.name
+                    ),
+                )
+                button.clicked.connect(lambda _=False, i=index: self._home(i))
+                homes.addWidget(button)
+                self.home_buttons.append(button)
+        if not jog.jogs:
+            homes.insertWidget(0, self.stop_button)  # no pad to sit in: Stop stays in sight
+        homes.addStretch(1)
+        return homes
 
     def _z_column(self, name: str) -> QVBoxLayout:
         """Up and down for the third axis, beside the cross (PageUp / PageDown)."""

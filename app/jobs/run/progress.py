@@ -54,7 +54,10 @@ class JobProgress(QObject):
         self._eta_changed = eta_changed
         self._operation_done = operation_done
         self.done = 0  # operations [0, done) are complete
-        self.executed = 0  # operations [0, executed) are reported run by the machine
+        #: Operations ``[0, executed)`` are reported run by the machine (≤ ``done``): on a
+        #: G-code machine ``done`` counts the lines the device answered, many of which may
+        #: still wait in its planner; ``executed`` only those known to have run.
+        self.executed = 0
         self.estimate: Estimate | None = None
         #: The job is done: nothing is left, whatever was reported last.
         self.ended = False

@@ -17,11 +17,15 @@ commands, progress, the ETA and the checkpoint.  What "sent", "done" and
 "in flight" mean on the wire is each dialect's own, so the runner hands the
 running itself to the dialect's :class:`~app.jobs.run.driver.JobDriver`
 (:mod:`app.jobs.run.drivers` says which) and knows no dialect itself.
+
+Its public surface is the operator's.  The driver talks back to
+:class:`~app.jobs.run.driver_side.DriverSide`, which also hears the
+session's events and schedules the checkpoint; the counts and the clock are
+:attr:`JobRunner.progress` (:class:`~app.jobs.run.progress.JobProgress`).
 """
 
 from __future__ import annotations
 
-import contextlib
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -33,12 +37,10 @@ from app.jobs.program import LimitViolation, Program, check_limits
 from app.jobs.registration import Placement
 from app.jobs.run.checkpoint_keeper import CheckpointKeeper
 from app.jobs.run.driver import LINK_DOWN, JobDriver, ResumeChoice, UnsupportedOperation
-from app.jobs.run.drivers import driver_for
-from app.jobs.run.progress import WAITING_SHOWN_S, JobProgress, estimate_inputs
+from app.jobs.run.driver_side import DriverSide, RunFlags
+from app.jobs.run.progress import JobProgress, estimate_inputs
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, FINISHED, JobState
 from app.jobs.texts import number
-from app.machines.session import MachineSession
-from app.machines.supervision import MotionFault
 from app.station import Station
 
 __all__ = ["JobRunner", "JobState", "ResumeChoice", "UnsupportedOperation"]
@@ -89,45 +91,33 @@ class JobRunner(QObject):
         self, station: Station, checkpoint_dir: Path, parent: QObject | None = None
     ) -> None:
         super().__init__(parent)
-        self._station = station
+        #: The station the job runs on (its profile, so its dialect, is kept for life).
+        self.station = station
         self.checkpoint_dir = Path(checkpoint_dir)
         self._checkpoints = CheckpointKeeper(self.checkpoint_dir, self.message.emit)
         self._state = JobState.IDLE
         self._program: Program | None = None
-        self._progress = JobProgress(
+        #: Operations done and executed, the estimate, the elapsed, running and waiting
+        #: times and the time left; it emits the progress and ETA signals above.
+        self.progress = JobProgress(
             station,
-            self._total,
+            lambda: len(self._program) if self._program is not None else 0,
             self.progressChanged,
             self.executedChanged,
             self.etaChanged,
             self.operationDone,
             self,
         )
-        self._single_step = False
-        self._pause_requested = False
-        self._question: int | None = None  # the operation the operator is asked about
-        self._choice: ResumeChoice | None = None  # where to go on, for the operator to pick
-        #: Paused until the operator acts (an alarm, a board that restarted): nothing resumes
-        #: it on its own (the scripting API ends the job instead).
-        self._operator_hold = False
-        #: Paused because the link went, and nothing else has happened to the job since.
-        self._paused_by_link = False
-        self._failing = False  # a checkpoint write failed and the job is being failed
-        self._session: object = None
+        self._flags = RunFlags()
+        self._side = DriverSide(
+            self, self._flags, self.progress, self._checkpoints, self._set_state, self
+        )
+        self._driver: JobDriver = self._side.driver
         #: What the jog lock says while this runner's program is under way (a macro's runner
         #: says its own, so that neither kind of runner starts while the other's runs).
         self.busy_text: Callable[[], str] = job_busy_text
-        # A station keeps its profile, so its dialect and driver, for life.
-        self._driver: JobDriver = driver_for(station.profile.dialect)(self)
-        station.sessionChanged.connect(self._bind_session)
-        station.model.linkStateChanged.connect(self._on_link_state)
-        self._bind_session()
 
-    # --- what the dock (and the driver) reads ------------------------------------
-
-    @property
-    def station(self) -> Station:
-        return self._station
+    # --- what the dock reads --------------------------------------------------------
 
     @property
     def state(self) -> JobState:
@@ -139,26 +129,11 @@ class JobRunner(QObject):
 
     @property
     def done(self) -> int:
-        """Count of completed operations (always the first ``done`` of the program)."""
-        return self._progress.done
+        """Count of completed operations (always the first ``done`` of the program).
 
-    @property
-    def executed(self) -> int:
-        """Count of operations the machine reported as run (≤ ``done``).
-
-        On a G-code machine ``done`` counts the lines the device answered, many of
-        which may still wait in its planner; ``executed`` only those known to have run.
-        """
-        return self._progress.executed
-
-    @property
-    def single_step(self) -> bool:
-        """Whether the run stops after the operation under way (Step)."""
-        return self._single_step
-
-    @property
-    def estimate(self) -> Estimate | None:
-        return self._progress.estimate
+        Where the job stands, so kept here; the other counts and the times are
+        :attr:`progress`'s."""
+        return self.progress.done
 
     @property
     def current_index(self) -> int | None:
@@ -168,52 +143,32 @@ class JobRunner(QObject):
         in_flight = self._driver.in_flight
         if in_flight is not None:
             return in_flight
-        done = self._progress.done
+        done = self.progress.done
         return done if done < len(self._program) else None
 
     @property
     def question(self) -> int | None:
         """The operation whose fate the operator is asked to decide (see ``decisionNeeded``)."""
-        return self._question
+        return self._flags.question
 
     @property
     def resume_choice(self) -> ResumeChoice | None:
         """Where the operator may resume the paused job from, when only they can say."""
-        return self._choice
+        return self._flags.choice
 
     @property
     def needs_operator(self) -> bool:
         """Paused until the operator acts: a question, a resume line to pick, an alarm."""
         return self._state is JobState.PAUSED and (
-            self._question is not None or self._choice is not None or self._operator_hold
+            self._flags.question is not None
+            or self._flags.choice is not None
+            or self._flags.operator_hold
         )
 
     @property
     def resume_available(self) -> int | None:
         """Index to resume from when a checkpoint of this program waits for the operator."""
         return self._checkpoints.resume_available
-
-    @property
-    def elapsed_s(self) -> float:
-        """Wall-clock time from the run's start to its end (or now), prompts included."""
-        return self._progress.elapsed_s
-
-    @property
-    def running_s(self) -> float:
-        """Of :attr:`elapsed_s`, the time operations were under way: what the estimate
-        forecasts."""
-        return self._progress.running_s
-
-    @property
-    def waiting_s(self) -> float:
-        """Of :attr:`elapsed_s`, the time the job stood waiting for the operator
-        (at a prompt, paused, or on hold)."""
-        return self._progress.waiting_s
-
-    @property
-    def remaining_s(self) -> float:
-        """The model's time still to go; the estimate's figure, not rescaled by the real one."""
-        return self._progress.remaining_s
 
     # --- loading -------------------------------------------------------------
 
@@ -270,10 +225,13 @@ class JobRunner(QObject):
         if checked is None or checked.program is not program:
             checked = self.checker()(program)
         refused = checked.refused
-        self._reset()
+        self.progress.restart(0)
+        self._flags.clear()
+        self._driver.forget()
+        self._checkpoints.resume_available = None
         if refused:
             self._program = None
-            self._progress.estimate = None
+            self.progress.estimate = None
             lines = "\n".join(f"  {v}" for v in refused[:REFUSALS_SHOWN])
             if len(refused) > REFUSALS_SHOWN:
                 lines += f"\n  … and {len(refused) - REFUSALS_SHOWN} more"
@@ -288,12 +246,12 @@ class JobRunner(QObject):
             return refused
         self._program = program
         self._checkpoints.loaded(program, checked.fingerprint, placed)
-        self._progress.estimate = checked.estimate
+        self.progress.estimate = checked.estimate
         resume = self._checkpoints.resume_available
         self.programChanged.emit()
         self._set_state(JobState.READY)
-        self._progress.tell_all()
-        self.emit_eta()
+        self.progress.tell_all()
+        self.progress.emit_eta()
         if resume is not None:
             op = program[resume]
             self.message.emit(
@@ -358,7 +316,7 @@ class JobRunner(QObject):
             if driver.in_flight is None:
                 self._set_state(JobState.PAUSED)
             else:
-                self._pause_requested = True
+                self._flags.pause_requested = True
                 self._set_state(JobState.PAUSING)
         elif self._state is JobState.WAITING:
             self._set_state(JobState.PAUSED)
@@ -366,35 +324,35 @@ class JobRunner(QObject):
     def resume(self) -> None:
         """Carry on after a pause or a lost link; an interrupted operation is re-examined first."""
         if self._state is JobState.PAUSING:
-            self._pause_requested = False
+            self._flags.pause_requested = False
             self._set_state(JobState.RUNNING)
         elif self._state is JobState.PAUSED:
-            if self._question is not None:
+            if self._flags.question is not None:
                 self.message.emit(
                     QCoreApplication.translate(
                         "JobRunner", "Answer the question about the interrupted operation first"
                     )
                 )
                 return
-            if self._choice is not None:
+            if self._flags.choice is not None:
                 self.message.emit(
                     QCoreApplication.translate("JobRunner", "Choose the line to resume from first")
                 )
                 return
-            self._operator_hold = False
+            self._flags.operator_hold = False
             self._continue(single_step=False)
 
     def resume_at(self, index: int) -> None:
         """The operator's pick of where the paused job goes on (one of the choice's candidates)."""
-        choice = self._choice
+        choice = self._flags.choice
         if choice is None or self._state is not JobState.PAUSED or index not in choice.candidates:
             return
         if self._refuse_for_link():
             return
-        self._choice = None
-        self._operator_hold = False
-        self._single_step = False
-        self._pause_requested = False
+        self._flags.choice = None
+        self._flags.operator_hold = False
+        self._flags.single_step = False
+        self._flags.pause_requested = False
         self._set_state(JobState.RUNNING)
         self._driver.resume_at(index)
 
@@ -412,21 +370,21 @@ class JobRunner(QObject):
         """The job ends with nothing more asked of the operator; its checkpoint stays."""
         self._driver.stopped()
         self._driver.forget()
-        self._question = None
-        self._choice = None
-        self._operator_hold = False
+        self._flags.question = None
+        self._flags.choice = None
+        self._flags.operator_hold = False
         # The resume offer first, so views reacting to the state change see it.
         self._checkpoints.offer(self._program)
         self._set_state(state)
 
     def decide(self, *, again: bool) -> None:
         """The operator's answer: send the operation in question again, or count it as done."""
-        index = self._question
+        index = self._flags.question
         if index is None or self._state is not JobState.PAUSED or self._refuse_for_link():
             return
-        self._question = None
-        self._single_step = False
-        self._pause_requested = False
+        self._flags.question = None
+        self._flags.single_step = False
+        self._flags.pause_requested = False
         self._set_state(JobState.RUNNING)
         self._driver.decided(index, again=again)
 
@@ -441,8 +399,12 @@ class JobRunner(QObject):
                 )
                 return
             self._begin(0, single_step=True, verify=False)
-        elif self._state is JobState.PAUSED and self._question is None and self._choice is None:
-            self._operator_hold = False
+        elif (
+            self._state is JobState.PAUSED
+            and self._flags.question is None
+            and self._flags.choice is None
+        ):
+            self._flags.operator_hold = False
             self._continue(single_step=True)
 
     def abort(self) -> None:
@@ -457,7 +419,7 @@ class JobRunner(QObject):
         self.message.emit(
             QCoreApplication.translate(
                 "JobRunner", "Job aborted after {0} of {1} operations"
-            ).format(self._progress.executed, self._total())
+            ).format(self.progress.executed, len(self._program or ()))
         )
 
     def confirm(self) -> None:
@@ -468,7 +430,7 @@ class JobRunner(QObject):
         index = driver.in_flight
         driver.confirmed(index)
         self._set_state(JobState.RUNNING)
-        self.complete(index)
+        self._side.complete(index)
 
     def resume_from_checkpoint(self) -> None:
         """Carry on an interrupted job where its checkpoint says, re-examining that operation."""
@@ -501,134 +463,6 @@ class JobRunner(QObject):
             )
         )
 
-    def emit_eta(self) -> None:
-        """Tell the dock elapsed and remaining time (a timer calls this every second)."""
-        self._progress.emit_eta()
-
-    # --- what a driver tells the runner (RunnerPort) ---------------------------------
-
-    def announce(self, index: int) -> None:
-        self.operationStarted.emit(index)
-
-    def note(self, text: str) -> None:
-        self.message.emit(text)
-
-    def mark_done(self, index: int) -> bool:
-        """Operations up to ``index`` are done; whether the next one starts now."""
-        assert self._program is not None
-        self._progress.reached(index)  # reported done by the machine: it ran
-        if not self._write_checkpoint(self._program, index):  # before anything else is sent
-            return False
-        self._progress.tell_reached(index)
-        return self._carry_on()
-
-    def complete(self, index: int) -> None:
-        if self.mark_done(index):
-            self._driver.proceed()
-
-    def advance(self, done: int, executed: int | None = None) -> None:
-        """A streaming driver's progress, kept at once and told to the views coalesced
-        (:class:`~app.jobs.run.progress.JobProgress`)."""
-        if self._program is not None:
-            self._progress.advance(done, executed)
-
-    def record(self, completed: int, sent: int | None = None) -> None:
-        if self._program is not None and self._state in ACTIVE:
-            self._write_checkpoint(self._program, completed, sent)
-
-    @property
-    def checkpoint_sent(self) -> int | None:
-        return self._checkpoints.sent
-
-    def fail(self, index: int, reason: str) -> None:
-        if self._state not in ACTIVE:
-            return  # already ended (a failure while failing, say the checkpoint's)
-        session = self.station.session
-        if session is not None and self.station.model.link_state not in LINK_DOWN:
-            session.stop_all()
-        self._driver.stopped()
-        self._choice = None
-        self._operator_hold = False
-        self._checkpoints.offer(self._program)
-        self._set_state(JobState.FAILED)
-        self.message.emit(
-            QCoreApplication.translate("JobRunner", "Job failed at {0}: {1}").format(
-                self._op_source(index), reason
-            )
-        )
-
-    def link_pause(self) -> None:
-        """The link is gone: hold the operation under way as not done, to re-examine later."""
-        self._driver.link_lost()
-        in_flight = self._driver.in_flight
-        self._pause_requested = False
-        self._set_state(JobState.PAUSED)
-        self._paused_by_link = True
-        state = self.station.model.link_state.value
-        if in_flight is not None:
-            text = QCoreApplication.translate(
-                "JobRunner", "Job paused at {0}: link {1}; resume once the machine is back"
-            )
-            self.message.emit(text.format(self._op_source(in_flight), state))
-        else:
-            text = QCoreApplication.translate(
-                "JobRunner", "Job paused: link {0}; resume once the machine is back"
-            )
-            self.message.emit(text.format(state))
-
-    def stop_short(self, text: str) -> None:
-        self._set_state(JobState.PAUSED)
-        self.message.emit(text)
-
-    def hold_for_operator(self, text: str) -> None:
-        self._operator_hold = True
-        self._pause_requested = False
-        self._set_state(JobState.PAUSED)
-        self.message.emit(text)
-
-    def choose_resume(self, choice: ResumeChoice) -> None:
-        self._choice = choice
-        self._operator_hold = False
-        self._pause_requested = False
-        self._set_state(JobState.PAUSED)
-        self.message.emit(choice.text)
-        self.resumeChoiceNeeded.emit(choice)
-
-    def pause_reached(self) -> None:
-        self._single_step = False
-        self._pause_requested = False
-        self._set_state(JobState.PAUSED)
-
-    def wait_for_operator(self, index: int) -> None:
-        assert self._program is not None
-        self._set_state(JobState.WAITING)
-        self.waitingForOperator.emit(self._program[index].message)
-
-    def ask(self, index: int, question: str, again: str, done: str) -> None:
-        self._question = index
-        self._set_state(JobState.PAUSED)
-        self.message.emit(question)
-        self.decisionNeeded.emit(question, again, done)
-
-    def finish(self) -> None:
-        assert self._program is not None
-        self._checkpoints.discard(
-            self._program, "The finished job's checkpoint could not be removed: {0}"
-        )
-        self._progress.set_executed(
-            len(self._program)
-        )  # drivers finish only once the machine is idle
-        self._set_state(JobState.DONE)
-        self.emit_eta()
-        done = QCoreApplication.translate("JobRunner", "Job {0} done: {1} operations in {2} s")
-        done = done.format(
-            repr(self._program.name), len(self._program), number(self.elapsed_s, ".1f")
-        )
-        if self.waiting_s >= WAITING_SHOWN_S:
-            done += QCoreApplication.translate("JobRunner", ", of which {0} s waiting for you")
-            done = done.format(number(self.waiting_s, ".1f"))
-        self.message.emit(done)
-
     # --- running -------------------------------------------------------------
 
     def _begin(self, index: int, *, single_step: bool, verify: bool, chosen: bool = False) -> None:
@@ -636,24 +470,24 @@ class JobRunner(QObject):
         driver = self._driver
         if self._refuse_for_link():
             return
-        self._progress.restart(index)
-        self._single_step = single_step
-        self._pause_requested = False
-        self._choice = None
-        self._operator_hold = False
+        self.progress.restart(index)
+        self._flags.single_step = single_step
+        self._flags.pause_requested = False
+        self._flags.choice = None
+        self._flags.operator_hold = False
         if chosen:
             driver.start_at(index)
         else:
             driver.begin(index, verify=verify)
-        self._progress.tell_done()
+        self.progress.tell_done()
         self._set_state(JobState.RUNNING)
         driver.proceed()
 
     def _continue(self, *, single_step: bool) -> None:
         if self._refuse_for_link():
             return
-        self._single_step = single_step
-        self._pause_requested = False
+        self._flags.single_step = single_step
+        self._flags.pause_requested = False
         self._set_state(JobState.RUNNING)
         self._driver.proceed()
 
@@ -699,106 +533,18 @@ class JobRunner(QObject):
             return True
         return False
 
-    def _carry_on(self) -> bool:
-        """After an operation: whether the next one starts now (else the job ended or paused)."""
-        assert self._program is not None
-        if self._progress.done >= len(self._program):
-            if self._driver.wind_up():
-                self.finish()
-            return False
-        if self._single_step or self._pause_requested:
-            self._pause_requested = False
-            self._set_state(JobState.PAUSED)
-            return False
-        if self._state is not JobState.RUNNING:
-            self._set_state(JobState.RUNNING)
-        return True
-
-    def _op_source(self, index: int | None) -> str:
-        if self._program is None or index is None or not 0 <= index < len(self._program):
-            return "?"  # (a fault reported after the last operation: nothing of the job there)
-        return str(self._program[index].source)
-
-    def _total(self) -> int:
-        return len(self._program) if self._program is not None else 0
-
-    # --- signals from the station -------------------------------------------
-
-    def _bind_session(self) -> None:
-        session = self.station.session
-        if session is self._session:
-            return
-        old = self._session
-        if isinstance(old, MachineSession):
-            for signal, slot in (
-                (old.motionFault, self._on_motion_fault),
-                (old.recovered, self._on_recovered),
-            ):
-                with contextlib.suppress(RuntimeError, TypeError):  # gone with its link already
-                    signal.disconnect(slot)
-        self._session = session
-        self._driver.bind(session)
-        if session is not None:
-            session.motionFault.connect(self._on_motion_fault)
-            session.recovered.connect(self._on_recovered)
-
-    def _on_motion_fault(self, fault: MotionFault) -> None:
-        """The session stopped a machine that went where nothing sent it: the job fails there.
-
-        Not a pause: the machine is not where the job's books say, so nothing of
-        it may go on by itself; the checkpoint stays for a resume once the
-        operator has looked.
-        """
-        if self._state not in ACTIVE:
-            return
-        index = fault.op_index if fault.op_index is not None else self.current_index
-        self.fail(index if index is not None else self._progress.done, fault.text)
-
-    def _on_recovered(self, problem: object) -> None:
-        """The machine answers again after a silence, its port open all along.
-
-        Intact (no restart, every axis where the books allow), the job goes on
-        by itself: the resume re-examines what was under way as the operator's
-        Resume would, and asks where only the operator can tell.  Otherwise
-        it stays paused for the operator, who is told why.
-        """
-        if not self._paused_by_link or self._state is not JobState.PAUSED:
-            return
-        if self.needs_operator:
-            return  # the operator is asked something already (a question, a line, an alarm)
-        if problem is not None:
-            self._paused_by_link = False
-            self.message.emit(
-                QCoreApplication.translate(
-                    "JobRunner",
-                    "The machine answers again, but {0}: the job stays paused. "
-                    "Check the machine, then Resume",
-                ).format(problem)
-            )
-            return
-        self.message.emit(
-            QCoreApplication.translate(
-                "JobRunner", "The machine answers again, its state intact: the job goes on"
-            )
-        )
-        self.resume()
-
-    def _on_link_state(self, state: object) -> None:
-        if state in LINK_DOWN and self._state in CLOCK_RUNS:
-            self.link_pause()
-
     # --- state and time ------------------------------------------------------
 
     def _set_state(self, state: JobState) -> None:
         if state is self._state:
             return
-        self._progress.flush()  # the views see the progress the new state comes with
-        self._paused_by_link = False  # set again by link_pause, after this
+        self.progress.flush()  # the views see the progress the new state comes with
+        self._flags.paused_by_link = False  # set again by link_pause, after this
         was_running = self._state in CLOCK_RUNS
         was_active = self._state in ACTIVE
         runs = state in CLOCK_RUNS
-        self._progress.clock(was_running, runs, state in ACTIVE)
-        self._progress.ended = state is JobState.DONE
+        self.progress.clock(was_running, runs, state in ACTIVE)
+        self.progress.ended = state is JobState.DONE
         self._state = state
         # While a job is under way (paused and waiting included: its resume goes on from
         # where the machine was), a jog would move the machine under it.  The lock another
@@ -810,38 +556,4 @@ class JobRunner(QObject):
             model.set_jog_lock(None)
         self.stateChanged.emit(state)
         if not runs:
-            self.emit_eta()
-
-    def _reset(self) -> None:
-        self._progress.restart(0)
-        self._question = None
-        self._choice = None
-        self._operator_hold = False
-        self._driver.forget()
-        self._checkpoints.resume_available = None
-        self._single_step = False
-        self._pause_requested = False
-
-    # --- checkpoint ----------------------------------------------------------
-
-    def _write_checkpoint(self, program: Program, completed: int, sent: int | None = None) -> bool:
-        """Record progress; a job that cannot record it stops (FAILED) rather than run on.
-
-        Without its checkpoint an interrupted job could only be run again from the
-        start, repeating every operation done so far: better to stop while the
-        operator can still see where it stands.
-        """
-        try:
-            self._checkpoints.write(program, completed, sent)
-        except OSError as exc:
-            if self._state in ACTIVE and not self._failing:
-                self._failing = True
-                try:
-                    self.fail(
-                        min(completed + 1, len(program) - 1),
-                        f"the checkpoint could not be written to {self.checkpoint_dir} ({exc})",
-                    )
-                finally:
-                    self._failing = False
-            return False
-        return True
+            self.progress.emit_eta()

@@ -419,37 +419,13 @@ class Parser:
                 commands.setdefault(normal(word.letter, word.value), index)
             else:
                 params[word.letter] = index
-        removed: set[int] = set()
         pending: list[Pending] = []
-        notes: list[str] = []
-        extra: list[str] = []
         previous_motion = st.motion
 
         def value(letter: str) -> float:
             return words[params[letter]].value
 
-        if "G20" in commands:
-            st.scale = INCH_MM
-        if "G21" in commands:
-            st.scale = 1.0
-            if "G21" not in self.words:
-                removed.add(commands["G21"])
-                notes.append("g21")
-        if "G90" in commands:
-            st.relative = False
-        if "G91" in commands:
-            st.relative = True
-        for plane in (17, 18, 19):
-            if f"G{plane}" in commands:
-                st.plane = plane
-        for name, motion in MOTION_WORDS.items():
-            if name in commands:
-                st.motion = motion
-        for end in ("M2", "M30"):
-            if end in commands:
-                removed.add(commands[end])
-        if "M0" in commands or "M1" in commands:
-            extra.append("M0/M1 must stand on a line of its own (the station asks the operator)")
+        removed, notes, extra = _modal_words(st, commands, g21_sent="G21" in self.words)
         non_modal = {"G92", "G28", "G10", "G4"} & commands.keys()
 
         # The pen: a pen command word, or a Z height on a machine whose pen Z is.
@@ -489,47 +465,8 @@ class Parser:
             list(range(len(words))) if whole else [i for i in range(len(words)) if i not in removed]
         )
         if rest:
-            text = code if whole or not removed else render(code, removed)
-            sent = [words[i] for i in rest]
-            op = Pending(GCODE, text, sent)
-            if "F" in params:
-                st.feed = value("F") * st.scale
-                self.f_lines += 1
-            if "F" in params and params["F"] in rest:
-                op.feed = value("F") * st.scale
-            axes = [i for i in rest if self._is_axis(words[i].letter)]
-            if "G92" in commands or "G92.1" in commands:
-                self._set_offsets(number, code, commands, words, axes)
-            elif "G28" in commands:
-                op.kind, op.motion = MOVE, HOME
-                op.target = dict.fromkeys(range(len(self.columns)), 0.0)
-                for c in op.target:
-                    st.position[c] = 0.0
-            elif "G4" in commands:
-                # P in the machine's unit (GRBL: seconds; the profile's dwell_p), S in seconds.
-                self.dwell_p_seen = self.dwell_p_seen or "P" in params
-                op.dwell = (
-                    value("P") * self.dwell_p_seconds
-                    if "P" in params
-                    else value("S")
-                    if "S" in params
-                    else 0.0
-                )
-            elif axes and not non_modal:
-                self._motion(number, code, words, params, commands, op, axes)
-            elif {"G2", "G3"} & commands.keys() and not non_modal:
-                self._refuse(
-                    number,
-                    QCoreApplication.translate(
-                        "JobFile", "arc without axis words (error:26): {0}"
-                    ).format(quoted(code)),
-                    code,
-                )
-            if whole:
-                op.pen = pen if pen is not None else -1
-                if op.kind != MOVE:
-                    op.kind = PEN_DOWN if pen == DOWN else PEN_UP
-            if not (split and op.kind == GCODE and self._redundant(sent, previous_motion)):
+            op = self._operation(number, code, words, rest, removed, commands, params, pen, whole)
+            if not (split and op.kind == GCODE and self._redundant(op.sent, previous_motion)):
                 pending.append(op)
         if not pending and ("M2" in commands or "M30" in commands):
             pending.append(Pending(COMMENT, "", message="program end"))
@@ -553,6 +490,71 @@ class Parser:
             self.g21_dropped += notes.count("g21")
             self.z_dropped += notes.count("z")
         self._commit(number, code, pending, reasons)
+
+    def _operation(
+        self,
+        number: int,
+        code: str,
+        words: tuple[Word, ...],
+        rest: list[int],
+        removed: set[int],
+        commands: Mapping[str, int],
+        params: Mapping[str, int],
+        pen: int | None,
+        whole: bool,
+    ) -> Pending:
+        """The operation the words a line sends make: an offset, home, a dwell or a move.
+
+        ``rest``: the indices of those words (the pen's and the dropped ones are
+        ``removed``); ``whole``: the line is a pen line sent as written.
+        """
+        st = self.state
+        non_modal = {"G92", "G28", "G10", "G4"} & commands.keys()
+
+        def value(letter: str) -> float:
+            return words[params[letter]].value
+
+        text = code if whole or not removed else render(code, removed)
+        sent = [words[i] for i in rest]
+        op = Pending(GCODE, text, sent)
+        if "F" in params:
+            st.feed = value("F") * st.scale
+            self.f_lines += 1
+        if "F" in params and params["F"] in rest:
+            op.feed = value("F") * st.scale
+        axes = [i for i in rest if self._is_axis(words[i].letter)]
+        if "G92" in commands or "G92.1" in commands:
+            self._set_offsets(number, code, commands, words, axes)
+        elif "G28" in commands:
+            op.kind, op.motion = MOVE, HOME
+            op.target = dict.fromkeys(range(len(self.columns)), 0.0)
+            for c in op.target:
+                st.position[c] = 0.0
+        elif "G4" in commands:
+            # P in the machine's unit (GRBL: seconds; the profile's dwell_p), S in seconds.
+            self.dwell_p_seen = self.dwell_p_seen or "P" in params
+            op.dwell = (
+                value("P") * self.dwell_p_seconds
+                if "P" in params
+                else value("S")
+                if "S" in params
+                else 0.0
+            )
+        elif axes and not non_modal:
+            self._motion(number, code, words, params, commands, op, axes)
+        elif {"G2", "G3"} & commands.keys() and not non_modal:
+            self._refuse(
+                number,
+                QCoreApplication.translate(
+                    "JobFile", "arc without axis words (error:26): {0}"
+                ).format(quoted(code)),
+                code,
+            )
+        if whole:
+            op.pen = pen if pen is not None else -1
+            if op.kind != MOVE:
+                op.kind = PEN_DOWN if pen == DOWN else PEN_UP
+        return op
 
     def _is_axis(self, letter: str) -> bool:
         """An axis of the model (on a machine whose pen Z is, Z is no axis)."""
@@ -879,6 +881,43 @@ class Parser:
                 ).format(len(numbers), reason, shown, more)
             )
         return tuple(notes)
+
+
+def _modal_words(
+    st: State, commands: Mapping[str, int], *, g21_sent: bool
+) -> tuple[set[int], list[str], list[str]]:
+    """A line's modal words into ``st``: units, distance mode, plane, motion mode.
+
+    Returns the words not sent (``G21`` where the machine does not take it,
+    ``M2``/``M30``), the notes to count once the line is kept, and the reasons
+    the line cannot run as written.
+    """
+    removed: set[int] = set()
+    notes: list[str] = []
+    extra: list[str] = []
+    if "G20" in commands:
+        st.scale = INCH_MM
+    if "G21" in commands:
+        st.scale = 1.0
+        if not g21_sent:
+            removed.add(commands["G21"])
+            notes.append("g21")
+    if "G90" in commands:
+        st.relative = False
+    if "G91" in commands:
+        st.relative = True
+    for plane in (17, 18, 19):
+        if f"G{plane}" in commands:
+            st.plane = plane
+    for name, motion in MOTION_WORDS.items():
+        if name in commands:
+            st.motion = motion
+    for end in ("M2", "M30"):
+        if end in commands:
+            removed.add(commands[end])
+    if "M0" in commands or "M1" in commands:
+        extra.append("M0/M1 must stand on a line of its own (the station asks the operator)")
+    return removed, notes, extra
 
 
 def _duration(seconds: float) -> str:

@@ -466,20 +466,8 @@ class StringArtOperations(Sequence[Operation]):
         )
 
 
-def build_program(
-    job: StringArtJob,
-    profile: MachineProfile | None = None,
-    settings: WindingSettings | None = None,
-) -> StringArtProgram:
-    """Drill phase, the operator's WAIT, winding phase (see the module notes)."""
-    settings = settings or WindingSettings()
-    if profile is not None:
-        names = {axis.name for axis in profile.axes}
-        missing = [axis for axis in AXES if axis not in names]
-        if missing:
-            raise ValueError(f"{profile.name} lacks the winder's axes {', '.join(missing)}")
-    angles, radii = job.nail_polar()
-    before, after = half_gaps(angles, job.nail_positions())
+def _needle_in_radius(job: StringArtJob, settings: WindingSettings, radii: np.ndarray) -> float:
+    """Where the needle goes in, inside the nails; a board too small for it is refused."""
     r_in = float(radii.min()) - settings.needle_in_mm
     if r_in < 0:
         where = job.param_source("polomer_matrice")
@@ -492,10 +480,18 @@ def build_program(
                 "the nails",
             ).format(job.params.radius_cm, settings.needle_in_mm),
         )
-    b = _Builder()
+    return r_in
+
+
+def _drill_phase(
+    b: _Builder,
+    job: StringArtJob,
+    settings: WindingSettings,
+    angles: np.ndarray,
+    radii: np.ndarray,
+) -> list[int]:
+    """Every nail's hole, drilled in turn, then back to nail 0: the dwells' operation indices."""
     nails = job.params.nails
-    sequence = job.sequence
-    total = len(sequence)
     at_param = job.param_source("pocet_hrebiku")
     bottom = settings.drill_bottom_z
     dwell = f"G4 S{settings.drill_dwell_s:g}"
@@ -536,7 +532,22 @@ def build_program(
     b.turn_to(float(angles[0]), at_param, turn_base.format(zero), 0, -1)
     b.move(at_param, "X", float(radii[0]), to_radius.format(zero), 0, -1)
 
-    first = sequence[0]
+    return dwell_ops
+
+
+def _winding_start(
+    b: _Builder,
+    job: StringArtJob,
+    settings: WindingSettings,
+    angles: np.ndarray,
+    after: np.ndarray,
+    r_in: float,
+) -> tuple[int, float]:
+    """The WAIT for the nails and the thread, then the needle's way round the first nail.
+
+    Returns the WAIT's operation index and the radius the needle starts out at.
+    """
+    first = job.sequence[0]
     at_first = job.entry_source(0)
     b.add(
         Operation(
@@ -614,6 +625,29 @@ def build_program(
         first,
         0,
     )
+    return wait_index, first_out
+
+
+def build_program(
+    job: StringArtJob,
+    profile: MachineProfile | None = None,
+    settings: WindingSettings | None = None,
+) -> StringArtProgram:
+    """Drill phase, the operator's WAIT, winding phase (see the module notes)."""
+    settings = settings or WindingSettings()
+    if profile is not None:
+        names = {axis.name for axis in profile.axes}
+        missing = [axis for axis in AXES if axis not in names]
+        if missing:
+            raise ValueError(f"{profile.name} lacks the winder's axes {', '.join(missing)}")
+    angles, radii = job.nail_polar()
+    before, after = half_gaps(angles, job.nail_positions())
+    r_in = _needle_in_radius(job, settings, radii)
+    b = _Builder()
+    sequence = job.sequence
+    total = len(sequence)
+    dwell_ops = _drill_phase(b, job, settings, angles, radii)
+    wait_index, first_out = _winding_start(b, job, settings, angles, after, r_in)
     last = sequence[-1]
     tail = Operation(
         OpKind.COMMENT,
