@@ -35,6 +35,7 @@ from app.scripting.operations import LINK_DOWN as LINK_DOWN
 from app.scripting.operations import Operations
 from app.scripting.pump import Pump, RealtimePump, SimulatedPump, ensure_qt
 from app.scripting.waits import Operation, Wait
+from app.scripting.work import WorkZeroApi, override
 from app.station import Station
 from protocol.clock import ManualClock
 
@@ -81,6 +82,8 @@ class Machine:
         self._heard_count = 0
         #: The operations (generators of waits) this machine and its asyncio form drive.
         self.operations = Operations(self, pump)
+        #: A GRBL board's work coordinate systems: ``m.work.zero()``, ``m.work.go_to_zero()``.
+        self.work = WorkZeroApi(self, self._drive)
         station.model.message.connect(self._heard)
 
     # --- state --------------------------------------------------------------------
@@ -164,6 +167,14 @@ class Machine:
 
     def wake(self, *, timeout: float = 5.0) -> None:
         self._drive(self.operations.sleep(False, timeout))
+
+    def override(self, *, feed: int | None = None, rapid: int | None = None) -> tuple[int, int]:
+        """GRBL's feed (10…200 %) and rapid (25, 50, 100 %) overrides, while a job runs too.
+
+        Returns (feed, rapid) once the board reports them in ``Ov:``; Unsupported
+        on a firmware without overrides, MotionRefused for a percentage it cannot take.
+        """
+        return self._drive(override(self, feed, rapid))
 
     # --- parameters ---------------------------------------------------------------
 
