@@ -27,6 +27,8 @@ from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.link_text import axis_status_text
 from widgets.number_field import NumberField, localized
+from widgets.panels.gcode_overrides import OverrideBox
+from widgets.panels.gcode_work_zero import WorkZeroBox
 from widgets.panels.grbl_alarm_band import GrblAlarmBand
 from widgets.retranslate import Maker, Texts
 
@@ -130,8 +132,14 @@ class GcodePanel(QWidget):
         box.addWidget(self.output, 1)
         box.addLayout(line)
 
+        # GRBL's overrides and work zero, by the machine's DRO (hidden where the firmware
+        # has none).
+        self.overrides = OverrideBox(station)
+        self.work_zero = WorkZeroBox(station)
         layout = QVBoxLayout(self)
         layout.addWidget(machine)
+        layout.addWidget(self.work_zero)
+        layout.addWidget(self.overrides)
         #: A GRBL alarm or error explained, with what clears it (hidden without one).
         self.alarm_band = GrblAlarmBand(self)
         layout.addWidget(self.alarm_band)
@@ -298,6 +306,7 @@ class GcodePanel(QWidget):
             self.release_button,
         ):
             button.setEnabled(enabled)
+        self.work_zero.set_motion_enabled(enabled)
         self._sync_hand_zeroing()
 
     # --- the session's news ------------------------------------------------------------

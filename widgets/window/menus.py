@@ -31,6 +31,7 @@ from app.machine import LinkState
 from app.settings import StationSettings
 from app.station import Station
 from app.version import station_version
+from widgets.panels.gcode_overrides import OverrideBox
 from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
@@ -54,6 +55,16 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
             "MainWindow", "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code page"
         ),
     ),
+    (
+        "F5 / F6",
+        QT_TRANSLATE_NOOP("MainWindow", "Feed override -10 % / +10 %, on GRBL machines"),
+    ),
+    (
+        "Shift+F5 / Shift+F6",
+        QT_TRANSLATE_NOOP("MainWindow", "Feed override -1 % / +1 %, on GRBL machines"),
+    ),
+    ("F7", QT_TRANSLATE_NOOP("MainWindow", "Feed override back to 100 %, on GRBL machines")),
+    ("F8", QT_TRANSLATE_NOOP("MainWindow", "Rapid override 100 → 50 → 25 %, on GRBL machines")),
     ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),
     ("Ctrl+Q", QT_TRANSLATE_NOOP("MainWindow", "Quit (stops the machine first)")),
     ("Ctrl+J", QT_TRANSLATE_NOOP("MainWindow", "Show or hide the jobs dock")),
@@ -178,6 +189,18 @@ class WindowMenus(QObject):
         self.stop_action.triggered.connect(self._stop_all)
         menu.addAction(self.stop_action)
         menu.setToolTipsVisible(True)
+
+    def add_override_entries(self, box: OverrideBox | None) -> None:
+        """Machine → Overrides, with their keys (F5…F8), where the machine has overrides."""
+        if box is None or box.isHidden():  # hidden: the firmware has no overrides
+            return
+        menu = self.machine_menu.addMenu("")
+        self._texts.set(
+            menu.setTitle, lambda: QCoreApplication.translate("MainWindow", "&Overrides")
+        )
+        for action in box.actions_for(self._window, self._texts):
+            menu.addAction(action)
+            self._window.addAction(action)
 
     def _build_help(self, menu: QMenu) -> None:
         t = self._texts

@@ -155,7 +155,7 @@ class GcodeSession(MachineSession):
         self.follower = StatusFollower(self)
         self.replies = ReplyReader(self)
         self.links = LinkEvents(self)
-        #: GRBL's feed/rapid overrides and work systems (available as the registry says).
+        # GRBL's feed/rapid overrides and work systems (available as the registry says).
         self.overrides = OverrideControl(self)
         self.work = WorkZero(self)
         self.autotick = autotick
