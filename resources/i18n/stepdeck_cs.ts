@@ -4142,7 +4142,6 @@ Načíst jako:</translation>
     <name>OverrideBox</name>
     <message>
         <source>Overrides</source>
-        <extracomment>The window&apos;s override keys: (key, button attribute); Help → Keys lists them. F8 steps the rapid override round: 100 → 50 → 25 → 100 %.</extracomment>
         <translation>Korekce</translation>
     </message>
     <message>

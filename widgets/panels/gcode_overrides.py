@@ -20,7 +20,7 @@ from app.station import Station
 from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
 
-#: The window's override keys: (key, button attribute); Help → Keys lists them.
+# The window's override keys: (key, button attribute); Help → Keys lists them.
 OVERRIDE_KEYS: tuple[tuple[str, str], ...] = (
     ("F5", "feed_minus_10"),
     ("F6", "feed_plus_10"),
@@ -29,10 +29,10 @@ OVERRIDE_KEYS: tuple[tuple[str, str], ...] = (
     ("F7", "feed_reset"),
     ("F8", "rapid_next"),
 )
-#: F8 steps the rapid override round: 100 → 50 → 25 → 100 %.
+# F8 steps the rapid override round: 100 → 50 → 25 → 100 %.
 _RAPID_NEXT = {100: 50, 50: 25, 25: 100}
 
-#: The narrow buttons' width (px): "G54", "+10", "100 %" fit; six to a row fit the page.
+# The narrow buttons' width (px): "G54", "+10", "100 %" fit; six to a row fit the page.
 SMALL_BUTTON = 64
 
 

@@ -22,7 +22,7 @@ from app.station import Station
 from widgets.retranslate import Maker, Texts
 from widgets.style import monospace_font
 
-#: The narrow buttons' width (px): "G54", "+10", "100 %" fit; six to a row fit the page.
+# The narrow buttons' width (px): "G54", "+10", "100 %" fit; six to a row fit the page.
 SMALL_BUTTON = 64
 
 
