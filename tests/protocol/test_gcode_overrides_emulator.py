@@ -163,3 +163,15 @@ def test_a_status_report_carries_its_overrides() -> None:
     override(bench, FEED_MINUS_10)
     report = ov_report(bench)
     assert report.overrides == Overrides(90, 100, 100)
+
+
+def test_a_report_with_a_malformed_ov_is_dropped_as_garbage() -> None:
+    from protocol.gcode import Rejected, make_decoder
+
+    decoder = make_decoder()
+    good, bad = decoder.feed(
+        b"<Idle|MPos:0.000,0.000,0.000|FS:0,0|Ov:90,50,100>\r\n"
+        b"<Idle|MPos:0.000,0.000,0.000|FS:0,0|Ov:90,5x,100>\r\n"
+    )
+    assert isinstance(good, StatusReport) and good.overrides == Overrides(90, 50, 100)
+    assert isinstance(bad, Rejected)
