@@ -160,3 +160,15 @@ def test_zero_is_refused_while_the_machine_runs_or_a_job_holds_it(grbl: StationH
     assert grbl.written[mark:] == [] or all(w in (b"?",) for w in grbl.written[mark:])
     assert any("the work zero stays" in h for h in heard)
     assert any("a job is under way" in h for h in heard)
+
+
+def test_a_second_click_before_the_board_showed_the_first_never_overshoots(
+    grbl: StationHarness,
+) -> None:
+    session, emulator = grbl.gcode_session, grbl.gcode_emulator
+    assert session.overrides.set(feed=90)
+    assert session.overrides.set(feed=80)  # from 90, where the first bytes take the board
+    grbl.run_until(lambda: session.overrides.wanted is None, timeout=15)
+    assert emulator.overrides == (80, 100)
+    feeds = [e["feed"] for e in emulator.event_log if e["event"] == "override"]
+    assert min(feeds) == 80 and feeds[-1] == 80

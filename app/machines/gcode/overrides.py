@@ -91,10 +91,15 @@ class OverrideControl:
                 QCoreApplication.translate("Overrides", "Override not sent: {0}").format(refusal)
             )
             return False
-        now = self.reported or Overrides()
-        self._wanted = (now.feed if feed is None else feed, now.rapid if rapid is None else rapid)
+        # Bytes still on their way (a second click before the board showed the first): they
+        # will have taken it to what was asked then, so the new ones go from there.
+        base = self._wanted
+        if base is None and self.reported is not None:
+            base = (self.reported.feed, self.reported.rapid)
+        now = base or (100, 100)
+        self._wanted = (now[0] if feed is None else feed, now[1] if rapid is None else rapid)
         self._rounds_left = ROUNDS
-        self._send(burst=True)
+        self._send(base)
         return True
 
     def _refusal(self, feed: int | None, rapid: int | None) -> str | None:
@@ -114,17 +119,16 @@ class OverrideControl:
             ).format(rapid)
         return None
 
-    def _send(self, *, burst: bool = False) -> None:
-        """The bytes from what the board last said to what is wanted (``burst``: all of
-        them; else one of each kind still needed)."""
+    def _send(self, base: tuple[int, int] | None, *, burst: bool = True) -> None:
+        """The bytes from ``base`` (feed, rapid: where the board is or will be; None: not
+        known) to what is wanted; ``burst``: all of them, else one of each kind needed."""
         assert self._wanted is not None
         feed, rapid = self._wanted
-        now = self.reported
-        # Not heard yet: from a reset, whatever the board has now.
-        codes = FEED_RESET + feed_bytes(100, feed) if now is None else feed_bytes(now.feed, feed)
+        # Not known: from a reset, whatever the board has now.
+        codes = FEED_RESET + feed_bytes(100, feed) if base is None else feed_bytes(base[0], feed)
         if not burst:
             codes = bytes(sorted(set(codes)))  # one byte of each kind
-        if now is None or now.rapid != rapid:
+        if base is None or base[1] != rapid:
             codes += rapid_byte(rapid)
         for code in codes:
             byte = bytes((code,))
@@ -145,7 +149,7 @@ class OverrideControl:
             return
         if self._rounds_left > 1:
             self._rounds_left -= 1
-            self._send()
+            self._send(None if now is None else (now.feed, now.rapid), burst=False)
             return
         feed, rapid = self._wanted
         self._wanted = None
