@@ -22,6 +22,7 @@ from app.scripting.machine import Machine, Status
 from app.scripting.machine import connect as connect_blocking
 from app.scripting.pump import SimulatedPump
 from app.scripting.waits import Operation
+from app.scripting.work import override
 
 T = TypeVar("T")
 
@@ -89,6 +90,13 @@ class AsyncMachine:
         self, values: Mapping[str, Mapping[str, float]], *, timeout: float = 10.0
     ) -> dict[str, dict[str, float]]:
         return await self._drive(self.machine.operations.write_parameters(values, timeout))
+
+    async def override(
+        self, *, feed: int | None = None, rapid: int | None = None
+    ) -> tuple[int, int]:
+        """As :meth:`Machine.override`; awaited beside a running :meth:`run`, it changes the
+        speed of the job under way."""
+        return await self._drive(override(self.machine, feed, rapid))
 
     async def run(self, job_path: str | Path, **options: Any) -> Any:
         return await self._drive(run_job(self.machine, Path(job_path), **options))
