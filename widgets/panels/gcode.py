@@ -132,14 +132,9 @@ class GcodePanel(QWidget):
         box.addWidget(self.output, 1)
         box.addLayout(line)
 
-        # GRBL's overrides and work zero, by the machine's DRO (hidden where the firmware
-        # has none).
-        self.overrides = OverrideBox(station)
-        self.work_zero = WorkZeroBox(station)
         layout = QVBoxLayout(self)
         layout.addWidget(machine)
-        layout.addWidget(self.work_zero)
-        layout.addWidget(self.overrides)
+        self._add_grbl_boxes(station, layout)
         #: A GRBL alarm or error explained, with what clears it (hidden without one).
         self.alarm_band = GrblAlarmBand(self)
         layout.addWidget(self.alarm_band)
@@ -147,6 +142,14 @@ class GcodePanel(QWidget):
         layout.addWidget(console, 1)
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
+
+    def _add_grbl_boxes(self, station: Station, layout: QVBoxLayout) -> None:
+        """GRBL's work zero and overrides, under the machine's DRO (each hidden where the
+        firmware has none)."""
+        self.work_zero = WorkZeroBox(station)
+        self.overrides = OverrideBox(station)
+        layout.addWidget(self.work_zero)
+        layout.addWidget(self.overrides)
 
     def _hand_zeroing(self, station: Station) -> QWidget:
         """The winder's manual zeroing (its white buttons, FIDELITY S0-24): release, zero here."""
