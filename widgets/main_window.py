@@ -218,6 +218,7 @@ class MainWindow(QMainWindow):
             stop_all=self.stop_all,
         )
         menus.add_machine_entries(self.pages.home_buttons(self.dialect.home_page))
+        menus.add_override_entries(self.pages.gcode.overrides if self.pages.gcode else None)
         docks = self.docks = WindowDocks(
             self,
             self.station,

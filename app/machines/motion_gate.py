@@ -155,6 +155,20 @@ class MotionGate:
             )
         )
 
+    def refuse_new_zero(self, busy: str | None = None) -> Refusal | None:
+        """A work zero set or another coordinate system chosen (``G10``, ``G54``…), only at
+        rest: nothing moves, but every position a job or a queued line names would then
+        mean another place on the machine.  ``busy`` as for :meth:`refuse_release`."""
+        reason = self.model.motion_lock_reason() or self.model.jog_lock_reason
+        if reason is None and self.model.any_moving:
+            reason = "the machine is moving"
+        reason = reason or busy
+        if reason is None:
+            return None
+        return Refusal(
+            QCoreApplication.translate("MotionGate", "the work zero stays: {0}").format(reason)
+        )
+
     def refuse(self, refusal: Refusal | None) -> bool:
         """Tell the operator (status bar) when refused; True when the motion must not go."""
         if refusal is None:

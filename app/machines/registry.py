@@ -55,6 +55,11 @@ class Dialect:
     #: The machine is sent G-code text as written (G-code files): a job's pen lines can be
     #: translated into its own pen commands.
     takes_gcode_text: bool = False
+    #: Which of the dialect's machines have feed and rapid overrides (GRBL's real-time
+    #: bytes and ``Ov:``): the window shows their controls, the API takes ``override``.
+    overrides: Callable[[MachineProfile], bool] = lambda profile: False
+    #: Which have work coordinate systems (G54…G59, ``G10 L20``): zero here, go to zero.
+    work_systems: Callable[[MachineProfile], bool] = lambda profile: False
 
 
 def _stage_session(
@@ -102,7 +107,16 @@ def _gcode_session(
 ) -> MachineSession:
     if profile.gcode is None:
         raise ValueError(f"profile {profile.name!r} has no [gcode] table")
-    return GcodeSession(model, link, clock, profile.gcode, autotick=autotick)
+    session = GcodeSession(model, link, clock, profile.gcode, autotick=autotick)
+    session.overrides.available = _grbl_board(profile)
+    session.work.available = _grbl_board(profile)
+    return session
+
+
+def _grbl_board(profile: MachineProfile) -> bool:
+    """A GRBL 1.1 board (its ``$J`` jogs say so): real-time overrides and G54…G59. The
+    CoreXY plotter's and the winder's firmwares have neither."""
+    return profile.gcode is not None and "$J" in profile.gcode.words
 
 
 #: The emulated G-code machine for each kinematics a profile can name: the name of its
@@ -166,6 +180,8 @@ _ENTRIES = (
         _gcode_emulator,
         homes_all_axes=True,
         takes_gcode_text=True,
+        overrides=_grbl_board,
+        work_systems=_grbl_board,
     ),
 )
 

@@ -23,6 +23,7 @@ from app.scripting.machine import Machine, Status
 from app.scripting.machine import connect as connect_blocking
 from app.scripting.pump import SimulatedPump
 from app.scripting.waits import Operation
+from app.scripting.work import override
 
 T = TypeVar("T")
 
@@ -100,6 +101,13 @@ class AsyncMachine:
     ) -> dict[str, float]:
         """As :meth:`MachineSettings.write <app.scripting.settings.MachineSettings.write>`."""
         return await self._drive(stored.write(self.machine, changes, timeout))
+
+    async def override(
+        self, *, feed: int | None = None, rapid: int | None = None
+    ) -> tuple[int, int]:
+        """As :meth:`Machine.override`; awaited beside a running :meth:`run`, it changes the
+        speed of the job under way."""
+        return await self._drive(override(self.machine, feed, rapid))
 
     async def run(self, job_path: str | Path, **options: Any) -> Any:
         return await self._drive(run_job(self.machine, Path(job_path), **options))

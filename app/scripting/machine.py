@@ -37,6 +37,7 @@ from app.scripting.operations import Operations
 from app.scripting.pump import Pump, RealtimePump, SimulatedPump, ensure_qt
 from app.scripting.settings import MachineSettings
 from app.scripting.waits import Operation, Wait
+from app.scripting.work import WorkZeroApi, override
 from app.station import Station
 from protocol.clock import ManualClock
 
@@ -83,6 +84,8 @@ class Machine(StageParameterCalls):
         self._heard_count = 0
         #: The operations (generators of waits) this machine and its asyncio form drive.
         self.operations = Operations(self, pump)
+        #: A GRBL board's work coordinate systems: ``m.work.zero()``, ``m.work.go_to_zero()``.
+        self.work = WorkZeroApi(self, self._drive)
         station.model.message.connect(self._heard)
 
     # --- state --------------------------------------------------------------------
@@ -166,6 +169,14 @@ class Machine(StageParameterCalls):
 
     def wake(self, *, timeout: float = 5.0) -> None:
         self._drive(self.operations.sleep(False, timeout))
+
+    def override(self, *, feed: int | None = None, rapid: int | None = None) -> tuple[int, int]:
+        """GRBL's feed (10…200 %) and rapid (25, 50, 100 %) overrides, while a job runs too.
+
+        Returns (feed, rapid) once the board reports them in ``Ov:``; Unsupported
+        on a firmware without overrides, MotionRefused for a percentage it cannot take.
+        """
+        return self._drive(override(self, feed, rapid))
 
     # --- stored settings ----------------------------------------------------------
 

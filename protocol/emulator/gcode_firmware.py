@@ -65,11 +65,18 @@ Decisions the contract leaves open, made here:
 - Status reports carry ``MPos`` (``WPos``, machine position minus the work
   offset, with ``$10`` bit 0 clear), ``FS`` and, with ``$10`` bit 1, ``Bf``
   (free planner blocks, free receive-buffer bytes, as GRBL counts them).  A
-  GRBL board adds ``WCO:`` (its G92 work offset) as GRBL 1.1 does: in the
-  first report after a reset or an offset change, then every 10th report
-  while idle and every 30th while running, holding or jogging.  ``$#`` lists
-  the offsets (``[G92:...]`` is the G92 offset; G54…G59, G28 and G30 are 0:
-  ``G10`` is not taken).
+  GRBL board adds ``WCO:`` (its work offset: the active G54…G59 system's
+  plus G92's, :mod:`~protocol.emulator.gcode_work_systems`) as GRBL 1.1
+  does: in the first report after a reset or an offset change, then every
+  10th report while idle and every 30th while running, holding or jogging;
+  and ``Ov:`` (its feed, rapid and spindle overrides,
+  :mod:`~protocol.emulator.gcode_overrides`) on GRBL's own schedule.  ``$#``
+  lists the offsets (G54…G59 as stored, ``G10 L2``/``L20`` set them; G28 and
+  G30 are 0).  (A difference: a ``G10`` naming a system not in use sends
+  ``WCO:`` in the next report too; GRBL waits for its turn.)
+- A GRBL board acts on the override bytes 0x90…0x97 at the start of the next
+  control cycle, each kind once however often it came, as GRBL's real-time
+  pass does; a change re-plans the queued moves at once.
 - GRBL answers ``G4`` and ``G92``/``G92.1`` only once the motion before
   them is done (it synchronises its planner; ``G4`` then dwells before
   answering), and reads no line meanwhile; the GRBL board does the same.
@@ -95,6 +102,7 @@ from protocol.emulator.gcode_machine import (
     grbl_plotter_config,
     string_art_config,
 )
+from protocol.emulator.gcode_overrides import OverrideState
 from protocol.emulator.gcode_planner import (
     Block,
     DriversOff,
@@ -229,6 +237,8 @@ class GcodeFirmware(ControlCycles):
         self._drivers_off: set[str] = set()
         #: The white button was pressed once: the next press sets the zero (S0-24).
         self._white_pressed = False
+        #: GRBL's feed and rapid overrides (a GRBL board only: the others ignore the bytes).
+        self._overrides = OverrideState()
         #: GRBL's settings ($$), kept only on a GRBL board; its check mode ($C).
         self._settings_table = self._initial_settings()
         self._check_mode = False
@@ -260,7 +270,7 @@ class GcodeFirmware(ControlCycles):
                 elif byte == JOG_CANCEL[0] and self.config.jogging:
                     self.jog_cancel()
                 elif byte >= 0x80 and self.config.grbl:
-                    pass  # GRBL's other extended real-time bytes (overrides): never in a line
+                    self._overrides.received(byte)  # never in a line (gcode_overrides.py)
                 elif len(self._rx) >= self._rx_capacity:
                     self._overflows += 1
                 else:
@@ -323,8 +333,10 @@ class GcodeFirmware(ControlCycles):
             self._unacked = 0
             self._status_wanted = False
             self._interpreter.reset(self._planner.position())
-            self._work_offset = self._interpreter.offset
+            self._work_offset = self._interpreter.work_offset()
             self._wco_countdown = 0
+            self._overrides.reset()
+            self._planner.set_overrides(100, 100)
             self._log("reset", pos=self._where())
             self._send_banner()
             if self._alarm is not None:
@@ -409,6 +421,12 @@ class GcodeFirmware(ControlCycles):
         """GRBL's G92 offset in effect (machine minus work position); 0 on the other firmwares."""
         with self._lock:
             return dict(zip(self.config.axes, self._work_offset, strict=True))
+
+    @property
+    def overrides(self) -> tuple[int, int]:
+        """GRBL's feed and rapid overrides in force, percent (100, 100 elsewhere)."""
+        with self._lock:
+            return self._overrides.values.feed, self._overrides.values.rapid
 
     def motor_counts(self) -> tuple[int, ...]:
         """Each motor's step counter: CoreXY (a, b, z), otherwise one per axis."""
@@ -522,17 +540,26 @@ class GcodeFirmware(ControlCycles):
             buffers = f"|Bf:{self._planner.free},{free_rx}" if mask & 2 else ""
             wco = ""
             if self.config.grbl:
+                busy = state.split(":")[0] in ("Run", "Hold", "Home", "Jog")
                 if self._wco_countdown > 0:
                     self._wco_countdown -= 1
                 else:
-                    busy = state.split(":")[0] in ("Run", "Hold", "Home", "Jog")
                     self._wco_countdown = (WCO_REFRESH_BUSY if busy else WCO_REFRESH_IDLE) - 1
                     wco = "|WCO:" + _axis_values(self._work_offset)
+                    self._overrides.wco_reported()
+                wco += self._overrides.report_field(busy)
             return f"<{state}|{kind}:{where}{buffers}|FS:{feed:.0f},{self._spindle:.0f}{wco}>"
 
     # -- the control cycle -----------------------------------------------------------------
 
+    def _overrides_changed(self, t: float | None = None) -> None:
+        values = self._overrides.values
+        self._planner.set_overrides(values.feed, values.rapid)
+        self._log("override", t, feed=values.feed, rapid=values.rapid)
+
     def _run_cycle(self) -> None:
+        if self._overrides.run_pass():  # GRBL's real-time pass acts on the bytes received
+            self._overrides_changed()
         self._take_lines()
         self._planner.run(self.config.control_cycle, self._block_done)
         self._finish_jog_cancel()
@@ -659,7 +686,9 @@ class GcodeFirmware(ControlCycles):
             self._send_line(self._interpreter.modes())
         elif command == "$#" and self.config.grbl:
             zeros = _axis_values((0.0,) * len(self.config.axes))
-            for name in ("G54", "G55", "G56", "G57", "G58", "G59", "G28", "G30"):
+            for number, stored in enumerate(self._interpreter.systems.stored):
+                self._send_line(f"[G{54 + number}:{_axis_values(stored)}]")
+            for name in ("G28", "G30"):
                 self._send_line(f"[{name}:{zeros}]")
             self._send_line(f"[G92:{_axis_values(self._interpreter.offset)}]")
             self._send_line("[TLO:0.000]")
@@ -857,6 +886,8 @@ class GcodeFirmware(ControlCycles):
             case SetPosition():
                 self._log("setpos", t, pos=self._where(block.position))
             case SetOffset():
+                if block.program_end and self._overrides.reset():
+                    self._overrides_changed(t)
                 self._work_offset = block.offset
                 self._wco_countdown = 0  # GRBL: the next report carries WCO
                 self._log("offset", t, offset=self._where(block.offset))

@@ -50,6 +50,7 @@ from protocol.emulator.gcode_planner import (
     SetOffset,
     SetPosition,
 )
+from protocol.emulator.gcode_work_systems import WorkSystems
 from protocol.gcode.junctions import axis_limited, unit_vector
 from protocol.gcode.words import EXPECTED_COMMAND_LETTER, Word
 
@@ -77,12 +78,12 @@ G92_1 = 921
 
 _G_GROUPS = {
     **dict.fromkeys((0, 1, 2, 3), "motion"),
-    **dict.fromkeys((4, 28, 92, G92_1), "non-modal"),
+    **dict.fromkeys((4, 10, 28, 92, G92_1), "non-modal"),
     17: "plane",
     **dict.fromkeys((20, 21), "units"),
     **dict.fromkeys((90, 91), "distance"),
     94: "feed mode",
-    54: "coordinates",
+    **dict.fromkeys((54, 55, 56, 57, 58, 59), "coordinates"),
 }
 _M_GROUPS = {
     **dict.fromkeys((0, 1, 2, 30), "flow"),
@@ -138,6 +139,8 @@ class Interpreter:
         self.position = position
         #: GRBL's G92 work offset (machine minus work position), per axis; always 0 elsewhere.
         self.offset: tuple[float, ...] = (0.0,) * len(position)
+        #: GRBL's G54…G59 (gcode_work_systems.py): the stored offsets and the active one.
+        self.systems = WorkSystems.zero(len(position))
         self.modal = Modal()
         self.pen_down = False
         self.spindle_level = 0.0
@@ -148,6 +151,7 @@ class Interpreter:
         """After a soft reset: GRBL's power-on modes (no G92 offset), the pen up, the tool kept."""
         self.position = position
         self.offset = (0.0,) * len(position)
+        self.systems = replace(self.systems, active=0)  # G54; the stored ones are kept
         self.modal = Modal()
         self.pen_down = False
         self.spindle_level = 0.0
@@ -158,7 +162,7 @@ class Interpreter:
         spindle = ("M3" if m.spindle_on else "M5") if self.config.pen is PenMapping.SPINDLE else ""
         words = [
             f"G{m.motion}",
-            "G54 G17",
+            f"{self.systems.name} G17",
             "G20" if m.inches else "G21",
             "G90" if m.absolute else "G91",
             "G94",
@@ -169,6 +173,10 @@ class Interpreter:
             f"S{m.spindle:g}",
         ]
         return "[GC:" + " ".join(words) + "]"
+
+    def work_offset(self) -> tuple[float, ...]:
+        """GRBL's work coordinate offset (``WCO:``): the active system's plus G92's."""
+        return self.systems.total(self.offset)
 
     def execute(self, words: list[Word]) -> list[Block] | int:
         """The blocks one line queues, in order, or GRBL's error code (and nothing changed)."""
@@ -215,7 +223,11 @@ class Interpreter:
                 if line.bare is not None:
                     return EXPECTED_COMMAND_LETTER
                 line.bare = value
-            elif letter in _VALUE_LETTERS or letter in self.config.axes:
+            elif (
+                letter in _VALUE_LETTERS
+                or letter in self.config.axes
+                or (letter == "L" and self.config.grbl)
+            ):
                 if letter in line.values:
                     return WORD_REPEATED
                 line.values[letter] = value
@@ -244,6 +256,9 @@ class Interpreter:
             return self.config.drivers_off
         if letter == "M" and code in (8, 9):
             return self.config.grbl  # coolant: GRBL switches a pin, a plotter has none
+        if letter == "G" and code in (10, 55, 56, 57, 58, 59):
+            return self.config.grbl  # work coordinate systems: GRBL's, not the plotters'
+
         return True
 
     # -- planning the line -------------------------------------------------------------------
@@ -306,7 +321,7 @@ class Interpreter:
         moved = self._axes(line, absolute, scale, feed, used, blocks)
         if isinstance(moved, int):
             return moved
-        motion, position, offset = moved
+        motion, position, offset, systems = moved
 
         if set(values) - used:
             return UNUSED_WORDS
@@ -317,6 +332,9 @@ class Interpreter:
             if pen or level:
                 blocks.append(PenChange(False, cfg.pen_time if pen else 0.0, 0.0))
             pen, level = False, 0.0
+            if cfg.grbl:  # G54 again, the overrides back to 100 %, once the motion is done
+                systems = systems.selected(54)
+                blocks.append(SetOffset(systems.total(offset), program_end=True))
         elif flow == 0:
             blocks.append(Pause())
 
@@ -334,6 +352,7 @@ class Interpreter:
         )
         self.position = position
         self.offset = offset
+        self.systems = systems
         self.pen_down = pen
         self.spindle_level = level
         self.step_rate = step_rate
@@ -390,17 +409,23 @@ class Interpreter:
         feed: float | None,
         used: set[str],
         blocks: list[Block],
-    ) -> tuple[int, tuple[float, ...], tuple[float, ...]] | int:
-        """What the line's axis words do: G92, G28, a move or an arc (queued on ``blocks``),
-        drivers off; the motion mode, position and offset after it, or the error code."""
+    ) -> tuple[int, tuple[float, ...], tuple[float, ...], WorkSystems] | int:
+        """What the line's axis words do: G92, G10, G54…G59, G28, a move or an arc (queued on
+        ``blocks``), drivers off; the motion mode, position, G92 offset and work systems after
+        it, or the error code."""
         cfg = self.config
         values = line.values
         modal = self.modal
         nonmodal = line.g.get("non-modal")
         motion_given = line.g.get("motion")
         motion = modal.motion if motion_given is None else motion_given
-        if nonmodal in (28, 92) and motion_given is not None:
+        if nonmodal in (10, 28, 92) and motion_given is not None:
             return AXIS_COMMAND_CONFLICT
+        # GRBL selects the line's coordinate system before G10, G92 and the motion (gcode.c).
+        systems = self.systems
+        if "coordinates" in line.g and cfg.grbl:
+            systems = systems.selected(line.g["coordinates"])
+        wco_changed = systems != self.systems
         axis_words = {a: v for a, v in values.items() if a in cfg.axes}
         position = self.position
         if "drivers" in line.m:
@@ -413,14 +438,24 @@ class Interpreter:
         if nonmodal == 92 and cfg.grbl:
             if not axis_words:
                 return NO_AXIS_WORDS
-            # GRBL: G92 = MPos - WPos for the named axes (always absolute, in the line's units).
+            # GRBL: G92 = MPos - WCS - WPos for the named axes (absolute, in the line's units).
             offset = tuple(
-                position[i] - axis_words[a] * (1.0 if a == "A" else scale)
+                position[i] - systems.offset[i] - axis_words[a] * (1.0 if a == "A" else scale)
                 if a in axis_words
                 else offset[i]
                 for i, a in enumerate(cfg.axes)
             )
-            blocks.append(SetOffset(offset))
+            wco_changed = True
+        elif nonmodal == 10:
+            millimetres = {
+                cfg.index(a): v * (1.0 if a == "A" else scale) for a, v in axis_words.items()
+            }
+            changed = systems.set_by_g10(values, millimetres, position, offset)
+            if isinstance(changed, int):
+                return changed
+            used |= {"L", "P"}
+            wco_changed = True  # GRBL writes its EEPROM once the motion is done
+            systems = changed
         elif nonmodal == 92:
             if not axis_words and not cfg.bare_g92:
                 return NO_AXIS_WORDS
@@ -430,14 +465,15 @@ class Interpreter:
                 position = (0.0,) * len(cfg.axes)
             blocks.append(SetPosition(position))
         elif nonmodal == 28:
-            stops = [self._target(position, axis_words, absolute, scale)] if axis_words else []
+            wco = systems.total(offset)
+            stops = [self._target(position, axis_words, absolute, scale, wco)] if axis_words else []
             stops.append((0.0,) * len(cfg.axes))
             if not all(cfg.within_travel(p) for p in stops):
                 return TRAVEL_EXCEEDED
             blocks += self._moves(position, stops, "G28", None)
             position = stops[-1]
         elif axis_words:
-            end = self._target(position, axis_words, absolute, scale)
+            end = self._target(position, axis_words, absolute, scale, systems.total(offset))
             rate: float | None = None
             if motion != 0:
                 rate = feed if feed is not None else cfg.default_feed
@@ -459,8 +495,11 @@ class Interpreter:
             return NO_AXIS_WORDS
         if nonmodal == G92_1:
             offset = (0.0,) * len(cfg.axes)
-            blocks.append(SetOffset(offset))
-        return motion, position, offset
+            wco_changed = True
+        if wco_changed and cfg.grbl:
+            # GRBL synchronises on a work-offset change (FORCE_BUFFER_SYNC_DURING_WCO_CHANGE).
+            blocks.append(SetOffset(systems.total(offset)))
+        return motion, position, offset, systems
 
     def _target(
         self,
@@ -468,13 +507,16 @@ class Interpreter:
         axis_words: dict[str, float],
         absolute: bool,
         scale: float,
+        offset: tuple[float, ...] | None = None,
     ) -> tuple[float, ...]:
+        """``offset``: the work offset the line's absolute values are in (default: G92's)."""
+        wco = self.offset if offset is None else offset
         target = list(base)
         for axis, value in axis_words.items():
             index = self.config.index(axis)
             distance = value * (1.0 if axis == "A" else scale)
             # An absolute value is a work coordinate: the G92 offset makes it a machine one.
-            target[index] = distance + self.offset[index] if absolute else target[index] + distance
+            target[index] = distance + wco[index] if absolute else target[index] + distance
         return tuple(target)
 
     def _moves(
@@ -511,9 +553,13 @@ class Interpreter:
         # GRBL: along the path, as fast as the feed and every axis' own limits allow.
         _, unit = unit_vector([b - a for a, b in zip(start, end, strict=True)])
         rapid = axis_limited(cfg.rates(), unit)
-        speed = rapid if feed is None else min(feed / 60.0, rapid)
+        programmed = rapid if feed is None else feed / 60.0
+        speed = min(programmed, rapid)
         accel = axis_limited(cfg.accelerations(), unit)
-        return Move(start, end, steps, rate, cfg.acceleration, length, kind, speed, accel, unit)
+        return Move(
+            start, end, steps, rate, cfg.acceleration, length, kind, speed, accel, unit,
+            programmed, rapid,
+        )  # fmt: skip
 
     def _arc(
         self,

@@ -38,6 +38,8 @@ from protocol.gcode.junctions import junction_speed_sqr, max_entry_sqr, profile,
 
 #: Seconds: a block with less than this left has ended (rounding of float sums).
 TIME_EPS = 1e-9
+#: GRBL's MINIMUM_FEED_RATE (1 mm/min), in units/s: an override never plans slower.
+_MINIMUM_SPEED = 1.0 / 60.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -120,6 +122,10 @@ class Move:
     speed: float = 0.0
     path_accel: float = 0.0
     unit: tuple[float, ...] = ()
+    #: GRBL: the speed the line asked for (units/s, before the axes' limits) and the rapid
+    #: rate in this direction; the feed override scales the one, capped by the other.
+    programmed: float = 0.0
+    rapid: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -157,6 +163,8 @@ class SetOffset:
     """
 
     offset: tuple[float, ...]
+    #: GRBL's ``M2``/``M30``: G54 again, and the overrides back to 100 %.
+    program_end: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -196,6 +204,8 @@ class _Slot:
     block: Block
     limit_sqr: float = 0.0
     entry_sqr: float = 0.0
+    #: The corner's own limit (GRBL's max_junction_speed_sqr), kept for an override change.
+    junction_sqr: float = math.inf
 
 
 class Planner:
@@ -225,6 +235,9 @@ class Planner:
         self._carry = 0.0
         #: A hold's braking ramp ends inside the running move (not at its end).
         self._stops_inside = False
+        #: GRBL's feed and rapid overrides in force, percent (gcode_overrides.py).
+        self.feed_override = 100
+        self.rapid_override = 100
 
     # -- the queue -------------------------------------------------------------------------
 
@@ -241,7 +254,7 @@ class Planner:
         slot = _Slot(block)
         if self.junctions is not None and isinstance(block, Move):
             # GRBL drops a move that goes nowhere: it neither stops nor limits the motion.
-            slot.limit_sqr = self._entry_limit(block) if block.length > 0 else math.inf
+            slot.limit_sqr = self._entry_limit(block, slot) if block.length > 0 else math.inf
         self._slots.append(slot)
         if self.junctions is not None and isinstance(block, Move):
             self._replan()
@@ -418,7 +431,7 @@ class Planner:
         """How a move's progress is counted: mm on GRBL, lead-motor steps otherwise."""
         return block.length if self.junctions is not None else float(block.steps)
 
-    def _entry_limit(self, block: Move) -> float:
+    def _entry_limit(self, block: Move, new: _Slot) -> float:
         """The block's max entry speed²: from rest into an empty planner or after a stop."""
         assert self.junctions is not None
         previous: Block | None = None
@@ -427,11 +440,56 @@ class Planner:
             if not isinstance(previous, Move) or previous.length > 0:
                 break
         if not isinstance(previous, Move) or previous.length <= 0:
+            new.junction_sqr = 0.0
             return 0.0
-        junction = junction_speed_sqr(
+        new.junction_sqr = junction_speed_sqr(
             previous.unit, block.unit, self.junctions.accelerations, self.junctions.deviation
         )
-        return max_entry_sqr(junction, block.speed, previous.speed)
+        return max_entry_sqr(new.junction_sqr, self.nominal(block), self.nominal(previous))
+
+    # -- GRBL's overrides ------------------------------------------------------------------
+
+    def nominal(self, block: Move) -> float:
+        """GRBL's ``plan_compute_profile_nominal_speed``: a rapid scaled by the rapid
+        override, a feed move by the feed override (no faster than the rapid rate), homing
+        and jogs as they are; never below GRBL's 1 mm/min."""
+        if not block.programmed:
+            return block.speed  # a move planned without overrides in mind
+        if block.kind in ("G0", "G28"):
+            speed = block.speed * self.rapid_override / 100.0
+        elif block.kind in ("home", "jog"):
+            speed = block.speed
+        else:
+            speed = min(block.programmed * self.feed_override / 100.0, block.rapid)
+        return max(speed, _MINIMUM_SPEED)
+
+    def set_overrides(self, feed: int, rapid: int) -> None:
+        """New overrides: every queued move's limits again (GRBL's
+        ``plan_update_velocity_profile_parameters``), then the plan from the speed the tool
+        has now (``plan_cycle_reinitialize``): the move under way speeds up or slows down at
+        its acceleration."""
+        self.feed_override, self.rapid_override = feed, rapid
+        if self.junctions is None:
+            return
+        previous: float | None = None
+        for slot in self._slots:
+            block = slot.block
+            if not isinstance(block, Move):
+                previous = None
+                continue
+            if block.length <= 0:
+                continue
+            nominal = self.nominal(block)
+            slower = nominal if previous is None else min(nominal, previous)
+            slot.limit_sqr = min(slower * slower, slot.junction_sqr)
+            previous = nominal
+        self._replan()
+        head = self.current
+        if isinstance(head, Move) and self._hold is HoldState.RUNNING:
+            made, speed = self._ramp.at(self._t)
+            self._done += made
+            self._t = 0.0
+            self._ramp = Ramp(self._profile(head, speed))
 
     def _replan(self) -> None:
         """Plan the moves from the running one (or the last stop) to the newest again."""
@@ -475,7 +533,18 @@ class Planner:
         if len(self._slots) > 1 and not isinstance(self._slots[1].block, Move):
             exit_sqr = 0.0
         rest = max(block.length - self._done, 0.0)
-        return profile(rest, entry, math.sqrt(exit_sqr), block.speed, block.path_accel)
+        nominal, accel = self.nominal(block), block.path_accel
+        if entry > nominal and rest > 0 and accel > 0:
+            # An override lowered the speed under way: brake to the new one first (GRBL's
+            # RAMP_DECELERATE_OVERRIDE), then go on as planned.
+            slowing = (entry * entry - nominal * nominal) / (2.0 * accel)
+            if slowing >= rest:
+                low = math.sqrt(max(entry * entry - 2.0 * accel * rest, 0.0))
+                return ((entry, -accel, (entry - low) / accel),)
+            first = (entry, -accel, (entry - nominal) / accel)
+            exit_speed = min(math.sqrt(exit_sqr), nominal)
+            return (first, *profile(rest - slowing, nominal, exit_speed, nominal, accel))
+        return profile(rest, entry, math.sqrt(exit_sqr), nominal, accel)
 
     def _brake_from(self, speed: float, block: Move) -> None:
         """A hold's braking over the rest of ``block``: within it, or on through its end."""

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field, replace
 
 from protocol.framing import DecodeResult, LineDecoder
 from protocol.framing import Rejected as Rejected  # re-exported for this dialect's readers
+from protocol.gcode.overrides import Overrides, parse_overrides
 
 #: Real-time commands: single bytes a board acts on at once, never part of a line.
 STATUS_QUERY = b"?"
@@ -174,6 +175,8 @@ class StatusReport:
     wco: tuple[float, ...] | None = None
     #: The board reported ``WPos`` (``$10`` bit 0 clear), not ``MPos``.
     work_reported: bool = False
+    #: GRBL's overrides when this report carried ``Ov:`` (now and then, and after a change).
+    overrides: Overrides | None = None
 
 
 def with_work_offset(report: StatusReport, wco: Sequence[float] | None) -> StatusReport:
@@ -300,6 +303,9 @@ def _parse_status(body: str) -> StatusReport | str:
         if len(counts) != 2 or counts[0] is None or counts[1] is None:
             return f"bad buffer state {fields['Bf']!r}"
         planner_free, rx_free = counts
+    overrides = parse_overrides(fields)
+    if isinstance(overrides, str):
+        return overrides
     reported = tuple(v for v in position if v is not None)
     report = StatusReport(
         state=state,
@@ -312,6 +318,7 @@ def _parse_status(body: str) -> StatusReport | str:
         rx_free=rx_free,
         fields=fields,
         substate=substate or None,
+        overrides=overrides,
     )
     return report if wco is None else with_work_offset(report, wco)
 

@@ -4638,6 +4638,26 @@ Buttons a row.</extracomment>
         <source>Stopping every axis before closing…</source>
         <translation>Před zavřením zastavuji všechny osy…</translation>
     </message>
+    <message>
+        <source>Feed override -10 % / +10 %, on GRBL machines</source>
+        <translation>Korekce posuvu -10 % / +10 %, na strojích s GRBL</translation>
+    </message>
+    <message>
+        <source>Feed override -1 % / +1 %, on GRBL machines</source>
+        <translation>Korekce posuvu -1 % / +1 %, na strojích s GRBL</translation>
+    </message>
+    <message>
+        <source>Feed override back to 100 %, on GRBL machines</source>
+        <translation>Korekce posuvu zpět na 100 %, na strojích s GRBL</translation>
+    </message>
+    <message>
+        <source>Rapid override 100 → 50 → 25 %, on GRBL machines</source>
+        <translation>Korekce rychloposuvu 100 → 50 → 25 %, na strojích s GRBL</translation>
+    </message>
+    <message>
+        <source>&amp;Overrides</source>
+        <translation>&amp;Korekce</translation>
+    </message>
 </context>
 <context>
     <name>ManualPanel</name>
@@ -4723,6 +4743,10 @@ Buttons a row.</extracomment>
         <source>the motors are not released: {0}</source>
         <translation>motory nejsou uvolněny: {0}</translation>
     </message>
+    <message>
+        <source>the work zero stays: {0}</source>
+        <translation>pracovní nula zůstává: {0}</translation>
+    </message>
 </context>
 <context>
     <name>NumberField</name>
@@ -4797,6 +4821,85 @@ Buttons a row.</extracomment>
     <message>
         <source>move to {0}</source>
         <translation>najet na {0}</translation>
+    </message>
+</context>
+<context>
+    <name>OverrideBox</name>
+    <message>
+        <source>Overrides</source>
+        <translation>Korekce</translation>
+    </message>
+    <message>
+        <source>Feed override -10 %</source>
+        <translation>Korekce posuvu -10 %</translation>
+    </message>
+    <message>
+        <source>Feed override -1 %</source>
+        <translation>Korekce posuvu -1 %</translation>
+    </message>
+    <message>
+        <source>Feed override +1 %</source>
+        <translation>Korekce posuvu +1 %</translation>
+    </message>
+    <message>
+        <source>Feed override +10 %</source>
+        <translation>Korekce posuvu +10 %</translation>
+    </message>
+    <message>
+        <source>100 %</source>
+        <translation>100 %</translation>
+    </message>
+    <message>
+        <source>Feed override back to 100 %</source>
+        <translation>Korekce posuvu zpět na 100 %</translation>
+    </message>
+    <message>
+        <source>{0} %</source>
+        <translation>{0} %</translation>
+    </message>
+    <message>
+        <source>Rapid (G0) at {0} %</source>
+        <translation>Rychloposuv (G0) na {0} %</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Posuv</translation>
+    </message>
+    <message>
+        <source>Rapid</source>
+        <translation>Rychloposuv</translation>
+    </message>
+    <message>
+        <source>Rapid override 100 → 50 → 25 %</source>
+        <translation>Korekce rychloposuvu 100 → 50 → 25 %</translation>
+    </message>
+</context>
+<context>
+    <name>Overrides</name>
+    <message>
+        <source>Override not sent: {0}</source>
+        <extracomment>Status reports after the bytes before their effect is judged (see the module). Rounds of sending what is missing before the station gives up and says so: from 10 to 200 % a step of 10 and one of 1 at a time, on a board that merged the whole first burst. The firmware has GRBL&apos;s overrides (the registry says; False until it does). The last ``Ov:`` heard; None before any (or after a reset: 100 % then).</extracomment>
+        <translation>Korekce neodeslána: {0}</translation>
+    </message>
+    <message>
+        <source>this machine&apos;s firmware has no feed or rapid override</source>
+        <translation>firmware tohoto stroje nemá korekci posuvu ani rychloposuvu</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nepřipojeno</translation>
+    </message>
+    <message>
+        <source>a feed override of {0} % is outside {1}…{2} %</source>
+        <translation>korekce posuvu {0} % je mimo {1}…{2} %</translation>
+    </message>
+    <message>
+        <source>a rapid override of {0} % is none of 25, 50 and 100 %</source>
+        <translation>korekce rychloposuvu {0} % není 25, 50 ani 100 %</translation>
+    </message>
+    <message>
+        <source>The board did not take the override: feed {0} %, rapid {1} % asked</source>
+        <translation>Deska korekci nepřijala: požadován posuv {0} %, rychloposuv {1} %</translation>
     </message>
 </context>
 <context>
@@ -6257,6 +6360,81 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     <message>
         <source>The axis&apos;s lead screw: how far one turn moves it. It decides how the unit&apos;s counts become millimetres.</source>
         <translation>Pohybový šroub osy: jak daleko ji posune jedna otáčka. Určuje, jak se počty jednotky převádějí na milimetry.</translation>
+    </message>
+</context>
+<context>
+    <name>WorkZero</name>
+    <message>
+        <source>no axis to zero</source>
+        <extracomment>GRBL 1.1&apos;s work coordinate systems (``N_COORDINATE_SYSTEM``). The firmware has GRBL&apos;s work systems (the registry says; False until it does). The system in use as far as known (None before the board&apos;s first reset or $G). Each system&apos;s stored offset, as the board&apos;s last ``$#`` listed it.</extracomment>
+        <translation>žádná osa k vynulování</translation>
+    </message>
+    <message>
+        <source>{0} is none of G54…G59</source>
+        <translation>{0} není žádný z G54…G59</translation>
+    </message>
+    <message>
+        <source>not sent: the board has not reported its work offset yet</source>
+        <translation>neodesláno: deska ještě nenahlásila svůj pracovní posun</translation>
+    </message>
+    <message>
+        <source>this machine&apos;s firmware has no work coordinate systems</source>
+        <translation>firmware tohoto stroje nemá pracovní souřadné systémy</translation>
+    </message>
+    <message>
+        <source>Work zero: {0}</source>
+        <translation>Pracovní nula: {0}</translation>
+    </message>
+</context>
+<context>
+    <name>WorkZeroBox</name>
+    <message>
+        <source>Work zero</source>
+        <translation>Pracovní nula</translation>
+    </message>
+    <message>
+        <source>The coordinate system in use and its offset from the machine zero</source>
+        <translation>Používaný souřadný systém a jeho posun od nuly stroje</translation>
+    </message>
+    <message>
+        <source>Zero {0}</source>
+        <translation>Nula {0}</translation>
+    </message>
+    <message>
+        <source>Here is {0} 0 in the system in use (G10 L20 P0 {0}0); nothing moves</source>
+        <translation>Zde je {0} 0 v používaném systému (G10 L20 P0 {0}0); nic se nepohne</translation>
+    </message>
+    <message>
+        <source>Zero all</source>
+        <translation>Vynulovat vše</translation>
+    </message>
+    <message>
+        <source>Here is the work zero of every axis (G10 L20 P0); nothing moves</source>
+        <translation>Zde je pracovní nula všech os (G10 L20 P0); nic se nepohne</translation>
+    </message>
+    <message>
+        <source>Go to work zero</source>
+        <translation>Na pracovní nulu</translation>
+    </message>
+    <message>
+        <source>Lift the pen, then travel to the work zero (G90 G0)</source>
+        <translation>Zvednout pero a přejet na pracovní nulu (G90 G0)</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Načíst</translation>
+    </message>
+    <message>
+        <source>Ask the board for its systems ($G, $#)</source>
+        <translation>Zeptat se desky na její systémy ($G, $#)</translation>
+    </message>
+    <message>
+        <source>Work in {0} from now on (its own zero); nothing moves</source>
+        <translation>Od teď pracovat v {0} (jeho vlastní nula); nic se nepohne</translation>
+    </message>
+    <message>
+        <source>In use</source>
+        <translation>Používá se</translation>
     </message>
 </context>
 </TS>

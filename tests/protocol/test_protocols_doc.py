@@ -25,6 +25,7 @@ from protocol.drill import codec as drill_codec
 from protocol.drill import timing as drill_timing
 from protocol.emulator.stage_firmware import PARAMETER_RANGES, XY_STAGE_PARAMETERS, StageConfig
 from protocol.gcode import codec as gcode_codec
+from protocol.gcode import overrides as gcode_overrides
 from protocol.gcode.streaming import LineStreamer, StreamMode
 from protocol.stage import codec as stage_codec
 from protocol.transport.ble import DEFAULT_NAME_PREFIX, MICROCHIP_UART, NORDIC_UART
@@ -239,9 +240,10 @@ def test_the_ble_identifiers() -> None:
 def test_the_realtime_bytes() -> None:
     rows = table("4.3")
     named = {re.findall(r"`([^`]+)`", row[0])[0] for row in rows}
-    wanted = {"?", "!", "~", "0x18", "0x85"}
+    wanted = {"?", "!", "~", "0x18", "0x85", "0x90", "0x95"}  # the overrides: 0x90…0x97
     assert named == wanted
     assert gcode_codec.REALTIME_BYTES == frozenset(b"?!~\x18\x85")
+    assert set(gcode_overrides.BYTE_NAMES) == {bytes((b,)) for b in range(0x90, 0x98)}
 
 
 def test_the_gcode_examples_of_replies_are_read_as_the_table_says() -> None:

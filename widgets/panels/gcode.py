@@ -27,6 +27,8 @@ from app.station import Station
 from widgets.history_entry import HistoryLineEdit
 from widgets.link_text import axis_status_text
 from widgets.number_field import NumberField, localized
+from widgets.panels.gcode_overrides import OverrideBox
+from widgets.panels.gcode_work_zero import WorkZeroBox
 from widgets.panels.grbl_alarm_band import GrblAlarmBand
 from widgets.retranslate import Maker, Texts
 
@@ -132,6 +134,7 @@ class GcodePanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addWidget(machine)
+        self._add_grbl_boxes(station, layout)
         #: A GRBL alarm or error explained, with what clears it (hidden without one).
         self.alarm_band = GrblAlarmBand(self)
         layout.addWidget(self.alarm_band)
@@ -139,6 +142,14 @@ class GcodePanel(QWidget):
         layout.addWidget(console, 1)
         station.sessionChanged.connect(self._watch_session)
         self._watch_session()
+
+    def _add_grbl_boxes(self, station: Station, layout: QVBoxLayout) -> None:
+        """GRBL's work zero and overrides, under the machine's DRO (each hidden where the
+        firmware has none)."""
+        self.work_zero = WorkZeroBox(station)
+        self.overrides = OverrideBox(station)
+        layout.addWidget(self.work_zero)
+        layout.addWidget(self.overrides)
 
     def _hand_zeroing(self, station: Station) -> QWidget:
         """The winder's manual zeroing (its white buttons, FIDELITY S0-24): release, zero here."""
@@ -298,6 +309,7 @@ class GcodePanel(QWidget):
             self.release_button,
         ):
             button.setEnabled(enabled)
+        self.work_zero.set_motion_enabled(enabled)
         self._sync_hand_zeroing()
 
     # --- the session's news ------------------------------------------------------------

@@ -32,6 +32,7 @@ from app.settings import StationSettings
 from app.station import Station
 from app.version import station_version
 from widgets.gamepad_setup import mapping_rows
+from widgets.panels.gcode_overrides import OverrideBox
 from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
@@ -56,6 +57,16 @@ SHORTCUTS: tuple[tuple[str, object], ...] = (
             "Manual / Absolute / Relative / Dynamics / Link / Axes / G-code / Settings page",
         ),
     ),
+    (
+        "F5 / F6",
+        QT_TRANSLATE_NOOP("MainWindow", "Feed override -10 % / +10 %, on GRBL machines"),
+    ),
+    (
+        "Shift+F5 / Shift+F6",
+        QT_TRANSLATE_NOOP("MainWindow", "Feed override -1 % / +1 %, on GRBL machines"),
+    ),
+    ("F7", QT_TRANSLATE_NOOP("MainWindow", "Feed override back to 100 %, on GRBL machines")),
+    ("F8", QT_TRANSLATE_NOOP("MainWindow", "Rapid override 100 → 50 → 25 %, on GRBL machines")),
     ("Ctrl+O", QT_TRANSLATE_NOOP("MainWindow", "Open a job (File → Open job…)")),
     (
         "Ctrl+Shift+R",
@@ -186,6 +197,18 @@ class WindowMenus(QObject):
         self.stop_action.triggered.connect(self._stop_all)
         menu.addAction(self.stop_action)
         menu.setToolTipsVisible(True)
+
+    def add_override_entries(self, box: OverrideBox | None) -> None:
+        """Machine → Overrides, with their keys (F5…F8), where the machine has overrides."""
+        if box is None or box.isHidden():  # hidden: the firmware has no overrides
+            return
+        menu = self.machine_menu.addMenu("")
+        self._texts.set(
+            menu.setTitle, lambda: QCoreApplication.translate("MainWindow", "&Overrides")
+        )
+        for action in box.actions_for(self._window, self._texts):
+            menu.addAction(action)
+            self._window.addAction(action)
 
     def _build_help(self, menu: QMenu) -> None:
         t = self._texts

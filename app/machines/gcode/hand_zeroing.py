@@ -50,6 +50,20 @@ class ZeroingPort(Protocol):
     def send_line(self, text: str, origin: str) -> bool: ...
 
 
+def not_at_rest(session: ZeroingPort) -> str | None:
+    """Why the machine is not at rest by the session's own account (None: it is): a stop
+    under way, a jog held, lines unanswered, a report showing motion or a hold."""
+    if session.stopping:
+        return "a stop is under way"
+    if any(session.jog_vector):
+        return "a jog is held"
+    status = session.status
+    held = status is not None and status.state == "Hold"
+    if not session.streamer.idle or reports_moving(status) or held:
+        return "the machine is still running what it was sent"
+    return None
+
+
 class HandZeroing:
     """The two white buttons of one G-code session."""
 
@@ -63,17 +77,7 @@ class HandZeroing:
         self.released = False
 
     def _busy(self) -> str | None:
-        """Why the machine is not at rest by the session's own account (None: it is)."""
-        session = self._session
-        if session.stopping:
-            return "a stop is under way"
-        if any(session.jog_vector):
-            return "a jog is held"
-        status = session.status
-        held = status is not None and status.state == "Hold"
-        if not session.streamer.idle or reports_moving(status) or held:
-            return "the machine is still running what it was sent"
-        return None
+        return not_at_rest(self._session)
 
     def release_motors(self) -> bool:
         """Zeroing by hand, first step: every driver off (``M18``), the axes free to turn.

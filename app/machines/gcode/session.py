@@ -50,11 +50,13 @@ from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
 from app.machines.gcode.jogger import GcodeJogger
 from app.machines.gcode.lines import SentLine as SentLine
 from app.machines.gcode.link_events import LinkEvents
+from app.machines.gcode.overrides import OverrideControl
 from app.machines.gcode.reply_reader import ReplyReader
 from app.machines.gcode.reply_reader import reply_bytes as reply_bytes
 from app.machines.gcode.status_follower import StatusFollower
 from app.machines.gcode.stop_sequence import RESET_AFTER_S as RESET_AFTER_S
 from app.machines.gcode.stop_sequence import StopSequence
+from app.machines.gcode.work_zero import WorkZero
 from app.machines.session import PENDING, MachineSession
 from app.profiles import GcodeSettings
 from protocol.clock import Clock
@@ -156,6 +158,9 @@ class GcodeSession(MachineSession):
         self.follower = StatusFollower(self)
         self.replies = ReplyReader(self)
         self.links = LinkEvents(self)
+        # GRBL's feed/rapid overrides and work systems (available as the registry says).
+        self.overrides = OverrideControl(self)
+        self.work = WorkZero(self)
         self.autotick = autotick
         self.discounts_stalls = autotick  # a real-time timer ticks: its lateness is ours
         self.timer = QTimer(self)
