@@ -46,6 +46,7 @@ from app.jobs.run.pacing import Every
 from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.job_feed import JobFeed
+from app.machines.gcode.meanings import alarm_meaning
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
@@ -59,6 +60,8 @@ SHOW_EVERY_S = 0.1
 #: The modal words a program is checked in (absolute, millimetres, XY plane), sent before
 #: its first line where the machine has them: a jog or a console line may have changed them.
 SETUP_WORDS = ("G90", "G21", "G17")
+#: GRBL's ``error:9``: G-code locked out while the board is in alarm.
+LOCKED_IN_ALARM = 9
 
 
 def session_holds_unasked(session: GcodeSession | None) -> bool:
@@ -124,6 +127,9 @@ class GcodeDriver(JobDriver):
         #: a ``!`` that reached it on the wire): the job is paused, and its resume is a
         #: cycle start — the board still has every line it was sent.
         self._held_by_machine = False
+        #: The job is paused for an alarm, said once: a restart the board adds to it (GRBL
+        #: follows ALARM:3 with its banner) is kept for the Resume, not said again.
+        self._alarm_said = False
 
     def _locked(self) -> AbstractContextManager[object]:
         """The feed's lock: the reader thread pulls and counts the stream under it."""
@@ -158,6 +164,7 @@ class GcodeDriver(JobDriver):
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
                 old.reset.disconnect(self._on_reset)
+                old.alarmed.disconnect(self._on_alarm)
                 old.replyText.disconnect(self._on_reply_text)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
@@ -169,6 +176,7 @@ class GcodeDriver(JobDriver):
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
             self.session.reset.connect(self._on_reset)
+            self.session.alarmed.connect(self._on_alarm)
             self.session.replyText.connect(self._on_reply_text)
             self._follow()
 
@@ -214,6 +222,7 @@ class GcodeDriver(JobDriver):
         self._chosen = None
         self._choice_open = False
         self._held_by_machine = False
+        self._alarm_said = False
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -391,6 +400,9 @@ class GcodeDriver(JobDriver):
 
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
         runner = self.runner
+        session = self.session
+        if code == LOCKED_IN_ALARM and session is not None and session.alarm.code is not None:
+            return  # refused by the alarm the job is paused for: not run, the resume sends it
         if sent.origin in ("setup", "resume") and runner.state in ACTIVE:
             # The job runs only on a machine set up as the program expects it (back at its
             # place, pen and modes restored): refused, the rest would run elsewhere.
@@ -432,6 +444,48 @@ class GcodeDriver(JobDriver):
             in_flight = stream.in_flight
         if not in_flight:
             self.proceed()
+
+    def _on_alarm(self, code: int) -> None:
+        """The board went into alarm mid-job (a limit switch, a failed probe, its reset in
+        motion): it stopped, dropped what it had planned, and takes no line until the
+        operator homes or unlocks it.
+
+        The job is paused, said once (the session says the alarm once too), and nothing
+        more is sent: every line would be refused (``error:9``).  Resume looks at the
+        machine first — still in alarm, it stays paused — and goes on from what is proven
+        run, asking where only the operator can tell.  A job already paused (the link, a
+        question, a restart) stays as it is, its Resume looks again.
+        """
+        runner = self.runner
+        if self.stream is None or runner.state not in ACTIVE:
+            return
+        self.hold_back()  # what is not on the wire yet waits for the resume
+        self._hold()
+        self._held_by_machine = False  # the alarm dropped the hold with the rest
+        with self._locked():
+            self.stream.pending.clear()  # lost with the planner, or refused: not proven run
+        self._preparing = 0
+        if self._confirming:
+            self._confirming = False
+            self._redo_setup = True
+        self._recheck = True
+        self._asked_since_recheck = False
+        self._write_checkpoint(force=True)
+        if runner.state not in CLOCK_RUNS:
+            return
+        self._alarm_said = True
+        program = runner.program
+        with self._locked():
+            where = self.stream.executed
+        runner.hold_for_operator(
+            QCoreApplication.translate(
+                "GcodeDriver",
+                "The machine went into alarm {0} ({1}) during the job and stopped: the job "
+                "is paused at {2}. Clear the alarm (home it with $H, or unlock it with $X if "
+                "its position is still right), then Resume: the job goes on from what is "
+                "proven run.",
+            ).format(code, alarm_meaning(code), _where(program, where) if program else "?")
+        )
 
     def _machine_held(self) -> None:
         """The board holds, and no stop of the station's asked it to: pause for the operator.
@@ -495,6 +549,12 @@ class GcodeDriver(JobDriver):
         self._recheck = True
         self._asked_since_recheck = False
         session = self.session
+        if session is not None and session.reset_by_device and self._alarm_said:
+            # Paused for the alarm already, said once (GRBL resets after ALARM:3): the board
+            # may have lost its position, so the Resume asks where to go on.
+            self._position_lost = True
+            self._write_checkpoint(force=True)
+            return
         if session is not None and session.reset_by_device:
             self._chosen = None  # a pick made before the restart was for a machine it forgot
             self._waiting = None  # a WAIT under way is offered again if the pick is before it
@@ -573,6 +633,7 @@ class GcodeDriver(JobDriver):
                 )
             )
             return
+        self._alarm_said = False
         if report.state == "Hold":
             # Leaving a hold takes a reset, which drops what the planner held (the position
             # stays: the hold is complete); the next report decides.

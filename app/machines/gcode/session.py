@@ -37,6 +37,7 @@ from app.link import Link
 from app.machine import MachineModel
 from app.machines.envelope import Envelope
 from app.machines.gcode import timing
+from app.machines.gcode.alarm_notice import AlarmNotice
 from app.machines.gcode.console_gate import SETTING_DISABLED as SETTING_DISABLED
 from app.machines.gcode.console_gate import ConsoleGate
 from app.machines.gcode.feeder import LineFeeder, merged
@@ -89,6 +90,8 @@ class GcodeSession(MachineSession):
     replyText = Signal(str)
     #: The device was reset (banner seen or reset sent): whatever was unanswered is gone.
     reset = Signal()
+    # The board went into alarm ``ALARM:<code>`` (said once while it stays in it).
+    alarmed = Signal(int)
 
     def __init__(
         self,
@@ -116,6 +119,7 @@ class GcodeSession(MachineSession):
         )
         self.status: StatusReport | None = None
         self.errors = 0
+        self.alarm = AlarmNotice()  # the alarm said, while the board stays in it
         #: Line serials, taken under the feeder's lock: both threads number lines.
         self.serials = count(1)
         #: A status report since the last line was answered showed the machine idle
