@@ -60,8 +60,10 @@ SHOW_EVERY_S = 0.1
 #: The modal words a program is checked in (absolute, millimetres, XY plane), sent before
 #: its first line where the machine has them: a jog or a console line may have changed them.
 SETUP_WORDS = ("G90", "G21", "G17")
-#: GRBL's ``error:9``: G-code locked out while the board is in alarm.
+# GRBL's ``error:9``: G-code locked out while the board is in alarm.
 LOCKED_IN_ALARM = 9
+# A set-up whose ``$G`` answer was lost is sent again this often before the job fails.
+SETUP_CONFIRM_TRIES = 3
 
 
 def session_holds_unasked(session: GcodeSession | None) -> bool:
@@ -127,9 +129,11 @@ class GcodeDriver(JobDriver):
         #: a ``!`` that reached it on the wire): the job is paused, and its resume is a
         #: cycle start — the board still has every line it was sent.
         self._held_by_machine = False
-        #: The job is paused for an alarm, said once: a restart the board adds to it (GRBL
+        # The job is paused for an alarm, said once: a restart the board adds to it (GRBL
         #: follows ALARM:3 with its banner) is kept for the Resume, not said again.
         self._alarm_said = False
+        # Set-ups whose confirmation was lost in this run (see _unconfirmed).
+        self._unconfirmed_count = 0
 
     def _locked(self) -> AbstractContextManager[object]:
         """The feed's lock: the reader thread pulls and counts the stream under it."""
@@ -223,6 +227,7 @@ class GcodeDriver(JobDriver):
         self._choice_open = False
         self._held_by_machine = False
         self._alarm_said = False
+        self._unconfirmed_count = 0
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -365,6 +370,9 @@ class GcodeDriver(JobDriver):
 
     def _on_line_ok(self, sent: SentLine) -> None:
         """The set-up or the way back answered, line by line: the job goes on after the last."""
+        if sent.origin == "setup" and self._confirming and sent.text == "$G":
+            self._unconfirmed()  # its [GC:…] comes before its ok: that answer was lost
+            return
         if sent.origin not in ("setup", "resume") or not self._preparing:
             return
         self._preparing -= 1
@@ -396,6 +404,32 @@ class GcodeDriver(JobDriver):
         if problem is not None:
             self.runner.fail(0, f"the machine is {problem}")
             return
+        self.proceed()
+
+    def _unconfirmed(self) -> None:
+        """The set-up's ``$G`` counts as answered, but its ``[GC:…]`` never came.
+
+        Lost on the way back, or the set-up itself was cut on the way there (relay
+        grbl-plotter seed 168: ``\n$G\n`` dropped, ``G90 G21 G17`` left unended in
+        GRBL's line buffer, where ``Bf:`` cannot show it, and the two answers then
+        taken for lost): waiting for the confirmation would wait for good.  A board
+        standing idle is reset — it keeps its position, and a fragment of the set-up
+        goes — and the set-up is sent again once the machine is looked at; a few
+        times, then the job fails (never a job on a machine not known set up).
+        """
+        session = self.session
+        self._confirming = False
+        self._redo_setup = True
+        self._unconfirmed_count += 1
+        if session is None or self._unconfirmed_count > SETUP_CONFIRM_TRIES:
+            self.runner.fail(
+                self._resume_at, "the machine never confirmed its set-up (no answer to $G)"
+            )
+            return
+        self._recheck = True
+        self._asked_since_recheck = False
+        if session.machine_state == "Idle":
+            session.soft_reset()
         self.proceed()
 
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:

@@ -670,9 +670,11 @@ class JobRunner(QObject):
         return True
 
     def _op_source(self, index: int | None) -> str:
-        if self._program is None or index is None:
+        if self._program is None or index is None or not len(self._program):
             return "?"
-        return str(self._program[index].source)
+        # Every operation done, a fault after the last (a report once the job has all been
+        # answered) is at the last one: naming it must not crash the station.
+        return str(self._program[min(index, len(self._program) - 1)].source)
 
     def _total(self) -> int:
         return len(self._program) if self._program is not None else 0

@@ -1,0 +1,68 @@
+"""A set-up whose confirmation never comes does not hold the job for good.
+
+Relay grbl-plotter seed 168: 7 bytes dropped at byte 11 took ``\\n$G\\n`` from
+the job's set-up.  ``G90 G21 G17`` stayed unended in GRBL's line buffer
+(``Bf:`` cannot show it there), the two answers were taken for lost ones, and
+the job waited for the ``[GC:…]`` of a ``$G`` the board never had: hung.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from pytestqt.qtbot import QtBot
+
+from app.jobs.run.runner import JobRunner, JobState
+from app.profiles import load_profile
+from protocol.transport.loopback import Direction
+from tests.app.test_gcode_resume_proof import (
+    EXPECTED,
+    pen_down_moves,
+    run_as_the_api_does,
+    zigzag,
+)
+from tests.helpers.harness import StationHarness
+
+REALTIME = frozenset(b"?!~\x18") | frozenset(range(0x80, 0x100))
+
+
+def test_a_set_up_cut_on_the_wire_is_sent_again_and_the_job_draws_each_stroke_once(
+    qtbot: QtBot, tmp_path: Path
+) -> None:
+    profile = load_profile("grbl-plotter")
+    harness = StationHarness(profile)
+    harness.connect()
+    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
+    runner = JobRunner(harness.station, tmp_path / "checkpoints")
+    lines_bytes = 0
+    dropped = bytearray()
+
+    def lose_the_confirmation(direction: Direction, data: bytes) -> bytes:
+        """The line bytes 11…14 on the way to the board: the set-up's end and its $G."""
+        nonlocal lines_bytes
+        if direction is not Direction.TO_DEVICE:
+            return data
+        kept = bytearray()
+        for byte in data:
+            if byte not in REALTIME:
+                lines_bytes += 1
+                if 12 <= lines_bytes <= 15:
+                    dropped.append(byte)
+                    continue
+            kept.append(byte)
+        return bytes(kept)
+
+    try:
+        messages: list[str] = []
+        runner.message.connect(messages.append)
+        harness.station.model.message.connect(messages.append)
+        harness.loopback.set_manipulator(lose_the_confirmation)
+        assert runner.load(zigzag(profile, tmp_path)) == []
+        runner.start()
+        run_as_the_api_does(harness, runner, timeout=60)
+        assert bytes(dropped) == b"\n$G\n"
+        assert runner.state is JobState.DONE, messages
+        assert pen_down_moves(harness) == EXPECTED, messages  # none twice, none skipped
+    finally:
+        runner.deleteLater()
+        harness.close()
