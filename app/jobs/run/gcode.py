@@ -134,6 +134,8 @@ class GcodeDriver(JobDriver):
         self._alarm_said = False
         # Set-ups whose confirmation was lost in this run (see _unconfirmed).
         self._unconfirmed_count = 0
+        # This run knows every line the device may have (see _sent_upto).
+        self._written_known = False
 
     def _locked(self) -> AbstractContextManager[object]:
         """The feed's lock: the reader thread pulls and counts the stream under it."""
@@ -204,6 +206,7 @@ class GcodeDriver(JobDriver):
         sent = runner.checkpoint_sent if verify else None
         if sent is not None and sent > index:
             self.stream.written = sent  # what the interrupted run may have got to the machine
+        self._written_known = not verify or sent is not None
         self._follow()
         session = self.session
         # The program's coordinates are the machine's less the work offset it had when the
@@ -598,7 +601,7 @@ class GcodeDriver(JobDriver):
                 stream = self.stream
                 with self._locked():
                     first = stream.answered if stream.settings.ok_when_done else stream.executed
-                    upto = _sent_upto(stream, first)
+                    upto = _sent_upto(stream, first, known=self._written_known)
                 self._choose(stream, first, upto)
             return
         if runner.state in CLOCK_RUNS:
@@ -688,7 +691,7 @@ class GcodeDriver(JobDriver):
         # Where the machine stands then proves how far it got, when only one place fits.
         with self._locked():
             first = stream.answered if stream.settings.ok_when_done else stream.executed
-            upto = _sent_upto(stream, first)
+            upto = _sent_upto(stream, first, known=self._written_known)
             if self._chosen is not None:
                 start = self._chosen
                 note = f"from {_where(program, start)}, as the operator chose"
@@ -712,7 +715,9 @@ class GcodeDriver(JobDriver):
         self._position_lost = False
         self._resume_at = start
         axes = [a.name for a in runner.station.profile.axes]
-        way_back = retrace(program, axes, start, _sent_upto(stream, start), here)
+        way_back = retrace(
+            program, axes, start, _sent_upto(stream, start, known=self._written_known), here
+        )
         with self._locked():
             stream.rewind(start)
         if start >= len(program):
@@ -800,9 +805,16 @@ def _offset(offsets: Sequence[float], axis: int) -> float:
     return offsets[axis] if axis < len(offsets) else 0.0
 
 
-def _sent_upto(stream: GcodeStream, start: int) -> int:
-    """Operations the device may have received: known in this run, else a window."""
-    known = max(stream.written, stream.answered)
-    if known > start:
-        return known
+def _sent_upto(stream: GcodeStream, start: int, *, known: bool = False) -> int:
+    """Operations the device may have received: known in this run, else a window.
+
+    ``known``: this run has written every line the device may have (not a run
+    resumed from a checkpoint that could not say): nothing past ``written`` went,
+    even when nothing went at all (relay grbl-plotter seed 168: a set-up cut on the
+    wire, reset before any line of the job went, was offered the first 30
+    operations to pick from, as if sent).
+    """
+    sent = max(stream.written, stream.answered)
+    if sent > start or known:
+        return max(sent, start)
     return min(len(stream.program), start + RETRACE_WINDOW)
