@@ -107,7 +107,11 @@ class GcodeSession(MachineSession):
         self.settings = settings
         self.decoder = make_decoder()
         mode = StreamMode.COUNTING if settings.streaming == "counting" else StreamMode.PING_PONG
-        self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
+        # Room for one line more than counted: a line or an ok that arrives twice overflows
+        # nothing (no checksum on the wire; see LineStreamer).
+        self.streamer: LineStreamer[SentLine] = LineStreamer(
+            mode, settings.rx_buffer, spare_line=True
+        )
         #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
         self.feeder: LineFeeder[SentLine] = LineFeeder(
             self.streamer,
