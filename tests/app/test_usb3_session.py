@@ -490,3 +490,42 @@ def test_a_link_gone_quiet_mid_move_is_a_lost_link_not_an_end_switch(unit: Stati
     assert b"G;" in sent_since(unit, mark)  # asked at once, not a second later
     unit.run_until(lambda: model.link_state is LinkState.LOST, timeout=10)
     assert hits == [] and not any("end switch" in m for m in said)
+
+
+# --- a question changed on the wire ------------------------------------------------------
+
+
+def test_a_where_are_you_question_changed_into_a_move_is_stopped_at_once(
+    unit: StationHarness,
+) -> None:
+    """Relay usb3 seed 134: the move of nothing that asks where Y stands arrived with a
+    flipped bit, ``Y000000020000000;``.  The unit ran it, its first report passed for the
+    answer and every later one for the joystick's: 3125 mm on a 200 mm travel, no stop."""
+    said = messages(unit)
+    unit.run(1.0)
+    mark = len(unit.written)
+
+    def flipped(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_DEVICE:
+            return data.replace(b"Y000000000000000;", b"Y000000020000000;")
+        return data
+
+    unit.loopback.set_manipulator(flipped)
+    unit.usb3_session.request_positions([Y])
+    unit.run(1.0)
+    assert b"S;" in sent_since(unit, mark)
+    assert any("right after it was asked where it stands" in m for m in said), said
+    unit.run(1.0)  # braked to a stop
+    assert count_to_mm(unit.usb3_emulator.positions[Y], Thread.M6) < 0.05  # not run away
+
+
+def test_an_axis_that_answers_where_it_stands_and_stays_is_not_stopped(
+    unit: StationHarness,
+) -> None:
+    said = messages(unit)
+    unit.run(1.0)
+    mark = len(unit.written)
+    unit.usb3_session.request_positions([X, Y])
+    unit.run(2.0)
+    assert b"S;" not in sent_since(unit, mark)
+    assert not said
