@@ -246,6 +246,15 @@ class Envelope:
             return None  # still where the last leg behind it ended (before a jump, say)
         for i, leg in enumerate(self._legs):
             if leg.distance(point) <= self.tolerance:
+                # At a leg's end it is at the next one's start: on it from here.  Kept on
+                # the first, a path that turns back along itself (usb3: 3200 → 1600 after
+                # 0 → 3200) would let it run on down the first leg unseen (relay usb3
+                # seed 103: a repeated move took Y to 0, and the job said done).
+                while (
+                    i + 1 < len(self._legs)
+                    and _distance(point, self._legs[i].end) <= self.tolerance
+                ):
+                    i += 1
                 if i:
                     self._anchor = self._legs[i - 1].end
                     del self._legs[:i]
