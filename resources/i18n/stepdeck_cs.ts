@@ -5245,10 +5245,6 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
         <translation>{0} {1} mm, {2} dílků</translation>
     </message>
     <message>
-        <source>Machine stopped: {0} moved to {1} mm right after it was asked where it stands ({2} mm), with no move sent to it (the question, a move of nothing, may have reached the unit changed on the wire)</source>
-        <translation>Stroj zastaven: {0} se přesunula na {1} mm hned poté, co byla dotázána, kde stojí ({2} mm), a žádný pohyb jí poslán nebyl (dotaz, pohyb o nic, mohl k jednotce dorazit po vedení změněný)</translation>
-    </message>
-    <message>
         <source>{0} stopped at its high end switch at {1} mm, {2} mm short of its target</source>
         <translation>{0} se zastavila na horním koncovém spínači na {1} mm, {2} mm před cílem</translation>
     </message>

@@ -5245,10 +5245,6 @@ Niť {3} mm = 1/{4} priemeru; volené na rastri s pixelmi {5} mm.</translation>
         <translation>{0} {1} mm, {2} dielikov</translation>
     </message>
     <message>
-        <source>Machine stopped: {0} moved to {1} mm right after it was asked where it stands ({2} mm), with no move sent to it (the question, a move of nothing, may have reached the unit changed on the wire)</source>
-        <translation>Stroj zastavený: {0} sa presunula na {1} mm hneď potom, čo bola opýtaná, kde stojí ({2} mm), a žiadny pohyb jej poslaný nebol (otázka, pohyb o nič, mohla k jednotke doraziť po vedení zmenená)</translation>
-    </message>
-    <message>
         <source>{0} stopped at its high end switch at {1} mm, {2} mm short of its target</source>
         <translation>{0} sa zastavila na hornom koncovom spínači na {1} mm, {2} mm pred cieľom</translation>
     </message>

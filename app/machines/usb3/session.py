@@ -97,8 +97,6 @@ STILL_AFTER_S = 0.25
 TICK_MS = 100
 #: Seconds without any reply before the unit is asked ``G;``, then late (amber), then lost.
 POLL_AFTER_S = 1.0
-# An axis that answered where it stands, nothing sent to it since, stands this long at least.
-ASKED_STANDS_S = 1.0
 STALE_AFTER_S = 1.5
 LOST_AFTER_S = 3.0
 DEFAULT_STEP = StepSize.EIGHTH
@@ -139,10 +137,6 @@ class Usb3Session(MachineSession):
         #: Asked where it stands (a move of nothing) and not answered yet: its next report
         #: is where it stands, not a motion.
         self._asking = [False] * self.axis_count
-        # Per axis: the count and station-clock time of its answer to "where are you?", until
-        # a move is sent to it; it must stand there (see _moved_after_asked).
-        self._answered: list[tuple[int, float] | None] = [None] * 3
-        self._moved_by_us = False  # a move of the station's went out on some link
         #: Where the jog leads sent so far take each axis (None: from its position).
         self._jog_end: list[float | None] = [None] * self.axis_count
         #: Per axis: the count the moves sent are heading for, their direction and when the
@@ -495,8 +489,6 @@ class Usb3Session(MachineSession):
     def _expect(self, axis: int, fresh: bool, base: int, target: int) -> None:
         """A move to ``target`` went out: the axis's reports must follow it there."""
         envelope = self._envelopes[axis]
-        self._answered[axis] = None  # moved by the station from here on
-        self._moved_by_us = True
         name = self.model.axes[axis].name if axis < self.axis_count else AxisId(axis).name
         mm = count_to_mm(target - base, self.threads[axis])
         label = QCoreApplication.translate("Usb3Session", "{0} {1} mm, {2} counts").format(
@@ -520,43 +512,6 @@ class Usb3Session(MachineSession):
                 return
             envelope.anchor((base,))
         envelope.add_line((target,), label)
-
-    def _moved_after_asked(self, axis: int, count: int) -> bool:
-        """Whether an axis that just answered where it stands moves on, nothing sent to it.
-
-        The question is a move of nothing; a byte changed on the wire makes it a move of
-        up to 10^15 counts (relay usb3 seed 134: Y000000000000000; arrived as
-        Y000000020000000;), which the unit runs while its first report passes for the
-        answer, and at rest its reports pass for the joystick's.  So an axis that moves
-        within a second of its answer, no move of the station's sent since, is stopped.
-        """
-        answered = self._answered[axis]
-        if answered is None:
-            return False
-        at, when = answered
-        if count == at or self.clock.now() - when > ASKED_STANDS_S or self._jog[axis]:
-            self._answered[axis] = None
-            return False
-        self._answered[axis] = None
-        name = self.model.axes[axis].name
-        thread = self.threads[axis]
-        self.stop_for_fault(
-            MotionFault(
-                QCoreApplication.translate(
-                    "Usb3Session",
-                    "Machine stopped: {0} moved to {1} mm right after it was asked where it "
-                    "stands ({2} mm), with no move sent to it (the question, a move of "
-                    "nothing, may have reached the unit changed on the wire)",
-                ).format(
-                    name,
-                    local_number(count_to_mm(count, thread), ".3f"),
-                    local_number(count_to_mm(at, thread), ".3f"),
-                )
-            )
-        )
-        for each in self._envelopes:
-            each.release()  # stopped: the next reports say where it stands
-        return True
 
     def _judge_report(self, axis: int, count: int) -> bool:
         """Whether a report is where the moves sent allow; if not the unit is stopped."""
@@ -674,7 +629,6 @@ class Usb3Session(MachineSession):
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
         self._asking = [False] * self.axis_count
-        self._answered = [None] * 3
         self._heading = [None] * 3
         self._move_from = [None] * 3
         self._refused_at = None
@@ -759,9 +713,7 @@ class Usb3Session(MachineSession):
     def _apply_position(self, axis: AxisId, count: int) -> None:
         if axis >= self.axis_count:
             return
-        first = self._reported_at[axis] is None  # its first word on this link
-        if not self._moved_after_asked(axis, count):
-            self._judge_report(axis, count)
+        self._judge_report(axis, count)
         now = self.clock.now()
         self._reported_at[axis] = now
         heading = self._heading[axis]
@@ -777,10 +729,6 @@ class Usb3Session(MachineSession):
             # new zero, when C; went before the question).
             self._asking[axis] = False
             self._zeroing[axis] = False
-            if self._heading[axis] is None and (not first or not self._moved_by_us):
-                # Nothing of the station's still to run out: on a link opened again the unit
-                # may still run out what the last one sent (its first word proves nothing).
-                self._answered[axis] = (count, now)
             self.model.update_axis(
                 axis, position=position, velocity=0.0, status_text="idle", moving=False
             )
