@@ -102,12 +102,16 @@ class Envelope:
         tolerance: float = DEFAULT_TOLERANCE_MM,
         *,
         hold_at_rest: bool = True,
+        travel_at_rest: bool = False,
     ) -> None:
         if not tolerance > 0 or not math.isfinite(tolerance):
             raise ValueError(f"the tolerance must be a positive length, not {tolerance}")
         self.limits = tuple(limits)
         self.tolerance = tolerance
         self.hold_at_rest = hold_at_rest
+        # Not holding at rest, a report outside the travel still deviates (usb3: a move
+        # nobody sent, its count changed on the wire, ran off at rest: relay seed 134).
+        self.travel_at_rest = travel_at_rest
         self._anchor: Point | None = None
         self._legs: list[Leg] = []
         self._serial = 0  # serial of _legs[0]: legs are numbered as they are added
@@ -234,7 +238,7 @@ class Envelope:
         if not self._legs:
             if _distance(point, anchor) <= self.tolerance:
                 return None
-            if not self.hold_at_rest:
+            if not self.hold_at_rest and not (self.travel_at_rest and self._outside(point)):
                 self._anchor = point  # moved by its own controls: it rests there now
                 return None
             return self._deviation(point)
@@ -242,6 +246,15 @@ class Envelope:
             return None  # still where the last leg behind it ended (before a jump, say)
         for i, leg in enumerate(self._legs):
             if leg.distance(point) <= self.tolerance:
+                # At a leg's end it is at the next one's start: on it from here.  Kept on
+                # the first, a path that turns back along itself (usb3: 3200 → 1600 after
+                # 0 → 3200) would let it run on down the first leg unseen (relay usb3
+                # seed 103: a repeated move took Y to 0, and the job said done).
+                while (
+                    i + 1 < len(self._legs)
+                    and _distance(point, self._legs[i].end) <= self.tolerance
+                ):
+                    i += 1
                 if i:
                     self._anchor = self._legs[i - 1].end
                     del self._legs[:i]
@@ -249,14 +262,17 @@ class Envelope:
                 return None
         return self._deviation(point)
 
-    def _deviation(self, point: Point) -> Deviation:
-        anchor = self._anchor
-        assert anchor is not None
+    def _outside(self, point: Point) -> bool:
         tolerance = self.tolerance
-        outside = any(
+        return any(
             p < low - tolerance or p > high + tolerance
             for p, (low, high) in zip(point, self.limits, strict=True)
         )
+
+    def _deviation(self, point: Point) -> Deviation:
+        anchor = self._anchor
+        assert anchor is not None
+        outside = self._outside(point)
         if not self._legs:
             fault = Fault.OUTSIDE_TRAVEL if outside else Fault.MOVED_AT_REST
             return Deviation(fault, point, anchor, _distance(point, anchor), "", None)

@@ -101,6 +101,7 @@ ALARM_MESSAGES: dict[int, str] = {
     7: "homing fail: safety door opened while homing",
     8: "homing fail: pull-off did not clear the limit switch",
     9: "homing fail: limit switch not found within the search distance",
+    10: "homing fail: the second switch of a dual axis did not trigger after the first",
 }
 
 #: Welcome lines begin with one of these (GRBL, grblHAL, FluidNC, and the

@@ -33,13 +33,26 @@ class LineStreamer(Generic[T]):
 
     In COUNTING mode at most ``rx_buffer - 1`` bytes are ever unacknowledged:
     GRBL's ring buffer keeps one slot empty, so a full 128 would overflow it.
+
+    ``spare_line``: keep room for one more copy of the longest line in flight
+    besides.  No wire here has a checksum, and a line that arrives twice (a
+    repeating adapter) or an answer that does (``ok`` twice: the count one line
+    short) puts that many bytes more in the board than counted; a buffer filled
+    to the byte then overflows, and a line glued from two halves may run (relay
+    corexy-plotter seeds 19, 61, 85: a stroke not in the job).  With the room
+    kept, one such fault overflows nothing: the board holds more than counted,
+    which its ``Bf:`` shows, or it answers one line more than it was sent.  A
+    line goes anyway when nothing is in flight (it must go some time).
     """
 
-    def __init__(self, mode: StreamMode, rx_buffer: int = RX_BUFFER) -> None:
+    def __init__(
+        self, mode: StreamMode, rx_buffer: int = RX_BUFFER, *, spare_line: bool = False
+    ) -> None:
         if rx_buffer < 2:
             raise ValueError(f"a receive buffer holds at least one line byte, got {rx_buffer}")
         self.mode = mode
         self.rx_buffer = rx_buffer
+        self.spare_line = spare_line
         self._queued: deque[tuple[bytes, T]] = deque()
         self._in_flight: deque[tuple[bytes, T]] = deque()
         self._in_flight_bytes = 0
@@ -73,11 +86,18 @@ class LineStreamer(Generic[T]):
                     break
             elif self._in_flight_bytes + len(line) > self.capacity:
                 break
+            elif self.spare_line and self._in_flight and self._over_spare(len(line)):
+                break
             entry = self._queued.popleft()
             self._in_flight.append(entry)
             self._in_flight_bytes += len(line)
             out.append(entry)
         return out
+
+    def _over_spare(self, length: int) -> bool:
+        """Whether a line of ``length`` bytes leaves no room for a copy of the longest."""
+        longest = max(length, max(len(line) for line, _ in self._in_flight))
+        return self._in_flight_bytes + length + longest > self.capacity
 
     def acknowledge(self) -> tuple[bytes, T] | None:
         """The oldest line in flight, now acknowledged; None for an ``ok`` nobody waited for."""

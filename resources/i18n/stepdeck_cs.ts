@@ -1364,7 +1364,6 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>
-        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at).</extracomment>
         <translation>Stroj stojí ve zdržení (feed hold: jeho tlačítko, zdejší tlačítko Zdržet, nebo znak „!“, který k němu dorazil po vedení): úloha je pozastavena na {0}. Pokračovat ji nechá jet dál (cycle start).</translation>
     </message>
     <message>
@@ -1382,6 +1381,11 @@
     <message>
         <source>The machine is in alarm: the job stays paused. Check the machine, clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume.</source>
         <translation>Stroj je v alarmu: úloha zůstává pozastavená. Zkontrolujte stroj, zrušte alarm (najetím do výchozí polohy příkazem $H, nebo odemčením příkazem $X, pokud jeho poloha stále odpovídá) a pak dejte Pokračovat.</translation>
+    </message>
+    <message>
+        <source>The machine went into alarm {0} ({1}) during the job and stopped: the job is paused at {2}. Clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume: the job goes on from what is proven run.</source>
+        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at). follows ALARM:3 with its banner) is kept for the Resume, not said again.</extracomment>
+        <translation>Stroj během úlohy přešel do alarmu {0} ({1}) a zastavil se: úloha je pozastavena na {2}. Zrušte alarm (najeďte do výchozí polohy pomocí $H, nebo ho odemkněte pomocí $X, je-li jeho poloha stále správná), pak Pokračovat: úloha pokračuje od toho, co je prokazatelně provedeno.</translation>
     </message>
 </context>
 <context>
@@ -2151,6 +2155,10 @@ Přesto odeslat do stroje?</translation>
     <message>
         <source>unknown alarm {0}</source>
         <translation>neznámý alarm {0}</translation>
+    </message>
+    <message>
+        <source>homing fail: the second switch of a dual axis did not trigger after the first</source>
+        <translation>chyba referenční jízdy: druhý spínač zdvojené osy nesepnul po prvním</translation>
     </message>
 </context>
 <context>

@@ -121,6 +121,35 @@ def test_the_corrupted_usb3_count_is_outside_the_travel_and_names_the_move() -> 
     assert deviation is not None and deviation.fault is Fault.OUTSIDE_TRAVEL
 
 
+def test_a_path_that_turns_back_on_itself_is_followed_past_the_turn() -> None:
+    """Relay usb3 seed 103: Y 0 → 3200, then back to 1600, that move arriving twice (the unit
+    adds it): Y ran on to 0 along the first leg's stretch, every report passing, and the
+    job said done."""
+    envelope = Envelope([(-1e6, 1e6)], 64.0, hold_at_rest=False)
+    envelope.anchor((0.0,))
+    envelope.add_line((3200.0,), "Y +0.500 mm", "first")
+    envelope.add_line((1600.0,), "Y -0.250 mm", "back")
+    for count in (1000.0, 3200.0, 2500.0, 1600.0):
+        assert envelope.check((count,)) is None, count
+    deviation = envelope.check((1484.0,))
+    assert deviation is not None and deviation.fault is Fault.PAST_TARGET
+    assert deviation.label == "Y -0.250 mm"
+
+
+def test_at_rest_a_usb3_axis_follows_its_joystick_but_not_out_of_the_travel() -> None:
+    """Relay usb3 seed 134: a move nobody sent (its count changed on the wire) ran at rest,
+    each report taken for the joystick's, to 3125 mm on a 200 mm travel."""
+    envelope = Envelope([(0.0, 200.0)], TOL, hold_at_rest=False, travel_at_rest=True)
+    envelope.anchor((10.0,))
+    assert envelope.check((40.0,)) is None  # the joystick: it rests there now
+    assert envelope.check((199.0,)) is None
+    deviation = envelope.check((203.0,))
+    assert deviation is not None and deviation.fault is Fault.OUTSIDE_TRAVEL
+    loose = Envelope([(0.0, 200.0)], TOL, hold_at_rest=False)
+    loose.anchor((10.0,))
+    assert loose.check((203.0,)) is None  # the G-code boards' way: not judged at rest
+
+
 def test_a_mangled_line_that_leaves_the_path_trips_and_names_the_line_sent() -> None:
     # "G1 X18.000 Y18.000 F3000" arrived as "G1 X18.F3000": the pen runs along Y = 5.
     envelope = Envelope([(0.0, 300.0), (0.0, 200.0)], TOL)

@@ -8,11 +8,14 @@ before the station's hold arrived.  The board's ``Bf:`` shows more bytes held
 than the station counts unanswered well before that: the station stops then.
 Judged from the emulator's log: the strokes drawn are a prefix of the job's.
 
-Not caught: a line duplicated on its way to the CoreXY plotter while its
-buffer is nearly full.  The board overflows at once and parses the next line
-as soon as the one under way ends, so no report shows more bytes held than
-counted (the buffer cannot hold more than it holds); the glued line is
-refused and the board runs on into the next before the station's hold.
+A line duplicated on its way to the CoreXY plotter while its buffer was
+nearly full (relay seeds 19, 61, 85), or an ``OK`` duplicated on its way back
+(it answers once a move is done, so the line under way is out of its buffer
+but still counted unanswered: one answer too many stays within the count),
+overflowed it at once, before any report could show it.  The station now
+keeps room for one more copy of the longest line in flight
+(``LineStreamer(spare_line=True)``): nothing overflows, and the job either
+stops on the excess or runs every stroke once.
 """
 
 from __future__ import annotations
@@ -44,21 +47,12 @@ def _strokes_drawn_are_the_jobs(harness: StationHarness) -> None:
 @pytest.mark.parametrize(
     ("name", "way"),
     [
-        pytest.param(
-            "corexy-plotter",
-            Direction.TO_HOST,
-            marks=pytest.mark.xfail(
-                reason="issue 30: the CoreXY plotter answers OK only when a move is done, so "
-                "the line under way is out of its buffer but still counted unanswered; one "
-                "answer too many then leaves Bf: within the count, and the glued line is "
-                "refused by the board (the job fails cleanly: no stroke drawn twice)",
-                strict=False,
-            ),
-        ),
+        ("corexy-plotter", Direction.TO_HOST),
+        ("corexy-plotter", Direction.TO_DEVICE),
         ("grbl-plotter", Direction.TO_DEVICE),
         ("grbl-plotter", Direction.TO_HOST),
     ],
-    ids=["corexy-answer", "grbl-line", "grbl-answer"],
+    ids=["corexy-answer", "corexy-line", "grbl-line", "grbl-answer"],
 )
 def test_a_line_or_answer_arriving_twice_stops_the_job_before_a_wrong_stroke(
     qtbot: QtBot, tmp_path: Path, name: str, way: Direction

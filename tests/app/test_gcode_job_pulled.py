@@ -408,8 +408,9 @@ def test_reads_taken_together_keep_every_line_told_as_sent_before_its_answer(
     assert told == [f"sent {long}", "read ok"] * 3
 
 
-#: A console line of 63 bytes: two of them fill the board's buffer (126 of 127 bytes).
-BUSY = "G0 X1." + "0" * 26 + " Y1." + "0" * 26
+#: A console line of 42 bytes: two of them fill the board's buffer as far as the station
+#: fills it (84 of 127 bytes, and room kept for a copy of one: LineStreamer's spare line).
+BUSY = "G0 X1." + "0" * 16 + " Y1." + "0" * 15
 #: Where the machine stands when the cable is back: off the job's path.
 STANDING = b"<Idle|MPos:3.000,1.000,0.000|Bf:15,127|FS:0,0>\r\n"
 

@@ -14,6 +14,8 @@ import pytest
 
 from app import i18n
 from app.machines.gcode.grbl_codes import ALARMS, ERRORS, Explainer, Remedy, explain
+from app.machines.gcode.meanings import alarm_meaning
+from protocol.gcode.codec import ALARM_MESSAGES
 
 GRBL_DOC = Path(__file__).resolve().parents[1] / "third_party" / "grbl" / "doc" / "csv"
 
@@ -55,6 +57,18 @@ def test_every_code_has_its_text_in_three_languages(
         assert spoken.meaning and spoken.meaning != source.meaning, (language, key)
         assert spoken.action and spoken.action != source.action, (language, key)
     assert explain("error", 99).meaning != "A code GRBL 1.1 does not document."
+
+
+@pytest.mark.parametrize("language", ["cs", "sk"])
+def test_the_codecs_alarm_words_cover_grbls_table_in_three_languages(
+    language: str, english_afterwards: None, tmp_path: Path
+) -> None:
+    """The status bar's "Machine alarm n" speaks the codec's words: GRBL 1.1h has ten."""
+    assert sorted(ALARM_MESSAGES) == sorted(grbl_codes("alarm"))
+    english = {code: alarm_meaning(code) for code in ALARM_MESSAGES}
+    assert i18n.install(language, tmp_path / "qm") == language
+    for code, source in english.items():
+        assert alarm_meaning(code) != source, (language, code)
 
 
 def test_a_lost_position_is_offered_homing_only() -> None:

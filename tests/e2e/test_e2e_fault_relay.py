@@ -64,94 +64,93 @@ LOCK = threading.Lock()
 
 # ---------------------------------------------------------------------------------------------
 # KNOWN_FAILURES: the station's known faults under the relay, by dialect and fault kind, as
-# the slow mode found them (issue 30, and what the relay found beyond it).  A run of one of
-# these is expected to fail (xfail, not strict: most seeds of a kind listed here still end
-# well).  Remove an entry once its fix is merged and the slow mode
-# (STEPDECK_RELAY_RUNS=200) shows no wrong and no hung run for it.
+# the slow mode found them.  A run of one of these is expected to fail (xfail, not strict:
+# most seeds of a kind listed here still end well).  Each entry names seeds replayed
+# (STEPDECK_RELAY_SEED=dialect:seed) and what they showed.  Remove an entry once the slow mode
+# (STEPDECK_RELAY_RUNS=200) shows no wrong and no hung run for it; the slow mode of 28 Nov
+# 2026 (docs/link-faults.md) left these.
 # ---------------------------------------------------------------------------------------------
+_BETWEEN = (
+    "undetectable on this wire (no checksum): bytes lost or flipped on the way turn a line"
+    " into another valid one (G1 X32.000 Y7.000 F3000 arriving as G1 X32F3000); the station"
+    " judges the status reports only, 200 ms apart: a wrong move that ends on the path sent,"
+    " or strays less than the tolerance, is not seen, and one that leaves the path is stopped"
+    " at the next report, part of its stroke drawn (the relay's emulator runs 5x: a report"
+    " every 1 s of its time). Replayed: grbl-plotter 44, 48, 66, 86, 104, 114, 150;"
+    " corexy-plotter 2, 6, 174"
+)
+_PEN = (
+    "undetectable: a pen line lost or changed on the way (M3 S1000 or M5: a row drawn pen-up,"
+    " a travel drawn pen-down) moves nothing off the path, and the reports the station judges"
+    " say where the pen is, not whether it is down. Replayed: grbl-plotter 138 (M5 lost: the"
+    " travel to the next row drawn), 144 (M3 lost: a row not drawn, the job done),"
+    " corexy-plotter 68"
+)
+_USB3 = (
+    "a usb3 move whose count was changed (a flipped bit, lost bytes) or that arrived twice"
+    " (the unit adds a repeated move to its target) runs past the job's target: the station"
+    " stops it (S;) at the first report past it, and the unit brakes to a stop 0.02-0.1 mm"
+    " past (more under the relay's 40x emulated time, where a report is 2.5 ms of the"
+    " station's). Replayed: seeds 2, 13, 55, 122, 180; and 103, 187, which ran on unseen"
+    " along a path that turns back and ended 'done' until the turn-back fix (dc74f4d)"
+)
+_USB3_RUNAWAY = (
+    "found, not fixed: the usb3 question 'where does Y stand' (a move of nothing) arriving"
+    " as a long move at connect (seed 134: Y000000020000000;) runs while the station takes"
+    " the unit for silent ('link lost'), so no report is judged and the travel is left"
+)
+_USB3_SHORT = (
+    "a usb3 question (a move of nothing) changed into a move of a few counts ends before its"
+    " answer, which is then where the axis stands: nothing shows it moved (seed 164: 1 count"
+    " at connect, the job then exact)"
+)
+_DRILL = (
+    "undetectable on the drill's wire (no checksum, no echo, no position): a flipped digit"
+    " is acknowledged as the command sent, and the hole is drilled in the wrong place with"
+    " the job done (seeds 50: X594 as X514, 122: X1386 as X0386, 146)"
+)
+_DRILL_TWICE = (
+    "a drill cycle repeated on the way is run twice (the drill queues it and has no stop):"
+    " the hole is drilled twice; the station hears the second RV and fails the job, never"
+    " 'done' (seeds 55, 85; app/machines/drill/unasked.py), but the judge counts the hole"
+)
+_WINDER = (
+    "18-19 bytes lost on the way to the winder in its winding phase (seeds 42, 174,"
+    " replayed: the same every time): a wrap across nails 0-2 where nail 2 was due (42), a"
+    " wrap at nail 1 where nail 6 was (174), and the job done; the winding's A moves all"
+    " turn one way, so a move lost between two others may leave the reports on the path,"
+    " but the cause was not pinned down in the session that found it (h-relay4)"
+)
+_NOT_MEASURED = (
+    "real GRBL (grbl-sim) was not in the slow mode of 28 Nov 2026; its entries stand from"
+    " the last run that had it (issue 30): "
+)
 _REDRAW = "issue 30: G-code resume after a link fault redraws strokes (resume from proof)"
 _SILENT = "issue 30: a silent line pauses the job and nothing probes the device (silence probing)"
 _NO_SUM = "issue 30: a mangled G-code line is valid and not caught (motion supervision)"
-_USB3 = (
-    "issue 30: a corrupted, cut or repeated usb3 move reaches the unit; the station stops it"
-    " (S;) one report after it leaves its path, by when the axis may have overrun the job's"
-    " target (the judge reads where it stopped from the emulator's log: relay seeds 2, 13)"
-)
-_USB3_DONE = (
-    "found by the relay: a repeated usb3 move next to a false end-switch pause, or a count"
-    " changed so that the move ends short (the job then moves it on to the target), can end"
-    " 'done' with a move not in the job (slow-mode seeds 55, 79, 103, 115, 187; 152, 164)"
-)
 _RESET = "issue 30: a board that restarts loses its position; the resume draws shifted"
 _LOST = "found by the relay: a line lost or mangled on the way to GRBL: paused for good"
 _DUP = (
     "found by the relay: a line the board refuses (a duplicate overflowing its buffer) is"
     " skipped: the lines streamed behind it draw a stroke not in the job before the stop"
 )
-_DUP_HELD = (
-    "a line duplicated while the board's buffer is nearly full overflows it at once, and no"
-    " Bf: report shows the excess before the glued line is refused; the board has begun the"
-    " line behind it by the hold: a few tenths of a mm of a stroke not in the job (corexy"
-    " seed 19; seeds 7, 31, 37 are caught by the buffer count)"
-)
-_FRAGMENT = (
-    "found by the relay: a line cut in half whose start GRBL moved into its line buffer is"
-    " invisible in Bf:, and the next line sent is glued to it (grbl-plotter seed 22)"
-)
-_BETWEEN = (
-    "undetectable on this wire: a mangled line that is still valid G-code (no checksum) is"
-    " judged only by the status reports, 200 ms apart; a wrong move that ends on the path"
-    " sent, or strays less than the tolerance, between two reports is not seen, and one that"
-    " leaves the path is stopped at the next report, part of its stroke drawn"
-)
-_DRILL = (
-    "undetectable on the drill's wire (no checksum, no echo, no position): a flipped digit"
-    " is acknowledged as the command sent, and the hole is drilled in the wrong place with"
-    " the job done (seed 50)"
-)
-_DRILL_TWICE = (
-    "a drill cycle repeated on the way is run twice (the drill queues it and has no stop):"
-    " the hole is drilled twice; the station hears the second RV and fails the job, never"
-    " 'done' (seed 55, app/machines/drill/unasked.py), but the judge counts the hole"
-)
-_WINDER_REOPEN = (
-    "fixed, not yet measured in the slow mode: a reopened port resent 13 operations as"
-    " 'drawing nothing' and drilled a nail twice (seeds 41, 59); plunges now count as work"
-    " (StringArtProgram.works_between), so the resume asks the operator: a clean stop here"
-)
-_WINDER_DWELL = (
-    "fixed, not yet measured in the slow mode: a fragment stuck behind an unanswered G4"
-    " dwell was never judged, the job hung (seed 34)"
-)
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
-    ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_LOST}",
-    ("grbl-plotter", FaultKind.DUPLICATE): _DUP_HELD,
-    ("grbl-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_LOST}",
-    ("grbl-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
-    ("grbl-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}; {_FRAGMENT}",
+    ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_PEN}",
+    ("grbl-plotter", FaultKind.CORRUPT): _BETWEEN,
     ("corexy-plotter", FaultKind.DROP): _BETWEEN,
-    ("corexy-plotter", FaultKind.DUPLICATE): _DUP_HELD,
-    ("corexy-plotter", FaultKind.CORRUPT): _BETWEEN,
-    ("corexy-plotter", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
-    ("corexy-plotter", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
-    ("string-art", FaultKind.DROP): _NO_SUM,
-    ("string-art", FaultKind.DUPLICATE): _DUP,
-    ("string-art", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
-    ("string-art", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}; {_WINDER_DWELL}",
-    ("string-art", FaultKind.REOPEN): f"{_REDRAW}; {_WINDER_REOPEN}",
-    ("grbl-sim", FaultKind.DROP): f"{_NO_SUM}; {_LOST}",
-    ("grbl-sim", FaultKind.DUPLICATE): f"{_DUP}; {_REDRAW}",
-    ("grbl-sim", FaultKind.CORRUPT): f"{_NO_SUM}; {_LOST}",
-    ("grbl-sim", FaultKind.DELAY): f"{_REDRAW}; {_SILENT}",
-    ("grbl-sim", FaultKind.SILENCE): f"{_REDRAW}; {_SILENT}",
-    ("grbl-sim", FaultKind.REOPEN): f"{_REDRAW}; {_RESET}",
-    ("pcb-drill", FaultKind.DROP): f"{_SILENT} (lost reply bytes end the same way)",
+    ("corexy-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_PEN}",
+    ("string-art", FaultKind.DROP): _WINDER,
+    ("grbl-sim", FaultKind.DROP): f"{_NOT_MEASURED}{_NO_SUM}; {_LOST}",
+    ("grbl-sim", FaultKind.DUPLICATE): f"{_NOT_MEASURED}{_DUP}; {_REDRAW}",
+    ("grbl-sim", FaultKind.CORRUPT): f"{_NOT_MEASURED}{_NO_SUM}; {_LOST}",
+    ("grbl-sim", FaultKind.DELAY): f"{_NOT_MEASURED}{_REDRAW}; {_SILENT}",
+    ("grbl-sim", FaultKind.SILENCE): f"{_NOT_MEASURED}{_REDRAW}; {_SILENT}",
+    ("grbl-sim", FaultKind.REOPEN): f"{_NOT_MEASURED}{_REDRAW}; {_RESET}",
     ("pcb-drill", FaultKind.DUPLICATE): _DRILL_TWICE,
     ("pcb-drill", FaultKind.CORRUPT): _DRILL,
-    ("pcb-drill", FaultKind.SILENCE): _SILENT,
     ("usb3", FaultKind.DROP): _USB3,
-    ("usb3", FaultKind.DUPLICATE): f"{_USB3}; {_USB3_DONE}",
-    ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_USB3_DONE}",
+    ("usb3", FaultKind.DUPLICATE): f"{_USB3}; {_USB3_SHORT}",
+    ("usb3", FaultKind.CORRUPT): f"{_USB3}; {_USB3_SHORT}; {_USB3_RUNAWAY}",
 }
 
 

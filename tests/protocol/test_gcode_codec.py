@@ -134,7 +134,7 @@ def test_every_reply_form_decodes(wire: bytes, reply: GcodeReply) -> None:
 
 def test_error_and_alarm_codes_carry_grbls_meaning() -> None:
     assert set(range(1, 18)) | set(range(20, 39)) <= set(ERROR_MESSAGES)
-    assert set(range(1, 10)) <= set(ALARM_MESSAGES)
+    assert set(range(1, 11)) <= set(ALARM_MESSAGES)
     assert "unsupported" in ErrorReply(20).meaning.lower()
     assert "bad number" in ErrorReply(2).meaning.lower()
     assert "line overflow" in ErrorReply(11).meaning.lower()

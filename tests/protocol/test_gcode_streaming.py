@@ -148,3 +148,51 @@ def test_ping_pong_never_has_two_lines_in_flight(lengths: list[int]) -> None:
         assert entry is not None
         order.append(entry[1])
     assert order == list(range(len(lengths)))
+
+
+def test_a_spare_line_keeps_room_for_a_copy_of_the_longest_in_flight() -> None:
+    """A line or an ok arriving twice (no checksum on the wire) overflows nothing."""
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, spare_line=True)
+    for i in range(5):
+        streamer.queue(line(30), i)
+    # 30 + 30 + 30 = 90, and 30 spare: 120; a fourth would leave no room for a copy.
+    assert [tag for _, tag in streamer.sendable()] == [0, 1, 2]
+    streamer.acknowledge()
+    assert [tag for _, tag in streamer.sendable()] == [3]
+    assert streamer.in_flight_bytes == 90
+
+
+def test_a_spare_line_still_lets_a_long_line_go_alone() -> None:
+    streamer: LineStreamer[str] = LineStreamer(StreamMode.COUNTING, spare_line=True)
+    streamer.queue(line(100), "long")
+    streamer.queue(line(10), "short")
+    assert [tag for _, tag in streamer.sendable()] == ["long"]  # no room for a copy: alone
+    streamer.acknowledge()
+    assert [tag for _, tag in streamer.sendable()] == ["short"]
+
+
+@given(
+    lengths=st.lists(st.integers(min_value=1, max_value=127), min_size=1, max_size=60),
+    acks=st.lists(st.integers(min_value=0, max_value=4), max_size=80),
+)
+def test_with_a_spare_line_one_copy_of_any_line_in_flight_still_fits(
+    lengths: list[int], acks: list[int]
+) -> None:
+    streamer: LineStreamer[int] = LineStreamer(StreamMode.COUNTING, spare_line=True)
+    for i, n in enumerate(lengths):
+        streamer.queue(line(n), i)
+    acked: list[int] = []
+    outstanding: list[int] = []
+    script = iter(acks)
+    while len(acked) < len(lengths):
+        for data, _ in streamer.sendable():
+            outstanding.append(len(data))
+        if len(outstanding) > 1:
+            assert sum(outstanding) + max(outstanding) <= 127
+        for _ in range(max(next(script, 1), 1)):
+            entry = streamer.acknowledge()
+            if entry is None:
+                break
+            acked.append(entry[1])
+            outstanding.pop(0)
+    assert acked == list(range(len(lengths)))

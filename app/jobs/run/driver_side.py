@@ -300,9 +300,11 @@ class DriverSide(QObject):
 
     def _op_source(self, index: int | None) -> str:
         program = self._runner.program
-        if program is None or index is None or not 0 <= index < len(program):
-            return "?"  # (a fault reported after the last operation: nothing of the job there)
-        return str(program[index].source)
+        if program is None or index is None or not len(program):
+            return "?"
+        # Every operation done, a fault after the last (a report once the job has all been
+        # answered) is at the last one: naming it must not crash the station.
+        return str(program[min(max(index, 0), len(program) - 1)].source)
 
     def _write_checkpoint(self, program: Program, completed: int, sent: int | None = None) -> bool:
         """Record progress; a job that cannot record it stops (FAILED) rather than run on.

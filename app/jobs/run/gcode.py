@@ -47,6 +47,7 @@ from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.start_point import StartPlan, StartRefused, plan_start
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.job_feed import JobFeed
+from app.machines.gcode.meanings import alarm_meaning
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
@@ -60,6 +61,10 @@ SHOW_EVERY_S = 0.1
 #: The modal words a program is checked in (absolute, millimetres, XY plane), sent before
 #: its first line where the machine has them: a jog or a console line may have changed them.
 SETUP_WORDS = ("G90", "G21", "G17")
+# GRBL's ``error:9``: G-code locked out while the board is in alarm.
+LOCKED_IN_ALARM = 9
+# A set-up whose ``$G`` answer was lost is sent again this often before the job fails.
+SETUP_CONFIRM_TRIES = 3
 
 
 def session_holds_unasked(session: GcodeSession | None) -> bool:
@@ -127,6 +132,13 @@ class GcodeDriver(JobDriver):
         self._held_by_machine = False
         #: The operator's chosen start (its state rebuilt once the machine is looked at).
         self._start: StartPlan | None = None
+        # The job is paused for an alarm, said once: a restart the board adds to it (GRBL
+        #: follows ALARM:3 with its banner) is kept for the Resume, not said again.
+        self._alarm_said = False
+        # Set-ups whose confirmation was lost in this run (see _unconfirmed).
+        self._unconfirmed_count = 0
+        # This run knows every line the device may have (see _sent_upto).
+        self._written_known = False
 
     def _locked(self) -> AbstractContextManager[object]:
         """The feed's lock: the reader thread pulls and counts the stream under it."""
@@ -161,6 +173,7 @@ class GcodeDriver(JobDriver):
                 old.lineFailed.disconnect(self._on_error)
                 old.statusChanged.disconnect(self._on_status)
                 old.reset.disconnect(self._on_reset)
+                old.alarmed.disconnect(self._on_alarm)
                 old.replyText.disconnect(self._on_reply_text)
             except (RuntimeError, TypeError):
                 pass  # already deleted with its link
@@ -172,6 +185,7 @@ class GcodeDriver(JobDriver):
             self.session.lineFailed.connect(self._on_error)
             self.session.statusChanged.connect(self._on_status)
             self.session.reset.connect(self._on_reset)
+            self.session.alarmed.connect(self._on_alarm)
             self.session.replyText.connect(self._on_reply_text)
             self._follow()
 
@@ -195,6 +209,7 @@ class GcodeDriver(JobDriver):
         sent = runner.checkpoint_sent if verify else None
         if sent is not None and sent > index:
             self.stream.written = sent  # what the interrupted run may have got to the machine
+        self._written_known = not verify or sent is not None
         self._follow()
         session = self.session
         # The program's coordinates are the machine's less the work offset it had when the
@@ -218,6 +233,8 @@ class GcodeDriver(JobDriver):
         self._choice_open = False
         self._held_by_machine = False
         self._start = None
+        self._alarm_said = False
+        self._unconfirmed_count = 0
         if index == 0 and not verify and session is not None:
             self._set_up(session)
 
@@ -388,6 +405,9 @@ class GcodeDriver(JobDriver):
 
     def _on_line_ok(self, sent: SentLine) -> None:
         """The set-up or the way back answered, line by line: the job goes on after the last."""
+        if sent.origin == "setup" and self._confirming and sent.text == "$G":
+            self._unconfirmed()  # its [GC:…] comes before its ok: that answer was lost
+            return
         if sent.origin not in ("setup", "resume") or not self._preparing:
             return
         self._preparing -= 1
@@ -421,8 +441,37 @@ class GcodeDriver(JobDriver):
             return
         self.proceed()
 
+    def _unconfirmed(self) -> None:
+        """The set-up's ``$G`` counts as answered, but its ``[GC:…]`` never came.
+
+        Lost on the way back, or the set-up itself was cut on the way there (relay
+        grbl-plotter seed 168: ``\n$G\n`` dropped, ``G90 G21 G17`` left unended in
+        GRBL's line buffer, where ``Bf:`` cannot show it, and the two answers then
+        taken for lost): waiting for the confirmation would wait for good.  A board
+        standing idle is reset — it keeps its position, and a fragment of the set-up
+        goes — and the set-up is sent again once the machine is looked at; a few
+        times, then the job fails (never a job on a machine not known set up).
+        """
+        session = self.session
+        self._confirming = False
+        self._redo_setup = True
+        self._unconfirmed_count += 1
+        if session is None or self._unconfirmed_count > SETUP_CONFIRM_TRIES:
+            self.runner.fail(
+                self._resume_at, "the machine never confirmed its set-up (no answer to $G)"
+            )
+            return
+        self._recheck = True
+        self._asked_since_recheck = False
+        if session.machine_state == "Idle":
+            session.soft_reset()
+        self.proceed()
+
     def _on_error(self, sent: SentLine, code: int, meaning: str) -> None:
         runner = self.runner
+        session = self.session
+        if code == LOCKED_IN_ALARM and session is not None and session.alarm.code is not None:
+            return  # refused by the alarm the job is paused for: not run, the resume sends it
         if sent.origin in ("setup", "resume") and runner.state in ACTIVE:
             # The job runs only on a machine set up as the program expects it (back at its
             # place, pen and modes restored): refused, the rest would run elsewhere.
@@ -464,6 +513,48 @@ class GcodeDriver(JobDriver):
             in_flight = stream.in_flight
         if not in_flight:
             self.proceed()
+
+    def _on_alarm(self, code: int) -> None:
+        """The board went into alarm mid-job (a limit switch, a failed probe, its reset in
+        motion): it stopped, dropped what it had planned, and takes no line until the
+        operator homes or unlocks it.
+
+        The job is paused, said once (the session says the alarm once too), and nothing
+        more is sent: every line would be refused (``error:9``).  Resume looks at the
+        machine first — still in alarm, it stays paused — and goes on from what is proven
+        run, asking where only the operator can tell.  A job already paused (the link, a
+        question, a restart) stays as it is, its Resume looks again.
+        """
+        runner = self.runner
+        if self.stream is None or runner.state not in ACTIVE:
+            return
+        self.hold_back()  # what is not on the wire yet waits for the resume
+        self._hold()
+        self._held_by_machine = False  # the alarm dropped the hold with the rest
+        with self._locked():
+            self.stream.pending.clear()  # lost with the planner, or refused: not proven run
+        self._preparing = 0
+        if self._confirming:
+            self._confirming = False
+            self._redo_setup = True
+        self._recheck = True
+        self._asked_since_recheck = False
+        self._write_checkpoint(force=True)
+        if runner.state not in CLOCK_RUNS:
+            return
+        self._alarm_said = True
+        program = runner.program
+        with self._locked():
+            where = self.stream.executed
+        runner.hold_for_operator(
+            QCoreApplication.translate(
+                "GcodeDriver",
+                "The machine went into alarm {0} ({1}) during the job and stopped: the job "
+                "is paused at {2}. Clear the alarm (home it with $H, or unlock it with $X if "
+                "its position is still right), then Resume: the job goes on from what is "
+                "proven run.",
+            ).format(code, alarm_meaning(code), _where(program, where) if program else "?")
+        )
 
     def _machine_held(self) -> None:
         """The board holds, and no stop of the station's asked it to: pause for the operator.
@@ -527,6 +618,12 @@ class GcodeDriver(JobDriver):
         self._recheck = True
         self._asked_since_recheck = False
         session = self.session
+        if session is not None and session.reset_by_device and self._alarm_said:
+            # Paused for the alarm already, said once (GRBL resets after ALARM:3): the board
+            # may have lost its position, so the Resume asks where to go on.
+            self._position_lost = True
+            self._write_checkpoint(force=True)
+            return
         if session is not None and session.reset_by_device:
             self._chosen = None  # a pick made before the restart was for a machine it forgot
             self._waiting = None  # a WAIT under way is offered again if the pick is before it
@@ -536,7 +633,7 @@ class GcodeDriver(JobDriver):
                 stream = self.stream
                 with self._locked():
                     first = stream.answered if stream.settings.ok_when_done else stream.executed
-                    upto = _sent_upto(stream, first)
+                    upto = _sent_upto(stream, first, known=self._written_known)
                 self._choose(stream, first, upto)
             return
         if runner.state in CLOCK_RUNS:
@@ -591,20 +688,9 @@ class GcodeDriver(JobDriver):
         program = runner.program
         assert program is not None and session is not None
         if report.state == "Alarm":
-            # A board that reset itself mid-motion (GRBL: ALARM:3, its position no longer
-            # trusted) or powered up with homing on takes no line until unlocked: streaming
-            # into it would only be refused (error:9), and unlocking is the operator's call.
-            # The job stays paused, still to be rechecked on the next Resume.
-            self._asked_since_recheck = False
-            runner.hold_for_operator(
-                QCoreApplication.translate(
-                    "GcodeDriver",
-                    "The machine is in alarm: the job stays paused. Check the machine, "
-                    "clear the alarm (home it with $H, or unlock it with $X if its position "
-                    "is still right), then Resume.",
-                )
-            )
+            self._hold_in_alarm()
             return
+        self._alarm_said = False
         if report.state == "Hold":
             # Leaving a hold takes a reset, which drops what the planner held (the position
             # stays: the hold is complete); the next report decides.
@@ -625,7 +711,7 @@ class GcodeDriver(JobDriver):
         # Where the machine stands then proves how far it got, when only one place fits.
         with self._locked():
             first = stream.answered if stream.settings.ok_when_done else stream.executed
-            upto = _sent_upto(stream, first)
+            upto = _sent_upto(stream, first, known=self._written_known)
             if self._chosen is not None:
                 start = self._chosen
                 note = f"from {_where(program, start)}, as the operator chose"
@@ -653,7 +739,11 @@ class GcodeDriver(JobDriver):
         if plan is not None and plan.index != start:
             plan = None
         way_back = (
-            retrace(program, axes, start, _sent_upto(stream, start), here) if plan is None else []
+            retrace(
+                program, axes, start, _sent_upto(stream, start, known=self._written_known), here
+            )
+            if plan is None
+            else []
         )
         with self._locked():
             stream.rewind(start)
@@ -685,6 +775,21 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
+
+    def _hold_in_alarm(self) -> None:
+        """A board that reset itself mid-motion (GRBL: ALARM:3, its position no longer
+        trusted) or powered up with homing on takes no line until unlocked: streaming into
+        it would only be refused (error:9), and unlocking is the operator's call.  The job
+        stays paused, still to be rechecked on the next Resume."""
+        self._asked_since_recheck = False
+        self.runner.hold_for_operator(
+            QCoreApplication.translate(
+                "GcodeDriver",
+                "The machine is in alarm: the job stays paused. Check the machine, "
+                "clear the alarm (home it with $H, or unlock it with $X if its position "
+                "is still right), then Resume.",
+            )
+        )
 
     def _file_modes(self, stream: GcodeStream, start: int) -> list[str]:
         """A resume's way back is in mm, G90: the file's own modes at ``start`` go after it
@@ -764,9 +869,16 @@ def _offset(offsets: Sequence[float], axis: int) -> float:
     return offsets[axis] if axis < len(offsets) else 0.0
 
 
-def _sent_upto(stream: GcodeStream, start: int) -> int:
-    """Operations the device may have received: known in this run, else a window."""
-    known = max(stream.written, stream.answered)
-    if known > start:
-        return known
+def _sent_upto(stream: GcodeStream, start: int, *, known: bool = False) -> int:
+    """Operations the device may have received: known in this run, else a window.
+
+    ``known``: this run has written every line the device may have (not a run
+    resumed from a checkpoint that could not say): nothing past ``written`` went,
+    even when nothing went at all (relay grbl-plotter seed 168: a set-up cut on the
+    wire, reset before any line of the job went, was offered the first 30
+    operations to pick from, as if sent).
+    """
+    sent = max(stream.written, stream.answered)
+    if sent > start or known:
+        return max(sent, start)
     return min(len(stream.program), start + RETRACE_WINDOW)

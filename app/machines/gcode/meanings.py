@@ -69,6 +69,10 @@ _MARKED = (
     QT_TRANSLATE_NOOP(
         "GrblMeaning", "homing fail: limit switch not found within the search distance"
     ),
+    QT_TRANSLATE_NOOP(
+        "GrblMeaning",
+        "homing fail: the second switch of a dual axis did not trigger after the first",
+    ),
 )
 
 

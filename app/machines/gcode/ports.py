@@ -19,6 +19,7 @@ from PySide6.QtCore import QTimer, SignalInstance
 from app.link import Link
 from app.machine import MachineModel
 from app.machines.envelope import Envelope
+from app.machines.gcode.alarm_notice import AlarmNotice
 from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.console_gate import ConsoleGate
 from app.machines.gcode.feeder import LineFeeder, Received
@@ -155,6 +156,8 @@ class SessionSignals(Protocol):
     def replyText(self) -> SignalInstance: ...
     @property
     def reset(self) -> SignalInstance: ...
+    @property
+    def alarmed(self) -> SignalInstance: ...
 
 
 class GcodeCore(SessionParts, SessionSignals, Protocol):
@@ -171,6 +174,7 @@ class GcodeCore(SessionParts, SessionSignals, Protocol):
     restarted_in_silence: bool
     reset_by_device: bool
     errors: int
+    alarm: AlarmNotice
 
     @property
     def silent_since(self) -> float | None: ...

@@ -108,11 +108,13 @@ class ReplyReader:
             elif isinstance(reply, AlarmReply):
                 session.envelope.release()  # stopped by itself; it may have lost its position
                 session.replyText.emit(f"ALARM:{reply.code} ({alarm_meaning(reply.code)})")
-                session.model.message.emit(
-                    QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
-                        reply.code, alarm_meaning(reply.code)
+                if session.alarm.heard(reply.code):  # once while it stays in that alarm
+                    session.model.message.emit(
+                        QCoreApplication.translate("GcodeSession", "Machine alarm {0}: {1}").format(
+                            reply.code, alarm_meaning(reply.code)
+                        )
                     )
-                )
+                    session.alarmed.emit(reply.code)  # before sending may go on
                 session.follower.written(session.feeder.release())
             elif isinstance(reply, Banner):
                 ours = isinstance(verdict, BannerSeen) and verdict.ours

@@ -37,6 +37,7 @@ from app.link import Link
 from app.machine import MachineModel
 from app.machines.envelope import Envelope
 from app.machines.gcode import timing
+from app.machines.gcode.alarm_notice import AlarmNotice
 from app.machines.gcode.console_gate import SETTING_DISABLED as SETTING_DISABLED
 from app.machines.gcode.console_gate import ConsoleGate
 from app.machines.gcode.feeder import LineFeeder, merged
@@ -94,6 +95,8 @@ class GcodeSession(MachineSession):
     replyText = Signal(str)
     #: The device was reset (banner seen or reset sent): whatever was unanswered is gone.
     reset = Signal()
+    # The board went into alarm ``ALARM:<code>`` (said once while it stays in it).
+    alarmed = Signal(int)
 
     def __init__(
         self,
@@ -109,7 +112,11 @@ class GcodeSession(MachineSession):
         self.settings = settings
         self.decoder = make_decoder()
         mode = StreamMode.COUNTING if settings.streaming == "counting" else StreamMode.PING_PONG
-        self.streamer: LineStreamer[SentLine] = LineStreamer(mode, settings.rx_buffer)
+        # Room for one line more than counted: a line or an ok that arrives twice overflows
+        # nothing (no checksum on the wire; see LineStreamer).
+        self.streamer: LineStreamer[SentLine] = LineStreamer(
+            mode, settings.rx_buffer, spare_line=True
+        )
         #: The streaming loop and its ``ok`` accounting, on the transport's reader thread.
         self.feeder: LineFeeder[SentLine] = LineFeeder(
             self.streamer,
@@ -121,6 +128,7 @@ class GcodeSession(MachineSession):
         )
         self.status: StatusReport | None = None
         self.errors = 0
+        self.alarm = AlarmNotice()  # the alarm said, while the board stays in it
         #: Line serials, taken under the feeder's lock: both threads number lines.
         self.serials = count(1)
         #: A status report since the last line was answered showed the machine idle

@@ -187,6 +187,7 @@ class StatusFollower:
             session.work_offset = report.wco
         report = with_work_offset(report, session.work_offset)
         session.status = report
+        session.alarm.reported(report.state)
         if placed:
             self.supervise(report)
         session.stops.reported(report)

@@ -152,7 +152,8 @@ class Usb3Session(MachineSession):
         self._reported_at: list[float | None] = [None] * 3
         #: Per axis, the path (in counts) of the moves sent that the reports must follow.
         self._envelopes = [
-            Envelope([(-math.inf, math.inf)], 1.0, hold_at_rest=False) for _ in range(3)
+            Envelope([(-math.inf, math.inf)], 1.0, hold_at_rest=False, travel_at_rest=True)
+            for _ in range(3)
         ]
         for axis in range(3):
             self._scale_envelope(axis)
