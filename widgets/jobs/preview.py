@@ -346,9 +346,9 @@ class ProgramGeometry:
 
 #: Points in the done trail's growing piece; past this it is frozen and a new piece starts.
 TRAIL_PIECE_POINTS = 4096
-#: The same for done dots: pyqtgraph's scatter copies and restyles its whole growing piece
-#: on every step (a 4096-dot piece cost a 10 000-line job 0.9 ms a step on the window's
-#: thread), while a frozen piece is a cached picture: smaller pieces, the cost bounded lower.
+# The same for done dots: pyqtgraph's scatter copies and restyles its whole growing piece
+# on every step (a 4096-dot piece cost a 10 000-line job 0.9 ms a step on the window's
+# thread), while a frozen piece is a cached picture: smaller pieces, the cost bounded lower.
 DOTS_PIECE_POINTS = 512
 
 
