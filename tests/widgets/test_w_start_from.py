@@ -207,3 +207,25 @@ def test_the_state_at_the_pick_is_worked_out_off_the_gui_thread_once(
     # Once, on the worker; the runner's own call on the GUI thread found it remembered.
     assert len(threads) == 1
     assert threads[0] is not threading.main_thread()
+
+
+def test_a_dialog_closed_while_the_state_is_worked_out_starts_nothing(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    dock = loaded_dock(qtbot, plotter, tmp_path)
+    runner = dock.runner
+    program = runner.program
+    assert program is not None
+    dialog = open_dialog(qtbot, dock)
+    click_row(qtbot, dialog, operation_at_line(program, 5))
+    qtbot.mouseClick(dialog.run_button, LEFT)
+    planning = dialog.planning
+    assert planning is not None
+    sent = len(plotter.written)
+    # Closed before the worker's answer is heard, and not yet deleted when it is.
+    dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, False)
+    dialog.close()
+    planning.join()
+    plotter.run(0.5)
+    assert runner.state is JobState.READY
+    assert all(frame == b"?" for frame in plotter.written[sent:])  # status queries only

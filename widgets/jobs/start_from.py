@@ -203,8 +203,8 @@ class StartFromDialog(QDialog):
         self.planning = None
         self._update_enabled()
         self.reason.clear()
-        if self.runner.program is not self.program:
-            return  # another job was loaded meanwhile
+        if not self.isVisible() or self.runner.program is not self.program:
+            return  # closed meanwhile (the operator changed their mind), or another job
         self._said.clear()
         self.runner.start_from(index)
         if self.runner.state in ACTIVE:
