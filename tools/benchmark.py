@@ -25,6 +25,7 @@ from protocol.clock import ManualClock  # noqa: E402
 from tools.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tools.bench_eta import bench_gcode_eta  # noqa: E402
 from tools.bench_grbl_planner import bench_grbl_planner_vs_grbl_sim  # noqa: E402
+from tools.bench_start_from import bench_start_from_1m  # noqa: E402
 from tools.bench_streaming import (  # noqa: E402
     bench_gcode_delivery,
     bench_gcode_job_streaming,
@@ -1226,6 +1227,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_gcode_eta,
     bench_grbl_planner_vs_grbl_sim,
     bench_resume_file_offset,
+    bench_start_from_1m,
 ]
 
 

@@ -3997,6 +3997,10 @@ Docks of features built elsewhere (the macros&apos;), by object name → their b
         <translation>Na tomto stroji vyberte řádek v seznamu</translation>
     </message>
     <message>
+        <source>Working out the machine&apos;s state at {0}…</source>
+        <translation>Zjišťuji stav stroje na {0}…</translation>
+    </message>
+    <message>
         <source>Run from…</source>
         <translation>Spustit od…</translation>
     </message>

@@ -3997,6 +3997,10 @@ Docks of features built elsewhere (the macros&apos;), by object name → their b
         <translation>Na tomto stroji vyberte riadok v zozname</translation>
     </message>
     <message>
+        <source>Working out the machine&apos;s state at {0}…</source>
+        <translation>Zisťujem stav stroja na {0}…</translation>
+    </message>
+    <message>
         <source>Run from…</source>
         <translation>Spustiť od…</translation>
     </message>

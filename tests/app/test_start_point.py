@@ -164,6 +164,38 @@ def test_the_way_there_is_in_mm_with_the_pen_up_and_the_files_state_comes_after(
     ]
 
 
+@pytest.mark.parametrize("g92", ["G92 X0 Y0", "G 92 X0 Y0", "g092 x0 y0", "G1 G92 X0 Y0"])
+def test_the_files_g92_is_followed_however_it_is_spelled_and_a_coordinate_ending_in_92_is_none(
+    tmp_path: Path, g92: str
+) -> None:
+    program = load(tmp_path, ["G21 G90", "G0 X10.92 Y92", g92, "G0 X1.092 Y1", "X2 Y2"])
+    state = plan_start(program, operation_at_line(program, 5), AXES).state
+    assert state.offset == pytest.approx({"X": 10.92, "Y": 92.0})
+    plain = load(tmp_path, ["G21 G90", "G0 X10.92 Y92", "G1 X92 Y1.92 F92", "X2 Y2"])
+    assert plan_start(plain, operation_at_line(plain, 4), AXES).state.offset == {
+        "X": 0.0,
+        "Y": 0.0,
+    }
+
+
+def test_a_plan_is_remembered_for_its_program_and_start_and_so_is_a_refusal(
+    tmp_path: Path,
+) -> None:
+    program = load(tmp_path, ["G21 G90", "G0 X1 Y1", "G55", "G0 X2 Y2", "X3 Y3"])
+    first = operation_at_line(program, 2)
+    plan = plan_start(program, first, AXES)
+    assert plan_start(program, first, AXES) is plan  # worked out once (a worker may have)
+    later = operation_at_line(program, 5)
+    with pytest.raises(StartRefused, match=r"job\.gcode:3: G55") as refused:
+        plan_start(program, later, AXES)
+    with pytest.raises(StartRefused) as again:
+        plan_start(program, later, AXES)
+    assert str(again.value) == str(refused.value)
+    # Another program (the same lines loaded again) is worked out for itself.
+    other = load(tmp_path, ["G21 G90", "G0 X1 Y1", "G0 X2 Y2"])
+    assert plan_start(other, operation_at_line(other, 3), AXES).index == 2
+
+
 def test_a_start_inside_an_arc_sequence_puts_the_arc_word_before_its_first_move(
     tmp_path: Path,
 ) -> None:

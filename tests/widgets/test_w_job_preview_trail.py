@@ -8,7 +8,7 @@ from pytestqt.qtbot import QtBot
 from app.jobs.program import Program, SourceRef, move
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs.preview import TRAIL_PIECE_POINTS, JobPreview
+from widgets.jobs.preview import DOTS_PIECE_POINTS, TRAIL_PIECE_POINTS, JobPreview
 
 
 def drawn(preview: JobPreview, kind: int) -> tuple[np.ndarray, np.ndarray]:
@@ -106,7 +106,7 @@ def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: 
     harness = StationHarness(load_profile("xy-stage"))
     preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
     qtbot.addWidget(preview)
-    count = 2 * TRAIL_PIECE_POINTS + 100
+    count = 2 * DOTS_PIECE_POINTS + 100
     ops = tuple(
         move(SourceRef("dots.csv", i + 1), X=float(i % 100), Y=float(i // 100))
         for i in range(count)
@@ -122,7 +122,7 @@ def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: 
     try:
         preview.set_program(Program("dots", ops))
         markers = preview.path_geometry.markers  # type: ignore[union-attr]
-        preview.set_done(TRAIL_PIECE_POINTS + 10)
+        preview.set_done(DOTS_PIECE_POINTS + 10)
         first = list(preview.done_dots.frozen)
         assert len(first) == 1
         assert first[0].cacheMode() == QGraphicsItem.CacheMode.DeviceCoordinateCache
@@ -131,7 +131,7 @@ def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: 
         assert preview.done_dots.frozen[:1] == first  # the same item, untouched
         np.testing.assert_array_equal(np.asarray(first[0].data["x"]), kept)
         assert len(preview.done_dots.frozen) == 2
-        assert len(preview.done_markers.data) <= TRAIL_PIECE_POINTS
+        assert len(preview.done_markers.data) <= DOTS_PIECE_POINTS
         x, y = dots()
         n = markers.done_count(count)
         assert n == count

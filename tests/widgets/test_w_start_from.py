@@ -8,8 +8,10 @@ nothing moves; a click in the preview while picking moves nothing either.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 from PySide6.QtCore import QPoint, QPointF, Qt
@@ -17,6 +19,7 @@ from PySide6.QtGui import QKeySequence
 from pytestqt.qtbot import QtBot
 
 from app.jobs.loaders import JobOptions, load_job
+from app.jobs.run import start_point
 from app.jobs.run.runner import JobRunner, JobState
 from app.jobs.run.start_point import operation_at_line
 from app.profiles import load_profile
@@ -154,7 +157,8 @@ def test_a_start_that_cannot_be_set_up_is_refused_in_the_dialog_with_file_and_li
     click_row(qtbot, dialog, operation_at_line(program, 8))
     drawn = strokes(plotter)
     qtbot.mouseClick(dialog.run_button, LEFT)
-    plotter.run(0.5)
+    plotter.run_until(lambda: dialog.planning is None, timeout=30)
+    plotter.run(0.3)
     assert runner.state is not JobState.RUNNING
     assert "square.gcode:8" in dialog.reason.text()
     assert "checkpoint" in dialog.reason.text()
@@ -174,3 +178,54 @@ def test_the_key_opens_the_list_and_help_lists_it(
     dock.runner.start()
     assert not dock.run_from_button.isEnabled()
     assert dock.start_from.open() is None
+
+
+def test_the_state_at_the_pick_is_worked_out_off_the_gui_thread_once(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    dock = loaded_dock(qtbot, plotter, tmp_path)
+    runner = dock.runner
+    program = runner.program
+    assert program is not None
+    threads: list[threading.Thread] = []
+    real = start_point._plan_start
+
+    def recording(*args: Any) -> start_point.StartPlan:
+        threads.append(threading.current_thread())
+        return real(*args)
+
+    monkeypatch.setattr(start_point, "_plan_start", recording)
+    dialog = open_dialog(qtbot, dock)
+    click_row(qtbot, dialog, operation_at_line(program, 5))
+    qtbot.mouseClick(dialog.run_button, LEFT)
+    # While it is worked out the dialog says so, and a second click starts nothing more.
+    assert dialog.planning is not None
+    assert not dialog.run_button.isEnabled()
+    assert "Working out" in dialog.reason.text()
+    plotter.run_until(lambda: runner.state is JobState.DONE, timeout=60)
+    assert strokes(plotter) == [(80.0, 80.0), (20.0, 40.0)]
+    # Once, on the worker; the runner's own call on the GUI thread found it remembered.
+    assert len(threads) == 1
+    assert threads[0] is not threading.main_thread()
+
+
+def test_a_dialog_closed_while_the_state_is_worked_out_starts_nothing(
+    qtbot: QtBot, plotter: StationHarness, tmp_path: Path
+) -> None:
+    dock = loaded_dock(qtbot, plotter, tmp_path)
+    runner = dock.runner
+    program = runner.program
+    assert program is not None
+    dialog = open_dialog(qtbot, dock)
+    click_row(qtbot, dialog, operation_at_line(program, 5))
+    qtbot.mouseClick(dialog.run_button, LEFT)
+    planning = dialog.planning
+    assert planning is not None
+    sent = len(plotter.written)
+    # Closed before the worker's answer is heard, and not yet deleted when it is.
+    dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose, False)
+    dialog.close()
+    planning.join()
+    plotter.run(0.5)
+    assert runner.state is JobState.READY
+    assert all(frame == b"?" for frame in plotter.written[sent:])  # status queries only

@@ -90,6 +90,25 @@ def test_progress_shows_drilled_nails_wound_thread_and_the_current_nail(
     assert np.allclose(points(extras.current), nails[[6]])
 
 
+def test_another_kind_of_job_after_a_wound_one_shows_none_of_its_progress(
+    preview: JobPreview,
+) -> None:
+    program = build_program(job([0, 4, 2, 6]))
+    preview.set_program(program)
+    extras = preview.string_art
+    preview.set_done(len(program))
+    assert len(points(extras.done_thread)) and len(points(extras.drilled))
+    plain = Program("plain", tuple(move(SourceRef("p.txt", i + 1), X=float(i)) for i in range(9)))
+    preview.set_program(plain)
+    for done in (3, 6, 9):  # its progress steps leave the winder's done items empty
+        preview.set_done(done)
+        assert len(points(extras.done_thread)) == 0
+        assert len(points(extras.drilled)) == 0 and len(points(extras.current)) == 0
+    preview.set_program(program)  # the wound job again: its progress drawn again
+    preview.set_done(8)
+    assert len(points(extras.drilled)) == 1 and len(points(extras.current)) == 1
+
+
 def _darkness(image: QImage, x: int, y: int) -> int:
     colour = QColor(image.pixel(x, y))
     return 3 * 255 - colour.red() - colour.green() - colour.blue()

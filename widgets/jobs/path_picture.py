@@ -29,10 +29,13 @@ from PySide6.QtWidgets import QStyleOptionGraphicsItem, QWidget
 
 #: Paths with more vertices than this are painted on a worker thread, not by plot curves.
 PICTURE_MIN_POINTS = 200_000
-#: Vertices per QPainter call at most: each call holds the interpreter lock throughout.
-POINTS_PER_CALL = 8192
-#: Pixels of line per QPainter call at most (about 30 ns each: a few milliseconds a call).
-PIXELS_PER_CALL = 150_000
+#: Vertices per QPainter call at most: each call holds the interpreter lock throughout
+#: (PySide6's ``drawPath`` does not let it go: a 50 ms call stalled another thread 100 ms).
+POINTS_PER_CALL = 4096
+#: Pixels of line per QPainter call at most (about 30 ns each: 1.5 ms a call).  A call
+#: the system preempts holds the lock the while, so the shorter the calls, the shorter
+#: the GUI thread's waits on a loaded machine (150 000 before: holds up to 100 ms at load 3).
+PIXELS_PER_CALL = 50_000
 #: The largest image side painted (device pixels).
 MAX_SIDE_PX = 4096
 #: How far the view's scale may stray from the image's before a new one is painted.

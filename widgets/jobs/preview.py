@@ -346,6 +346,10 @@ class ProgramGeometry:
 
 #: Points in the done trail's growing piece; past this it is frozen and a new piece starts.
 TRAIL_PIECE_POINTS = 4096
+# The same for done dots: pyqtgraph's scatter copies and restyles its whole growing piece
+# on every step (a 4096-dot piece cost a 10 000-line job 0.9 ms a step on the window's
+# thread), while a frozen piece is a cached picture: smaller pieces, the cost bounded lower.
+DOTS_PIECE_POINTS = 512
 
 
 class FrozenPieces:
@@ -427,7 +431,7 @@ class DoneDots(FrozenPieces):
     One scatter item given every done dot copies them all on each step and
     paints them all on every frame (a 10 000-point job: about a third of the
     window's work while it runs).  Here the growing piece holds at most
-    :data:`TRAIL_PIECE_POINTS` dots; full pieces are frozen into items of their
+    :data:`DOTS_PIECE_POINTS` dots; full pieces are frozen into items of their
     own, painted once into a pixmap and never touched again.
     """
 
@@ -455,8 +459,8 @@ class DoneDots(FrozenPieces):
         if count == self.shown:
             return
         opts = self.tail.opts
-        while count - self._start > TRAIL_PIECE_POINTS:
-            end = self._start + TRAIL_PIECE_POINTS
+        while count - self._start > DOTS_PIECE_POINTS:
+            end = self._start + DOTS_PIECE_POINTS
             piece = pg.ScatterPlotItem(
                 x=markers.x[self._start : end],
                 y=markers.y[self._start : end],
@@ -1065,6 +1069,7 @@ class StringArtPreviewExtras:
         self.program: StringArtProgram | None = None
         self.thread = self._segments(WORK_COLOUR, THREAD_ALPHA)
         self.done_thread = self._segments(DONE_COLOUR, DONE_THREAD_ALPHA)
+        self._done_cleared = False  # the done items are empty and need not be set again
         #: A merged thread's bands (see the module of the thread geometry), all and wound.
         self.thread_bands = [
             self._segments(WORK_COLOUR, band_alpha(THREAD_ALPHA, k)) for k in range(len(BAND_EDGES))
@@ -1174,10 +1179,15 @@ class StringArtPreviewExtras:
         program = self.program
         geometry = self.geometry
         if program is None or geometry is None:
-            for item in (self.drilled, self.current):
-                item.setData(x=_EMPTY, y=_EMPTY)
-            self.done_thread.setData(_EMPTY, _EMPTY)
+            # Cleared once, not on every progress step of another kind of job (three
+            # items given empty data 5-30 times a second cost a plotter job's window).
+            if not self._done_cleared:
+                for item in (self.drilled, self.current):
+                    item.setData(x=_EMPTY, y=_EMPTY)
+                self.done_thread.setData(_EMPTY, _EMPTY)
+                self._done_cleared = True
             return
+        self._done_cleared = False
         total = len(program.nail_of_op)
         if done >= total:
             segments = geometry.connections

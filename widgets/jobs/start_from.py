@@ -41,6 +41,7 @@ from app.jobs.run.states import ACTIVE, FINISHED, JobState
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.preview import JobPreview
 from widgets.jobs.run_controls import job_button
+from widgets.jobs.start_planning import StartPlanning
 from widgets.retranslate import Texts
 
 # The key that opens the list (Help → Keys lists it).
@@ -154,6 +155,8 @@ class StartFromDialog(QDialog):
         layout.addWidget(buttons)
         self.resize(640, 420)
         self._said: list[str] = []
+        # The start being worked out, while it is.
+        self.planning: StartPlanning | None = None
         runner.message.connect(self._heard)
         preview.point_picker = self.pick_point
         self._update_enabled()
@@ -180,9 +183,28 @@ class StartFromDialog(QDialog):
         self.select(nearest_stroke(self.program, axes, x, y))
 
     def run_from_here(self) -> None:
+        """The state at the pick is worked out on a worker thread first (a long file's takes
+        longer than the window may stand still), then the runner starts there."""
         index = self.chosen()
-        if index is None:
+        if index is None or self.planning is not None:
             return
+        self.reason.setText(
+            QCoreApplication.translate(
+                "JobsDock", "Working out the machine's state at {0}…"
+            ).format(self.program[index].source)
+        )
+        axes = [axis.name for axis in self.runner.station.profile.axes]
+        self.planning = StartPlanning(self.program, index, axes, self.parent())
+        self.planning.done.connect(self._planned)
+        self._update_enabled()
+        self.planning.start()
+
+    def _planned(self, index: int) -> None:
+        self.planning = None
+        self._update_enabled()
+        self.reason.clear()
+        if not self.isVisible() or self.runner.program is not self.program:
+            return  # closed meanwhile (the operator changed their mind), or another job
         self._said.clear()
         self.runner.start_from(index)
         if self.runner.state in ACTIVE:
@@ -197,7 +219,7 @@ class StartFromDialog(QDialog):
         self._update_enabled()
 
     def _update_enabled(self) -> None:
-        self.run_button.setEnabled(self.chosen() is not None)
+        self.run_button.setEnabled(self.chosen() is not None and self.planning is None)
 
     def context_menu(self) -> QMenu:
         """The list's right-click menu: Run from here (the row under the pointer is current)."""

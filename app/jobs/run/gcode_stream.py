@@ -93,11 +93,13 @@ def resume_state(program: Program, index: int, axes: Sequence[str]) -> ResumeSta
     return ResumeState(position, pen_down=bool(last_down > last_up))
 
 
-#: What a G92 line has (a literal search: a word pattern would be 20 times slower), or a unit
-#: word (G20/G21: a G92 under G20 is in inches); lines where it is a coordinate's digits are
-#: told apart by their words.
+#: What a G92 line has (searched from its literal ``G``, as the unit words are: a bare
+#: ``92`` also found every coordinate ending in 92, 30 000 lines of a million-line plotter
+#: file, each then made a string and read), or a unit word (G20/G21: a G92 under G20 is in
+#: inches); a hit in a comment is told apart by its words.
 _G92_TEXT = (
-    re.compile(r"92(?![0-9])"),
+    re.compile(r"G[ \t0]*92(?![0-9])"),
+    re.compile(r"g[ \t0]*92(?![0-9])"),
     re.compile(r"G[ \t0]*2[01](?![0-9])"),
     re.compile(r"g[ \t0]*2[01](?![0-9])"),
 )

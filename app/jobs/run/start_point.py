@@ -39,6 +39,8 @@ from __future__ import annotations
 
 import math
 import re
+import threading
+import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -273,8 +275,40 @@ def _source_lines(program: Program) -> np.ndarray:
 # --- the state there ----------------------------------------------------------------
 
 
+# The last plan worked out, or its refusal: the window works it out on a worker thread
+# (a million-line file's state before its last lines is read in a fraction of a second,
+# too long for the GUI thread), then starts, and the driver's own call finds it here.
+_last: tuple[weakref.ref[Program], int, tuple[str, ...], StartPlan | StartRefused] | None = None
+_last_lock = threading.Lock()
+
+
 def plan_start(program: Program, index: int, axes: Sequence[str]) -> StartPlan:
-    """The plan for starting ``program`` at operation ``index``; StartRefused says why not."""
+    """The plan for starting ``program`` at operation ``index``; StartRefused says why not.
+
+    Remembered for the last program and start asked (a program does not change once
+    loaded), so that a plan worked out on a worker thread costs the GUI thread nothing.
+    """
+    global _last
+    key = (index, tuple(axes))
+    with _last_lock:
+        last = _last
+    if last is not None and last[0]() is program and last[1:3] == key:
+        if isinstance(last[3], StartRefused):
+            raise StartRefused(str(last[3]))
+        return last[3]
+    outcome: StartPlan | StartRefused
+    try:
+        outcome = _plan_start(program, index, axes)
+    except StartRefused as exc:
+        outcome = exc
+    with _last_lock:
+        _last = (weakref.ref(program), index, key[1], outcome)
+    if isinstance(outcome, StartRefused):
+        raise outcome
+    return outcome
+
+
+def _plan_start(program: Program, index: int, axes: Sequence[str]) -> StartPlan:
     if not 0 <= index < len(program):
         raise _refuse(
             program,
