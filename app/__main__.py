@@ -24,6 +24,7 @@ from PySide6.QtWidgets import QApplication, QDialog, QInputDialog, QMainWindow, 
 
 from app import i18n
 from app.discovery import serial_ports
+from app.main_thread_gc import MainThreadCollector
 from app.profiles import (
     DEFAULT_PROFILE,
     MachineProfile,
@@ -311,6 +312,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     app.setOrganizationName("StepDeck")
     app.setWindowIcon(QIcon(str(ICON)))
     app.setDesktopFileName("stepdeck")  # Wayland: the icon and name of stepdeck.desktop
+    collector = MainThreadCollector(app)  # cycles freed on the GUI thread, not a transport's
+    collector.start()
     settings = StationSettings(default_settings())
     i18n.install(settings.language)  # before any widget is built
     launcher = start(args, settings)

@@ -6,6 +6,7 @@ fails, because in the station either one is a link or a motor left behind.
 
 from __future__ import annotations
 
+import gc
 import os
 import threading
 from collections.abc import Iterator
@@ -68,6 +69,21 @@ def english(request: pytest.FixtureRequest, i18n_cache: Path) -> None:
     request.getfixturevalue("qapp")
     if i18n.current() != "en":
         i18n.install("en", i18n_cache)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def collect_on_the_main_thread() -> Iterator[None]:
+    """As the station does (app.main_thread_gc): no automatic collection, which could free a
+    dropped station's Qt objects from a transport or asyncio thread of a later test."""
+    gc.disable()
+    yield
+    gc.enable()
+
+
+@pytest.fixture(autouse=True)
+def collected_after_each_test() -> Iterator[None]:
+    yield
+    gc.collect()  # here, on the main thread, with no other test's thread running
 
 
 @pytest.fixture(autouse=True)

@@ -28,6 +28,7 @@ from typing import Protocol
 
 from PySide6.QtCore import QCoreApplication, QEventLoop, QTimer
 
+from app.main_thread_gc import MainThreadCollector
 from app.station import Station
 from protocol.clock import ManualClock
 
@@ -44,6 +45,10 @@ def ensure_qt() -> None:
     """A QCoreApplication for the station's timers and queued signals (no display needed)."""
     if QCoreApplication.instance() is None:
         _APP.append(QCoreApplication([]))
+        # Cycles are freed in the script's thread, between pumps, not in a transport thread
+        # (app.main_thread_gc says why).
+        collector = MainThreadCollector(_APP[0])
+        collector.start()
 
 
 class CtrlC:
