@@ -262,11 +262,26 @@ def test_emulator_controls_wait_for_an_emulator(
 ) -> None:
     box = pane.emulator_box
     assert not box.body.isEnabled() and box.note.isVisible()
+    assert box.note.text().startswith("No emulator connected")  # the line itself, not a blank
+    assert not box.field_note.isVisible()  # the fields' note says nothing until one is wrong
     harness.connect()
     assert box.body.isEnabled() and not box.note.isVisible()
     assert box.battery.value() == 80 and box.temperature.value() == 25.0
     harness.station.close_link()
-    assert not box.body.isEnabled()
+    assert not box.body.isEnabled() and box.note.isVisible()
+    assert box.note.text().startswith("No emulator connected")
+
+
+def test_a_wrong_value_is_named_under_the_fields_not_in_the_no_emulator_line(
+    qtbot: QtBot, connected: StationHarness, pane: DeveloperPane
+) -> None:
+    box = pane.emulator_box
+    box.corrupt_count.setFocus()
+    box.corrupt_count.selectAll()
+    qtbot.keyClicks(box.corrupt_count, "0")
+    qtbot.waitUntil(box.field_note.isVisible)
+    assert "Corrupt" in box.field_note.text() and not box.note.isVisible()
+    assert box.body.isAncestorOf(box.field_note) and not box.body.isAncestorOf(box.note)
 
 
 def test_the_charger_blocks_the_machine(

@@ -192,3 +192,31 @@ def test_a_value_the_board_refuses_is_marked_with_its_error(
     settle(h, panel)
     assert shown(panel, "$20", STATE) == "✗ refused"
     assert "error 10" in panel.summary.text()
+
+
+@pytest.mark.parametrize("profile", ["grbl-plotter", "usb3"])
+def test_a_language_switch_edits_nothing(qtbot: QtBot, i18n_cache: Path, profile: str) -> None:
+    """The rows' new names and tooltips are no operator's edit: nothing is marked, and the
+    values read are shown (an edited row would keep its blank, and Apply would send it)."""
+    from app import i18n
+
+    for h, panel in build(qtbot, profile):
+        i18n.install("cs", i18n_cache)
+        try:
+            QApplication.processEvents()
+            assert panel.edited == set()
+            assert all(shown(panel, spec.key, STATE) == "" for spec in panel.specs)
+            click(qtbot, panel.apply_button)
+            assert panel.summary.text() == QApplication.translate(
+                "StoredSettingsPanel", "Nothing changed"
+            )
+            click(qtbot, panel.read_button)
+            settle(h, panel)
+            i18n.install("sk", i18n_cache)
+            QApplication.processEvents()
+            assert panel.edited == set()
+            key = panel.specs[0].key
+            combo = panel.combos.get(key)
+            assert (combo.currentText() if combo is not None else shown(panel, key)) != ""
+        finally:
+            i18n.install("en", i18n_cache)

@@ -144,6 +144,16 @@ class StoredSettingsPanel(QWidget):
             self.table.setCellWidget(row, VALUE, combo)
 
     def _retranslate_rows(self) -> None:
+        # A new tooltip on a value cell is an itemChanged too: not an operator's edit.
+        self._filling, filling = True, self._filling
+        try:
+            self._retranslate_cells()
+        finally:
+            self._filling = filling
+        self.table.resizeColumnToContents(KEY)
+        self.table.resizeColumnToContents(UNIT)
+
+    def _retranslate_cells(self) -> None:
         for row, spec in enumerate(self.specs):
             self._cell(row, NAME).setText(spec.shown_label())
             self._cell(row, UNIT).setText(spec.shown_unit())
@@ -155,8 +165,6 @@ class StoredSettingsPanel(QWidget):
                 for index, (number, _label) in enumerate(spec.choices):
                     combo.setItemText(index, spec.shown_value(number))
                 combo.setToolTip(tip)
-        self.table.resizeColumnToContents(KEY)
-        self.table.resizeColumnToContents(UNIT)
 
     def _tip(self, spec: StoredSetting) -> str:
         if spec.kind is Kind.CHOICE:
