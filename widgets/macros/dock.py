@@ -175,6 +175,8 @@ class MacrosDock(QDockWidget):
             "" if why is None or not self.macros else self.tr("Macros locked: {0}").format(why)
         )
         self.lock_label.setVisible(why is not None and bool(self.macros))
+        # No bar (an empty white box) until a macro has run: it shows that run's progress.
+        self.progress.setVisible(state is not JobState.IDLE)
         self.stop_button.setEnabled(state in ACTIVE)
         self.resume_button.setEnabled(state in (JobState.PAUSED, JobState.WAITING))
         if state in ACTIVE:
