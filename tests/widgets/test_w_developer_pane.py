@@ -329,7 +329,7 @@ def test_an_out_of_range_battery_is_shown_invalid_and_not_applied(
     box = pane.emulator_box
     _enter_value(qtbot, box.battery, "150")  # a spin box made this 15
     assert box.battery.text() == "150" and box.battery.value() is None
-    assert "Battery: 150 is outside 0…100 %" in box.note.text()
+    assert "Battery: 150 is outside 0…100 %" in box.field_note.text()
     assert connected.emulator.battery_charge != 15.0 and connected.emulator.battery_charge <= 100
     _enter_value(qtbot, box.corrupt_count, "0")
     assert not box.corrupt_button.isEnabled()
