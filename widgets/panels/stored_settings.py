@@ -51,7 +51,7 @@ from widgets.number_field import localized
 from widgets.retranslate import Texts
 
 KEY, NAME, VALUE, UNIT, STATE = range(5)
-#: Room a cell's text leaves to its frame and the item's margins, in pixels.
+# Room a cell's text leaves to its frame and the item's margins, in pixels.
 NAME_PADDING = 10
 _RED, _GREEN, _AMBER = "#d03030", "#2e9e44", "#b07000"
 
