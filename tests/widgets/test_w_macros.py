@@ -298,3 +298,34 @@ def test_the_macros_dock_beside_a_running_job_keeps_the_window_in_1280_by_800(
     hint = window.minimumSizeHint()
     assert hint.width() <= 1280 and hint.height() <= 800, hint
     assert window.size().height() <= 800
+
+
+def test_a_language_switch_mid_job_says_the_lock_again_in_the_language(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path, i18n_cache: Path
+) -> None:
+    """The job's lock reason was the text of its start: a switch to Czech left "a job is
+    under way" in English on the Manual page and in the macros dock until the job ended."""
+    from app import i18n
+
+    keep(tmp_path, Macro("Park", "G90\nG0 X0 Y0"))
+    window = open_window(qtbot, grbl, tmp_path)
+    job = tmp_path / "square.gcode"
+    job.write_text("G21 G90\nG1 X40 F600\nG1 Y40\nG1 X0\nG1 Y0\n", encoding="utf-8")
+    assert window.jobs_dock.open_path(job)
+    connect(grbl)
+    qtbot.mouseClick(window.jobs_dock.run_button, Qt.MouseButton.LeftButton)
+    dock = dock_of(window)
+    dock.show()
+    assert "a job is under way" in dock.lock_label.text()
+    try:
+        window.set_language("cs")
+        QApplication.processEvents()
+        assert dock_of(window).runner.runner.state is JobState.IDLE
+        assert window.jobs_dock.runner.state in ACTIVE
+        busy = QApplication.translate("JobRunner", "a job is under way — abort it or let it finish")
+        assert busy != "a job is under way — abort it or let it finish"
+        assert grbl.station.model.jog_lock_reason == busy
+        assert busy in dock.lock_label.text()
+        assert busy in window.manual_panel.jog_note.text()
+    finally:
+        i18n.install("en", i18n_cache)

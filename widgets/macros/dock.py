@@ -26,6 +26,7 @@ from app.jobs.run.states import ACTIVE, JobState
 from app.macros.runner import MacroRunner, macro_checkpoint_dir
 from app.macros.store import Macro, MacroStore
 from app.station import Station
+from widgets.jobs.lock_text import retranslate_jog_lock
 from widgets.retranslate import Texts
 
 #: Buttons a row.
@@ -97,6 +98,7 @@ class MacrosDock(QDockWidget):
         model.lockChanged.connect(self._update)
         model.linkStateChanged.connect(self._update)
         station.sessionChanged.connect(self._update)
+        t.also(lambda: retranslate_jog_lock(self.runner.runner))  # first: _update reads it
         t.also(self._update)
         self._build_buttons()
         # Macros the settings file held but could not be read back (said once, here).
