@@ -225,6 +225,51 @@ def plotter(work: Path) -> tuple[StationHarness, MainWindow]:
     return harness, window
 
 
+def gcode_machine(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The GRBL plotter's G-code page mid-job: work zero, overrides (feed at 90 %), and the
+    macros under the page (refused while the job runs)."""
+    from app.macros.store import checked_macro
+
+    harness, window = _window("grbl-plotter", work)
+    _page(window, "G-code")
+    job = work / "square.gcode"
+    job.write_text(
+        "G21 G90\nG0 X10 Y10\nM3 S1000\nG1 X60 F3000\nG1 Y60\nG1 X10\nG1 Y10\n"
+        "G1 X60 Y60\nM5\nG0 X0 Y0\n",
+        encoding="utf-8",
+    )
+    window.jobs_dock.show()
+    assert window.macros is not None
+    window.macros.dock.set_macros(
+        [
+            checked_macro("Park", "G90\nM5\nG0 X0 Y0"),
+            checked_macro("Pen test", "M3 S1000\nG4 P0.5\nM5"),
+            checked_macro("Centre", "G90\nG0 X150 Y100"),
+        ]
+    )
+    window.macros.action.trigger()  # Ctrl+M: under the page
+    window.jobs_dock.open_path(job)
+    window.jobs_dock.run_button.click()
+    harness.run(1.0)
+    gcode = window.pages.gcode
+    assert gcode is not None
+    gcode.overrides.feed_minus_10.click()  # F5: the job slows to 90 %
+    harness.run(2.0)
+    return harness, window
+
+
+def settings(work: Path) -> tuple[StationHarness, MainWindow]:
+    """The GRBL plotter's stored settings read ($$), beside the jobs dock."""
+    harness, window = _window("grbl-plotter", work)
+    window.jobs_dock.show()
+    _page(window, "Settings")
+    panel = window.pages.settings
+    assert panel is not None
+    panel.read_button.click()
+    harness.run(2.0)
+    return harness, window
+
+
 SHOTS: dict[str, Callable[[Path], tuple[StationHarness, QWidget]]] = {
     "main-window": main_window,
     "dynamics": dynamics,
@@ -239,6 +284,8 @@ SHOTS: dict[str, Callable[[Path], tuple[StationHarness, QWidget]]] = {
     "jobs": jobs,
     "plotter": plotter,
     "string-art-from-photo": string_art_from_photo,
+    "gcode-machine": gcode_machine,
+    "settings": settings,
 }
 
 

@@ -87,6 +87,14 @@ class PageArea(QScrollArea):
         own size or its scroll bar changes, so a short page kept a tall one's scroll range."""
         QCoreApplication.postEvent(self, QEvent(QEvent.Type.LayoutRequest))
 
+    def event(self, event: QEvent) -> bool:
+        """A page grown wider (a usb3 page once its values came) asks its stack to lay out
+        again, and that request lands here: the window's layout kept the area's old
+        minimum, cached, and cut the page's right edge by the difference."""
+        if event.type() == QEvent.Type.LayoutRequest:
+            self.updateGeometry()
+        return super().event(event)
+
     def minimumSizeHint(self) -> QSize:
         """The pages' width and a scroll bar's; a few lines of height, the rest scrolls."""
         bar = self.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent, None, self)

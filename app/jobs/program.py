@@ -57,11 +57,14 @@ class Operation:
         if self.kind is OpKind.MOVE:
             where = " ".join(f"{axis}{value:.3f}" for axis, value in self.target.items())
             return translate("JobFile", "move to {0}").format(where)
+        # The kinds' words are translated where the window names them (context "Operation"):
+        # a refusal listed "pen down" in English in a Czech window.
+        kind = translate("Operation", self.kind.value)
         if self.kind in (OpKind.WAIT, OpKind.COMMENT) and self.message:
-            return f"{self.kind.value}: {self.message}"
+            return f"{kind}: {self.message}"
         if self.kind is OpKind.GCODE and self.line:
             return clipped(self.line)
-        return str(self.kind.value)
+        return kind
 
 
 def move(source: SourceRef, **target: float) -> Operation:

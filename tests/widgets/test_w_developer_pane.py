@@ -262,11 +262,26 @@ def test_emulator_controls_wait_for_an_emulator(
 ) -> None:
     box = pane.emulator_box
     assert not box.body.isEnabled() and box.note.isVisible()
+    assert box.note.text().startswith("No emulator connected")  # the line itself, not a blank
+    assert not box.field_note.isVisible()  # the fields' note says nothing until one is wrong
     harness.connect()
     assert box.body.isEnabled() and not box.note.isVisible()
     assert box.battery.value() == 80 and box.temperature.value() == 25.0
     harness.station.close_link()
-    assert not box.body.isEnabled()
+    assert not box.body.isEnabled() and box.note.isVisible()
+    assert box.note.text().startswith("No emulator connected")
+
+
+def test_a_wrong_value_is_named_under_the_fields_not_in_the_no_emulator_line(
+    qtbot: QtBot, connected: StationHarness, pane: DeveloperPane
+) -> None:
+    box = pane.emulator_box
+    box.corrupt_count.setFocus()
+    box.corrupt_count.selectAll()
+    qtbot.keyClicks(box.corrupt_count, "0")
+    qtbot.waitUntil(box.field_note.isVisible)
+    assert "Corrupt" in box.field_note.text() and not box.note.isVisible()
+    assert box.body.isAncestorOf(box.field_note) and not box.body.isAncestorOf(box.note)
 
 
 def test_the_charger_blocks_the_machine(
@@ -314,7 +329,7 @@ def test_an_out_of_range_battery_is_shown_invalid_and_not_applied(
     box = pane.emulator_box
     _enter_value(qtbot, box.battery, "150")  # a spin box made this 15
     assert box.battery.text() == "150" and box.battery.value() is None
-    assert "Battery: 150 is outside 0…100 %" in box.note.text()
+    assert "Battery: 150 is outside 0…100 %" in box.field_note.text()
     assert connected.emulator.battery_charge != 15.0 and connected.emulator.battery_charge <= 100
     _enter_value(qtbot, box.corrupt_count, "0")
     assert not box.corrupt_button.isEnabled()

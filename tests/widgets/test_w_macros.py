@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QFileDialog
+from PySide6.QtWidgets import QApplication, QFileDialog
 from pytestqt.qtbot import QtBot
 
 from app.jobs.run.states import ACTIVE, JobState
@@ -72,10 +72,11 @@ def test_a_click_runs_the_macro_and_ctrl_2_the_second(
     assert [b.text() for b in dock.buttons] == ["1  Corner", "2  Home"]
     assert not dock.buttons[0].isEnabled()  # not connected yet
     assert "not connected" in dock.lock_label.text()
+    assert not dock.progress.isVisible()  # no empty bar before a macro has run
     connect(grbl)
     assert dock.buttons[0].isEnabled()
     qtbot.mouseClick(dock.buttons[0], Qt.MouseButton.LeftButton)
-    assert dock.runner.state in ACTIVE
+    assert dock.runner.state in ACTIVE and dock.progress.isVisible()
     assert not dock.buttons[1].isEnabled()  # one macro at a time
     assert dock.stop_button.isEnabled()
     grbl.run_until(lambda: dock.runner.state is JobState.DONE, timeout=60)
@@ -271,3 +272,60 @@ def test_a_lost_link_pauses_the_macro_and_resume_finishes_it(
     grbl.run_until(lambda: dock.runner.state not in ACTIVE, timeout=120)
     assert dock.runner.state is JobState.DONE, dock.message_label.text()
     assert position(grbl) == (60.0, 0.0)
+
+
+def test_the_macros_dock_beside_a_running_job_keeps_the_window_in_1280_by_800(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path
+) -> None:
+    """Jobs, plots and macros shown at once, a job running: the window still fits the
+    screen (under the jobs dock the macros made it 856 px tall), the macros a tab beside
+    the plots, brought to the front by Ctrl+M."""
+    window = open_window(qtbot, grbl, tmp_path)
+    window.resize(1280, 800)
+    window.jobs_dock.show()
+    window.telemetry_dock.show()
+    job = tmp_path / "square.gcode"
+    job.write_text("G21 G90\nG1 X40 F3000\nG1 Y40\nG1 X0\nG1 Y0\n", encoding="utf-8")
+    assert window.jobs_dock.open_path(job)
+    connect(grbl)
+    qtbot.mouseClick(window.jobs_dock.run_button, Qt.MouseButton.LeftButton)
+    assert window.jobs_dock.runner.state in ACTIVE
+    qtbot.keyClick(window.manual_panel, Qt.Key.Key_M, Qt.KeyboardModifier.ControlModifier)
+    dock = dock_of(window)
+    QApplication.processEvents()
+    assert dock.isVisible() and not dock.visibleRegion().isEmpty()  # in front of its tab
+    assert dock in window.tabifiedDockWidgets(window.telemetry_dock)
+    hint = window.minimumSizeHint()
+    assert hint.width() <= 1280 and hint.height() <= 800, hint
+    assert window.size().height() <= 800
+
+
+def test_a_language_switch_mid_job_says_the_lock_again_in_the_language(
+    qtbot: QtBot, grbl: StationHarness, tmp_path: Path, i18n_cache: Path
+) -> None:
+    """The job's lock reason was the text of its start: a switch to Czech left "a job is
+    under way" in English on the Manual page and in the macros dock until the job ended."""
+    from app import i18n
+
+    keep(tmp_path, Macro("Park", "G90\nG0 X0 Y0"))
+    window = open_window(qtbot, grbl, tmp_path)
+    job = tmp_path / "square.gcode"
+    job.write_text("G21 G90\nG1 X40 F600\nG1 Y40\nG1 X0\nG1 Y0\n", encoding="utf-8")
+    assert window.jobs_dock.open_path(job)
+    connect(grbl)
+    qtbot.mouseClick(window.jobs_dock.run_button, Qt.MouseButton.LeftButton)
+    dock = dock_of(window)
+    dock.show()
+    assert "a job is under way" in dock.lock_label.text()
+    try:
+        window.set_language("cs")
+        QApplication.processEvents()
+        assert dock_of(window).runner.runner.state is JobState.IDLE
+        assert window.jobs_dock.runner.state in ACTIVE
+        busy = QApplication.translate("JobRunner", "a job is under way — abort it or let it finish")
+        assert busy != "a job is under way — abort it or let it finish"
+        assert grbl.station.model.jog_lock_reason == busy
+        assert busy in dock.lock_label.text()
+        assert busy in window.manual_panel.jog_note.text()
+    finally:
+        i18n.install("en", i18n_cache)

@@ -192,3 +192,68 @@ def test_a_value_the_board_refuses_is_marked_with_its_error(
     settle(h, panel)
     assert shown(panel, "$20", STATE) == "✗ refused"
     assert "error 10" in panel.summary.text()
+
+
+@pytest.mark.parametrize("profile", ["grbl-plotter", "usb3"])
+def test_a_language_switch_edits_nothing(qtbot: QtBot, i18n_cache: Path, profile: str) -> None:
+    """The rows' new names and tooltips are no operator's edit: nothing is marked, and the
+    values read are shown (an edited row would keep its blank, and Apply would send it)."""
+    from app import i18n
+
+    for h, panel in build(qtbot, profile):
+        i18n.install("cs", i18n_cache)
+        try:
+            QApplication.processEvents()
+            assert panel.edited == set()
+            assert all(shown(panel, spec.key, STATE) == "" for spec in panel.specs)
+            click(qtbot, panel.apply_button)
+            assert panel.summary.text() == QApplication.translate(
+                "StoredSettingsPanel", "Nothing changed"
+            )
+            click(qtbot, panel.read_button)
+            settle(h, panel)
+            i18n.install("sk", i18n_cache)
+            QApplication.processEvents()
+            assert panel.edited == set()
+            key = panel.specs[0].key
+            combo = panel.combos.get(key)
+            assert (combo.currentText() if combo is not None else shown(panel, key)) != ""
+        finally:
+            i18n.install("en", i18n_cache)
+
+
+def name_shown_whole(panel: StoredSettingsPanel, row: int) -> bool:
+    """The row's name, wrapped at its column's width, fits the row (no "…")."""
+    from PySide6.QtCore import QRect
+
+    from widgets.panels.stored_settings import NAME, NAME_PADDING
+
+    table = panel.table
+    width = table.columnWidth(NAME) - NAME_PADDING
+    text = shown(panel, panel.specs[row].key, NAME)
+    needed = table.fontMetrics().boundingRect(
+        QRect(0, 0, width, 10_000), Qt.TextFlag.TextWordWrap, text
+    )
+    return needed.width() <= width and needed.height() <= table.rowHeight(row)
+
+
+@pytest.mark.parametrize("language", ["en", "cs", "sk"])
+def test_every_name_is_shown_whole_in_a_narrow_page(
+    qtbot: QtBot, i18n_cache: Path, language: str
+) -> None:
+    """Beside the jobs dock the page is about 470 px wide: a long name (Czech, Slovak)
+    wraps onto more lines of its row instead of ending in "…"."""
+    from app import i18n
+    from widgets.panels.stored_settings import NAME
+
+    i18n.install(language, i18n_cache)
+    panels = build(qtbot, "grbl-plotter")
+    try:
+        _h, panel = next(panels)
+        panel.resize(470, 700)
+        rows = range(panel.table.rowCount())
+        qtbot.waitUntil(lambda: all(name_shown_whole(panel, row) for row in rows))
+        assert panel.table.columnWidth(NAME) >= 90  # the value and state columns left it room
+    finally:
+        panels.close()
+        i18n.install("en", i18n_cache)

@@ -264,8 +264,10 @@ class EmulatorBox(QGroupBox):
         form = self._build_fields(t, controls)
         axes = self._build_axes(t, controls, axis_names)
         link = self._build_link(t, controls)
-        self.note = QLabel()
-        self.gate = FieldGate(self.note, self)
+        # The fields' own note (what is wrong with a value typed), under them; ``note``
+        # above is the box's "no emulator" line.
+        self.field_note = QLabel()
+        self.gate = FieldGate(self.field_note, self)
         self.gate.watch(self.battery, lambda: self.tr("Battery"))
         self.gate.watch(self.temperature, lambda: self.tr("Temperature"))
         self.gate.watch(self.rotation, lambda: self.tr("Rotation rate"))
@@ -279,7 +281,7 @@ class EmulatorBox(QGroupBox):
         body.addLayout(form)
         body.addLayout(axes)
         body.addLayout(link)
-        body.addWidget(self.note)
+        body.addWidget(self.field_note)
         layout = QVBoxLayout(self)
         layout.addWidget(self.note)
         layout.addWidget(self.body)

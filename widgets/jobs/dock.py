@@ -54,6 +54,7 @@ from app.machines.drill.session import DrillSession
 from app.station import Station
 from widgets.jobs.export import JobExport
 from widgets.jobs.loading import JobLoading
+from widgets.jobs.lock_text import retranslate_jog_lock
 from widgets.jobs.operation_text import operation_text
 from widgets.jobs.options import JobOptionsBox
 from widgets.jobs.preview import ACTIVE_STATES, DEFAULT_THROTTLE_MS, JobPreview
@@ -254,6 +255,7 @@ class JobsDock(QDockWidget):
         if self._loading is None:  # while a file is read, its name stays until it is in
             self._show_file(self.runner.program)
         self.run_controls.retranslate()
+        retranslate_jog_lock(self.runner)
         self._show_resume_offer()
         self._update_buttons()
 

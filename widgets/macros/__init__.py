@@ -75,7 +75,8 @@ class WindowMacros(QObject):
             self._dock = MacrosDock(
                 self._station, self._store, self._checkpoint_dir, parent=self._window
             )
-            self._docks.place_dock(self._dock, Qt.DockWidgetArea.RightDockWidgetArea, self.action)
+            # With the plots, as a tab: under the jobs dock the window would pass 800 px.
+            self._docks.place_dock(self._dock, Qt.DockWidgetArea.BottomDockWidgetArea, self.action)
         return self._dock
 
     @property

@@ -26,6 +26,7 @@ from app.jobs.run.states import ACTIVE, JobState
 from app.macros.runner import MacroRunner, macro_checkpoint_dir
 from app.macros.store import Macro, MacroStore
 from app.station import Station
+from widgets.jobs.lock_text import retranslate_jog_lock
 from widgets.retranslate import Texts
 
 #: Buttons a row.
@@ -97,6 +98,7 @@ class MacrosDock(QDockWidget):
         model.lockChanged.connect(self._update)
         model.linkStateChanged.connect(self._update)
         station.sessionChanged.connect(self._update)
+        t.also(lambda: retranslate_jog_lock(self.runner.runner))  # first: _update reads it
         t.also(self._update)
         self._build_buttons()
         # Macros the settings file held but could not be read back (said once, here).
@@ -175,6 +177,8 @@ class MacrosDock(QDockWidget):
             "" if why is None or not self.macros else self.tr("Macros locked: {0}").format(why)
         )
         self.lock_label.setVisible(why is not None and bool(self.macros))
+        # No bar (an empty white box) until a macro has run: it shows that run's progress.
+        self.progress.setVisible(state is not JobState.IDLE)
         self.stop_button.setEnabled(state in ACTIVE)
         self.resume_button.setEnabled(state in (JobState.PAUSED, JobState.WAITING))
         if state in ACTIVE:

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRect, Qt, QTimer
 from PySide6.QtGui import QBrush, QColor
 from PySide6.QtWidgets import (
     QComboBox,
@@ -27,6 +27,7 @@ from PySide6.QtWidgets import (
     QHeaderView,
     QLabel,
     QMessageBox,
+    QStyle,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
@@ -50,6 +51,8 @@ from widgets.number_field import localized
 from widgets.retranslate import Texts
 
 KEY, NAME, VALUE, UNIT, STATE = range(5)
+# Room a cell's text leaves to its frame and the item's margins, in pixels.
+NAME_PADDING = 10
 _RED, _GREEN, _AMBER = "#d03030", "#2e9e44", "#b07000"
 
 
@@ -75,7 +78,11 @@ class StoredSettingsPanel(QWidget):
         self.table = QTableWidget(len(specs), 5)
         self.table.setObjectName("stored_settings")
         self.table.verticalHeader().hide()
-        self.table.horizontalHeader().setSectionResizeMode(NAME, QHeaderView.ResizeMode.Stretch)
+        header = self.table.horizontalHeader()
+        header.setSectionResizeMode(NAME, QHeaderView.ResizeMode.Stretch)
+        # The names wrap: a row as tall as its name needs at the width the page gives.
+        # (A stretched column's width follows the table's, without sectionResized.)
+        self.table.installEventFilter(self)
         self.combos: dict[str, QComboBox] = {}
         for row, spec in enumerate(specs):
             self._build_row(row, spec)
@@ -144,6 +151,54 @@ class StoredSettingsPanel(QWidget):
             self.table.setCellWidget(row, VALUE, combo)
 
     def _retranslate_rows(self) -> None:
+        # A new tooltip on a value cell is an itemChanged too: not an operator's edit.
+        self._filling, filling = True, self._filling
+        try:
+            self._retranslate_cells()
+        finally:
+            self._filling = filling
+        self.table.resizeColumnToContents(KEY)
+        self.table.resizeColumnToContents(UNIT)
+        self._size_columns()
+
+    def _size_columns(self) -> None:
+        """The value and state columns as wide as what they show, the rest to the names.
+
+        At their default 100 px each, in Czech or Slovak the names were cut to
+        "Inverze …" on a page beside the jobs dock; a long name now wraps onto a
+        second line of its row instead.
+        """
+        metrics = self.table.fontMetrics()
+        pad = 4 * self.table.style().pixelMetric(QStyle.PixelMetric.PM_FocusFrameHMargin) + 12
+        widest_value = max(
+            [metrics.horizontalAdvance("-00000.000")]
+            + [combo.sizeHint().width() - pad for combo in self.combos.values()]
+        )
+        self.table.setColumnWidth(VALUE, widest_value + pad)
+        states = [self.tr("✗ not allowed"), self.tr("✓ read back"), self.tr("• edited")]
+        states += [self.tr("✗ refused"), self.tr("State")]
+        self.table.setColumnWidth(STATE, max(metrics.horizontalAdvance(s) for s in states) + pad)
+        self._fit_rows()
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        if watched is self.table and event.type() == QEvent.Type.Resize:
+            QTimer.singleShot(0, self, self._fit_rows)  # once the header has stretched
+        return super().eventFilter(watched, event)
+
+    def _fit_rows(self) -> None:
+        """Each row as tall as its name wrapped at the name column's width (the item
+        delegate measures one line whatever the width)."""
+        metrics = self.table.fontMetrics()
+        width = self.table.columnWidth(NAME) - NAME_PADDING
+        line = self.table.verticalHeader().defaultSectionSize()
+        for row in range(self.table.rowCount()):
+            text = self._cell(row, NAME).text()
+            needed = metrics.boundingRect(
+                QRect(0, 0, max(width, 1), 10_000), Qt.TextFlag.TextWordWrap, text
+            ).height()
+            self.table.setRowHeight(row, max(line, needed + NAME_PADDING))
+
+    def _retranslate_cells(self) -> None:
         for row, spec in enumerate(self.specs):
             self._cell(row, NAME).setText(spec.shown_label())
             self._cell(row, UNIT).setText(spec.shown_unit())
@@ -155,8 +210,6 @@ class StoredSettingsPanel(QWidget):
                 for index, (number, _label) in enumerate(spec.choices):
                     combo.setItemText(index, spec.shown_value(number))
                 combo.setToolTip(tip)
-        self.table.resizeColumnToContents(KEY)
-        self.table.resizeColumnToContents(UNIT)
 
     def _tip(self, spec: StoredSetting) -> str:
         if spec.kind is Kind.CHOICE:

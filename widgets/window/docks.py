@@ -119,6 +119,7 @@ class WindowDocks(QObject):
         """A dock of :attr:`more`, built just now: placed, saved and restored as these are."""
         self._more_built.append(dock)
         self._add_dock(dock, area, action)
+        self._tabify_bottom()
 
     def _add_dock(self, dock: QDockWidget, area: Qt.DockWidgetArea, action: QAction) -> None:
         """Place a dock built just now where the last session left it, hidden until asked."""
@@ -197,22 +198,22 @@ class WindowDocks(QObject):
         return self._developer_pane
 
     def _tabify_bottom(self) -> None:
-        """The plots and the developer pane share the bottom as tabs, unless placed otherwise.
+        """The docks of the bottom (the plots, the developer pane, the macros) share it as
+        tabs, unless placed otherwise.
 
-        Side by side the two need more than a 1280 px screen.  Either can still
-        be dragged out to float.
+        Side by side they need more than a 1280 px screen, and the macros under the
+        jobs dock more than 800 px.  Any can still be dragged out to float.
         """
-        telemetry, developer = self._telemetry_dock, self._developer_pane
-        if telemetry is None or developer is None:
-            return
         window = self._window
         bottom = Qt.DockWidgetArea.BottomDockWidgetArea
-        if any(
-            d.isFloating() or window.dockWidgetArea(d) != bottom for d in (telemetry, developer)
-        ):
-            return
-        if developer not in window.tabifiedDockWidgets(telemetry):
-            window.tabifyDockWidget(telemetry, developer)
+        docks = [
+            d
+            for d in (self._telemetry_dock, self._developer_pane, *self._more_built)
+            if d is not None and not d.isFloating() and window.dockWidgetArea(d) == bottom
+        ]
+        for dock in docks[1:]:
+            if dock not in window.tabifiedDockWidgets(docks[0]):
+                window.tabifyDockWidget(docks[0], dock)
 
     def built(self) -> list[QDockWidget]:
         """The docks built so far (none until first wanted)."""
