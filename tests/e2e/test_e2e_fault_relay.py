@@ -110,11 +110,16 @@ _DRILL_TWICE = (
     " 'done' (seeds 55, 85; app/machines/drill/unasked.py), but the judge counts the hole"
 )
 _WINDER = (
-    "18-19 bytes lost on the way to the winder in its winding phase (seeds 42, 174,"
-    " replayed: the same every time): a wrap across nails 0-2 where nail 2 was due (42), a"
-    " wrap at nail 1 where nail 6 was (174), and the job done; the winding's A moves all"
-    " turn one way, so a move lost between two others may leave the reports on the path,"
-    " but the cause was not pinned down in the session that found it (h-relay4)"
+    "undetectable at the relay's speed: 18-19 bytes lost on the way to the winder join two"
+    " lines into one valid line (42: 'G1 A1057.500 F4500' + 'G1 X45.000 F3750' arrive as"
+    " 'G1  X45.000 F3750', the wrap's A move gone; 174: 'G1 X45.000 F3750' + 'G1 A562.500"
+    " F4500' arrive as 'G1 X4.500 F4500'); one line fewer means one 'ok' fewer, which the"
+    " wire cannot tell from an 'ok' lost on the way (counted as answered once the winder is"
+    " idle with every byte taken), and the wrong motion (6-9 s of the winder's time off the"
+    " path by 40 mm or 45 degrees, then back on it) runs between two status reports under"
+    " the relay's 50x emulated time (a report every 10 s of the winder's); on a winder at its"
+    " own speed it spans 30-45 reports and is stopped (h-relay5: 42 replayed twice, stopped"
+    " once, wrong once)"
 )
 _NOT_MEASURED = (
     "real GRBL (grbl-sim) was not in the slow mode of 28 Nov 2026; its entries stand from"
