@@ -539,11 +539,10 @@ class Usb3Session(MachineSession):
         return False
 
     def _at_rest(self, axis: int) -> bool:
-        """Heard on this link, standing, and no move of the station's under way: asked where
-        it stands, it must stand.  (Just after a connect an axis may still run out a move the
-        link lost, or follow the joystick: nothing says it stood.)"""
-        heard = self._reported_at[axis] is not None
-        return heard and self._heading[axis] is None and self._last_report[axis] is None
+        """No move of the station's under way and not heard moving: asked where it stands, it
+        must stand.  (An axis that may still run out a move sent before the link dropped
+        may run to that move's target: see :meth:`_on_connected`.)"""
+        return self._heading[axis] is None and self._last_report[axis] is None
 
     def _judge_answer(self, axis: int, count: int) -> None:
         """An axis only asked where it stands moves on: the question ran as a move; stop it."""
@@ -661,6 +660,9 @@ class Usb3Session(MachineSession):
         self._zeroing = [False] * self.axis_count
         self._asking = [False] * self.axis_count
         self._held.release()
+        for axis, heading in enumerate(self._heading):
+            if heading is not None:
+                self._held.late(axis, heading[0])  # the unit may still run it out
         self._heading = [None] * 3
         self._move_from = [None] * 3
         self._refused_at = None
