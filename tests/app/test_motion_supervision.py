@@ -223,6 +223,80 @@ def test_a_usb3_move_whose_direction_was_lost_is_stopped_one_report_off_its_path
     assert "(Y -0.500 mm, -3200 counts)" in fault.text
 
 
+def test_a_usb3_question_arriving_as_a_long_move_is_stopped_one_report_after_its_answer(
+    usb3: Watched,
+) -> None:
+    """The relay's seed 134: "where does Y stand" (a move of nothing) arrived with one bit
+    flipped as a move of 20 000 000 counts.  No move of the station's was in flight, so the
+    reports looked like the joystick's and Y ran on for the whole travel."""
+    unit = usb3.harness
+    session, firmware = unit.usb3_session, unit.usb3_emulator
+    start = firmware.positions[Y]
+
+    def noisy_cable(direction: Direction, data: bytes) -> bytes:
+        if direction is Direction.TO_DEVICE:
+            return data.replace(b"Y000000000000000;", b"Y000000020000000;")
+        return data
+
+    unit.loopback.set_manipulator(noisy_cable)
+    mark = len(unit.written)
+    session.request_positions([Y])
+    unit.run_until(lambda: bool(usb3.faults), timeout=10.0)
+    assert b"S;" in b"".join(unit.written[mark:])
+    unit.loopback.set_manipulator(None)
+    unit.run_until(lambda: not firmware.moving(AxisId.Y), timeout=2.0)
+    # Its answer, one report at top speed (100 ms), and the braking: well under a millimetre.
+    assert 0 < count_to_mm(firmware.positions[Y] - start, Thread.M6) < 1.0
+    (fault,) = usb3.faults
+    assert "moved while nothing was sent (Y asked where it stands, a move of nothing)" in (
+        fault.text
+    ), fault.text
+    assert fault.text in usb3.messages
+    unit.run(2.0)
+    assert len(usb3.faults) == 1  # one stop, one message
+
+
+def test_a_usb3_question_at_connect_arriving_as_a_long_move_is_stopped(qtbot: QtBot) -> None:
+    """Seed 134 as the relay ran it: the question of the connect itself, before any axis was
+    heard, arrived as a move of 20 000 000 counts."""
+    unit = StationHarness(load_profile("usb3"))
+    try:
+        faults: list[MotionFault] = []
+        unit.connect(wait_for_answer=False)
+        session = unit.usb3_session
+        session.motionFault.connect(faults.append)
+        unit.loopback.set_manipulator(
+            lambda direction, data: (
+                data.replace(b"Y000000000000000;", b"Y000000020000000;", 1)
+                if direction is Direction.TO_DEVICE
+                else data
+            )
+        )
+        unit.run_until(lambda: bool(faults), timeout=10.0)
+        unit.loopback.set_manipulator(None)
+        unit.run_until(lambda: not unit.usb3_emulator.moving(AxisId.Y), timeout=2.0)
+        assert count_to_mm(unit.usb3_emulator.positions[Y], Thread.M6) < 1.0
+        assert "Y asked where it stands, a move of nothing" in faults[0].text
+    finally:
+        unit.close()
+
+
+def test_a_usb3_question_answered_at_rest_never_trips_and_the_joystick_moves_after(
+    usb3: Watched,
+) -> None:
+    """The hold ends once the axis has stood: the joystick moves it afterwards, unjudged."""
+    unit = usb3.harness
+    session, firmware = unit.usb3_session, unit.usb3_emulator
+    session.request_positions([X, Y, Z])
+    unit.run(1.0)
+    firmware.set_joystick(AxisId.Y, ADC_MAX)
+    unit.run(1.0)
+    firmware.set_joystick(AxisId.Y, 512)
+    unit.run(1.0)
+    assert firmware.positions[Y] > 0
+    assert usb3.faults == [], usb3.faults
+
+
 def test_a_usb3_move_lost_in_a_silent_line_is_forgotten_once_the_unit_answers_unmoved(
     usb3: Watched,
 ) -> None:

@@ -60,9 +60,10 @@ from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 from app.link import Link
 from app.local_numbers import local_number
 from app.machine import LinkState, MachineModel
-from app.machines.envelope import Envelope
+from app.machines.envelope import Deviation, Envelope, Fault
 from app.machines.session import PENDING, MachineSession
 from app.machines.supervision import MotionFault, fault_text
+from app.machines.usb3.question_hold import QuestionHold
 from protocol.clock import Clock
 from protocol.usb3.codec import (
     TOP_PULSE_RATE,
@@ -137,6 +138,8 @@ class Usb3Session(MachineSession):
         #: Asked where it stands (a move of nothing) and not answered yet: its next report
         #: is where it stands, not a motion.
         self._asking = [False] * self.axis_count
+        #: Axes asked where they stand at rest, which must stand (a question run as a move).
+        self._held = QuestionHold()
         #: Where the jog leads sent so far take each axis (None: from its position).
         self._jog_end: list[float | None] = [None] * self.axis_count
         #: Per axis: the count the moves sent are heading for, their direction and when the
@@ -273,6 +276,8 @@ class Usb3Session(MachineSession):
         if wanted and self.link.is_open:
             for axis in wanted:
                 self._asking[axis] = True
+                if self._at_rest(axis):
+                    self._held.asked(axis, self.clock.now())
             self._send(SetDirection((1, 1, 1)), *(Move(axis, 0) for axis in wanted))
 
     def stop_all(self) -> None:
@@ -412,9 +417,11 @@ class Usb3Session(MachineSession):
         were lost.  Counting them would shift every later move's target (a job sends the
         move again), so the axis is judged from where it stands."""
         for axis, books in enumerate(self._books):
-            if books is None or axis >= len(self._before) or self._heading[axis] is None:
+            heading = self._heading[axis]
+            if books is None or axis >= len(self._before) or heading is None:
                 continue
             if self._counts[axis] == self._before[axis]:
+                self._held.late(axis, heading[0])  # if it was only held back, it runs yet
                 self._heading[axis] = None
                 self._envelopes[axis].anchor((self._counts[axis],))
 
@@ -464,11 +471,13 @@ class Usb3Session(MachineSession):
                 base = 0  # counted from the zero C; set, whose report is still to come
             sign = self._signs[axis]
             self._move_from[axis] = base if heading is None else None
+            self._held.release(axis)
             self._heading[axis] = (base + sign * message.count, sign, self.clock.now())
             self._expect(axis, heading is None, base, base + sign * message.count)
         elif isinstance(message, StopAll | ZeroAll):
             # Stopped on purpose, or counted from a new zero: no target to fall short of.
             self._heading = [None] * 3
+            self._held.release()
             for envelope in self._envelopes:
                 if isinstance(message, ZeroAll):
                     envelope.anchor((0,))  # every count starts again from 0
@@ -528,6 +537,27 @@ class Usb3Session(MachineSession):
             each.release()  # stopped: the next reports say where it stands
         self.stop_for_fault(MotionFault(text))
         return False
+
+    def _at_rest(self, axis: int) -> bool:
+        """No move of the station's under way and not heard moving: asked where it stands, it
+        must stand.  (An axis that may still run out a move sent before the link dropped
+        may run to that move's target: see :meth:`_on_connected`.)"""
+        return self._heading[axis] is None and self._last_report[axis] is None
+
+    def _judge_answer(self, axis: int, count: int) -> None:
+        """An axis only asked where it stands moves on: the question ran as a move; stop it."""
+        stood = self._held.report(axis, count, self.clock.now())
+        if stood is None:
+            return
+        name = self.model.axes[axis].name
+        label = QCoreApplication.translate(
+            "Usb3Session", "{0} asked where it stands, a move of nothing"
+        ).format(name)
+        deviation = Deviation(Fault.MOVED_AT_REST, (count,), (stood,), abs(count - stood), label)
+        text = fault_text(deviation, [name], scale=1 / count_per_mm(self.threads[axis]))
+        for each in self._envelopes:
+            each.release()  # stopped: the next reports say where it stands
+        self.stop_for_fault(MotionFault(text))
 
     def _counts_of(self, axis: int) -> int:
         return self._counts[axis] if axis < self.axis_count else 0
@@ -629,6 +659,10 @@ class Usb3Session(MachineSession):
         self._jog = [0] * self.axis_count
         self._zeroing = [False] * self.axis_count
         self._asking = [False] * self.axis_count
+        self._held.release()
+        for axis, heading in enumerate(self._heading):
+            if heading is not None:
+                self._held.late(axis, heading[0])  # the unit may still run it out
         self._heading = [None] * 3
         self._move_from = [None] * 3
         self._refused_at = None
@@ -713,6 +747,7 @@ class Usb3Session(MachineSession):
     def _apply_position(self, axis: AxisId, count: int) -> None:
         if axis >= self.axis_count:
             return
+        self._judge_answer(axis, count)
         self._judge_report(axis, count)
         now = self.clock.now()
         self._reported_at[axis] = now
