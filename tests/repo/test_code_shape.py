@@ -27,7 +27,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/machines/session.py::MachineSession": "not yet taken on",
     "app/machines/stage/session.py::StageSession": "not yet taken on",
     "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
-    "protocol/emulator/gcode_firmware.py::GcodeFirmware": "not yet taken on",
 }
 
 
