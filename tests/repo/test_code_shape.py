@@ -25,7 +25,6 @@ NOT_YET_SPLIT: dict[str, str] = {
     "app/jobs/run/gcode.py::GcodeDriver": "not yet taken on",
     "app/machines/drill/session.py::DrillSession": "not yet taken on",
     "app/machines/session.py::MachineSession": "not yet taken on",
-    "app/machines/usb3/session.py::Usb3Session": "not yet taken on",
 }
 
 
