@@ -21,6 +21,8 @@ from app.machines.stage.echoes import STATUS_TEXT as STATUS_TEXT  # re-exported 
 from app.machines.stage.echoes import SUBSCRIBER_TELEMETRY as SUBSCRIBER_TELEMETRY
 from app.machines.stage.echoes import StageEchoes
 from app.machines.stage.frames import INFO_SUBSCRIBERS as INFO_SUBSCRIBERS  # re-exported
+from app.machines.stage.frames import JOG_END_MARGIN_MM as JOG_END_MARGIN_MM
+from app.machines.stage.frames import MAX_BURST as MAX_BURST
 from app.machines.stage.frames import SUPERSEDING, StageFrames, to_um
 from app.machines.stage.frames import SubscriberScheduler as SubscriberScheduler
 from app.machines.stage.parameters import BY_TYPE, beyond_mechanics
