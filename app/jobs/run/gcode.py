@@ -24,20 +24,18 @@ coordinates that reach it with the offset the board has then.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from contextlib import AbstractContextManager, nullcontext
 from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
 
 from app.jobs.program import Program
-from app.jobs.run.driver import JobDriver, ResumeChoice, RunnerPort
+from app.jobs.run.driver import ResumeChoice, RunnerPort
+from app.jobs.run.gcode_books import GcodeBooks
+from app.jobs.run.gcode_books import offset_on as _offset
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     AtReport,
     GcodeStream,
-    ResumeState,
-    file_offset,
     preamble,
     resume_state,
     retrace,
@@ -51,8 +49,6 @@ from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
 
-#: Work offsets closer than this (mm) are the same (GRBL reports three decimals).
-OFFSET_SAME_MM = 0.002
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
 #: Station-clock seconds between "operation under way" announcements while lines stream.
@@ -80,7 +76,7 @@ def modes_confirm(modes: str, words: tuple[str, ...]) -> str | None:
     return f"still not in {' '.join(missing)} after the set-up ({modes})" if missing else None
 
 
-class GcodeDriver(JobDriver):
+class GcodeDriver(GcodeBooks):
     """Feeds the runner's program to the G-code session and reports progress to the runner."""
 
     takes_gcode = True
@@ -127,11 +123,6 @@ class GcodeDriver(JobDriver):
         self._held_by_machine = False
         #: The operator's chosen start (its state rebuilt once the machine is looked at).
         self._start: StartPlan | None = None
-
-    def _locked(self) -> AbstractContextManager[object]:
-        """The feed's lock: the reader thread pulls and counts the stream under it."""
-        feed = self.feed
-        return feed.locked() if feed is not None else nullcontext()
 
     def _hold(self) -> None:
         """Pull nothing more of the job (what is queued stays)."""
@@ -686,82 +677,9 @@ class GcodeDriver(JobDriver):
         self._report(stream)
         self.proceed()
 
-    def _file_modes(self, stream: GcodeStream, start: int) -> list[str]:
-        """A resume's way back is in mm, G90: the file's own modes at ``start`` go after it
-        (units, plane, distance mode, motion and feed; an arc's word before its next move).
-        None where the file's state there cannot be rebuilt: the way back alone, as before."""
-        program = self.runner.program
-        assert program is not None
-        try:
-            plan = plan_start(program, start, [a.name for a in self.station.profile.axes])
-        except StartRefused:
-            return []
-        with self._locked():
-            stream.lead = plan.lead
-        return plan.modes(stream.settings)
-
-    def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
-        """``G92`` setting again the work offset the job needs here, if the board lost it.
-
-        A board that reset (GRBL forgets G92; a USB board resets when its port
-        reopens) would run the rest of the file shifted.  Once the machine stands
-        at the resume point, ``G92`` calls it the file's work position there, which
-        gives back the offset the job began with plus the file's own.  Only on a
-        board that reports its offset (GRBL).
-        """
-        session = self.session
-        program = self.runner.program
-        if session is None or session.work_offset is None or program is None:
-            return []
-        axes = list(planned.position)
-        names = [a.name for a in self.runner.station.profile.axes]
-        own = file_offset(program, start, names)
-        wanted = {a: _offset(self._origin, names.index(a)) + own[a] for a in axes}
-        if all(abs(_offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
-            return []
-        return ["G92 " + " ".join(f"{a}{planned.position[a] - own[a]:.3f}" for a in axes)]
-
-    def _here(self, report: StatusReport) -> tuple[float, ...]:
-        """Where the machine stands in the program's coordinates (machine less the origin)."""
-        return tuple(m - _offset(self._origin, i) for i, m in enumerate(report.mpos))
-
-    # --- progress and checkpoint -------------------------------------------------------
-
-    def _report(self, stream: GcodeStream) -> None:
-        runner = self.runner
-        assert runner.program is not None
-        now = runner.station.clock.now()
-        with self._locked():  # both boundaries as of one moment (the reader moves them)
-            answered, executed = stream.answered, stream.executed
-        # The operation the machine is at: the first not known executed (the lines answered
-        # after it wait in the device's planner).
-        current = executed if executed < len(runner.program) else None
-        if current is not None and current != self._shown and self._shows.due(now):
-            # The dock shows the operation under way; a thousand lines a second need not
-            # all be shown, so at most ten a second are.
-            self._shown = current
-            runner.announce(current)
-        runner.advance(answered, executed)
-        self._write_checkpoint(force=False)
-
-    def _write_checkpoint(self, *, force: bool) -> None:
-        runner = self.runner
-        stream = self.stream
-        if stream is None or runner.program is None:
-            return
-        if not self._checkpoints.due(runner.station.clock.now(), force=force):
-            return
-        with self._locked():
-            completed, sent = stream.executed - 1, max(stream.written, stream.answered)
-        runner.record(completed, sent)
-
 
 def _where(program: Program, index: int) -> str:
     return str(program[index].source) if index < len(program) else "the end"
-
-
-def _offset(offsets: Sequence[float], axis: int) -> float:
-    return offsets[axis] if axis < len(offsets) else 0.0
 
 
 def _sent_upto(stream: GcodeStream, start: int) -> int:
