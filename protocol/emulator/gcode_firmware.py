@@ -88,12 +88,8 @@ from __future__ import annotations
 
 import json
 from collections import deque
-from dataclasses import replace
-from typing import Any
 
 from protocol.clock import Clock
-from protocol.emulator import grbl_settings
-from protocol.emulator.cycles import ControlCycles
 from protocol.emulator.gcode_interpreter import Interpreter
 from protocol.emulator.gcode_machine import (
     GcodeConfig,
@@ -108,7 +104,6 @@ from protocol.emulator.gcode_planner import (
     DriversOff,
     Dwell,
     HoldState,
-    Junctions,
     Move,
     Pause,
     PenChange,
@@ -116,9 +111,10 @@ from protocol.emulator.gcode_planner import (
     SetOffset,
     SetPosition,
 )
-from protocol.emulator.servo_pwm import pulse_width_s
+from protocol.emulator.gcode_readouts import GcodeEvent
+from protocol.emulator.gcode_system_commands import GcodeSystemCommands
 from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
-from protocol.gcode.words import Word, WordError, grbl_text, split_words, strip_comments
+from protocol.gcode.words import WordError, grbl_text, split_words, strip_comments
 
 __all__ = [
     "LOG_LENGTH",
@@ -135,38 +131,17 @@ __all__ = [
 #: Entries kept in the event log, bounded for an emulator left running for days.
 LOG_LENGTH = 20_000
 
-#: One event: ``{"t": seconds, "event": kind, ...}``, JSON-serialisable as it is.
-GcodeEvent = dict[str, Any]
-
-# GRBL's error codes the firmware itself gives (the parser's are in the interpreter).
-INVALID_STATEMENT = 3
-NOT_IDLE = 8
-UNDEFINED_FEED = 22
-#: GRBL 1.1: a ``$J=`` line with a word a jog may not have (error:16).
-INVALID_JOG = 16
-#: The G words a jog line may carry (GRBL's jogging documentation); F is required.
-_JOG_G_WORDS = frozenset({20.0, 21.0, 53.0, 90.0, 91.0})
+# GRBL's error codes the firmware itself gives (the parser's are in the interpreter;
+# the ``$`` commands' in :mod:`~protocol.emulator.gcode_system_commands`).
 GCODE_LOCKED = 9
 LINE_OVERFLOW = 11
-SETTING_DISABLED = 5
 #: GRBL 1.1's line buffer (LINE_BUFFER_SIZE): at most 79 characters kept per line.
 GRBL_LINE = 80
-#: GRBL 1.1h's default settings, those the emulated board does not derive from its machine.
-_GRBL_DEFAULTS: dict[int, float] = {
-    0: 10, 1: 25, 2: 0, 3: 0, 4: 0, 5: 0, 6: 0, 10: 1, 11: 0.010, 12: 0.002, 13: 0,
-    20: 0, 21: 0, 22: 0, 23: 0, 24: 25.0, 25: 500.0, 26: 250, 27: 1.0, 30: 1000, 31: 0, 32: 0,
-}  # fmt: skip
 
 _LINE_END = 0x0A
 #: Bytes of an arriving line the ``line`` event keeps: a host that never ends its line
 #: cannot grow the log's memory without bound (the parser has refused such a line anyway).
 _ARRIVING_KEPT = 1024
-#: What follows ``$`` in GRBL 1.1's own commands; anything else is read as ``$N=value``.
-_GRBL_COMMAND_LETTERS = "$#CGHIJNRSX"
-_HELP = "[HLP:$$ $# $G $I $H $X ~ ! ? ctrl-x]"
-#: GRBL 1.1's REPORT_WCO_REFRESH_BUSY_COUNT and _IDLE_COUNT: reports between two ``WCO:``.
-WCO_REFRESH_BUSY = 30
-WCO_REFRESH_IDLE = 10
 
 
 def grbl_line(raw: bytes) -> str | None:
@@ -180,22 +155,19 @@ def grbl_line(raw: bytes) -> str | None:
     return kept if len(kept) <= GRBL_LINE - 1 else None
 
 
-def _axis_values(values: tuple[float, ...]) -> str:
-    """GRBL's comma-separated axis values, three decimals (mm)."""
-    return ",".join(f"{round(v, 3) + 0.0:.3f}" for v in values)
-
-
 def event_log_line(event: GcodeEvent) -> str:
     """One line of the emulator's ``--log`` file: the event as compact JSON."""
     return json.dumps(event, separators=(",", ":"))
 
 
-class GcodeFirmware(ControlCycles):
+class GcodeFirmware(GcodeSystemCommands):
     """A GRBL-like board: receive buffer, parser, planner, pen, on fixed control cycles.
 
     Thread-safe: the loopback's ticker thread runs cycles while the GUI
     thread reads the position and the log, so every public method and
-    property takes the same re-entrant lock.
+    property takes the same re-entrant lock.  Its readouts, replies and log
+    are in :class:`~protocol.emulator.gcode_readouts.GcodeReadouts`, its ``$``
+    commands in :class:`~protocol.emulator.gcode_system_commands.GcodeSystemCommands`.
     """
 
     def __init__(self, clock: Clock, config: GcodeConfig | None = None) -> None:
@@ -410,146 +382,6 @@ class GcodeFirmware(ControlCycles):
             self._send_line(f"ALARM:{code}")
             self._log("alarm", code=code, pos=self._where())
 
-    # -- introspection ---------------------------------------------------------------------
-
-    def position(self) -> dict[str, float]:
-        """Where the tool is now, per axis, in the machine's units."""
-        with self._lock:
-            return dict(zip(self.config.axes, self._planner.position(), strict=True))
-
-    def work_offset(self) -> dict[str, float]:
-        """GRBL's G92 offset in effect (machine minus work position); 0 on the other firmwares."""
-        with self._lock:
-            return dict(zip(self.config.axes, self._work_offset, strict=True))
-
-    @property
-    def overrides(self) -> tuple[int, int]:
-        """GRBL's feed and rapid overrides in force, percent (100, 100 elsewhere)."""
-        with self._lock:
-            return self._overrides.values.feed, self._overrides.values.rapid
-
-    def motor_counts(self) -> tuple[int, ...]:
-        """Each motor's step counter: CoreXY (a, b, z), otherwise one per axis."""
-        with self._lock:
-            return self.config.motor_counts(self._planner.position())
-
-    @property
-    def pen_down(self) -> bool:
-        with self._lock:
-            return self._pen_down
-
-    @property
-    def state(self) -> str:
-        """``Idle``, ``Run``, ``Hold``, ``Home`` or ``Alarm`` (without Hold's substate)."""
-        with self._lock:
-            if self._alarm is not None:
-                return "Alarm"
-            if self._check_mode:
-                return "Check"
-            current = self._planner.current
-            jogging = isinstance(current, Move) and current.kind == "jog"
-            if self._jog_cancelling or (jogging and self._planner.hold_state is HoldState.RUNNING):
-                return "Jog"
-            if self._planner.hold_state is not HoldState.RUNNING:
-                return "Hold"
-            if isinstance(current, Move) and current.kind == "home":
-                return "Home"
-            busy = len(self._planner) or self._pending or self._running_line
-            return "Run" if busy else "Idle"
-
-    @property
-    def alarm(self) -> int | None:
-        """The alarm code while in alarm."""
-        with self._lock:
-            return self._alarm
-
-    @property
-    def busy(self) -> bool:
-        """A line waits to be parsed or a block to be executed."""
-        with self._lock:
-            return b"\n" in self._rx or bool(len(self._planner) or self._pending)
-
-    @property
-    def overflows(self) -> int:
-        """Bytes dropped because the receive buffer was full (a correct host causes none)."""
-        with self._lock:
-            return self._overflows
-
-    @property
-    def unacknowledged(self) -> int:
-        """Bytes received whose line has not been answered yet."""
-        with self._lock:
-            return self._unacked
-
-    @property
-    def max_unacknowledged(self) -> int:
-        with self._lock:
-            return self._max_unacked
-
-    @property
-    def planner_free(self) -> int:
-        with self._lock:
-            return self._planner.free
-
-    @property
-    def step_rate(self) -> float:
-        """Top step rate of the motors, steps/s (``M98`` sets it on the plotter)."""
-        with self._lock:
-            return self._interpreter.step_rate
-
-    @property
-    def servo_level(self) -> float | None:
-        """The last ``M99`` level, if any."""
-        with self._lock:
-            return self._interpreter.servo_level
-
-    @property
-    def servo_pulse_s(self) -> float | None:
-        """The pen servo's pulse, seconds, at the last ``M99`` level (50 Hz PWM, S1-11)."""
-        with self._lock:
-            level = self._interpreter.servo_level
-        return None if level is None else pulse_width_s(level)
-
-    @property
-    def drivers_off(self) -> frozenset[str]:
-        """The axes whose drivers are off (``M18``) until a move of that axis."""
-        with self._lock:
-            return frozenset(self._drivers_off)
-
-    @property
-    def event_log(self) -> tuple[GcodeEvent, ...]:
-        """Lines, replies, moves, pen changes, dwells, holds and resets, in order (``--log``)."""
-        with self._lock:
-            return tuple(self._events)
-
-    def status_report(self) -> str:
-        """What ``?`` answers now, ``<Run|MPos:1.000,2.000,0.000|FS:600,0>``."""
-        with self._lock:
-            state = self.state
-            hold = self._planner.hold_state
-            if state == "Hold":
-                state += ":0" if hold is HoldState.HELD else ":1"
-            position = self._planner.position()
-            mask = self.config.status_mask
-            kind = "MPos" if mask & 1 else "WPos"
-            if not mask & 1:
-                position = tuple(p - o for p, o in zip(position, self._work_offset, strict=True))
-            where = _axis_values(position)
-            feed = self._planner.feed()
-            free_rx = self.config.rx_buffer - len(self._rx)
-            buffers = f"|Bf:{self._planner.free},{free_rx}" if mask & 2 else ""
-            wco = ""
-            if self.config.grbl:
-                busy = state.split(":")[0] in ("Run", "Hold", "Home", "Jog")
-                if self._wco_countdown > 0:
-                    self._wco_countdown -= 1
-                else:
-                    self._wco_countdown = (WCO_REFRESH_BUSY if busy else WCO_REFRESH_IDLE) - 1
-                    wco = "|WCO:" + _axis_values(self._work_offset)
-                    self._overrides.wco_reported()
-                wco += self._overrides.report_field(busy)
-            return f"<{state}|{kind}:{where}{buffers}|FS:{feed:.0f},{self._spindle:.0f}{wco}>"
-
     # -- the control cycle -----------------------------------------------------------------
 
     def _overrides_changed(self, t: float | None = None) -> None:
@@ -672,180 +504,6 @@ class GcodeFirmware(ControlCycles):
         result = self._interpreter.execute(words)
         return [] if self._check_mode and not isinstance(result, int) else result
 
-    def _system(self, command: str) -> list[Block] | int:
-        """A ``$`` line; feedback lines go out before its ``ok``."""
-        idle = self.state in ("Idle", "Alarm")
-        if command == "$":
-            self._send_line(_HELP)
-        elif command == "$$":
-            if self.state in ("Run", "Hold", "Home"):
-                return NOT_IDLE
-            for line in self._settings():
-                self._send_line(line)
-        elif command == "$G":
-            self._send_line(self._interpreter.modes())
-        elif command == "$#" and self.config.grbl:
-            zeros = _axis_values((0.0,) * len(self.config.axes))
-            for number, stored in enumerate(self._interpreter.systems.stored):
-                self._send_line(f"[G{54 + number}:{_axis_values(stored)}]")
-            for name in ("G28", "G30"):
-                self._send_line(f"[{name}:{zeros}]")
-            self._send_line(f"[G92:{_axis_values(self._interpreter.offset)}]")
-            self._send_line("[TLO:0.000]")
-            self._send_line(f"[PRB:{zeros}:0]")
-        elif command == "$I":
-            if not idle:
-                return NOT_IDLE
-            self._send_line("[VER:1.1h.20190825:StepDeck emulator]")
-            self._send_line(f"[OPT:V,{self._planner.capacity},{self.config.rx_buffer}]")
-        elif command.startswith("$J=") and self.config.jogging:
-            return self._jog(command[3:])
-        elif command == "$X":
-            if self._alarm is not None:
-                self._alarm = None
-                self._send_line("[MSG:Caution: Unlocked]")
-                self._log("unlock")
-        elif command == "$H":
-            if not self.config.homing:
-                return SETTING_DISABLED
-            if not idle:
-                return NOT_IDLE
-            self._alarm = None
-            start = self._interpreter.position
-            home = (0.0,) * len(start)
-            self._interpreter.position = home
-            return [] if start == home else [self._interpreter.move(start, home, "home", None)]
-        elif command == "$C" and self.config.grbl:
-            return self._toggle_check_mode()
-        elif self.config.grbl and command[1:2] and command[1:2] not in _GRBL_COMMAND_LETTERS:
-            return self._set(command)
-        else:
-            return INVALID_STATEMENT
-        return []
-
-    def _toggle_check_mode(self) -> list[Block] | int:
-        """``$C``: parse without moving; leaving check mode resets the board, as GRBL does."""
-        if self._check_mode:
-            self._check_mode = False
-            self._send_line("[MSG:Disabled]")
-            self._reset_after_answer = True
-        elif self.state != "Idle":
-            return NOT_IDLE
-        else:
-            self._check_mode = True
-            self._send_line("[MSG:Enabled]")
-        return []
-
-    def _set(self, line: str) -> list[Block] | int:
-        """``$N=value``: GRBL's settings (:mod:`~protocol.emulator.grbl_settings`); those that
-        shape the machine act at once."""
-        code = grbl_settings.store(self._settings_table, line, idle=self.state in ("Idle", "Alarm"))
-        if code:
-            return code
-        self._apply_settings()
-        return []
-
-    def _initial_settings(self) -> dict[int, float]:
-        if not self.config.grbl:
-            return {}
-        cfg = self.config
-        table = dict(_GRBL_DEFAULTS)
-        table.update({10: cfg.status_mask, 12: cfg.arc_tolerance})
-        if cfg.junction_deviation is not None:
-            table[11] = cfg.junction_deviation
-        table.update({20: float(cfg.soft_limits), 22: float(cfg.homing)})
-        for i, steps in enumerate(cfg.steps_per_unit):
-            limits = cfg.travel[i]
-            table[100 + i] = steps
-            table[110 + i] = cfg.rates()[i] * 60.0
-            table[120 + i] = cfg.accelerations()[i]
-            table[130 + i] = 0.0 if limits is None else limits[1] - limits[0]
-        return table
-
-    def _apply_settings(self) -> None:
-        table, cfg = self._settings_table, self.config
-        count = len(cfg.axes)
-        steps = tuple(table[100 + i] or cfg.steps_per_unit[i] for i in range(count))
-        rate = min(table[110 + i] * s / 60.0 for i, s in enumerate(steps))
-        acceleration = min(table[120 + i] * s for i, s in enumerate(steps))
-        travel = tuple(
-            None
-            if cfg.travel[i] is None
-            else (0.0, table[130 + i])
-            if table[130 + i] > 0
-            else cfg.travel[i]
-            for i in range(count)
-        )
-        self.config = replace(
-            cfg,
-            steps_per_unit=steps,
-            max_rate=rate if rate > 0 else cfg.max_rate,
-            acceleration=acceleration if acceleration > 0 else cfg.acceleration,
-            travel=travel,
-            status_mask=int(table[10]),
-            arc_tolerance=table[12] or cfg.arc_tolerance,
-            soft_limits=bool(table[20]),
-            homing=bool(table[22]),
-            junction_deviation=None if cfg.junction_deviation is None else table[11],
-            axis_rates=tuple(
-                table[110 + i] / 60.0 if table[110 + i] > 0 else cfg.rates()[i]
-                for i in range(count)
-            ),
-            axis_accelerations=tuple(
-                table[120 + i] if table[120 + i] > 0 else cfg.accelerations()[i]
-                for i in range(count)
-            ),
-        )
-        self._planner.junctions = self._junctions()
-        self._interpreter.config = self.config
-        self._interpreter.step_rate = self.config.max_rate
-
-    def _junctions(self) -> Junctions | None:
-        """GRBL's planning settings, or None on a firmware whose moves start and end at rest."""
-        cfg = self.config
-        if cfg.junction_deviation is None:
-            return None
-        return Junctions(cfg.junction_deviation, cfg.accelerations())
-
-    def _jog(self, body: str) -> list[Block] | int:
-        """``$J=``: a move run as a jog, which leaves the parser's modal state as it was.
-
-        Only G20/G21, G90/G91 and G53 may stand in it, and F is required; it is
-        taken while idle or jogging, and its blocks report the ``Jog`` state.
-        """
-        if self.state not in ("Idle", "Jog"):
-            return NOT_IDLE
-        words = split_words(body)
-        if isinstance(words, WordError):
-            return words.code
-        if any(w.letter == "G" and w.value not in _JOG_G_WORDS for w in words):
-            return INVALID_JOG
-        if any(w.letter not in ("G", "F", *self.config.axes) for w in words):
-            return INVALID_JOG
-        if not any(w.letter == "F" for w in words):
-            return UNDEFINED_FEED
-        saved = replace(self._interpreter.modal)
-        result = self._interpreter.execute([Word("G", 1.0, "G1"), *words])
-        self._interpreter.modal = saved
-        if isinstance(result, int):
-            return result
-        return [replace(b, kind="jog") if isinstance(b, Move) else b for b in result]
-
-    def _settings(self) -> list[str]:
-        """``$$``: a few GRBL settings, per axis in the machine's axis order; all on GRBL."""
-        if self._settings_table:
-            return grbl_settings.setting_lines(self._settings_table)
-        cfg = self.config
-        lines = [f"$12={cfg.arc_tolerance:.3f}", "$13=0", "$20=1", "$22=1"]
-        for group, values in (
-            (100, cfg.steps_per_unit),
-            (110, [cfg.max_rate / s * 60.0 for s in cfg.steps_per_unit]),
-            (120, [cfg.acceleration / s for s in cfg.steps_per_unit]),
-            (130, [0.0 if t is None else t[1] - t[0] for t in cfg.travel]),
-        ):
-            lines += [f"${group + i}={v:.3f}" for i, v in enumerate(values)]
-        return lines
-
     def _queue_pending(self, t: float) -> None:
         """Move waiting blocks into free planner slots; answer their line once all are in."""
         while self._pending and self._planner.free > 0:
@@ -913,41 +571,3 @@ class GcodeFirmware(ControlCycles):
         if down != self._pen_down:
             self._pen_down = down
             self._log("pen", t, down=down, pos=self._where())
-
-    # -- replies and the log ------------------------------------------------------------------
-
-    def _answer(self, reply: str, length: int, line: str, t: float | None = None) -> None:
-        self._send_line(reply)
-        self._unacked = max(self._unacked - length, 0)
-        self._log("reply", t, text=reply, line=line)
-
-    def _send_line(self, text: str) -> None:
-        self._outbox.append(text.encode("ascii") + b"\r\n")
-
-    def _send_banner(self) -> None:
-        self._outbox.append(b"\r\n" + self.config.banner.encode("ascii") + b"\r\n")
-
-    def _flush(self) -> None:
-        if not self._outbox:
-            return
-        data = b"".join(self._outbox)
-        self._outbox.clear()
-        self._send_to_host(data)
-
-    def _where(self, position: tuple[float, ...] | None = None) -> dict[str, float]:
-        where = self._planner.position() if position is None else position
-        return {axis: round(p, 6) + 0.0 for axis, p in zip(self.config.axes, where, strict=True)}
-
-    def _log_arrival(self) -> None:
-        """Log the line that has just ended, whole: all the bytes kept since the last line end.
-
-        Looking back in the receive buffer would find only the last read's piece once the
-        parser has taken the line's head out of it (GRBL reads on into its line buffer).
-        """
-        text = bytes(self._arriving[:-1]).decode("ascii", errors="replace").strip()
-        self._arriving.clear()
-        self._log("line", text=text, unacknowledged=self._unacked)
-
-    def _log(self, event: str, t: float | None = None, **fields: Any) -> None:
-        when = self.time if t is None else t
-        self._events.append({"t": round(when, 6), "event": event, **fields})

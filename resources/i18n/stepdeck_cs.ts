@@ -521,6 +521,7 @@
     </message>
     <message>
         <source>Not sent: {0} is not a drill command ({1})</source>
+        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. A reply is late (the link shown stale) after this share of the receipt&apos;s time. The largest position the wire carries (six digits, docs/protocols.md §3.2).</extracomment>
         <translation>Neodesláno: {0} není příkaz vrtačky ({1})</translation>
     </message>
     <message>
@@ -541,7 +542,7 @@
     </message>
     <message>
         <source>home</source>
-        <extracomment>Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle. The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) after this share of the receipt&apos;s time, or this long after a procedure&apos;s expected end. Sent once a link opens, to hear the drill answer: no command has this letter. Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning. The largest position the wire carries (six digits, docs/protocols.md §3.2). What each procedure is called in messages.</extracomment>
+        <extracomment>The ``D`` may take this much longer than expected (x) and then this many seconds more. A reply is late (the link shown stale) this long after a procedure&apos;s expected end (the receipt&apos;s share is in :mod:`app.machines.drill.queue`). Sent once a link opens, to hear the drill answer: no command has this letter. What each procedure is called in messages.</extracomment>
         <translation>referenční jízda</translation>
     </message>
     <message>
@@ -574,6 +575,7 @@
     </message>
     <message>
         <source>moves of {0}</source>
+        <extracomment>Seconds of motion in one step of a held jog: what may still run after a release. With Shift (the other speed) a held jog&apos;s steps are this share as long: fine positioning.</extracomment>
         <translation>pohyby {0}</translation>
     </message>
     <message>
@@ -1364,6 +1366,7 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>
+        <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at). follows ALARM:3 with its banner) is kept for the Resume, not said again.</extracomment>
         <translation>Stroj stojí ve zdržení (feed hold: jeho tlačítko, zdejší tlačítko Zdržet, nebo znak „!“, který k němu dorazil po vedení): úloha je pozastavena na {0}. Pokračovat ji nechá jet dál (cycle start).</translation>
     </message>
     <message>
@@ -1384,7 +1387,6 @@
     </message>
     <message>
         <source>The machine went into alarm {0} ({1}) during the job and stopped: the job is paused at {2}. Clear the alarm (home it with $H, or unlock it with $X if its position is still right), then Resume: the job goes on from what is proven run.</source>
-        <extracomment>Work offsets closer than this (mm) are the same (GRBL reports three decimals). Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at). follows ALARM:3 with its banner) is kept for the Resume, not said again.</extracomment>
         <translation>Stroj během úlohy přešel do alarmu {0} ({1}) a zastavil se: úloha je pozastavena na {2}. Zrušte alarm (najeďte do výchozí polohy pomocí $H, nebo ho odemkněte pomocí $X, je-li jeho poloha stále správná), pak Pokračovat: úloha pokračuje od toho, co je prokazatelně provedeno.</translation>
     </message>
 </context>
@@ -5131,7 +5133,7 @@ se nevykresluje</translation>
     </message>
     <message>
         <source>jogging</source>
-        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A device silent with its port open, or not answering since the link opened, is asked its dialect&apos;s harmless question this often: the devices that speak only when asked (usb3, the drill) would otherwise never be heard again once the line works. A tick this much later than its period means the station itself was not running (a busy computer, a stalled event loop): that time is not counted as the device&apos;s silence. :meth:`MachineSession._recovery_verdict`&apos;s &quot;not yet&quot;. A held jog ended without a release (dead-man or travel end): forget what is held. The device answers again after a silence with its port open: None when its state is intact (nothing can have been lost), else what does not match (a reset, a position). Since when the device has been silent with its port open, once that was a lost link (None: it is not); and whether it has answered since. Whether a late tick&apos;s lateness is the station&apos;s own, not counted as the device&apos;s silence (set by dialects whose ticks come from a real-time timer).</extracomment>
+        <extracomment>A held jog with no sign for this long that the key or button is still held ends (the station&apos;s dead-man). Longer than a keyboard&apos;s auto-repeat delay (0.25 to 0.66 s), whose repeats are the sign for a key; a held button is polled for it. A held jog ended without a release (dead-man or travel end): forget what is held. Since when the device has been silent with its port open, once that was a lost link (None: it is not); and whether it has answered since. Whether a late tick&apos;s lateness is the station&apos;s own, not counted as the device&apos;s silence (set by dialects whose ticks come from a real-time timer).</extracomment>
         <translation>ruční posuv</translation>
     </message>
     <message>
@@ -5152,6 +5154,7 @@ se nevykresluje</translation>
     </message>
     <message>
         <source>The device is silent ({0}){1}; asking it every {2} s</source>
+        <extracomment>Seconds a device has to give its first valid reply before the operator is told. Bytes of unrecognised replies kept to tell which machine is there instead. A device silent with its port open, or not answering since the link opened, is asked its dialect&apos;s harmless question this often: the devices that speak only when asked (usb3, the drill) would otherwise never be heard again once the line works. A tick this much later than its period means the station itself was not running (a busy computer, a stalled event loop): that time is not counted as the device&apos;s silence. :meth:`AnswerWatch._recovery_verdict`&apos;s &quot;not yet&quot;. The device answers again after a silence with its port open: None when its state is intact (nothing can have been lost), else what does not match (a reset, a position).</extracomment>
         <translation>Zařízení mlčí ({0}){1}; ptám se ho každých {2} s</translation>
     </message>
     <message>
@@ -5341,11 +5344,12 @@ se nevykresluje</translation>
     <name>StageSession</name>
     <message>
         <source>Not written: {0} {1}</source>
-        <extracomment>What the info panel shows; each is asked for at least once a second. Until the stage&apos;s own dynamics are read: its documented defaults (docs/protocols.md §1.4). Periods between a frame leaving and its effect being seen (frame out, echo back), on top of the braking distance when a jog is turned into a stop at the travel end. A jog stopped at the travel&apos;s end stops this far inside it: the stage&apos;s end switches sit at the travel&apos;s ends, and a jog is to stop before them, not on them. Echoes counted past a MOVE_ABS&apos;s frame before one is believed to answer a later frame. Echoes come back in order, one per valid frame, so a lost frame or echo only makes the count lag; the margin of one more covers a duplicated or stale echo. Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none). Every echoed position is judged against the moves sent (stopped when off them). Frames sent and echoes received since the link opened (see _check_moves). Per axis: the last MOVE_ABS sent and the frame count it went out with, until an echo of a later frame shows whether the stage received it.</extracomment>
+        <extracomment>Echoes counted past a MOVE_ABS&apos;s frame before one is believed to answer a later frame. Echoes come back in order, one per valid frame, so a lost frame or echo only makes the count lag; the margin of one more covers a duplicated or stale echo. Axes whose held jog was turned into a move to the travel end (+1/-1, 0: none). Every echoed position is judged against the moves sent (stopped when off them). Frames sent and echoes received since the link opened (see _check_moves). Per axis: the last MOVE_ABS sent and the frame count it went out with, until an echo of a later frame shows whether the stage received it.</extracomment>
         <translation>Nezapsáno: {0} {1}</translation>
     </message>
     <message>
         <source>{0} jog ends before the travel&apos;s end, at {1} mm</source>
+        <extracomment>What the info panel shows; each is asked for at least once a second. Until the stage&apos;s own dynamics are read: its documented defaults (docs/protocols.md §1.4). Periods between a frame leaving and its effect being seen (frame out, echo back), on top of the braking distance when a jog is turned into a stop at the travel end. A jog stopped at the travel&apos;s end stops this far inside it: the stage&apos;s end switches sit at the travel&apos;s ends, and a jog is to stop before them, not on them.</extracomment>
         <translation>Ruční posuv {0} končí před koncem pojezdu, na {1} mm</translation>
     </message>
     <message>
@@ -6295,7 +6299,7 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     <name>Usb3Session</name>
     <message>
         <source>{0}: {1} mm is less than one step</source>
-        <extracomment>How far ahead of the key a jog keeps the axis, in seconds of travel at top rate. An axis that has not reported for this long after a report has stopped. Seconds without any reply before the unit is asked ``G;``, then late (amber), then lost. An axis stopped at an end switch: axis index, &quot;low&quot; or &quot;high&quot;, position in mm. The unit answered ``?;`` and an axis never left where its move began: the move was the command it could not read. Axis index, position in mm. ``C;`` was sent and the axis has not reported since: its next report is a new zero. Asked where it stands (a move of nothing) and not answered yet: its next report is where it stands, not a motion. Axes asked where they stand at rest, which must stand (a question run as a move). Where the jog leads sent so far take each axis (None: from its position). Per axis: the count the moves sent are heading for, their direction and when the last was sent (None: no move of the station&apos;s under way). Per axis: the count it stood at when a move was sent to it at rest (None: none). Station-clock time of the unit&apos;s last ``?;`` (None: none on this link). The direction register as the station last set it (``D``). Station-clock time of each axis&apos;s last position report. Per axis, the path (in counts) of the moves sent that the reports must follow. After a silence: per axis, the counts the unit may stand at (from where it was to where the moves sent take it), and whether it has been asked where it stands. Each axis&apos;s count when the silence began (what it answers if nothing sent meanwhile ran). Which settings reports came since the link opened (the first always counts).</extracomment>
+        <extracomment>How far ahead of the key a jog keeps the axis, in seconds of travel at top rate. Seconds without any reply before the unit is asked ``G;``, then late (amber), then lost. ``C;`` was sent and the axis has not reported since: its next report is a new zero. Asked where it stands (a move of nothing) and not answered yet: its next report is where it stands, not a motion. Axes asked where they stand at rest, which must stand (a question run as a move). Where the jog leads sent so far take each axis (None: from its position). Per axis: the count the moves sent are heading for, their direction and when the last was sent (None: no move of the station&apos;s under way). Per axis: the count it stood at when a move was sent to it at rest (None: none). Station-clock time of the unit&apos;s last ``?;`` (None: none on this link). The direction register as the station last set it (``D``). Station-clock time of each axis&apos;s last position report. Per axis, the path (in counts) of the moves sent that the reports must follow. After a silence: per axis, the counts the unit may stand at (from where it was to where the moves sent take it), and whether it has been asked where it stands. Each axis&apos;s count when the silence began (what it answers if nothing sent meanwhile ran). Which settings reports came since the link opened (the first always counts).</extracomment>
         <translation>{0}: {1} mm je méně než jeden krok</translation>
     </message>
     <message>
@@ -6308,6 +6312,7 @@ Nit {3} mm = 1/{4} průměru; voleno na rastru s pixely {5} mm.</translation>
     </message>
     <message>
         <source>{0} {1} mm, {2} counts</source>
+        <extracomment>An axis that has not reported for this long after a report has stopped. An axis stopped at an end switch: axis index, &quot;low&quot; or &quot;high&quot;, position in mm. The unit answered ``?;`` and an axis never left where its move began: the move was the command it could not read. Axis index, position in mm.</extracomment>
         <translation>{0} {1} mm, {2} dílků</translation>
     </message>
     <message>

@@ -531,7 +531,7 @@ def short_timeouts(monkeypatch: pytest.MonkeyPatch) -> None:
     Not much shorter: on a loaded machine a shorter silence is sometimes a false loss
     before the fault is set up (seen at 0.8 s on the usb3 unit at a load of 14 on 2 cores).
     """
-    monkeypatch.setattr("app.machines.drill.session.RECEIPT_TIMEOUT_S", 0.8)
+    monkeypatch.setattr("app.machines.drill.queue.RECEIPT_TIMEOUT_S", 0.8)  # read there
     # The drill's emulator runs 50 times faster than the station's timing table expects.
     monkeypatch.setattr("app.machines.drill.session.DONE_FACTOR", 0.2)
     monkeypatch.setattr("app.machines.drill.session.DONE_MARGIN_S", 0.8)

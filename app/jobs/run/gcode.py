@@ -24,20 +24,18 @@ coordinates that reach it with the offset the board has then.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from contextlib import AbstractContextManager, nullcontext
 from dataclasses import replace
 
 from PySide6.QtCore import QCoreApplication
 
-from app.jobs.program import Program
-from app.jobs.run.driver import JobDriver, ResumeChoice, RunnerPort
+from app.jobs.run.driver import ResumeChoice, RunnerPort
+from app.jobs.run.gcode_alarm_pause import GcodeAlarmPause
+from app.jobs.run.gcode_alarm_pause import where_in as _where
+from app.jobs.run.gcode_books import offset_on as _offset
 from app.jobs.run.gcode_stream import (
     RETRACE_WINDOW,
     AtReport,
     GcodeStream,
-    ResumeState,
-    file_offset,
     preamble,
     resume_state,
     retrace,
@@ -47,13 +45,10 @@ from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.start_point import StartPlan, StartRefused, plan_start
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
 from app.machines.gcode.job_feed import JobFeed
-from app.machines.gcode.meanings import alarm_meaning
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
 from protocol.gcode.codec import StatusReport
 
-#: Work offsets closer than this (mm) are the same (GRBL reports three decimals).
-OFFSET_SAME_MM = 0.002
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
 #: Station-clock seconds between "operation under way" announcements while lines stream.
@@ -85,7 +80,7 @@ def modes_confirm(modes: str, words: tuple[str, ...]) -> str | None:
     return f"still not in {' '.join(missing)} after the set-up ({modes})" if missing else None
 
 
-class GcodeDriver(JobDriver):
+class GcodeDriver(GcodeAlarmPause):
     """Feeds the runner's program to the G-code session and reports progress to the runner."""
 
     takes_gcode = True
@@ -139,11 +134,6 @@ class GcodeDriver(JobDriver):
         self._unconfirmed_count = 0
         # This run knows every line the device may have (see _sent_upto).
         self._written_known = False
-
-    def _locked(self) -> AbstractContextManager[object]:
-        """The feed's lock: the reader thread pulls and counts the stream under it."""
-        feed = self.feed
-        return feed.locked() if feed is not None else nullcontext()
 
     def _hold(self) -> None:
         """Pull nothing more of the job (what is queued stays)."""
@@ -514,48 +504,6 @@ class GcodeDriver(JobDriver):
         if not in_flight:
             self.proceed()
 
-    def _on_alarm(self, code: int) -> None:
-        """The board went into alarm mid-job (a limit switch, a failed probe, its reset in
-        motion): it stopped, dropped what it had planned, and takes no line until the
-        operator homes or unlocks it.
-
-        The job is paused, said once (the session says the alarm once too), and nothing
-        more is sent: every line would be refused (``error:9``).  Resume looks at the
-        machine first — still in alarm, it stays paused — and goes on from what is proven
-        run, asking where only the operator can tell.  A job already paused (the link, a
-        question, a restart) stays as it is, its Resume looks again.
-        """
-        runner = self.runner
-        if self.stream is None or runner.state not in ACTIVE:
-            return
-        self.hold_back()  # what is not on the wire yet waits for the resume
-        self._hold()
-        self._held_by_machine = False  # the alarm dropped the hold with the rest
-        with self._locked():
-            self.stream.pending.clear()  # lost with the planner, or refused: not proven run
-        self._preparing = 0
-        if self._confirming:
-            self._confirming = False
-            self._redo_setup = True
-        self._recheck = True
-        self._asked_since_recheck = False
-        self._write_checkpoint(force=True)
-        if runner.state not in CLOCK_RUNS:
-            return
-        self._alarm_said = True
-        program = runner.program
-        with self._locked():
-            where = self.stream.executed
-        runner.hold_for_operator(
-            QCoreApplication.translate(
-                "GcodeDriver",
-                "The machine went into alarm {0} ({1}) during the job and stopped: the job "
-                "is paused at {2}. Clear the alarm (home it with $H, or unlock it with $X if "
-                "its position is still right), then Resume: the job goes on from what is "
-                "proven run.",
-            ).format(code, alarm_meaning(code), _where(program, where) if program else "?")
-        )
-
     def _machine_held(self) -> None:
         """The board holds, and no stop of the station's asked it to: pause for the operator.
 
@@ -775,98 +723,6 @@ class GcodeDriver(JobDriver):
         )
         self._report(stream)
         self.proceed()
-
-    def _hold_in_alarm(self) -> None:
-        """A board that reset itself mid-motion (GRBL: ALARM:3, its position no longer
-        trusted) or powered up with homing on takes no line until unlocked: streaming into
-        it would only be refused (error:9), and unlocking is the operator's call.  The job
-        stays paused, still to be rechecked on the next Resume."""
-        self._asked_since_recheck = False
-        self.runner.hold_for_operator(
-            QCoreApplication.translate(
-                "GcodeDriver",
-                "The machine is in alarm: the job stays paused. Check the machine, "
-                "clear the alarm (home it with $H, or unlock it with $X if its position "
-                "is still right), then Resume.",
-            )
-        )
-
-    def _file_modes(self, stream: GcodeStream, start: int) -> list[str]:
-        """A resume's way back is in mm, G90: the file's own modes at ``start`` go after it
-        (units, plane, distance mode, motion and feed; an arc's word before its next move).
-        None where the file's state there cannot be rebuilt: the way back alone, as before."""
-        program = self.runner.program
-        assert program is not None
-        try:
-            plan = plan_start(program, start, [a.name for a in self.station.profile.axes])
-        except StartRefused:
-            return []
-        with self._locked():
-            stream.lead = plan.lead
-        return plan.modes(stream.settings)
-
-    def _restore(self, planned: ResumeState, start: int, now: Sequence[float]) -> list[str]:
-        """``G92`` setting again the work offset the job needs here, if the board lost it.
-
-        A board that reset (GRBL forgets G92; a USB board resets when its port
-        reopens) would run the rest of the file shifted.  Once the machine stands
-        at the resume point, ``G92`` calls it the file's work position there, which
-        gives back the offset the job began with plus the file's own.  Only on a
-        board that reports its offset (GRBL).
-        """
-        session = self.session
-        program = self.runner.program
-        if session is None or session.work_offset is None or program is None:
-            return []
-        axes = list(planned.position)
-        names = [a.name for a in self.runner.station.profile.axes]
-        own = file_offset(program, start, names)
-        wanted = {a: _offset(self._origin, names.index(a)) + own[a] for a in axes}
-        if all(abs(_offset(now, names.index(a)) - wanted[a]) < OFFSET_SAME_MM for a in axes):
-            return []
-        return ["G92 " + " ".join(f"{a}{planned.position[a] - own[a]:.3f}" for a in axes)]
-
-    def _here(self, report: StatusReport) -> tuple[float, ...]:
-        """Where the machine stands in the program's coordinates (machine less the origin)."""
-        return tuple(m - _offset(self._origin, i) for i, m in enumerate(report.mpos))
-
-    # --- progress and checkpoint -------------------------------------------------------
-
-    def _report(self, stream: GcodeStream) -> None:
-        runner = self.runner
-        assert runner.program is not None
-        now = runner.station.clock.now()
-        with self._locked():  # both boundaries as of one moment (the reader moves them)
-            answered, executed = stream.answered, stream.executed
-        # The operation the machine is at: the first not known executed (the lines answered
-        # after it wait in the device's planner).
-        current = executed if executed < len(runner.program) else None
-        if current is not None and current != self._shown and self._shows.due(now):
-            # The dock shows the operation under way; a thousand lines a second need not
-            # all be shown, so at most ten a second are.
-            self._shown = current
-            runner.announce(current)
-        runner.advance(answered, executed)
-        self._write_checkpoint(force=False)
-
-    def _write_checkpoint(self, *, force: bool) -> None:
-        runner = self.runner
-        stream = self.stream
-        if stream is None or runner.program is None:
-            return
-        if not self._checkpoints.due(runner.station.clock.now(), force=force):
-            return
-        with self._locked():
-            completed, sent = stream.executed - 1, max(stream.written, stream.answered)
-        runner.record(completed, sent)
-
-
-def _where(program: Program, index: int) -> str:
-    return str(program[index].source) if index < len(program) else "the end"
-
-
-def _offset(offsets: Sequence[float], axis: int) -> float:
-    return offsets[axis] if axis < len(offsets) else 0.0
 
 
 def _sent_upto(stream: GcodeStream, start: int, *, known: bool = False) -> int:

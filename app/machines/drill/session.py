@@ -35,18 +35,21 @@ silent key therefore lets at most one short step finish.
 
 from __future__ import annotations
 
-import math
 from collections import deque
-from collections.abc import Sequence
-from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, QTimer, Signal
 
 from app.link import Link
 from app.machine import LinkState, MachineModel
-from app.machines.drill.conversion import mm_to_microsteps, profile_microsteps_per_mm
+from app.machines.drill.conversion import profile_microsteps_per_mm
+from app.machines.drill.jogging import JOG_SLOW_SHARE as JOG_SLOW_SHARE  # re-exported
+from app.machines.drill.jogging import JOG_STEP_S as JOG_STEP_S
+from app.machines.drill.jogging import DrillJogging
+from app.machines.drill.queue import MAX_POSITION as MAX_POSITION
+from app.machines.drill.queue import RECEIPT_LATE_SHARE as RECEIPT_LATE_SHARE
+from app.machines.drill.queue import RECEIPT_TIMEOUT_S as RECEIPT_TIMEOUT_S
 from app.machines.drill.unasked import ReplyLedger
-from app.machines.session import PENDING, MachineSession
+from app.machines.session import PENDING
 from protocol.clock import Clock
 from protocol.drill.codec import (
     DRILL,
@@ -65,26 +68,16 @@ from protocol.drill.codec import (
     encode_reply,
 )
 
-#: Seconds the device has to acknowledge (``R``) a command: it does so in its next cycle.
-RECEIPT_TIMEOUT_S = 1.0
 #: The ``D`` may take this much longer than expected (x) and then this many seconds more.
 DONE_FACTOR = 2.0
 DONE_MARGIN_S = 3.0
-#: A reply is late (the link shown stale) after this share of the receipt's time, or this
-#: long after a procedure's expected end.
-RECEIPT_LATE_SHARE = 0.5
+#: A reply is late (the link shown stale) this long after a procedure's expected end (the
+#: receipt's share is in :mod:`app.machines.drill.queue`).
 DONE_LATE_S = 1.0
 TICK_MS = 100
 #: Sent once a link opens, to hear the drill answer: no command has this letter.
 PROBE_LETTER = "I"
 PROBE = f"{PROBE_LETTER}\r".encode("ascii")
-
-#: Seconds of motion in one step of a held jog: what may still run after a release.
-JOG_STEP_S = 0.1
-#: With Shift (the other speed) a held jog's steps are this share as long: fine positioning.
-JOG_SLOW_SHARE = 0.1
-#: The largest position the wire carries (six digits, docs/protocols.md §3.2).
-MAX_POSITION = 999_999
 
 #: What each procedure is called in messages.
 PROCEDURES = {
@@ -118,7 +111,7 @@ def parse_line(text: str) -> Command | None:
     return command if isinstance(command, Command) and used == len(raw) else None
 
 
-class DrillSession(MachineSession):
+class DrillSession(DrillJogging):
     """frameSent carries :class:`Command`, frameReceived :class:`Reply` or :class:`Rejected`."""
 
     #: The device acknowledged the command in flight (``R``); the command's text.
@@ -209,11 +202,6 @@ class DrillSession(MachineSession):
         return self._refused_lines
 
     @property
-    def busy(self) -> bool:
-        """A command is out or waiting."""
-        return self._in_flight is not None or bool(self._queue)
-
-    @property
     def homed_since_connect(self) -> bool:
         """An ``N`` has finished since this link opened.
 
@@ -236,18 +224,6 @@ class DrillSession(MachineSession):
     def queued(self) -> tuple[Command, ...]:
         return tuple(self._queue)
 
-    # --- conversions -----------------------------------------------------------
-
-    def microsteps_per_mm(self, axis: int) -> float:
-        return float(self._per_mm[axis])
-
-    def to_microsteps(self, axis: int, mm: float) -> int:
-        """Nearest microstep to ``mm``, half away from zero, computed in decimal."""
-        return mm_to_microsteps(mm, self._per_mm[axis])
-
-    def to_mm(self, axis: int, microsteps: int) -> float:
-        return microsteps / float(self._per_mm[axis])
-
     # --- intents ----------------------------------------------------------------
 
     def move_absolute(self, axis: int, position: float) -> bool:
@@ -263,123 +239,6 @@ class DrillSession(MachineSession):
         if self.gate.refuse(self.gate.refuse_target(axis, position)):
             return False
         return self._enqueue(Command(name, self.to_microsteps(axis, position)))
-
-    # --- jogging: absolute steps in whole microsteps, inside the travel ---------------
-
-    def step_jog(self, axis: int, direction: int, step: float) -> bool:
-        """One tap of an arrow key in step mode: ``step`` (at least one microstep) that way.
-
-        Taps made while a move is under way queue and count from where the
-        moves before them end, so three taps go three steps.
-        """
-        if not 0 <= axis < self.axis_count or direction not in (-1, 1) or not step > 0:
-            return False
-        if self._refuse_jog():
-            return False
-        name = self.model.profile.axes[axis].name
-        if name not in POSITION_LETTERS:
-            return self._unsupported(
-                QCoreApplication.translate("DrillSession", "moves of {0}").format(name)
-            )
-        microsteps = max(1, self.to_microsteps(axis, step))
-        target = self._jog_target(axis, direction, microsteps)
-        if target is None:
-            self.model.message.emit(
-                QCoreApplication.translate(
-                    "DrillSession", "{0} is at the end of its travel"
-                ).format(name)
-            )
-            return False
-        return self._enqueue(Command(name, target))
-
-    def set_jog(self, directions: Sequence[int]) -> None:
-        """Held arrows or pad buttons: short steps while the holding shows signs of life."""
-        wanted = self._jog_wanted(directions)
-        if wanted == self._jog:
-            return
-        self._jog = wanted
-        self._jog_started()
-        self._jog_told_end = False
-        self._feed_jog()
-
-    def set_shift(self, held: bool) -> None:
-        """Shift makes the held jog's steps short (the drill has one speed)."""
-        self._slow = held
-
-    def jog_step_microsteps(self, axis: int) -> int:
-        """How far one step of a held jog goes on ``axis``: a short time's motion."""
-        name = self.model.profile.axes[axis].name
-        period = self.model.profile.drill_timing.step_periods.get(name, 0.0)
-        seconds = JOG_STEP_S * (JOG_SLOW_SHARE if self._slow else 1.0)
-        return max(1, round(seconds / period)) if period > 0 else 1
-
-    def travel_microsteps(self, axis: int) -> tuple[int, int]:
-        """The whole microsteps inside the travel: a position the gate can never refuse."""
-        low, high = self.gate.limits(axis)
-        per_mm = self._per_mm[axis]
-        first = 0
-        if math.isfinite(low):
-            first = max(0, int((Decimal(str(low)) * per_mm).to_integral_value(ROUND_CEILING)))
-        last = MAX_POSITION
-        if math.isfinite(high):
-            last = int((Decimal(str(high)) * per_mm).to_integral_value(ROUND_FLOOR))
-        return first, min(last, MAX_POSITION)
-
-    def _planned_microsteps(self, axis: int) -> int:
-        """Where ``axis`` will stand once the commands out and queued are done."""
-        name = self.model.profile.axes[axis].name
-        pending = [c for c in (self._in_flight, *self._queue) if c is not None]
-        for command in reversed(pending):
-            if command.letter == name and command.value is not None:
-                return command.value
-            if command.letter == "N":
-                return 0
-            if command.letter == "P":
-                travel = self.model.profile.axes[axis].travel
-                return 0 if name == "X" else self.to_microsteps(axis, travel)
-        return self.to_microsteps(axis, self.model.axes[axis].position)
-
-    def _jog_target(self, axis: int, direction: int, microsteps: int) -> int | None:
-        """``microsteps`` from the planned position, clamped inside the travel; None: no room."""
-        here = self._planned_microsteps(axis)
-        first, last = self.travel_microsteps(axis)
-        target = min(last, max(first, here + direction * microsteps))
-        if (target - here) * direction <= 0:
-            return None  # at the end already (or outside it: never moved further out)
-        return target
-
-    def _feed_jog(self) -> bool:
-        """The next step of a held jog, when the drill is free; whether one was sent."""
-        self._check_deadman()  # no step goes for a holding that shows no sign of life
-        if not any(self._jog) or self.busy or not self.link.is_open:
-            return False
-        if self.model.jog_lock_reason is not None or self.model.motion_lock_reason() is not None:
-            self._end_held_jog("locked")
-            return False
-        held = [axis for axis, d in enumerate(self._jog) if d]
-        for k in range(len(held)):
-            axis = held[(self._jog_turn + k) % len(held)]
-            name = self.model.profile.axes[axis].name
-            if name not in POSITION_LETTERS:
-                continue
-            target = self._jog_target(axis, self._jog[axis], self.jog_step_microsteps(axis))
-            if target is None:
-                continue
-            self._jog_turn = (self._jog_turn + k + 1) % len(held)
-            return self._enqueue(Command(name, target))
-        if not self._jog_told_end:
-            self._jog_told_end = True
-            self.model.message.emit(
-                QCoreApplication.translate("DrillSession", "Jog ends: the end of the travel")
-            )
-        return False
-
-    def _end_held_jog(self, reason: str) -> None:
-        """The held jog is over without a release: whoever holds it forgets it."""
-        if any(self._jog):
-            self._jog = [0] * self.axis_count
-            self._jog_started()
-            self.jogEnded.emit(reason)
 
     def home(self, axis: int) -> bool:
         """``N`` homes X then Y, whichever axis was asked for."""
@@ -430,87 +289,6 @@ class DrillSession(MachineSession):
         self.model.message.emit(text)
         if running is None and dropped:
             self.idle.emit()
-
-    # --- the queue ---------------------------------------------------------------
-
-    def _refuse_line(self, line: str, reason: str) -> bool:
-        self._refused_lines += 1
-        self.model.message.emit(
-            QCoreApplication.translate(
-                "DrillSession", "Not sent: {0} is not a drill command ({1})"
-            ).format(repr(line), reason)
-        )
-        return False
-
-    def why_refused(self, command: Command) -> str | None:
-        """What the motion gate says against ``command`` now, or None: it may go.
-
-        The one judgement every command passes before the queue (:meth:`_enqueue`),
-        also asked by the step-through to show a refusal beside its button.
-        """
-        reason = self.model.motion_lock_reason()
-        if reason is not None:
-            return QCoreApplication.translate("Session", "Motion refused: {0}").format(reason)
-        if command.letter in POSITION_LETTERS and command.value is not None:
-            axis = self._axes_named(command.letter)
-            if axis:
-                return self.position_refusal(axis[0], command.value)
-        return None
-
-    def position_refusal(self, axis: int, microsteps: int) -> str | None:
-        """What the motion gate says against ``axis`` going to ``microsteps``, or None.
-
-        Any whole number is judged, one the wire cannot even carry (a negative
-        position) too: by the travel it leaves.
-        """
-        refusal = self.gate.refuse_target(axis, self.to_mm(axis, microsteps))
-        if refusal is not None:
-            return QCoreApplication.translate("MotionGate", "Motion refused: {0}").format(refusal)
-        if not 0 <= microsteps <= MAX_POSITION:
-            return QCoreApplication.translate(
-                "DrillSession", "Motion refused: {0} is no drill position (0…{1})"
-            ).format(microsteps, MAX_POSITION)
-        return None
-
-    def _enqueue(self, command: Command) -> bool:
-        """Every command reaches the queue here: a position outside the travel never does."""
-        reason = self.why_refused(command)
-        if reason is not None:
-            self.model.message.emit(reason)
-            return False
-        self._queue.append(command)
-        self._send_next()
-        return True
-
-    def _send_next(self) -> None:
-        if self._in_flight is not None or not self._queue or not self.link.is_open:
-            return
-        command = self._queue.popleft()
-        self._in_flight = command
-        self._received = False
-        self._expect(RECEIPT_LATE_SHARE * RECEIPT_TIMEOUT_S, RECEIPT_TIMEOUT_S)
-        raw = encode_command(command)
-        self.link.write(raw)
-        self.frameSent.emit(command, raw)
-        self._show_started(command)
-
-    def _clear(self) -> None:
-        if self._in_flight is not None:
-            self._ledger.abandoned(self._in_flight.letter)
-        self._queue.clear()
-        self._in_flight = None
-        self._received = False
-        self._expect(None)
-
-    def _expect(self, late_s: float | None, lost_s: float = 0.0) -> None:
-        """A reply is due: late (amber) after ``late_s``, the link lost after ``lost_s``."""
-        now = self.clock.now()
-        if late_s is None:
-            self._waiting_since = self._late_at = self._deadline = None
-            return
-        self._waiting_since = now
-        self._late_at = now + late_s
-        self._deadline = now + lost_s
 
     # --- time --------------------------------------------------------------------
 
@@ -608,53 +386,6 @@ class DrillSession(MachineSession):
             return PENDING
         self._quiet_after = None
         return None
-
-    # --- model --------------------------------------------------------------------
-
-    def _axes_named(self, letters: str) -> list[int]:
-        return [i for i, a in enumerate(self.model.profile.axes) if a.name in letters]
-
-    def _show_started(self, command: Command) -> None:
-        status = {"X": "moving", "Y": "moving", "N": "homing", "P": "parking"}.get(command.letter)
-        if status is None:
-            return
-        letters = command.letter if command.letter in POSITION_LETTERS else POSITION_LETTERS
-        for axis in self._axes_named(letters):
-            self.model.update_axis(axis, status_text=status, moving=True)
-
-    def _show_done(self, command: Command) -> None:
-        if command.letter in POSITION_LETTERS and command.value is not None:
-            for axis in self._axes_named(command.letter):
-                self.model.update_axis(
-                    axis,
-                    position=self.to_mm(axis, command.value),
-                    status_text="idle",
-                    moving=False,
-                    velocity=0.0,
-                )
-        elif command.letter == "N":
-            self._homed_here = True
-            for axis in self._axes_named(POSITION_LETTERS):
-                self.model.update_axis(
-                    axis, position=0.0, status_text="idle", moving=False, velocity=0.0
-                )
-        elif command.letter == "P":
-            # Park runs X to 0 and Y to the back of the machine, then switches the motors off.
-            for axis in self._axes_named(POSITION_LETTERS):
-                name = self.model.profile.axes[axis].name
-                travel = self.model.profile.axes[axis].travel
-                self.model.update_axis(
-                    axis,
-                    position=0.0 if name == "X" else travel,
-                    status_text="parked",
-                    moving=False,
-                    velocity=0.0,
-                )
-
-    def _show_stopped(self) -> None:
-        for axis in range(self.axis_count):
-            if self.model.axes[axis].moving:
-                self.model.update_axis(axis, status_text="idle", moving=False, velocity=0.0)
 
     # --- link events and replies ------------------------------------------------
 
