@@ -129,17 +129,19 @@ def test_toml_round_trip_keeps_every_character(tmp_path: Path) -> None:
     assert profile == "grbl-plotter"
 
 
-@settings(max_examples=60, deadline=None)
-@given(
-    st.lists(
+def _entries(code_size: int, count: int) -> st.SearchStrategy[list[tuple[str, str]]]:
+    """Names and snippets of any text (lines kept whole: no line or paragraph separators)."""
+    return st.lists(
         st.tuples(
             st.text(st.characters(blacklist_categories=("Cc", "Cs", "Zl", "Zp")), max_size=40),
-            st.text(st.characters(blacklist_categories=("Cs", "Zl", "Zp")), max_size=200),
+            st.text(st.characters(blacklist_categories=("Cs", "Zl", "Zp")), max_size=code_size),
         ),
-        max_size=5,
+        max_size=count,
     )
-)
-def test_any_valid_macros_round_trip_through_toml(entries: list[tuple[str, str]]) -> None:
+
+
+def _valid_macros(entries: list[tuple[str, str]]) -> list[Macro]:
+    """The entries the store would take, in order (a name or snippet it refuses is left out)."""
     macros: list[Macro] = []
     for name, code in entries:
         try:
@@ -148,6 +150,13 @@ def test_any_valid_macros_round_trip_through_toml(entries: list[tuple[str, str]]
         except MacroError:
             continue
         macros.append(macro)
+    return macros
+
+
+@settings(max_examples=60, deadline=None)
+@given(_entries(200, 5))
+def test_any_valid_macros_round_trip_through_toml(entries: list[tuple[str, str]]) -> None:
+    macros = _valid_macros(entries)
     assert parse_macros(macros_toml(macros, "grbl-plotter"), "m.toml")[0] == macros
 
 
@@ -193,24 +202,9 @@ def test_an_import_replaces_macros_of_the_same_name_and_adds_the_rest() -> None:
 
 
 @settings(max_examples=30, deadline=None)
-@given(
-    st.lists(
-        st.tuples(
-            st.text(st.characters(blacklist_categories=("Cc", "Cs", "Zl", "Zp")), max_size=40),
-            st.text(st.characters(blacklist_categories=("Cs", "Zl", "Zp")), max_size=120),
-        ),
-        max_size=4,
-    )
-)
+@given(_entries(120, 4))
 def test_any_valid_macros_survive_the_settings_file(entries: list[tuple[str, str]]) -> None:
-    macros: list[Macro] = []
-    for name, code in entries:
-        try:
-            macro = checked_macro(name, code)
-            checked_list([*macros, macro])
-        except MacroError:
-            continue
-        macros.append(macro)
+    macros = _valid_macros(entries)
     with tempfile.TemporaryDirectory() as folder:
         MacroStore(StationSettings(ini(Path(folder))), "grbl-plotter").save(macros)
         again = StationSettings(ini(Path(folder)))
