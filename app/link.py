@@ -16,6 +16,7 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QObject, Qt, QThread, QTimer, Signal
 
+from app.listened import listened
 from protocol.transport.base import Transport
 
 #: How long a thread may keep the interpreter lock while another waits, with a tap in use.
@@ -147,8 +148,9 @@ class Link(QObject):
         if not self.transport.is_open:
             return
         self.transport.write_from_listener(b"".join(pieces))
-        for data in pieces:
-            self.dataSent.emit(data)
+        if listened(self, "dataSent"):  # asked once a write, not an emit per line for nobody
+            for data in pieces:
+                self.dataSent.emit(data)
 
     @property
     def is_open(self) -> bool:

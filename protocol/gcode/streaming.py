@@ -79,25 +79,30 @@ class LineStreamer(Generic[T]):
     def sendable(self) -> list[tuple[bytes, T]]:
         """Take every queued line that may go out now; they count as in flight from here."""
         out: list[tuple[bytes, T]] = []
-        while self._queued:
-            line, _ = self._queued[0]
-            if self.mode is StreamMode.PING_PONG:
-                if self._in_flight:
+        queued, in_flight, capacity = self._queued, self._in_flight, self.capacity
+        ping_pong = self.mode is StreamMode.PING_PONG
+        # The longest line in flight, worked out once a call (a job asks for every answer).
+        longest = max((len(line) for line, _ in in_flight), default=0) if self.spare_line else 0
+        while queued:
+            length = len(queued[0][0])
+            if ping_pong:
+                if in_flight:
                     break
-            elif self._in_flight_bytes + len(line) > self.capacity:
+            elif self._in_flight_bytes + length > capacity:
                 break
-            elif self.spare_line and self._in_flight and self._over_spare(len(line)):
+            elif self.spare_line and in_flight and self._over_spare(length, longest):
                 break
-            entry = self._queued.popleft()
-            self._in_flight.append(entry)
-            self._in_flight_bytes += len(line)
+            entry = queued.popleft()
+            in_flight.append(entry)
+            self._in_flight_bytes += length
+            longest = max(longest, length)
             out.append(entry)
         return out
 
-    def _over_spare(self, length: int) -> bool:
-        """Whether a line of ``length`` bytes leaves no room for a copy of the longest."""
-        longest = max(length, max(len(line) for line, _ in self._in_flight))
-        return self._in_flight_bytes + length + longest > self.capacity
+    def _over_spare(self, length: int, longest: int) -> bool:
+        """Whether a line of ``length`` bytes leaves no room for a copy of the longest
+        (``longest``: of the lines in flight)."""
+        return self._in_flight_bytes + length + max(length, longest) > self.capacity
 
     def acknowledge(self) -> tuple[bytes, T] | None:
         """The oldest line in flight, now acknowledged; None for an ``ok`` nobody waited for."""

@@ -146,3 +146,36 @@ def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: 
     finally:
         preview.close()
         harness.close()
+
+
+def test_a_frozen_piece_of_dots_works_out_its_bounds_once_per_view(qtbot: QtBot) -> None:
+    """Every frame asks every item for its bounds: a frozen piece answers from what it
+    worked out for this view, and works them out again when the view changes (its pixel
+    padding, in the plot's units, depends on the zoom)."""
+    import pyqtgraph as pg
+
+    harness = StationHarness(load_profile("xy-stage"))
+    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
+    qtbot.addWidget(preview)
+    preview.resize(600, 400)
+    preview.show()
+    count = DOTS_PIECE_POINTS + 50
+    ops = tuple(
+        move(SourceRef("dots.csv", i + 1), X=float(i % 40), Y=float(i // 40)) for i in range(count)
+    )
+    try:
+        preview.set_program(Program("dots", ops))
+        preview.set_done(count)
+        (piece,) = preview.done_dots.frozen
+        first = piece.boundingRect()
+        assert piece.boundingRect() is first  # the same answer, not worked out again
+        assert first == pg.ScatterPlotItem.boundingRect(piece)
+        preview.plot.setXRange(0.0, 4.0, padding=0.0)  # another zoom
+        preview.plot.setYRange(0.0, 4.0, padding=0.0)
+        qtbot.waitUntil(lambda: piece.boundingRect() is not first)
+        again = piece.boundingRect()
+        assert again == pg.ScatterPlotItem.boundingRect(piece)  # as the scatter says now
+        assert again != first  # the padding changed with the view
+    finally:
+        preview.close()
+        harness.close()

@@ -67,6 +67,7 @@ from widgets.jobs.preview_items import (
     POSITION_COLOUR,
     TRAVEL_COLOUR,
     WORK_COLOUR,
+    FrozenDots,
     PreviewItems,
 )
 from widgets.jobs.string_art_picture import (
@@ -461,7 +462,7 @@ class DoneDots(FrozenPieces):
         opts = self.tail.opts
         while count - self._start > DOTS_PIECE_POINTS:
             end = self._start + DOTS_PIECE_POINTS
-            piece = pg.ScatterPlotItem(
+            piece = FrozenDots(
                 x=markers.x[self._start : end],
                 y=markers.y[self._start : end],
                 size=opts["size"],

@@ -241,8 +241,12 @@ class RunControls(QObject):
         total = len(program) if program is not None else 0
         executed = runner.progress.executed if program is not None else 0
         sent = runner.done if program is not None else 0
+        # QProgressBar repaints at once (a synchronous paint of its part of the window)
+        # on a visible step; held, it is painted with the rest of the window's frame.
+        self.progress.setUpdatesEnabled(False)
         self.progress.setRange(0, max(1, total))
         self.progress.setValue(min(executed, max(1, total)))
+        self.progress.setUpdatesEnabled(True)  # schedules the one paint (an update())
         text = self._count_text(executed, total)
         # Sent ahead only while the job runs: once it ended (an abort drops what the
         # machine held) the one figure is what ran, as the abort message says.

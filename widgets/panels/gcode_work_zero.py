@@ -142,7 +142,7 @@ class WorkZeroBox(QWidget):
         if session is not None:
             session.statusChanged.connect(self._show)
             session.replyText.connect(self._show)
-            session.lineSent.connect(self._show)
+            session.linesSent.connect(self._show)  # once a write, not once a line
 
     def _show(self, *_args: object) -> None:
         session = self.session

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication
 
+from app.listened import listened
 from app.machines.gcode.console_gate import refusal_hint
 from app.machines.gcode.feeder import STALE, WROTE, Answer, BannerSeen, Received, ReportSeen
 from app.machines.gcode.lines import SentLine
@@ -65,7 +66,17 @@ class ReplyReader:
             return
         session.heard_unrecognised(received.data)  # kept until the device answers: whose words?
         advanced = False
+        # Asked once a batch: with nothing connected (no frame log) no emit per reply.
+        frames = listened(session, "frameReceived")
+        # The job's answers one behind the other (most of a batch): the first one did
+        # everything but the frame for all of them (heard now, the link up, an answer heard).
+        streak = False
         for reply, verdict in received.replies:
+            if streak and isinstance(verdict, Answer) and verdict.counted:
+                if frames:
+                    session.frameReceived.emit(reply, reply_bytes(reply))
+                continue
+            streak = False
             if reply is WROTE:
                 session.follower.written(verdict)  # type: ignore[arg-type]
                 continue
@@ -81,12 +92,13 @@ class ReplyReader:
             if session.silent_since is not None and session.heard_again_at is None:
                 session.heard_again_at = session.last_heard
             session.device_replied(proof=False)  # after a silence, a status report decides
-            session.frameReceived.emit(reply, reply_bytes(reply))
+            if frames:
+                session.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:
                 continue  # an answer from before the reset: the line it was for is gone
             if isinstance(verdict, Answer) and verdict.counted:
                 self.answered(None, verdict.entry, counted=True)
-                advanced = True
+                advanced = streak = True
                 continue
             if advanced:  # the job hears of its answers before whatever came after them
                 advanced = False

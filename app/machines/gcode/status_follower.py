@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication
 
+from app.listened import listened
 from app.machines.gcode import timing
 from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.jogger import reports_moving
@@ -61,18 +62,24 @@ class StatusFollower:
 
     def written(self, written: list[tuple[bytes, SentLine]]) -> None:
         """Lines gone on the wire: the path follows them, the frame log shows them."""
+        if not written:
+            return
         session = self._session
+        # Asked once a batch: with nothing connected, no emit per line (app/listened.py).
+        frames, lines = listened(session, "frameSent"), listened(session, "lineSent")
+        line = self.planned.line
         for raw, sent in written:
             try:
-                self.planned.line(raw.decode("ascii").rstrip(), sent.text, sent.op_index)
+                line(raw.decode("ascii").rstrip(), sent.text, sent.op_index)
             except (ValueError, ArithmeticError):
                 # A line this reading cannot place is not followed; the stream goes on.
                 _log.exception("the path of %r could not be followed", sent.text)
                 session.envelope.release()
-            session.frameSent.emit(sent.text, raw)
-            session.lineSent.emit(sent)
-        if written:
-            session.linesSent.emit([sent for _raw, sent in written])
+            if frames:
+                session.frameSent.emit(sent.text, raw)
+            if lines:
+                session.lineSent.emit(sent)
+        session.linesSent.emit([sent for _raw, sent in written])
 
     def check_lost_answers(
         self,

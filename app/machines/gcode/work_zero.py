@@ -45,7 +45,7 @@ class WorkZeroPort(ZeroingPort, Protocol):
     @property
     def work_offset(self) -> tuple[float, ...] | None: ...
     @property
-    def lineSent(self) -> SignalInstance: ...
+    def linesSent(self) -> SignalInstance: ...
     @property
     def replyText(self) -> SignalInstance: ...
     @property
@@ -75,7 +75,7 @@ class WorkZero:
         self.system: str | None = None
         #: Each system's stored offset, as the board's last ``$#`` listed it.
         self.stored: dict[str, tuple[float, ...]] = {}
-        session.lineSent.connect(self._on_sent)
+        session.linesSent.connect(self._on_sent)
         session.replyText.connect(self._on_reply)
         session.reset.connect(self._on_reset)
 
@@ -86,11 +86,13 @@ class WorkZero:
         """The work offset in force (``WCO:``: the system's plus G92's), once reported."""
         return self._session.work_offset
 
-    def _on_sent(self, sent: SentLine) -> None:
+    def _on_sent(self, lines: list[SentLine]) -> None:
+        """One write's lines (a batch: a streaming job writes a thousand a second)."""
         if self.available:
-            system = system_in(sent.text)
-            if system is not None:
-                self.system = system
+            for sent in lines:
+                system = system_in(sent.text)
+                if system is not None:
+                    self.system = system
 
     def _on_reply(self, text: str) -> None:
         if not self.available or not text.startswith("[") or not text.endswith("]"):
