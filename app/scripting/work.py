@@ -85,8 +85,16 @@ class WorkZeroApi:
 
     @property
     def system(self) -> str | None:
-        """The system in use (``"G54"``), None while not known."""
-        return _session(self._machine).work.system
+        """The system in use (``"G54"``); the board is asked (``$G``) while it is not known.
+
+        A board that did not restart as its port opened (a native-USB board, or a banner
+        that came before the station listened) has told nothing of it yet; a script
+        asking should get the board's answer, not None.
+        """
+        work = _session(self._machine).work
+        if work.system is None and work.available:
+            self.read()
+        return work.system
 
     @property
     def offset(self) -> dict[str, float]:

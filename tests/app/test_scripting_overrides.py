@@ -70,3 +70,18 @@ def test_the_work_api_selects_reads_and_goes_to_zero(qapp: object) -> None:
             machine.work.select("G60")
     finally:
         machine.close()
+
+
+def test_the_work_system_unknown_at_connect_is_asked_of_the_board(qapp: object) -> None:
+    """A board whose banner the station never heard (a native-USB board does not restart
+    as its port opens) has not said its system: asking for it asks the board."""
+    machine = stepdeck.connect("grbl-plotter", emulator=True, simulated=True)
+    try:
+        session = machine.station.session
+        assert session is not None
+        work = session.work  # type: ignore[attr-defined]
+        machine.work.select("G56")
+        work.system = None  # as if nothing had been heard of it since the port opened
+        assert machine.work.system == "G56"
+    finally:
+        machine.close()
