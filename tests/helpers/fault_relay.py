@@ -30,6 +30,7 @@ import enum
 import os
 import random
 import select
+import termios
 import time
 import tty
 from collections.abc import Callable
@@ -211,7 +212,9 @@ class FaultRelay(FaultBridge):
         with contextlib.suppress(OSError):
             os.close(self._device)
         self._device = os.open(device, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
-        tty.setraw(self._device)
+        # Not TCSAFLUSH (setraw's default): that throws away what the new device said
+        # already — a restarted board's banner, whenever it beats this open.
+        tty.setraw(self._device, termios.TCSANOW)
 
     def _relay(self, direction: Direction, data: bytes) -> None:
         """Pass ``data`` on with the fault applied where it falls (lock held)."""
