@@ -102,8 +102,12 @@ class Terminal:
         self.yes = yes
         self._bar: tqdm[None] | None = None
         self._show_bar = bar
+        #: How far the job got, for a stop no one at the terminal could answer.
+        self._last: Progress | None = None
+        self._said: str | None = None
 
     def progress(self, progress: Progress) -> None:
+        self._last = progress
         if not self._show_bar:
             return
         if self._bar is None:
@@ -112,6 +116,7 @@ class Terminal:
         self._bar.set_postfix_str(f"ETA {_clock(progress.remaining_s)} {progress.state}")
 
     def say(self, text: str) -> None:
+        self._said = text
         if self._bar is not None:
             self._bar.write(text, file=self.out)
         else:
@@ -129,11 +134,14 @@ class Terminal:
         return not answer.strip().lower().startswith("a")
 
     def decide(self, question: str, again: str, done: str) -> bool:
-        self.say(question)
+        if question != self._said:  # the job's own message often is the question
+            self.say(question)
         try:
             answer = input(f"[a] {again} / [d] {done}: ")
         except EOFError:
-            raise JobAborted("no one at the terminal to decide", 0, 0) from None
+            last = self._last
+            done_ops, total = (last.done, last.total) if last is not None else (0, 0)
+            raise JobAborted("no one at the terminal to decide", done_ops, total) from None
         return not answer.strip().lower().startswith("d")
 
     def close(self) -> None:

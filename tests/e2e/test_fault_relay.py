@@ -173,3 +173,52 @@ def test_a_seed_names_one_fault_and_six_seeds_in_a_row_try_every_kind() -> None:
             assert 2.0 <= fault.amount <= 5.0
         elif fault.kind is FaultKind.SILENCE:
             assert 3.0 <= fault.amount <= 8.0
+
+
+def test_a_board_that_restarts_on_open_restarts_when_the_station_opens_the_port_again(
+    tmp_path: Path,
+) -> None:
+    """As an Arduino (DTR): not as the port comes back, so its banner reaches the station."""
+    old_master, old_slave = os.openpty()
+    new_master, new_slave = os.openpty()
+    for fd in (old_master, old_slave, new_master, new_slave):
+        tty.setraw(fd)
+    restarted: list[float] = []
+
+    def restart() -> str:
+        restarted.append(time.monotonic())
+        os.write(new_master, b"Grbl 1.1h ['$' for help]\n")  # the new board's banner
+        return os.ttyname(new_slave)
+
+    relay = FaultRelay(
+        os.ttyname(old_slave),
+        tmp_path / "port",
+        _to_device(FaultKind.REOPEN, 11, 1.0),
+        to_device_end=b"\n",
+        to_host_end=b"\n",
+        on_reopen=restart,
+        restart_on_open=True,
+    )
+    station = os.open(relay.link, os.O_RDWR | os.O_NOCTTY)
+    try:
+        tty.setraw(station)
+        os.write(station, MESSAGE)
+        assert arrives(old_master, 11) == MESSAGE[:11]
+        wait_until(relay.link.exists, "the port never came back")
+        os.write(old_master, b"ok\n")  # the old board runs on, unheard
+        assert read_for(station, QUIET_S) == b""
+        assert restarted == [] and relay.restarts == 0  # back, but nobody opened it yet
+        os.close(station)
+        station = os.open(relay.link, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(station)
+        assert arrives(station, 25) == b"Grbl 1.1h ['$' for help]\n"
+        assert len(restarted) == 1 and relay.restarts == 1
+        os.write(station, b"?\n")
+        assert arrives(new_master, 2) == b"?\n"
+    finally:
+        relay.close()
+        for fd in (station, old_master, old_slave, new_master, new_slave):
+            try:
+                os.close(fd)
+            except OSError:
+                pass

@@ -14,8 +14,10 @@ happens:
 * **silence** — both directions carry nothing for 3…8 s, the port open (a
   pulled RS232 cable, a Bluetooth SPP link out of range);
 * **reopen** — the station's port disappears, as a USB adapter pulled out,
-  and comes back 1…5 s later at the same path; ``on_reopen`` runs first
-  (grbl-sim's board restarts then, as an Arduino's does when its port opens).
+  and comes back 1…5 s later at the same path; ``on_reopen`` runs first,
+  or, with ``restart_on_open``, once the station has opened the port again
+  (grbl-sim's board restarts then, as an Arduino's does when its port is
+  opened: DTR resets it, and what the station sends during the boot is lost).
 
 :func:`random_fault` draws the fault from a seed alone, so a seed printed by
 a failing run is enough to run the same case again.
@@ -27,6 +29,8 @@ import contextlib
 import enum
 import os
 import random
+import select
+import termios
 import time
 import tty
 from collections.abc import Callable
@@ -115,9 +119,15 @@ class FaultRelay(FaultBridge):
         to_host_end: bytes,
         ignored_to_device: frozenset[int] = frozenset(),
         on_reopen: Callable[[], str | None] | None = None,
+        restart_on_open: bool = False,
     ) -> None:
         self.fault = fault
         self._on_reopen = on_reopen
+        self._restart_on_open = restart_on_open
+        #: The station's port once back, until the station opens it (``restart_on_open``).
+        self._unopened: tuple[int, str] | None = None
+        #: How many times the station's opening of its port restarted the device.
+        self.restarts = 0
         self._seen = {Direction.TO_DEVICE: 0, Direction.TO_HOST: 0}
         self._line = bytearray()  # the message under way in the fault's direction
         self._duplicating = False
@@ -147,12 +157,48 @@ class FaultRelay(FaultBridge):
             self.ended_at = now
         if self._restore_at is not None and now >= self._restore_at:
             self._restore_at = None
-            if self._cut is Cut.PULLED and self._on_reopen is not None:
+            pulled = self._cut is Cut.PULLED
+            if pulled and self._on_reopen is not None and not self._restart_on_open:
                 device = self._on_reopen()
                 if device is not None:
                     self._swap_device(device)
             self._restore_locked()
+            if pulled and self._restart_on_open:
+                self._await_open()
             self.ended_at = now
+        if self._unopened is not None and _opened(self._unopened[0]):
+            self._restart_device()
+
+    # --- a device that restarts when its port is opened (an Arduino's DTR) ----------------
+
+    def _await_open(self) -> None:
+        """Let go of the station's new port, so its opening shows (the master's hang-up ends)."""
+        assert self._master is not None and self._slave is not None
+        path = os.ttyname(self._slave)
+        os.close(self._slave)
+        self._unopened = (self._master, path)
+        self._master = self._slave = None  # nothing relayed to a port nobody has open
+
+    def _restart_device(self) -> None:
+        """The station opened its port: the device restarts, deaf to the host while it boots."""
+        assert self._unopened is not None
+        master, path = self._unopened
+        self._unopened = None
+        if self._on_reopen is not None:
+            device = self._on_reopen()
+            if device is not None:
+                self._swap_device(device)
+        self.restarts += 1
+        _drain(master)  # what the station sent during the boot (the bootloader's) is lost
+        self._master = master
+        self._slave = os.open(path, os.O_RDWR | os.O_NOCTTY)  # held again, as at the start
+
+    def _unplug(self) -> None:
+        if self._unopened is not None:
+            with contextlib.suppress(OSError):
+                os.close(self._unopened[0])
+            self._unopened = None
+        super()._unplug()
 
     def _restore_locked(self) -> None:
         """:meth:`restore` from the relaying loop, which holds the lock already."""
@@ -166,7 +212,9 @@ class FaultRelay(FaultBridge):
         with contextlib.suppress(OSError):
             os.close(self._device)
         self._device = os.open(device, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
-        tty.setraw(self._device)
+        # Not TCSAFLUSH (setraw's default): that throws away what the new device said
+        # already — a restarted board's banner, whenever it beats this open.
+        tty.setraw(self._device, termios.TCSANOW)
 
     def _relay(self, direction: Direction, data: bytes) -> None:
         """Pass ``data`` on with the fault applied where it falls (lock held)."""
@@ -253,3 +301,20 @@ class FaultRelay(FaultBridge):
     def seen(self) -> dict[Direction, int]:
         """Bytes that came to the relay each way (a clean run's figures size the faults)."""
         return dict(self._seen)
+
+
+def _opened(master: int) -> bool:
+    """Whether someone has the slave of pty ``master`` open (no hang-up on the master)."""
+    poller = select.poll()
+    poller.register(master, select.POLLIN | select.POLLHUP)
+    return not any(events & select.POLLHUP for _, events in poller.poll(0))
+
+
+def _drain(fd: int) -> None:
+    """Throw away what waits to be read on ``fd``."""
+    while select.select([fd], [], [], 0)[0]:
+        try:
+            if not os.read(fd, 4096):
+                return
+        except (BlockingIOError, OSError):
+            return

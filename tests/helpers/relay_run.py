@@ -97,6 +97,10 @@ class RelayDialect:
 class Board(Protocol):
     """A device process on a pty, its log, and what happens when its port reopens."""
 
+    #: Whether :meth:`reopened` waits for the station to open its port again (an Arduino's
+    #: DTR restarts the board then) rather than running as the port comes back.
+    restarts_on_open: bool
+
     def start(self) -> str:
         """Started: its device path."""
 
@@ -114,6 +118,8 @@ class Board(Protocol):
 
 class EmulatorBoard:
     """``stepdeck-emulator --pty --log``: the emulated firmware, untouched by a reopen."""
+
+    restarts_on_open = False
 
     def __init__(self, dialect: RelayDialect, workdir: Path) -> None:
         self.dialect = dialect
@@ -154,8 +160,13 @@ class GrblSimBoard:
 
     A restart ends the simulator and starts a new one on the same EEPROM
     (the board keeps its settings, loses its position); the step log goes on,
-    marked where the board came back.
+    marked where the board came back.  It happens when the station opens the
+    port again after it was pulled (the relay waits for that open), so the
+    banner is the first thing the station reads, as from a real board; the
+    old board runs on, unheard, while the port is gone.
     """
+
+    restarts_on_open = True
 
     def __init__(self, dialect: RelayDialect, workdir: Path) -> None:
         self.workdir = workdir / "board"
@@ -536,6 +547,7 @@ def run_once(dialect: RelayDialect, seed: int | None, workdir: Path) -> RunResul
             to_host_end=dialect.to_host_end,
             ignored_to_device=dialect.ignored_to_device,
             on_reopen=board.reopened,
+            restart_on_open=board.restarts_on_open,
         )
         env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
         with (
