@@ -34,13 +34,11 @@ def test_the_last_answer_asks_for_the_status_and_the_job_ends_on_its_report(
     program = Program("short", (Operation(OpKind.PEN_UP, at), *[move(at, X=0.0, Y=0.0)] * 5))
     assert runner.load(program) == []
     asked: list[float] = []
-    query = session.query_status
-
-    def counted_query() -> None:
-        asked.append(plotter.clock.now())
-        query()
-
-    session.query_status = counted_query  # type: ignore[method-assign]
+    # Every "?" on the wire, whoever wrote it (the window, or the feeder where the answer
+    # was read): the frame log is told of each.
+    session.frameSent.connect(
+        lambda name, _data: asked.append(plotter.clock.now()) if name == "?" else None
+    )
     advanced: list[float] = []
     session.jobAdvanced.connect(lambda: advanced.append(plotter.clock.now()))
     runner.start()
