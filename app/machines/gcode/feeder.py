@@ -167,6 +167,16 @@ class Received(Generic[T]):
     failure: Exception | None = None
     #: A status query (``?``) was written after these replies: the job's last line answered.
     asked_status: bool = False
+    #: A status report among them was read with nothing unanswered: it can end a job (or
+    #: a wait), so the window hears of this read at once (:func:`settles`).
+    settles: bool = False
+
+
+def settles(result: object) -> bool:
+    """Whether the window must hear of a read at once (:meth:`Link.set_tap`'s ``urgent``):
+    a report that may show the machine standing after everything sent; the reads between,
+    hundreds a second while a job streams, wait for the window's next batch."""
+    return isinstance(result, Received) and result.settles
 
 
 def merged(results: list[object]) -> list[object]:
@@ -379,12 +389,14 @@ class LineFeeder(Generic[T]):
                 # The lines unanswered as the report is read: those written later
                 # went after it, so it says nothing about them (lost answers).
                 job = self.job
+                idle = self.streamer.idle
                 verdict = ReportSeen(
                     self.streamer.unanswered_tags(),
                     None if job is None else job.reported(),
                     self.streamer.in_flight_bytes,
-                    self.streamer.idle,
+                    idle,
                 )
+                received.settles = received.settles or idle
             elif isinstance(reply, AlarmReply):
                 self.unseen += 1
                 self.gate = None
