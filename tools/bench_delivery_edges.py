@@ -24,7 +24,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
-from tools.bench_streaming import GRBL_PROFILE, JOB_LINES, _grbl_lines, _stream
+from tools.bench_streaming import GRBL_PROFILE, JOB_LINES, grbl_lines, job_run
 
 
 @contextmanager
@@ -81,7 +81,7 @@ def bench_gcode_delivery_edges() -> list[str]:
         stack.enter_context(_wrapped(Link, "write", lambda data: wrote(bytes(data))))
         stack.enter_context(_wrapped(Link, "write_from_tap", lambda parts: wrote(b"".join(parts))))
         stack.enter_context(_wrapped(LineFeeder, "receive", read))
-        job = _stream("counting", _grbl_lines(JOB_LINES), as_job=True, profile_name=GRBL_PROFILE)
+        job = job_run(grbl_lines(JOB_LINES), GRBL_PROFILE)
 
     def ms(a: str, b: str | float) -> str:
         end = points[b] if isinstance(b, str) else b

@@ -167,6 +167,11 @@ def _stream(
     return Run(elapsed, sent, len(lines), cpu, emulator_cpu, _load())
 
 
+def job_run(lines: list[str], profile_name: str = PROFILE) -> Run:
+    """``lines`` run as a job, counting, as the job rows run them (for rows elsewhere)."""
+    return _stream("counting", lines, as_job=True, profile_name=profile_name)
+
+
 def _run_as_job(
     app: object, station: object, lines: list[str], emulator_pid: int
 ) -> tuple[float, float, float]:
@@ -368,7 +373,7 @@ def bench_gcode_job_streaming() -> list[str]:
     ]
 
 
-def _grbl_lines(count: int) -> list[str]:
+def grbl_lines(count: int) -> list[str]:
     """The same short lines for the GRBL plotter: the first sets the feed GRBL requires."""
     return [f"{_lines(1)[0]} F3000", *_lines(count - 1)]
 
@@ -382,7 +387,7 @@ def bench_gcode_delivery() -> list[str]:
     Run; the script's first line) to the same end: the machine seen idle after
     the last line, each by its own status query (:func:`stream_counting`).
     """
-    lines = _grbl_lines(JOB_LINES)
+    lines = grbl_lines(JOB_LINES)
     job = _stream("counting", lines, as_job=True, profile_name=GRBL_PROFILE)
     peer = _peer(lines, GRBL_PROFILE, compact=True)
     written = sum(len(line) + 1 for line in lines)
@@ -402,7 +407,7 @@ def main(argv: list[str]) -> None:
     if argv[:1] == ["--peer-counting"]:
         path, count, rx_buffer = argv[1], int(argv[2]), int(argv[3])
         compact = argv[4:5] == ["compact"]
-        lines = _grbl_lines(count) if compact else _lines(count)
+        lines = grbl_lines(count) if compact else _lines(count)
         elapsed, cpu = stream_counting(path, lines, rx_buffer, compact=compact)
         print(json.dumps({"elapsed": elapsed, "cpu": cpu}))
         return
