@@ -47,6 +47,9 @@ class Link(QObject):
         self.transport = transport
         self._tap: Callable[[bytes], object] | None = None
         self._merge: Callable[[list[object]], list[object]] | None = None
+        self._urgent: Callable[[object], bool] | None = None
+        #: An urgent result waits in the inbox: it goes now, not at the next 1/30 s.
+        self._hurry = False
         self._inbox: list[object] = []
         self._inbox_lock = threading.Lock()
         self._inbox_posted = False
@@ -62,6 +65,7 @@ class Link(QObject):
         self,
         tap: Callable[[bytes], object] | None,
         merge: Callable[[list[object]], list[object]] | None = None,
+        urgent: Callable[[object], bool] | None = None,
     ) -> None:
         """Run ``tap`` on received bytes where they arrive (the transport's reader thread).
 
@@ -69,9 +73,12 @@ class Link(QObject):
         the next line goes when an ``ok`` comes) does its part there; what
         ``tap`` returns reaches the GUI thread as ``received``.  ``merge`` makes
         the results gathered meanwhile into as few as it can (one per batch).
+        ``urgent``: a result the window hears of at once, with what waited before it,
+        not at the next batch (G-code: a report that can end a job).
         """
         self._tap = tap
         self._merge = merge
+        self._urgent = urgent
         if tap is not None and sys.getswitchinterval() > TAP_SWITCH_INTERVAL_S:
             sys.setswitchinterval(TAP_SWITCH_INTERVAL_S)  # the reader's turn comes sooner
 
@@ -91,17 +98,19 @@ class Link(QObject):
         # From the reader thread: one wake-up of the window's thread per batch.  While it
         # is busy the results gather here and are told in order, all before any later
         # event of this link (a loss is emitted after them, so queued behind the wake-up).
+        urgent = self._urgent is not None and self._urgent(result)
         with self._inbox_lock:
             self._inbox.append(result)
-            if self._inbox_posted:
+            if self._inbox_posted and not urgent:
                 return
             self._inbox_posted = True
+            self._hurry = self._hurry or urgent
         self._inboxFilled.emit()
 
     def _deliver(self) -> None:
         """The inbox to the window, at most every :data:`DELIVER_EVERY_S` (later ones wait)."""
         wait = self._delivered_at + DELIVER_EVERY_S - time.monotonic()
-        if wait > 0:
+        if wait > 0 and not self._hurry:
             if not self._later.isActive():
                 self._later.start(max(1, round(wait * 1000)))
             return  # still posted: the reader thread adds to the inbox without waking us
@@ -113,6 +122,7 @@ class Link(QObject):
         with self._inbox_lock:
             results, self._inbox = self._inbox, []
             self._inbox_posted = False
+            self._hurry = False
         if self._merge is not None and len(results) > 1:
             results = self._merge(results)
         for result in results:

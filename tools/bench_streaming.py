@@ -13,7 +13,8 @@ Two rows (``tools/benchmark.py --only gcode_streaming,gcode_job_streaming``):
 * ``gcode_job_streaming`` — 10 000 such lines run as a job (runner + jobs dock in
   the window's own event loop, until the machine is seen idle), and in the same
   run the peer: grbl's ``stream.py`` character counting, reimplemented here
-  (:func:`stream_counting`), as a separate plain process on the same emulator.
+  (:func:`stream_counting`), as a separate plain process on the same emulator,
+  also timed until it has seen the machine idle after its last line.
   Beside each rate: processor time per line of the sender's process (the
   station: every thread of this process; the peer: its own process) and of the
   emulator's process, measured apart (``/proc/<pid>/stat``), and the load average.
@@ -166,6 +167,11 @@ def _stream(
     return Run(elapsed, sent, len(lines), cpu, emulator_cpu, _load())
 
 
+def job_run(lines: list[str], profile_name: str = PROFILE) -> Run:
+    """``lines`` run as a job, counting, as the job rows run them (for rows elsewhere)."""
+    return _stream("counting", lines, as_job=True, profile_name=profile_name)
+
+
 def _run_as_job(
     app: object, station: object, lines: list[str], emulator_pid: int
 ) -> tuple[float, float, float]:
@@ -246,6 +252,12 @@ def stream_counting(
     as the station's run does before it is timed.  ``compact``: each line as
     ``stream.py`` itself sends it (:func:`stream_py_line`: no spaces, no
     comments, upper case), the figure the station's delivery is held to.
+
+    The time ends where the station's job ends: the machine seen idle after the
+    last line (GRBL answers a line once it is planned, not run).  ``stream.py``
+    itself stops its clock at the last ``ok`` and tells the operator to wait for
+    the machine; here ``?`` goes the moment that ``ok`` is read, and again after
+    each report until one says Idle: the least wait a sender can have.
     """
     import serial
 
@@ -290,6 +302,15 @@ def stream_counting(
                 raise RuntimeError("the board stopped answering")
             if answered(reply):
                 in_flight.popleft()
+        port.write(b"?")
+        while True:
+            reply = port.readline()
+            if not reply:
+                raise RuntimeError("the board stopped answering")
+            if reply.startswith(b"<Idle"):
+                break
+            if reply.startswith(b"<"):
+                port.write(b"?")
         return time.perf_counter() - start, time.process_time() - cpu
     finally:
         port.close()
@@ -341,7 +362,7 @@ def bench_gcode_job_streaming() -> list[str]:
     return [
         f"{len(lines):,} short lines over a pty paced at {BAUD} baud, as a G-code job "
         "(runner + jobs dock, counting; until the machine is seen idle) beside grbl's "
-        "stream.py character counting (reimplemented, its own process):",
+        "stream.py character counting (reimplemented, its own process; also until idle):",
         "  " + job.describe("job") + " (goals >= 95 % quiet, >= 85 % loaded)",
         "  "
         + peer.describe("stream.py counting")
@@ -352,7 +373,7 @@ def bench_gcode_job_streaming() -> list[str]:
     ]
 
 
-def _grbl_lines(count: int) -> list[str]:
+def grbl_lines(count: int) -> list[str]:
     """The same short lines for the GRBL plotter: the first sets the feed GRBL requires."""
     return [f"{_lines(1)[0]} F3000", *_lines(count - 1)]
 
@@ -362,9 +383,11 @@ def bench_gcode_delivery() -> list[str]:
 
     Both on a paced emulator of the GRBL plotter, same lines as written; the
     station sends them compact, as ``stream.py`` does (goal: delivered in at
-    most 1.00 times its time).
+    most 1.00 times its time).  Both timed from the same start (the operator's
+    Run; the script's first line) to the same end: the machine seen idle after
+    the last line, each by its own status query (:func:`stream_counting`).
     """
-    lines = _grbl_lines(JOB_LINES)
+    lines = grbl_lines(JOB_LINES)
     job = _stream("counting", lines, as_job=True, profile_name=GRBL_PROFILE)
     peer = _peer(lines, GRBL_PROFILE, compact=True)
     written = sum(len(line) + 1 for line in lines)
@@ -372,7 +395,9 @@ def bench_gcode_delivery() -> list[str]:
     return [
         f"{len(lines):,} lines of ~{written / len(lines):.0f} bytes as written, "
         f"~{wire / len(lines):.0f} compact, on the GRBL plotter over a pty paced at {BAUD} "
-        "baud: the station's job beside grbl's stream.py (compact lines, its own process):",
+        "baud: the station's job beside grbl's stream.py (compact lines, its own process), "
+        "each timed from its start (Run; the script's first line) to the machine seen idle "
+        "after the last line (stream.py: '?' as its last ok is read, until Idle):",
         f"  job: {job.elapsed:.2f} s; stream.py: {peer.elapsed:.2f} s; delivery ratio "
         f"{job.elapsed / peer.elapsed:.2f}x stream.py's time (goal <= 1.00) {job.load}",
     ]
@@ -382,7 +407,7 @@ def main(argv: list[str]) -> None:
     if argv[:1] == ["--peer-counting"]:
         path, count, rx_buffer = argv[1], int(argv[2]), int(argv[3])
         compact = argv[4:5] == ["compact"]
-        lines = _grbl_lines(count) if compact else _lines(count)
+        lines = grbl_lines(count) if compact else _lines(count)
         elapsed, cpu = stream_counting(path, lines, rx_buffer, compact=compact)
         print(json.dumps({"elapsed": elapsed, "cpu": cpu}))
         return

@@ -22,6 +22,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from protocol.clock import ManualClock  # noqa: E402
+from tools.bench_delivery_edges import bench_gcode_delivery_edges  # noqa: E402
 from tools.bench_drill_order import bench_drill_order_50k, bench_drill_order_quality  # noqa: E402
 from tools.bench_eta import bench_gcode_eta  # noqa: E402
 from tools.bench_grbl_planner import bench_grbl_planner_vs_grbl_sim  # noqa: E402
@@ -1222,6 +1223,7 @@ BENCHMARKS: list[Callable[[], list[str]]] = [
     bench_gcode_streaming,
     bench_gcode_job_streaming,
     bench_gcode_delivery,
+    bench_gcode_delivery_edges,
     bench_string_art_generator,
     bench_string_art_peers,
     bench_gcode_eta,

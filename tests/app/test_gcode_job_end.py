@@ -12,6 +12,7 @@ from pytestqt.qtbot import QtBot
 from app.jobs.program import Operation, OpKind, Program, SourceRef, move
 from app.jobs.run.runner import JobRunner, JobState
 from app.profiles import load_profile
+from protocol.transport.loopback import Direction
 from tests.helpers.harness import StationHarness
 
 
@@ -34,13 +35,15 @@ def test_the_last_answer_asks_for_the_status_and_the_job_ends_on_its_report(
     program = Program("short", (Operation(OpKind.PEN_UP, at), *[move(at, X=0.0, Y=0.0)] * 5))
     assert runner.load(program) == []
     asked: list[float] = []
-    query = session.query_status
 
-    def counted_query() -> None:
-        asked.append(plotter.clock.now())
-        query()
+    def to_board(direction: Direction, data: bytes) -> bytes:
+        """Every "?" on the wire, whoever wrote it (the window, or the feeder where the
+        answer was read)."""
+        if direction is Direction.TO_DEVICE and b"?" in data:
+            asked.append(plotter.clock.now())
+        return data
 
-    session.query_status = counted_query  # type: ignore[method-assign]
+    plotter.loopback.set_manipulator(to_board)
     advanced: list[float] = []
     session.jobAdvanced.connect(lambda: advanced.append(plotter.clock.now()))
     runner.start()

@@ -44,10 +44,11 @@ from app.jobs.run.pacing import Every
 from app.jobs.run.standing import Standing, StandingProof
 from app.jobs.run.start_point import StartPlan, StartRefused, plan_start
 from app.jobs.run.states import ACTIVE, CLOCK_RUNS, JobState
+from app.machines.gcode.feeder import PullGate
 from app.machines.gcode.job_feed import JobFeed
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.session import MachineSession
-from protocol.gcode.codec import StatusReport
+from protocol.gcode.codec import Feedback, StatusReport
 
 #: Station-clock seconds between checkpoint writes while lines stream (each write is an fsync).
 CHECKPOINT_EVERY_S = 0.5
@@ -78,6 +79,18 @@ def modes_confirm(modes: str, words: tuple[str, ...]) -> str | None:
     stated = set(modes.strip("[]").removeprefix("GC:").split())
     missing = [word for word in SETUP_WORDS if word in words and word not in stated]
     return f"still not in {' '.join(missing)} after the set-up ({modes})" if missing else None
+
+
+def setup_gate(words: tuple[str, ...]) -> PullGate[SentLine]:
+    """The set-up's confirmation judged where it is read: the ``[GC:…]`` answering the
+    set-up's own ``$G`` lets the job go there when :func:`modes_confirm` finds nothing wrong,
+    the check the driver makes of it too (:meth:`GcodeDriver._on_reply_text`)."""
+
+    def lets_go(reply: object) -> bool:
+        text = reply.text if isinstance(reply, Feedback) else ""
+        return text.startswith("[GC:") and modes_confirm(text, words) is None
+
+    return PullGate(lambda sent: sent.origin == "setup" and sent.text == "$G", lets_go)
 
 
 class GcodeDriver(GcodeAlarmPause):
@@ -255,6 +268,7 @@ class GcodeDriver(GcodeAlarmPause):
         wherever that put it.
         """
         words = session.settings.words
+        self._hold()  # nothing of the job is pulled until the set-up is confirmed
         for line in setup_lines(words):
             self._preparing += session.send_line(line, "setup")
         if "$G" in words:
@@ -293,7 +307,12 @@ class GcodeDriver(GcodeAlarmPause):
             self._redo_setup = False
             self._set_up(session)
         preparing = self._confirming or self._preparing > 0
-        if preparing or self._recheck or not running or runner.single_step:
+        held = self._recheck or not running or runner.single_step
+        if self._confirming and not held:
+            # Held for the set-up's answer; a [GC:…] that confirms it lets the job go where
+            # it is read, a GUI turn sooner (a wrong one holds it, and fails it here).
+            feed.pull_when(setup_gate(session.settings.words))
+        elif preparing or held:
             self._hold()  # the job is pulled only while it runs on its own
         if preparing:
             return False  # the answer to the set-up or the way back carries on

@@ -27,7 +27,16 @@ What keeps the machine from moving when nobody asked:
 * after a soft reset nothing is sent until the board's banner (as before); a
   banner nobody here asked for (the board reset itself) drops the queue and
   stops the pulling before anything more could go;
-* the transport writes nothing once the link is closed.
+* the transport writes nothing once the link is closed;
+* a job held for its set-up's confirmation (:class:`PullGate`) is let go
+  here only by the reply to that very line, with nothing refused, alarmed or
+  reset since, and only if the reply says what the GUI thread would accept;
+  anything that takes back or holds the job disarms it.
+
+Where a job starts and ends, no GUI turn is waited for either: the set-up's
+confirmation lets the job go as it is read (above), and the answer that
+leaves nothing of a pulled job unanswered asks the board's status at once
+(its end shows on an idle report; :attr:`Received.asked_status`).
 
 Plain Python, no Qt; in tests on a manual clock the transport calls it on
 the GUI thread itself, so everything stays synchronous.
@@ -43,6 +52,7 @@ from typing import Generic, Protocol, TypeVar
 from protocol.clock import Clock
 from protocol.gcode.codec import (
     FEED_HOLD,
+    STATUS_QUERY,
     AlarmReply,
     Banner,
     ErrorReply,
@@ -79,6 +89,20 @@ class JobLines(Protocol[T]):
     def reported(self) -> object:
         """What the job has as a status report is read (the report's snapshot of it)."""
         ...
+
+
+@dataclass(frozen=True)
+class PullGate(Generic[T]):
+    """A held job goes once the reply to one line says so (a set-up's ``$G``): at once, on
+    the thread that read it, instead of a GUI turn later.
+
+    ``asks``: whether the oldest unanswered line is the one asked (its reply comes while
+    it is); ``lets_go``: whether that reply lets the job go.  The first reply read while
+    that line is the oldest decides, once; a "no" leaves the job held for the GUI thread.
+    """
+
+    asks: Callable[[T], bool]
+    lets_go: Callable[[object], bool]
 
 
 class Stale:
@@ -141,6 +165,18 @@ class Received(Generic[T]):
     #: What went wrong reading these bytes (a bug, not the device's words): sending is held,
     #: as after an error, until the GUI thread has stopped the machine.
     failure: Exception | None = None
+    #: A status query (``?``) was written after these replies: the job's last line answered.
+    asked_status: bool = False
+    #: A status report among them was read with nothing unanswered: it can end a job (or
+    #: a wait), so the window hears of this read at once (:func:`settles`).
+    settles: bool = False
+
+
+def settles(result: object) -> bool:
+    """Whether the window must hear of a read at once (:meth:`Link.set_tap`'s ``urgent``):
+    a report that may show the machine standing after everything sent; the reads between,
+    hundreds a second while a job streams, wait for the window's next batch."""
+    return isinstance(result, Received) and result.settles
 
 
 def merged(results: list[object]) -> list[object]:
@@ -162,7 +198,10 @@ def merged(results: list[object]) -> list[object]:
         ):
             between = [(WROTE, last.written)] if last.written else []
             out[-1] = Received(
-                last.data + result.data, last.replies + between + result.replies, result.written
+                last.data + result.data,
+                last.replies + between + result.replies,
+                result.written,
+                asked_status=last.asked_status or result.asked_status,
             )
         else:
             out.append(result)
@@ -200,37 +239,55 @@ class LineFeeder(Generic[T]):
         self.unseen = 0
         #: The running job: its answers are counted here while it is set.
         self.job: JobLines[T] | None = None
-        #: Whether the job's next lines may be pulled (only the GUI thread sets it; anything
-        #: that takes back the queue clears it).
+        #: Whether the job's next lines may be pulled (only the GUI thread sets it, or the
+        #: reply its gate waits for; anything that takes back the queue clears it).
         self.pulling = False
+        #: What lets the held job go where its set-up's answer is read (:meth:`pull_when`).
+        self.gate: PullGate[T] | None = None
 
     def follow(self, job: JobLines[T] | None) -> None:
         """Count the answers of ``job`` here from now on (None: no job); it is not pulled."""
         with self.lock:
             self.job = job
             self.pulling = False
+            self.gate = None
 
     def pull(self) -> list[tuple[bytes, T]]:
         """Let the job's next lines be pulled as room frees; the lines written now."""
         with self.lock:
             self.pulling = self.job is not None
+            self.gate = None
             return self.pump()
+
+    def pull_when(self, gate: PullGate[T]) -> None:
+        """Held until the reply ``gate`` waits for lets the job be pulled, where it is read.
+
+        Already let go (that reply was read before the GUI thread caught up): it
+        stays so.  The GUI thread still judges the reply too, and fails the job on
+        a "no"; this only spares the "yes" a turn of the GUI thread.
+        """
+        with self.lock:
+            if not self.pulling:
+                self.gate = gate if self.job is not None else None
 
     def hold(self) -> None:
         """Pull no more of the job until :meth:`pull` (lines already queued stay)."""
         with self.lock:
             self.pulling = False
+            self.gate = None
 
     def discard_queued(self) -> list[T]:
         """Take back the lines not yet sent, and stop pulling the job (oldest first)."""
         with self.lock:
             self.pulling = False
+            self.gate = None
             return self.streamer.discard_queued()
 
     def clear(self) -> list[T]:
         """Forget every line (the board lost them: a reset, a lost link); stop pulling."""
         with self.lock:
             self.pulling = False
+            self.gate = None
             return self.streamer.clear()
 
     @property
@@ -284,6 +341,7 @@ class LineFeeder(Generic[T]):
             try:
                 self._match(data, received)
                 received.written = self.pump(here=True)
+                self._ask_when_drained(received)
             except Exception as exc:  # raised here, it would end the reader thread
                 # The link would go silent for good (no more reads, never "connected"),
                 # and what was matched so far may be wrong: hold, and let the GUI stop.
@@ -312,6 +370,7 @@ class LineFeeder(Generic[T]):
                     entry = self.streamer.acknowledge()
                     verdict = Answer(entry)
                     self.unseen += 1
+                    self.gate = None
                     judge = self._holds_on_refusal
                     ours = entry is not None and judge is not None and judge(entry[1])
                     if self.pulling or ours:
@@ -330,19 +389,51 @@ class LineFeeder(Generic[T]):
                 # The lines unanswered as the report is read: those written later
                 # went after it, so it says nothing about them (lost answers).
                 job = self.job
+                idle = self.streamer.idle
                 verdict = ReportSeen(
                     self.streamer.unanswered_tags(),
                     None if job is None else job.reported(),
                     self.streamer.in_flight_bytes,
-                    self.streamer.idle,
+                    idle,
                 )
+                received.settles = received.settles or idle
             elif isinstance(reply, AlarmReply):
                 self.unseen += 1
+                self.gate = None
             elif isinstance(reply, Banner):
+                self.gate = None  # the board restarted: what it was set up as is gone
                 ours = self.reset_sent_at is not None
                 self.reset_sent_at = None
                 # A board that reset itself lost what it had: nothing more of the job goes
                 # before the GUI thread has seen that.
                 lost = [] if ours else self.clear()
                 verdict = BannerSeen(ours, lost)
+            elif self.gate is not None:
+                self._gate_hears(reply)
             received.replies.append((reply, verdict))
+
+    def _gate_hears(self, reply: object) -> None:
+        """A reply that answers no line: the held job goes if it is the one its gate waits
+        for, and says so (under the lock, on the thread that read it)."""
+        gate = self.gate
+        if gate is None or self.job is None or self.halted:
+            return
+        tags = self.streamer.unanswered_tags()
+        if not tags or not gate.asks(tags[0]):
+            return
+        self.gate = None  # this reply decides, once
+        if gate.lets_go(reply):
+            self.pulling = True  # the pump that follows the read sends the job's lines
+
+    def _ask_when_drained(self, received: Received[T]) -> None:
+        """The pulled job's answers leave nothing unanswered (its end, a wait, a refusal):
+        ask where the board stands now, from here, not a GUI turn later (under the lock)."""
+        if not self.pulling or self.job is None or not self.streamer.idle:
+            return
+        if not any(isinstance(v, Answer) and v.counted for _reply, v in received.replies):
+            return  # nothing of the job answered in this read (a report read while idle)
+        if self._write_here is not None:
+            self._write_here([STATUS_QUERY])
+        else:
+            self._write(STATUS_QUERY)
+        received.asked_status = True

@@ -41,7 +41,7 @@ from contextlib import contextmanager
 from typing import Protocol
 
 from app.link import Link
-from app.machines.gcode.feeder import LineFeeder
+from app.machines.gcode.feeder import LineFeeder, PullGate
 from app.machines.gcode.lines import SentLine
 from protocol.gcode.codec import encode_line
 from protocol.gcode.streaming import LineStreamer
@@ -180,6 +180,11 @@ class JobFeed:
     def hold(self) -> None:
         """Pull nothing more (what is queued stays: see :meth:`GcodeSession.discard_queued`)."""
         self._feeder.hold()
+
+    def pull_when(self, gate: PullGate[SentLine]) -> None:
+        """Held until the reply ``gate`` waits for lets it be pulled, on the thread that reads
+        it (:meth:`LineFeeder.pull_when`): the set-up's confirmation, spared a GUI turn."""
+        self._feeder.pull_when(gate)
 
     def step(self) -> None:
         """One line of the job queued and sent (a single step), as the pull would send it."""

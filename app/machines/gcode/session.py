@@ -40,7 +40,7 @@ from app.machines.gcode import timing
 from app.machines.gcode.alarm_notice import AlarmNotice
 from app.machines.gcode.console_gate import SETTING_DISABLED as SETTING_DISABLED
 from app.machines.gcode.console_gate import ConsoleGate
-from app.machines.gcode.feeder import LineFeeder, merged
+from app.machines.gcode.feeder import LineFeeder, merged, settles
 from app.machines.gcode.hand_zeroing import HandZeroing
 from app.machines.gcode.hand_zeroing import zeroes_by_hand as zeroes_by_hand
 from app.machines.gcode.job_feed import JobFeed, JobSource
@@ -177,7 +177,7 @@ class GcodeSession(MachineSession):
         link.connected.connect(self.links.connected)
         link.disconnected.connect(self.links.disconnected)
         link.received.connect(self.replies.on_received)
-        link.set_tap(self.feeder.receive, merged)
+        link.set_tap(self.feeder.receive, merged, settles)
 
     # --- state the widgets and the runner read ---------------------------------
 
