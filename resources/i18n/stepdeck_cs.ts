@@ -1194,8 +1194,8 @@
         <translation>deska (znovu) nastartovala: &quot;{0}&quot;</translation>
     </message>
     <message>
-        <source>message: {0}</source>
-        <translation>zpráva: {0}</translation>
+        <source>message: &quot;{0}&quot;</source>
+        <translation>zpráva: &quot;{0}&quot;</translation>
     </message>
     <message>
         <source>home both axes</source>

@@ -1194,8 +1194,8 @@
         <translation>doska (znovu) naštartovala: &quot;{0}&quot;</translation>
     </message>
     <message>
-        <source>message: {0}</source>
-        <translation>správa: {0}</translation>
+        <source>message: &quot;{0}&quot;</source>
+        <translation>správa: &quot;{0}&quot;</translation>
     </message>
     <message>
         <source>home both axes</source>
