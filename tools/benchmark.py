@@ -215,12 +215,16 @@ def _to_first_paint(source: str, env: dict[str, str]) -> tuple[float, float]:
     assert child.stdout is not None
     line = child.stdout.readline()
     elapsed = time.perf_counter() - start
-    child.kill()
-    _, _, usage = os.wait4(child.pid, 0)  # it ends itself at the paint: no time added
+    if line.strip() != "painted":
+        child.kill()
+        child.wait()
+        child.stdout.close()
+        raise RuntimeError(f"no first paint from the launch ({line!r})")
+    # It ends itself at the paint (os._exit): reaped here, with what it used. Not killed
+    # first: Popen.kill polls, and that would reap it and lose the figures.
+    _, _, usage = os.wait4(child.pid, 0)
     child.returncode = 0
     child.stdout.close()
-    if line.strip() != "painted":
-        raise RuntimeError(f"no first paint from the launch ({line!r})")
     return elapsed, usage.ru_utime + usage.ru_stime
 
 
