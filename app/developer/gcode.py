@@ -75,7 +75,8 @@ def describe_gcode(message: object) -> str | None:
             message.text
         )
     if isinstance(message, Feedback):
-        return QCoreApplication.translate("FrameWords", "message: {0}").format(message.text)
+        # Quoted as the banner is: the board's own words, in its language, not the station's.
+        return QCoreApplication.translate("FrameWords", 'message: "{0}"').format(message.text)
     return None
 
 

@@ -21,7 +21,7 @@ from typing import ClassVar, Literal
 import numpy as np
 
 from app.jobs.names import clipped, shown
-from app.jobs.texts import translate
+from app.jobs.texts import localized_format, number, translate
 
 
 class OpKind(enum.Enum):
@@ -55,7 +55,7 @@ class Operation:
 
     def describe(self) -> str:
         if self.kind is OpKind.MOVE:
-            where = " ".join(f"{axis}{value:.3f}" for axis, value in self.target.items())
+            where = " ".join(f"{axis}{number(value, '.3f')}" for axis, value in self.target.items())
             return translate("JobFile", "move to {0}").format(where)
         # The kinds' words are translated where the window names them (context "Operation"):
         # a refusal listed "pen down" in English in a Czech window.
@@ -234,10 +234,15 @@ class LimitViolation:
 
     def __str__(self) -> str:
         if math.isnan(self.low) or math.isnan(self.high):  # an axis the machine does not have
-            return translate("JobFile", "{0}: {1} — {2} {3:g}: the machine has no {2} axis").format(
-                self.operation.source, self.operation.describe(), self.axis, self.value
+            return localized_format(
+                translate("JobFile", "{0}: {1} — {2} {3:g}: the machine has no {2} axis"),
+                self.operation.source,
+                self.operation.describe(),
+                self.axis,
+                self.value,
             )
-        return translate("JobFile", "{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}").format(
+        return localized_format(
+            translate("JobFile", "{0}: {1} — {2} {3:g} is outside {4:g}…{5:g}"),
             self.operation.source,
             self.operation.describe(),
             self.axis,

@@ -65,6 +65,9 @@ class SettingsAccess(QObject):
         self.busy: str | None = None
         #: What a write under way asked for.
         self._wanted: dict[str, float] = {}
+        #: The firmware version the device said it runs (a snapshot records it), None until
+        #: it says, and for a device with no way to say it (the usb3 unit's wire has none).
+        self.firmware: str | None = None
         model.linkStateChanged.connect(self._link_changed)
 
     # --- the subclass's part --------------------------------------------------------
@@ -194,6 +197,8 @@ class SettingsAccess(QObject):
         self.finished.emit(outcome)
 
     def _link_changed(self, state: LinkState) -> None:
+        if state is LinkState.DISCONNECTED:
+            self.firmware = None  # the next link may be to another board
         if state in (LinkState.LOST, LinkState.DISCONNECTED):
             self._fail(
                 QCoreApplication.translate(

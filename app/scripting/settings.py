@@ -9,6 +9,7 @@ with every reason; nothing of a refused write reaches the wire.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TypeVar
@@ -143,9 +144,20 @@ class MachineSettings:
         return snapshots.save_snapshot(Path(path), self._machine.profile, self.access)
 
     def diff(self, path: str | Path, *, other_machine: bool = False) -> list[SettingDifference]:
-        """What loading the snapshot would change, against the values last read."""
+        """What loading the snapshot would change, against the values last read.
+
+        A snapshot saved on another firmware version is not refused: a warning names
+        both versions (a setting may mean something else on the other one).
+        """
         snapshot = snapshots.load_snapshot(Path(path), self.access)
         snapshots.check_machine(snapshot, self._machine.profile, other_machine=other_machine)
+        change = snapshots.firmware_change(snapshot, self.access)
+        if change is not None:
+            warnings.warn(
+                f"{path}: saved on firmware {change[0]}, the device runs {change[1]}: "
+                "check that each value means the same there",
+                stacklevel=2,
+            )
         return snapshots.diff(snapshot, self.access)
 
     def load(

@@ -11,6 +11,7 @@ one a line, each with its name as a comment::
     [machine]
     profile = "grbl-plotter"
     ...
+    firmware = "1.1h.20190825"
 
     [settings]
     "$0" = 10  # Step pulse time [µs]
@@ -22,6 +23,11 @@ snapshots' own (:func:`~app.scripting.parameters.read_snapshot_file`,
 what differs, through the same checks as any write
 (:class:`~app.machines.settings_access.SettingsAccess`): a file edited by
 hand to hold a value out of range is refused whole, with the reason.
+
+``firmware`` is the version the device said it runs (GRBL's ``$I`` or
+banner; absent where the device cannot say, as the usb3 unit).  A restore
+onto a board that runs another version is not refused, but
+:func:`firmware_change` names both: a setting may mean something else there.
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
 
+from app.machines.gcode.grbl_version import same_version
 from app.machines.settings_access import SettingsAccess
 from app.machines.stored_settings import Kind, StoredSetting
 from app.profiles import MachineProfile
@@ -47,6 +54,8 @@ class SettingsSnapshot:
     title: str
     date: str
     values: dict[str, float]
+    #: The firmware version the device said it ran when the snapshot was saved ("": unknown).
+    firmware: str = ""
 
 
 @dataclass(frozen=True)
@@ -86,9 +95,10 @@ def save_snapshot(path: Path, profile: MachineProfile, access: SettingsAccess) -
         f"profile = {json.dumps(profile.name)}",
         f"title = {json.dumps(profile.title)}",
         f"date = {json.dumps(datetime.now(UTC).isoformat(timespec='seconds'))}",
-        "",
-        "[settings]",
     ]
+    if access.firmware:
+        lines.append(f"firmware = {json.dumps(access.firmware)}")
+    lines += ["", "[settings]"]
     for spec in access.specs:
         label = spec.label.format(spec.axis) if spec.axis else spec.label
         unit = f" [{spec.unit}]" if spec.unit else ""
@@ -112,6 +122,9 @@ def load_snapshot(path: Path, access: SettingsAccess) -> SettingsSnapshot:
         )
     if not isinstance(settings, dict):
         raise StepdeckError(f"{path}: no [settings] in the snapshot")
+    firmware = machine.get("firmware", "")
+    if not isinstance(firmware, str):
+        raise StepdeckError(f"{path}: firmware = {firmware!r} is not a version")
     values: dict[str, float] = {}
     for key, value in settings.items():
         if key not in access.by_key:
@@ -125,7 +138,16 @@ def load_snapshot(path: Path, access: SettingsAccess) -> SettingsSnapshot:
         title=str(machine.get("title", "")),
         date=str(machine.get("date", "")),
         values=values,
+        firmware=firmware,
     )
+
+
+def firmware_change(snapshot: SettingsSnapshot, access: SettingsAccess) -> tuple[str, str] | None:
+    """(the snapshot's version, the device's) when both are known and differ, else None."""
+    device = access.firmware
+    if not snapshot.firmware or not device or same_version(snapshot.firmware, device):
+        return None
+    return snapshot.firmware, device
 
 
 def diff(snapshot: SettingsSnapshot, access: SettingsAccess) -> list[SettingDifference]:

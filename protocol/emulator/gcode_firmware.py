@@ -112,7 +112,11 @@ from protocol.emulator.gcode_planner import (
     SetPosition,
 )
 from protocol.emulator.gcode_readouts import GcodeEvent
-from protocol.emulator.gcode_system_commands import GcodeSystemCommands
+from protocol.emulator.gcode_system_commands import (
+    CRITICAL_ALARMS,
+    RESETTING_ALARMS,
+    GcodeSystemCommands,
+)
 from protocol.gcode.codec import CYCLE_START, FEED_HOLD, JOG_CANCEL, SOFT_RESET, STATUS_QUERY
 from protocol.gcode.words import WordError, grbl_text, split_words, strip_comments
 
@@ -172,6 +176,7 @@ class GcodeFirmware(GcodeSystemCommands):
 
     def __init__(self, clock: Clock, config: GcodeConfig | None = None) -> None:
         self.config = config if config is not None else grbl_plotter_config()
+        self._factory_config = self.config
         super().__init__(clock, self.config.control_cycle)
         origin = (0.0,) * len(self.config.axes)
         # GRBL's planner keeps one block of its ring free, as its receive buffer does a byte.
@@ -238,6 +243,7 @@ class GcodeFirmware(GcodeSystemCommands):
                 elif byte == CYCLE_START[0]:
                     self.cycle_start()
                 elif byte == SOFT_RESET[0]:
+                    self._reset_alarm()
                     self.soft_reset()
                 elif byte == JOG_CANCEL[0] and self.config.jogging:
                     self.jog_cancel()
@@ -293,7 +299,11 @@ class GcodeFirmware(GcodeSystemCommands):
         self._log("jog cancelled", pos=self._where())
 
     def soft_reset(self) -> None:
-        """0x18: stop at once, forget every line and block, keep the position, say the banner."""
+        """0x18: stop at once, forget every line and block, keep the position, say the banner.
+
+        Called alone it is the board's own reset (its button): no alarm.  A 0x18 that
+        arrives on the wire goes through GRBL's mc_reset first (:meth:`_reset_alarm`).
+        """
         with self._lock:
             self._stop()
             self._jog_cancelling = False
@@ -369,8 +379,20 @@ class GcodeFirmware(GcodeSystemCommands):
             return True
 
     def trigger_alarm(self, code: int = 1) -> None:
-        """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
+        """Enter the alarm state (``ALARM:<code>``), as a limit switch would.
+
+        What follows is GRBL 1.1h's (protocol.c): after a hard or soft limit (1, 2)
+        ``[MSG:Reset to continue]``; an alarm GRBL raises through its reset (3, 6…10: a
+        reset in motion, a homing failure) is followed by that reset, its banner and
+        ``[MSG:'$H'|'$X' to unlock]``, every line it held dropped unanswered.
+        """
         with self._lock:
+            if self.config.grbl and code in RESETTING_ALARMS:
+                self._alarm = code
+                self._send_line(f"ALARM:{code}")
+                self._log("alarm", code=code, pos=self._where())
+                self.soft_reset()
+                return
             for line in (self._pending_line, self._running_line):
                 if line is not None:
                     self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *line)
@@ -380,6 +402,8 @@ class GcodeFirmware(GcodeSystemCommands):
             self._interpreter.spindle_level = 0.0
             self._alarm = code
             self._send_line(f"ALARM:{code}")
+            if self.config.grbl and code in CRITICAL_ALARMS:
+                self._send_line("[MSG:Reset to continue]")
             self._log("alarm", code=code, pos=self._where())
 
     # -- the control cycle -----------------------------------------------------------------

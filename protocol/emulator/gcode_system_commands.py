@@ -7,11 +7,14 @@ returns (blocks, or a GRBL error code).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 
 from protocol.emulator import grbl_settings
-from protocol.emulator.gcode_planner import Block, Junctions, Move
+from protocol.emulator.gcode_machine import GcodeConfig
+from protocol.emulator.gcode_planner import Block, HoldState, Junctions, Move
 from protocol.emulator.gcode_readouts import GcodeReadouts, axis_values
+from protocol.emulator.gcode_work_systems import WorkSystems
 from protocol.gcode.words import Word, WordError, split_words
 
 # GRBL's error codes the ``$`` commands give (the parser's are in the interpreter).
@@ -28,6 +31,13 @@ _GRBL_DEFAULTS: dict[int, float] = {
     0: 10, 1: 25, 2: 0, 3: 0, 4: 0, 5: 0, 6: 0, 10: 1, 11: 0.010, 12: 0.002, 13: 0,
     20: 0, 21: 0, 22: 0, 23: 0, 24: 25.0, 25: 500.0, 26: 250, 27: 1.0, 30: 1000, 31: 0, 32: 0,
 }  # fmt: skip
+#: GRBL's alarms for a reset in motion and for a reset while homing (mc_reset).
+ABORT_CYCLE = 3
+HOMING_FAIL_RESET = 6
+#: Alarms GRBL raises through its reset (mc_reset): the banner and the unlock message follow.
+RESETTING_ALARMS = frozenset({ABORT_CYCLE, HOMING_FAIL_RESET, 7, 8, 9, 10})
+#: Hard and soft limits: GRBL adds "Reset to continue" and waits for the reset (protocol.c).
+CRITICAL_ALARMS = frozenset({1, 2})
 #: What follows ``$`` in GRBL 1.1's own commands; anything else is read as ``$N=value``.
 _GRBL_COMMAND_LETTERS = "$#CGHIJNRSX"
 _HELP = "[HLP:$$ $# $G $I $H $X ~ ! ? ctrl-x]"
@@ -38,6 +48,10 @@ class GcodeSystemCommands(GcodeReadouts):
 
     _settings_table: dict[int, float]
     _reset_after_answer: bool
+    #: The board as built: what ``$RST=$`` restores its settings to (GRBL's compiled defaults).
+    _factory_config: GcodeConfig
+    #: Stop every motion at once and forget the queued blocks (the firmware's).
+    _stop: Callable[[], None]
 
     def _system(self, command: str) -> list[Block] | int:
         """A ``$`` line; feedback lines go out before its ``ok``."""
@@ -84,11 +98,53 @@ class GcodeSystemCommands(GcodeReadouts):
             return [] if start == home else [self._interpreter.move(start, home, "home", None)]
         elif command == "$C" and self.config.grbl:
             return self._toggle_check_mode()
+        elif command[1:2] == "R" and self.config.grbl:
+            return self._restore(command)
         elif self.config.grbl and command[1:2] and command[1:2] not in _GRBL_COMMAND_LETTERS:
             return self._set(command)
         else:
             return INVALID_STATEMENT
         return []
+
+    def _restore(self, command: str) -> list[Block] | int:
+        """``$RST=$`` (the settings), ``$RST=#`` (G54…G59; G28 and G30 are zero here) or
+        ``$RST=*`` (both), as GRBL 1.1h's system.c and settings_restore do: idle or in alarm
+        only, then ``[MSG:Restoring defaults]``, the ``ok`` and a reset (its banner)."""
+        if self.state not in ("Idle", "Alarm"):
+            return NOT_IDLE
+        if len(command) != 6 or not command.startswith("$RST=") or command[5] not in "$#*":
+            return INVALID_STATEMENT
+        if command[5] in "$*":
+            self.config = self._factory_config
+            self._settings_table = self._initial_settings()
+            self._apply_settings()
+        if command[5] in "#*":
+            self._interpreter.systems = WorkSystems.zero(len(self.config.axes))
+        self._send_line("[MSG:Restoring defaults]")
+        self._reset_after_answer = True
+        return []
+
+    def _reset_alarm(self) -> None:
+        """A 0x18 from the host, as GRBL's mc_reset takes it: while the axes move or brake
+        into a hold the steppers are killed and ALARM:3 is said (6 while homing), before the
+        reset's banner; standing (idle, a hold complete) it raises none (grbl-sim agrees)."""
+        if not self.config.grbl or self._alarm is not None:
+            return
+        current = self._planner.current
+        if isinstance(current, Move) and current.kind == "home":
+            code = HOMING_FAIL_RESET
+        elif self._planner.hold_state is not HoldState.HELD and self.state in (
+            "Run",
+            "Jog",
+            "Hold",
+        ):
+            code = ABORT_CYCLE
+        else:
+            return
+        self._stop()
+        self._alarm = code
+        self._send_line(f"ALARM:{code}")
+        self._log("alarm", code=code, pos=self._where())
 
     def _toggle_check_mode(self) -> list[Block] | int:
         """``$C``: parse without moving; leaving check mode resets the board, as GRBL does."""

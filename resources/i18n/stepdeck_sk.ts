@@ -1194,8 +1194,8 @@
         <translation>doska (znovu) naštartovala: &quot;{0}&quot;</translation>
     </message>
     <message>
-        <source>message: {0}</source>
-        <translation>správa: {0}</translation>
+        <source>message: &quot;{0}&quot;</source>
+        <translation>správa: &quot;{0}&quot;</translation>
     </message>
     <message>
         <source>home both axes</source>
@@ -5244,7 +5244,7 @@ sa nevykresľuje</translation>
     </message>
     <message>
         <source>not connected</source>
-        <extracomment>&quot;read&quot; or &quot;write&quot;. The values the device read back as written (a write), or every value read. Why a value was not written, or why the read failed (empty: all went well). :attr:`values` changed (a read, a verified write, a report nobody asked for). A read or write ended: its :class:`Outcome`. What the settings are called in the window and in snapshots (&quot;grbl&quot;, &quot;usb3-eeprom&quot;). What the device last said it holds, by key. The last read or write&apos;s outcome (None before any). A read or write under way (&quot;read&quot;/&quot;write&quot;), None when idle. What a write under way asked for.</extracomment>
+        <extracomment>&quot;read&quot; or &quot;write&quot;. The values the device read back as written (a write), or every value read. Why a value was not written, or why the read failed (empty: all went well). :attr:`values` changed (a read, a verified write, a report nobody asked for). A read or write ended: its :class:`Outcome`. What the settings are called in the window and in snapshots (&quot;grbl&quot;, &quot;usb3-eeprom&quot;). What the device last said it holds, by key. The last read or write&apos;s outcome (None before any). A read or write under way (&quot;read&quot;/&quot;write&quot;), None when idle. What a write under way asked for. The firmware version the device said it runs (a snapshot records it), None until it says, and for a device with no way to say it (the usb3 unit&apos;s wire has none).</extracomment>
         <translation>nepripojené</translation>
     </message>
     <message>
@@ -5766,6 +5766,10 @@ front</translation>
     <message>
         <source>Values of {0} that differ from the device:</source>
         <translation>Hodnoty z {0}, ktoré sa líšia od zariadenia:</translation>
+    </message>
+    <message>
+        <source>This snapshot was saved on firmware {0}; the device runs {1}. A setting may mean something else there: check each value before writing.</source>
+        <translation>Táto záloha bola uložená s firmvérom {0}; zariadenie má {1}. Nastavenie tam môže znamenať niečo iné: pred zápisom skontrolujte každú hodnotu.</translation>
     </message>
     <message>
         <source>This snapshot is of another machine ({0}), not {1}.</source>

@@ -86,3 +86,17 @@ def test_the_asyncio_form_reads_and_writes_settings(qapp: object) -> None:
 
     before, written = asyncio.run(scenario())
     assert before == 4.0 and written == {"X.thread": 6.0}
+
+
+def test_a_snapshot_of_another_firmware_warns_and_still_restores(
+    plotter: stepdeck.Machine, tmp_path: Path
+) -> None:
+    settings = plotter.settings()
+    path = settings.save(tmp_path / "plotter.toml")
+    text = path.read_text(encoding="utf-8")
+    assert 'firmware = "1.1h.20190825"' in text
+    path.write_text(text.replace("1.1h.20190825", "1.1f.20170801"), encoding="utf-8")
+    settings.write({"$24": 30.5})
+    with pytest.warns(UserWarning, match=r"firmware 1\.1f\.20170801, the device runs 1\.1h"):
+        assert [d.key for d in settings.load(path)] == ["$24"]
+    assert settings["$24"] == 25.0

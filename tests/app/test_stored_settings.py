@@ -16,7 +16,13 @@ from app.machines.settings_access import SettingsAccess
 from app.machines.stored_settings import Kind
 from app.profiles import load_profile
 from app.scripting.errors import StepdeckError, WrongMachine
-from app.scripting.settings_snapshot import check_machine, diff, load_snapshot, save_snapshot
+from app.scripting.settings_snapshot import (
+    check_machine,
+    diff,
+    firmware_change,
+    load_snapshot,
+    save_snapshot,
+)
 from app.stored_access import settings_access
 from tests.helpers.harness import StationHarness
 
@@ -267,3 +273,52 @@ def test_a_lost_link_ends_a_read_with_the_reason(grbl: StationHarness) -> None:
     grbl.station.close_link()
     grbl.run_until(lambda: access.busy is None, timeout=5.0)
     assert access.last is not None and "link" in access.last.refusals[0]
+
+
+# --- the firmware version -----------------------------------------------------------------
+
+
+def test_a_snapshot_records_the_firmware_the_board_said_it_runs(
+    grbl: StationHarness, tmp_path: Path
+) -> None:
+    access = access_of(grbl)
+    since = len(grbl.written)
+    assert access.read() is None
+    finish(grbl, access)
+    assert b"$I\n" in b"".join(grbl.written[since:])  # asked with the read
+    assert access.firmware == "1.1h.20190825"
+    path = save_snapshot(tmp_path / "grbl.toml", grbl.station.profile, access)
+    assert 'firmware = "1.1h.20190825"' in path.read_text(encoding="utf-8")
+    snapshot = load_snapshot(path, access)
+    assert snapshot.firmware == "1.1h.20190825"
+    assert firmware_change(snapshot, access) is None
+
+
+def test_a_snapshot_of_another_firmware_is_restored_with_both_versions_named(
+    grbl: StationHarness, tmp_path: Path
+) -> None:
+    access = access_of(grbl)
+    access.read()
+    finish(grbl, access)
+    path = save_snapshot(tmp_path / "grbl.toml", grbl.station.profile, access)
+    text = path.read_text(encoding="utf-8").replace("1.1h.20190825", "1.1f.20170801")
+    path.write_text(text.replace('"$110" = 6000.0', '"$110" = 5000.0'), encoding="utf-8")
+    snapshot = load_snapshot(path, access)
+    assert firmware_change(snapshot, access) == ("1.1f.20170801", "1.1h.20190825")
+    changes = diff(snapshot, access)  # not refused: the operator decides
+    assert [d.key for d in changes] == ["$110"]
+    assert access.write({d.key: d.wanted for d in changes}) is None
+    finish(grbl, access)
+    assert access.last is not None and access.last.ok
+
+
+def test_a_snapshot_without_a_version_and_a_usb3_unit_claim_none(
+    usb3: StationHarness, tmp_path: Path
+) -> None:
+    access = access_of(usb3)
+    access.read()
+    finish(usb3, access)
+    assert access.firmware is None  # its wire has no way to say it
+    path = save_snapshot(tmp_path / "usb3.toml", usb3.station.profile, access)
+    assert "firmware" not in path.read_text(encoding="utf-8")
+    assert load_snapshot(path, access).firmware == ""

@@ -760,12 +760,18 @@ def test_soft_reset_stops_clears_and_sends_the_banner() -> None:
     bench.run(1.0)
     bench.fw.receive(b"G1 X5")  # a partial line, lost with the reset
     bench.fw.receive(b"\x18")
-    assert bench.fw.state == "Idle" and bench.fw.unacknowledged == 0
+    # A reset in motion: GRBL's ALARM:3, its banner, then the unlock message (grbl-sim says so).
+    assert bench.fw.state == "Alarm" and bench.fw.unacknowledged == 0
     stopped = bench.fw.position()
     assert 0 < stopped["X"] < 100
-    assert bench.replies() == [Banner(GRBL_BANNER)]
+    assert bench.replies() == [
+        AlarmReply(3),
+        Banner(GRBL_BANNER),
+        Feedback("[MSG:'$H'|'$X' to unlock]"),
+    ]
     bench.run(1.0)
     assert bench.fw.position() == stopped  # kept, and nothing queued runs
+    assert bench.do("$X") == [Feedback("[MSG:Caution: Unlocked]"), Ok()]
     # The modes are GRBL's power-on ones again: G1 needs its feed rate anew.
     assert bench.do("G1 X0") == [ErrorReply(22)]
     assert bench.do("G1 X0 F3000") == [Ok()]
@@ -979,7 +985,7 @@ def test_an_alarm_locks_g_code_until_unlocked() -> None:
     bench.send("M3 S1000", "G1 X100 F3000")
     bench.run(0.5)
     bench.fw.trigger_alarm(1)
-    assert bench.replies() == [AlarmReply(1)]
+    assert bench.replies() == [AlarmReply(1), Feedback("[MSG:Reset to continue]")]
     assert bench.fw.state == "Alarm" and not bench.fw.pen_down
     stopped = bench.fw.position()
     assert bench.do("G0 X1") == [ErrorReply(9)]
@@ -1046,3 +1052,37 @@ def test_s0_24_the_winders_white_button_frees_the_axes_then_sets_zero_at_the_boa
     bench.run(0.1)
     assert bench.fw.state == "Run"
     assert bench.fw.white_button() == "ignored" and bench.fw.drivers_off == {"A", "Z"}
+
+
+def test_an_alarm_grbl_raises_through_its_reset_is_followed_by_the_reset() -> None:
+    """ALARM:3 (a reset in motion) and the homing failures (6…10) come from GRBL's mc_reset:
+    its banner and the unlock message follow, the lines it held go unanswered."""
+    bench = Bench()
+    bench.send("G1 X100 F3000", "G1 X0", "G1 Y50")
+    bench.run(0.5)
+    bench.replies()
+    bench.fw.trigger_alarm(3)
+    assert bench.replies() == [
+        AlarmReply(3),
+        Banner(GRBL_BANNER),
+        Feedback("[MSG:'$H'|'$X' to unlock]"),
+    ]
+    assert bench.fw.state == "Alarm" and bench.fw.unacknowledged == 0
+    assert bench.do("G0 X1") == [ErrorReply(9)]
+
+
+def test_restoring_defaults_waits_for_a_standing_board_and_is_grbls_form() -> None:
+    bench = Bench()
+    bench.send("G1 X100 F3000")
+    bench.run(0.2)
+    bench.replies()
+    assert bench.do("$RST=#") == [ErrorReply(8)]  # moving: GRBL's idle-or-alarm rule first
+    bench.run_until_idle()
+    assert bench.do("$RST=") == [ErrorReply(3)]
+    assert bench.do("$1=100", "$RST=$") == [
+        Ok(),
+        Feedback("[MSG:Restoring defaults]"),
+        Ok(),
+        Banner(GRBL_BANNER),
+    ]
+    assert dict(r.text.split("=") for r in bench.do("$$") if isinstance(r, Feedback))["$1"] == "25"

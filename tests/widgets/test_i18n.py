@@ -321,14 +321,14 @@ UNKNOWN_TOOL = "M48\nINCH,TZ\nT01C0.0315\n%\nT02\nX1000Y1000\nM30\n"
             "neznámý nástroj: ",
             "vložte T01, 0,80 mm, otvorů: 3",
             "pojezd mezi otvory: ",
-            "najet na X5.080 Y2.540 — X 5.08 je mimo meze pojezdu 0…3",
+            "najet na X5,080 Y2,540 — X 5,08 je mimo meze pojezdu 0…3",
         ),
         (
             "sk",
             "neznámy nástroj: ",
             "vložte T01, 0,80 mm, otvorov: 3",
             "pojazd medzi otvormi: ",
-            "nabehnúť na X5.080 Y2.540 — X 5.08 je mimo rozsahu posuvu 0…3",
+            "nabehnúť na X5,080 Y2,540 — X 5,08 je mimo rozsahu posuvu 0…3",
         ),
     ],
 )

@@ -610,8 +610,9 @@ def test_a_message_about_a_failing_link_goes_when_the_link_is_back(
 
 def test_the_first_window_imports_no_dock_and_no_plotting() -> None:
     """The jobs dock (job formats, preview), the plots (pyqtgraph), the developer pane, the
-    emulators, the BLE transport (bleak, asyncio) and the package metadata load on first
-    use: a fresh interpreter that builds and shows the window has none of them."""
+    emulators, the BLE transport (bleak, asyncio), the package metadata and the pages of
+    other machines (drill, usb3, G-code with its overrides, stored settings) load on first
+    use: a fresh interpreter that builds and shows the XY stage's window has none of them."""
     import subprocess
     import sys
 
@@ -623,7 +624,9 @@ def test_the_first_window_imports_no_dock_and_no_plotting() -> None:
         "print(' '.join(sorted(m for m in ('pyqtgraph', 'widgets.jobs.dock',"
         " 'widgets.telemetry_dock', 'widgets.developer.pane', 'app.jobs.run.runner',"
         " 'protocol.emulator.gcode_firmware', 'protocol.emulator.stage_firmware',"
-        " 'protocol.transport.ble', 'importlib.metadata')"
+        " 'protocol.transport.ble', 'importlib.metadata', 'widgets.panels.drill',"
+        " 'widgets.panels.usb3', 'widgets.panels.gcode', 'widgets.panels.gcode_overrides',"
+        " 'widgets.panels.stored_settings')"
         " if m in sys.modules))); s.shutdown()"
     )
     root = Path(__file__).resolve().parents[2]

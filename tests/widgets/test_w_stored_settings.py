@@ -257,3 +257,30 @@ def test_every_name_is_shown_whole_in_a_narrow_page(
     finally:
         panels.close()
         i18n.install("en", i18n_cache)
+
+
+def test_a_snapshot_of_another_firmware_warns_and_still_writes(
+    qtbot: QtBot,
+    grbl: tuple[StationHarness, StoredSettingsPanel],
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    h, panel = grbl
+    path = tmp_path / "old-board.toml"
+    answer = (str(path), "")
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: answer)
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: answer)
+    click(qtbot, panel.read_button)
+    settle(h, panel)
+    click(qtbot, panel.save_button)
+    text = path.read_text(encoding="utf-8").replace("1.1h.20190825", "1.1f.20170801")
+    path.write_text(text.replace('"$111" = 6000.0', '"$111" = 5000.0'), encoding="utf-8")
+    click(qtbot, panel.load_button)
+    box = panel.confirm_box
+    assert box is not None and box.icon() is QMessageBox.Icon.Warning
+    assert "saved on firmware 1.1f.20170801; the device runs 1.1h.20190825" in box.text()
+    assert "$111 Y maximum rate: 6000 → 5000 mm/min" in box.text()
+    accept = [b for b in box.buttons() if box.buttonRole(b) is QMessageBox.ButtonRole.AcceptRole]
+    click(qtbot, accept[0])  # a warning, not a refusal
+    settle(h, panel)
+    assert h.gcode_emulator._settings_table[111] == 5000.0

@@ -59,6 +59,7 @@ from app.jobs.formats.string_art.program import StringArtProgram
 from app.jobs.program import OpKind, Program, ProgramPath
 from app.jobs.registration import hole_positions
 from app.jobs.run.runner import JobRunner, JobState
+from app.local_numbers import local_number
 from app.profiles import MachineProfile
 from app.station import Station
 from widgets.jobs.preview_items import (
@@ -840,14 +841,15 @@ class JobPreview(QWidget):
             return self._request_polar_move(self.polar, x, y)
         target = (x, y)[: len(self.axis_names)]
         described = ", ".join(
-            f"{name} {value:.3f}" for name, value in zip(self.axis_names, target, strict=True)
+            f"{name} {local_number(value, '.3f')}"
+            for name, value in zip(self.axis_names, target, strict=True)
         )
         refusal = self.click_refusal
         if refusal is not None:
             return self._say(self.tr("Click-to-move refused ({0}): {1}").format(described, refusal))
         outside = [
             self.tr("{0} {1} is outside {2}…{3}").format(
-                name, f"{value:.3f}", f"{low:g}", f"{high:g}"
+                name, local_number(value, ".3f"), local_number(low), local_number(high)
             )
             for name, value, (low, high) in zip(
                 self.axis_names, target, self.travel_limits, strict=True
@@ -881,7 +883,8 @@ class JobPreview(QWidget):
         turn = shortest_turn(current, bearing)
         angle = current + turn
         described = (
-            f"{angle_name} {angle:.3f} {angle_unit}, {radius_name} {radius:.3f} {radius_unit}"
+            f"{angle_name} {local_number(angle, '.3f')} {angle_unit}, "
+            f"{radius_name} {local_number(radius, '.3f')} {radius_unit}"
         )
         refusal = self.click_refusal
         if refusal is not None:
@@ -891,15 +894,17 @@ class JobPreview(QWidget):
                 self.tr(
                     "Click-to-move refused: {0} {1} from the centre is beyond "
                     "{2}'s travel 0…{3} (the reach)"
-                ).format(f"{radius:.3f}", radius_unit, radius_name, f"{polar.reach:g}")
+                ).format(
+                    local_number(radius, ".3f"), radius_unit, radius_name, local_number(polar.reach)
+                )
             )
         question = self.tr("Turn {0} by {1}° to {2} {3}, then move {4} to {5} {6}?").format(
             angle_name,
-            f"{turn:+.1f}",
-            f"{angle:.3f}",
+            local_number(turn, "+.1f"),
+            local_number(angle, ".3f"),
             angle_unit,
             radius_name,
-            f"{radius:.3f}",
+            local_number(radius, ".3f"),
             radius_unit,
         )
         if not self.confirm(question):

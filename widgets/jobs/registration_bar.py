@@ -37,6 +37,7 @@ from app.jobs.registration import (
     mirrored,
     register,
 )
+from app.local_numbers import local_number
 from app.station import Station
 from widgets.retranslate import Maker, Texts
 from widgets.style import compact
@@ -278,7 +279,7 @@ class RegistrationBar(QWidget):
         x, y = self._holes[hole]
         self._say(
             self.tr("reference {0} is hole {1} (X{2} Y{3} in the job)").format(
-                k + 1, hole + 1, f"{x:.3f}", f"{y:.3f}"
+                k + 1, hole + 1, local_number(x, ".3f"), local_number(y, ".3f")
             )
         )
 
@@ -303,7 +304,7 @@ class RegistrationBar(QWidget):
         x, y = self.measured[k] or (0.0, 0.0)
         self._say(
             self.tr("reference {0} (hole {1}) at X{2} Y{3}").format(
-                k + 1, self.hole_spins[k].value(), f"{x:.3f}", f"{y:.3f}"
+                k + 1, self.hole_spins[k].value(), local_number(x, ".3f"), local_number(y, ".3f")
             )
         )
         self._update()
@@ -326,7 +327,9 @@ class RegistrationBar(QWidget):
         self._say(self.tr("registered: {0}").format(fit.describe()))
         if count == 3:
             self._say(
-                self.tr("the three points agree within {0} mm").format(f"{fit.residual_mm:.3f}")
+                self.tr("the three points agree within {0} mm").format(
+                    local_number(fit.residual_mm, ".3f")
+                )
             )
         if warning := fit.warning():
             self._say(self.tr("warning: {0}").format(warning))

@@ -42,6 +42,7 @@ from app.scripting.settings_snapshot import (
     SettingDifference,
     check_machine,
     diff,
+    firmware_change,
     load_snapshot,
     save_snapshot,
 )
@@ -382,17 +383,30 @@ class StoredSettingsPanel(QWidget):
         if not differences:
             self.summary.setText(self.tr("{0}: the device holds every value").format(path.name))
             return []
-        self._confirm(path, differences, other, snapshot.title or snapshot.profile)
+        firmware = firmware_change(snapshot, self.access)
+        self._confirm(path, differences, other, snapshot.title or snapshot.profile, firmware)
         return differences
 
     def _confirm(
-        self, path: Path, differences: list[SettingDifference], other: bool, of: str
+        self,
+        path: Path,
+        differences: list[SettingDifference],
+        other: bool,
+        of: str,
+        firmware: tuple[str, str] | None = None,
     ) -> None:
+        """``firmware``: the snapshot's version and the device's, when they differ."""
         box = QMessageBox(self)
         box.setObjectName("settings_confirm")
         box.setWindowTitle(self.tr("Load settings snapshot"))
         text = self.tr("Values of {0} that differ from the device:").format(path.name)
         text += "\n\n" + "\n".join(str(d) for d in differences)
+        if firmware is not None:  # a warning, not a refusal: the operator knows the boards
+            box.setIcon(QMessageBox.Icon.Warning)
+            text += "\n\n" + self.tr(
+                "This snapshot was saved on firmware {0}; the device runs {1}. A setting may "
+                "mean something else there: check each value before writing."
+            ).format(*firmware)
         if other:
             box.setIcon(QMessageBox.Icon.Warning)
             text = (

@@ -10,6 +10,7 @@ from __future__ import annotations
 import html
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
@@ -32,10 +33,12 @@ from app.settings import StationSettings
 from app.station import Station
 from app.version import station_version
 from widgets.gamepad_setup import mapping_rows
-from widgets.panels.gcode_overrides import OverrideBox
 from widgets.retranslate import Maker, Texts
 from widgets.stop_caption import stop_caption, stop_key_text
 from widgets.theme import PlotColours, ThemeController
+
+if TYPE_CHECKING:
+    from widgets.panels.gcode_overrides import OverrideBox
 
 #: Keys and what they do (translated where shown: QT_TRANSLATE_NOOP only marks them).
 SHORTCUTS: tuple[tuple[str, object], ...] = (

@@ -5,12 +5,17 @@ entry's order, then Dynamics where the device has stored parameters, then
 Settings where it keeps settings the station edits (GRBL's ``$$``, the usb3
 unit's EEPROM), then Link.  The page titles keep the ``MainWindow`` translation context they had
 when the window built them itself.
+
+A dialect's own pages (drill, usb3 axes, G-code with its overrides and work
+zero, stored settings) are imported by the builder that makes them: a machine
+without them does not import them before its window's first paint.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, TypeAlias
 
 from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtWidgets import QFrame, QPushButton, QScrollArea, QWidget
@@ -22,17 +27,21 @@ from protocol.drill.timing import DrillTiming
 from widgets.dialects import Page, WindowDialect
 from widgets.jog_input import JogInput
 from widgets.panels.absolute import AbsolutePanel
-from widgets.panels.drill import DrillPanel
 from widgets.panels.dynamics import DynamicsPanel
-from widgets.panels.gcode import GcodePanel
 from widgets.panels.manual import ManualPanel
 from widgets.panels.relative import RelativePanel
-from widgets.panels.stored_settings import StoredSettingsPanel
-from widgets.panels.usb3 import Usb3Panel
 from widgets.retranslate import Maker
 
+if TYPE_CHECKING:
+    from widgets.panels.drill import DrillPanel
+    from widgets.panels.gcode import GcodePanel
+    from widgets.panels.stored_settings import StoredSettingsPanel
+    from widgets.panels.usb3 import Usb3Panel
+
 #: A page with motion controls: the motion lock turns it off.
-MotionPanel = ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel
+MotionPanel: TypeAlias = (
+    "ManualPanel | AbsolutePanel | RelativePanel | Usb3Panel | DrillPanel | GcodePanel"
+)
 
 #: Adds a page button: its title, the page, its tooltip (both made again on a language switch).
 AddPage = Callable[[Maker, QWidget, Maker], None]
@@ -115,6 +124,8 @@ def build_pages(
 
 
 def _add_drill(station: Station, pages: Pages, add: AddPage, timing: DrillTimingMemory) -> None:
+    from widgets.panels.drill import DrillPanel
+
     # The plotter takes absolute microsteps only: its own page, no Absolute/Relative.
     panel = pages.drill = DrillPanel(station)
     timing.restore(panel)
@@ -128,6 +139,8 @@ def _add_drill(station: Station, pages: Pages, add: AddPage, timing: DrillTiming
 
 
 def _add_usb3(station: Station, pages: Pages, add: AddPage, _timing: DrillTimingMemory) -> None:
+    from widgets.panels.usb3 import Usb3Panel
+
     panel = pages.usb3 = Usb3Panel(station)
     add(
         lambda: QCoreApplication.translate("MainWindow", "A&xes"),
@@ -158,6 +171,8 @@ def _add_relative(station: Station, pages: Pages, add: AddPage, _timing: DrillTi
 
 
 def _add_gcode(station: Station, pages: Pages, add: AddPage, _timing: DrillTimingMemory) -> None:
+    from widgets.panels.gcode import GcodePanel
+
     panel = pages.gcode = GcodePanel(station)
     add(
         lambda: QCoreApplication.translate("MainWindow", "&G-code"),
@@ -200,6 +215,8 @@ def _add_settings(station: Station, pages: Pages, add: AddPage) -> None:
     specs = specs_for(station.dialect.session_type, station.profile)
     if specs is None:
         return
+    from widgets.panels.stored_settings import StoredSettingsPanel
+
     panel = pages.settings = StoredSettingsPanel(station, specs)
     add(
         lambda: QCoreApplication.translate("MainWindow", "Se&ttings"),

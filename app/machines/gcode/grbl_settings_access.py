@@ -9,6 +9,9 @@ line hold for them as for any line; a ``$N=value`` line is made only from
 a row of :data:`~app.machines.gcode.grbl_settings.GRBL_SETTINGS` and a
 value it passed.
 
+A read asks ``$I`` first where the firmware has it: its ``[VER:…]``, like
+the banner, gives the version a snapshot records (:mod:`.grbl_version`).
+
 GRBL takes ``$$`` and writes while idle or in alarm (``error:8`` otherwise);
 the station asks for more: the machine idle or in alarm by its last status
 report, every line answered, no job and no axis moving.  A ``$$`` typed in
@@ -22,6 +25,7 @@ from collections.abc import Mapping
 from PySide6.QtCore import QCoreApplication
 
 from app.machines.gcode.grbl_settings import GRBL_SETTINGS, cross_check, parse_setting_line
+from app.machines.gcode.grbl_version import kept, version_in
 from app.machines.gcode.session import GcodeSession, SentLine
 from app.machines.settings_access import SettingsAccess
 
@@ -73,6 +77,8 @@ class GrblSettingsAccess(SettingsAccess):
 
     def _send_read(self) -> bool:
         self._refused = {}
+        if "$I" in self.session.settings.words and not self._send("$I"):
+            return False
         return self._send("$$")
 
     def _send_writes(self, changes: Mapping[str, float]) -> bool:
@@ -99,6 +105,10 @@ class GrblSettingsAccess(SettingsAccess):
     # --- replies ----------------------------------------------------------------------------
 
     def _reply(self, text: str) -> None:
+        version = version_in(text)
+        if version is not None:
+            self.firmware = kept(self.firmware, version)
+            return
         parsed = parse_setting_line(text)
         if parsed is None or parsed[0] not in self.by_key:
             return
