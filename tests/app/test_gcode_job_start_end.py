@@ -284,3 +284,33 @@ def test_the_reader_thread_lets_the_job_go_only_on_the_answer_to_its_own_g(
     assert port.job_ops() == []
     read_unseen(station, b"ok\r\n" + NOT_SET_UP["inches"] + b"ok\r\n")  # the set-up's
     assert port.job_ops() == []
+
+
+def test_the_window_judges_the_set_up_by_the_answer_to_its_own_g(
+    board: tuple[Station, BoardPort], tmp_path: Path
+) -> None:
+    """The window's check, as the reader thread's: an operator's ``$G`` answered first, with
+    the modes from before the set-up, neither fails a job whose set-up took, nor lets go
+    one whose set-up did not."""
+    station, port = board
+    assert session_of(station).send_line("$G", "console")
+    runner = JobRunner(station, tmp_path / "checkpoints")
+    assert runner.load(job(5)) == []
+    runner.start()
+    assert [line.strip() for line in port.lines()] == [b"$G", *SET_UP]
+    read(station, NOT_SET_UP["relative"] + b"ok\r\n")  # the operator's, before the set-up
+    assert runner.state is JobState.RUNNING
+    read(station, b"ok\r\n" + MODES + b"ok\r\n")  # the set-up's own: it took
+    port.answered = 3
+    answer_all(station, port)
+    read(station, IDLE)
+    assert runner.state is JobState.DONE
+    assert port.job_ops() == list(range(5))
+
+    assert session_of(station).send_line("$G", "console")
+    before = len(port.lines())
+    runner.start()
+    read(station, MODES + b"ok\r\n")  # the operator's looks right...
+    read(station, b"ok\r\n" + NOT_SET_UP["inches"] + b"ok\r\n")  # ...the set-up's did not take
+    assert runner.state is JobState.FAILED
+    assert [line.strip() for line in port.lines()[before - 1 :]] == [b"$G", *SET_UP]

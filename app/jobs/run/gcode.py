@@ -112,6 +112,8 @@ class GcodeDriver(GcodeAlarmPause):
         self.feed: JobFeed | None = None
         self._waiting: int | None = None  # the WAIT the operator is asked to confirm
         self._recheck = False  # look at the machine before sending again
+        #: The last ``[GC:…]`` heard while the set-up is confirmed, awaiting its line's ``ok``.
+        self._modes_heard: str | None = None
         self._asked_since_recheck = False
         #: Checkpoints while lines stream, and "operation under way" announcements, are paced.
         self._checkpoints = Every(CHECKPOINT_EVERY_S)
@@ -269,6 +271,7 @@ class GcodeDriver(GcodeAlarmPause):
         """
         words = session.settings.words
         self._hold()  # nothing of the job is pulled until the set-up is confirmed
+        self._modes_heard = None
         for line in setup_lines(words):
             self._preparing += session.send_line(line, "setup")
         if "$G" in words:
@@ -414,8 +417,12 @@ class GcodeDriver(GcodeAlarmPause):
 
     def _on_line_ok(self, sent: SentLine) -> None:
         """The set-up or the way back answered, line by line: the job goes on after the last."""
+        modes, self._modes_heard = self._modes_heard, None  # a [GC:…] is its line's, before its ok
         if sent.origin == "setup" and self._confirming and sent.text == "$G":
-            self._unconfirmed()  # its [GC:…] comes before its ok: that answer was lost
+            if modes is None:
+                self._unconfirmed()  # its [GC:…] comes before its ok: that answer was lost
+            else:
+                self._judge_setup(modes)
             return
         if sent.origin not in ("setup", "resume") or not self._preparing:
             return
@@ -439,9 +446,17 @@ class GcodeDriver(GcodeAlarmPause):
             self._report(stream)
 
     def _on_reply_text(self, text: str) -> None:
+        """A ``[GC:…]``, judged with the ``ok`` that follows it (:meth:`_on_line_ok`).
+
+        Only the one answering the set-up's own ``$G`` confirms the set-up: an operator's
+        console ``$G`` still unanswered as the job started answers first, with the modes
+        from before the set-up.
+        """
+        if self._confirming and text.startswith("[GC:"):
+            self._modes_heard = text
+
+    def _judge_setup(self, text: str) -> None:
         """The ``[GC:…]`` answer to the set-up's ``$G``: the job goes on only when it is right."""
-        if not self._confirming or not text.startswith("[GC:"):
-            return
         self._confirming = False
         session = self.session
         problem = modes_confirm(text, session.settings.words) if session is not None else None
