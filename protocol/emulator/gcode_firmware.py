@@ -196,6 +196,7 @@ class GcodeFirmware(GcodeSystemCommands):
         self._alarm: int | None = None
         self._pen_down = False
         self._spindle = 0.0
+        self._spindle_ccw = False
         self._overflows = 0
         self._unacked = 0
         self._max_unacked = 0
@@ -371,6 +372,10 @@ class GcodeFirmware(GcodeSystemCommands):
     def trigger_alarm(self, code: int = 1) -> None:
         """Enter the alarm state (``ALARM:<code>``), as a limit switch would."""
         with self._lock:
+            if self.config.grbl:
+                # GRBL reports the alarm first (protocol_execute_realtime), then the line it
+                # was waiting in (a pen change or dwell syncing, a move waiting for room) ends.
+                self._send_line(f"ALARM:{code}")
             for line in (self._pending_line, self._running_line):
                 if line is not None:
                     self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *line)
@@ -379,7 +384,8 @@ class GcodeFirmware(GcodeSystemCommands):
             self._interpreter.pen_down = False
             self._interpreter.spindle_level = 0.0
             self._alarm = code
-            self._send_line(f"ALARM:{code}")
+            if not self.config.grbl:
+                self._send_line(f"ALARM:{code}")
             self._log("alarm", code=code, pos=self._where())
 
     # -- the control cycle -----------------------------------------------------------------
@@ -484,8 +490,10 @@ class GcodeFirmware(GcodeSystemCommands):
             return
         self._pending.extend(result)
         self._pending_line = (length, text)
+        # GRBL synchronises the planner before a dwell, an offset change and a spindle change
+        # (spindle_sync): the ok of an M3/M5 line comes once the pen has moved.
         self._pending_sync = self.config.grbl and any(
-            isinstance(b, (Dwell, SetOffset)) for b in result
+            isinstance(b, (Dwell, SetOffset, PenChange)) for b in result
         )
         self._queue_pending(self.time if t is None else t)
         if self._reset_after_answer:
@@ -501,7 +509,10 @@ class GcodeFirmware(GcodeSystemCommands):
         words = split_words(body)
         if isinstance(words, WordError):
             return words.code
+        coolant = self._interpreter.modal.coolant
         result = self._interpreter.execute(words)
+        if self.config.grbl and self._interpreter.modal.coolant != coolant:
+            self._overrides.refresh()  # coolant_set_state: A: is reported at once
         return [] if self._check_mode and not isinstance(result, int) else result
 
     def _queue_pending(self, t: float) -> None:
@@ -536,7 +547,9 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._drivers_off.update(names)
                 self._log("drivers off", t, axes="".join(names))
             case PenChange():
-                self._set_pen(block.down, block.spindle, t)
+                self._set_pen(block.down, block.spindle, t, ccw=block.ccw)
+                if self.config.grbl:
+                    self._overrides.refresh()  # spindle_set_state: A: is reported at once
             case Dwell():
                 self._log("dwell", t, seconds=block.seconds)
             case Pause():
@@ -546,6 +559,8 @@ class GcodeFirmware(GcodeSystemCommands):
             case SetOffset():
                 if block.program_end and self._overrides.reset():
                     self._overrides_changed(t)
+                if block.program_end:
+                    self._overrides.refresh()  # its spindle_set_state(SPINDLE_DISABLE)
                 self._work_offset = block.offset
                 self._wco_countdown = 0  # GRBL: the next report carries WCO
                 self._log("offset", t, offset=self._where(block.offset))
@@ -566,8 +581,9 @@ class GcodeFirmware(GcodeSystemCommands):
         self._running_line = None
         self._set_pen(False, 0.0, self.time)
 
-    def _set_pen(self, down: bool, spindle: float, t: float) -> None:
+    def _set_pen(self, down: bool, spindle: float, t: float, *, ccw: bool = False) -> None:
         self._spindle = spindle
+        self._spindle_ccw = ccw
         if down != self._pen_down:
             self._pen_down = down
             self._log("pen", t, down=down, pos=self._where())
