@@ -1671,7 +1671,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) of a line whose end never came (lost on the way) and waits for it: it stands idle, so it is reset, keeping its position, and what it ran is looked at again</source>
-        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).</extracomment>
+        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown). The pen (a GRBL plotter&apos;s spindle) against the lines answered (pen_watch.py).</extracomment>
         <translation>Deska drží {0} bajt(ů) řádku, jehož konec nikdy nepřišel (ztratil se cestou), a čeká na něj: stojí v klidu, proto je resetována se zachováním polohy a to, co provedla, se znovu prověří</translation>
     </message>
     <message>
@@ -4914,6 +4914,41 @@ Buttons a row.</extracomment>
     <message>
         <source>The board did not take the override: feed {0} %, rapid {1} % asked</source>
         <translation>Deska korekci nepřijala: požadován posuv {0} %, rychloposuv {1} %</translation>
+    </message>
+</context>
+<context>
+    <name>PenWatch</name>
+    <message>
+        <source>up</source>
+        <translation>nahoře</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>dole</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, clockwise (A:S)</source>
+        <translation>vřeteno (servo pera) zapnuté, ve směru hodinových ručiček (A:S)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, counter-clockwise (A:C)</source>
+        <translation>vřeteno (servo pera) zapnuté, proti směru hodinových ručiček (A:C)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) off</source>
+        <translation>vřeteno (servo pera) vypnuté</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did not report the change it makes; the line it got was not the line sent</source>
+        <translation>Stroj zastaven: pero je {0} po provedení {1} (odesláno: pero {2}), ale deska změnu, kterou ten řádek způsobí, nenahlásila; dostala jiný řádek, než jaký byl odeslán</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}</source>
+        <translation>Stroj zastaven: pero je {0} po provedení {1} (odesláno: pero {2}): deska hlásí {3}</translation>
+    </message>
+    <message>
+        <source>{0} counted as answered while the moves before it still ran (GRBL answers a pen line only once they are done): a line or an answer was lost, changed or repeated on the way.</source>
+        <translation>{0} byl započten jako zodpovězený, zatímco pohyby před ním ještě běžely (GRBL odpovídá na řádek pera až po jejich dokončení): řádek nebo odpověď se cestou ztratily, změnily nebo zopakovaly.</translation>
     </message>
 </context>
 <context>

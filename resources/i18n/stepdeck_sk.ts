@@ -1671,7 +1671,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) of a line whose end never came (lost on the way) and waits for it: it stands idle, so it is reset, keeping its position, and what it ran is looked at again</source>
-        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).</extracomment>
+        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown). The pen (a GRBL plotter&apos;s spindle) against the lines answered (pen_watch.py).</extracomment>
         <translation>Doska drží {0} bajt(ov) riadku, ktorého koniec nikdy neprišiel (stratil sa cestou), a čaká naň: stojí v pokoji, preto je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>
     <message>
@@ -4914,6 +4914,41 @@ Buttons a row.</extracomment>
     <message>
         <source>The board did not take the override: feed {0} %, rapid {1} % asked</source>
         <translation>Doska korekciu neprijala: požadovaný posuv {0} %, rýchloposuv {1} %</translation>
+    </message>
+</context>
+<context>
+    <name>PenWatch</name>
+    <message>
+        <source>up</source>
+        <translation>hore</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>dole</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, clockwise (A:S)</source>
+        <translation>vreteno (servo pera) zapnuté, v smere hodinových ručičiek (A:S)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, counter-clockwise (A:C)</source>
+        <translation>vreteno (servo pera) zapnuté, proti smeru hodinových ručičiek (A:C)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) off</source>
+        <translation>vreteno (servo pera) vypnuté</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did not report the change it makes; the line it got was not the line sent</source>
+        <translation>Stroj zastavený: pero je {0} po vykonaní {1} (odoslané: pero {2}), ale doska zmenu, ktorú ten riadok spôsobí, nenahlásila; dostala iný riadok, než aký bol odoslaný</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}</source>
+        <translation>Stroj zastavený: pero je {0} po vykonaní {1} (odoslané: pero {2}): doska hlási {3}</translation>
+    </message>
+    <message>
+        <source>{0} counted as answered while the moves before it still ran (GRBL answers a pen line only once they are done): a line or an answer was lost, changed or repeated on the way.</source>
+        <translation>{0} bol započítaný ako zodpovedaný, kým pohyby pred ním ešte bežali (GRBL odpovedá na riadok pera až po ich dokončení): riadok alebo odpoveď sa cestou stratili, zmenili alebo zopakovali.</translation>
     </message>
 </context>
 <context>

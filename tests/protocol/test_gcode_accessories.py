@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from protocol.gcode.accessories import (
@@ -82,6 +82,7 @@ _LINES = st.sampled_from(
 )
 
 
+@settings(deadline=None)  # the shared machine: no timing here
 @given(st.lists(_LINES, max_size=12), st.lists(_LINES, min_size=1, max_size=6))
 def test_every_change_a_report_can_show_is_one_grbl_reports_at_once(
     first: list[str], then: list[str]

@@ -47,6 +47,49 @@ from protocol.gcode.accessories import (
 )
 from protocol.gcode.codec import StatusReport
 
+
+def _pen(state: str) -> str:
+    if state == "":
+        return QCoreApplication.translate("PenWatch", "up")
+    return QCoreApplication.translate("PenWatch", "down")
+
+
+def _board(state: str) -> str:
+    if state == "S":
+        return QCoreApplication.translate(
+            "PenWatch", "the spindle (the pen servo) on, clockwise (A:S)"
+        )
+    if state == "C":
+        return QCoreApplication.translate(
+            "PenWatch", "the spindle (the pen servo) on, counter-clockwise (A:C)"
+        )
+    return QCoreApplication.translate("PenWatch", "the spindle (the pen servo) off")
+
+
+def mismatch_text(expected: str, seen: str, line: str, *, unreported: bool = False) -> str:
+    """The stop's message: the pen as it is, the line run, what the board reports."""
+    if unreported:
+        return QCoreApplication.translate(
+            "PenWatch",
+            "Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did "
+            "not report the change it makes; the line it got was not the line sent",
+        ).format(_pen(seen), repr(line), _pen(expected))
+    return QCoreApplication.translate(
+        "PenWatch",
+        "Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}",
+    ).format(_pen(seen), repr(line), _pen(expected), _board(seen))
+
+
+def sync_text(line: SentLine) -> str:
+    """What a report short of a proven pen line says (the motion supervision's stop)."""
+    return QCoreApplication.translate(
+        "PenWatch",
+        "{0} counted as answered while the moves before it still ran (GRBL answers a pen "
+        "line only once they are done): a line or an answer was lost, changed or repeated "
+        "on the way.",
+    ).format(repr(line.text))
+
+
 #: Reports in which GRBL's spindle reports nothing to compare (it is stopped or not running).
 _NOT_JUDGED = ("Alarm", "Door", "Sleep", "Check", "Home")
 
@@ -73,30 +116,8 @@ class PenMismatch:
 
     def text(self) -> str:
         """The operator's message: the pen, the line, what the board reports."""
-        tr = QCoreApplication.translate
-        pen = {
-            "": tr("PenWatch", "up"),
-            "S": tr("PenWatch", "down"),
-            "C": tr("PenWatch", "down"),
-        }
-        board = {
-            "": tr("PenWatch", "the spindle (the pen servo) off"),
-            "S": tr("PenWatch", "the spindle (the pen servo) on, clockwise (A:S)"),
-            "C": tr("PenWatch", "the spindle (the pen servo) on, counter-clockwise (A:C)"),
-        }
         line = "?" if self.line is None else self.line.text
-        if self.unreported:
-            return tr(
-                "PenWatch",
-                "Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did "
-                "not report the change it makes; the line it got was not the line sent",
-            ).format(
-                pen[self.seen], repr(line), tr("PenWatch", "pen {0}").format(pen[self.expected])
-            )
-        return tr(
-            "PenWatch",
-            "Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}",
-        ).format(pen[self.seen], repr(line), pen[self.expected], board[self.seen])
+        return mismatch_text(self.expected, self.seen, line, unreported=self.unreported)
 
 
 class PenWatch:
@@ -166,15 +187,6 @@ class PenWatch:
             self._refresh_due = (line, 0, before.seen or "")
             if self._next_leg is not None:
                 self.synced.append((line, mark))
-
-    def sync_text(self, line: SentLine) -> str:
-        """What a report short of a proven pen line says (the motion supervision's stop)."""
-        return QCoreApplication.translate(
-            "PenWatch",
-            "{0} counted as answered while the moves before it still ran (GRBL answers a pen "
-            "line only once they are done): a line or an answer was lost, changed or repeated "
-            "on the way.",
-        ).format(repr(line.text))
 
     def reset(self) -> None:
         """The board is being reset: the lines unanswered are gone; its state is known again

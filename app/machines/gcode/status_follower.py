@@ -31,7 +31,7 @@ from app.machines.gcode.lost_answers import (
     Unaccounted,
     paused_s,
 )
-from app.machines.gcode.pen_watch import PenWatch
+from app.machines.gcode.pen_watch import PenWatch, sync_text
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.supervision import MotionFault, fault_text
@@ -331,7 +331,7 @@ class StatusFollower:
         tag = deviation.tag if isinstance(deviation.tag, int) else None
         text = fault_text(deviation, names)
         if synced is not None:  # short of a pen line proven run: that line was not the one sent
-            text = f"{text}. {self.pen.sync_text(synced)}"
+            text = f"{text}. {sync_text(synced)}"
             tag = synced.op_index if synced.op_index is not None else tag
         session.stop_for_fault(MotionFault(text, tag))
         return False
