@@ -4939,6 +4939,10 @@ Buttons a row.</extracomment>
         <translation>vřeteno (servo pera) vypnuté</translation>
     </message>
     <message>
+        <source>the board&apos;s reset</source>
+        <translation>resetu desky</translation>
+    </message>
+    <message>
         <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did not report the change it makes; the line it got was not the line sent</source>
         <translation>Stroj zastaven: pero je {0} po provedení {1} (odesláno: pero {2}), ale deska změnu, kterou ten řádek způsobí, nenahlásila; dostala jiný řádek, než jaký byl odeslán</translation>
     </message>

@@ -4939,6 +4939,10 @@ Buttons a row.</extracomment>
         <translation>vreteno (servo pera) vypnuté</translation>
     </message>
     <message>
+        <source>the board&apos;s reset</source>
+        <translation>resetu dosky</translation>
+    </message>
+    <message>
         <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did not report the change it makes; the line it got was not the line sent</source>
         <translation>Stroj zastavený: pero je {0} po vykonaní {1} (odoslané: pero {2}), ale doska zmenu, ktorú ten riadok spôsobí, nenahlásila; dostala iný riadok, než aký bol odoslaný</translation>
     </message>

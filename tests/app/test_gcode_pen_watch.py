@@ -237,3 +237,22 @@ def test_a_pen_line_on_its_way_the_machine_may_have_reached_is_not_judged(wire: 
     wire.write("M3 S1000")
     assert wire.watch.judge(_report(DOWN), reached=lambda mark: True) is None
     assert wire.watch.judge(_report(DOWN)) is None  # not placed: it may have run
+
+
+def test_lines_sent_as_the_banner_is_read_go_after_the_reset(wire: Wire) -> None:
+    """The reader thread sends what waited for the reset's banner as it reads it: their note
+    of writing may come before the banner's (relay seed 18: the resume's pen down)."""
+    wire.run("M3 S1000")
+    wire.watch.reset()  # the station's soft reset: the lines unanswered are gone
+    down = wire.write("M3 S1000")
+    wire.watch.restarted(BANNER)
+    wire.watch.answered(down, True)
+    assert wire.watch.judge(_report(DOWN)) is None
+    mismatch = wire.watch.judge(_report(OV))
+    assert mismatch is not None and mismatch.line == down
+
+
+def test_a_mismatch_right_after_a_reset_names_it(wire: Wire) -> None:
+    mismatch = wire.watch.judge(_report(DOWN))
+    assert mismatch is not None and mismatch.line is None
+    assert "after the board's reset ran" in mismatch.text()

@@ -66,18 +66,24 @@ def _board(state: str) -> str:
     return QCoreApplication.translate("PenWatch", "the spindle (the pen servo) off")
 
 
-def mismatch_text(expected: str, seen: str, line: str, *, unreported: bool = False) -> str:
-    """The stop's message: the pen as it is, the line run, what the board reports."""
+def mismatch_text(expected: str, seen: str, line: str | None, *, unreported: bool = False) -> str:
+    """The stop's message: the pen as it is, the line run (None: the board's reset), what
+    the board reports."""
+    ran = (
+        repr(line)
+        if line is not None
+        else QCoreApplication.translate("PenWatch", "the board's reset")
+    )
     if unreported:
         return QCoreApplication.translate(
             "PenWatch",
             "Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did "
             "not report the change it makes; the line it got was not the line sent",
-        ).format(_pen(seen), repr(line), _pen(expected))
+        ).format(_pen(seen), ran, _pen(expected))
     return QCoreApplication.translate(
         "PenWatch",
         "Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}",
-    ).format(_pen(seen), repr(line), _pen(expected), _board(seen))
+    ).format(_pen(seen), ran, _pen(expected), _board(seen))
 
 
 def sync_text(line: SentLine) -> str:
@@ -116,7 +122,7 @@ class PenMismatch:
 
     def text(self) -> str:
         """The operator's message: the pen, the line, what the board reports."""
-        line = "?" if self.line is None else self.line.text
+        line = None if self.line is None else self.line.text
         return mismatch_text(self.expected, self.seen, line, unreported=self.unreported)
 
 
@@ -199,9 +205,15 @@ class PenWatch:
         self._refresh_due = None
 
     def restarted(self, banner: str) -> None:
-        """A banner: the board (re)started, its spindle off and S0 (GRBL's ``gc_init``)."""
-        self.reset()
+        """A banner: the board (re)started, its spindle off and S0 (GRBL's ``gc_init``).
+
+        The lines before it were forgotten with the reset (:meth:`reset`); those noted as
+        written since (the reader thread sends what waited for the banner as it reads it)
+        went after it and stay on their way."""
         self._settled = AT_RESET
+        self._settled_by = None
+        self._refresh_due = None
+        self.synced.clear()
         self._grbl11 = banner.startswith("Grbl 1.1")
 
     def alarmed(self) -> None:
