@@ -186,6 +186,8 @@ class GcodeFirmware(GcodeSystemCommands):
         self._pending_line: tuple[int, str] | None = None
         #: The pending line synchronises (GRBL's G4, G92): answered once the planner is empty.
         self._pending_sync = False
+        #: GRBL answers a pen line once its spindle change ran, not its motion (None: at the end).
+        self._sync_until: Block | None = None
         #: GRBL's G92 work offset in effect (machine minus work position), and the status
         #: reports left before the next ``WCO:`` field (0: the next one carries it).
         self._work_offset = origin
@@ -495,6 +497,9 @@ class GcodeFirmware(GcodeSystemCommands):
         self._pending_sync = self.config.grbl and any(
             isinstance(b, (Dwell, SetOffset, PenChange)) for b in result
         )
+        waits = any(isinstance(b, (Dwell, SetOffset)) for b in result)
+        pen = [b for b in result if isinstance(b, PenChange)]
+        self._sync_until = pen[0] if self.config.grbl and pen and not waits else None
         self._queue_pending(self.time if t is None else t)
         if self._reset_after_answer:
             self._reset_after_answer = False
@@ -564,7 +569,9 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._work_offset = block.offset
                 self._wco_countdown = 0  # GRBL: the next report carries WCO
                 self._log("offset", t, offset=self._where(block.offset))
-        if self._running_line is not None and not len(self._planner):
+        until = self._sync_until
+        if self._running_line is not None and (not len(self._planner) or block is until):
+            self._sync_until = None
             length, text = self._running_line
             self._running_line = None
             self._answer(self.config.reply_ok, length, text, t)

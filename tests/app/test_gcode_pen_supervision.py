@@ -124,3 +124,20 @@ def test_a_pen_up_changed_into_a_pen_down_stops_the_travel(
     failure = messages[-1]
     assert "rows.gcode:6" in failure and "the pen is down" in failure, failure
     assert "A:C" in failure, failure
+
+
+def test_a_travel_glued_to_the_pen_down_is_stopped_on_its_way(
+    plotter: StationHarness, tmp_path: Path
+) -> None:
+    """Relay seed 138's fault at the machine's own speed: the line end between the travel and
+    the pen down lost, GRBL lowers the pen first and draws the travel.  The M5 before it and
+    the glued line are answered as the travel starts, so the pen down is counted as answered
+    (with the next line's ok) while the travel still runs: the next report shows it."""
+    glued = _nth_line(1, b"G0X10Y20\n", b"G0X10Y20")
+    runner, messages = _run(plotter, tmp_path, glued)
+    assert glued.done
+    assert runner.state is JobState.FAILED
+    failure = messages[-1]
+    assert "rows.gcode:8" in failure and "moves before it still ran" in failure, failure
+    travel = [(x, y) for x, y, pen in _strokes(plotter) if pen and y > 10.0 and x == 10.0]
+    assert travel == []  # stopped before the travel ended at (10, 20)

@@ -5,6 +5,8 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from protocol.clock import ManualClock
+from protocol.emulator.gcode_firmware import GcodeFirmware, grbl_plotter_config
 from protocol.gcode.accessories import (
     AT_RESET,
     CCW,
@@ -99,3 +101,32 @@ def test_every_change_a_report_can_show_is_one_grbl_reports_at_once(
             assert before.refreshes(words) is True
         if before.refreshes(words) is False:
             assert state.seen == before.seen
+
+
+def test_grbl_answers_a_pen_line_once_the_moves_before_it_ran_and_the_pen_moved() -> None:
+    """spindle_sync: the ok of M3 comes after the move before it; a line with a pen change and
+    a move is answered once the pen moved, its own move queued (not waited for)."""
+    clock = ManualClock(start=0.0)
+    fw = GcodeFirmware(clock, grbl_plotter_config())
+    out = bytearray()
+    fw.set_output(out.extend)
+    clock.advance(0.005)
+    fw.run_until(clock.now())  # booted
+    out.clear()
+    fw.receive(b"G1 X20 F600\nM3 S1000\nG0 X40 M5\n?")
+    answers: list[tuple[float, int]] = []
+    reports: list[str] = []
+    while clock.now() < 10.0:
+        clock.advance(0.005)
+        fw.run_until(clock.now())
+        for line in out.decode("ascii").split():
+            if line == "ok":
+                answers.append((clock.now(), fw.position()["X"]))
+            elif line.startswith("<"):
+                reports.append(line)
+        out.clear()
+    assert len(answers) == 3
+    assert answers[0][1] < 1.0  # the move is queued: answered at once
+    assert answers[1][1] == 20.0  # M3: once the move before it ran
+    assert answers[2][1] < 21.0  # M5 with a move: once the pen is up, the move just begun
+    assert "|A:" not in reports[0]  # asked while the first move ran: the pen still up
