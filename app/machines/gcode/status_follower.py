@@ -306,6 +306,10 @@ class StatusFollower:
         short of, if any (the line the board got was not the one sent)."""
         envelope = self._session.envelope
         proven, self.pen.synced = self.pen.synced, []
+        if proven and copy.deepcopy(envelope).check(here) is not None:
+            for _line, mark in proven:  # off the path anyway: not a pen line's doing
+                envelope.behind(mark)
+            return None
         for line, mark in proven:
             trial = copy.deepcopy(envelope)
             trial.behind(mark)
