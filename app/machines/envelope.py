@@ -138,6 +138,11 @@ class Envelope:
         return len(self._legs)
 
     @property
+    def next_serial(self) -> int:
+        """The serial number the next leg added will have (for :meth:`behind`)."""
+        return self._serial + len(self._legs)
+
+    @property
     def end(self) -> Point | None:
         """Where the moves sent end (the anchor with nothing in flight); None: not known."""
         if self._legs:

@@ -191,6 +191,8 @@ class GcodeFirmware(GcodeSystemCommands):
         self._pending_line: tuple[int, str] | None = None
         #: The pending line synchronises (GRBL's G4, G92): answered once the planner is empty.
         self._pending_sync = False
+        #: GRBL answers a pen line once its spindle change ran, not its motion (None: at the end).
+        self._sync_until: Block | None = None
         #: GRBL's G92 work offset in effect (machine minus work position), and the status
         #: reports left before the next ``WCO:`` field (0: the next one carries it).
         self._work_offset = origin
@@ -201,6 +203,7 @@ class GcodeFirmware(GcodeSystemCommands):
         self._alarm: int | None = None
         self._pen_down = False
         self._spindle = 0.0
+        self._spindle_ccw = False
         self._overflows = 0
         self._unacked = 0
         self._max_unacked = 0
@@ -393,6 +396,10 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._log("alarm", code=code, pos=self._where())
                 self.soft_reset()
                 return
+            if self.config.grbl:
+                # GRBL reports the alarm first (protocol_execute_realtime), then the line it
+                # was waiting in (a pen change or dwell syncing, a move waiting for room) ends.
+                self._send_line(f"ALARM:{code}")
             for line in (self._pending_line, self._running_line):
                 if line is not None:
                     self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *line)
@@ -401,7 +408,8 @@ class GcodeFirmware(GcodeSystemCommands):
             self._interpreter.pen_down = False
             self._interpreter.spindle_level = 0.0
             self._alarm = code
-            self._send_line(f"ALARM:{code}")
+            if not self.config.grbl:
+                self._send_line(f"ALARM:{code}")
             if self.config.grbl and code in CRITICAL_ALARMS:
                 self._send_line("[MSG:Reset to continue]")
             self._log("alarm", code=code, pos=self._where())
@@ -508,9 +516,14 @@ class GcodeFirmware(GcodeSystemCommands):
             return
         self._pending.extend(result)
         self._pending_line = (length, text)
+        # GRBL synchronises the planner before a dwell, an offset change and a spindle change
+        # (spindle_sync): the ok of an M3/M5 line comes once the pen has moved.
         self._pending_sync = self.config.grbl and any(
-            isinstance(b, (Dwell, SetOffset)) for b in result
+            isinstance(b, (Dwell, SetOffset, PenChange)) for b in result
         )
+        waits = any(isinstance(b, (Dwell, SetOffset)) for b in result)
+        pen = [b for b in result if isinstance(b, PenChange)]
+        self._sync_until = pen[0] if self.config.grbl and pen and not waits else None
         self._queue_pending(self.time if t is None else t)
         if self._reset_after_answer:
             self._reset_after_answer = False
@@ -525,7 +538,10 @@ class GcodeFirmware(GcodeSystemCommands):
         words = split_words(body)
         if isinstance(words, WordError):
             return words.code
+        coolant = self._interpreter.modal.coolant
         result = self._interpreter.execute(words)
+        if self.config.grbl and self._interpreter.modal.coolant != coolant:
+            self._overrides.refresh()  # coolant_set_state: A: is reported at once
         return [] if self._check_mode and not isinstance(result, int) else result
 
     def _queue_pending(self, t: float) -> None:
@@ -560,7 +576,9 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._drivers_off.update(names)
                 self._log("drivers off", t, axes="".join(names))
             case PenChange():
-                self._set_pen(block.down, block.spindle, t)
+                self._set_pen(block.down, block.spindle, t, ccw=block.ccw)
+                if self.config.grbl:
+                    self._overrides.refresh()  # spindle_set_state: A: is reported at once
             case Dwell():
                 self._log("dwell", t, seconds=block.seconds)
             case Pause():
@@ -570,10 +588,14 @@ class GcodeFirmware(GcodeSystemCommands):
             case SetOffset():
                 if block.program_end and self._overrides.reset():
                     self._overrides_changed(t)
+                if block.program_end:
+                    self._overrides.refresh()  # its spindle_set_state(SPINDLE_DISABLE)
                 self._work_offset = block.offset
                 self._wco_countdown = 0  # GRBL: the next report carries WCO
                 self._log("offset", t, offset=self._where(block.offset))
-        if self._running_line is not None and not len(self._planner):
+        until = self._sync_until
+        if self._running_line is not None and (not len(self._planner) or block is until):
+            self._sync_until = None
             length, text = self._running_line
             self._running_line = None
             self._answer(self.config.reply_ok, length, text, t)
@@ -590,8 +612,9 @@ class GcodeFirmware(GcodeSystemCommands):
         self._running_line = None
         self._set_pen(False, 0.0, self.time)
 
-    def _set_pen(self, down: bool, spindle: float, t: float) -> None:
+    def _set_pen(self, down: bool, spindle: float, t: float, *, ccw: bool = False) -> None:
         self._spindle = spindle
+        self._spindle_ccw = ccw
         if down != self._pen_down:
             self._pen_down = down
             self._log("pen", t, down=down, pos=self._where())

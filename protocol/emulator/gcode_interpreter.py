@@ -116,6 +116,8 @@ class Modal:
     inches: bool = False
     feed: float | None = None
     spindle_on: bool = False
+    #: ``M4`` (counter-clockwise) rather than ``M3``: GRBL's ``$G`` and its ``A:C``.
+    spindle_ccw: bool = False
     spindle: float = 0.0
     coolant: bool = False  # GRBL's M8 (flood) on, M9 off
     tool: int = 0
@@ -159,7 +161,8 @@ class Interpreter:
     def modes(self) -> str:
         """The ``[GC:...]`` line of ``$G``."""
         m = self.modal
-        spindle = ("M3" if m.spindle_on else "M5") if self.config.pen is PenMapping.SPINDLE else ""
+        spindle = ("M4" if m.spindle_ccw else "M3") if m.spindle_on else "M5"
+        spindle = spindle if self.config.pen is PenMapping.SPINDLE else ""
         words = [
             f"G{m.motion}",
             f"{self.systems.name} G17",
@@ -293,6 +296,7 @@ class Interpreter:
         step_rate, servo, servo_moved = plotted
 
         spindle_on = modal.spindle_on
+        ccw = modal.spindle_ccw
         pen = self.pen_down
         code = line.m.get("spindle")
         if cfg.pen is PenMapping.M3_UP_M4_DOWN:
@@ -302,15 +306,17 @@ class Interpreter:
         else:
             if code is not None:
                 spindle_on = code != 5
+                ccw = code == 4
             pen = spindle_on and spindle > 0
             level = spindle if spindle_on else 0.0
         if servo_moved and code is None:
             # "Zdvihni popisovač do polohy odpovídající úrovni PWM z parametru": M99 lifts
             # the pen to that servo level, so the servo moves even if the pen was up.
             pen = False
-            blocks.append(PenChange(False, cfg.pen_time, level))
-        elif pen != self.pen_down or level != self.spindle_level:
-            blocks.append(PenChange(pen, cfg.pen_time if pen != self.pen_down else 0.0, level))
+            blocks.append(PenChange(False, cfg.pen_time, level, ccw=ccw))
+        elif pen != self.pen_down or level != self.spindle_level or ccw != modal.spindle_ccw:
+            seconds = cfg.pen_time if pen != self.pen_down else 0.0
+            blocks.append(PenChange(pen, seconds, level, ccw=ccw))
 
         if nonmodal == 4:
             dwell = self._dwell(values, dwell_in_s, used)
@@ -348,6 +354,7 @@ class Interpreter:
             inches=inches,
             feed=feed,
             spindle_on=spindle_on,
+            spindle_ccw=ccw and spindle_on,
             spindle=spindle,
         )
         self.position = position

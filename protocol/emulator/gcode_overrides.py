@@ -10,7 +10,10 @@ GRBL's ``RESTORE_OVERRIDES_AFTER_PROGRAM_END``) put both back to 100 %.
 ``Ov:`` goes in a status report as ``report.c`` writes it: in the first
 report after a change, after a reset and the one after a ``WCO:`` field (never
 in the same report), then every 20th report while running, holding, homing or
-jogging and every 10th while idle.  The spindle override stays at 100 %: a pen
+jogging and every 10th while idle, and in the first report after a spindle change
+(``spindle_set_state``).  ``A:`` follows ``Ov:``, in the same reports only: ``S``
+for a spindle on clockwise (M3), ``C`` counter-clockwise (M4), ``F`` for flood
+coolant (M8), the field left out when none is on.  The spindle override stays at 100 %: a pen
 plotter's spindle is its servo, and its bytes are taken and ignored.
 """
 
@@ -55,6 +58,10 @@ class OverrideState:
         self.values = Overrides()
         self._countdown = 0
         return changed
+
+    def refresh(self) -> None:
+        """A spindle or coolant change: the next report carries ``Ov:`` (and ``A:``)."""
+        self._countdown = 0
 
     def wco_reported(self) -> None:
         """A ``WCO:`` field went in this report: ``Ov:`` waits for the next (report.c)."""

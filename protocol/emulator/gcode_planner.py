@@ -140,6 +140,8 @@ class PenChange:
     down: bool
     seconds: float
     spindle: float = 0.0
+    #: ``M4``: GRBL reports the spindle turning counter-clockwise (``A:C``, not ``A:S``).
+    ccw: bool = False
 
 
 @dataclass(frozen=True, slots=True)

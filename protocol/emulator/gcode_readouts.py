@@ -45,6 +45,7 @@ class GcodeReadouts(ControlCycles):
     _alarm: int | None
     _pen_down: bool
     _spindle: float
+    _spindle_ccw: bool
     _overflows: int
     _unacked: int
     _max_unacked: int
@@ -193,8 +194,16 @@ class GcodeReadouts(ControlCycles):
                     self._wco_countdown = (WCO_REFRESH_BUSY if busy else WCO_REFRESH_IDLE) - 1
                     wco = "|WCO:" + axis_values(self._work_offset)
                     self._overrides.wco_reported()
-                wco += self._overrides.report_field(busy)
+                overrides = self._overrides.report_field(busy)
+                wco += overrides + (self._accessories() if overrides else "")
             return f"<{state}|{kind}:{where}{buffers}|FS:{feed:.0f},{self._spindle:.0f}{wco}>"
+
+    def _accessories(self) -> str:
+        """GRBL 1.1h's ``|A:`` (report.c), after ``Ov:``: the spindle as its PWM output has it
+        (on only with S > 0: S0 disables it), then flood coolant; "" with nothing on."""
+        spindle = ("C" if self._spindle_ccw else "S") if self._spindle > 0 else ""
+        flood = "F" if self._interpreter.modal.coolant else ""
+        return f"|A:{spindle}{flood}" if spindle or flood else ""
 
     # -- replies and the log ------------------------------------------------------------------
 

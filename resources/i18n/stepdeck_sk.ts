@@ -1366,7 +1366,7 @@
     <name>GcodeDriver</name>
     <message>
         <source>The machine holds (a feed hold: its hold button, the Hold button here, or a &apos;!&apos; that reached it on the wire): the job is paused at {0}. Resume lets it go on (cycle start).</source>
-        <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at). follows ALARM:3 with its banner) is kept for the Resume, not said again.</extracomment>
+        <extracomment>Station-clock seconds between checkpoint writes while lines stream (each write is an fsync). Station-clock seconds between &quot;operation under way&quot; announcements while lines stream. The modal words a program is checked in (absolute, millimetres, XY plane), sent before its first line where the machine has them: a jog or a console line may have changed them. The work offset when the job began: program coordinates are machine less it. Where the machine stood when the job began, in the program&apos;s coordinates (None when the run began elsewhere than operation 0): standing there again after a fault may mean nothing ran as well as that the file came back to it. The running job&apos;s way to the wire (None without a stream or a session). The last ``[GC:…]`` heard while the set-up is confirmed, awaiting its line&apos;s ``ok``. Checkpoints while lines stream, and &quot;operation under way&quot; announcements, are paced. ``$G`` was sent after the set-up: nothing of the job goes before its answer. The operation the last resume went back to (a refused way back fails there). Set-up and way-back lines sent and not yet answered: the job waits for them, so that none of its lines runs on a machine they did not set up. A pause took back the set-up before it went: it goes again first on the resume. The board reset itself since the job began or last resumed: its position is lost. The operation the operator chose to resume from (ResumeChoice), not yet gone on. A ResumeChoice waits for the operator&apos;s pick. Judges whether the board stands before anything of a resume goes (see standing.py). The board went into a feed hold the station did not ask for (its hold button, or a ``!`` that reached it on the wire): the job is paused, and its resume is a cycle start — the board still has every line it was sent. The operator&apos;s chosen start (its state rebuilt once the machine is looked at). follows ALARM:3 with its banner) is kept for the Resume, not said again.</extracomment>
         <translation>Stroj stojí v pozdržaní (feed hold: jeho tlačidlo, tunajšie tlačidlo Pozdržať, alebo znak „!“, ktorý k nemu dorazil po vedení): úloha je pozastavená na {0}. Pokračovať ju nechá ísť ďalej (cycle start).</translation>
     </message>
     <message>
@@ -1671,7 +1671,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>The board holds {0} byte(s) of a line whose end never came (lost on the way) and waits for it: it stands idle, so it is reset, keeping its position, and what it ran is looked at again</source>
-        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).</extracomment>
+        <extracomment>A line cut on the wire, its start stuck in the board&apos;s buffer (stuck_line.py). The board&apos;s buffer against the bytes counted unanswered (byte_count.py). Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown). The pen (a GRBL plotter&apos;s spindle) against the lines answered (pen_watch.py).</extracomment>
         <translation>Doska drží {0} bajt(ov) riadku, ktorého koniec nikdy neprišiel (stratil sa cestou), a čaká naň: stojí v pokoji, preto je resetovaná so zachovaním polohy a to, čo vykonala, sa znovu preverí</translation>
     </message>
     <message>
@@ -4914,6 +4914,45 @@ Buttons a row.</extracomment>
     <message>
         <source>The board did not take the override: feed {0} %, rapid {1} % asked</source>
         <translation>Doska korekciu neprijala: požadovaný posuv {0} %, rýchloposuv {1} %</translation>
+    </message>
+</context>
+<context>
+    <name>PenWatch</name>
+    <message>
+        <source>up</source>
+        <translation>hore</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>dole</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, clockwise (A:S)</source>
+        <translation>vreteno (servo pera) zapnuté, v smere hodinových ručičiek (A:S)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) on, counter-clockwise (A:C)</source>
+        <translation>vreteno (servo pera) zapnuté, proti smeru hodinových ručičiek (A:C)</translation>
+    </message>
+    <message>
+        <source>the spindle (the pen servo) off</source>
+        <translation>vreteno (servo pera) vypnuté</translation>
+    </message>
+    <message>
+        <source>the board&apos;s reset</source>
+        <translation>resetu dosky</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent), but the board did not report the change it makes; the line it got was not the line sent</source>
+        <translation>Stroj zastavený: pero je {0} po vykonaní {1} (odoslané: pero {2}), ale doska zmenu, ktorú ten riadok spôsobí, nenahlásila; dostala iný riadok, než aký bol odoslaný</translation>
+    </message>
+    <message>
+        <source>Machine stopped: the pen is {0} after {1} ran (pen {2} sent): the board reports {3}</source>
+        <translation>Stroj zastavený: pero je {0} po vykonaní {1} (odoslané: pero {2}): doska hlási {3}</translation>
+    </message>
+    <message>
+        <source>{0} counted as answered while the moves before it still ran (GRBL answers a pen line only once they are done): a line or an answer was lost, changed or repeated on the way.</source>
+        <translation>{0} bol započítaný ako zodpovedaný, kým pohyby pred ním ešte bežali (GRBL odpovedá na riadok pera až po ich dokončení): riadok alebo odpoveď sa cestou stratili, zmenili alebo zopakovali.</translation>
     </message>
 </context>
 <context>

@@ -64,8 +64,13 @@ def test_a_silence_that_cuts_a_line_in_half_neither_hangs_nor_redraws(
             # The board still had lines as the cable came back: the next line's bytes end
             # the fragment and the board refuses the glued line; the job stops there.
             assert runner.state in (JobState.DONE, JobState.FAILED), messages
-        else:
-            assert runner.state is JobState.DONE, messages
+        elif runner.state is not JobState.DONE:
+            # GRBL may have moved the fragment into its line buffer, where Bf: cannot show
+            # it (docs/link-faults.md): the resume's first line is glued to it and runs
+            # ("G1 X60M5": the pen up, then off to X60), and the motion supervision stops it
+            # (since the emulator's M3/M5 synchronise as GRBL's do, the timing that shows).
+            assert runner.state is JobState.FAILED, messages
+            assert "Machine stopped" in messages[-1], messages
         if runner.state is JobState.DONE:
             assert drawn == EXPECTED, messages
     finally:

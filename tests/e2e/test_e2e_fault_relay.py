@@ -100,11 +100,21 @@ _GRBL_SIM = (
     " looks like an ok lost (60: 'G1X29.000Y5.000F303000', 78: 'G1X32.03000', the job done)"
 )
 _PEN = (
-    "undetectable: a pen line lost or changed on the way (M3 S1000 or M5: a row drawn pen-up,"
-    " a travel drawn pen-down) moves nothing off the path, and the reports the station judges"
-    " say where the pen is, not whether it is down. Replayed: grbl-plotter 138 (M5 lost: the"
-    " travel to the next row drawn), 144 (M3 lost: a row not drawn, the job done),"
-    " corexy-plotter 68"
+    "a pen line changed on the way on the CoreXY plotter, whose firmware reports no spindle"
+    " (corexy-plotter 68); on GRBL the pen is judged from A: (app/machines/gcode/pen_watch.py)"
+    " but two lines glued into one valid line by lost bytes ('G0X5.000Y15.000' + 'M3S1000' as"
+    " 'G0X5.000Y15.00M3S1000': GRBL lowers the pen first and draws the travel) are answered as"
+    " the travel starts, and under the relay's 5x time the travel (0.4 s) runs between two"
+    " reports (1 s): grbl-plotter 138; at the machine's own speed it is stopped on its way"
+    " (tests/app/test_gcode_pen_supervision.py)"
+)
+_REFUSED_AFTER_PEN = (
+    "a line refused right after a pen down (bytes lost or flipped: error:1, error:25): GRBL"
+    " goes straight on to the next line, and since the pen down synchronised its planner that"
+    " line starts at once; the station's hold, sent as the error is read, arrives after"
+    " 0.09-6 mm of a stroke not in the job under the relay's 5x time (grbl-plotter 102,"
+    " 134; the emulator synchronises on M3/M5 as GRBL does since h-pen, before which the"
+    " refusal came while the pen line still waited in the planner)"
 )
 _USB3 = (
     "a usb3 move whose count was changed (a flipped bit, lost bytes) or that arrived twice"
@@ -144,8 +154,8 @@ _WINDER = (
     " queries, which the relay counts in the stream"
 )
 KNOWN_FAILURES: dict[tuple[str, FaultKind], str] = {
-    ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_PEN}",
-    ("grbl-plotter", FaultKind.CORRUPT): _BETWEEN,
+    ("grbl-plotter", FaultKind.DROP): f"{_BETWEEN}; {_PEN}; {_REFUSED_AFTER_PEN}",
+    ("grbl-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_REFUSED_AFTER_PEN}",
     ("corexy-plotter", FaultKind.DROP): f"{_BETWEEN}; {_REFUSED_NEXT}",
     ("corexy-plotter", FaultKind.CORRUPT): f"{_BETWEEN}; {_PEN}; {_REFUSED_NEXT}",
     ("string-art", FaultKind.DROP): _WINDER,

@@ -35,6 +35,7 @@ class LinkEvents:
         session.work_offset = None
         session.envelope.release()  # judged again from where it stands once idle
         session.follower.planned.reset_modes()
+        session.follower.pen.reset()
         with session.feeder.lock:
             session.console.reset()  # GRBL's power-on and reset mode is G90
             lost = session.feeder.clear()
@@ -52,6 +53,7 @@ class LinkEvents:
         session.jogger.forget_cancel()
         session.stops.quiet = False
         session.follower.byte_count.forget()
+        session.follower.pen.lines_lost()
         with session.feeder.lock:
             return session.feeder.clear()
 

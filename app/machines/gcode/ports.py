@@ -27,6 +27,7 @@ from app.machines.gcode.hand_zeroing import HandZeroing
 from app.machines.gcode.jogger import GcodeJogger
 from app.machines.gcode.lines import SentLine
 from app.machines.gcode.lost_answers import LostAnswerWatch
+from app.machines.gcode.pen_watch import PenWatch
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.supervision import MotionFault
 from app.profiles import GcodeSettings
@@ -53,6 +54,7 @@ class FollowerPort(Protocol):
     planned: PlannedPath
     byte_count: ByteCount
     lost_answers: LostAnswerWatch
+    pen: PenWatch
 
     def written(self, written: list[tuple[bytes, SentLine]]) -> None: ...
     def apply(

@@ -122,6 +122,7 @@ class ReplyReader:
                     session.follower.apply(reply)
             elif isinstance(reply, AlarmReply):
                 session.envelope.release()  # stopped by itself; it may have lost its position
+                session.follower.pen.alarmed()  # and its spindle (the pen) stopped
                 session.replyText.emit(f"ALARM:{reply.code} ({alarm_meaning(reply.code)})")
                 if session.alarm.heard(reply.code):  # once while it stays in that alarm
                     session.model.message.emit(
@@ -138,9 +139,11 @@ class ReplyReader:
                 session.replyText.emit(reply.text)
                 session.query_status()  # a board just started: where is it, how big its planner
                 if ours:
+                    session.follower.pen.restarted(reply.text)
                     session.pump()  # our reset's banner: what waited for it goes now
                     continue
                 lost = session.links.forget_stream(by_device=True)
+                session.follower.pen.restarted(reply.text)
                 if isinstance(verdict, BannerSeen):
                     lost = verdict.lost + lost  # the feeder forgot them when it read the banner
                 if lost:
@@ -193,6 +196,7 @@ class ReplyReader:
                 session.follower.written(session.feeder.release())
             return
         _, sent = entry
+        session.follower.pen.answered(sent, error is None)
         if session.seen_idle:  # only this thread sets it True: already False, no hold per answer
             with session.feeder.lock:
                 session.seen_idle = False

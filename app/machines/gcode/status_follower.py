@@ -13,7 +13,9 @@ The session composes this follower; it runs on the GUI thread.
 
 from __future__ import annotations
 
+import copy
 import logging
+import math
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication
@@ -30,6 +32,7 @@ from app.machines.gcode.lost_answers import (
     Unaccounted,
     paused_s,
 )
+from app.machines.gcode.pen_watch import PenWatch, sync_text
 from app.machines.gcode.planned_path import PlannedPath
 from app.machines.gcode.stuck_line import StuckLineWatch
 from app.machines.supervision import MotionFault, fault_text
@@ -59,6 +62,8 @@ class StatusFollower:
         self.lost_answers = LostAnswerWatch(settings.rx_buffer)
         #: Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).
         self.planner_size = 0
+        #: The pen (a GRBL plotter's spindle) against the lines answered (pen_watch.py).
+        self.pen = PenWatch(settings, lambda: session.envelope.next_serial)
 
     def written(self, written: list[tuple[bytes, SentLine]]) -> None:
         """Lines gone on the wire: the path follows them, the frame log shows them."""
@@ -69,6 +74,7 @@ class StatusFollower:
         frames, lines = listened(session, "frameSent"), listened(session, "lineSent")
         line = self.planned.line
         for raw, sent in written:
+            self.pen.written(raw, sent)
             try:
                 line(raw.decode("ascii").rstrip(), sent.text, sent.op_index)
             except (ValueError, ArithmeticError):
@@ -196,7 +202,8 @@ class StatusFollower:
         session.status = report
         session.alarm.reported(report.state)
         if placed:
-            self.supervise(report)
+            on_path = self.supervise(report)
+        self.supervise_pen(report, on_path if placed else False)
         session.stops.reported(report)
         if report.state == "Idle" and report.planner_free is not None and session.streamer.idle:
             # Free blocks of an idle machine with nothing on its way: the planner's size.
@@ -278,15 +285,64 @@ class StatusFollower:
         session.stop_for_fault(MotionFault(text, job))
         return True
 
-    def supervise(self, report: StatusReport) -> None:
-        """A report off the path of the lines written stops the machine, naming the line."""
+    def supervise_pen(self, report: StatusReport, on_path: bool) -> None:
+        """A report whose spindle (the pen) is not what the lines run leave stops the machine.
+
+        ``on_path``: the report was just placed on the path of the lines written, so the
+        leg it is on says which pen lines on their way cannot have run yet."""
+        envelope = self._session.envelope
+        here = report.mpos[: self._session.axis_count]
+
+        def reached(mark: int) -> bool:
+            """Every leg before ``mark`` may be behind the machine (it is at the last's end)."""
+            current = envelope.next_serial - envelope.in_flight  # the leg it is on
+            if mark <= current:
+                return True
+            legs = envelope.legs
+            if mark > current + 1 or not legs:
+                return False
+            return math.dist(here, legs[0].end[: len(here)]) <= envelope.tolerance
+
+        mismatch = self.pen.judge(report, reached if on_path and envelope.known else None)
+        if mismatch is not None and not self._session.stopping:
+            self._session.stop_for_fault(MotionFault(mismatch.text(), mismatch.op_index))
+
+    def past_pen_lines(self, here: tuple[float, ...]) -> SentLine | None:
+        """The moves before each pen line proven since the last report are behind the
+        machine (GRBL runs them before the pen moves); the first such line the report is
+        short of, if any (the line the board got was not the one sent)."""
+        envelope = self._session.envelope
+        proven, self.pen.synced = self.pen.synced, []
+        if proven and copy.deepcopy(envelope).check(here) is not None:
+            for _line, mark in proven:  # off the path anyway: not a pen line's doing
+                envelope.behind(mark)
+            return None
+        for line, mark in proven:
+            trial = copy.deepcopy(envelope)
+            trial.behind(mark)
+            if trial.check(here) is not None:
+                envelope.behind(mark)
+                return line
+            envelope.behind(mark)
+        return None
+
+    def supervise(self, report: StatusReport) -> bool:
+        """A report off the path of the lines written stops the machine, naming the line;
+        True when it was judged on the path."""
         session = self._session
         if report.state in ("Home", "Alarm") or len(report.mpos) < session.axis_count:
-            return
-        deviation = session.envelope.check(report.mpos[: session.axis_count])
+            return False
+        here = report.mpos[: session.axis_count]
+        synced = self.past_pen_lines(here)
+        deviation = session.envelope.check(here)
         if deviation is None:
-            return
+            return True
         session.envelope.release()  # one stop, one message: judged again once it stands
         names = [axis.name for axis in session.model.profile.axes]
         tag = deviation.tag if isinstance(deviation.tag, int) else None
-        session.stop_for_fault(MotionFault(fault_text(deviation, names), tag))
+        text = fault_text(deviation, names)
+        if synced is not None:  # short of a pen line proven run: that line was not the one sent
+            text = f"{text}. {sync_text(synced)}"
+            tag = synced.op_index if synced.op_index is not None else tag
+        session.stop_for_fault(MotionFault(text, tag))
+        return False
