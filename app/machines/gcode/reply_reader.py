@@ -76,6 +76,8 @@ class ReplyReader:
         streak = False
         for reply, verdict in received.replies:
             if streak and isinstance(verdict, Answer) and verdict.counted:
+                if verdict.entry is not None:  # a pen line among them is proven run now
+                    session.follower.pen.answered(verdict.entry[1], True)
                 if frames:
                     session.frameReceived.emit(reply, reply_bytes(reply))
                 continue
