@@ -21,6 +21,7 @@ from app.local_numbers import local_number
 from app.machines.envelope import Deviation, Envelope, Fault
 from app.machines.session import MachineSession
 from app.machines.supervision import MotionFault, fault_text
+from app.machines.usb3.direction_twice import with_reversals_twice
 from app.machines.usb3.question_hold import QuestionHold
 from protocol.usb3.codec import (
     TOP_PULSE_RATE,
@@ -117,7 +118,7 @@ class Usb3MovesSent(MachineSession):
     def _send(self, *messages: Message) -> None:
         if not self.link.is_open:
             return
-        for message in messages:
+        for message in with_reversals_twice(messages, self._signs):
             self._track(message)
             raw = encode(message)
             self.link.write(raw)
