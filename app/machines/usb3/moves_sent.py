@@ -84,7 +84,8 @@ class Usb3MovesSent(MachineSession):
             for axis in wanted:
                 self._asking[axis] = True
                 if self._at_rest(axis):
-                    self._held.asked(axis, self.clock.now())
+                    per_pulse = self.step_sizes[axis].counts_per_pulse
+                    self._held.asked(axis, self.clock.now(), per_pulse)
             self._send(SetDirection((1, 1, 1)), *(Move(axis, 0) for axis in wanted))
 
     def request_settings(self) -> None:
