@@ -100,3 +100,47 @@ def test_a_question_run_as_a_long_move_at_eighth_step_is_stopped_within_a_fracti
         assert "Y asked where it stands, a move of nothing" in faults[0].text
     finally:
         unit.close()
+
+
+def test_a_move_held_back_on_the_way_and_taken_for_an_end_switch_may_still_run(
+    qtbot: QtBot,
+) -> None:
+    """The relay's seeds 147 and 195 (h-relay6): the station's bytes held 2.3-2.8 s, the
+    unit's answer to ``G;`` came before the late move's first report, the axis was taken
+    for stopped at an end switch and asked where it stands; the move then ran to its
+    target, which the hold (at 1/8 step's braking) took for a question run as a move."""
+    unit = StationHarness(load_profile("usb3"))
+    try:
+        faults: list[MotionFault] = []
+        switches: list[int] = []
+        unit.connect()
+        unit.run(0.5)
+        session, firmware = unit.usb3_session, unit.usb3_emulator
+        session.motionFault.connect(faults.append)
+        session.endSwitchHit.connect(lambda axis, _end, _mm: switches.append(axis))
+        move, held, release = b"X000000000003200;", bytearray(), [False]
+
+        def slow_line(direction: Direction, data: bytes) -> bytes:
+            if direction is not Direction.TO_DEVICE:
+                return data
+            if release[0]:
+                data, release[0] = bytes(held) + data, False
+                held.clear()
+            elif move in data:
+                held.extend(move)
+                data = data.replace(move, b"")
+            return data
+
+        unit.loopback.set_manipulator(slow_line)
+        start = firmware.positions[0]
+        assert session.move_relative(0, 0.5)
+        session.request_positions([0])  # answered where it stands: the move has not come
+        unit.run_until(lambda: bool(switches), timeout=5.0)
+        session.request_positions([0])  # as a paused job asks; the move arrives after it
+        release[0] = True
+        session.request_settings()
+        unit.run_until(lambda: firmware.positions[0] == start + 3200, timeout=10.0)
+        unit.run(1.0)
+        assert faults == []
+    finally:
+        unit.close()

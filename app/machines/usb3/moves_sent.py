@@ -256,6 +256,9 @@ class Usb3MovesSent(MachineSession):
                     self.request_settings()
                 continue
             self._heading[axis] = None
+            # Its move may only have been held back on the way (the line slow, not a
+            # switch): asked where it stands, it may yet run to that target.
+            self._held.late(axis, target)
             which = "high" if sign > 0 else "low"
             position = count_to_mm(count, self.threads[axis])
             name = self.model.axes[axis].name
