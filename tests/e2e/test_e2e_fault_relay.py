@@ -94,9 +94,9 @@ _USB3 = (
     " counts at 1/8 step: tests/protocol/test_usb3_overrun_limit.py).  The station stops it"
     " (S;) at the first report past the target: 400-550 counts (0.06-0.09 mm) past in the"
     " relay, whose 40x time makes a report 2.5 ms of the station's; 1600 once (127: read"
-    " late).  Slow mode of 28 Nov (h-relay6): 2, 13, 55, 73, 92, 103, 121, 122, 127, 139,"
-    " 157, 175, 187; and 103, 187 of h-relay4, which ran on unseen along a path that turns"
-    " back until the turn-back fix (dc74f4d)"
+    " late).  Slow mode of 28 Nov (h-relay6), last: 13, 73, 98, 103, 115, 121, 122, 152,"
+    " 158, 175, 187, 199; 162 (18 bytes lost over both copies of a D that turns Y round:"
+    " the move ran the wrong way, stopped off its path)"
 )
 _USB3_SHORT = (
     "a usb3 question (a move of nothing) changed into a move of a pulse or more (4 counts at"
