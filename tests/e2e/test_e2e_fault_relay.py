@@ -118,21 +118,28 @@ _REFUSED_AFTER_PEN = (
 )
 _USB3 = (
     "a usb3 move whose count was changed (a flipped bit, lost bytes) or that arrived twice"
-    " (the unit adds a repeated move to its target) runs past the job's target: the station"
-    " stops it (S;) at the first report past it, and the unit brakes to a stop 0.02-0.1 mm"
-    " past (more under the relay's 40x emulated time, where a report is 2.5 ms of the"
-    " station's). Replayed: seeds 2, 13, 55, 122, 180; and 103, 187, which ran on unseen"
-    " along a path that turns back and ended 'done' until the turn-back fix (dc74f4d)"
+    " (the unit adds a repeated move to its target) runs past the job's target: its reports"
+    " are the healthy move's, byte for byte, until the healthy one would brake onto the"
+    " target, and from there even an S; in the next control cycle ends past it (60-140"
+    " counts at 1/8 step: tests/protocol/test_usb3_overrun_limit.py).  The station stops it"
+    " (S;) at the first report past the target: 400-550 counts (0.06-0.09 mm) past in the"
+    " relay, whose 40x time makes a report 2.5 ms of the station's; 1600 once (127: read"
+    " late).  Slow mode of 28 Nov (h-relay6), last: 13, 73, 98, 103, 115, 121, 122, 152,"
+    " 158, 175, 187, 199; 162 (18 bytes lost over both copies of a D that turns Y round:"
+    " the move ran the wrong way, stopped off its path)"
 )
 _USB3_SHORT = (
-    "a usb3 question (a move of nothing) changed into a move of a few counts ends before its"
-    " answer, which is then where the axis stands: nothing shows it moved (seed 164: 1 count"
-    " at connect, the job then exact)"
+    "a usb3 question (a move of nothing) changed into a move of a pulse or more (4 counts at"
+    " 1/8 step) ends before its answer, which is then where the axis stands: nothing shows"
+    " it moved.  No slow-mode run has shown it: seed 164, given as one before, was a count"
+    " of 1, below one pulse, which the unit does not move (the judge now rounds as it does)"
 )
 _DRILL = (
     "undetectable on the drill's wire (no checksum, no echo, no position): a flipped digit"
-    " is acknowledged as the command sent, and the hole is drilled in the wrong place with"
-    " the job done (seeds 50: X594 as X514, 122: X1386 as X0386, 146)"
+    " is acknowledged as the command sent (RX, DX name the letter only), and the hole is"
+    " drilled in the wrong place with the job done (seeds 50: X594 as X514, 122: X1386 as"
+    " X0386, 146).  Only the time between R and D depends on the digits (1.3 ms a"
+    " microstep on X); under the relay's 50x time X594 as X514 is 2 ms"
 )
 _DRILL_TWICE = (
     "a drill cycle repeated on the way is run twice (the drill queues it and has no stop):"

@@ -30,6 +30,7 @@ from tests.helpers.relay_judge import (
     stage_targets,
     string_art_ops,
     stroke_part_of,
+    usb3_joined,
     usb3_part_of,
     usb3_same,
     usb3_targets,
@@ -348,3 +349,52 @@ def test_a_usb3_move_stopped_at_a_switch_and_finished_on_resume_is_one_operation
         "Stopped(axis=<AxisId.X: 0>, count=3200)",
     )
     assert usb3_targets(log)["X"] == [Span(3200, 3200)]
+
+
+def test_a_usb3_count_below_one_pulse_moves_nothing() -> None:
+    """The relay's seed 164: the question ``X000000000000000;`` arrived as ``X…001;``.  The
+    unit moves whole pulses, the count rounded down (4 counts a pulse at its power-on 1/8
+    step): it did not move, and the run was exact (judged wrong before)."""
+    log = _usb3(
+        "SetDirection(signs=(1, 1, 1))",
+        "Move(axis=<AxisId.X: 0>, count=1)",
+        "Move(axis=<AxisId.X: 0>, count=1600)",
+        "Move(axis=<AxisId.X: 0>, count=7)",  # one pulse of four counts, three dropped
+    )
+    assert usb3_targets(log)["X"] == [Span(1600, 1600), Span(1604, 1604)]
+    full = _usb3(
+        "StepSizes(sizes=(<StepSize.FULL: 0>, <StepSize.EIGHTH: 3>, <StepSize.EIGHTH: 3>))",
+        "Move(axis=<AxisId.X: 0>, count=31)",
+        "Move(axis=<AxisId.Y: 1>, count=31)",
+    )
+    assert "X" not in usb3_targets(full)
+    assert usb3_targets(full)["Y"] == [Span(28, 28)]
+
+
+def test_a_usb3_move_that_ended_short_and_was_finished_is_one_operation() -> None:
+    """The relay's seed 152: ``Y…1600;`` arrived as ``Y…1400;``; Y stood 200 counts short
+    (taken for an end switch), the job paused, and the resume moved it on to the target."""
+    log = _usb3(
+        "SetDirection(signs=(1, 1, 1))",
+        "Move(axis=<AxisId.Y: 1>, count=3200)",
+        "Stopped(axis=<AxisId.Y: 1>, count=3200)",
+        "SetDirection(signs=(1, -1, 1))",
+        "Move(axis=<AxisId.Y: 1>, count=1400)",
+        "Stopped(axis=<AxisId.Y: 1>, count=1800)",
+        "Move(axis=<AxisId.Y: 1>, count=200)",
+        "Stopped(axis=<AxisId.Y: 1>, count=1600)",
+    )
+    seen = usb3_targets(log)["Y"]
+    assert seen == [Span(3200, 3200), Span(1800, 1800), Span(1600, 1600)]
+    joined = usb3_joined(seen, [3200, 1600])
+    assert joined == [Span(3200, 3200), Span(1600, 1600)]
+    track = {"Y": Track([3200, 1600], joined, joined, same=usb3_same, part_of=usb3_part_of)}
+    assert judge(track, 0, "done").verdict is Verdict.EXACT
+    # Past the target and back is no piece of it; nor a short place left unfinished.
+    assert usb3_joined([Span(3200, 3200), Span(1400, 1400), Span(1600, 1600)], [3200, 1600]) == [
+        Span(3200, 3200),
+        Span(1400, 1400),
+        Span(1600, 1600),
+    ]
+    unfinished = [Span(3200, 3200), Span(1800, 1800), Span(1000, 1000)]
+    assert usb3_joined(unfinished, [3200, 1600, 1000]) == unfinished

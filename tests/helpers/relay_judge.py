@@ -352,6 +352,12 @@ _USB3_DIRECTION = re.compile(r"SetDirection\(signs=\((-?1), (-?1), (-?1)\)\)")
 _USB3_MOVE = re.compile(r"Move\(axis=<AxisId\.(\w): \d>, count=(\d+)\)")
 #: The emulator logs where an axis in motion came to rest (its ``--log``, AxisStopped).
 _USB3_STOPPED = re.compile(r"Stopped\(axis=<AxisId\.(\w): \d>, count=(-?\d+)\)")
+#: ``M`` as the emulator logs it: each axis's step size (1/2^m step; the value is m).
+_USB3_STEP_SIZES = re.compile(
+    r"StepSizes\(sizes=\(<StepSize\.\w+: (\d)>, <StepSize\.\w+: (\d)>, <StepSize\.\w+: (\d)>\)\)"
+)
+#: The emulated unit's power-on step size (1/8 step: a pulse is 4 counts), unless ``M`` says.
+_USB3_POWER_ON_COUNTS_PER_PULSE = 4
 
 
 @dataclass(frozen=True)
@@ -396,6 +402,7 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
     :class:`Cut` at that place.
     """
     signs = {"X": 1, "Y": 1, "Z": 1}
+    per_pulse = dict.fromkeys("XYZ", _USB3_POWER_ON_COUNTS_PER_PULSE)
     at = {axis: Span(0, 0) for axis in "XYZ"}  # where each axis is (or will be, moving)
     began = dict(at)  # where its last move began
     stopped: dict[str, int | None] = dict.fromkeys("XYZ")  # the target of a stopped move
@@ -404,6 +411,8 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
     for line in log.splitlines():
         if (direction := _USB3_DIRECTION.search(line)) is not None:
             signs = dict(zip("XYZ", (int(s) for s in direction.groups()), strict=True))
+        elif (sizes := _USB3_STEP_SIZES.search(line)) is not None:
+            per_pulse = {a: 32 >> int(m) for a, m in zip("XYZ", sizes.groups(), strict=True)}
         elif (rest := _USB3_STOPPED.search(line)) is not None:
             axis, count = rest.group(1), int(rest.group(2))
             seq, here = targets[axis], at[axis]
@@ -431,9 +440,12 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
             began = dict(at)
             moved_from = dict(at)
             stopped = dict.fromkeys("XYZ")
-        elif (move := _USB3_MOVE.search(line)) is not None and int(move.group(2)):
+        elif (move := _USB3_MOVE.search(line)) is not None and (
+            # The unit moves whole pulses, the count rounded down: less than one is no move.
+            whole := int(move.group(2)) // per_pulse[move.group(1)] * per_pulse[move.group(1)]
+        ):
             axis = move.group(1)
-            delta = signs[axis] * int(move.group(2))
+            delta = signs[axis] * whole
             reach = Span(at[axis].lo + delta, at[axis].hi + delta)
             began[axis] = at[axis]
             picked_up = stopped[axis]
@@ -452,6 +464,34 @@ def usb3_targets(log: str) -> dict[str, list[Span]]:
 
 def usb3_same(span: Span, target: int) -> bool:
     return not isinstance(span, Cut) and target in span
+
+
+def usb3_joined(seen: Sequence[Span], expected: Sequence[int], start: int = 0) -> list[Span]:
+    """``seen`` with each move that ended short on its way, and was then finished, as one.
+
+    A count changed on the wire to a smaller one (``Y…1600;`` arriving as ``Y…1400;``)
+    ends the move short of the job's target, on its way there; the station sees the
+    axis stand short of the target (taken for an end switch), the job pauses, and its
+    resume moves it on from there to that target.  The axis went only along the job's
+    path, each target once and in order: one operation in two pieces, as a move stopped
+    by ``S;`` and finished is (:func:`usb3_targets`).  Only a place strictly between
+    the previous target and the next, followed at once by that next target, is joined.
+    """
+    joined: list[Span] = []
+    index, before = 0, start
+    for position, span in enumerate(seen):
+        if index < len(expected) and usb3_same(span, expected[index]):
+            joined.append(span)
+            before, index = expected[index], index + 1
+            continue
+        if index < len(expected) and position + 1 < len(seen):
+            target, low, high = expected[index], *sorted((before, expected[index]))
+            short = not isinstance(span, Cut) and span.lo == span.hi and low < span.lo < high
+            if short and span.lo != target and usb3_same(seen[position + 1], target):
+                continue  # the first piece: the next one finishes it
+        joined.append(span)
+        index = len(expected)  # off the job from here: the rest is judged as it is
+    return joined
 
 
 def usb3_part_of(span: Span, target: int) -> bool:

@@ -48,6 +48,7 @@ from tests.helpers.relay_judge import (
     stage_targets,
     string_art_ops,
     stroke_part_of,
+    usb3_joined,
     usb3_part_of,
     usb3_same,
     usb3_targets,
@@ -345,6 +346,11 @@ def stage_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
 def usb3_tracks(at_exit: str, final: str) -> dict[str, Track[Any, Any]]:
     expected = _per_axis([(0.0, 0.0), *USB3_ROUTE], USB3_COUNTS_PER_MM)
     early, late = usb3_targets(at_exit), usb3_targets(final)
+    for found in (early, late):
+        for axis in (0, 1):
+            name = "XY"[axis]
+            start, *targets = expected[axis]
+            found[name] = usb3_joined(found.get(name, []), targets, start)
     return {
         f"axis {name}": Track(
             expected[axis][1:],

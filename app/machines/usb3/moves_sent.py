@@ -21,6 +21,7 @@ from app.local_numbers import local_number
 from app.machines.envelope import Deviation, Envelope, Fault
 from app.machines.session import MachineSession
 from app.machines.supervision import MotionFault, fault_text
+from app.machines.usb3.direction_twice import with_reversals_twice
 from app.machines.usb3.question_hold import QuestionHold
 from protocol.usb3.codec import (
     TOP_PULSE_RATE,
@@ -83,7 +84,8 @@ class Usb3MovesSent(MachineSession):
             for axis in wanted:
                 self._asking[axis] = True
                 if self._at_rest(axis):
-                    self._held.asked(axis, self.clock.now())
+                    per_pulse = self.step_sizes[axis].counts_per_pulse
+                    self._held.asked(axis, self.clock.now(), per_pulse)
             self._send(SetDirection((1, 1, 1)), *(Move(axis, 0) for axis in wanted))
 
     def request_settings(self) -> None:
@@ -117,7 +119,7 @@ class Usb3MovesSent(MachineSession):
     def _send(self, *messages: Message) -> None:
         if not self.link.is_open:
             return
-        for message in messages:
+        for message in with_reversals_twice(messages, self._signs):
             self._track(message)
             raw = encode(message)
             self.link.write(raw)
@@ -254,6 +256,9 @@ class Usb3MovesSent(MachineSession):
                     self.request_settings()
                 continue
             self._heading[axis] = None
+            # Its move may only have been held back on the way (the line slow, not a
+            # switch): asked where it stands, it may yet run to that target.
+            self._held.late(axis, target)
             which = "high" if sign > 0 else "low"
             position = count_to_mm(count, self.threads[axis])
             name = self.model.axes[axis].name
