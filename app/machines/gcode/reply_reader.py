@@ -76,10 +76,7 @@ class ReplyReader:
         streak = False
         for reply, verdict in received.replies:
             if streak and isinstance(verdict, Answer) and verdict.counted:
-                if verdict.entry is not None:  # a pen line among them is proven run now
-                    session.follower.pen.answered(verdict.entry[1], True)
-                if frames:
-                    session.frameReceived.emit(reply, reply_bytes(reply))
+                self._streak_answer(reply, verdict, frames=frames)
                 continue
             streak = False
             if reply is WROTE:
@@ -176,6 +173,14 @@ class ReplyReader:
         )
         session.stop_all()
         session.follower.written(session.feeder.release())
+
+    def _streak_answer(self, reply: object, verdict: Answer[SentLine], *, frames: bool) -> None:
+        """One of the job's answers after the first of a streak: the pen watch and the frame."""
+        session = self._session
+        if verdict.entry is not None:  # a pen line among them is proven run now
+            session.follower.pen.answered(verdict.entry[1], True)
+        if frames:
+            session.frameReceived.emit(reply, reply_bytes(reply))
 
     def answered(
         self,
