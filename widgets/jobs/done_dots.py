@@ -68,6 +68,7 @@ class DoneDots(pg.GraphicsObject):  # type: ignore[misc]
         #: (x0, x1, y0, y1) of the done dots in the plot's units, None before the first.
         self._extent: tuple[float, float, float, float] | None = None
         self._rect: QRectF | None = None
+        self._pixel: tuple[float, float] | None = None  # a pixel's size in the plot's units
 
     # --- what is done --------------------------------------------------------------------
 
@@ -134,8 +135,10 @@ class DoneDots(pg.GraphicsObject):  # type: ignore[misc]
     def _padded(self, extent: tuple[float, float, float, float]) -> QRectF:
         """``extent`` grown by half a dot and its pen (pixels) and a pixel to spare."""
         reach = self.size / 2 + max(self.pen.widthF(), 1.0) + 1.0
-        width, height = self.pixelWidth() or 0.0, self.pixelHeight() or 0.0
-        dx, dy = reach * abs(width), reach * abs(height)
+        pixel = self._pixel
+        if pixel is None:  # pyqtgraph works it out from the view's transform, in Python
+            pixel = self._pixel = (abs(self.pixelWidth() or 0.0), abs(self.pixelHeight() or 0.0))
+        dx, dy = reach * pixel[0], reach * pixel[1]
         x0, x1, y0, y1 = extent
         return QRectF(x0 - dx, y0 - dy, x1 - x0 + 2 * dx, y1 - y0 + 2 * dy)
 
@@ -157,7 +160,7 @@ class DoneDots(pg.GraphicsObject):  # type: ignore[misc]
     def viewTransformChanged(self) -> None:
         """The pixel padding (in the plot's units) changed with the view."""
         self.prepareGeometryChange()
-        self._rect = None
+        self._rect = self._pixel = None
         super().viewTransformChanged()
 
     def paint(

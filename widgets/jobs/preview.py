@@ -385,7 +385,7 @@ class DoneTrail(FrozenPieces):
     back (a new run, another program) starts over.
     """
 
-    def __init__(self, plot: pg.PlotItem, tail: pg.PlotDataItem) -> None:
+    def __init__(self, plot: pg.PlotItem, tail: pg.PlotCurveItem) -> None:
         super().__init__(plot)
         self.tail = tail  # the growing piece (the preview's done curve, as before)
         self._path: PathArrays | None = None

@@ -65,10 +65,12 @@ class PreviewItems:
         self.path_picture = PathPictureItem()
         self.path_picture.setZValue(self.travel_curve.zValue())
         plot.addItem(self.path_picture)
-        self.done_travel_curve = self._curve(
+        # Plain curves, not PlotDataItems: given new data with every step of a job, and a
+        # PlotDataItem works out its data sets and bounds in Python before its curve's.
+        self.done_travel_curve = self._done_curve(
             pg.mkPen(DONE_COLOUR, width=1, style=Qt.PenStyle.DashLine)
         )
-        self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
+        self.done_work_curve = self._done_curve(pg.mkPen(DONE_COLOUR, width=1))
         self.work_markers = self._markers(WORK_COLOUR, 6)
         #: Done dots painted once each into a picture (a scatter restyled and redrew them all).
         self.done_markers = DoneDots(
@@ -122,6 +124,11 @@ class PreviewItems:
 
     def _curve(self, pen: object) -> pg.PlotDataItem:
         return self.plot.plot(pen=pen, connect="finite")
+
+    def _done_curve(self, pen: object) -> pg.PlotCurveItem:
+        curve = pg.PlotCurveItem(pen=pen, connect="finite")
+        self.plot.addItem(curve)
+        return curve
 
     def _markers(self, colour: str, size: int) -> pg.ScatterPlotItem:
         markers = pg.ScatterPlotItem(
