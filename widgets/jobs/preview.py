@@ -194,6 +194,18 @@ def ask_operator(parent: QWidget) -> Callable[[str], bool]:
     return confirm
 
 
+def _show(
+    item: pg.GraphicsObject, x: Sequence[float] | np.ndarray, y: Sequence[float] | np.ndarray
+) -> None:
+    """A highlight given its points, hidden while it has none: every frame asks each visible
+    item for its bounds and paints it, empty or not."""
+    if isinstance(item, pg.ScatterPlotItem):
+        item.setData(x=x, y=y)
+    else:
+        item.setData(x, y, connect="finite")
+    item.setVisible(len(x) > 0)
+
+
 class PathArrays:
     """One kind of path (travel or work) as plot-ready arrays plus each point's operation.
 
@@ -601,9 +613,9 @@ class JobPreview(QWidget):
         """Ring where operation ``index`` acts (None clears): the place the operator must look."""
         where = self._where(index) if index is not None else None
         if where is None:
-            self.question_marker.setData(x=_EMPTY, y=_EMPTY)
+            _show(self.question_marker, _EMPTY, _EMPTY)
         else:
-            self.question_marker.setData(x=[where[0]], y=[where[1]])
+            _show(self.question_marker, [where[0]], [where[1]])
 
     def mark_step(self, position: object) -> None:
         """Square the step-through's stop at ``position`` ((x, y) in mm; None clears)."""
@@ -611,16 +623,16 @@ class JobPreview(QWidget):
             x, y = float(position[0]), float(position[1])
             if self.polar is not None:
                 x, y = self.polar.project(x, y)
-            self.step_marker.setData(x=[x], y=[y])
+            _show(self.step_marker, [x], [y])
         else:
-            self.step_marker.setData(x=_EMPTY, y=_EMPTY)
+            _show(self.step_marker, _EMPTY, _EMPTY)
 
     def mark_candidates(self, first: int | None, last: int = 0) -> None:
         """Highlight the path of operations ``first … last - 1`` (None clears): the lines
         that may or may not have run, among which the operator picks where to resume."""
         program = self.program
         if first is None or program is None or not self.axis_names or last <= first:
-            self.candidate_curve.setData(_EMPTY, _EMPTY)
+            _show(self.candidate_curve, _EMPTY, _EMPTY)
             return
         y_name = self.axis_names[1] if len(self.axis_names) > 1 else None
         path = program.preview_path(self.axis_names[0], y_name)
@@ -633,7 +645,7 @@ class JobPreview(QWidget):
             points = [self.polar.project(float(x), float(y)) for x, y in zip(xs, ys, strict=True)]
             xs = np.array([p[0] for p in points])
             ys = np.array([p[1] for p in points])
-        self.candidate_curve.setData(xs, ys, connect="finite")
+        _show(self.candidate_curve, xs, ys)
 
     def _where(self, index: int) -> tuple[float, float] | None:
         """Where the machine stands for operation ``index``: the last target before it."""
@@ -693,8 +705,8 @@ class JobPreview(QWidget):
         prepared, self._prepared = self._prepared, None
         self.program = program
         self.done = 0
-        self.question_marker.setData(x=_EMPTY, y=_EMPTY)
-        self.candidate_curve.setData(_EMPTY, _EMPTY)
+        _show(self.question_marker, _EMPTY, _EMPTY)
+        _show(self.candidate_curve, _EMPTY, _EMPTY)
         if program is None or not self.axis_names:
             self.path_geometry = None
             for curve in (self.travel_curve, self.work_curve):

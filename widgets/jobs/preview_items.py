@@ -97,6 +97,8 @@ class PreviewItems:
         #: The segments of lines sent but not proven run, for the operator's resume pick.
         self.candidate_curve = self._curve(pg.mkPen(QUESTION_COLOUR, width=3))
         self.candidate_curve.setZValue(9)
+        for empty in (self.question_marker, self.step_marker, self.candidate_curve):
+            empty.setVisible(False)  # until there is something to highlight
 
     def show_path(
         self,
