@@ -156,3 +156,38 @@ def test_the_done_dots_are_painted_again_where_a_zoom_puts_them(qtbot: QtBot) ->
     finally:
         preview.close()
         harness.close()
+
+
+def test_the_done_dots_bounds_hold_whole_dots_at_every_zoom(qtbot: QtBot) -> None:
+    """The dots' area (what is repainted for them) is padded in pixels: after a zoom it
+    is worked out again for the new scale, so no dot's edge is cut off."""
+    harness, preview = _dots_preview(qtbot, 100, per_row=10, step=5.0)
+    dots = preview.done_dots
+
+    def holds_whole_dots() -> bool:
+        rect = dots.boundingRect()
+        x, y = dots.done_xy()
+        px, py = abs(dots.pixelWidth()), abs(dots.pixelHeight())
+        half = dots.size / 2  # a dot reaches this many pixels from its centre
+        return bool(
+            rect.left() <= x.min() - half * px
+            and rect.right() >= x.max() + half * px
+            and rect.top() <= y.min() - half * py
+            and rect.bottom() >= y.max() + half * py
+        )
+
+    try:
+        preview.set_done(15)
+        preview.grab()
+        assert holds_whole_dots()
+        fitted = dots.boundingRect()
+        preview.plot.setXRange(0.0, 4.0, padding=0.0)  # zoomed in: a pixel is less
+        preview.plot.setYRange(0.0, 4.0, padding=0.0)
+        qtbot.waitUntil(lambda: dots.boundingRect().width() < fitted.width())
+        assert holds_whole_dots()
+        preview.fit()  # out again: a pixel is more, so is the padding in the plot's units
+        qtbot.waitUntil(lambda: dots.boundingRect().width() == fitted.width())
+        assert holds_whole_dots()
+    finally:
+        preview.close()
+        harness.close()

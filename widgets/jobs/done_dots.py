@@ -137,7 +137,9 @@ class DoneDots(pg.GraphicsObject):  # type: ignore[misc]
         reach = self.size / 2 + max(self.pen.widthF(), 1.0) + 1.0
         pixel = self._pixel
         if pixel is None:  # pyqtgraph works it out from the view's transform, in Python
-            pixel = self._pixel = (abs(self.pixelWidth() or 0.0), abs(self.pixelHeight() or 0.0))
+            pixel = (abs(self.pixelWidth() or 0.0), abs(self.pixelHeight() or 0.0))
+            if pixel[0] > 0 and pixel[1] > 0:  # kept only once there is a view to measure
+                self._pixel = pixel
         dx, dy = reach * pixel[0], reach * pixel[1]
         x0, x1, y0, y1 = extent
         return QRectF(x0 - dx, y0 - dy, x1 - x0 + 2 * dx, y1 - y0 + 2 * dy)
