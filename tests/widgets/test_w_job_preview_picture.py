@@ -115,6 +115,13 @@ def test_a_huge_path_is_shown_as_a_picture_with_the_markers_over_it(
     assert cx is not None and len(cx) == 5  # from the vertex before line 10 to line 13's end
     preview.mark_question(12)
     assert len(preview.question_marker.getData()[0]) == 1
+    highlights = (preview.step_marker, preview.candidate_curve, preview.question_marker)
+    assert all(h.isVisible() for h in highlights)
+    # Cleared, they are hidden: no bounds asked nor paint for an empty item every frame.
+    preview.mark_step(None)
+    preview.mark_candidates(None)
+    preview.mark_question(None)
+    assert not any(h.isVisible() for h in highlights)
 
 
 def test_a_small_path_stays_plot_curves(qtbot: QtBot, preview: JobPreview) -> None:

@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 from pytestqt.qtbot import QtBot
 
 from app.jobs.program import Program, SourceRef, move
 from app.profiles import load_profile
 from tests.helpers.harness import StationHarness
-from widgets.jobs.preview import DOTS_PIECE_POINTS, TRAIL_PIECE_POINTS, JobPreview
+from widgets.jobs.preview import TRAIL_PIECE_POINTS, JobPreview
 
 
 def drawn(preview: JobPreview, kind: int) -> tuple[np.ndarray, np.ndarray]:
@@ -66,116 +68,126 @@ def test_a_long_done_part_grows_in_frozen_pieces_and_starts_over_on_a_new_run(
         harness.close()
 
 
-def test_the_done_dots_of_a_plain_point_job_grow_append_only(qtbot: QtBot) -> None:
-    """A plain point list gets a dot per point; the done dots are added, never all rebuilt
-    (a rebuild per progress step cost a 10 000-point job several ms a step)."""
-    harness = StationHarness(load_profile("xy-stage"))
-    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
-    qtbot.addWidget(preview)
-    ops = tuple(
-        move(SourceRef("dots.csv", i + 1), X=float(i % 50), Y=float(i // 50)) for i in range(500)
-    )
-    try:
-        preview.set_program(Program("dots", ops))
-        markers = preview.path_geometry.markers  # type: ignore[union-attr]
-        assert len(markers.x) == 500
-        preview.set_done(100)
-        rebuilt: list[object] = []
-        original = preview.done_markers.setData
-        preview.done_markers.setData = lambda *a, **k: rebuilt.append(k) or original(*a, **k)  # type: ignore[method-assign]
-        for done in (150, 151, 400, 500):
-            preview.set_done(done)
-            n = markers.done_count(done)
-            shown = preview.done_markers.data
-            np.testing.assert_array_equal(shown["x"], markers.x[:n])
-            np.testing.assert_array_equal(shown["y"], markers.y[:n])
-        assert rebuilt == []
-        preview.set_done(3)  # a new run: drawn again from the start
-        assert len(rebuilt) == 1
-        assert len(preview.done_markers.data) == markers.done_count(3)
-    finally:
-        preview.close()
-        harness.close()
-
-
-def test_the_done_dots_of_a_long_point_job_freeze_in_pieces_painted_once(qtbot: QtBot) -> None:
-    """Past a piece's worth, done dots go to frozen items drawn from a pixmap: the growing
-    item stays small, and together they show exactly the done points, in order."""
-    from PySide6.QtWidgets import QGraphicsItem
-
-    harness = StationHarness(load_profile("xy-stage"))
-    preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
-    qtbot.addWidget(preview)
-    count = 2 * DOTS_PIECE_POINTS + 100
-    ops = tuple(
-        move(SourceRef("dots.csv", i + 1), X=float(i % 100), Y=float(i // 100))
-        for i in range(count)
-    )
-
-    def dots() -> tuple[np.ndarray, np.ndarray]:
-        items = [*preview.done_dots.frozen, preview.done_markers]
-        return (
-            np.concatenate([np.asarray(item.data["x"]) for item in items]),
-            np.concatenate([np.asarray(item.data["y"]) for item in items]),
-        )
-
-    try:
-        preview.set_program(Program("dots", ops))
-        markers = preview.path_geometry.markers  # type: ignore[union-attr]
-        preview.set_done(DOTS_PIECE_POINTS + 10)
-        first = list(preview.done_dots.frozen)
-        assert len(first) == 1
-        assert first[0].cacheMode() == QGraphicsItem.CacheMode.DeviceCoordinateCache
-        kept = np.asarray(first[0].data["x"]).copy()
-        preview.set_done(count)
-        assert preview.done_dots.frozen[:1] == first  # the same item, untouched
-        np.testing.assert_array_equal(np.asarray(first[0].data["x"]), kept)
-        assert len(preview.done_dots.frozen) == 2
-        assert len(preview.done_markers.data) <= DOTS_PIECE_POINTS
-        x, y = dots()
-        n = markers.done_count(count)
-        assert n == count
-        np.testing.assert_array_equal(x, markers.x[:n])
-        np.testing.assert_array_equal(y, markers.y[:n])
-
-        preview.set_done(3)  # a new run: drawn again from the start, the pieces gone
-        assert preview.done_dots.frozen == []
-        assert all(item not in preview.plot.items for item in first)
-        x, _ = dots()
-        np.testing.assert_array_equal(x, markers.x[: markers.done_count(3)])
-    finally:
-        preview.close()
-        harness.close()
-
-
-def test_a_frozen_piece_of_dots_works_out_its_bounds_once_per_view(qtbot: QtBot) -> None:
-    """Every frame asks every item for its bounds: a frozen piece answers from what it
-    worked out for this view, and works them out again when the view changes (its pixel
-    padding, in the plot's units, depends on the zoom)."""
-    import pyqtgraph as pg
-
+def _dots_preview(
+    qtbot: QtBot, count: int, per_row: int = 50, step: float = 1.0
+) -> tuple[StationHarness, JobPreview]:
     harness = StationHarness(load_profile("xy-stage"))
     preview = JobPreview(harness.station, confirm=lambda _t: False, throttle_ms=0)
     qtbot.addWidget(preview)
     preview.resize(600, 400)
     preview.show()
-    count = DOTS_PIECE_POINTS + 50
     ops = tuple(
-        move(SourceRef("dots.csv", i + 1), X=float(i % 40), Y=float(i // 40)) for i in range(count)
+        move(SourceRef("dots.csv", i + 1), X=step * (i % per_row), Y=step * (i // per_row))
+        for i in range(count)
     )
+    preview.set_program(Program("dots", ops))
+    return harness, preview
+
+
+def test_the_done_dots_of_a_plain_point_job_are_each_painted_once(qtbot: QtBot) -> None:
+    """A plain point list gets a dot per point; a done dot is painted once into the
+    picture, not restyled and drawn again on every step (a 10 000-point job's scatter
+    cost the window's thread most of its preview work); going back paints from the start."""
+    harness, preview = _dots_preview(qtbot, 500)
+    dots = preview.done_dots
+    stamped: list[tuple[int, int]] = []
+    original = dots._stamp
+
+    def counted(*args: object) -> None:
+        stamped.append((int(args[2]), int(args[3])))  # type: ignore[call-overload]
+        original(*args)  # type: ignore[arg-type]
+
+    dots._stamp = counted  # type: ignore[method-assign]
     try:
-        preview.set_program(Program("dots", ops))
-        preview.set_done(count)
-        (piece,) = preview.done_dots.frozen
-        first = piece.boundingRect()
-        assert piece.boundingRect() is first  # the same answer, not worked out again
-        assert first == pg.ScatterPlotItem.boundingRect(piece)
-        preview.plot.setXRange(0.0, 4.0, padding=0.0)  # another zoom
+        markers = preview.path_geometry.markers  # type: ignore[union-attr]
+        assert len(markers.x) == 500
+        for done in (100, 150, 151, 400, 500):
+            preview.set_done(done)
+            n = markers.done_count(done)
+            x, y = preview.done_markers.getData()
+            np.testing.assert_array_equal(x, markers.x[:n])
+            np.testing.assert_array_equal(y, markers.y[:n])
+            preview.grab()  # a frame
+        painted = sorted(stamped)
+        assert painted[0][0] == 0 and painted[-1][1] == markers.done_count(500)
+        # Consecutive, never overlapping: each dot once.
+        assert all(a[1] == b[0] for a, b in itertools.pairwise(painted))
+        stamped.clear()
+        preview.set_done(3)  # a new run: drawn again from the start
+        preview.grab()
+        assert stamped == [(0, markers.done_count(3))]
+        assert len(preview.done_markers.getData()[0]) == markers.done_count(3)
+    finally:
+        preview.close()
+        harness.close()
+
+
+def _green_at(preview: JobPreview, x: float, y: float) -> bool:
+    """Whether the preview shows the done colour (green, not the work's blue) about plot
+    point (x, y)."""
+    from PySide6.QtCore import QPointF
+    from PySide6.QtGui import QColor
+
+    from widgets.jobs.preview_items import DONE_COLOUR
+
+    view = preview.plot.getViewBox()
+    scene = view.mapViewToScene(QPointF(x, y))
+    widget = preview.plot_widget
+    at = widget.mapTo(preview, widget.mapFromScene(scene))
+    image = preview.grab().toImage()
+    near = [image.pixelColor(at.x() + dx, at.y() + dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1)]
+    assert QColor(DONE_COLOUR).hue() == 120  # green: what is asked of each pixel below
+    return sum(abs(c.hue() - 120) <= 10 and c.saturation() > 100 for c in near) >= 5
+
+
+def test_the_done_dots_are_painted_again_where_a_zoom_puts_them(qtbot: QtBot) -> None:
+    """The picture is of the view: after a zoom the done dots are where the plot's
+    points now are, and the dots not done are not green."""
+    harness, preview = _dots_preview(qtbot, 100, per_row=10, step=5.0)
+    try:
+        preview.set_done(15)  # the first row (y 0) and five of the second (y 5)
+        assert _green_at(preview, 40.0, 0.0)
+        preview.plot.setXRange(0.0, 40.0, padding=0.0)  # another zoom
+        preview.plot.setYRange(-5.0, 15.0, padding=0.0)
+        qtbot.waitUntil(lambda: _green_at(preview, 10.0, 5.0))
+        assert _green_at(preview, 5.0, 5.0)
+        assert not _green_at(preview, 35.0, 5.0)  # dot 18: not done
+        assert not _green_at(preview, 10.0, 10.0)  # dot 23: not done
+    finally:
+        preview.close()
+        harness.close()
+
+
+def test_the_done_dots_bounds_hold_whole_dots_at_every_zoom(qtbot: QtBot) -> None:
+    """The dots' area (what is repainted for them) is padded in pixels: after a zoom it
+    is worked out again for the new scale, so no dot's edge is cut off."""
+    harness, preview = _dots_preview(qtbot, 100, per_row=10, step=5.0)
+    dots = preview.done_dots
+
+    def holds_whole_dots() -> bool:
+        rect = dots.boundingRect()
+        x, y = dots.done_xy()
+        px, py = abs(dots.pixelWidth()), abs(dots.pixelHeight())
+        half = dots.size / 2  # a dot reaches this many pixels from its centre
+        return bool(
+            rect.left() <= x.min() - half * px
+            and rect.right() >= x.max() + half * px
+            and rect.top() <= y.min() - half * py
+            and rect.bottom() >= y.max() + half * py
+        )
+
+    try:
+        preview.set_done(15)
+        preview.grab()
+        assert holds_whole_dots()
+        fitted = dots.boundingRect()
+        preview.plot.setXRange(0.0, 4.0, padding=0.0)  # zoomed in: a pixel is less
         preview.plot.setYRange(0.0, 4.0, padding=0.0)
-        qtbot.waitUntil(lambda: piece.boundingRect() is not first)
-        again = piece.boundingRect()
-        assert again == pg.ScatterPlotItem.boundingRect(piece)  # as the scatter says now
-        assert again != first  # the padding changed with the view
+        qtbot.waitUntil(lambda: dots.boundingRect().width() < fitted.width())
+        assert holds_whole_dots()
+        preview.fit()  # out again: a pixel is more, so is the padding in the plot's units
+        qtbot.waitUntil(lambda: dots.boundingRect().width() == fitted.width())
+        assert holds_whole_dots()
     finally:
         preview.close()
         harness.close()

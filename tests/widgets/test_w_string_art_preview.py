@@ -53,10 +53,17 @@ def test_nails_and_thread_replace_the_needle_path(preview: JobPreview) -> None:
     assert not preview.work_curve.isVisible() and not preview.work_markers.isVisible()
     assert preview.travel_curve.isVisible()  # the drill phase's travel stays
     assert len(points(extras.current)) == 0  # nothing under way yet
+    own = (extras.thread, extras.done_thread, extras.nails, extras.drilled, extras.current)
+    assert all(item.isVisible() for item in own)
 
     preview.set_program(Program("plain", (move(SourceRef("p.txt", 1), A=1.0, X=2.0),)))
     assert preview.work_curve.isVisible() and preview.work_markers.isVisible()
     assert len(points(extras.nails)) == 0 and len(points(extras.thread)) == 0
+    # Empty, so hidden: not asked for bounds nor painted on every frame of another job.
+    hidden = (*own, *extras.thread_bands, *extras.done_bands, extras.picture)
+    assert not any(item.isVisible() for item in hidden)
+    preview.set_program(program)  # string art again: shown again
+    assert all(item.isVisible() for item in own)
 
 
 def test_progress_shows_drilled_nails_wound_thread_and_the_current_nail(

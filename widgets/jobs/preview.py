@@ -68,7 +68,6 @@ from widgets.jobs.preview_items import (
     POSITION_COLOUR,
     TRAVEL_COLOUR,
     WORK_COLOUR,
-    FrozenDots,
     PreviewItems,
 )
 from widgets.jobs.string_art_picture import (
@@ -194,6 +193,18 @@ def ask_operator(parent: QWidget) -> Callable[[str], bool]:
         return answer == QMessageBox.StandardButton.Yes
 
     return confirm
+
+
+def _show(
+    item: pg.GraphicsObject, x: Sequence[float] | np.ndarray, y: Sequence[float] | np.ndarray
+) -> None:
+    """A highlight given its points, hidden while it has none: every frame asks each visible
+    item for its bounds and paints it, empty or not."""
+    if isinstance(item, pg.ScatterPlotItem):
+        item.setData(x=x, y=y)
+    else:
+        item.setData(x, y, connect="finite")
+    item.setVisible(len(x) > 0)
 
 
 class PathArrays:
@@ -348,10 +359,6 @@ class ProgramGeometry:
 
 #: Points in the done trail's growing piece; past this it is frozen and a new piece starts.
 TRAIL_PIECE_POINTS = 4096
-# The same for done dots: pyqtgraph's scatter copies and restyles its whole growing piece
-# on every step (a 4096-dot piece cost a 10 000-line job 0.9 ms a step on the window's
-# thread), while a frozen piece is a cached picture: smaller pieces, the cost bounded lower.
-DOTS_PIECE_POINTS = 512
 
 
 class FrozenPieces:
@@ -391,7 +398,7 @@ class DoneTrail(FrozenPieces):
     back (a new run, another program) starts over.
     """
 
-    def __init__(self, plot: pg.PlotItem, tail: pg.PlotDataItem) -> None:
+    def __init__(self, plot: pg.PlotItem, tail: pg.PlotCurveItem) -> None:
         super().__init__(plot)
         self.tail = tail  # the growing piece (the preview's done curve, as before)
         self._path: PathArrays | None = None
@@ -425,58 +432,6 @@ class DoneTrail(FrozenPieces):
             path.x[self._start : count], path.y[self._start : count], connect="finite"
         )
         self._shown = count
-
-
-class DoneDots(FrozenPieces):
-    """The done dots of a plain point list, grown as :class:`DoneTrail` grows its line.
-
-    One scatter item given every done dot copies them all on each step and
-    paints them all on every frame (a 10 000-point job: about a third of the
-    window's work while it runs).  Here the growing piece holds at most
-    :data:`DOTS_PIECE_POINTS` dots; full pieces are frozen into items of their
-    own, painted once into a pixmap and never touched again.
-    """
-
-    def __init__(self, plot: pg.PlotItem, tail: pg.ScatterPlotItem) -> None:
-        super().__init__(plot)
-        self.tail = tail  # the growing piece (the preview's done markers, as before)
-        self._markers: PathArrays | None = None
-        self._start = 0  # the first dot of the growing piece
-
-    @property
-    def shown(self) -> int:
-        return self._start + len(self.tail.data)
-
-    def reset(self) -> None:
-        self._thaw()
-        self._markers = None
-        self._start = 0
-        self.tail.setData(x=_EMPTY, y=_EMPTY)
-
-    def show(self, markers: PathArrays, count: int) -> None:
-        """Draw the first ``count`` dots of ``markers`` as done."""
-        if markers is not self._markers or count < self.shown:
-            self.reset()
-            self._markers = markers
-        if count == self.shown:
-            return
-        opts = self.tail.opts
-        while count - self._start > DOTS_PIECE_POINTS:
-            end = self._start + DOTS_PIECE_POINTS
-            piece = FrozenDots(
-                x=markers.x[self._start : end],
-                y=markers.y[self._start : end],
-                size=opts["size"],
-                symbol=opts["symbol"],
-                pen=opts["pen"],
-                brush=opts["brush"],
-            )
-            self._freeze(piece, self.tail.isVisible())
-            self._start = end
-            self.tail.setData(x=_EMPTY, y=_EMPTY)
-        shown = self.shown
-        if count > shown:
-            self.tail.addPoints(x=markers.x[shown:count], y=markers.y[shown:count])
 
 
 class JobPreview(QWidget):
@@ -546,7 +501,7 @@ class JobPreview(QWidget):
             DoneTrail(self.plot, self.done_travel_curve),
             DoneTrail(self.plot, self.done_work_curve),
         )
-        self.done_dots = DoneDots(self.plot, self.done_markers)
+        self.done_dots = self.done_markers
         self.model.axisChanged.connect(self._axis_changed)
         self.model.lockChanged.connect(self._update_enabled)
         if runner is not None:
@@ -659,9 +614,9 @@ class JobPreview(QWidget):
         """Ring where operation ``index`` acts (None clears): the place the operator must look."""
         where = self._where(index) if index is not None else None
         if where is None:
-            self.question_marker.setData(x=_EMPTY, y=_EMPTY)
+            _show(self.question_marker, _EMPTY, _EMPTY)
         else:
-            self.question_marker.setData(x=[where[0]], y=[where[1]])
+            _show(self.question_marker, [where[0]], [where[1]])
 
     def mark_step(self, position: object) -> None:
         """Square the step-through's stop at ``position`` ((x, y) in mm; None clears)."""
@@ -669,16 +624,16 @@ class JobPreview(QWidget):
             x, y = float(position[0]), float(position[1])
             if self.polar is not None:
                 x, y = self.polar.project(x, y)
-            self.step_marker.setData(x=[x], y=[y])
+            _show(self.step_marker, [x], [y])
         else:
-            self.step_marker.setData(x=_EMPTY, y=_EMPTY)
+            _show(self.step_marker, _EMPTY, _EMPTY)
 
     def mark_candidates(self, first: int | None, last: int = 0) -> None:
         """Highlight the path of operations ``first … last - 1`` (None clears): the lines
         that may or may not have run, among which the operator picks where to resume."""
         program = self.program
         if first is None or program is None or not self.axis_names or last <= first:
-            self.candidate_curve.setData(_EMPTY, _EMPTY)
+            _show(self.candidate_curve, _EMPTY, _EMPTY)
             return
         y_name = self.axis_names[1] if len(self.axis_names) > 1 else None
         path = program.preview_path(self.axis_names[0], y_name)
@@ -691,7 +646,7 @@ class JobPreview(QWidget):
             points = [self.polar.project(float(x), float(y)) for x, y in zip(xs, ys, strict=True)]
             xs = np.array([p[0] for p in points])
             ys = np.array([p[1] for p in points])
-        self.candidate_curve.setData(xs, ys, connect="finite")
+        _show(self.candidate_curve, xs, ys)
 
     def _where(self, index: int) -> tuple[float, float] | None:
         """Where the machine stands for operation ``index``: the last target before it."""
@@ -751,8 +706,8 @@ class JobPreview(QWidget):
         prepared, self._prepared = self._prepared, None
         self.program = program
         self.done = 0
-        self.question_marker.setData(x=_EMPTY, y=_EMPTY)
-        self.candidate_curve.setData(_EMPTY, _EMPTY)
+        _show(self.question_marker, _EMPTY, _EMPTY)
+        _show(self.candidate_curve, _EMPTY, _EMPTY)
         if program is None or not self.axis_names:
             self.path_geometry = None
             for curve in (self.travel_curve, self.work_curve):
@@ -1032,10 +987,8 @@ class JobPreview(QWidget):
         for trail, path in zip(self.done_trails, (geometry.travel, geometry.work), strict=True):
             trail.show(path, path.done_count(self.done))  # append-only: no full rebuild
         self.done_trails[1].set_visible(self.done_work_curve.isVisible())
-        # Append-only, as the trails: a rebuild of every done dot per step cost a long
-        # plain-point job (10 000 dots) several ms a step on the window's thread.
+        # Append-only, as the trails: each dot painted once (widgets/jobs/done_dots.py).
         self.done_dots.show(geometry.markers, geometry.markers.done_count(self.done))
-        self.done_dots.set_visible(self.done_markers.isVisible())
 
     def _draw_position(self) -> None:
         axes = self.model.axes
@@ -1076,6 +1029,7 @@ class StringArtPreviewExtras:
         self.thread = self._segments(WORK_COLOUR, THREAD_ALPHA)
         self.done_thread = self._segments(DONE_COLOUR, DONE_THREAD_ALPHA)
         self._done_cleared = False  # the done items are empty and need not be set again
+        self._active = False  # a string-art program is shown
         #: A merged thread's bands (see the module of the thread geometry), all and wound.
         self.thread_bands = [
             self._segments(WORK_COLOUR, band_alpha(THREAD_ALPHA, k)) for k in range(len(BAND_EDGES))
@@ -1105,6 +1059,7 @@ class StringArtPreviewExtras:
         self._wound: WoundCounter | None = None
         #: What the preview says when it draws the thread merged ("" when exact).
         self.merged_note = ""
+        self._show_own(False)
 
     def _segments(self, colour: str, alpha: int) -> pg.PlotCurveItem:
         curve = pg.PlotCurveItem(pen=band_pen(colour, alpha), connect="pairs", skipFiniteCheck=True)
@@ -1112,11 +1067,22 @@ class StringArtPreviewExtras:
         self.plot.addItem(curve)
         return curve
 
+    def _show_own(self, active: bool) -> None:
+        """Hidden while there is no string art: every frame of another job asked each of
+        these empty items for its bounds and painted it."""
+        for own in (self.thread, self.done_thread, *self.done_bands, self.nails, self.drilled):
+            own.setVisible(active)
+        self.current.setVisible(active)
+        if not active:
+            for band in self.thread_bands:
+                band.setVisible(False)
+
     def _show_picture(self, shown: bool) -> None:
-        """The painted image of the whole thread, or its bands drawn as lines."""
+        """The painted image of the whole thread, or its bands drawn as lines (none without
+        a string-art job)."""
         self.picture.setVisible(shown)
         for band in self.thread_bands:
-            band.setVisible(not shown)
+            band.setVisible(not shown and self._active)
 
     def _picture_strayed(self) -> None:
         """The view was zoomed or resized: the image's lines would not be one pixel."""
@@ -1143,9 +1109,10 @@ class StringArtPreviewExtras:
         ``thread``: its layout, made on the loading thread (else it is made here);
         ``picture``: its merged chords painted there too (else they are drawn as lines).
         """
-        active = isinstance(program, StringArtProgram)
+        active = self._active = isinstance(program, StringArtProgram)
         for item in self.replaced:
             item.setVisible(not active)
+        self._show_own(active)
         self.merged_note = ""
         self.picture.set_picture(picture if active and thread is not None else None)
         self._show_picture(self.picture.picture is not None)

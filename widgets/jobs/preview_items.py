@@ -15,6 +15,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QPen
 from PySide6.QtWidgets import QGraphicsItem
 
+from widgets.jobs.done_dots import DoneDots
 from widgets.jobs.path_picture import PICTURE_MIN_POINTS, PathLayer, PathPictureItem
 
 _EMPTY = np.empty(0)
@@ -64,12 +65,18 @@ class PreviewItems:
         self.path_picture = PathPictureItem()
         self.path_picture.setZValue(self.travel_curve.zValue())
         plot.addItem(self.path_picture)
-        self.done_travel_curve = self._curve(
+        # Plain curves, not PlotDataItems: given new data with every step of a job, and a
+        # PlotDataItem works out its data sets and bounds in Python before its curve's.
+        self.done_travel_curve = self._done_curve(
             pg.mkPen(DONE_COLOUR, width=1, style=Qt.PenStyle.DashLine)
         )
-        self.done_work_curve = self._curve(pg.mkPen(DONE_COLOUR, width=1))
+        self.done_work_curve = self._done_curve(pg.mkPen(DONE_COLOUR, width=1))
         self.work_markers = self._markers(WORK_COLOUR, 6)
-        self.done_markers = self._markers(DONE_COLOUR, 6)
+        #: Done dots painted once each into a picture (a scatter restyled and redrew them all).
+        self.done_markers = DoneDots(
+            size=6, symbol="o", pen=pg.mkPen(DONE_COLOUR), brush=pg.mkBrush(DONE_COLOUR)
+        )
+        plot.addItem(self.done_markers)
         for item in (self.limits_curve, self.travel_curve, self.work_curve, self.work_markers):
             # Unchanged while a job runs, yet repainted with every frame of its done part and
             # position (10 000 dots drawn again and again): painted once into a pixmap
@@ -90,6 +97,8 @@ class PreviewItems:
         #: The segments of lines sent but not proven run, for the operator's resume pick.
         self.candidate_curve = self._curve(pg.mkPen(QUESTION_COLOUR, width=3))
         self.candidate_curve.setZValue(9)
+        for empty in (self.question_marker, self.step_marker, self.candidate_curve):
+            empty.setVisible(False)  # until there is something to highlight
 
     def show_path(
         self,
@@ -118,6 +127,11 @@ class PreviewItems:
     def _curve(self, pen: object) -> pg.PlotDataItem:
         return self.plot.plot(pen=pen, connect="finite")
 
+    def _done_curve(self, pen: object) -> pg.PlotCurveItem:
+        curve = pg.PlotCurveItem(pen=pen, connect="finite")
+        self.plot.addItem(curve)
+        return curve
+
     def _markers(self, colour: str, size: int) -> pg.ScatterPlotItem:
         markers = pg.ScatterPlotItem(
             size=size, symbol="o", pen=pg.mkPen(colour), brush=pg.mkBrush(colour)
@@ -130,29 +144,3 @@ class PreviewItems:
         marker.setZValue(z)
         self.plot.addItem(marker)
         return marker
-
-
-class FrozenDots(pg.ScatterPlotItem):  # type: ignore[misc]
-    """A piece of done dots that never changes, whose bounds are worked out once per view.
-
-    Every frame asks every item for its bounds, and a scatter works them out
-    in Python each time (its pixel padding from the view's transform): a
-    10 000-dot job's twenty frozen pieces cost the window more than the rest
-    of each frame.  A frozen piece's data and style never change, so its bounds
-    change only with the view's transform, which pyqtgraph tells every item
-    (:meth:`viewTransformChanged`, as the scatter itself forgets its data bounds).
-    """
-
-    def __init__(self, *args: object, **kwargs: object) -> None:
-        self._rect: object = None
-        super().__init__(*args, **kwargs)
-
-    def boundingRect(self) -> object:
-        rect = self._rect
-        if rect is None:
-            rect = self._rect = super().boundingRect()
-        return rect
-
-    def viewTransformChanged(self) -> None:
-        self._rect = None  # before the scatter's own prepareGeometryChange asks again
-        super().viewTransformChanged()
