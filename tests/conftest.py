@@ -87,6 +87,7 @@ def collected_after_each_test() -> Iterator[None]:
     # Here, on the main thread, with no other test's thread running; by the collector's own
     # thresholds, as the station does (a full collection after every test cost minutes).
     collect_due()
+    gc.disable()  # a test that stopped a MainThreadCollector switched it back on
 
 
 @pytest.fixture(autouse=True)

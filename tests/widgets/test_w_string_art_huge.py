@@ -248,16 +248,19 @@ def test_no_automatic_garbage_collection_while_the_dock_loads_a_file(
     runner = JobRunner(harness.station, tmp_path / "checkpoints")
     dock = JobsDock(harness.station, runner, confirm=lambda _t: False, throttle_ms=0)
     qtbot.addWidget(dock)
+    collecting = gc.isenabled()  # off for the suite (tests/conftest.py), as in the station
+    gc.enable()  # a script's process, say: collection on, and the load must not leave it off
     try:
         with pytest.MonkeyPatch.context() as patch:
             patch.setattr(loading_module, "load_job", load_job)
-            assert gc.isenabled()
             assert dock.open_path(poradi, background=True)
             qtbot.waitUntil(lambda: dock._loading is None, timeout=60_000)
         assert seen == [False]
         assert gc.isenabled()
         assert isinstance(runner.program, StringArtProgram)
     finally:
+        if not collecting:
+            gc.disable()
         dock.close()
         runner.deleteLater()
         harness.close()
