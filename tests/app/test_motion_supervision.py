@@ -256,31 +256,6 @@ def test_a_usb3_question_arriving_as_a_long_move_is_stopped_one_report_after_its
     assert len(usb3.faults) == 1  # one stop, one message
 
 
-def test_a_usb3_question_at_connect_arriving_as_a_long_move_is_stopped(qtbot: QtBot) -> None:
-    """Seed 134 as the relay ran it: the question of the connect itself, before any axis was
-    heard, arrived as a move of 20 000 000 counts."""
-    unit = StationHarness(load_profile("usb3"))
-    try:
-        faults: list[MotionFault] = []
-        unit.connect(wait_for_answer=False)
-        session = unit.usb3_session
-        session.motionFault.connect(faults.append)
-        unit.loopback.set_manipulator(
-            lambda direction, data: (
-                data.replace(b"Y000000000000000;", b"Y000000020000000;", 1)
-                if direction is Direction.TO_DEVICE
-                else data
-            )
-        )
-        unit.run_until(lambda: bool(faults), timeout=10.0)
-        unit.loopback.set_manipulator(None)
-        unit.run_until(lambda: not unit.usb3_emulator.moving(AxisId.Y), timeout=2.0)
-        assert count_to_mm(unit.usb3_emulator.positions[Y], Thread.M6) < 1.0
-        assert "Y asked where it stands, a move of nothing" in faults[0].text
-    finally:
-        unit.close()
-
-
 def test_a_usb3_question_answered_at_rest_never_trips_and_the_joystick_moves_after(
     usb3: Watched,
 ) -> None:

@@ -21,8 +21,6 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-import pytest
-
 from protocol.clock import ManualClock
 from protocol.emulator.gcode_firmware import GcodeFirmware, grbl_plotter_config
 from tests.helpers import grbl_sim, grbl_sim_timing
@@ -93,14 +91,6 @@ def _fields(reports: list[str]) -> list[str]:
     """Each report's WCO:, Ov: and A: fields, as written (the rest differs in timing only)."""
     keep = re.compile(r"\|((?:WCO|Ov|A):[^|>]*)")
     return [" ".join(keep.findall(r)) for r in reports]
-
-
-@pytest.fixture(scope="module")
-def timing_sim() -> Path:
-    if grbl_sim.compiler() is None:
-        pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
-    source = Path(__file__).resolve().parents[1] / "third_party" / "grbl"
-    return grbl_sim_timing.build(source)
 
 
 def test_the_accessory_field_comes_as_on_grbl_sim_report_by_report(timing_sim: Path) -> None:

@@ -12,16 +12,7 @@ from pathlib import Path
 import pytest
 
 from protocol.gcode.overrides import RAPID_50
-from tests.helpers import grbl_sim, grbl_sim_timing
 from tests.helpers.grbl_sim_overrides import HALF, PAD, run_emulator, run_sim
-
-
-@pytest.fixture(scope="module")
-def timing_sim() -> Path:
-    if grbl_sim.compiler() is None:
-        pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
-    source = Path(__file__).resolve().parents[1] / "third_party" / "grbl"
-    return grbl_sim_timing.build(source)
 
 
 def test_feed_50_shows_ov_50_and_doubles_the_time_on_grbl_sim_and_the_emulator(

@@ -16,19 +16,11 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import grbl_sim, grbl_sim_timing
+from tests.helpers import grbl_sim_timing
 
 STEPS_PER_MM = 80  # grbl_sim_timing.SETTINGS: the grbl-plotter profile's
 TOLERANCE = 0.05
 REAL_FILE = Path("realdata") / "gcode" / "Escriba_gcodetools_calibration.gcode"
-
-
-@pytest.fixture(scope="module")
-def timing_sim() -> Path:
-    if grbl_sim.compiler() is None:
-        pytest.skip("no C compiler and make: grbl-sim cannot be built (.ci/run installs them)")
-    source = Path(__file__).resolve().parents[1] / "third_party" / "grbl"
-    return grbl_sim_timing.build(source)
 
 
 def _end_mm(program: list[str]) -> tuple[float, float]:
