@@ -532,10 +532,14 @@ class GcodeDriver(GcodeAlarmPause):
             self._machine_held()
             return
         self._status_to(stream, report)
-        self._write_checkpoint(force=False)
         with self._locked():
             in_flight = stream.in_flight
-        if not in_flight:
+        if in_flight:
+            # Lines may stay unanswered a while (GRBL answers a pen change only once the
+            # moves before it ran): what this report proves run is shown now, not then.
+            self._report(stream)
+        else:
+            self._write_checkpoint(force=False)
             self.proceed()
 
     def _machine_held(self) -> None:
