@@ -60,7 +60,7 @@ def test_an_alarm_repeated_is_said_once_until_the_board_leaves_it(
     emulator.trigger_alarm(1)  # another alarm is news
     plotter.run(0.5)
     assert len(said(messages, "Machine alarm 1")) == 1, messages
-    assert plotter.gcode_session.send_line("$X")
+    assert plotter.gcode_session.limit_lock.unlock()  # GRBL's lock: reset, then $X
     plotter.run_until(lambda: plotter.gcode_session.machine_state == "Idle", timeout=3)
     emulator.trigger_alarm(2)  # out of it and back in: said again
     plotter.run(0.5)
@@ -88,8 +88,8 @@ def test_an_alarm_mid_job_pauses_it_once_and_the_resume_draws_each_stroke_once(
         plotter.run(2.0)
         job_lines = [w for w in plotter.written[written:] if w.strip() not in (b"?", b"!", b"")]
         assert job_lines == []  # nothing streamed into the alarm
-        # The operator unlocks it (its position kept) and resumes.
-        assert plotter.gcode_session.send_line("$X")
+        # The operator resets and unlocks it (its position kept) and resumes.
+        assert plotter.gcode_session.limit_lock.unlock()
         plotter.run_until(lambda: plotter.gcode_session.machine_state == "Idle", timeout=3)
         runner.resume()
         plotter.run_until(
