@@ -153,6 +153,7 @@ def test_the_api_fails_a_job_an_alarm_stopped_and_its_progress_says_so(
         assert emulator is not None
         messages: list[str] = []
         states: list[str] = []
+        after: list[bytes] = []  # what the station wrote once the limit tripped
 
         def progress(p: stepdeck.Progress) -> None:
             states.append(p.state)
@@ -160,12 +161,16 @@ def test_the_api_fails_a_job_an_alarm_stopped_and_its_progress_says_so(
                 states.append("tripped")
                 emulator.trigger_alarm(1)  # a limit switch, twice: it bounces
                 emulator.trigger_alarm(1)
+                plotter.station.link.dataSent.connect(after.append)
 
         with pytest.raises(stepdeck.JobFailed) as failed:
             plotter.run(
                 job, on_progress=progress, on_message=messages.append, checkpoint_dir=tmp_path
             )
         assert "alarm 1" in str(failed.value)
+        assert "reset" in str(failed.value)  # GRBL's lock: what clears it is said
+        # Into GRBL's lock after a limit (ALARM:1) nothing of the job goes, nor a reset.
+        assert [w for w in after if w != b"?"] == [], after
         assert len(said(messages, "alarm")) == 1, messages
         assert states[-1] == "failed"
         assert len(said(plotter.messages, "Machine alarm 1")) == 1, plotter.messages
