@@ -107,8 +107,13 @@ def test_a_job_paused_by_a_hard_limit_stays_paused_through_reset_and_unlock(
         plotter.run(3 * timing.SILENCE_S)
         assert runner.state is JobState.PAUSED and runner.needs_operator
         assert plotter.station.model.link_state is LinkState.CONNECTED
+        assert not plotter.station.model.any_moving  # stopped, not "run" as last reported
         moved = len(events(plotter, "move"))
         written = len(plotter.written)
+        runner.resume()  # into the lock: no report would ever come, so it says so and waits
+        plotter.run(2.0)
+        assert runner.state is JobState.PAUSED and runner.needs_operator
+        assert [w for w in plotter.written[written:] if w != b"?"] == []
         assert plotter.gcode_session.limit_lock.unlock()
         plotter.run_until(lambda: len(events(plotter, "unlock")) == 1, timeout=3)
         plotter.run(2.0)

@@ -58,6 +58,7 @@ class LimitLock:
             if not self.waiting:
                 self.waiting = True
                 self._show(waiting_text())
+                self._stopped()
         elif self.waiting:
             self.waiting = False
             self._show(self._session.link.describe())
@@ -80,6 +81,14 @@ class LimitLock:
         first; the feeder holds the line that follows until the reset's banner."""
         if self.waiting:
             self.reset()
+
+    def _stopped(self) -> None:
+        """GRBL stopped its steppers as it raised the alarm (mc_reset), and no report will
+        say so before the reset: the axes are shown in alarm, not as the last report left
+        them (running, say)."""
+        session = self._session
+        for axis in range(session.axis_count):
+            session.model.update_axis(axis, status_text="alarm", moving=False)
 
     def _show(self, detail: str) -> None:
         model = self._session.model
