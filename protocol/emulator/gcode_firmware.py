@@ -201,6 +201,10 @@ class GcodeFirmware(GcodeSystemCommands):
         self._running_line: tuple[int, str] | None = None
         self._status_wanted = False
         self._alarm: int | None = None
+        #: After a hard or soft limit GRBL waits in its critical-event loop for a 0x18 (protocol.c):
+        #: the line it was taking, answered ``ok`` once the reset ends the loop; None when none.
+        self._critical_line: tuple[int, str] | None = None
+        self._critical_wait = False
         self._pen_down = False
         self._spindle = 0.0
         self._spindle_ccw = False
@@ -239,6 +243,8 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._lost_booting += len(data)
                 return
             for byte in data:
+                if self._critical_wait and byte != SOFT_RESET[0]:
+                    continue  # in GRBL's lock: its flags and read buffer are cleared by the reset
                 if byte == STATUS_QUERY[0]:
                     self._status_wanted = True
                 elif byte == FEED_HOLD[0]:
@@ -323,6 +329,13 @@ class GcodeFirmware(GcodeSystemCommands):
             self._overrides.reset()
             self._planner.set_overrides(100, 100)
             self._log("reset", pos=self._where())
+            if self._critical_wait:
+                self._critical_wait = False
+                if (
+                    self._critical_line is not None
+                ):  # its gc_execute_line returns once the lock ends
+                    self._answer(self.config.reply_ok, *self._critical_line)
+                    self._critical_line = None
             self._send_banner()
             if self._alarm is not None:
                 self._send_line("[MSG:'$H'|'$X' to unlock]")
@@ -385,7 +398,9 @@ class GcodeFirmware(GcodeSystemCommands):
         """Enter the alarm state (``ALARM:<code>``), as a limit switch would.
 
         What follows is GRBL 1.1h's (protocol.c): after a hard or soft limit (1, 2)
-        ``[MSG:Reset to continue]``; an alarm GRBL raises through its reset (3, 6…10: a
+        ``[MSG:Reset to continue]``, then silence, not even a status report, and every byte
+        but 0x18 lost, until that reset (its ``EXEC_CRITICAL_EVENT`` loop; grbl-sim agrees,
+        ``test_e2e_grbl_resets_vs_grbl_sim.py``); an alarm GRBL raises through its reset (3, 6…10: a
         reset in motion, a homing failure) is followed by that reset, its banner and
         ``[MSG:'$H'|'$X' to unlock]``, every line it held dropped unanswered.
         """
@@ -396,12 +411,15 @@ class GcodeFirmware(GcodeSystemCommands):
                 self._log("alarm", code=code, pos=self._where())
                 self.soft_reset()
                 return
+            critical = self.config.grbl and code in CRITICAL_ALARMS
             if self.config.grbl:
                 # GRBL reports the alarm first (protocol_execute_realtime), then the line it
                 # was waiting in (a pen change or dwell syncing, a move waiting for room) ends.
                 self._send_line(f"ALARM:{code}")
             for line in (self._pending_line, self._running_line):
-                if line is not None:
+                if line is not None and critical:
+                    self._critical_line = line
+                elif line is not None:
                     self._answer(f"{self.config.reply_error}:{GCODE_LOCKED}", *line)
             self._stop()
             self._interpreter.position = self._planner.position()
@@ -410,8 +428,10 @@ class GcodeFirmware(GcodeSystemCommands):
             self._alarm = code
             if not self.config.grbl:
                 self._send_line(f"ALARM:{code}")
-            if self.config.grbl and code in CRITICAL_ALARMS:
+            if critical:
                 self._send_line("[MSG:Reset to continue]")
+                self._critical_wait = True
+                self._status_wanted = False
             self._log("alarm", code=code, pos=self._where())
 
     # -- the control cycle -----------------------------------------------------------------
@@ -422,6 +442,12 @@ class GcodeFirmware(GcodeSystemCommands):
         self._log("override", t, feed=values.feed, rapid=values.rapid)
 
     def _run_cycle(self) -> None:
+        if (
+            self._critical_wait and self._booted
+        ):  # GRBL's critical-event loop: nothing runs, nothing is said
+            self._cycles += 1
+            self._flush()
+            return
         if self._overrides.run_pass():  # GRBL's real-time pass acts on the bytes received
             self._overrides_changed()
         self._take_lines()

@@ -92,8 +92,8 @@ ERROR_MESSAGES: dict[int, str] = {
 
 #: GRBL 1.1's alarm codes (``ALARM:<n>``).
 ALARM_MESSAGES: dict[int, str] = {
-    1: "hard limit triggered: position likely lost, re-home",
-    2: "soft limit: motion target beyond the travel, position kept",
+    1: "hard limit triggered: position likely lost; reset, then home",
+    2: "soft limit: target beyond the travel; reset, then unlock or home",
     3: "reset while in motion: position likely lost, re-home",
     4: "probe fail: probe not in the expected initial state",
     5: "probe fail: no contact within the programmed travel",

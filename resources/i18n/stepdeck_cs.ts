@@ -1696,7 +1696,7 @@ Přesto odeslat do stroje?</translation>
     </message>
     <message>
         <source>Not sent without confirmation: {0}</source>
-        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. The lines of one write, in order (list[SentLine]): what hears every line of a running job listens here, once a batch, not once a line. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
+        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. The lines of one write, in order (list[SentLine]): what hears every line of a running job listens here, once a batch, not once a line. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. GRBL&apos;s lock after a hard or soft limit: silent until a reset (limit_lock.py). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Bez potvrzení neodesláno: {0}</translation>
     </message>
     <message>
@@ -1719,6 +1719,11 @@ Přesto odeslat do stroje?</translation>
         <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} řádek/řádků stále bez odpovědi, zatímco deska stojí nečinně, a její hlášení nemohou ukázat, zda je má: deska se resetuje, poloha zůstává, a co provedla, se posoudí znovu</translation>
     </message>
+    <message>
+        <source>in alarm: reset to continue</source>
+        <extracomment>The alarms after which GRBL waits for a reset (protocol.c): hard and soft limits. GRBL&apos;s words after them (report.c, ``MESSAGE_CRITICAL_EVENT``).</extracomment>
+        <translation>v alarmu: pokračujte resetem</translation>
+    </message>
 </context>
 <context>
     <name>GrblAlarmBand</name>
@@ -1730,6 +1735,10 @@ Přesto odeslat do stroje?</translation>
         <source>Home ($H)</source>
         <translation>Výchozí poloha ($H)</translation>
     </message>
+    <message>
+        <source>Reset (Ctrl-X)</source>
+        <translation>Reset (Ctrl-X)</translation>
+    </message>
 </context>
 <context>
     <name>GrblCodes</name>
@@ -1739,12 +1748,17 @@ Přesto odeslat do stroje?</translation>
         <translation>Najeďte stroj do výchozí polohy ($H): jeho poloha je pravděpodobně ztracena.</translation>
     </message>
     <message>
-        <source>Unlock the machine ($X): its position is kept.</source>
-        <translation>Odemkněte stroj ($X): jeho poloha zůstala zachována.</translation>
-    </message>
-    <message>
         <source>Check the limit switches and their wiring, then home the machine ($H).</source>
         <translation>Zkontrolujte koncové spínače a jejich zapojení, pak najeďte stroj do výchozí polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Reset the board (Ctrl-X): it answers nothing until then. Check the limit switches, then home the machine ($H), or unlock it ($X) only if its position is surely right.</source>
+        <extracomment>After a hard or soft limit GRBL answers nothing until it is reset (limit_lock.py).</extracomment>
+        <translation>Resetujte desku (Ctrl-X): do té doby neodpovídá na nic. Zkontrolujte koncové spínače, pak proveďte referenční jízdu ($H), nebo stroj odemkněte ($X), jen pokud je jeho poloha jistě správná.</translation>
+    </message>
+    <message>
+        <source>Reset the board (Ctrl-X): it answers nothing until then. Then unlock it ($X): its position is kept; or home it ($H).</source>
+        <translation>Resetujte desku (Ctrl-X): do té doby neodpovídá na nic. Pak stroj odemkněte ($X): jeho poloha zůstala zachována; nebo proveďte referenční jízdu ($H).</translation>
     </message>
     <message>
         <source>Check the probe and its wiring, then unlock ($X).</source>
@@ -2115,12 +2129,12 @@ Přesto odeslat do stroje?</translation>
         <translation>číslo nástroje větší, než je podporováno</translation>
     </message>
     <message>
-        <source>hard limit triggered: position likely lost, re-home</source>
-        <translation>sepnul koncový spínač: poloha je nejspíš ztracena, proveďte referenční jízdu</translation>
+        <source>hard limit triggered: position likely lost; reset, then home</source>
+        <translation>sepnul koncový spínač: poloha je nejspíš ztracena; resetujte, pak proveďte referenční jízdu</translation>
     </message>
     <message>
-        <source>soft limit: motion target beyond the travel, position kept</source>
-        <translation>softwarový limit: cíl pohybu mimo pojezd, poloha zachována</translation>
+        <source>soft limit: target beyond the travel; reset, then unlock or home</source>
+        <translation>softwarový limit: cíl mimo pojezd; resetujte, pak odemkněte nebo proveďte referenční jízdu</translation>
     </message>
     <message>
         <source>reset while in motion: position likely lost, re-home</source>

@@ -1696,7 +1696,7 @@ Napriek tomu odoslať do stroja?</translation>
     </message>
     <message>
         <source>Not sent without confirmation: {0}</source>
-        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. The lines of one write, in order (list[SentLine]): what hears every line of a running job listens here, once a batch, not once a line. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
+        <extracomment>No reply for this long: the link is lost (:mod:`~app.machines.gcode.timing`). Status queries unanswered before the link is shown stale (amber), and the least time. The lines of one write, in order (list[SentLine]): what hears every line of a running job listens here, once a batch, not once a line. Lines of the followed job were answered (counted there): once per batch of replies. A reply line worth showing the operator (the console): its text. The device was reset (banner seen or reset sent): whatever was unanswered is gone. The streaming loop and its ``ok`` accounting, on the transport&apos;s reader thread. Line serials, taken under the feeder&apos;s lock: both threads number lines. A status report since the last line was answered showed the machine idle (written under the feeder&apos;s lock: a job&apos;s line queued on the reader thread clears it). Silence shown amber: a few status queries (one each ``status_ms``) unanswered. GRBL&apos;s lock after a hard or soft limit: silent until a reset (limit_lock.py). Whether the last :attr:`reset` was the board&apos;s own (a banner nobody here asked for: its reset button, a power dip), not a soft reset the station sent. The board&apos;s work coordinate offset last reported (GRBL&apos;s WCO:), None before any. What the followed job had as the last status report was read (its snapshot). After a silence: when the board was first heard again, the first status report made after that had settled, and whether a banner came meanwhile.</extracomment>
         <translation>Bez potvrdenia neodoslané: {0}</translation>
     </message>
     <message>
@@ -1719,6 +1719,11 @@ Napriek tomu odoslať do stroja?</translation>
         <source>{0} line(s) still unanswered while the board stands idle, and its reports cannot show whether it has them: it is reset, keeping its position, and what it ran is looked at again</source>
         <translation>{0} riadok/riadkov stále bez odpovede, kým doska stojí nečinne, a jej hlásenia nemôžu ukázať, či ich má: doska sa resetuje, poloha zostáva, a čo vykonala, sa posúdi znova</translation>
     </message>
+    <message>
+        <source>in alarm: reset to continue</source>
+        <extracomment>The alarms after which GRBL waits for a reset (protocol.c): hard and soft limits. GRBL&apos;s words after them (report.c, ``MESSAGE_CRITICAL_EVENT``).</extracomment>
+        <translation>v alarme: pokračujte resetom</translation>
+    </message>
 </context>
 <context>
     <name>GrblAlarmBand</name>
@@ -1730,6 +1735,10 @@ Napriek tomu odoslať do stroja?</translation>
         <source>Home ($H)</source>
         <translation>Východisková poloha ($H)</translation>
     </message>
+    <message>
+        <source>Reset (Ctrl-X)</source>
+        <translation>Reset (Ctrl-X)</translation>
+    </message>
 </context>
 <context>
     <name>GrblCodes</name>
@@ -1739,12 +1748,17 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Nabehnite strojom do východiskovej polohy ($H): jeho poloha je pravdepodobne stratená.</translation>
     </message>
     <message>
-        <source>Unlock the machine ($X): its position is kept.</source>
-        <translation>Odomknite stroj ($X): jeho poloha zostala zachovaná.</translation>
-    </message>
-    <message>
         <source>Check the limit switches and their wiring, then home the machine ($H).</source>
         <translation>Skontrolujte koncové spínače a ich zapojenie, potom nabehnite do východiskovej polohy ($H).</translation>
+    </message>
+    <message>
+        <source>Reset the board (Ctrl-X): it answers nothing until then. Check the limit switches, then home the machine ($H), or unlock it ($X) only if its position is surely right.</source>
+        <extracomment>After a hard or soft limit GRBL answers nothing until it is reset (limit_lock.py).</extracomment>
+        <translation>Resetujte dosku (Ctrl-X): dovtedy neodpovedá na nič. Skontrolujte koncové spínače, potom vykonajte referenčnú jazdu ($H), alebo stroj odomknite ($X), len ak je jeho poloha isto správna.</translation>
+    </message>
+    <message>
+        <source>Reset the board (Ctrl-X): it answers nothing until then. Then unlock it ($X): its position is kept; or home it ($H).</source>
+        <translation>Resetujte dosku (Ctrl-X): dovtedy neodpovedá na nič. Potom stroj odomknite ($X): jeho poloha zostala zachovaná; alebo vykonajte referenčnú jazdu ($H).</translation>
     </message>
     <message>
         <source>Check the probe and its wiring, then unlock ($X).</source>
@@ -2115,12 +2129,12 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>číslo nástroja väčšie, ako je podporované</translation>
     </message>
     <message>
-        <source>hard limit triggered: position likely lost, re-home</source>
-        <translation>zopol koncový spínač: poloha je pravdepodobne stratená, vykonajte referenčnú jazdu</translation>
+        <source>hard limit triggered: position likely lost; reset, then home</source>
+        <translation>zopol koncový spínač: poloha je pravdepodobne stratená; resetujte, potom vykonajte referenčnú jazdu</translation>
     </message>
     <message>
-        <source>soft limit: motion target beyond the travel, position kept</source>
-        <translation>softvérový limit: cieľ pohybu mimo pojazdu, poloha zachovaná</translation>
+        <source>soft limit: target beyond the travel; reset, then unlock or home</source>
+        <translation>softvérový limit: cieľ mimo pojazdu; resetujte, potom odomknite alebo vykonajte referenčnú jazdu</translation>
     </message>
     <message>
         <source>reset while in motion: position likely lost, re-home</source>

@@ -60,7 +60,7 @@ def test_an_alarm_repeated_is_said_once_until_the_board_leaves_it(
     emulator.trigger_alarm(1)  # another alarm is news
     plotter.run(0.5)
     assert len(said(messages, "Machine alarm 1")) == 1, messages
-    assert plotter.gcode_session.send_line("$X")
+    assert plotter.gcode_session.limit_lock.unlock()  # GRBL's lock: reset, then $X
     plotter.run_until(lambda: plotter.gcode_session.machine_state == "Idle", timeout=3)
     emulator.trigger_alarm(2)  # out of it and back in: said again
     plotter.run(0.5)
@@ -88,8 +88,8 @@ def test_an_alarm_mid_job_pauses_it_once_and_the_resume_draws_each_stroke_once(
         plotter.run(2.0)
         job_lines = [w for w in plotter.written[written:] if w.strip() not in (b"?", b"!", b"")]
         assert job_lines == []  # nothing streamed into the alarm
-        # The operator unlocks it (its position kept) and resumes.
-        assert plotter.gcode_session.send_line("$X")
+        # The operator resets and unlocks it (its position kept) and resumes.
+        assert plotter.gcode_session.limit_lock.unlock()
         plotter.run_until(lambda: plotter.gcode_session.machine_state == "Idle", timeout=3)
         runner.resume()
         plotter.run_until(
@@ -153,6 +153,7 @@ def test_the_api_fails_a_job_an_alarm_stopped_and_its_progress_says_so(
         assert emulator is not None
         messages: list[str] = []
         states: list[str] = []
+        after: list[bytes] = []  # what the station wrote once the limit tripped
 
         def progress(p: stepdeck.Progress) -> None:
             states.append(p.state)
@@ -160,12 +161,16 @@ def test_the_api_fails_a_job_an_alarm_stopped_and_its_progress_says_so(
                 states.append("tripped")
                 emulator.trigger_alarm(1)  # a limit switch, twice: it bounces
                 emulator.trigger_alarm(1)
+                plotter.station.link.dataSent.connect(after.append)
 
         with pytest.raises(stepdeck.JobFailed) as failed:
             plotter.run(
                 job, on_progress=progress, on_message=messages.append, checkpoint_dir=tmp_path
             )
         assert "alarm 1" in str(failed.value)
+        assert "reset" in str(failed.value)  # GRBL's lock: what clears it is said
+        # Into GRBL's lock after a limit (ALARM:1) nothing of the job goes, nor a reset.
+        assert [w for w in after if w != b"?"] == [], after
         assert len(said(messages, "alarm")) == 1, messages
         assert states[-1] == "failed"
         assert len(said(plotter.messages, "Machine alarm 1")) == 1, plotter.messages

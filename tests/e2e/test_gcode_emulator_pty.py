@@ -19,6 +19,7 @@ from protocol.emulator.gcode_firmware import GcodeFirmware
 from protocol.gcode import (
     AlarmReply,
     Banner,
+    Feedback,
     GcodeReply,
     Ok,
     Rejected,
@@ -116,6 +117,12 @@ def test_grbl_plotter_process_takes_the_alarm_control() -> None:
             process.stdin.write(b"alarm 2\n")
             process.stdin.flush()
             assert port.next() == AlarmReply(2)
+            assert port.next() == Feedback("[MSG:Reset to continue]")
+            # GRBL's lock after a limit: neither answered nor kept (the banner comes first).
+            raw.write(b"?$X\n")
+            raw.write(b"\x18")
+            assert port.next() == Banner(GRBL_BANNER)
+            assert port.next() == Feedback("[MSG:'$H'|'$X' to unlock]")
             assert port.status().state == "Alarm"
         _stop(process)
 

@@ -980,7 +980,10 @@ def test_dollar_commands_print_then_answer() -> None:
     )
 
 
-def test_an_alarm_locks_g_code_until_unlocked() -> None:
+def test_a_limit_alarm_is_silent_until_a_reset_then_locks_g_code_until_unlocked() -> None:
+    """GRBL 1.1h's critical event (protocol.c, ``EXEC_CRITICAL_EVENT``): after ALARM:1/2 and
+    "Reset to continue" it answers nothing, not ``?`` nor ``$X``, and loses every byte but
+    0x18 (main.c clears its read buffer and flags on the reset); the reset keeps the alarm."""
     bench = Bench()
     bench.send("M3 S1000", "G1 X100 F3000")
     bench.run(0.5)
@@ -988,14 +991,44 @@ def test_an_alarm_locks_g_code_until_unlocked() -> None:
     assert bench.replies() == [AlarmReply(1), Feedback("[MSG:Reset to continue]")]
     assert bench.fw.state == "Alarm" and not bench.fw.pen_down
     stopped = bench.fw.position()
-    assert bench.do("G0 X1") == [ErrorReply(9)]
-    assert bench.do("") == [Ok()]
+    bench.fw.receive(b"?$X\nG0 X1\n?!~\x90")
+    assert bench.replies(2.0) == []
+    assert bench.fw.position() == stopped
     bench.fw.receive(b"\x18")
     assert bench.replies() == [Banner(GRBL_BANNER), Feedback("[MSG:'$H'|'$X' to unlock]")]
-    assert bench.fw.state == "Alarm"
+    assert bench.fw.state == "Alarm" and bench.fw.position() == stopped
+    assert bench.do("G0 X1") == [ErrorReply(9)]
+    assert bench.do("") == [Ok()]
+    assert bench.status().state == "Alarm"
     assert bench.do("$X") == [Feedback("[MSG:Caution: Unlocked]"), Ok()]
     assert bench.fw.state == "Idle" and bench.fw.position() == stopped
     assert bench.do("G0 X1") == [Ok()]
+
+
+def test_a_soft_limit_answers_the_line_it_stopped_once_the_reset_ends_the_lock() -> None:
+    """grbl-sim: the line that raised ALARM:2 is answered ``ok`` after the 0x18, before the
+    banner (its gc_execute_line returns once the critical loop ends); a hard limit during a
+    ``G4`` is answered the same way."""
+    bench = Bench()
+    bench.send("G4 P5")
+    assert bench.replies(0.5) == []  # GRBL answers a dwell once it is done
+    bench.fw.trigger_alarm(2)
+    assert bench.replies(1.0) == [AlarmReply(2), Feedback("[MSG:Reset to continue]")]
+    bench.fw.receive(b"\x18")
+    assert bench.replies() == [
+        Ok(),
+        Banner(GRBL_BANNER),
+        Feedback("[MSG:'$H'|'$X' to unlock]"),
+    ]
+
+
+def test_a_reset_alarm_is_not_a_lock() -> None:
+    """ALARM:3…10 come with their own reset: the board answers at once (no critical loop)."""
+    bench = Bench()
+    bench.fw.trigger_alarm(9)
+    bench.replies()
+    bench.fw.receive(b"$X\n")
+    assert bench.replies() == [Feedback("[MSG:Caution: Unlocked]"), Ok()]
 
 
 def test_home_needs_the_machine_idle() -> None:

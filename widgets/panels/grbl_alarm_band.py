@@ -4,6 +4,9 @@ Shown above the G-code console when the board reports ``ALARM:n`` or
 ``error:n``: the code, GRBL's meaning in the operator's language, the action
 that clears it, and buttons for what the station can do (unlock ``$X``, home
 ``$H``; homing goes through the session's motion gate like the Home button).
+After a hard or soft limit GRBL answers nothing until a soft reset
+(:mod:`~app.machines.gcode.limit_lock`): the band then offers Reset (0x18),
+and Unlock and Home reset the board first, their line following its banner.
 Each code is shown once (:class:`~app.machines.gcode.grbl_codes.Explainer`):
 a board in alarm answers every line ``error:9`` and repeats its alarm, and
 nothing of it is new.  The band goes when the board leaves its alarm, or a
@@ -44,12 +47,17 @@ class GrblAlarmBand(QFrame):
         self.unlock_button.clicked.connect(self.unlock)
         self.home_button = t.button(lambda: self.tr("Home ($H)"))
         self.home_button.clicked.connect(self.home)
+        self.reset_button = t.button(lambda: self.tr("Reset (Ctrl-X)"))
+        self.reset_button.setObjectName("grbl_alarm_reset")
+        self.reset_button.clicked.connect(self.reset)
+        self.reset_button.hide()
         texts = QVBoxLayout()
         texts.addWidget(self.title)
         texts.addWidget(self.meaning)
         texts.addWidget(self.action)
         row = QHBoxLayout(self)
         row.addLayout(texts, 1)
+        row.addWidget(self.reset_button)
         row.addWidget(self.home_button)
         row.addWidget(self.unlock_button)
         self.hide()
@@ -65,6 +73,9 @@ class GrblAlarmBand(QFrame):
             session.frameReceived.connect(self._reply)
 
     def _reply(self, reply: object, _raw: bytes) -> None:
+        locked = self._session is not None and self._session.limit_lock.waiting
+        if self.reset_button.isVisibleTo(self) != locked:
+            self.reset_button.setVisible(locked)
         if isinstance(reply, AlarmReply | ErrorReply):
             kind = "ALARM" if isinstance(reply, AlarmReply) else "error"
             shown = self.explainer.reply(kind, reply.code)
@@ -86,14 +97,23 @@ class GrblAlarmBand(QFrame):
         self.show()
 
     def unlock(self) -> None:
-        """``$X``: the board takes lines again, its position as it was (nothing moves)."""
+        """``$X``: the board takes lines again, its position as it was (nothing moves); a
+        board locked after a limit is reset first, ``$X`` goes after its banner."""
         if self._session is not None:
-            self._session.send_line("$X", "intent")
+            self._session.limit_lock.unlock()
 
     def home(self) -> None:
-        """``$H``, as the Home button sends it (refused by the motion gate where it must be)."""
+        """``$H``, as the Home button sends it (refused by the motion gate where it must be);
+        a board locked after a limit is reset first."""
         if self._session is not None:
+            self._session.limit_lock.before_clearing()
             self._session.home(0)
+
+    def reset(self) -> None:
+        """0x18: ends GRBL's lock after a limit; the board restarts, still in alarm, and
+        nothing moves."""
+        if self._session is not None:
+            self._session.limit_lock.reset()
 
     def changeEvent(self, event: QEvent) -> None:
         super().changeEvent(event)

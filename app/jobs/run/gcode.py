@@ -319,6 +319,9 @@ class GcodeDriver(GcodeAlarmPause):
             self._hold()  # the job is pulled only while it runs on its own
         if preparing:
             return False  # the answer to the set-up or the way back carries on
+        if self._recheck and running and session.limit_lock.waiting:
+            self._hold_in_alarm()  # GRBL's lock after a limit: no report comes before a reset
+            return False
         if self._recheck:
             if not self._asked_since_recheck:
                 self._asked_since_recheck = True

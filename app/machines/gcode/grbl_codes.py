@@ -31,9 +31,19 @@ class Remedy(enum.Enum):
 
 #: The actions, in words (each code says one).
 HOME = QT_TRANSLATE_NOOP("GrblCodes", "Home the machine ($H): its position is likely lost.")
-UNLOCK = QT_TRANSLATE_NOOP("GrblCodes", "Unlock the machine ($X): its position is kept.")
 LIMITS = QT_TRANSLATE_NOOP(
     "GrblCodes", "Check the limit switches and their wiring, then home the machine ($H)."
+)
+#: After a hard or soft limit GRBL answers nothing until it is reset (limit_lock.py).
+LIMIT_HIT = QT_TRANSLATE_NOOP(
+    "GrblCodes",
+    "Reset the board (Ctrl-X): it answers nothing until then. Check the limit switches, then "
+    "home the machine ($H), or unlock it ($X) only if its position is surely right.",
+)
+SOFT_LIMIT = QT_TRANSLATE_NOOP(
+    "GrblCodes",
+    "Reset the board (Ctrl-X): it answers nothing until then. Then unlock it ($X): its "
+    "position is kept; or home it ($H).",
 )
 PROBE = QT_TRANSLATE_NOOP("GrblCodes", "Check the probe and its wiring, then unlock ($X).")
 DOOR = QT_TRANSLATE_NOOP("GrblCodes", "Close the safety door, then home the machine ($H).")
@@ -65,7 +75,7 @@ ALARMS: dict[int, CodeText] = {
             "GrblCodes",
             "Hard limit has been triggered. Machine position is likely lost due to sudden halt. Re-homing is highly recommended.",  # noqa: E501
         ),
-        LIMITS,
+        LIMIT_HIT,
         _HOMING,
     ),
     2: CodeText(
@@ -73,7 +83,7 @@ ALARMS: dict[int, CodeText] = {
             "GrblCodes",
             "Soft limit alarm. G-code motion target exceeds machine travel. Machine position retained. Alarm may be safely unlocked.",  # noqa: E501
         ),
-        UNLOCK,
+        SOFT_LIMIT,
         _EITHER,
     ),
     3: CodeText(

@@ -58,8 +58,12 @@ _MARKED = (
     QT_TRANSLATE_NOOP("GrblMeaning", "unused value words in the line"),
     QT_TRANSLATE_NOOP("GrblMeaning", "dynamic tool length offset not on the tool length axis"),
     QT_TRANSLATE_NOOP("GrblMeaning", "tool number greater than supported"),
-    QT_TRANSLATE_NOOP("GrblMeaning", "hard limit triggered: position likely lost, re-home"),
-    QT_TRANSLATE_NOOP("GrblMeaning", "soft limit: motion target beyond the travel, position kept"),
+    QT_TRANSLATE_NOOP(
+        "GrblMeaning", "hard limit triggered: position likely lost; reset, then home"
+    ),
+    QT_TRANSLATE_NOOP(
+        "GrblMeaning", "soft limit: target beyond the travel; reset, then unlock or home"
+    ),
     QT_TRANSLATE_NOOP("GrblMeaning", "reset while in motion: position likely lost, re-home"),
     QT_TRANSLATE_NOOP("GrblMeaning", "probe fail: probe not in the expected initial state"),
     QT_TRANSLATE_NOOP("GrblMeaning", "probe fail: no contact within the programmed travel"),

@@ -94,6 +94,7 @@ class ReplyReader:
             if session.silent_since is not None and session.heard_again_at is None:
                 session.heard_again_at = session.last_heard
             session.device_replied(proof=False)  # after a silence, a status report decides
+            session.limit_lock.heard(reply)
             if frames:
                 session.frameReceived.emit(reply, reply_bytes(reply))
             if verdict is STALE:

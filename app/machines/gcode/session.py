@@ -49,6 +49,7 @@ from app.machines.gcode.jogger import JOG_RESOLUTION as JOG_RESOLUTION
 from app.machines.gcode.jogger import JOG_SPEED_SHARE as JOG_SPEED_SHARE
 from app.machines.gcode.jogger import JOG_STEP_S as JOG_STEP_S
 from app.machines.gcode.jogger import GcodeJogger
+from app.machines.gcode.limit_lock import LimitLock
 from app.machines.gcode.lines import SentLine as SentLine
 from app.machines.gcode.link_events import LinkEvents
 from app.machines.gcode.overrides import OverrideControl
@@ -141,6 +142,8 @@ class GcodeSession(MachineSession):
         self.jogger = GcodeJogger(self, with_command="$J" in settings.words)
         self.console = ConsoleGate(model, self.gate)
         self.zeroing = HandZeroing(self)
+        #: GRBL's lock after a hard or soft limit: silent until a reset (limit_lock.py).
+        self.limit_lock = LimitLock(self)
         #: Whether the last :attr:`reset` was the board's own (a banner nobody here asked
         #: for: its reset button, a power dip), not a soft reset the station sent.
         self.reset_by_device = False
@@ -409,6 +412,8 @@ class GcodeSession(MachineSession):
         self.query_status()
         # Time the station itself was not running is nobody's silence (a busy computer).
         self.last_heard = min(now, self.last_heard + self._station_stall(now))
+        if self.limit_lock.silence_is_expected():
+            self.last_heard = now  # GRBL's lock after a limit says nothing until a reset
         silent = now - self.last_heard
         self._watch_silence(silent, self.stale_after_s, timing.SILENCE_S)
         if self.device_answered and silent > timing.SILENCE_S:
