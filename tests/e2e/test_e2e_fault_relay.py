@@ -82,7 +82,7 @@ _BETWEEN = (
     " 72, 108, 174, and 104, 134 (a digit 4 um off: within any tolerance); on the plotter"
     " the damaged line waits unparsed in its buffer for up to 0.24 s of its time, `Bf:` short"
     " of the count: the station stops it when a report falls there (byte_shortfall.py: 6, 18,"
-    " 174 now stop cleanly), 42 and 72 still draw a wrong stroke (no report fell there)"
+    " 36, 174 now stop cleanly), 42 and 72 still draw a wrong stroke (no report fell there)"
     " (docs/link-faults.md)"
 )
 _REFUSED_NEXT = (
