@@ -116,6 +116,10 @@ class LineStreamer(Generic[T]):
         """The tags of the lines sent and not yet answered, oldest first."""
         return [tag for _, tag in self._in_flight]
 
+    def unanswered_lengths(self) -> list[int]:
+        """The bytes of each line sent and not yet answered, oldest first."""
+        return [len(raw) for raw, _ in self._in_flight]
+
     @property
     def in_flight_bytes(self) -> int:
         return self._in_flight_bytes

@@ -1691,6 +1691,10 @@ Přesto odeslat do stroje?</translation>
         <translation>Deska drží o {0} bajt(ů) více, než bylo odesláno a nezodpovězeno (řádek nebo odpověď dorazily cestou dvakrát): řádky, které drží, mohou být poškozené, proto je zastavena dříve, než je provede</translation>
     </message>
     <message>
+        <source>The board holds {0} byte(s) where the lines sent and not yet run make at least {1}: {2} byte(s) were lost on the way inside a line waiting in its buffer (in “{3}” or a line behind it), so it is stopped before it runs it</source>
+        <translation>Deska drží {0} bajt(ů), kde odeslané a dosud neprovedené řádky dávají alespoň {1}: cestou se ztratilo {2} bajt(ů) uvnitř řádku čekajícího v její vyrovnávací paměti (v „{3}“ nebo v řádku za ním), proto je zastavena dříve, než jej provede</translation>
+    </message>
+    <message>
         <source>; {0} unanswered line(s)</source>
         <translation>; nezodpovězených řádků: {0}</translation>
     </message>

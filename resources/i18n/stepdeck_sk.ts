@@ -1691,6 +1691,10 @@ Napriek tomu odoslať do stroja?</translation>
         <translation>Doska drží o {0} bajt(ov) viac, než bolo odoslané a nezodpovedané (riadok alebo odpoveď dorazili cestou dvakrát): riadky, ktoré drží, môžu byť poškodené, preto je zastavená skôr, než ich vykoná</translation>
     </message>
     <message>
+        <source>The board holds {0} byte(s) where the lines sent and not yet run make at least {1}: {2} byte(s) were lost on the way inside a line waiting in its buffer (in “{3}” or a line behind it), so it is stopped before it runs it</source>
+        <translation>Doska drží {0} bajt(ov), kde odoslané a zatiaľ nevykonané riadky dávajú aspoň {1}: cestou sa stratilo {2} bajt(ov) vnútri riadku čakajúceho v jej vyrovnávacej pamäti (v „{3}“ alebo v riadku za ním), preto je zastavená skôr, než ho vykoná</translation>
+    </message>
+    <message>
         <source>; {0} unanswered line(s)</source>
         <translation>; nezodpovedaných riadkov: {0}</translation>
     </message>

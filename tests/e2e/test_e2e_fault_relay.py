@@ -81,7 +81,8 @@ _BETWEEN = (
     " corexy-plotter 2, 6, 174. Slow mode of 28 Nov (h-relay7): corexy-plotter 2, 6, 18, 42,"
     " 72, 108, 174, and 104, 134 (a digit 4 um off: within any tolerance); on the plotter"
     " the damaged line waits unparsed in its buffer for up to 0.24 s of its time, `Bf:` short"
-    " of the count, but no report fell there and the station compares no shortfall yet"
+    " of the count: the station stops it when a report falls there (byte_shortfall.py: 6, 18,"
+    " 36, 174 now stop cleanly), 42 and 72 still draw a wrong stroke (no report fell there)"
     " (docs/link-faults.md)"
 )
 _REFUSED_NEXT = (

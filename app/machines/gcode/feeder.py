@@ -49,6 +49,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Generic, Protocol, TypeVar
 
+from app.machines.gcode.byte_shortfall import Held, QueryMarks
 from protocol.clock import Clock
 from protocol.gcode.codec import (
     FEED_HOLD,
@@ -142,6 +143,8 @@ class ReportSeen(Generic[T]):
     #: Nothing waited to go and nothing for its answer as it was read: only then can the
     #: report show the board standing after every line (those sent later went after it).
     idle: bool | None = None
+    #: The lines the board must hold as it made the report (byte_shortfall.py; None: unknown).
+    held: Held | None = None
 
 
 @dataclass(frozen=True)
@@ -244,6 +247,8 @@ class LineFeeder(Generic[T]):
         self.pulling = False
         #: What lets the held job go where its set-up's answer is read (:meth:`pull_when`).
         self.gate: PullGate[T] | None = None
+        #: The lines written before each ``?`` (byte_shortfall.py): noted under the lock.
+        self.marks = QueryMarks()
 
     def follow(self, job: JobLines[T] | None) -> None:
         """Count the answers of ``job`` here from now on (None: no job); it is not pulled."""
@@ -320,6 +325,7 @@ class LineFeeder(Generic[T]):
                 for raw, tag in job.take(PULL_AHEAD - streamer.queued):
                     streamer.queue(raw, tag)
             out = streamer.sendable()
+            self.marks.wrote(len(out))
             if here and self._write_here is not None:
                 if out:
                     self._write_here([raw for raw, _tag in out])
@@ -395,6 +401,7 @@ class LineFeeder(Generic[T]):
                     None if job is None else job.reported(),
                     self.streamer.in_flight_bytes,
                     idle,
+                    self.marks.seen(self.streamer.unanswered_lengths()),
                 )
                 received.settles = received.settles or idle
             elif isinstance(reply, AlarmReply):
@@ -432,6 +439,7 @@ class LineFeeder(Generic[T]):
             return
         if not any(isinstance(v, Answer) and v.counted for _reply, v in received.replies):
             return  # nothing of the job answered in this read (a report read while idle)
+        self.marks.asked()
         if self._write_here is not None:
             self._write_here([STATUS_QUERY])
         else:

@@ -22,7 +22,7 @@ from app.machines.envelope import Envelope
 from app.machines.gcode.alarm_notice import AlarmNotice
 from app.machines.gcode.byte_count import ByteCount
 from app.machines.gcode.console_gate import ConsoleGate
-from app.machines.gcode.feeder import LineFeeder, Received
+from app.machines.gcode.feeder import LineFeeder, Received, ReportSeen
 from app.machines.gcode.hand_zeroing import HandZeroing
 from app.machines.gcode.jogger import GcodeJogger
 from app.machines.gcode.lines import SentLine
@@ -76,6 +76,7 @@ class FollowerPort(Protocol):
     def count_broken(
         self, report: StatusReport, unanswered: list[SentLine], unanswered_bytes: int | None
     ) -> bool: ...
+    def bytes_lost(self, report: StatusReport, seen: ReportSeen[SentLine]) -> bool: ...
 
 
 class RepliesPort(Protocol):

@@ -113,7 +113,7 @@ class ReplyReader:
                 if isinstance(verdict, ReportSeen):
                     if session.follower.count_broken(
                         reply, verdict.unanswered, verdict.unanswered_bytes
-                    ):
+                    ) or session.follower.bytes_lost(reply, verdict):
                         continue
                     session.follower.apply(
                         reply, verdict.unanswered, verdict.job, idle_then=verdict.idle

@@ -306,7 +306,9 @@ class GcodeSession(MachineSession):
             self.frameSent.emit(name, byte)
 
     def query_status(self) -> None:
-        self.send_realtime(STATUS_QUERY, "?")
+        with self.feeder.lock:  # behind exactly the lines noted (byte_shortfall.py)
+            self.feeder.marks.asked()
+            self.send_realtime(STATUS_QUERY, "?")
         self.status_asked_at = self.clock.now()
 
     @property

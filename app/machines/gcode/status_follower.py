@@ -23,6 +23,8 @@ from PySide6.QtCore import QCoreApplication
 from app.listened import listened
 from app.machines.gcode import timing
 from app.machines.gcode.byte_count import ByteCount
+from app.machines.gcode.byte_shortfall import ShortfallWatch
+from app.machines.gcode.feeder import ReportSeen
 from app.machines.gcode.jogger import reports_moving
 from app.machines.gcode.lines import SentLine
 from app.machines.gcode.lost_answers import (
@@ -59,6 +61,8 @@ class StatusFollower:
         self.stuck = StuckLineWatch(session.clock, settings.rx_buffer)
         #: The board's buffer against the bytes counted unanswered (byte_count.py).
         self.byte_count = ByteCount(settings.rx_buffer)
+        # The board's buffer short of the lines it must hold (byte_shortfall.py).
+        self.shortfall = ShortfallWatch(settings.rx_buffer)
         self.lost_answers = LostAnswerWatch(settings.rx_buffer)
         #: Planner blocks the device has, learned from its ``Bf:`` reports (0: unknown).
         self.planner_size = 0
@@ -283,6 +287,27 @@ class StatusFollower:
             "stopped before it runs them",
         ).format(extra)
         session.stop_for_fault(MotionFault(text, job))
+        return True
+
+    def bytes_lost(self, report: StatusReport, seen: ReportSeen[SentLine]) -> bool:
+        """The board holds fewer bytes than the lines it must (byte_shortfall.py): a line
+        that lost bytes on the way waits in it; stop before it runs."""
+        session = self._session
+        if not session.settings.ok_when_done:
+            return False
+        missing = self.shortfall.judge(report, seen.held)
+        if missing is None or session.stopping or seen.held is None:
+            return False
+        held = session.settings.rx_buffer - (report.rx_free or 0)
+        # The oldest may be running: the first line that must be whole in the buffer.
+        line = seen.unanswered[1] if len(seen.unanswered) > 1 else None
+        text = QCoreApplication.translate(
+            "GcodeSession",
+            "The board holds {0} byte(s) where the lines sent and not yet run make at least "
+            "{1}: {2} byte(s) were lost on the way inside a line waiting in its buffer "
+            "(in “{3}” or a line behind it), so it is stopped before it runs it",
+        ).format(held, held + missing, missing, "?" if line is None else line.text)
+        session.stop_for_fault(MotionFault(text, line.op_index if line is not None else None))
         return True
 
     def supervise_pen(self, report: StatusReport, on_path: bool) -> None:
