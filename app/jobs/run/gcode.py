@@ -84,7 +84,7 @@ def modes_confirm(modes: str, words: tuple[str, ...]) -> str | None:
 def setup_gate(words: tuple[str, ...]) -> PullGate[SentLine]:
     """The set-up's confirmation judged where it is read: the ``[GC:…]`` answering the
     set-up's own ``$G`` lets the job go there when :func:`modes_confirm` finds nothing wrong,
-    the check the driver makes of it too (:meth:`GcodeDriver._on_reply_text`)."""
+    the check the driver makes of it too (:meth:`GcodeDriver._judge_setup`)."""
 
     def lets_go(reply: object) -> bool:
         text = reply.text if isinstance(reply, Feedback) else ""
