@@ -23,8 +23,6 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 
 from app.jobs.run.runner import JobRunner, JobState
-from app.machines.gcode.feeder import Received, merged
-from app.machines.gcode.session import SentLine
 from app.station import Station
 from tests.app.test_gcode_job_pulled import (
     IDLE,
@@ -235,36 +233,6 @@ def test_a_restart_between_two_jobs_the_next_is_set_up_and_confirmed_again(
     assert len(port.job_ops()) > 5  # confirmed: the job goes where the answer was read
     tell(station, seen)
     answer_all(station, port)
-    read(station, IDLE)
-    assert runner.state is JobState.DONE
-
-
-def test_the_last_answer_asks_for_the_status_where_it_is_read(
-    board: tuple[Station, BoardPort], tmp_path: Path
-) -> None:
-    station, port = board
-    runner = begun(station, port, tmp_path, ops=30)
-    read(station, b"ok\r\n" + MODES + b"ok\r\n")
-    port.answered = 2
-    unseen: list[Received[SentLine]] = []
-    while len(port.lines()) > port.answered:  # answered on the reader thread only
-        port.answered += 1
-        with port.sent_lock:
-            asked_before = b"".join(port.sent).count(b"?")
-        unseen.append(read_unseen(station, b"ok\r\n"))
-    with port.sent_lock:
-        written = b"".join(port.sent)
-    assert port.job_ops() == list(range(30))
-    assert written.endswith(b"?")  # asked as the last answer was read
-    assert written.count(b"?") == asked_before + 1  # and only then
-    assert unseen[-1].asked_status and not any(r.asked_status for r in unseen[:-1])
-    read_unseen(station, IDLE)  # a report read while idle asks nothing more
-    with port.sent_lock:
-        assert b"".join(port.sent) == written
-    tell(station, *merged(unseen))  # as the link hands a batch read meanwhile
-    assert session_of(station).status_asked_at is not None  # the window asks not again
-    with port.sent_lock:
-        assert b"".join(port.sent) == written
     read(station, IDLE)
     assert runner.state is JobState.DONE
 

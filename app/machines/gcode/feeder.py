@@ -33,10 +33,12 @@ What keeps the machine from moving when nobody asked:
   reset since, and only if the reply says what the GUI thread would accept;
   anything that takes back or holds the job disarms it.
 
-Where a job starts and ends, no GUI turn is waited for either: the set-up's
-confirmation lets the job go as it is read (above), and the answer that
-leaves nothing of a pulled job unanswered asks the board's status at once
-(its end shows on an idle report; :attr:`Received.asked_status`).
+Where a job starts no GUI turn is waited for either: the set-up's
+confirmation lets the job go as it is read (above).  Its end is not asked
+for at once as its last answer is read: asked then, the board may report
+``Idle`` before its last move has begun (the job was declared done with the
+machine still on its way: tests/e2e/test_macros_pty.py, 2 runs in 10); the
+next status poll asks.
 
 Plain Python, no Qt; in tests on a manual clock the transport calls it on
 the GUI thread itself, so everything stays synchronous.
@@ -53,7 +55,6 @@ from app.machines.gcode.byte_shortfall import Held, QueryMarks
 from protocol.clock import Clock
 from protocol.gcode.codec import (
     FEED_HOLD,
-    STATUS_QUERY,
     AlarmReply,
     Banner,
     ErrorReply,
@@ -168,8 +169,6 @@ class Received(Generic[T]):
     #: What went wrong reading these bytes (a bug, not the device's words): sending is held,
     #: as after an error, until the GUI thread has stopped the machine.
     failure: Exception | None = None
-    #: A status query (``?``) was written after these replies: the job's last line answered.
-    asked_status: bool = False
     #: A status report among them was read with nothing unanswered: it can end a job (or
     #: a wait), so the window hears of this read at once (:func:`settles`).
     settles: bool = False
@@ -204,7 +203,6 @@ def merged(results: list[object]) -> list[object]:
                 last.data + result.data,
                 last.replies + between + result.replies,
                 result.written,
-                asked_status=last.asked_status or result.asked_status,
             )
         else:
             out.append(result)
@@ -347,7 +345,6 @@ class LineFeeder(Generic[T]):
             try:
                 self._match(data, received)
                 received.written = self.pump(here=True)
-                self._ask_when_drained(received)
             except Exception as exc:  # raised here, it would end the reader thread
                 # The link would go silent for good (no more reads, never "connected"),
                 # and what was matched so far may be wrong: hold, and let the GUI stop.
@@ -431,17 +428,3 @@ class LineFeeder(Generic[T]):
         self.gate = None  # this reply decides, once
         if gate.lets_go(reply):
             self.pulling = True  # the pump that follows the read sends the job's lines
-
-    def _ask_when_drained(self, received: Received[T]) -> None:
-        """The pulled job's answers leave nothing unanswered (its end, a wait, a refusal):
-        ask where the board stands now, from here, not a GUI turn later (under the lock)."""
-        if not self.pulling or self.job is None or not self.streamer.idle:
-            return
-        if not any(isinstance(v, Answer) and v.counted for _reply, v in received.replies):
-            return  # nothing of the job answered in this read (a report read while idle)
-        self.marks.asked()
-        if self._write_here is not None:
-            self._write_here([STATUS_QUERY])
-        else:
-            self._write(STATUS_QUERY)
-        received.asked_status = True

@@ -21,7 +21,6 @@ from app.machines.gcode.feeder import STALE, WROTE, Answer, BannerSeen, Received
 from app.machines.gcode.lines import SentLine
 from app.machines.gcode.meanings import alarm_meaning, error_meaning
 from protocol.gcode.codec import (
-    STATUS_QUERY,
     AlarmReply,
     Banner,
     ErrorReply,
@@ -66,8 +65,6 @@ class ReplyReader:
             self.reading_failed(received.failure)
             return
         session.heard_unrecognised(received.data)  # kept until the device answers: whose words?
-        if received.asked_status:  # the feeder asked, as the job's last line was answered
-            session.status_asked_at = session.clock.now()  # (before the job hears of it)
         advanced = False
         # Asked once a batch: with nothing connected (no frame log) no emit per reply.
         frames = listened(session, "frameReceived")
@@ -155,8 +152,6 @@ class ReplyReader:
             elif isinstance(reply, Feedback):
                 session.replyText.emit(reply.text)
         session.follower.written(received.written)
-        if received.asked_status:
-            session.frameSent.emit("?", STATUS_QUERY)  # written after those lines
         if advanced:
             session.jobAdvanced.emit()
 
