@@ -10,30 +10,17 @@ paused.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from pathlib import Path
-
-import pytest
-from pytestqt.qtbot import QtBot
 
 from app.jobs.run.runner import JobRunner, JobState
 from app.machine import LinkState
 from app.machines.gcode import timing
 from app.machines.gcode.limit_lock import waiting_text
-from app.profiles import load_profile
+from tests.app.test_gcode_alarm_once import plotter
 from tests.helpers.harness import StationHarness
 from tests.helpers.pen_square import square_program
 
-
-@pytest.fixture
-def plotter(qtbot: QtBot) -> Iterator[StationHarness]:
-    harness = StationHarness(load_profile("grbl-plotter"))
-    harness.connect()
-    harness.run_until(lambda: harness.gcode_session.planner_size > 0, timeout=2)
-    try:
-        yield harness
-    finally:
-        harness.close()
+__all__ = ["plotter"]  # the fixture, used by name
 
 
 def events(harness: StationHarness, kind: str) -> list[dict[str, object]]:
